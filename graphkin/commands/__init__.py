@@ -1,0 +1,1 @@
+"""Sub-commands of the ``graphkin`` CLI, one module each (``add_parser`` and ``run``)."""

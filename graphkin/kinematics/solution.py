@@ -1,0 +1,162 @@
+"""The solved state of a mechanism: every link's angle, origin and their rates.
+
+A :class:`Solution` is the common currency of graphkin: the graphic
+constructions and the independent analytic solver both produce one, and the
+instant centers, curvature, reports and drawings read one.  Its arrays have a
+leading shape: ``()`` for one posture, ``(N,)`` for a sweep.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Eq. 3.4 (V_P = V_O + ω × R_PO) and Eq. 4.5
+(A_P = A_O + α × R_PO - ω² R_PO).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from graphkin.mechanisms.model import FRAME, Mechanism
+
+if TYPE_CHECKING:
+    from graphkin.construction import Construction
+
+__all__ = ["LinkState", "Solution", "perp"]
+
+
+def perp(v: np.ndarray) -> np.ndarray:
+    """The vector turned 90° counterclockwise: ``k × v``."""
+    v = np.asarray(v, dtype=float)
+    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
+
+
+@dataclass
+class LinkState:
+    """Pose of one link and, when known, its rates.
+
+    Attributes
+    ----------
+    angle : ndarray
+        θ, the direction of the link's own x axis (rad).
+    origin : ndarray, shape (..., 2)
+        Where the link's local origin is.
+    omega, alpha : ndarray or None
+        Angular velocity and acceleration (counterclockwise positive).
+    origin_velocity, origin_acceleration : ndarray or None, shape (..., 2)
+        Velocity and acceleration of the (possibly virtual) point at the origin.
+    """
+
+    angle: np.ndarray
+    origin: np.ndarray
+    omega: np.ndarray | None = None
+    alpha: np.ndarray | None = None
+    origin_velocity: np.ndarray | None = None
+    origin_acceleration: np.ndarray | None = None
+
+    def _r(self, local: Any) -> np.ndarray:
+        loc = np.asarray(local, dtype=float)
+        c, s = np.cos(self.angle), np.sin(self.angle)
+        return np.stack([c * loc[..., 0] - s * loc[..., 1], s * loc[..., 0] + c * loc[..., 1]],
+                        axis=-1)
+
+    def position(self, local: Any) -> np.ndarray:
+        """World position of the body point with local coordinates ``local``."""
+        return self.origin + self._r(local)
+
+    def velocity(self, local: Any) -> np.ndarray:
+        """Velocity of a body point: ``V_O + ω × R`` (Eq. 3.4)."""
+        if self.omega is None or self.origin_velocity is None:
+            raise ValueError("velocities are not known (the file gives no rates)")
+        return self.origin_velocity + np.asarray(self.omega)[..., None] * perp(self._r(local))
+
+    def acceleration(self, local: Any) -> np.ndarray:
+        """Acceleration of a body point: ``A_O + α × R - ω² R`` (Eq. 4.5)."""
+        if self.alpha is None or self.origin_acceleration is None or self.omega is None:
+            raise ValueError("accelerations are not known (the file gives no rates)")
+        r = self._r(local)
+        w = np.asarray(self.omega)[..., None]
+        return self.origin_acceleration + np.asarray(self.alpha)[..., None] * perp(r) - w**2 * r
+
+
+@dataclass
+class Solution:
+    """A mechanism solved at one posture or at many.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    links : dict
+        Link id -> :class:`LinkState` (the frame included, at rest).
+    method : str
+        ``"construction"`` when every unknown was found by the graphic
+        constructions, ``"analytic"`` when the analytic solver did the work
+        (and ``notes`` says why).
+    constructions : dict
+        Diagram name (``posture``, ``velocity``, ``acceleration``) -> Construction.
+    valid : ndarray of bool
+        Which postures could be assembled (all True for one solved posture).
+    notes : list of str
+        Remarks for the report (fallbacks, branches chosen).
+    branches : dict
+        Step label -> chosen branch name.
+    """
+
+    mechanism: Mechanism
+    links: dict[str, LinkState]
+    method: str = "construction"
+    constructions: dict[str, Construction] = field(default_factory=dict)
+    valid: np.ndarray = field(default_factory=lambda: np.array(True))
+    notes: list[str] = field(default_factory=list)
+    branches: dict[str, str] = field(default_factory=dict)
+    values: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)
+
+    @property
+    def has_rates(self) -> bool:
+        """True when velocities (and accelerations) are known."""
+        return all(s.omega is not None for s in self.links.values())
+
+    @property
+    def has_accelerations(self) -> bool:
+        """True when accelerations are known."""
+        return all(s.alpha is not None for s in self.links.values())
+
+    def owner(self, name: str) -> str:
+        """A link that carries point ``name`` (a moving one if there is one)."""
+        owners = self.mechanism.point_links[name]
+        moving = [o for o in owners if o != FRAME]
+        return (moving or owners)[0]
+
+    def position(self, name: str, link: str | None = None) -> np.ndarray:
+        """World position of named point ``name`` (of ``link``, default its owner)."""
+        lid = link or self.owner(name)
+        return self.links[lid].position(self.mechanism.links[lid].points[name])
+
+    def velocity(self, name: str, link: str | None = None) -> np.ndarray:
+        """Absolute velocity of named point ``name`` (of ``link``)."""
+        lid = link or self.owner(name)
+        return self.links[lid].velocity(self.mechanism.links[lid].points[name])
+
+    def acceleration(self, name: str, link: str | None = None) -> np.ndarray:
+        """Absolute acceleration of named point ``name`` (of ``link``)."""
+        lid = link or self.owner(name)
+        return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
+
+    def angle(self, link: str) -> np.ndarray:
+        """θ of ``link`` (rad)."""
+        return self.links[link].angle
+
+    def omega(self, link: str) -> np.ndarray:
+        """ω of ``link`` (rad/s, counterclockwise positive)."""
+        w = self.links[link].omega
+        if w is None:
+            raise ValueError("velocities are not known (the file gives no rates)")
+        return w
+
+    def alpha(self, link: str) -> np.ndarray:
+        """α of ``link`` (rad/s², counterclockwise positive)."""
+        a = self.links[link].alpha
+        if a is None:
+            raise ValueError("accelerations are not known (the file gives no rates)")
+        return a

@@ -1,0 +1,192 @@
+"""The mechanism as described by a mechanism file (``spec/format.md``).
+
+Plain frozen values: links with their points in their own coordinates, pins
+(a point name shared by links), sliders, slots, drives and rates.  Inside
+graphkin every length is in the file's length unit, every angle in radians,
+every time in seconds.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 1.5-1.7 (links, pairs, mobility).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+__all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Drive", "Rates", "Mechanism", "XY"]
+
+FRAME = "1"
+XY = tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    """A link and its named points in the link's own coordinates.
+
+    The frame (link 1) holds absolute coordinates.  The angle of a link is the
+    direction of its own x axis.
+    """
+
+    id: str
+    points: dict[str, XY] = field(hash=False, compare=False)
+
+    def local(self, name: str) -> XY:
+        """The local coordinates of point ``name``."""
+        return self.points[name]
+
+
+@dataclass(frozen=True, slots=True)
+class Pin:
+    """A revolute pair: the point ``name`` is common to every link in ``links``."""
+
+    name: str
+    links: tuple[str, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Slider:
+    """A prismatic pair: ``point`` of ``link`` stays on a line fixed in ``on``.
+
+    ``link`` keeps its angle relative to ``on``: its x axis is parallel to the
+    line, from ``p0`` toward ``p1`` (both in ``on``'s coordinates).
+    """
+
+    index: int
+    link: str
+    on: str
+    point: str
+    p0: XY
+    p1: XY
+    key: str = "sliders"
+
+    @property
+    def direction_angle(self) -> float:
+        """Angle of the line in ``on``'s coordinates (rad)."""
+        return math.atan2(self.p1[1] - self.p0[1], self.p1[0] - self.p0[0])
+
+
+@dataclass(frozen=True, slots=True)
+class Slot:
+    """A pin in a slot: ``point`` of ``link`` moves on a line or circle fixed in ``on``.
+
+    Exactly one of ``line`` (two points) or ``center``/``radius`` is given.
+    """
+
+    index: int
+    link: str
+    on: str
+    point: str
+    p0: XY | None = None
+    p1: XY | None = None
+    center: XY | None = None
+    radius: float | None = None
+    key: str = "slots"
+
+    @property
+    def is_line(self) -> bool:
+        """True for a straight slot."""
+        return self.p0 is not None
+
+
+@dataclass(frozen=True, slots=True)
+class Drive:
+    """An input that fixes the posture.
+
+    ``kind`` is ``"angle"`` (the absolute angle of a link pinned to the frame,
+    rad) or ``"position"`` (the travel of a slider's point along its line from
+    the line's first point).  ``rate`` and ``rate2`` are ω, α (rad/s, rad/s²)
+    or velocity and acceleration along the line; ``None`` when not given.
+    """
+
+    index: int
+    link: str
+    kind: str
+    value: float
+    rate: float | None = None
+    rate2: float | None = None
+    pivot: str | None = None
+    slider: Slider | None = None
+    key: str = "drive"
+
+
+@dataclass(frozen=True, slots=True)
+class Rates:
+    """Known rates that belong to a link other than the drive (``[rates]``).
+
+    For a link: ω and α; for a slider link: velocity and acceleration of its
+    point along the line (``kind == "position"``).
+    """
+
+    link: str
+    kind: str
+    rate: float | None
+    rate2: float | None
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A planar mechanism at one posture: what a mechanism file says.
+
+    Use :func:`graphkin.load` to read one from a file.
+    """
+
+    links: dict[str, Link]
+    pins: tuple[Pin, ...]
+    sliders: tuple[Slider, ...] = ()
+    slots: tuple[Slot, ...] = ()
+    drives: tuple[Drive, ...] = ()
+    rates: Rates | None = None
+    assembly: dict[str, XY] = field(default_factory=dict)
+    title: str = ""
+    length_unit: str = "mm"
+    source: str = "<mechanism>"
+
+    @cached_property
+    def moving(self) -> list[str]:
+        """Ids of the moving links, in file order."""
+        return [k for k in self.links if k != FRAME]
+
+    @cached_property
+    def point_links(self) -> dict[str, list[str]]:
+        """Point name -> the links that carry it, in file order."""
+        out: dict[str, list[str]] = {}
+        for lid, link in self.links.items():
+            for name in link.points:
+                out.setdefault(name, []).append(lid)
+        return out
+
+    @property
+    def point_names(self) -> list[str]:
+        """Every named point once, in file order."""
+        return list(self.point_links)
+
+    @property
+    def has_rates(self) -> bool:
+        """True when the file gives velocities (a drive rate or ``[rates]``)."""
+        if self.rates is not None:
+            return self.rates.rate is not None
+        return bool(self.drives) and all(d.rate is not None for d in self.drives)
+
+    @property
+    def has_accelerations(self) -> bool:
+        """True when accelerations can be found too (every second rate given, 0 by default)."""
+        return self.has_rates
+
+    @cached_property
+    def scale(self) -> float:
+        """Size of the mechanism (largest coordinate span), for tolerances."""
+        xs: list[float] = []
+        for link in self.links.values():
+            for x, y in link.points.values():
+                xs.extend((abs(x), abs(y)))
+        return max([1.0, *xs]) if xs else 1.0
+
+    def mobility(self) -> int:
+        """Degrees of freedom by Kutzbach's criterion (Eq. 1.3): 3(n-1) - 2 j1 - j2."""
+        m = 3 * len(self.moving)
+        m -= sum(2 * (len(p.links) - 1) for p in self.pins)
+        m -= 2 * len(self.sliders) + len(self.slots)
+        return m

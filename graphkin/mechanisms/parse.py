@@ -1,0 +1,342 @@
+"""Read and validate a mechanism file (``spec/format.md``).
+
+Every problem becomes an :class:`~graphkin.errors.InputError` naming the file,
+the dotted key and the reason, so the CLI can print one line and exit 2.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from graphkin.errors import InputError
+from graphkin.mechanisms.model import FRAME, XY, Drive, Link, Mechanism, Pin, Rates, Slider, Slot
+from graphkin.units import length_factor, parse_rate
+
+__all__ = ["load", "loads", "from_dict"]
+
+_TOP_KEYS = {"title", "units", "links", "sliders", "slots", "drive", "rates", "assembly"}
+
+
+def load(path: str | Path) -> Mechanism:
+    """Read a mechanism file.
+
+    Parameters
+    ----------
+    path : str or Path
+        A TOML file in the format of ``spec/format.md``.
+
+    Returns
+    -------
+    Mechanism
+
+    Raises
+    ------
+    InputError
+        The file cannot be read, or says something impossible (naming the key).
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read the file ({exc.strerror or exc})", file=str(p)) from None
+    except UnicodeDecodeError:
+        raise InputError("the file is not UTF-8 text", file=str(p)) from None
+    return loads(text, source=str(p))
+
+
+def loads(text: str, source: str = "<mechanism>") -> Mechanism:
+    """Parse mechanism-file text (see :func:`load`)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"TOML syntax error: {exc}", file=source) from None
+    return from_dict(data, source=source)
+
+
+def from_dict(data: Mapping[str, Any], source: str = "<mechanism>") -> Mechanism:
+    """Build and validate a :class:`Mechanism` from parsed TOML data."""
+    return _Parser(data, source).mechanism()
+
+
+class _Parser:
+    def __init__(self, data: Mapping[str, Any], source: str) -> None:
+        self.data = data
+        self.source = source
+
+    def fail(self, key: str | None, message: str) -> InputError:
+        return InputError(message, key=key, file=self.source)
+
+    # ---- small readers -------------------------------------------------
+    def xy(self, value: Any, key: str) -> XY:
+        if (not isinstance(value, list) or len(value) != 2
+                or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                           for v in value)):
+            raise self.fail(key, f"a point must be two numbers [x, y], not {value!r}")
+        x, y = float(value[0]), float(value[1])
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise self.fail(key, f"coordinates must be finite numbers, not {value!r}")
+        return (x, y)
+
+    def table(self, value: Any, key: str) -> Mapping[str, Any]:
+        if not isinstance(value, Mapping):
+            raise self.fail(key, f"expected a table, not {value!r}")
+        return value
+
+    def link_id(self, value: Any, key: str) -> str:
+        if isinstance(value, bool) or not isinstance(value, (int, str)):
+            raise self.fail(key, f"a link id must be a number or a name, not {value!r}")
+        lid = str(value)
+        if lid not in self.links:
+            raise self.fail(key, f"no link {lid!r} (links: {', '.join(self.links)})")
+        return lid
+
+    def point_of(self, link: str, value: Any, key: str) -> str:
+        if not isinstance(value, str):
+            raise self.fail(key, f"a point is named by a string, not {value!r}")
+        if value not in self.links[link].points:
+            names = ", ".join(self.links[link].points) or "none"
+            raise self.fail(key, f"link {link} has no point {value!r} (its points: {names})")
+        return value
+
+    def line_in(self, link: str, value: Any, key: str) -> tuple[XY, XY]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(key, "a line is two points: [[x0, y0], [x1, y1]] or point names")
+        pts = []
+        for i, v in enumerate(value):
+            if isinstance(v, str):
+                pts.append(self.links[link].points[self.point_of(link, v, f"{key}[{i}]")])
+            else:
+                pts.append(self.xy(v, f"{key}[{i}]"))
+        (x0, y0), (x1, y1) = pts
+        if math.hypot(x1 - x0, y1 - y0) <= 1e-12 * max(1.0, abs(x0), abs(y0)):
+            raise self.fail(key, "degenerate line: its two points coincide")
+        return pts[0], pts[1]
+
+    def rate(self, value: Any, kind: str, key: str) -> float:
+        try:
+            return parse_rate(value, kind, self.unit)
+        except ValueError as exc:
+            raise self.fail(key, str(exc)) from None
+
+    def entries(self, name: str) -> list[Mapping[str, Any]]:
+        raw = self.data.get(name, [])
+        if isinstance(raw, Mapping):
+            raw = [raw]
+        if not isinstance(raw, list):
+            raise self.fail(name, f"expected [[{name}]] tables")
+        return [self.table(r, f"{name}[{i}]") for i, r in enumerate(raw)]
+
+    # ---- the mechanism -----------------------------------------------
+    def mechanism(self) -> Mechanism:
+        data = self.data
+        for k in data:
+            if k not in _TOP_KEYS:
+                # unknown top-level keys are allowed (extensions) but not misspellings of ours
+                close = [t for t in _TOP_KEYS if _similar(k, t)]
+                if close:
+                    raise self.fail(k, f"unknown key (did you mean {close[0]!r}?)")
+        title = data.get("title", "")
+        if not isinstance(title, str):
+            raise self.fail("title", "the title must be a string")
+        units = self.table(data.get("units", {}), "units")
+        self.unit = units.get("length", "mm")
+        if not isinstance(self.unit, str):
+            raise self.fail("units.length", "the length unit must be a string such as \"mm\"")
+        try:
+            length_factor(self.unit)
+        except ValueError as exc:
+            raise self.fail("units.length", str(exc)) from None
+
+        links_raw = self.table(data.get("links"), "links") if "links" in data else None
+        if not links_raw:
+            raise self.fail("links", "a mechanism needs [links.1] (the frame) and moving links")
+        self.links: dict[str, Link] = {}
+        for lid, pts in links_raw.items():
+            key = f"links.{lid}"
+            pts = self.table(pts, key)
+            points = {str(n): self.xy(v, f"{key}.{n}") for n, v in pts.items()}
+            self.links[str(lid)] = Link(str(lid), points)
+        if FRAME not in self.links:
+            raise self.fail("links", "link 1 (the frame) is missing")
+        if len(self.links) < 2:
+            raise self.fail("links", "a mechanism needs at least one moving link")
+
+        pins = []
+        owners: dict[str, list[str]] = {}
+        for lid, link in self.links.items():
+            for n in link.points:
+                owners.setdefault(n, []).append(lid)
+        for n, lids in owners.items():
+            if len(lids) > 1:
+                pins.append(Pin(n, tuple(lids)))
+
+        sliders = []
+        for i, s in enumerate(self.entries("sliders")):
+            key = f"sliders[{i}]"
+            link = self.link_id(s.get("link"), f"{key}.link")
+            on = self.link_id(s.get("on"), f"{key}.on")
+            if link == on:
+                raise self.fail(f"{key}.on", "a link cannot slide on itself")
+            point = self.point_of(link, s.get("point"), f"{key}.point")
+            if "line" not in s:
+                raise self.fail(f"{key}.line", "a slider needs its line")
+            p0, p1 = self.line_in(on, s["line"], f"{key}.line")
+            sliders.append(Slider(i, link, on, point, p0, p1, key))
+
+        slots = []
+        for i, s in enumerate(self.entries("slots")):
+            key = f"slots[{i}]"
+            link = self.link_id(s.get("link"), f"{key}.link")
+            on = self.link_id(s.get("on"), f"{key}.on")
+            if link == on:
+                raise self.fail(f"{key}.on", "a slot and its pin must be on different links")
+            point = self.point_of(link, s.get("point"), f"{key}.point")
+            if ("line" in s) == ("circle" in s):
+                raise self.fail(key, "a slot has either a line or a circle")
+            if "line" in s:
+                p0, p1 = self.line_in(on, s["line"], f"{key}.line")
+                slots.append(Slot(i, link, on, point, p0=p0, p1=p1, key=key))
+            else:
+                c = self.table(s["circle"], f"{key}.circle")
+                cv = c.get("center")
+                if isinstance(cv, str):
+                    center = self.links[on].points[self.point_of(on, cv, f"{key}.circle.center")]
+                else:
+                    center = self.xy(cv, f"{key}.circle.center")
+                r = c.get("radius")
+                if isinstance(r, bool) or not isinstance(r, (int, float, str)):
+                    raise self.fail(f"{key}.circle.radius", "the radius must be a number")
+                r = self.rate(r, "length", f"{key}.circle.radius")
+                if not r > 0:
+                    raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {r}")
+                slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
+
+        drives = self.drives(pins, sliders)
+        rates = self.rates_table(sliders)
+        assembly = {}
+        for n, v in self.table(data.get("assembly", {}), "assembly").items():
+            if n not in owners:
+                raise self.fail(f"assembly.{n}", f"no point named {n!r}")
+            assembly[str(n)] = self.xy(v, f"assembly.{n}")
+
+        mech = Mechanism(links=self.links, pins=tuple(pins), sliders=tuple(sliders),
+                         slots=tuple(slots), drives=tuple(drives), rates=rates,
+                         assembly=assembly, title=title, length_unit=self.unit,
+                         source=self.source)
+        self.check_mobility(mech)
+        return mech
+
+    def drives(self, pins: list[Pin], sliders: list[Slider]) -> list[Drive]:
+        raw = self.data.get("drive")
+        if raw is None:
+            raise self.fail("drive", "the file needs a [drive] (what fixes the posture)")
+        items = [raw] if isinstance(raw, Mapping) else raw
+        if not isinstance(items, list) or not items:
+            raise self.fail("drive", "expected [drive] or [[drive]] tables")
+        multi = not isinstance(raw, Mapping)
+        out = []
+        seen = set()
+        for i, d in enumerate(items):
+            key = f"drive[{i}]" if multi else "drive"
+            d = self.table(d, key)
+            lid = self.link_id(d.get("link"), f"{key}.link")
+            if lid == FRAME:
+                raise self.fail(f"{key}.link", "the frame cannot be driven")
+            if lid in seen:
+                raise self.fail(f"{key}.link", f"link {lid} is driven twice")
+            seen.add(lid)
+            has_angle, has_pos = "angle" in d, "position" in d
+            if has_angle == has_pos:
+                raise self.fail(key, "a drive gives either angle (revolute) or position (slider)")
+            if has_angle:
+                pivot = next((p.name for p in pins if lid in p.links and FRAME in p.links), None)
+                if pivot is None:
+                    raise self.fail(f"{key}.link", f"link {lid} is not pinned to the frame, "
+                                    "so its angle cannot drive it (drive a slider by position)")
+                value = math.radians(self.rate(d["angle"], "angle", f"{key}.angle"))
+                rate = self.rate(d["omega"], "omega", f"{key}.omega") if "omega" in d else None
+                rate2 = self.rate(d["alpha"], "alpha", f"{key}.alpha") if "alpha" in d else None
+                for bad in ("velocity", "acceleration"):
+                    if bad in d:
+                        raise self.fail(f"{key}.{bad}", "a revolute drive takes omega and alpha")
+                out.append(Drive(i, lid, "angle", value, rate, rate2, pivot=pivot, key=key))
+            else:
+                slider = next((s for s in sliders if s.link == lid), None)
+                if slider is None:
+                    raise self.fail(f"{key}.link", f"link {lid} is not a slider, so a position "
+                                    "cannot drive it (drive a pinned link by angle)")
+                value = self.rate(d["position"], "length", f"{key}.position")
+                rate = (self.rate(d["velocity"], "velocity", f"{key}.velocity")
+                        if "velocity" in d else None)
+                rate2 = (self.rate(d["acceleration"], "acceleration", f"{key}.acceleration")
+                         if "acceleration" in d else None)
+                for bad in ("omega", "alpha"):
+                    if bad in d:
+                        raise self.fail(f"{key}.{bad}",
+                                        "a slider drive takes velocity and acceleration")
+                out.append(Drive(i, lid, "position", value, rate, rate2, slider=slider, key=key))
+        has = [d.rate is not None for d in out]
+        if any(has) and not all(has):
+            raise self.fail("drive", "give the rate of every drive or of none")
+        return out
+
+    def rates_table(self, sliders: list[Slider]) -> Rates | None:
+        if "rates" not in self.data:
+            return None
+        r = self.table(self.data["rates"], "rates")
+        lid = self.link_id(r.get("link"), "rates.link")
+        if lid == FRAME:
+            raise self.fail("rates.link", "the frame does not move")
+        if "omega" in r or "alpha" in r:
+            rate = self.rate(r["omega"], "omega", "rates.omega") if "omega" in r else None
+            rate2 = self.rate(r["alpha"], "alpha", "rates.alpha") if "alpha" in r else None
+            kind = "angle"
+        else:
+            if not any(s.link == lid for s in sliders):
+                raise self.fail("rates", "give omega/alpha of a link, or velocity/acceleration "
+                                "of a slider")
+            rate = self.rate(r["velocity"], "velocity", "rates.velocity") \
+                if "velocity" in r else None
+            rate2 = self.rate(r["acceleration"], "acceleration", "rates.acceleration") \
+                if "acceleration" in r else None
+            kind = "position"
+        if rate is None:
+            raise self.fail("rates", "[rates] needs omega (or velocity for a slider)")
+        drives = self.data.get("drive")
+        if isinstance(drives, list) and len(drives) > 1:
+            raise self.fail("rates", "[rates] fixes one rate: it needs a single drive")
+        if isinstance(drives, Mapping) and any(k in drives for k in
+                                               ("omega", "alpha", "velocity", "acceleration")):
+            raise self.fail("rates", "rates are given twice: in [drive] and in [rates]")
+        return Rates(lid, kind, rate, rate2)
+
+    def check_mobility(self, mech: Mechanism) -> None:
+        m = mech.mobility()
+        n = len(mech.drives)
+        if m != n:
+            raise self.fail("drive", f"wrong number of constraints: the mechanism has {m} "
+                            f"degree(s) of freedom (Kutzbach) but {n} drive(s)")
+        for lid in mech.moving:
+            link = mech.links[lid]
+            slid = any(s.link == lid or s.on == lid for s in mech.sliders)
+            if not link.points and not slid:
+                raise self.fail(f"links.{lid}", "a moving link needs at least one point")
+
+
+def _similar(a: str, b: str) -> bool:
+    """True for a probable misspelling (one edit apart, or a plural)."""
+    if a == b:
+        return False
+    if a.rstrip("s") == b.rstrip("s"):
+        return True
+    if abs(len(a) - len(b)) > 1:
+        return False
+    # one substitution, insertion or deletion
+    i = 0
+    while i < min(len(a), len(b)) and a[i] == b[i]:
+        i += 1
+    return a[i + 1:] == b[i + 1:] or a[i:] == b[i + 1:] or a[i + 1:] == b[i:]
