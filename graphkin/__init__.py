@@ -1,1 +1,58 @@
-"""graphkin."""
+"""graphkin: the graphic constructions of planar mechanism kinematics, exact and drawn.
+
+The polygon methods of Uicker, Pennock & Shigley, *Theory of Machines and
+Mechanisms* (5th ed.), Chapters 2-5: posture by the four cases of the planar
+vector equation, velocity and acceleration polygons and images, instant
+centers, curvature.  Importing graphkin does not import matplotlib.
+
+Examples
+--------
+>>> import graphkin
+>>> mech = graphkin.loads('''
+... [links.1]
+... A = [0, 0]
+... D = [10, 0]
+... [links.2]
+... A = [0, 0]
+... B = [4, 0]
+... [links.3]
+... B = [0, 0]
+... C = [18, 0]
+... [links.4]
+... D = [0, 0]
+... C = [11, 0]
+... [drive]
+... link = 2
+... angle = 120
+... [assembly]
+... C = [15, 10]
+... ''')
+>>> sol = mech.solve()
+>>> round(float(sol.angle("3")), 6)  # θ3 of Example 3.1, in radians
+0.365102
+"""
+
+from graphkin.construction import Construction, Step
+from graphkin.errors import (
+    AssemblyError,
+    ConstructionError,
+    DegenerateError,
+    GraphkinError,
+    IdealPointError,
+    InputError,
+    NoIntersectionError,
+    ParallelDirectionsError,
+)
+from graphkin.kinematics.solution import LinkState, Solution
+from graphkin.kinematics.solve import solve
+from graphkin.mechanisms import Mechanism, from_dict, load, loads
+from graphkin.tolerance import DEFAULT_TOL, Tolerance
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "load", "loads", "from_dict", "solve", "Mechanism", "Solution", "LinkState",
+    "Construction", "Step", "Tolerance", "DEFAULT_TOL", "GraphkinError", "InputError",
+    "ConstructionError", "NoIntersectionError", "ParallelDirectionsError", "DegenerateError",
+    "IdealPointError", "AssemblyError", "__version__",
+]

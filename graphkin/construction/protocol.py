@@ -172,6 +172,11 @@ class Construction:
         valid: np.ndarray | None = None
         failed_at: np.ndarray | None = None
         for step in self.steps[start:]:
+            if step.op == "input":
+                if step.outputs[0] not in env:
+                    raise ConstructionError(f"step {step.label}: the input {step.outputs[0]!r} "
+                                            "was not given", step=step.label)
+                continue
             try:
                 args = [env[i] for i in step.inputs]
             except KeyError as exc:

@@ -190,3 +190,17 @@ class Mechanism:
         m -= sum(2 * (len(p.links) - 1) for p in self.pins)
         m -= 2 * len(self.sliders) + len(self.slots)
         return m
+
+    # ---- conveniences (the work is done in graphkin.kinematics) ------
+    def solve(self, tol: object = None) -> object:
+        """Solve at the file's posture; see :func:`graphkin.kinematics.solve.solve`."""
+        from graphkin.kinematics.solve import solve
+
+        return solve(self, tol)  # type: ignore[arg-type]
+
+    def sweep(self, count: int = 360, start: float | None = None, stop: float | None = None,
+              **kw: object) -> object:
+        """Solve over many drive values at once; see :func:`graphkin.kinematics.sweep.sweep`."""
+        from graphkin.kinematics.sweep import sweep
+
+        return sweep(self, count=count, start=start, stop=stop, **kw)  # type: ignore[arg-type]

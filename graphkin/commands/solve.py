@@ -1,0 +1,42 @@
+"""``graphkin solve FILE [--json] [--steps]``: solve a mechanism at its posture."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = sub.add_parser("solve", help="solve a mechanism file by the graphic constructions",
+                       description="Solve a mechanism at the file's posture: positions, and "
+                                   "velocities and accelerations when the file gives rates.")
+    p.add_argument("file", help="mechanism file (TOML, see the README)")
+    p.add_argument("--json", action="store_true", help="print the JSON of spec/output.md")
+    p.add_argument("--steps", action="store_true",
+                   help="also list every construction step with its vector equation")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    import graphkin
+    from graphkin.output import solution_to_dict, text_report
+
+    mech = graphkin.load(args.file)
+    sol = mech.solve()
+    if args.json:
+        data = solution_to_dict(sol)
+        if args.steps:
+            data["constructions"] = {k: c.to_dict() for k, c in sol.constructions.items()}
+        json.dump(data, sys.stdout, ensure_ascii=False, indent=1, allow_nan=False)
+        sys.stdout.write("\n")
+        return 0
+    sys.stdout.write(text_report(sol))
+    if args.steps:
+        for name, c in sol.constructions.items():
+            sys.stdout.write(f"\n{name.capitalize()} construction\n{c.table()}\n")
+    return 0

@@ -1,0 +1,1 @@
+"""The book's constructions built from construction steps, and the analytic oracle."""

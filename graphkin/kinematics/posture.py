@@ -1,0 +1,637 @@
+"""Graphic posture analysis: a mechanism decomposed into the book's constructions.
+
+The frame is drawn first, then the input link at its drive angle (case 1),
+then each unknown point is found from points already known, one group at a
+time, exactly as a draftsman would (Sec. 2.8, Figs. 2.14-2.16):
+
+* a point on two links that each have one known point: two arcs (case 4);
+* a point on a link that has one known point and on a slider whose angle is
+  known: an arc and a line (case 2);
+* a point on two links that both translate along known lines: two lines (case 3);
+* a link with one known point carrying a slot (or the rod of an inverted
+  slider-crank) through which a known point passes: the tangent from that
+  point to the circle of the slot's offset (Thales' circle and an arc, case 4);
+* a link with one known point whose pin runs in a slot of a known link:
+  an arc and the slot (case 2 or 4).
+
+Every two-way choice takes the branch whose points lie nearer the file's
+assembly hints and records the branch by name.  Mechanisms that cannot be
+solved one group at a time are left to the analytic solver (the caller says so).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 and Table 2.2.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from graphkin.construction import Construction, Mark, Role, Term, VectorEquation
+from graphkin.construction.ops import OPS
+from graphkin.errors import AssemblyError, ConstructionError
+from graphkin.geometry import ops as g
+from graphkin.mechanisms.model import FRAME, XY, Mechanism
+from graphkin.tolerance import Tolerance
+
+__all__ = ["PostureConstruction", "build_posture", "NotDecomposable"]
+
+K, U, C_, I_ = Mark.KNOWN, Mark.UNKNOWN, Mark.CONSTRAINED, Mark.INPUT
+
+
+class NotDecomposable(ConstructionError):
+    """The mechanism cannot be solved one group at a time (the analytic solver takes over)."""
+
+
+@dataclass
+class PostureConstruction:
+    """The recorded posture construction of a mechanism and how to read links from it.
+
+    Attributes
+    ----------
+    construction : Construction
+        The steps.
+    inputs : dict
+        Label of each drive input -> its value at the file's posture.
+    anchors : dict
+        Link id -> (label of a point of the link, its local coordinates).
+    angles : dict
+        Link id -> label of the link's angle θ.
+    known : dict
+        Link id -> {label: local coordinates} of every point of the link that
+        the construction places (named points and construction points).
+    branches : dict
+        Step label -> branch taken.
+    notes : list of str
+    """
+
+    construction: Construction
+    inputs: dict[str, float]
+    anchors: dict[str, tuple[str, XY]]
+    angles: dict[str, str]
+    known: dict[str, dict[str, XY]]
+    branches: dict[str, str] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+    values: dict[str, np.ndarray] = field(default_factory=dict)
+    events: list[tuple[object, ...]] = field(default_factory=list)
+
+
+class _Builder:
+    """Adds steps and evaluates them at once on the file's posture."""
+
+    def __init__(self, mech: Mechanism, tol: Tolerance) -> None:
+        self.mech = mech
+        self.tol = tol
+        self.cx = Construction(title=mech.title)
+        self.env: dict[str, np.ndarray] = {}
+        self.inputs: dict[str, float] = {}
+        self.known: dict[str, dict[str, XY]] = {k: {} for k in mech.links}
+        self.angle: dict[str, str] = {}
+        self.placed: set[str] = set()
+        self.anchor: dict[str, tuple[str, XY]] = {}
+        self.branches: dict[str, str] = {}
+        self.notes: list[str] = []
+        self.events: list[tuple[object, ...]] = []
+        self.forced: dict[str, str] = {}
+        self.serial = 0
+
+    # ---- steps --------------------------------------------------------
+    def add(self, op: str, inputs: tuple[str, ...], outputs: tuple[str, ...],
+            **kw: object) -> None:
+        step = self.cx.add(op, inputs, outputs, **kw)  # type: ignore[arg-type]
+        if op == "input":
+            return
+        args = [self.env[i] for i in step.inputs]
+        with np.errstate(invalid="ignore", divide="ignore"):
+            outs = OPS[op](*args, tol=self.tol, **step.params)
+        for name, val in zip(step.outputs, outs):
+            self.env[name] = np.asarray(val, dtype=float)
+        for val in outs:
+            if not np.all(np.isfinite(val)) and step.kind != "point":
+                raise self._fail(step)
+            if step.kind == "point" and np.any(np.isnan(val)):
+                raise self._fail(step)
+
+    def _fail(self, step: object) -> ConstructionError:
+        from graphkin.construction.protocol import _failure
+
+        exc = _failure(step, [self.env[i] for i in step.inputs])  # type: ignore[attr-defined]
+        return AssemblyError(f"cannot assemble at this drive: {exc}", step=step.label,  # type: ignore[attr-defined]
+                             objects=getattr(exc, "objects", {}))
+
+    def fresh(self, stem: str) -> str:
+        self.serial += 1
+        return f"{stem}#{self.serial}"
+
+    def link_name(self, lid: str) -> str:
+        return "frame" if lid == FRAME else f"link {lid}"
+
+    # ---- knowledge ---------------------------------------------------
+    def known_points(self, lid: str) -> dict[str, XY]:
+        """Known points of a link: its named points first, then construction points."""
+        out = {name: loc for name, loc in self.mech.links[lid].points.items()
+               if name in self.env}
+        for lab, loc in self.known[lid].items():
+            out.setdefault(lab, loc)
+        return out
+
+    def distinct_known(self, lid: str) -> list[tuple[str, XY]]:
+        pts: list[tuple[str, XY]] = []
+        for lab, loc in self.known_points(lid).items():
+            if all(math.hypot(loc[0] - q[0], loc[1] - q[1]) > self.tol.length(self.mech.scale)
+                   for _, q in pts):
+                pts.append((lab, loc))
+        return pts
+
+    # ---- the frame and the drives -----------------------------------
+    def start(self) -> None:
+        frame = self.mech.links[FRAME]
+        self.add("scalar", (), ("θ1",), value=0.0, role=Role.GIVEN,
+                 note="The frame, link 1, is fixed.")
+        self.angle[FRAME] = "θ1"
+        for name, xy in frame.points.items():
+            self.add("point", (), (name,), xy=xy, role=Role.GIVEN,
+                     note=f"Locate the fixed point {name} of the frame.")
+        self.place(FRAME)
+        for d in self.mech.drives:
+            if d.kind == "angle":
+                lab = f"θ{d.link}"
+                self.inputs[lab] = d.value
+                self.env[lab] = np.asarray(d.value)
+                self.add("input", (), (lab,), name=lab, role=Role.GIVEN,
+                         note=f"The input: link {d.link} stands at θ{d.link} = "
+                              f"{math.degrees(d.value):.6g}°.")
+                self.angle[d.link] = lab
+                self.events.append(("input", d))
+            else:
+                lab = f"s{d.link}"
+                self.inputs[lab] = d.value
+                self.env[lab] = np.asarray(d.value)
+                self.add("input", (), (lab,), name=lab, role=Role.GIVEN,
+                         note=f"The input: the slider {d.link} has travelled {d.value:.6g} along "
+                              "its line.")
+                self.events.append(("input", d))
+
+    def place(self, lid: str) -> None:
+        """Lay off every point of a link from one known point and its angle (case 1)."""
+        link = self.mech.links[lid]
+        known = self.distinct_known(lid)
+        if lid not in self.angle:
+            (a, la), (b, lb) = known[0], known[1]
+            lab = f"θ{lid}"
+            self.add("link_angle", (a, b), (lab,), local_a=la, local_b=lb, role=Role.RESULT,
+                     note=f"Measure the angle of {self.link_name(lid)} from {_n(a)}{_n(b)}: "
+                          f"θ{lid}.")
+            self.angle[lid] = lab
+            self.events.append(("link_angle", lid, a, b))
+        th = self.angle[lid]
+        if lid == FRAME:
+            self.placed.add(lid)
+            self.place_paths(lid, None, None, th)
+            return
+        anchor, aloc = known[0]
+        self.anchor[lid] = (anchor, aloc)
+        self.placed.add(lid)
+        self.events.append(("placed", lid, anchor))
+        for name, loc in link.points.items():
+            if name in self.env:
+                continue
+            eq = VectorEquation((Term(f"R_{name}", U, U),),
+                                (Term(f"R_{_n(anchor)}"), Term(f"R_{name}{_n(anchor)}", K, C_)),
+                                case=1)
+            self.add("rigid", (anchor, th), (name,), local_p=aloc, local_q=loc,
+                     role=Role.RESULT, equation=eq,
+                     note=f"Lay off {_n(anchor)}{name} on {self.link_name(lid)} at its angle: "
+                          f"{name} (case 1).")
+            self.events.append(("point", lid, name, anchor))
+        self.place_paths(lid, anchor, aloc, th)
+
+    def place_paths(self, lid: str, anchor: str | None, aloc: XY | None, th: str) -> None:
+        """Mark the slider lines and slot paths carried by a placed link."""
+
+        def mark(lab: str, loc: XY, note: str) -> None:
+            if lab in self.env:
+                return
+            if anchor is None:
+                self.add("point", (), (lab,), xy=loc, role=Role.GIVEN, note=note)
+            else:
+                self.add("rigid", (anchor, th), (lab,), local_p=aloc, local_q=loc, note=note)
+
+        for s in [*self.mech.sliders, *self.mech.slots]:
+            if s.on != lid:
+                continue
+            if getattr(s, "p0", None) is not None:
+                for tag, loc in (("L0", s.p0), ("L1", s.p1)):
+                    lab = f"{s.key}:{tag}"
+                    mark(lab, loc, f"Mark the line of {s.key} on {self.link_name(lid)}.")
+                    self.known[lid][lab] = loc
+                if f"{s.key}:line" not in self.env:
+                    self.add("join", (f"{s.key}:L0", f"{s.key}:L1"), (f"{s.key}:line",),
+                             note=f"Draw the path of {s.point}: the line of {s.key}.")
+            else:
+                lab = f"{s.key}:O"
+                if f"{s.key}:k" not in self.env:
+                    mark(lab, s.center, f"Mark the center of the circular slot {s.key}.")
+                    self.add("circle", (lab,), (f"{s.key}:k",), radius=s.radius,
+                             note=f"Draw the circular path of {s.point} ({s.key}).")
+                self.known[lid][lab] = s.center  # type: ignore[assignment]
+
+    # ---- propagation -------------------------------------------------
+    def propagate(self) -> None:
+        changed = True
+        while changed:
+            changed = False
+            for s in self.mech.sliders:
+                a, b = s.link, s.on
+                if b in self.angle and a not in self.angle:
+                    self.add("add_angle", (self.angle[b],), (f"θ{a}",),
+                             offset=s.direction_angle,
+                             note=f"The slider {a} keeps its angle on {self.link_name(b)}: θ{a}.")
+                    self.angle[a] = f"θ{a}"
+                    self.events.append(("same_angle", a, b))
+                    changed = True
+                elif a in self.angle and b not in self.angle:
+                    self.add("add_angle", (self.angle[a],), (f"θ{b}",),
+                             offset=-s.direction_angle,
+                             note=f"{self.link_name(b).capitalize()} keeps its angle to the "
+                                  f"slider {a}: θ{b}.")
+                    self.angle[b] = f"θ{b}"
+                    self.events.append(("same_angle", b, a))
+                    changed = True
+            for d in self.mech.drives:
+                s = d.slider
+                if d.kind == "position" and s is not None and s.on in self.placed \
+                        and s.point not in self.env:
+                    eq = VectorEquation((Term(f"R_{s.point}", U, U),),
+                                        (Term(f"R_{s.key}:L0"), Term(f"R_{s.point}", I_, K)),
+                                        case=1)
+                    self.add("along_line", (f"{s.key}:L0", f"{s.key}:L1", f"s{d.link}"),
+                             (s.point,), role=Role.RESULT, equation=eq,
+                             note=f"Lay off the travel s{d.link} along the line: {s.point}.")
+                    self.events.append(("slider_drive", d))
+                    changed = True
+            for lid in self.mech.links:
+                if lid in self.placed:
+                    continue
+                pts = self.distinct_known(lid)
+                if (lid in self.angle and pts) or len(pts) >= 2:
+                    self.place(lid)
+                    changed = True
+
+    def unplaced(self) -> list[str]:
+        return [k for k in self.mech.links if k not in self.placed]
+
+    # ---- loci --------------------------------------------------------
+    def locus(self, lid: str, name: str, loc: XY) -> tuple[str, str, str, tuple[str, ...]]:
+        """Construct the locus of the point ``name`` (local ``loc``) of an unplaced link.
+
+        Returns (label, kind, vector name, motion) with kind "circle" or "line";
+        motion is ("rot", link, P) for a link turning about its known point P, or
+        ("slide", link, k, line label) for a link translating on the placed link k.
+        """
+        pts = self.distinct_known(lid)
+        if lid not in self.angle and len(pts) == 1:
+            p, ploc = pts[0]
+            r = math.hypot(loc[0] - ploc[0], loc[1] - ploc[1])
+            lab = f"k_{name}({_n(p)})"
+            if lab not in self.env:
+                self.add("circle", (p,), (lab,), radius=r,
+                         note=f"About {_n(p)} draw an arc of radius {_n(p)}{name} = {r:.6g}.")
+            return lab, "circle", f"R_{name}{_n(p)}", ("rot", lid, p)
+        if lid in self.angle and not pts:
+            th = self.angle[lid]
+            for s in self.mech.sliders:
+                if s.link == lid and s.on in self.placed:
+                    sloc = self.mech.links[lid].points[s.point]
+                    x = self.fresh(f"{name}'")
+                    self.add("rigid", (f"{s.key}:L0", th), (x,), local_p=sloc, local_q=loc,
+                             note=f"Where {name} would be with {s.point} at the line's start.")
+                    lab = f"l_{name}({s.key})"
+                    self.add("parallel", (f"{s.key}:line", x), (lab,),
+                             note=f"Through it draw the path of {name}, parallel to the slide.")
+                    return lab, "line", f"R_{name}", ("slide", lid, s.on, lab)
+                if s.on == lid and s.link in self.placed:
+                    x = self.fresh(f"{name}'")
+                    self.add("rigid", (s.point, th), (x,), local_p=s.p0, local_q=loc,
+                             note=f"Where {name} would be with the slide's start at {s.point}.")
+                    lab = f"l_{name}({s.key})"
+                    self.add("line_at_angle", (x, th), (lab,), offset=s.direction_angle,
+                             note=f"Through it draw the path of {name}, parallel to the slide.")
+                    return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
+        raise AssertionError("no locus")
+
+    # ---- groups ------------------------------------------------------
+    def options(self) -> list[tuple[str, object]]:
+        """The groups that can be constructed now, in a fixed order."""
+        out: list[tuple[str, object]] = []
+        mech = self.mech
+        for pin in mech.pins:
+            if pin.name in self.env:
+                continue
+            links = [k for k in pin.links if k not in self.placed]
+            for i in range(len(links)):
+                for j in range(i + 1, len(links)):
+                    if self.can_locus(links[i]) and self.can_locus(links[j]):
+                        out.append(("dyad", (pin.name, links[i], links[j])))
+        for s in mech.slots:
+            if s.link not in self.placed and s.on in self.placed and self.one_point(s.link):
+                out.append(("pin_in_slot", s))
+            if s.on not in self.placed and s.link in self.placed and self.one_point(s.on):
+                out.append(("slot_through", s))
+        for s in mech.sliders:
+            # the rod of an inverted slider-crank: the block has one known point, no angle
+            if (s.on not in self.placed and s.link not in self.placed and self.one_point(s.on)
+                    and self.one_point(s.link)):
+                out.append(("inverted", s))
+        return out
+
+    def one_point(self, lid: str) -> bool:
+        return lid not in self.angle and len(self.distinct_known(lid)) == 1
+
+    def can_locus(self, lid: str) -> bool:
+        if self.one_point(lid):
+            return True
+        if lid in self.angle and not self.distinct_known(lid):
+            return any((s.link == lid and s.on in self.placed) or
+                       (s.on == lid and s.link in self.placed) for s in self.mech.sliders)
+        return False
+
+    def do(self, kind: str, arg: object, branch: str | None) -> list[str]:
+        """Construct one group; returns the branch names possible for it."""
+        if kind == "dyad":
+            name, li, lj = arg  # type: ignore[misc]
+            mech = self.mech
+            loc_i = mech.links[li].points[name]
+            loc_j = mech.links[lj].points[name]
+            (la, ka, va, ma) = self.locus(li, name, loc_i)
+            (lb, kb, vb, mb) = self.locus(lj, name, loc_j)
+            if ka == "line" and kb == "circle":
+                (la, ka, va, ma), (lb, kb, vb, mb) = (lb, kb, vb, mb), (la, ka, va, ma)
+            self.events.append(("dyad", name, ma, mb))
+            mark = {"circle": (K, U), "line": (U, K)}
+            eq = VectorEquation((Term(va, *mark[ka]),), (Term(vb, *mark[kb]),),
+                                case={("circle", "circle"): 4, ("line", "line"): 3}.get(
+                                    (ka, kb), 2))
+            if ka == "circle" and kb == "circle":
+                names = ["left", "right"]
+                self.add("intersect_circles", (la, lb), (name,), branch=branch or names[0],
+                         role=Role.RESULT, equation=eq,
+                         note=f"The arcs meet at {name} (case 4).")
+                return names
+            if ka == "circle" and kb == "line":
+                names = ["behind", "ahead"]
+                self.add("intersect_line_circle", (lb, la), (name,), branch=branch or names[0],
+                         role=Role.RESULT, equation=eq,
+                         note=f"The arc cuts the line at {name} (case 2).")
+                return names
+            self.add("meet", (la, lb), (name,), role=Role.RESULT, equation=eq,
+                     note=f"The two lines meet at {name} (case 3).")
+            if not np.isfinite(g.xy(self.env[name])).all():
+                raise AssemblyError(f"cannot assemble: the paths of {name} are parallel",
+                                    step=name)
+            return [""]
+        if kind == "pin_in_slot":
+            s = arg
+            lid = s.link  # type: ignore[attr-defined]
+            (p, ploc), = self.distinct_known(lid)
+            sloc = self.mech.links[lid].points[s.point]  # type: ignore[attr-defined]
+            r = math.hypot(sloc[0] - ploc[0], sloc[1] - ploc[1])
+            k = f"k_{s.point}({_n(p)})"  # type: ignore[attr-defined]
+            self.events.append(("pin_in_slot", s, lid, p))
+            self.add("circle", (p,), (k,), radius=r,
+                     note=f"About {_n(p)} draw an arc through the pin's distance.")
+            if s.is_line:  # type: ignore[attr-defined]
+                names = ["behind", "ahead"]
+                self.add("intersect_line_circle", (f"{s.key}:line", k), (s.point,),  # type: ignore[attr-defined]
+                         branch=branch or names[0], role=Role.RESULT,
+                         equation=VectorEquation((Term(f"R_{s.point}", U, K),),  # type: ignore[attr-defined]
+                                                 (Term(f"R_{s.point}{_n(p)}", K, U),), case=2),
+                         note=f"The arc cuts the slot at {s.point} (case 2).")  # type: ignore[attr-defined]
+            else:
+                names = ["left", "right"]
+                self.add("intersect_circles", (f"{s.key}:k", k), (s.point,),  # type: ignore[attr-defined]
+                         branch=branch or names[0], role=Role.RESULT,
+                         equation=VectorEquation((Term(f"R_{s.point}", K, U),),  # type: ignore[attr-defined]
+                                                 (Term(f"R_{s.point}{_n(p)}", K, U),), case=4),
+                         note=f"The arc cuts the circular slot at {s.point} (case 4).")  # type: ignore[attr-defined]
+            return names
+        if kind in ("slot_through", "inverted"):
+            s = arg
+            lid = s.on  # type: ignore[attr-defined]
+            if kind == "slot_through":
+                spoint = s.point  # type: ignore[attr-defined]
+                delta = (0.0, 0.0)
+            else:
+                # the block's known point A stands off the slide by a constant vector in the rod
+                (spoint, aloc), = self.distinct_known(s.link)  # type: ignore[attr-defined]
+                bloc = self.mech.links[s.link].points[s.point]  # type: ignore[attr-defined]
+                c, sn = math.cos(s.direction_angle), math.sin(s.direction_angle)  # type: ignore[attr-defined]
+                dx, dy = aloc[0] - bloc[0], aloc[1] - bloc[1]
+                delta = (c * dx - sn * dy, sn * dx + c * dy)
+            (p, ploc), = self.distinct_known(lid)
+            self.events.append(("relative", s, lid, p, spoint))
+            if getattr(s, "p0", None) is not None:
+                return self.tangent(lid, p, ploc, spoint, s, delta, branch)
+            return self.circle_slot_through(lid, p, ploc, spoint, s, branch)
+        raise AssertionError(kind)
+
+    def tangent(self, lid: str, p: str, ploc: XY, spoint: str, s: object, delta: XY,
+                branch: str | None) -> list[str]:
+        """Place a link turning about P so that its line passes through the known point S."""
+        q0 = (s.p0[0] + delta[0], s.p0[1] + delta[1])  # type: ignore[attr-defined]
+        q1 = (s.p1[0] + delta[0], s.p1[1] + delta[1])  # type: ignore[attr-defined]
+        ux, uy = q1[0] - q0[0], q1[1] - q0[1]
+        n = math.hypot(ux, uy)
+        ux, uy = ux / n, uy / n
+        t = (ploc[0] - q0[0]) * ux + (ploc[1] - q0[1]) * uy
+        foot = (q0[0] + t * ux, q0[1] + t * uy)
+        d = math.hypot(foot[0] - ploc[0], foot[1] - ploc[1])
+        key = s.key  # type: ignore[attr-defined]
+        if d <= self.tol.length(self.mech.scale):
+            # the line passes through the pivot: it is the line P-S itself
+            lab = f"{key}:T"
+            r = max(n, 1.0)
+            self.add("join", (p, spoint), (f"{key}:PS",),
+                     note=f"The path passes through {_n(p)}: draw the line {_n(p)}{_n(spoint)}.")
+            self.add("circle", (p,), (f"{key}:u",), radius=r,
+                     note=f"About {_n(p)} mark a unit length on it.")
+            names = ["ahead", "behind"]
+            br = branch or names[0]
+            self.add("intersect_line_circle", (f"{key}:PS", f"{key}:u"), (lab,), branch=br,
+                     role=Role.AUXILIARY,
+                     equation=VectorEquation((Term(f"R_{_n(spoint)}{_n(p)}", U, K),),
+                                             (Term(f"R_{_n(spoint)}{_n(p)}", U, K),), case=1),
+                     note=f"The slide lies along {_n(p)}{_n(spoint)}.")
+            # the mark lies on the slide a distance r from the pivot, in the slide's direction
+            self.known[lid][lab] = (ploc[0] + r * ux, ploc[1] + r * uy)
+            return names
+        lab = f"{key}:T"
+        self.add("circle_on_diameter", (p, spoint), (f"{key}:thales",),
+                 note=f"Draw the circle on the diameter {_n(p)}{_n(spoint)} (Thales).")
+        self.add("circle", (p,), (f"{key}:offset",), radius=d,
+                 note=f"About {_n(p)} draw an arc of the path's offset {d:.6g}.")
+        names = ["left", "right"]
+        self.add("intersect_circles", (f"{key}:thales", f"{key}:offset"), (lab,),
+                 branch=branch or names[0], role=Role.AUXILIARY,
+                 equation=VectorEquation((Term(f"R_{_n(spoint)}{_n(p)}"),),
+                                         (Term(f"R_T{_n(p)}", K, U),
+                                          Term(f"R_{_n(spoint)}T", U, U)), case=4),
+                 note="They meet at the foot T of the perpendicular from the pivot to the path.")
+        self.known[lid][lab] = foot
+        return names
+
+    def circle_slot_through(self, lid: str, p: str, ploc: XY, spoint: str, s: object,
+                            branch: str | None) -> list[str]:
+        """Place a link turning about P whose circular slot passes through the known point S."""
+        cloc = s.center  # type: ignore[attr-defined]
+        key = s.key  # type: ignore[attr-defined]
+        r1 = math.hypot(cloc[0] - ploc[0], cloc[1] - ploc[1])
+        self.add("circle", (p,), (f"{key}:kc",), radius=r1,
+                 note=f"About {_n(p)} draw the arc of the slot's center.")
+        self.add("circle", (spoint,), (f"{key}:ks",), radius=s.radius,  # type: ignore[attr-defined]
+                 note=f"About {_n(spoint)} draw an arc of the slot's radius.")
+        names = ["left", "right"]
+        lab = f"{key}:O"
+        self.add("intersect_circles", (f"{key}:kc", f"{key}:ks"), (lab,),
+                 branch=branch or names[0], role=Role.RESULT,
+                 note="They meet at the slot's center (case 4).")
+        self.known[lid][lab] = cloc
+        return names
+
+
+def _n(label: str) -> str:
+    """A label as printed in a vector name (construction points keep their base)."""
+    return label.split("#")[0].split(":")[-1]
+
+
+def _hint_distance(b: _Builder, names: list[str]) -> float:
+    """Mean distance of the named points from their assembly hints."""
+    hints = b.mech.assembly
+    return float(np.mean([np.hypot(*(g.xy(b.env[n]) - np.asarray(hints[n]))) for n in names]))
+
+
+def _layout_distance(b: _Builder) -> float:
+    """How far the placed links are turned from their own drawing in the file.
+
+    Each link's points are compared with where they would be if the link kept
+    the orientation of its own coordinates (its x axis along the frame's).
+    """
+    total = 0.0
+    for lid in b.placed:
+        if lid == FRAME or lid not in b.anchor:
+            continue
+        anchor, aloc = b.anchor[lid]
+        pa = g.xy(b.env[anchor])
+        for name, loc in b.mech.links[lid].points.items():
+            if name in b.env:
+                drawn = pa + np.subtract(loc, aloc)
+                total += float(np.hypot(*(g.xy(b.env[name]) - drawn)))
+    return total
+
+
+def _choose(b: _Builder, kind: str, arg: object, names: list[str]) -> tuple[str, str]:
+    """Pick the branch of a two-way group; returns (branch, reason).
+
+    Each branch is carried through to the finished mechanism.  The hinted
+    points whose positions differ between the branches decide (the nearer
+    wins); when no hint tells them apart, the branch that leaves the links
+    nearest their own drawing in the file is taken.  A branch that cannot be
+    assembled further on is dropped.
+    """
+    finished: dict[str, _Builder] = {}
+    errors: list[Exception] = []
+    for name in names:
+        t = copy.deepcopy(b, {id(b.mech): b.mech})
+        try:
+            t.do(kind, arg, name)
+            try:
+                _finish(t)
+            except NotDecomposable:
+                pass
+        except AssemblyError as exc:
+            errors.append(exc)
+            continue
+        finished[name] = t
+    if not finished:
+        raise errors[0]
+    if len(finished) == 1:
+        return next(iter(finished)), "the other branch cannot be assembled"
+    first, second = finished.values()
+    scale = b.tol.length(b.mech.scale) * 1e3
+    differ = [n for n in b.mech.assembly
+              if n in first.env and n in second.env
+              and float(np.hypot(*(g.xy(first.env[n]) - g.xy(second.env[n])))) > scale]
+    if differ:
+        best = min(finished, key=lambda n: _hint_distance(finished[n], differ))
+        return best, "assembly hint"
+    best = min(finished, key=lambda n: _layout_distance(finished[n]))
+    return best, "no assembly hint decides it; took the branch nearest the file's drawing"
+
+
+def _finish(b: _Builder) -> None:
+    """Propagate, then construct groups, choosing each branch by the assembly hints."""
+    b.propagate()
+    while b.unplaced():
+        opts = b.options()
+        if not opts:
+            left = ", ".join(b.link_name(k) for k in b.unplaced())
+            raise NotDecomposable(f"{left} cannot be found one group at a time", step=left)
+        kind, arg = opts[0]
+        trial = copy.deepcopy(b, {id(b.mech): b.mech})
+        names = trial.do(kind, arg, None)
+        if len(names) == 1:
+            b.do(kind, arg, names[0])
+            b.propagate()
+            continue
+        label = next(s for s in reversed(trial.cx.steps) if s.branch).label
+        if label in b.forced:
+            chosen, reason = b.forced[label], "branch asked for"
+            if chosen not in names:
+                raise ConstructionError(f"step {label} has the branches {', '.join(names)}, "
+                                        f"not {chosen!r}", step=label)
+        else:
+            chosen, reason = _choose(b, kind, arg, names)
+        b.do(kind, arg, chosen)
+        step = next(s for s in reversed(b.cx.steps) if s.branch)
+        b.branches[step.label] = chosen
+        if reason not in ("assembly hint", "branch asked for"):
+            b.notes.append(f"{step.label}: {reason} ({chosen})")
+        b.propagate()
+
+
+def build_posture(mech: Mechanism, tol: Tolerance | None = None,
+                  branches: dict[str, str] | None = None) -> PostureConstruction:
+    """Decompose a mechanism into the book's posture constructions and carry them out.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    tol : Tolerance, optional
+    branches : dict, optional
+        Step label -> branch name, to force a branch instead of following the
+        assembly hints (e.g. ``{"C": "right"}`` for the other posture of a four-bar).
+
+    Returns
+    -------
+    PostureConstruction
+
+    Raises
+    ------
+    NotDecomposable
+        When some links cannot be found one group at a time.
+    AssemblyError
+        When the mechanism cannot be assembled at the file's drive.
+    """
+    from graphkin.tolerance import DEFAULT_TOL
+
+    b = _Builder(mech, tol or DEFAULT_TOL)
+    b.forced = dict(branches or {})
+    b.start()
+    _finish(b)
+    known = {lid: b.known_points(lid) for lid in mech.links}
+    return PostureConstruction(b.cx, b.inputs, b.anchor, b.angle, known, b.branches, b.notes,
+                               b.env, b.events)

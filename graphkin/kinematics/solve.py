@@ -1,0 +1,155 @@
+"""Solve a mechanism: the graphic constructions, with the analytic solver as fallback.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (posture), 3.4-3.6 (velocity
+polygons), 4.2-4.6 (acceleration polygons), 5.4 (several inputs).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from graphkin.errors import InputError
+from graphkin.geometry import ops as g
+from graphkin.kinematics.polygons import Polygons, build_polygons
+from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
+from graphkin.kinematics.solution import LinkState, Solution, perp
+from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.tolerance import Tolerance
+
+__all__ = ["solve", "link_states", "rate_inputs"]
+
+
+def link_states(mech: Mechanism, pc: PostureConstruction, values: Mapping[str, np.ndarray],
+                vel: Mapping[str, np.ndarray] | None = None,
+                acc: Mapping[str, np.ndarray] | None = None,
+                pol: Polygons | None = None) -> dict[str, LinkState]:
+    """Read every link's pose (and rates) from evaluated constructions.
+
+    Works on one posture or on arrays of postures alike.
+    """
+    shape = np.shape(values[next(iter(pc.inputs))]) if pc.inputs else ()
+    zero = np.zeros(shape)
+    states: dict[str, LinkState] = {}
+    for lid in mech.links:
+        if lid == FRAME:
+            z2 = np.zeros((*shape, 2))
+            states[lid] = LinkState(zero.copy(), z2.copy(),
+                                    None if vel is None else zero.copy(),
+                                    None if acc is None else zero.copy(),
+                                    None if vel is None else z2.copy(),
+                                    None if acc is None else z2.copy())
+            continue
+        theta = np.asarray(values[pc.angles[lid]], dtype=float) + zero
+        anchor, aloc = pc.anchors[lid]
+        pa = g.xy(values[anchor])
+        c, s = np.cos(theta), np.sin(theta)
+        r = np.stack([c * aloc[0] - s * aloc[1], s * aloc[0] + c * aloc[1]], axis=-1)
+        origin = pa - r
+        st = LinkState(theta, origin)
+        if vel is not None:
+            w = np.asarray(vel[f"ω{lid}"], dtype=float) + zero
+            assert pol is not None
+            va = g.xy(vel[pol.velocity_images[anchor]])
+            st.omega = w
+            st.origin_velocity = va + w[..., None] * perp(-r)
+            if acc is not None:
+                al = np.asarray(acc[f"α{lid}"], dtype=float) + zero
+                aa = g.xy(acc[pol.acceleration_images[anchor]])
+                st.alpha = al
+                st.origin_acceleration = aa + al[..., None] * perp(-r) + w[..., None] ** 2 * r
+        states[lid] = st
+    return states
+
+
+def rate_inputs(mech: Mechanism, pol: Polygons, pc: PostureConstruction,
+                values: Mapping[str, np.ndarray]) -> tuple[dict[str, float], dict[str, float]]:
+    """The given rates as construction inputs (velocity inputs, acceleration inputs).
+
+    When ``[rates]`` names another link, the polygons are linear in the input
+    speed and affine in the input acceleration, so the construction is run for
+    a unit input and scaled (superposition, Sec. 5.4).
+    """
+    vin: dict[str, float] = {}
+    ain: dict[str, float] = {}
+    for d in mech.drives:
+        w, a = pol.rate_inputs[d.index]
+        vin[w] = 0.0 if d.rate is None else d.rate
+        ain[a] = 0.0 if d.rate2 is None else d.rate2
+    if mech.rates is None:
+        return vin, ain
+    (d,) = mech.drives
+    w, a = pol.rate_inputs[d.index]
+    target = mech.rates
+
+    def measure(env: Mapping[str, np.ndarray], kind: str) -> float:
+        if target.kind == "angle":
+            return float(env[("ω" if kind == "v" else "α") + target.link])
+        raise InputError("[rates] of a slider are not supported yet; give the drive's rate",
+                         key="rates", file=mech.source)
+
+    unit_v = {w: 1.0}
+    ev = pol.velocity.evaluate(unit_v, values=dict(values))
+    k = measure(ev.values, "v")
+    if abs(k) < 1e-12:
+        raise InputError(f"link {target.link} does not turn when the drive moves, so its rate "
+                         "cannot set the drive's", key="rates.link", file=mech.source)
+    vin[w] = target.rate / k
+    ev = pol.velocity.evaluate(vin, values=dict(values))
+    a0 = measure(pol.acceleration.evaluate({a: 0.0}, values=ev.values).values, "a")
+    a1 = measure(pol.acceleration.evaluate({a: 1.0}, values=ev.values).values, "a")
+    want = 0.0 if target.rate2 is None else target.rate2
+    ain[a] = (want - a0) / (a1 - a0)
+    return vin, ain
+
+
+def solve(mech: Mechanism, tol: Tolerance | None = None,
+          branches: dict[str, str] | None = None) -> Solution:
+    """Solve a mechanism at the file's posture by the book's constructions.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    tol : Tolerance, optional
+    branches : dict, optional
+        Step label -> branch, to force a branch (see :func:`build_posture`).
+
+    Returns
+    -------
+    Solution
+        With ``method == "construction"``; or ``"analytic"`` (and a note)
+        when the mechanism cannot be solved one group at a time.
+
+    Raises
+    ------
+    AssemblyError
+        The mechanism cannot be assembled at the file's drive.
+    """
+    try:
+        pc = build_posture(mech, tol, branches)
+    except NotDecomposable as exc:
+        from graphkin.kinematics.analytic import solve_analytic
+
+        sol = solve_analytic(mech, tol=tol)
+        sol.notes.append(f"solved by the analytic solver: {exc}")
+        return sol
+    values = dict(pc.values)
+    constructions = {"posture": pc.construction}
+    if not mech.has_rates:
+        states = link_states(mech, pc, values)
+        return Solution(mech, states, "construction", constructions, notes=list(pc.notes),
+                        branches=dict(pc.branches), values={"posture": values})
+    pol = build_polygons(mech, pc)
+    vin, ain = rate_inputs(mech, pol, pc, values)
+    ev = pol.velocity.evaluate(vin, values=values, tol=tol)
+    ea = pol.acceleration.evaluate(ain, values=ev.values, tol=tol)
+    states = link_states(mech, pc, values, ev.values, ea.values, pol)
+    constructions["velocity"] = pol.velocity
+    constructions["acceleration"] = pol.acceleration
+    return Solution(mech, states, "construction", constructions, notes=list(pc.notes),
+                    branches=dict(pc.branches),
+                    values={"posture": values, "velocity": ev.values,
+                            "acceleration": ea.values})
