@@ -14,7 +14,7 @@ import pkgutil
 import sys
 from collections.abc import Sequence
 
-from graphkin.errors import GraphkinError, InputError
+from graphkin.errors import AssemblyError, GraphkinError, InputError
 
 __all__ = ["main", "build_parser"]
 
@@ -61,8 +61,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except GraphkinError as exc:
         where = getattr(args, "file", None)
-        prefix = f"{where}: " if where else ""
-        print(f"graphkin: {prefix}{exc}", file=sys.stderr)
+        key = getattr(exc, "key", None) or ("drive" if isinstance(exc, AssemblyError) else None)
+        parts = [p for p in (where, key) if p]
+        print(f"graphkin: {': '.join([*parts, str(exc)])}", file=sys.stderr)
         return 2
     except BrokenPipeError:
         return 0

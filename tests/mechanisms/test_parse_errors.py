@@ -1,0 +1,125 @@
+"""Every malformed mechanism file ends with exit 2 and one line naming file and key."""
+
+from __future__ import annotations
+
+import textwrap
+
+import pytest
+
+from graphkin.cli import main
+
+FOURBAR = """
+units = { length = "in" }
+[links.1]
+A = [0, 0]
+D = [10, 0]
+[links.2]
+A = [0, 0]
+B = [4, 0]
+[links.3]
+B = [0, 0]
+C = [18, 0]
+[links.4]
+D = [0, 0]
+C = [11, 0]
+[drive]
+link = 2
+angle = 120
+[assembly]
+C = [15, 10]
+"""
+
+SLIDER = """
+[links.1]
+A = [0, 0]
+S = [0, -20]
+T = [100, -20]
+[links.2]
+A = [0, 0]
+B = [50, 0]
+[links.3]
+B = [0, 0]
+C = [140, 0]
+[links.4]
+C = [0, 0]
+[[sliders]]
+link = 4
+on = 1
+point = "C"
+line = ["S", "T"]
+[drive]
+link = 2
+angle = 45
+"""
+
+SLOT = """
+[links.1]
+A = [0, 0]
+D = [5, 0]
+[links.2]
+A = [0, 0]
+B = [3, 0]
+[links.3]
+D = [0, 0]
+[[slots]]
+link = 2
+on = 3
+point = "B"
+circle = { center = [0, 0], radius = 0 }
+[drive]
+link = 2
+angle = 45
+"""
+
+CASES = [
+    ("syntax", "[links.1\nA = [0, 0]", None, "TOML syntax"),
+    ("unknown unit", FOURBAR.replace('"in"', '"furlongz"'), "units.length", "unit"),
+    ("not a length", FOURBAR.replace('"in"', '"kg"'), "units.length", "length"),
+    ("nan", FOURBAR.replace("D = [10, 0]", "D = [nan, 0]"), "links.1.D", "finite"),
+    ("inf", FOURBAR.replace("B = [4, 0]", "B = [inf, 0]"), "links.2.B", "finite"),
+    ("three numbers", FOURBAR.replace("B = [4, 0]", "B = [4, 0, 1]"), "links.2.B", "two numbers"),
+    ("string point", FOURBAR.replace("B = [4, 0]", 'B = "4, 0"'), "links.2.B", "two numbers"),
+    ("bool coordinate", FOURBAR.replace("B = [4, 0]", "B = [true, 0]"), "links.2.B",
+     "two numbers"),
+    ("unknown drive link", FOURBAR.replace("link = 2", "link = 9"), "drive.link", "no link"),
+    ("drive on a floating link", FOURBAR.replace("link = 2", "link = 3"), "drive.link",
+     "not pinned to the frame"),
+    ("wrong mobility", FOURBAR.replace("C = [11, 0]", "E = [11, 0]"), "drive",
+     "degree(s) of freedom"),
+    ("no drive", FOURBAR.split("[drive]")[0], "drive", "needs a [drive]"),
+    ("unknown slider link", SLIDER.replace("link = 4\non", "link = 7\non"), "sliders[0].link",
+     "no link"),
+    ("unknown slider point", SLIDER.replace('point = "C"', 'point = "Z"'), "sliders[0].point",
+     "no point"),
+    ("degenerate line", SLIDER.replace('line = ["S", "T"]', "line = [[0, 0], [0, 0]]"),
+     "sliders[0].line", "degenerate"),
+    ("slot radius", SLOT, "slots[0].circle.radius", "positive"),
+    ("cannot assemble", FOURBAR.replace("C = [18, 0]", "C = [1, 0]"), "drive", "assemble"),
+    ("assembly hint of nothing", FOURBAR.replace("C = [15, 10]", "Q = [15, 10]"),
+     "assembly.Q", "no point"),
+    ("bad rate", FOURBAR.replace("angle = 120", 'angle = 120\nomega = "10 kg"'),
+     "drive.omega", "omega"),
+]
+
+
+@pytest.mark.parametrize("name,text,key,reason", CASES, ids=[c[0] for c in CASES])
+def test_malformed_file_exits_2_with_one_line(tmp_path, capsys, name, text, key, reason):
+    path = tmp_path / "mech.toml"
+    path.write_text(textwrap.dedent(text))
+    code = main(["solve", str(path), "--json"])
+    out, err = capsys.readouterr()
+    assert code == 2
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert str(path) in lines[0]
+    if key:
+        assert f": {key}: " in lines[0], lines[0]
+    assert reason in lines[0]
+    assert "Traceback" not in err
+
+
+def test_missing_file(tmp_path, capsys):
+    assert main(["solve", str(tmp_path / "nope.toml")]) == 2
+    err = capsys.readouterr().err
+    assert "nope.toml" in err and len(err.strip().splitlines()) == 1
