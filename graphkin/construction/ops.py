@@ -263,3 +263,16 @@ def _add_along(p: Array, p0: Array, p1: Array, s: Array, *, tol: Tolerance) -> t
 def _subtract(p: Array, v: Array, *, tol: Tolerance) -> tuple[Array]:
     """Lay off a known vector backward from a point (vector subtraction)."""
     return (g.translate(p, -np.asarray(v)),)
+
+
+@op("rolling_normal", kind="vector")
+def _rolling_normal(c: Array, center: Array, omega_i: Array, omega_j: Array, *,
+                    tol: Tolerance) -> tuple[Array]:
+    """Rolling-contact component ``A^r`` of a circle rolling on a line (Eq. 4.19).
+
+    The contact point of the circle, seen from the link it rolls on, has the
+    acceleration ``ρ ω_rel²`` toward the circle's center, normal to the surfaces.
+    """
+    r = g.xy(center) - g.xy(c)
+    w = (np.asarray(omega_i) - np.asarray(omega_j))[..., None]
+    return (w**2 * r,)

@@ -136,6 +136,68 @@ class _Poly:
         self.frame()
         for ev in self.pc.events:
             getattr(self, f"ev_{ev[0]}")(*ev[1:])
+        for r in self.mech.rolling:
+            self.rolling_rates(r)
+
+    # ---- rolling contact (Sec. 3.7, 4.7) -----------------------------------
+    def rolling(self, key: str) -> object:
+        return next(r for r in self.mech.rolling if r.key == key)
+
+    def ev_roll_angle(self, r: object) -> None:
+        """The roller's ω and α come from the rolling condition once its images allow."""
+
+    def ev_contact(self, r: object) -> None:
+        """The contact point is placed: nothing to draw until its images are needed."""
+
+    def contact_images(self, r: object) -> tuple[str, str]:
+        """Images of the contact point C as a point of the roller (velocity, acceleration).
+
+        No slip: ``V_C(link) = V_C(on)`` (Eq. 3.13); ``A_C(link) = A_C(on) + A^r``
+        with A^r normal to the surfaces (Eq. 4.19).
+        """
+        c = f"{r.key}:C"  # type: ignore[attr-defined]
+        i, j = r.link, r.on  # type: ignore[attr-defined]
+        vj, aj = self.coincident(j, c)
+        al = aimg(f"{c}@{i}")
+        if al not in {o for st in self.a.steps for o in st.outputs}:
+            # ω of the roller is found in the velocity polygon (evaluated before this one)
+            ar = self.A("rolling_normal", (c, r.center, f"ω{i}", self.omega[j]),  # type: ignore[attr-defined]
+                        f"A_C{i}/{j}^r",
+                        note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel, normal to the surfaces, "
+                             "toward the center (Eq. 4.19).")
+            self.A("translate", (aj, ar), al, role=Role.RESULT,
+                   equation=VectorEquation((Term(f"A_C{i}", U, U),),
+                                           (Term(f"A_C{j}"), Term(f"A_C{i}/{j}^r")), case=1),
+                   note=f"A_C{i} = A_C{j} + A_C{i}/{j}^r (case 1).")
+        return vj, al
+
+    def known_point(self, lid: str, images: dict[str, str]) -> str:
+        """A named point of the link whose image is already drawn."""
+        return next(p for p in self.mech.links[lid].points if p in images)
+
+    def ensure_omega(self, r: object, via: str | None = None) -> None:
+        i = r.link  # type: ignore[attr-defined]
+        if i in self.omega:
+            return
+        c = f"{r.key}:C"  # type: ignore[attr-defined]
+        vj, _ = self.coincident(r.on, c)  # type: ignore[attr-defined]
+        p = via or self.known_point(i, self.vimg)
+        self.V("angular_rate", (p, c, self.vimg[p], vj), f"ω{i}", role=Role.RESULT,
+               note=f"No slip: the contact point of link {i} has the velocity of the surface's; "
+                    f"ω{i} = V_C{p}/R_C{p}.")
+        self.omega[i] = f"ω{i}"
+
+    def rolling_rates(self, r: object) -> None:
+        i = r.link  # type: ignore[attr-defined]
+        self.ensure_omega(r)
+        if i in self.alpha:
+            return
+        _, al = self.contact_images(r)
+        p = self.known_point(i, self.aimg)
+        c = f"{r.key}:C"  # type: ignore[attr-defined]
+        self.A("angular_rate", (p, c, self.aimg[p], al), f"α{i}", role=Role.RESULT,
+               note=f"α{i} = A^t_C{p}/R_C{p}, its sense from the image.")
+        self.alpha[i] = f"α{i}"
 
     def ev_input(self, d: object) -> None:
         lid, kind, idx = d.link, d.kind, d.index  # type: ignore[attr-defined]
@@ -176,6 +238,11 @@ class _Poly:
         self.omega[a], self.alpha[a] = f"ω{a}", f"α{a}"
 
     def ev_point(self, lid: str, name: str, anchor: str) -> None:
+        for r in self.mech.rolling:
+            if r.link == lid and lid not in self.omega and anchor in self.vimg:
+                self.ensure_omega(r)
+            if r.link == lid and lid not in self.alpha and anchor in self.aimg:
+                self.rolling_rates(r)
         others = [p for p in self.mech.links[lid].points
                   if p != anchor and p in self.vimg and p in self.mech.links[lid].points]
         loc = self.mech.links[lid].points
@@ -250,6 +317,25 @@ class _Poly:
             pc, cc = _n(p), _n(c)
             return lv, la, (Term(f"V_{pc}"), Term(f"V_{cc}{pc}", U, K)), \
                 (Term(f"A_{pc}"), Term(f"A_{cc}{pc}^n"), Term(f"A_{cc}{pc}^t", U, K))
+        if kind == "roll":
+            _, lid, key = motion
+            r = self.rolling(key)
+            cp = f"{key}:C"
+            vj, _ = self.coincident(r.on, cp)  # type: ignore[attr-defined]
+            line = self.posture_line(cp, c, self.v)
+            lv = self.V("perpendicular", (line, vj), f"⊥{_n(c)}C:v",
+                        note=f"Link {lid} turns about the contact point C for now: through the "
+                             f"image of C draw a line perpendicular to {_n(c)}C.")
+            _, ac = self.contact_images(r)
+            line_a = self.posture_line(cp, c, self.a)
+            an = self.A("normal_component", (cp, c, vj, vimg(c)), f"A_{_n(c)}C^n",
+                        note=f"A_{_n(c)}C^n = V²/R toward C.")
+            tip = self.A("translate", (ac, an), f"{aimg(c)}:nC", note="Lay it off.")
+            la = self.A("perpendicular", (line_a, tip), f"⊥{_n(c)}C:a",
+                        note=f"Through its tip draw a line perpendicular to {_n(c)}C.")
+            cc = _n(c)
+            return lv, la, (Term("V_C"), Term(f"V_{cc}C", U, K)), \
+                (Term("A_C"), Term(f"A_{cc}C^n"), Term(f"A_{cc}C^t", U, K))
         _, lid, k, line = motion
         vk, ak = self.coincident(k, c)
         lv = self.V("parallel", (line, vk), f"∥{_n(c)}/{k}:v",
@@ -276,6 +362,9 @@ class _Poly:
         eqv = VectorEquation(tv1, tv2, case=3)
         self.vimg[c] = self.V("meet", (lv1, lv2), vimg(c), role=Role.RESULT, equation=eqv,
                               note=f"The two lines meet at the image of {c} (case 3).")
+        for m in (ma, mb):
+            if m[0] == "roll":
+                self.ensure_omega(self.rolling(m[2]), via=c)
         self.aimg[c] = self.A("meet", (la1, la2), aimg(c), role=Role.RESULT,
                               equation=VectorEquation(ta1, ta2, case=3),
                               note=f"The two lines meet at the acceleration image of {c} "

@@ -221,6 +221,14 @@ class _Builder:
             else:
                 self.add("rigid", (anchor, th), (lab,), local_p=aloc, local_q=loc, note=note)
 
+        for r in self.mech.rolling:
+            if r.on == lid:
+                for tag, loc in (("L0", r.p0), ("L1", r.p1)):
+                    mark(f"{r.key}:{tag}", loc, f"Mark the surface that {r.link} rolls on.")
+                if f"{r.key}:line" not in self.env:
+                    self.add("join", (f"{r.key}:L0", f"{r.key}:L1"), (f"{r.key}:line",),
+                             note=f"Draw the surface of {self.link_name(lid)} that link "
+                                  f"{r.link} rolls on.")
         for s in [*self.mech.sliders, *self.mech.slots]:
             if s.on != lid:
                 continue
@@ -274,6 +282,24 @@ class _Builder:
                              note=f"Lay off the travel s{d.link} along the line: {s.point}.")
                     self.events.append(("slider_drive", d))
                     changed = True
+            for r in self.mech.rolling:
+                if r.link not in self.angle:
+                    lab = f"θ{r.link}"
+                    self.add("scalar", (), (lab,), value=r.angle, role=Role.GIVEN,
+                             note=f"Link {r.link} rolls; at this drive it stands at "
+                                  f"θ{r.link} = {math.degrees(r.angle):.6g}° (its reference).")
+                    self.angle[r.link] = lab
+                    self.events.append(("roll_angle", r))
+                    changed = True
+                c = f"{r.key}:C"
+                if r.link in self.placed and r.on in self.placed and c not in self.env:
+                    self.add("perpendicular", (f"{r.key}:line", r.center), (f"{r.key}:n",),
+                             note=f"The common normal: through {r.center} perpendicular to the "
+                                  "surface.")
+                    self.add("meet", (f"{r.key}:line", f"{r.key}:n"), (c,), role=Role.RESULT,
+                             note="It meets the surface at the point of contact.")
+                    self.events.append(("contact", r))
+                    changed = True
             for lid in self.mech.links:
                 if lid in self.placed:
                     continue
@@ -322,6 +348,18 @@ class _Builder:
                     self.add("line_at_angle", (x, th), (lab,), offset=s.direction_angle,
                              note=f"Through it draw the path of {name}, parallel to the slide.")
                     return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
+            for r in self.mech.rolling:
+                s = next(t for t in self.mech.slots if t.key == r.slot_key)
+                if r.link == lid and r.on in self.placed:
+                    cloc = self.mech.links[lid].points[r.center]
+                    x = self.fresh(f"{name}'")
+                    self.add("rigid", (f"{s.key}:L0", th), (x,), local_p=cloc, local_q=loc,
+                             note=f"Where {name} would be with the center {r.center} at the "
+                                  "path's start.")
+                    lab = f"l_{name}({r.key})"
+                    self.add("parallel", (f"{s.key}:line", x), (lab,),
+                             note=f"Through it draw the path of {name}, parallel to the surface.")
+                    return lab, "line", f"R_{name}", ("roll", lid, r.key)
         raise AssertionError("no locus")
 
     # ---- groups ------------------------------------------------------
@@ -357,7 +395,8 @@ class _Builder:
             return True
         if lid in self.angle and not self.distinct_known(lid):
             return any((s.link == lid and s.on in self.placed) or
-                       (s.on == lid and s.link in self.placed) for s in self.mech.sliders)
+                       (s.on == lid and s.link in self.placed) for s in self.mech.sliders) or \
+                any(r.link == lid and r.on in self.placed for r in self.mech.rolling)
         return False
 
     def do(self, kind: str, arg: object, branch: str | None) -> list[str]:

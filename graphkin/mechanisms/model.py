@@ -16,7 +16,8 @@ import math
 from dataclasses import dataclass, field
 from functools import cached_property
 
-__all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Drive", "Rates", "Mechanism", "XY"]
+__all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
+           "XY"]
 
 FRAME = "1"
 XY = tuple[float, float]
@@ -92,6 +93,38 @@ class Slot:
 
 
 @dataclass(frozen=True, slots=True)
+class Rolling:
+    """Rolling contact without slip: a circle of ``link`` rolls on a line of ``on``.
+
+    ``center`` names the circle's center (a point of ``link``), ``radius`` its
+    radius; ``p0``, ``p1`` the line in ``on``'s coordinates; ``side`` the side
+    of the directed line p0 → p1 on which the circle lies (``"left"`` or
+    ``"right"``, the rule of :class:`graphkin.construction.Side`).  At the
+    file's drive the rolling link stands at ``angle`` (rad, absolute; default
+    0: its own axes as written).  For the posture the center runs on the line
+    offset by the radius (the equivalent pin-in-slot, Example 4.7); for the
+    rates the contact points have equal velocities (Eq. 3.13) and their
+    accelerations differ by a component normal to the surfaces (Eq. 4.19).
+    """
+
+    index: int
+    link: str
+    on: str
+    center: str
+    radius: float
+    p0: XY
+    p1: XY
+    side: str
+    angle: float = 0.0
+    key: str = "rolling"
+
+    @property
+    def slot_key(self) -> str:
+        """Key of the equivalent slot of the center."""
+        return f"{self.key}:slot"
+
+
+@dataclass(frozen=True, slots=True)
 class Drive:
     """An input that fixes the posture.
 
@@ -137,6 +170,7 @@ class Mechanism:
     pins: tuple[Pin, ...]
     sliders: tuple[Slider, ...] = ()
     slots: tuple[Slot, ...] = ()
+    rolling: tuple[Rolling, ...] = ()
     drives: tuple[Drive, ...] = ()
     rates: Rates | None = None
     assembly: dict[str, XY] = field(default_factory=dict)
@@ -188,7 +222,8 @@ class Mechanism:
         """Degrees of freedom by Kutzbach's criterion (Eq. 1.3): 3(n-1) - 2 j1 - j2."""
         m = 3 * len(self.moving)
         m -= sum(2 * (len(p.links) - 1) for p in self.pins)
-        m -= 2 * len(self.sliders) + len(self.slots)
+        # a rolling contact's equivalent slot is among the slots; its no-slip condition is one more
+        m -= 2 * len(self.sliders) + len(self.slots) + len(self.rolling)
         return m
 
     # ---- conveniences (the work is done in graphkin.kinematics) ------

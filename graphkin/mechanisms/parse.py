@@ -13,12 +13,24 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.mechanisms.model import FRAME, XY, Drive, Link, Mechanism, Pin, Rates, Slider, Slot
+from graphkin.mechanisms.model import (
+    FRAME,
+    XY,
+    Drive,
+    Link,
+    Mechanism,
+    Pin,
+    Rates,
+    Rolling,
+    Slider,
+    Slot,
+)
 from graphkin.units import length_factor, parse_rate
 
 __all__ = ["load", "loads", "from_dict"]
 
-_TOP_KEYS = {"title", "units", "links", "sliders", "slots", "drive", "rates", "assembly"}
+_TOP_KEYS = {"title", "units", "links", "sliders", "slots", "rolling", "drive", "rates",
+             "assembly"}
 
 
 def load(path: str | Path) -> Mechanism:
@@ -215,6 +227,8 @@ class _Parser:
                     raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {r}")
                 slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
 
+        rolling = self.rolling_entries(len(slots))
+        slots += [r_slot for _, r_slot in rolling]
         drives = self.drives(pins, sliders)
         rates = self.rates_table(sliders)
         assembly = {}
@@ -224,11 +238,55 @@ class _Parser:
             assembly[str(n)] = self.xy(v, f"assembly.{n}")
 
         mech = Mechanism(links=self.links, pins=tuple(pins), sliders=tuple(sliders),
-                         slots=tuple(slots), drives=tuple(drives), rates=rates,
+                         slots=tuple(slots), rolling=tuple(r for r, _ in rolling),
+                         drives=tuple(drives), rates=rates,
                          assembly=assembly, title=title, length_unit=self.unit,
                          source=self.source)
         self.check_mobility(mech)
         return mech
+
+    def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot]]:
+        """Rolling contacts, each with the equivalent slot of its circle's center."""
+        out = []
+        for i, r in enumerate(self.entries("rolling")):
+            key = f"rolling[{i}]"
+            link = self.link_id(r.get("link"), f"{key}.link")
+            on = self.link_id(r.get("on"), f"{key}.on")
+            if link == on:
+                raise self.fail(f"{key}.on", "a link cannot roll on itself")
+            c = self.table(r.get("circle"), f"{key}.circle")
+            center = self.point_of(link, c.get("center"), f"{key}.circle.center")
+            rad = c.get("radius")
+            if isinstance(rad, bool) or not isinstance(rad, (int, float, str)):
+                raise self.fail(f"{key}.circle.radius", "the radius must be a number")
+            rad = self.rate(rad, "length", f"{key}.circle.radius")
+            if not rad > 0:
+                raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {rad}")
+            if "line" not in r:
+                raise self.fail(f"{key}.line", "rolling contact needs the line it rolls on "
+                                "(circles rolling on circles are not supported yet)")
+            p0, p1 = self.line_in(on, r["line"], f"{key}.line")
+            side = r.get("side")
+            if side is None:
+                hint = self.data.get("assembly", {}).get(center) if on == FRAME else None
+                if hint is None:
+                    raise self.fail(f"{key}.side", "say on which side of the line the circle "
+                                    "lies: side = \"left\" or \"right\" (of the line's direction)")
+                cross = ((p1[0] - p0[0]) * (hint[1] - p0[1]) - (p1[1] - p0[1]) * (hint[0] - p0[0]))
+                side = "left" if cross > 0 else "right"
+            if side not in ("left", "right"):
+                raise self.fail(f"{key}.side", f"side must be \"left\" or \"right\", not {side!r}")
+            angle = math.radians(self.rate(r.get("angle", 0.0), "angle", f"{key}.angle"))
+            roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key)
+            # the center runs on the line offset by the radius toward its side
+            ux, uy = p1[0] - p0[0], p1[1] - p0[1]
+            n = math.hypot(ux, uy)
+            sgn = 1.0 if side == "left" else -1.0
+            ox, oy = -uy / n * rad * sgn, ux / n * rad * sgn
+            slot = Slot(first_slot + i, link, on, center, p0=(p0[0] + ox, p0[1] + oy),
+                        p1=(p1[0] + ox, p1[1] + oy), key=roll.slot_key)
+            out.append((roll, slot))
+        return out
 
     def drives(self, pins: list[Pin], sliders: list[Slider]) -> list[Drive]:
         raw = self.data.get("drive")
