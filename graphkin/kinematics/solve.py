@@ -84,26 +84,49 @@ def rate_inputs(mech: Mechanism, pol: Polygons, pc: PostureConstruction,
     (d,) = mech.drives
     w, a = pol.rate_inputs[d.index]
     target = mech.rates
+    slider = next((sl for sl in mech.sliders if sl.link == target.link), None)
 
-    def measure(env: Mapping[str, np.ndarray], kind: str) -> float:
+    def measure(vel: Mapping[str, np.ndarray], acc: Mapping[str, np.ndarray] | None,
+                kind: str) -> float:
         if target.kind == "angle":
+            env = vel if kind == "v" else acc
+            assert env is not None
             return float(env[("ω" if kind == "v" else "α") + target.link])
-        raise InputError("[rates] of a slider are not supported yet; give the drive's rate",
-                         key="rates", file=mech.source)
+        # a slider's rate: its point's motion along the line, relative to the guide
+        assert slider is not None
+        st = link_states(mech, pc, values, vel, acc, pol)
+        guide, body = st[slider.on], st[slider.link]
+        loc = mech.links[slider.link].points[slider.point]
+        pos = body.position(loc)
+        gloc = _local_of(guide, pos)
+        u = guide._r(np.subtract(slider.p1, slider.p0))
+        u = u / np.hypot(*u)
+        if kind == "v":
+            return float((body.velocity(loc) - guide.velocity(gloc)) @ u)
+        # apparent acceleration along the line: A_P − A_P(guide) − 2ω × V_rel (Table 4.1)
+        vrel = body.velocity(loc) - guide.velocity(gloc)
+        cor = 2 * float(guide.omega) * np.array([-vrel[1], vrel[0]])
+        return float((body.acceleration(loc) - guide.acceleration(gloc) - cor) @ u)
 
-    unit_v = {w: 1.0}
-    ev = pol.velocity.evaluate(unit_v, values=dict(values))
-    k = measure(ev.values, "v")
+    ev = pol.velocity.evaluate({w: 1.0}, values=dict(values))
+    k = measure(ev.values, None, "v")
     if abs(k) < 1e-12:
-        raise InputError(f"link {target.link} does not turn when the drive moves, so its rate "
+        raise InputError(f"link {target.link} does not move when the drive moves, so its rate "
                          "cannot set the drive's", key="rates.link", file=mech.source)
     vin[w] = target.rate / k
     ev = pol.velocity.evaluate(vin, values=dict(values))
-    a0 = measure(pol.acceleration.evaluate({a: 0.0}, values=ev.values).values, "a")
-    a1 = measure(pol.acceleration.evaluate({a: 1.0}, values=ev.values).values, "a")
+    a0 = measure(ev.values, pol.acceleration.evaluate({a: 0.0}, values=ev.values).values, "a")
+    a1 = measure(ev.values, pol.acceleration.evaluate({a: 1.0}, values=ev.values).values, "a")
     want = 0.0 if target.rate2 is None else target.rate2
     ain[a] = (want - a0) / (a1 - a0)
     return vin, ain
+
+
+def _local_of(state: LinkState, world: np.ndarray) -> np.ndarray:
+    """Local coordinates, in a link, of a world point (one posture)."""
+    d = np.asarray(world) - state.origin
+    c, s = np.cos(state.angle), np.sin(state.angle)
+    return np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
 
 
 def solve(mech: Mechanism, tol: Tolerance | None = None,
