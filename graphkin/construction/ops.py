@@ -276,3 +276,39 @@ def _rolling_normal(c: Array, center: Array, omega_i: Array, omega_j: Array, *,
     r = g.xy(center) - g.xy(c)
     w = (np.asarray(omega_i) - np.asarray(omega_j))[..., None]
     return (w**2 * r,)
+
+
+@op("tangent_foot")
+def _tangent_foot(p: Array, s: Array, *, tol: Tolerance, offset: float,
+                  branch: str) -> tuple[Array]:
+    """The foot T of the perpendicular from P to a tangent from S to the circle (P, d).
+
+    T is where the circle of radius ``d = offset`` about P meets Thales' circle
+    on the diameter PS.  Evaluated in closed form, ``T = P + (d²/D) ŝ ± (d t/D) k × ŝ``
+    with ``D = |PS|``, ``ŝ`` the unit vector P → S and ``t = √(D² − d²)`` (the
+    tangent's length), which stays accurate when the path passes close to P.
+    ``left``/``right`` follow :class:`~graphkin.construction.Side` for the
+    directed line P → S.
+    """
+    a, b = g.xy(p), g.xy(s)
+    v = b - a
+    dist = np.hypot(v[..., 0], v[..., 1])
+    d = float(offset)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.sqrt(np.where(dist >= d, (dist - d) * (dist + d), np.nan))
+        u = v / dist[..., None]
+    nrm = np.stack([-u[..., 1], u[..., 0]], axis=-1)
+    sign = 1.0 if branch == "left" else -1.0
+    q = a + (d * d / dist)[..., None] * u + sign * (d * t / dist)[..., None] * nrm
+    return (g.point(q[..., 0], q[..., 1]),)
+
+
+@op("angle_along", kind="scalar")
+def _angle_along(t: Array, s: Array, *, tol: Tolerance, local_angle: float,
+                 sign: float) -> tuple[Array]:
+    """Angle of a link whose line runs from T through S (``sign`` −1: from S through T).
+
+    ``θ = ∠(sign · (S − T)) − local_angle``, the line's direction in the link.
+    """
+    v = (g.xy(s) - g.xy(t)) * sign
+    return (np.arctan2(v[..., 1], v[..., 0]) - local_angle,)

@@ -514,13 +514,22 @@ class _Builder:
         self.add("circle", (p,), (f"{key}:offset",), radius=d,
                  note=f"About {_n(p)} draw an arc of the path's offset {d:.6g}.")
         names = ["left", "right"]
-        self.add("intersect_circles", (f"{key}:thales", f"{key}:offset"), (lab,),
+        self.add("tangent_foot", (p, spoint), (lab,), offset=d,
                  branch=branch or names[0], role=Role.AUXILIARY,
                  equation=VectorEquation((Term(f"R_{_n(spoint)}{_n(p)}"),),
                                          (Term(f"R_T{_n(p)}", K, U),
                                           Term(f"R_{_n(spoint)}T", U, U)), case=4),
                  note="They meet at the foot T of the perpendicular from the pivot to the path.")
-        self.known[lid][lab] = foot
+        # the path runs from T through S: its direction fixes the link's angle (better
+        # conditioned than the short PT when the path passes close to the pivot)
+        nx, ny = (foot[0] - ploc[0]) / d, (foot[1] - ploc[1]) / d
+        o = 1.0 if nx * uy - ny * ux > 0 else -1.0
+        sigma = 1.0 if (branch or names[0]) == "left" else -1.0
+        th = f"θ{lid}"
+        self.add("angle_along", (lab, spoint), (th,), local_angle=math.atan2(uy, ux),
+                 sign=-o * sigma, role=Role.RESULT,
+                 note=f"The path runs through T and {_n(spoint)}: it gives θ{lid}.")
+        self.angle[lid] = th
         return names
 
     def circle_slot_through(self, lid: str, p: str, ploc: XY, spoint: str, s: object,
