@@ -123,10 +123,9 @@ class Solution:
         return all(s.alpha is not None for s in self.links.values())
 
     def owner(self, name: str) -> str:
-        """A link that carries point ``name`` (a moving one if there is one)."""
+        """A link that carries point ``name``: the frame for a fixed point, else the first."""
         owners = self.mechanism.point_links[name]
-        moving = [o for o in owners if o != FRAME]
-        return (moving or owners)[0]
+        return FRAME if FRAME in owners else owners[0]
 
     def position(self, name: str, link: str | None = None) -> np.ndarray:
         """World position of named point ``name`` (of ``link``, default its owner)."""
