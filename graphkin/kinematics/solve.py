@@ -20,7 +20,7 @@ from graphkin.kinematics.solution import LinkState, Solution, perp
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import Tolerance
 
-__all__ = ["solve", "link_states", "rate_inputs"]
+__all__ = ["solve", "link_states", "rate_inputs", "superposition"]
 
 
 def link_states(mech: Mechanism, pc: PostureConstruction, values: Mapping[str, np.ndarray],
@@ -176,3 +176,48 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
                     branches=dict(pc.branches),
                     values={"posture": values, "velocity": ev.values,
                             "acceleration": ea.values})
+
+
+def superposition(mech: Mechanism, tol: Tolerance | None = None) -> list[tuple[int, Solution]]:
+    """Velocities by the method of superposition (Sec. 5.4, Example 5.4).
+
+    For a mechanism with several inputs, solve the velocity polygon once per
+    input with every other input frozen; the velocities are linear in the
+    inputs, so the cases add up to the full solution.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        With rates given for every drive.
+    tol : Tolerance, optional
+
+    Returns
+    -------
+    list of (int, Solution)
+        For each drive (its index in ``mech.drives``) the velocity-only solution
+        with that input active and the others frozen.
+
+    Raises
+    ------
+    InputError
+        The file gives no rates.
+    """
+    if not mech.has_rates or mech.rates is not None:
+        raise InputError("superposition needs the rate of every drive", key="drive",
+                         file=mech.source)
+    pc = build_posture(mech, tol)
+    pol = build_polygons(mech, pc)
+    vin, _ = rate_inputs(mech, pol, pc, pc.values)
+    out = []
+    for d in mech.drives:
+        active = pol.rate_inputs[d.index][0]
+        given = {k: (v if k == active else 0.0) for k, v in vin.items()}
+        ev = pol.velocity.evaluate(given, values=dict(pc.values), tol=tol)
+        states = link_states(mech, pc, pc.values, ev.values, None, pol)
+        out.append((d.index, Solution(mech, states, "construction",
+                                      {"posture": pc.construction,
+                                       "velocity": pol.velocity},
+                                      notes=[f"input {d.key} active, the others frozen"],
+                                      values={"posture": dict(pc.values),
+                                              "velocity": ev.values})))
+    return out
