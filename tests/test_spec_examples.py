@@ -10,11 +10,10 @@ from __future__ import annotations
 import math
 
 import pytest
+from spec_data import EXAMPLES, EXPECTED
 
 import graphkin
 from graphkin.output import solution_to_dict
-
-from spec_data import EXAMPLES, EXPECTED
 
 CASES = [(f, k, v) for f, checks in EXPECTED.items() for k, v in checks.items()]
 

@@ -312,3 +312,699 @@ def _angle_along(t: Array, s: Array, *, tol: Tolerance, local_angle: float,
     """
     v = (g.xy(s) - g.xy(t)) * sign
     return (np.arctan2(v[..., 1], v[..., 0]) - local_angle,)
+
+
+# ---------------------------------------------------------------------------
+# Compiled kernels: the same operations, specialised once per step.
+#
+# A construction that is evaluated on whole arrays (a sweep) spends its time in
+# the temporaries of the general functions above (np.stack, np.where, hypot,
+# homogeneous divisions).  Each kernel below does the same arithmetic for one
+# step with its constants bound once: a point's Cartesian rows are read once
+# per evaluation and shared, points with w == 1 skip the homogeneous
+# division, tolerance decisions are made exactly but only where a cheap bound
+# cannot rule them out, and outputs are written row by row into one block.
+# The results are those of the general functions up to rounding (sqrt(x²+y²)
+# for hypot), with the same NaN entries.  An operation without a kernel runs
+# through its general function.
+# ---------------------------------------------------------------------------
+
+KernelFactory = Callable[..., "Callable[[Runtime], None] | None"]
+KERNELS: dict[str, KernelFactory] = {}
+ORIGINATING: set[str] = set()
+"""Operations that can turn finite inputs into non-finite outputs (the others cannot)."""
+
+
+def kernel(name: str, originating: bool = False) -> Callable[[KernelFactory], KernelFactory]:
+    """Register the kernel factory of operation ``name``.
+
+    The factory is called as ``factory(step, tol, info)`` and returns a
+    callable ``run(rt)`` that reads the step's inputs from the runtime and
+    stores its outputs, or ``None`` to fall back to the general function.
+    """
+
+    def deco(f: KernelFactory) -> KernelFactory:
+        KERNELS[name] = f
+        if originating:
+            ORIGINATING.add(name)
+        return f
+
+    return deco
+
+
+class CompileInfo:
+    """What is known of the labels when a construction is compiled.
+
+    Attributes
+    ----------
+    const : dict
+        Labels whose values are constant (folded): label -> array.
+    radius : dict
+        Circles whose radius is a step constant: label -> radius.
+    """
+
+    def __init__(self) -> None:
+        self.const: dict[str, Array] = {}
+        self.radius: dict[str, float] = {}
+
+    def forget(self, label: str) -> None:
+        """A step (re)defines ``label``: drop what was known of it."""
+        self.const.pop(label, None)
+        self.radius.pop(label, None)
+
+
+def _front(base: Array) -> Array:
+    """A block stored component-first ``(k, ...)`` seen as ``(..., k)``."""
+    nd = base.ndim
+    if nd == 1:
+        return base
+    if nd == 2:
+        return base.T
+    return np.moveaxis(base, 0, -1)
+
+
+def _shape(*xs: Any) -> tuple[int, ...]:
+    s = np.shape(xs[0])
+    for x in xs[1:]:
+        t = np.shape(x)
+        if t != s:
+            s = np.broadcast_shapes(s, t)
+    return s
+
+
+def _vmin(x: Any) -> float:
+    """Smallest entry, NaN ignored (NaN when every entry is NaN)."""
+    if np.ndim(x) == 0:
+        return float(x)
+    return float(np.fmin.reduce(x, axis=None))
+
+
+def _vmax(x: Any) -> float:
+    """Largest entry, NaN ignored."""
+    if np.ndim(x) == 0:
+        return float(x)
+    return float(np.fmax.reduce(x, axis=None))
+
+
+def _absmax(*xs: Any) -> float:
+    """Largest absolute entry of several arrays (NaN ignored)."""
+    m = 0.0
+    for x in xs:
+        if np.ndim(x) == 0:
+            v = abs(float(x))
+        else:
+            v = float(np.fmax.reduce(np.abs(x), axis=None))
+        if v > m:
+            m = v
+    return m
+
+
+class Runtime:
+    """The state of one compiled evaluation.
+
+    Attributes
+    ----------
+    env : dict
+        Label -> array (what :class:`~graphkin.construction.protocol.Evaluation` returns).
+    xy : dict
+        Label -> Cartesian rows ``(x, y)`` of a point (or a circle's center,
+        or a vector's components), read once.
+    unit : set
+        Point labels whose homogeneous ``w`` is exactly 1 (their ``xy`` are
+        their first two rows).
+    trig : dict
+        Angle label -> ``(cos, sin)``.
+    dirty : set
+        Labels whose consumers must be checked for non-finite entries:
+        inputs given with non-finite entries, points that may be at infinity.
+    """
+
+    __slots__ = ("env", "xy", "unit", "trig", "dirty")
+
+    def __init__(self, env: dict[str, Array]) -> None:
+        self.env = env
+        self.xy: dict[str, tuple[Any, Any]] = {}
+        self.unit: set[str] = set()
+        self.trig: dict[str, tuple[Any, Any]] = {}
+        self.dirty: set[str] = set()
+
+    # ---- inputs --------------------------------------------------------
+    def arr(self, label: str) -> Array:
+        a = self.env[label]
+        if type(a) is not np.ndarray or a.dtype != np.float64:
+            a = np.asarray(a, dtype=float)
+        return a
+
+    def P(self, label: str) -> tuple[Any, Any]:
+        """Cartesian rows of a point (NaN for a point at infinity)."""
+        r = self.xy.get(label)
+        if r is not None:
+            return r
+        p = self.arr(label)
+        w = p[..., 2]
+        if bool(np.all(w == 1.0)):
+            r = (p[..., 0], p[..., 1])
+            self.unit.add(label)
+        else:
+            q = g.xy(p)
+            r = (q[..., 0], q[..., 1])
+            self.dirty.add(label)
+        self.xy[label] = r
+        return r
+
+    def is_unit(self, label: str) -> bool:
+        """True when the point's ``w`` is exactly 1 (so its rows are its Cartesian coordinates)."""
+        if label not in self.xy:
+            self.P(label)
+        return label in self.unit
+
+    def C(self, label: str) -> tuple[Any, Any]:
+        """Center rows of a circle (or the first two rows of any array)."""
+        r = self.xy.get(label)
+        if r is not None:
+            return r
+        c = self.arr(label)
+        r = (c[..., 0], c[..., 1])
+        self.xy[label] = r
+        return r
+
+    V = C
+
+    def rows(self, label: str) -> tuple[Any, Any, Any]:
+        """The three homogeneous rows of a point, line or circle."""
+        a = self.arr(label)
+        return a[..., 0], a[..., 1], a[..., 2]
+
+    def cs(self, label: str, offset: float = 0.0) -> tuple[Any, Any]:
+        """The cosine and sine of an angle (plus a constant offset), computed once."""
+        key = label if offset == 0.0 else f"{label}\x00{offset!r}"
+        r = self.trig.get(key)
+        if r is None:
+            t = self.arr(label)
+            if offset != 0.0:
+                t = t + offset
+            r = (np.cos(t), np.sin(t))
+            self.trig[key] = r
+        return r
+
+    # ---- outputs -------------------------------------------------------
+    def _forget(self, label: str) -> None:
+        self.xy.pop(label, None)
+        self.unit.discard(label)
+        self.dirty.discard(label)
+        if self.trig:
+            for k in [k for k in self.trig if k == label or k.startswith(label + "\x00")]:
+                del self.trig[k]
+
+    def put_point(self, label: str, x: Any, y: Any) -> None:
+        """Store the finite-form point ``(x, y, 1)``."""
+        base = np.empty((3, *_shape(x, y)))
+        base[0] = x
+        base[1] = y
+        base[2] = 1.0
+        if self.trig:
+            self._forget(label)
+        self.env[label] = _front(base)
+        self.xy[label] = (base[0], base[1])
+        self.unit.add(label)
+        self.dirty.discard(label)
+
+    def put_rows(self, label: str, rows: tuple[Any, ...], *, center: bool = False) -> Array:
+        """Store a line, circle or vector from its rows; returns the block ``(k, ...)``."""
+        base = np.empty((len(rows), *_shape(*rows)))
+        for i, r in enumerate(rows):
+            base[i] = r
+        self._forget(label)
+        self.env[label] = _front(base)
+        if center or len(rows) == 2:
+            self.xy[label] = (base[0], base[1])
+        return base
+
+    def put(self, label: str, value: Any) -> None:
+        """Store any value (a scalar array, or what a general function returned)."""
+        self._forget(label)
+        self.env[label] = value
+
+
+def generic_kernel(step: Any, tol: Tolerance) -> Callable[[Runtime], None]:
+    """Run a step through its general function (no kernel, or an exact fallback)."""
+    fn = OPS[step.op]
+    ins, outs, params = step.inputs, step.outputs, step.params
+    points = step.kind == "point"
+
+    def run(rt: Runtime) -> None:
+        vals = fn(*[rt.env[i] for i in ins], tol=tol, **params)
+        for name, v in zip(outs, vals):
+            rt.put(name, v)
+            if points:
+                rt.dirty.add(name)
+
+    return run
+
+
+@kernel("rigid")
+def _k_rigid(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, th = step.inputs
+    (out,) = step.outputs
+    d0, d1 = np.subtract(step.params["local_q"], step.params["local_p"])
+    offset = float(step.params.get("offset", 0.0))
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(p)
+        c, s = rt.cs(th, offset)
+        # rotate (d0, d1) by θ: (c d0 - s d1, s d0 + c d1); a zero component drops out exactly
+        if d1 == 0.0:
+            v0, v1 = c * d0, s * d0
+        elif d0 == 0.0:
+            v0, v1 = -(s * d1), c * d1
+        else:
+            v0, v1 = c * d0 - s * d1, s * d0 + c * d1
+        rt.put_point(out, ax + v0, ay + v1)
+
+    return run
+
+
+@kernel("circle")
+def _k_circle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    (center,) = step.inputs
+    (out,) = step.outputs
+    r = float(step.params["radius"])
+
+    def run(rt: Runtime) -> None:
+        x, y = rt.P(center)
+        rt.put_rows(out, (x, y, r), center=True)
+
+    return run
+
+
+def _k_radius(info: CompileInfo, label: str) -> float | None:
+    return info.radius.get(label)
+
+
+@kernel("intersect_circles", originating=True)
+def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    c1, c2 = step.inputs
+    (out,) = step.outputs
+    left = step.params["branch"] == "left"
+    k1, k2 = info.radius.get(c1), info.radius.get(c2)
+    la, lr = tol.length_abs, tol.length_rel
+
+    def run(rt: Runtime) -> None:
+        x1, y1 = rt.C(c1)
+        x2, y2 = rt.C(c2)
+        r1 = k1 if k1 is not None else rt.arr(c1)[..., 2]
+        r2 = k2 if k2 is not None else rt.arr(c2)[..., 2]
+        dx = x2 - x1
+        dy = y2 - y1
+        dd = dx * dx + dy * dy
+        dist = np.sqrt(dd)
+        a = (dd + (r1 * r1 - r2 * r2)) / (2.0 * dist)
+        h2 = r1 * r1 - a * a
+        if not _vmin(h2) >= 0.0:
+            # tangency: a tiny negative h² from a length error below eps counts as zero
+            scale = np.maximum(np.maximum(r1, r2), dist)
+            eps = la + lr * np.abs(scale)
+            h2 = np.where((h2 < 0) & (h2 > -2 * eps * scale), 0.0, h2)
+        h = np.sqrt(h2)
+        dmin = _vmin(dist)
+        if not dmin > 2.0 * (la + lr * max(_absmax(r1), _absmax(r2))):
+            # concentric circles (within tolerance) have no intersection
+            scale = np.maximum(np.maximum(r1, r2), dist)
+            h = np.where(dist <= la + lr * np.abs(scale), np.nan, h)
+        ux = dx / dist
+        uy = dy / dist
+        bx = x1 + a * ux
+        by = y1 + a * uy
+        if left:
+            rt.put_point(out, bx - h * uy, by + h * ux)
+        else:
+            rt.put_point(out, bx + h * uy, by - h * ux)
+
+    return run
+
+
+@kernel("intersect_line_circle", originating=True)
+def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    line, c = step.inputs
+    (out,) = step.outputs
+    behind = step.params["branch"] == "behind"
+    kr = info.radius.get(c)
+    la, lr = tol.length_abs, tol.length_rel
+
+    def run(rt: Runtime) -> None:
+        l0, l1, l2 = rt.rows(line)
+        cx, cy = rt.C(c)
+        r = kr if kr is not None else rt.arr(c)[..., 2]
+        s = l0 * cx + l1 * cy + l2
+        fx = cx - s * l0
+        fy = cy - s * l1
+        h2 = r * r - s * s
+        if not _vmin(h2) >= 0.0:
+            eps = la + lr * np.abs(np.maximum(r, np.abs(s)))
+            h2 = np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
+        h = np.sqrt(h2)
+        if behind:
+            rt.put_point(out, fx - h * l1, fy + h * l0)
+        else:
+            rt.put_point(out, fx + h * l1, fy - h * l0)
+
+    return run
+
+
+@kernel("link_angle")
+def _k_link_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    a, b = step.inputs
+    (out,) = step.outputs
+    dl = np.subtract(step.params["local_b"], step.params["local_a"])
+    phi = np.arctan2(dl[1], dl[0])
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(a)
+        bx, by = rt.P(b)
+        t = np.arctan2(by - ay, bx - ax)
+        rt.put(out, t - phi if phi != 0.0 else t)
+
+    return run
+
+
+@kernel("add_angle")
+def _k_add_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    (th,) = step.inputs
+    (out,) = step.outputs
+    offset = step.params["offset"]
+
+    def run(rt: Runtime) -> None:
+        rt.put(out, np.asarray(rt.env[th]) + offset)
+
+    return run
+
+
+@kernel("join", originating=True)
+def _k_join(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, q = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        if not (rt.is_unit(p) and rt.is_unit(q)):
+            rt.put(out, g.join(rt.env[p], rt.env[q], tol))
+            return
+        px, py = rt.P(p)
+        qx, qy = rt.P(q)
+        # the cross product (px, py, 1) × (qx, qy, 1)
+        base = rt.put_rows(out, (py - qy, qx - px, px * qy - py * qx))
+        a, b = base[0], base[1]
+        n = np.sqrt(a * a + b * b)
+        # a coincident pair: |P × Q| below the length tolerance of the larger |P|, |Q|
+        bound = tol.length(2.0 * max(_absmax(px, py), _absmax(qx, qy)))
+        if not _vmin(n) > bound:
+            scale = np.maximum(np.sqrt(px * px + py * py), np.sqrt(qx * qx + qy * qy))
+            n = np.where(n <= tol.length(scale), np.nan, n)
+        np.divide(base, n, out=base)
+
+    return run
+
+
+@kernel("perpendicular")
+def _k_perpendicular(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    line, p = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        a, b, _ = rt.rows(line)
+        px, py, pw = rt.rows(p)
+        c = b * px - a * py
+        if not rt.is_unit(p):
+            c = c / pw
+        rt.put_rows(out, (-b, a, c))
+
+    return run
+
+
+@kernel("parallel")
+def _k_parallel(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    line, p = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        a, b, _ = rt.rows(line)
+        px, py, pw = rt.rows(p)
+        c = -(a * px + b * py)
+        if not rt.is_unit(p):
+            c = c / pw
+        rt.put_rows(out, (a, b, c))
+
+    return run
+
+
+@kernel("meet", originating=True)
+def _k_meet(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    l1, l2 = step.inputs
+    (out,) = step.outputs
+    angle = tol.angle
+
+    def run(rt: Runtime) -> None:
+        a1, b1, c1 = rt.rows(l1)
+        a2, b2, c2 = rt.rows(l2)
+        px = b1 * c2 - c1 * b2
+        py = c1 * a2 - a1 * c2
+        pw = a1 * b2 - b1 * a2
+        n = np.sqrt(px * px + py * py)
+        # an ideal point (|w| <= angle n) or coincident lines (|w| <= angle) anywhere?
+        if bool(np.any(np.abs(pw) <= angle * np.maximum(n, 1.0))):
+            rt.put(out, g.meet(rt.env[l1], rt.env[l2], tol))
+            rt.dirty.add(out)
+            return
+        base = np.empty((3, *_shape(px, py, pw)))
+        base[0] = px
+        base[1] = py
+        base[2] = pw
+        np.divide(base, pw, out=base)
+        if rt.trig:
+            rt._forget(out)
+        rt.env[out] = _front(base)
+        rt.xy[out] = (base[0], base[1])
+        rt.unit.add(out)
+        rt.dirty.discard(out)
+
+    return run
+
+
+@kernel("translate")
+def _k_translate(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, v = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(p)
+        vx, vy = rt.V(v)
+        rt.put_point(out, ax + vx, ay + vy)
+
+    return run
+
+
+@kernel("subtract")
+def _k_subtract(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, v = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(p)
+        vx, vy = rt.V(v)
+        rt.put_point(out, ax - vx, ay - vy)
+
+    return run
+
+
+@kernel("vector")
+def _k_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, q = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        px, py = rt.P(p)
+        qx, qy = rt.P(q)
+        rt.put_rows(out, (qx - px, qy - py))
+
+    return run
+
+
+@kernel("scale_vector")
+def _k_scale_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    v, s = step.inputs
+    (out,) = step.outputs
+    factor = step.params.get("factor", 1.0)
+
+    def run(rt: Runtime) -> None:
+        vx, vy = rt.V(v)
+        k = rt.arr(s) * factor
+        rt.put_rows(out, (vx * k, vy * k))
+
+    return run
+
+
+@kernel("similar")
+def _k_similar(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None] | None:
+    a, b = step.inputs
+    (out,) = step.outputs
+    la = np.asarray(step.params["local_a"], dtype=float)
+    lb = np.asarray(step.params["local_b"], dtype=float)
+    lp = np.asarray(step.params["local_p"], dtype=float)
+    if la.shape != (2,) or lb.shape != (2,) or lp.shape != (2,):
+        return None
+    zr, zp = lb - la, lp - la
+    den = zr[0] ** 2 + zr[1] ** 2
+    if den == 0.0:
+        return None
+    qr = (zp[0] * zr[0] + zp[1] * zr[1]) / den
+    qi = (zp[1] * zr[0] - zp[0] * zr[1]) / den
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(a)
+        bx, by = rt.P(b)
+        d0 = bx - ax
+        d1 = by - ay
+        rt.put_point(out, ax + d0 * qr - d1 * qi, ay + d0 * qi + d1 * qr)
+
+    return run
+
+
+@kernel("velocity_difference")
+def _k_vdiff(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    img, omega, a, x = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(a)
+        xx, xy_ = rt.P(x)
+        ix, iy = rt.P(img)
+        w = rt.arr(omega)
+        rx = xx - ax
+        ry = xy_ - ay
+        rt.put_point(out, ix - w * ry, iy + w * rx)
+
+    return run
+
+
+@kernel("acceleration_difference")
+def _k_adiff(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    img, omega, alpha, a, x = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(a)
+        xx, xy_ = rt.P(x)
+        ix, iy = rt.P(img)
+        w = rt.arr(omega)
+        al = rt.arr(alpha)
+        w2 = w * w
+        rx = xx - ax
+        ry = xy_ - ay
+        rt.put_point(out, ix - (al * ry + w2 * rx), iy + (al * rx - w2 * ry))
+
+    return run
+
+
+@kernel("angular_rate", originating=True)
+def _k_angular_rate(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    a, b, ia, ib = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(a)
+        bx, by = rt.P(b)
+        iax, iay = rt.P(ia)
+        ibx, iby = rt.P(ib)
+        r0 = bx - ax
+        r1 = by - ay
+        v0 = ibx - iax
+        v1 = iby - iay
+        rt.put(out, (r0 * v1 - r1 * v0) / (r0 * r0 + r1 * r1))
+
+    return run
+
+
+@kernel("normal_component", originating=True)
+def _k_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, c, ip, ic = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        px, py = rt.P(p)
+        cx, cy = rt.P(c)
+        ipx, ipy = rt.P(ip)
+        icx, icy = rt.P(ic)
+        r0 = cx - px
+        r1 = cy - py
+        v0 = icx - ipx
+        v1 = icy - ipy
+        k = -((v0 * v0 + v1 * v1) / (r0 * r0 + r1 * r1))
+        rt.put_rows(out, (k * r0, k * r1))
+
+    return run
+
+
+@kernel("apparent_normal", originating=True)
+def _k_apparent_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    s, center, i_s, i_sk = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        sx, sy = rt.P(s)
+        cx, cy = rt.P(center)
+        ax, ay = rt.P(i_s)
+        bx, by = rt.P(i_sk)
+        r0 = cx - sx
+        r1 = cy - sy
+        v0 = ax - bx
+        v1 = ay - by
+        k = (v0 * v0 + v1 * v1) / (r0 * r0 + r1 * r1)
+        rt.put_rows(out, (k * r0, k * r1))
+
+    return run
+
+
+@kernel("coriolis")
+def _k_coriolis(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    omega, ip, ipk = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(ip)
+        bx, by = rt.P(ipk)
+        w2 = 2 * rt.arr(omega)
+        rt.put_rows(out, (-(w2 * (ay - by)), w2 * (ax - bx)))
+
+    return run
+
+
+@kernel("add_along", originating=True)
+def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p, p0, p1, s = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        ax, ay = rt.P(p)
+        x0, y0 = rt.P(p0)
+        x1, y1 = rt.P(p1)
+        d0 = x1 - x0
+        d1 = y1 - y0
+        k = rt.arr(s) / np.sqrt(d0 * d0 + d1 * d1)
+        rt.put_point(out, ax + d0 * k, ay + d1 * k)
+
+    return run
+
+
+@kernel("along_line", originating=True)
+def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+    p0, p1, s = step.inputs
+    (out,) = step.outputs
+
+    def run(rt: Runtime) -> None:
+        x0, y0 = rt.P(p0)
+        x1, y1 = rt.P(p1)
+        d0 = x1 - x0
+        d1 = y1 - y0
+        k = rt.arr(s) / np.sqrt(d0 * d0 + d1 * d1)
+        rt.put_point(out, x0 + d0 * k, y0 + d1 * k)
+
+    return run

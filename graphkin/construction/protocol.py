@@ -12,15 +12,26 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8.
 from __future__ import annotations
 
 import json
+import math
+import operator
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
-from graphkin.construction.ops import OPS, OUTPUT_KIND
+from graphkin.construction.ops import (
+    KERNELS,
+    OPS,
+    ORIGINATING,
+    OUTPUT_KIND,
+    CompileInfo,
+    Runtime,
+    generic_kernel,
+)
 from graphkin.construction.step import Role, Step, VectorEquation
 from graphkin.errors import ConstructionError, DegenerateError, NoIntersectionError
+from graphkin.geometry.ops import xy as g_xy
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
 __all__ = ["Construction", "Evaluation"]
@@ -165,6 +176,31 @@ class Construction:
             Arcs (or a line and an arc) that do not meet, when ``strict``.
         DegenerateError
             A join of coincident points or meet of coincident lines, when ``strict``.
+
+        Notes
+        -----
+        The steps are compiled once (per tolerance and start) into a flat list
+        of kernels with their constants bound (see
+        :data:`graphkin.construction.ops.KERNELS`); steps whose inputs are all
+        constant are evaluated once.  Only the steps that can turn finite
+        inputs into non-finite outputs (and the consumers of non-finite or
+        infinite inputs) are checked, which marks exactly the entries the
+        step-by-step replay marks.  :meth:`replay` is that step-by-step
+        replay through the general operations.
+        """
+        tol = tol or DEFAULT_TOL
+        env: dict[str, np.ndarray] = dict(values or {})
+        env.update({k: np.asarray(v, dtype=float) for k, v in (given or {}).items()})
+        plan = self._plan(tol, start)
+        return plan.run(env, strict)
+
+    def replay(self, given: Mapping[str, Any] | None = None, *, tol: Tolerance | None = None,
+               strict: bool = True, start: int = 0,
+               values: dict[str, np.ndarray] | None = None) -> Evaluation:
+        """Replay the steps one by one through the general operations.
+
+        Same parameters and results as :meth:`evaluate` (up to rounding), with
+        no compilation: the reference the compiled kernels are checked against.
         """
         tol = tol or DEFAULT_TOL
         env: dict[str, np.ndarray] = dict(values or {})
@@ -174,14 +210,12 @@ class Construction:
         for step in self.steps[start:]:
             if step.op == "input":
                 if step.outputs[0] not in env:
-                    raise ConstructionError(f"step {step.label}: the input {step.outputs[0]!r} "
-                                            "was not given", step=step.label)
+                    raise _missing_input(step)
                 continue
             try:
                 args = [env[i] for i in step.inputs]
             except KeyError as exc:
-                raise ConstructionError(f"step {step.label}: input {exc.args[0]!r} is not known",
-                                        step=step.label) from None
+                raise _unknown_input(step, exc.args[0]) from None
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
                 outs = OPS[step.op](*args, tol=tol, **step.params)
             for name, val in zip(step.outputs, outs):
@@ -190,16 +224,25 @@ class Construction:
             if bad is not None and np.any(bad):
                 if strict:
                     raise _failure(step, args)
-                if valid is None:
-                    valid = np.ones(np.shape(bad), dtype=bool)
-                    failed_at = np.full(np.shape(bad), -1, dtype=int)
-                bad = np.broadcast_to(bad, valid.shape)
-                assert failed_at is not None
-                failed_at = np.where(bad & valid, step.index, failed_at)
-                valid = valid & ~bad
+                valid, failed_at = _mark(valid, failed_at, bad, step.index)
         if valid is None:
             valid = np.array(True)
         return Evaluation(env, valid, failed_at)
+
+    def _plan(self, tol: Tolerance, start: int) -> _Plan:
+        plans: dict[tuple[Tolerance, int], _Plan] = self.__dict__.setdefault("_plans", {})
+        plan = plans.get((tol, start))
+        steps = self.steps
+        if plan is None or len(plan.steps) != len(steps) or \
+                not all(map(operator.is_, plan.steps, steps)):
+            plan = _Plan(tuple(steps), tol, start)
+            plans[(tol, start)] = plan
+        return plan
+
+    def __getstate__(self) -> dict[str, Any]:
+        state = dict(self.__dict__)
+        state.pop("_plans", None)
+        return state
 
     def table(self) -> str:
         """A plain-text table of the steps: index, label, operation, inputs, branch, equation."""
@@ -217,6 +260,154 @@ class Construction:
     def to_json(self) -> str:
         """The steps as JSON text."""
         return json.dumps(self.to_dict(), ensure_ascii=False, indent=1)
+
+
+def _missing_input(step: Step) -> ConstructionError:
+    return ConstructionError(f"step {step.label}: the input {step.outputs[0]!r} was not given",
+                             step=step.label)
+
+
+def _unknown_input(step: Step, label: str) -> ConstructionError:
+    return ConstructionError(f"step {step.label}: input {label!r} is not known", step=step.label)
+
+
+def _mark(valid: np.ndarray | None, failed_at: np.ndarray | None, bad: np.ndarray,
+          index: int) -> tuple[np.ndarray, np.ndarray]:
+    """Record the entries a step failed for (the first failing step of each entry)."""
+    if valid is None:
+        valid = np.ones(np.shape(bad), dtype=bool)
+        failed_at = np.full(np.shape(bad), -1, dtype=int)
+    bad = np.broadcast_to(bad, valid.shape)
+    assert failed_at is not None
+    failed_at = np.where(bad & valid, index, failed_at)
+    valid = valid & ~bad
+    return valid, failed_at
+
+
+def _all_finite(a: Any) -> bool:
+    """True when every entry is finite (a sum first: finite sums need no second look)."""
+    a = np.asarray(a)
+    if a.dtype.kind not in "fc":
+        return True
+    if math.isfinite(np.add.reduce(a, axis=None)):
+        return True
+    return bool(np.isfinite(a).all())
+
+
+class _Plan:
+    """A construction compiled for one tolerance and start step.
+
+    Each step becomes one kernel bound to its constants (or, when every input
+    is constant, its values computed once).  ``externals`` are the labels read
+    before any step in range makes them: the given inputs and the resumed values.
+    """
+
+    def __init__(self, steps: tuple[Step, ...], tol: Tolerance, start: int) -> None:
+        self.steps = steps
+        self.tol = tol
+        info = CompileInfo()
+        made: set[str] = set()
+        externals: list[str] = []
+        self.program: list[tuple[Any, ...]] = []
+        for step in steps[start:]:
+            if step.op == "input":
+                for o in step.outputs:
+                    info.forget(o)
+                    made.discard(o)
+                self.program.append(("input", step))
+                continue
+            for i in step.inputs:
+                if i not in made and i not in externals:
+                    externals.append(i)
+            if all(i in info.const for i in step.inputs):
+                self.program.append(self._fold(step, info))
+            else:
+                factory = KERNELS.get(step.op)
+                run = factory(step, tol, info) if factory is not None else None
+                always = step.op in ORIGINATING or run is None
+                if run is None:
+                    run = generic_kernel(step, tol)
+                for o in step.outputs:
+                    info.forget(o)
+                if step.op == "circle":
+                    info.radius[step.outputs[0]] = float(step.params["radius"])
+                self.program.append(("run", step, run, always, frozenset(step.inputs)))
+            made.update(step.outputs)
+        self.externals = tuple(externals)
+
+    def _fold(self, step: Step, info: CompileInfo) -> tuple[Any, ...]:
+        args = [info.const[i] for i in step.inputs]
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            outs = OPS[step.op](*args, tol=self.tol, **step.params)
+        consts = []
+        for name, val in zip(step.outputs, outs):
+            val = np.asarray(val, dtype=float)
+            info.forget(name)
+            info.const[name] = val
+            xy: tuple[Any, Any] | None = None
+            unit = dirty = False
+            if step.kind == "point" and val.shape[-1:] == (3,):
+                if bool(np.all(val[..., 2] == 1.0)):
+                    xy, unit = (val[..., 0].copy(), val[..., 1].copy()), True
+                else:
+                    q = g_xy(val)
+                    xy, dirty = (q[..., 0], q[..., 1]), True
+            elif step.kind in ("circle", "vector") and val.ndim >= 1:
+                xy = (val[..., 0].copy(), val[..., 1].copy())
+                if step.kind == "circle" and val.shape == (3,):
+                    info.radius[name] = float(val[2])
+            consts.append((name, val, xy, unit, dirty))
+        bad = _bad_entries(tuple(c[1] for c in consts), step.kind)
+        always = bad is not None and bool(np.any(bad))
+        return ("const", step, tuple(consts), always, frozenset(step.inputs))
+
+    def run(self, env: dict[str, np.ndarray], strict: bool) -> Evaluation:
+        rt = Runtime(env)
+        dirty = rt.dirty
+        for lab in self.externals:
+            if lab in env and not _all_finite(env[lab]):
+                dirty.add(lab)
+        valid: np.ndarray | None = None
+        failed_at: np.ndarray | None = None
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            for entry in self.program:
+                kind, step = entry[0], entry[1]
+                if kind == "input":
+                    if step.outputs[0] not in env:
+                        raise _missing_input(step)
+                    continue
+                if kind == "const":
+                    for name, val, xy, unit, dirt in entry[2]:
+                        rt.put(name, val.copy())
+                        if xy is not None:
+                            rt.xy[name] = xy
+                        if unit:
+                            rt.unit.add(name)
+                        if dirt:
+                            dirty.add(name)
+                    if not entry[3]:
+                        continue
+                else:
+                    try:
+                        entry[2](rt)
+                    except KeyError:
+                        missing = [i for i in step.inputs if i not in env]
+                        if missing:
+                            raise _unknown_input(step, missing[0]) from None
+                        raise
+                    if not entry[3] and (not dirty or dirty.isdisjoint(entry[4])):
+                        continue
+                outs = tuple(env[o] for o in step.outputs)
+                if all(_all_finite(o) for o in outs):
+                    continue
+                bad = _bad_entries(outs, step.kind)
+                if bad is not None and np.any(bad):
+                    if strict:
+                        raise _failure(step, [env[i] for i in step.inputs])
+                    valid, failed_at = _mark(valid, failed_at, bad, step.index)
+        if valid is None:
+            valid = np.array(True)
+        return Evaluation(env, valid, failed_at)
 
 
 def _bad_entries(outs: tuple[np.ndarray, ...], kind: str) -> np.ndarray | None:

@@ -1011,6 +1011,7 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     valid = np.zeros(N, dtype=bool)
     prev: np.ndarray | None = None
     prev_values: np.ndarray | None = None
+    prev_index = -2
     if start is not None:
         prev = _guess_vector(sys, start, dv[0] if N else sys.values)
     for i in range(N):
@@ -1022,7 +1023,7 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
                 continue
         else:
             q0 = prev
-            if prev_values is not None:
+            if prev_values is not None and prev_index == i - 1:  # a step, not a gap
                 q0 = prev + _sensitivity(sys, prev, prev_values) @ _delta(sys, values,
                                                                           prev_values)
         q = _converge(sys, q0, values)
@@ -1040,7 +1041,7 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
             continue
         Q[i] = q
         valid[i] = True
-        prev, prev_values = q, values
+        prev, prev_values, prev_index = q, values, i
     notes = ["analytic: Newton-Raphson, each posture from the one before"]
     return _solution(sys, Q, QD, QDD, valid, notes)
 

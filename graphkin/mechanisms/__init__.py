@@ -13,5 +13,5 @@ from graphkin.mechanisms.model import (
 )
 from graphkin.mechanisms.parse import from_dict, load, loads
 
-__all__ = ["FRAME", "Drive", "Link", "Mechanism", "Pin", "Rates", "Rolling", "Slider", "Slot", "load",
-           "loads", "from_dict"]
+__all__ = ["FRAME", "Drive", "Link", "Mechanism", "Pin", "Rates", "Rolling", "Slider", "Slot",
+           "load", "loads", "from_dict"]
