@@ -1,0 +1,200 @@
+"""Comparing a measured value with the exact one, as a drawing's accuracy allows.
+
+A magnitude is right within a fraction of itself (2 % by default); a
+direction or a link angle within an angle (2° by default); a position (an
+instant center) within the fraction of the size of the mechanism.  The sense of
+an angular rate is checked when one was given.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (graphic solutions read to about
+three significant figures: compare Example 3.1's ω3 = 25.6 with the analytic
+25.38 rad/s).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphkin.check.answers import CheckTolerance, Given
+from graphkin.check.exact import Exact, wrap180
+
+__all__ = ["Comparison", "compare", "show_given", "show_exact", "fmt"]
+
+
+@dataclass(frozen=True)
+class Comparison:
+    """The outcome of one comparison.
+
+    Attributes
+    ----------
+    ok : bool
+        Within tolerance.
+    error : str
+        The error in words and numbers (``"+0.9 %"``, ``"-0.6 %, +0.05°"``).
+    """
+
+    ok: bool
+    error: str
+
+
+def _pct(x: float) -> str:
+    v = x * 100
+    return f"{v if abs(v) >= 0.005 else 0.0:+.2f} %"
+
+
+def _deg(d: float) -> str:
+    return f"{d if abs(d) >= 0.005 else 0.0:+.2f}°"
+
+
+def compare(given: Given, exact: Exact, tol: CheckTolerance, *, floor: float = 0.0,
+            reference: float | None = None) -> Comparison:
+    """Compare a measured value with the exact one.
+
+    Parameters
+    ----------
+    given : Given
+    exact : Exact
+    tol : CheckTolerance
+    floor : float
+        Magnitudes below this count as zero (no direction, no sense).
+    reference : float, optional
+        The length a position error is measured against (default: the exact
+        point's distance from the origin, at least 1).
+
+    Examples
+    --------
+    >>> from graphkin.check.answers import Key
+    >>> g = Given(Key("omega3", "omega", ("3",)), "25.6 rad/s ccw", value=25.6, signed=True)
+    >>> compare(g, Exact(25.38), CheckTolerance())
+    Comparison(ok=True, error='+0.87 %')
+    >>> compare(g, Exact(-25.38), CheckTolerance()).ok
+    False
+    """
+    shape = given.key.shape
+    if shape == "angle":
+        assert given.value is not None and exact.value is not None
+        d = wrap180(given.value - exact.value)
+        return Comparison(abs(d) <= tol.angle, _deg(d))
+    if shape in ("scalar", "magnitude"):
+        return _scalar(given, exact, tol, floor)
+    if shape == "point":
+        return _point(given, exact, tol, reference)
+    return _vector(given, exact, tol, floor)
+
+
+def _scalar(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Comparison:
+    g = float(given.value if given.value is not None else 0.0)
+    e = float(exact.value if exact.value is not None else 0.0)
+    if math.isinf(e) or math.isinf(g):
+        ok = math.isinf(e) and math.isinf(g)
+        return Comparison(ok, "" if ok else "straight path" if math.isinf(e) else "not straight")
+    signed = given.signed and given.key.shape == "scalar"
+    diff = (g - e) if signed else (abs(g) - abs(e))
+    ok = abs(diff) <= tol.relative * abs(e) + floor
+    if abs(e) <= floor:
+        text = f"{diff / given.factor:+.4g} {given.unit}"
+    else:
+        text = _pct((abs(g) - abs(e)) / abs(e))
+    if signed and abs(g) > floor and abs(e) > floor and (g > 0) != (e > 0):
+        text += ", sense"
+    return Comparison(ok, text)
+
+
+def _vector(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Comparison:
+    assert exact.xy is not None
+    mag = exact.magnitude
+    g = float(given.value if given.value is not None else 0.0)
+    ok = abs(g - mag) <= tol.relative * mag + floor
+    parts = [_pct((g - mag) / mag) if mag > floor
+             else f"{(g - mag) / given.factor:+.4g} {given.unit}"]
+    ed = exact.direction
+    if given.direction is not None and mag > floor and g > floor and ed is not None:
+        d = wrap180(given.direction - ed)
+        ok = ok and abs(d) <= tol.angle
+        parts.append(_deg(d))
+    return Comparison(ok, ", ".join(parts))
+
+
+def _point(given: Given, exact: Exact, tol: CheckTolerance,
+           reference: float | None) -> Comparison:
+    assert exact.xy is not None
+    if exact.ideal or given.ideal:
+        if not (exact.ideal and given.ideal):
+            return Comparison(False, "at infinity" if exact.ideal else "not at infinity")
+        assert given.direction is not None and exact.direction is not None
+        d = wrap180(given.direction - exact.direction)
+        d = d - 180.0 if d > 90.0 else d + 180.0 if d <= -90.0 else d  # either sense
+        return Comparison(abs(d) <= tol.angle, _deg(d))
+    assert given.point is not None
+    dist = float(np.hypot(*(given.point - exact.xy)))
+    ref = reference if reference is not None else max(1.0, float(np.hypot(*exact.xy)))
+    return Comparison(dist <= tol.relative * ref,
+                      f"{dist / given.factor:.4g} {given.unit} ({dist / ref * 100:.2f} %)")
+
+
+def _sense_word(x: float) -> str:
+    return "ccw" if x > 0 else "cw" if x < 0 else ""
+
+
+def fmt(x: float) -> str:
+    """Four significant figures, without an exponent for everyday sizes.
+
+    Examples
+    --------
+    >>> fmt(35530.6), fmt(25.3828), fmt(0.054321), fmt(0.0)
+    ('35531', '25.38', '0.05432', '0')
+    """
+    a = abs(x)
+    if a == 0 or not math.isfinite(a):
+        return f"{x:g}"
+    if 1e-3 <= a < 1e7:
+        return f"{x:.{max(0, 3 - math.floor(math.log10(a)))}f}"
+    return f"{x:.4g}"
+
+
+def show_given(given: Given) -> str:
+    """The measured value as written (strings) or with its unit (numbers)."""
+    if isinstance(given.raw, str):
+        return given.raw
+    if isinstance(given.raw, list) and given.point is not None:
+        return f"({', '.join(fmt(v / given.factor) for v in given.point)}) {given.unit}"
+    if isinstance(given.raw, list) and given.vector is not None:
+        return f"[{', '.join(fmt(v / given.factor) for v in given.vector)}] {given.unit}"
+    return show_exact(given, Exact(given.value) if given.vector is None
+                      else Exact(None, given.vector), plain=True)
+
+
+def show_exact(given: Given, exact: Exact, *, plain: bool = False) -> str:
+    """An exact value in the unit the answer was given in.
+
+    ``plain`` shows a given value (no sense unless one was written).
+    """
+    shape = given.key.shape
+    f = given.factor or 1.0
+    if shape == "angle":
+        assert exact.value is not None
+        return f"{wrap180(exact.value):.2f}°" if given.unit == "deg" else \
+            f"{fmt(exact.value / f)} {given.unit}"
+    if shape == "scalar":
+        v = float(exact.value or 0.0)
+        sense = "" if plain and not given.signed else " " + _sense_word(v)
+        return f"{fmt(abs(v) / f)} {given.unit}{sense}".rstrip()
+    if shape == "magnitude":
+        v = float(exact.value or 0.0)
+        return "∞ (straight)" if math.isinf(v) else f"{fmt(v / f)} {given.unit}"
+    if shape == "point":
+        assert exact.xy is not None
+        if exact.ideal:
+            return f"∞ at {wrap180(exact.direction or 0.0):.1f}°"
+        return f"({fmt(exact.xy[0] / f)}, {fmt(exact.xy[1] / f)}) {given.unit}"
+    if exact.xy is None:
+        return f"{fmt(float(exact.value or 0.0) / f)} {given.unit}"
+    text = f"{fmt(exact.magnitude / f)} {given.unit}"
+    d = exact.direction
+    if d is not None:
+        text += f" at {d:.2f}°"
+    return text

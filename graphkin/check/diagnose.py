@@ -1,0 +1,459 @@
+"""The usual mistakes of the graphic method, and which one explains a wrong answer.
+
+For an answer outside tolerance, each usual mistake is made on purpose, the
+value it would give is compared with the answer, and the first mistake that
+brings the answer within tolerance is named:
+
+* the sense reversed (an angular rate, a direction, a difference the wrong way);
+* a unit factor (12 in/ft, 1000 mm/m, 2π/60 rev/min to rad/s, 25.4 mm/in,
+  0.3048 m/ft ...);
+* a velocity difference given for an absolute velocity, or the other way;
+* a velocity or acceleration image flipped over (the mirror image of the
+  link's shape, Sec. 3.5 and the footnote to Example 4.2);
+* a normal component drawn away from the center instead of toward it
+  (``A_wrong = A − 2 A^n``, and the acceleration polygon redrawn with it);
+* the Coriolis component with the wrong sense, the wrong ω, without the 2,
+  or left out (Sec. 4.5);
+* the other assembly branch (the crossed instead of the open four-bar, Sec. 2.5).
+
+A hint is given only when the mistaken value matches within tolerance.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.5 (velocity images: "Care must be
+taken not to allow the triangle to be flipped over"), Sec. 4.3 (the normal
+component is directed toward the center), Sec. 4.5 (Coriolis component
+2ω × V of the link that carries the path).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphkin.check.answers import CheckTolerance, Given, Key
+from graphkin.check.compare import compare
+from graphkin.check.exact import Evaluator, Exact
+from graphkin.errors import GraphkinError
+from graphkin.geometry import ops as g
+from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import FRAME
+
+__all__ = ["Mistake", "Diagnoser", "UNIT_FACTORS", "OTHER_BRANCH"]
+
+#: (factor, how it reads, the usual cause)
+UNIT_FACTORS: tuple[tuple[float, str, str], ...] = (
+    (12.0, "12", "inches and feet mixed up (12 in = 1 ft)"),
+    (1000.0, "1000", "millimetres and metres mixed up (1000 mm = 1 m)"),
+    (60.0 / (2.0 * math.pi), "60/2π", "rev/min and rad/s mixed up (1 rev/min = 2π/60 rad/s)"),
+    (25.4, "25.4", "millimetres and inches mixed up (1 in = 25.4 mm)"),
+    (1.0 / 0.3048, "1/0.3048", "feet and metres mixed up (1 ft = 0.3048 m)"),
+    (2.0 * math.pi, "2π", "revolutions and radians mixed up (1 rev = 2π rad)"),
+    (60.0, "60", "minutes and seconds mixed up"),
+    (180.0 / math.pi, "180/π", "degrees and radians mixed up"),
+    (10.0, "10", "millimetres and centimetres mixed up"),
+    (100.0, "100", "centimetres and metres mixed up"),
+)
+
+#: the other branch of each two-way construction (Side and Along names)
+OTHER_BRANCH = {"left": "right", "right": "left", "behind": "ahead", "ahead": "behind"}
+
+_MAX_BRANCHES = 4  # 2**4 - 1 alternative postures at most
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A mistake that explains a wrong answer.
+
+    Attributes
+    ----------
+    kind : str
+        ``sense``, ``unit``, ``relative``, ``flipped``, ``normal``,
+        ``coriolis`` or ``branch``.
+    text : str
+        The mistake in words.
+    """
+
+    kind: str
+    text: str
+
+
+def _lower(name: str) -> str:
+    return name.lower()
+
+
+def _mirror(p: tuple[float, float], q: tuple[float, float],
+            r: tuple[float, float]) -> np.ndarray | None:
+    """Mirror image of local point p about the line qr (None if p lies on it)."""
+    P, Q, R = (np.asarray(x, dtype=float) for x in (p, q, r))
+    d = R - Q
+    n = float(np.hypot(*d))
+    if n == 0.0:
+        return None
+    d /= n
+    w = P - Q
+    off = w - float(w @ d) * d
+    if float(np.hypot(*off)) <= 1e-9 * max(n, float(np.hypot(*w))):
+        return None
+    return P - 2.0 * off
+
+
+class Diagnoser:
+    """Finds the mistake that explains each wrong answer for one solved mechanism.
+
+    Parameters
+    ----------
+    ev : Evaluator
+        The exact values.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.check.answers import loads_answers
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [2, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 90
+    ... omega = 3
+    ... alpha = 0
+    ... ''')
+    >>> ev = Evaluator(graphkin.solve(mech))
+    >>> ans = loads_answers('omega2 = "3 rad/s cw"', mech)
+    >>> Diagnoser(ev).diagnose(ans.given[0], CheckTolerance()).kind
+    'sense'
+    """
+
+    def __init__(self, ev: Evaluator) -> None:
+        self.ev = ev
+        self.sol = ev.sol
+        self.mech = ev.mech
+        self._variants: list[tuple[Mistake, Evaluator]] | None = None
+
+    # ---- the search -----------------------------------------------------
+    def diagnose(self, given: Given, tol: CheckTolerance) -> Mistake | None:
+        """The first usual mistake whose value matches ``given`` within ``tol``."""
+        try:
+            exact = self.ev.value(given.key)
+        except GraphkinError:
+            return None
+        floor = self.ev.floor(given.key.quantity)
+        ref = self.ev.reference_length(exact.xy) if given.key.shape == "point" \
+            and exact.xy is not None and not exact.ideal else None
+        for mistake, cand in self.candidates(given, exact):
+            if cand.xy is not None and not np.all(np.isfinite(cand.xy)):
+                continue
+            try:
+                if compare(given, cand, tol, floor=floor, reference=ref).ok:
+                    return mistake
+            except (AssertionError, TypeError, ValueError):
+                continue
+        return None
+
+    def candidates(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
+        """Every mistaken value worth testing for ``given``, most likely first."""
+        key = given.key
+        yield from self._sense(given, exact)
+        yield from self._units(given, exact, with_sense=False)
+        yield from self._relative(key)
+        yield from self._flipped(key)
+        yield from self._normal(key)
+        for mistake, ev in self.variants():
+            try:
+                yield mistake, ev.value(key)
+            except GraphkinError:
+                continue
+        yield from self._units(given, exact, with_sense=True)
+
+    # ---- simple mistakes on the value itself ------------------------------
+    def _sense(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
+        key = given.key
+        shape = key.shape
+        if shape == "scalar" and given.signed:
+            w = "ccw" if (exact.value or 0.0) > 0 else "cw"
+            yield Mistake("sense", f"sense reversed: {key.pretty()} is {w}"), exact.scaled(-1.0)
+        elif shape == "angle":
+            assert exact.value is not None
+            yield (Mistake("sense", "angle of the link measured from its other end "
+                                    "(180° out)"), Exact(exact.value + 180.0))
+        elif shape == "vector" and given.direction is not None:
+            if len(key.args) == 2 and key.kind in ("V", "A", "R"):
+                p, q = key.args
+                text = (f"sense reversed: {key.kind}_{q}{p} given for {key.kind}_{p}{q} "
+                        f"(the difference {key.kind}_{p}{q} is drawn to {_lower(p)} from "
+                        f"{_lower(q)})")
+            else:
+                text = f"sense reversed: {key.text} drawn the wrong way round (180° out)"
+            yield Mistake("sense", text), exact.scaled(-1.0)
+
+    def _units(self, given: Given, exact: Exact,
+               with_sense: bool) -> Iterator[tuple[Mistake, Exact]]:
+        shape = given.key.shape
+        if shape == "angle":
+            assert exact.value is not None
+            if not with_sense:
+                f, label, why = UNIT_FACTORS[7]
+                yield (Mistake("unit", f"too small by a factor of {label}: radians written as "
+                                       "degrees"), Exact(exact.value / f))
+            return
+        if with_sense and not (shape == "scalar" and given.signed):
+            return
+        sign = -1.0 if with_sense else 1.0
+        pre = "sense reversed and " if with_sense else ""
+        if shape == "point" and (exact.ideal or given.ideal):
+            return
+        for f, label, why in UNIT_FACTORS:
+            yield (Mistake("unit", f"{pre}too large by a factor of {label}: {why}"),
+                   exact.scaled(sign * f))
+            yield (Mistake("unit", f"{pre}too small by a factor of {label}: {why}"),
+                   exact.scaled(sign / f))
+
+    # ---- mistakes of the polygon --------------------------------------------
+    def _vec(self, kind: str, p: str, link: str | None = None) -> np.ndarray:
+        f = self.sol.velocity if kind == "V" else self.sol.acceleration
+        return np.asarray(f(p, link) if link else f(p), dtype=float)
+
+    def _relative(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
+        """A difference given for an absolute value, or the other way."""
+        if key.kind not in ("V", "A"):
+            return
+        word = "velocity" if key.kind == "V" else "acceleration"
+        k = key.kind
+        try:
+            if len(key.args) == 1:
+                (p,) = key.args
+                vp = self._vec(k, p)
+                floor = self.ev.floor("velocity" if k == "V" else "acceleration")
+                for q in self.mech.point_names:
+                    if q == p:
+                        continue
+                    vq = self._vec(k, q)
+                    if float(np.hypot(*vq)) <= floor:
+                        continue
+                    yield (Mistake("relative", f"the {word} difference {k}_{p}{q} given for "
+                                               f"the absolute {word} {k}_{p}"),
+                           Exact(None, vp - vq))
+                if k == "A":
+                    yield from self._components_for_absolute(p, floor)
+            else:
+                p, q = key.args
+                yield (Mistake("relative", f"the absolute {word} {k}_{p} given for the "
+                                           f"{word} difference {k}_{p}{q}"),
+                       Exact(None, self._vec(k, p)))
+                if k == "A":
+                    for comp, name in (("n", "normal"), ("t", "tangential")):
+                        try:
+                            c = self.ev.component(key, p, q, comp)
+                        except GraphkinError:
+                            break
+                        yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
+                                                   f"given for A_{p}{q}"), Exact(None, c))
+        except (GraphkinError, ValueError):
+            return
+
+    def _components_for_absolute(self, p: str, floor: float) -> Iterator[tuple[Mistake, Exact]]:
+        """A_P of a point turning about a fixed pivot Q: one component given for the whole."""
+        for lid in self.mech.point_links[p]:
+            if lid == FRAME:
+                continue
+            for q in self.mech.links[lid].points:
+                if q == p or float(np.hypot(*self._vec("A", q))) > floor:
+                    continue
+                key = Key(f"A_{p}{q}", "A", (p, q))
+                for comp, name in (("n", "normal"), ("t", "tangential")):
+                    try:
+                        c = self.ev.component(key, p, q, comp)
+                    except GraphkinError:
+                        continue
+                    yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
+                                               f"given for A_{p}"), Exact(None, c))
+
+    def _flipped(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
+        """The image triangle of the link drawn mirror-wise."""
+        if key.kind not in ("V", "A"):
+            return
+        p = key.args[0]
+        word = "velocity" if key.kind == "V" else "acceleration"
+        try:
+            base = self._vec(key.kind, key.args[1]) if len(key.args) == 2 else np.zeros(2)
+        except (GraphkinError, ValueError):
+            return
+        for lid in self.mech.point_links[p]:
+            if lid == FRAME:
+                continue
+            pts = self.mech.links[lid].points
+            others = [q for q in pts if q != p]
+            st = self.sol.links[lid]
+            for q, r in itertools.combinations(others, 2):
+                m = _mirror(pts[p], pts[q], pts[r])
+                if m is None:
+                    continue
+                try:
+                    v = st.velocity(m) if key.kind == "V" else st.acceleration(m)
+                except ValueError:
+                    return
+                tri = f"{_lower(q)}{_lower(r)}{_lower(p)}"
+                yield (Mistake("flipped", f"the {word} image of link {lid} is flipped over: "
+                                          f"triangle {tri} drawn mirror-wise about "
+                                          f"{_lower(q)}{_lower(r)} (the image keeps the link's "
+                                          "shape and the order of its letters)"),
+                       Exact(None, np.asarray(v, dtype=float) - base))
+
+    def _normal(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
+        """``A − 2 A^n``: one normal component drawn away from its center."""
+        if key.kind != "A":
+            return
+        p = key.args[0]
+        try:
+            a = np.asarray(self.ev.value(key).xy, dtype=float)
+        except GraphkinError:
+            return
+        for lid in self.mech.point_links[p]:
+            if lid == FRAME:
+                continue
+            st = self.sol.links[lid]
+            if st.omega is None:
+                return
+            for q in self.mech.links[lid].points:
+                if q == p:
+                    continue
+                r = self.sol.position(p, lid) - self.sol.position(q, lid)
+                an = -float(st.omega) ** 2 * r
+                yield (Mistake("normal", f"A_{p}{q}^n drawn away from {q} instead of toward "
+                                         f"it (a normal component points to the center)"),
+                       Exact(None, a - 2.0 * an))
+
+    # ---- whole polygons redrawn with one mistake ------------------------------
+    def variants(self) -> list[tuple[Mistake, Evaluator]]:
+        """Solutions redrawn with one mistake each (computed once, on first use)."""
+        if self._variants is None:
+            out: list[tuple[Mistake, Evaluator]] = []
+            try:
+                out += self._construction_variants()
+            except GraphkinError:
+                pass
+            out += self._branch_variants()
+            self._variants = out
+        return self._variants
+
+    def _construction_variants(self) -> list[tuple[Mistake, Evaluator]]:
+        sol = self.sol
+        if sol.method != "construction" or not sol.has_accelerations:
+            return []
+        from graphkin.kinematics.polygons import build_polygons
+        from graphkin.kinematics.posture import _n, build_posture
+        from graphkin.kinematics.solve import link_states, rate_inputs
+
+        mech = self.mech
+        pc = build_posture(mech, None, dict(sol.branches))
+        pol = build_polygons(mech, pc)
+        vin, ain = rate_inputs(mech, pol, pc, pc.values)
+        vel = pol.velocity.evaluate(vin, values=dict(pc.values)).values
+        acc_cx = pol.acceleration
+        out: list[tuple[Mistake, Evaluator]] = []
+
+        def redo(label: str, fn: Callable[[dict[str, np.ndarray], tuple[str, ...]], np.ndarray],
+                 mistake: Mistake) -> None:
+            step = acc_cx.step_of(label)
+            try:
+                env = acc_cx.upto(step.index).evaluate(ain, values=dict(vel)).values
+                new = fn(env, step.inputs)
+                if np.allclose(new, env[label], rtol=1e-12, atol=0.0):
+                    return
+                env[label] = new
+                acc = acc_cx.evaluate(ain, values=env, start=step.index + 1).values
+                states = link_states(mech, pc, pc.values, vel, acc, pol)
+            except (GraphkinError, KeyError, ValueError):
+                return
+            alt = Solution(mech, states, "construction", sol.constructions,
+                           branches=dict(sol.branches),
+                           values={"posture": pc.values, "velocity": vel, "acceleration": acc})
+            out.append((mistake, Evaluator(alt)))
+
+        omegas = {lid: f"ω{lid}" for lid in mech.moving if f"ω{lid}" in vel}
+        for step in acc_cx.steps:
+            lab = step.label
+            if step.op == "normal_component":
+                center = _n(step.inputs[0])
+                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                     Mistake("normal", f"{lab} drawn away from {center} instead of toward it "
+                                       "(a normal component points to the center)"))
+            elif step.op == "apparent_normal":
+                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                     Mistake("normal", f"{lab} drawn away from the center of curvature of the "
+                                       "path instead of toward it"))
+            elif step.op == "acceleration_difference":
+                x = _n(step.outputs[0][2:-1].replace("@", ""))
+                a = _n(step.inputs[3])
+
+                def reversed_normal(env: dict[str, np.ndarray], ins: tuple[str, ...],
+                                    out_label: str = step.outputs[0]) -> np.ndarray:
+                    r = g.xy(env[ins[4]]) - g.xy(env[ins[3]])
+                    w = float(np.asarray(env[ins[1]]))
+                    res = np.array(env[out_label], dtype=float)
+                    res[..., :2] += 2.0 * w**2 * r * res[..., 2:3]
+                    return res
+
+                redo(step.outputs[0], reversed_normal,
+                     Mistake("normal", f"A_{x}{a}^n drawn away from {a} instead of toward it "
+                                       "(a normal component points to the center)"))
+            elif step.op == "coriolis":
+                wk = step.inputs[0]
+                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                     Mistake("coriolis", f"the Coriolis component {lab} drawn with the wrong "
+                                         f"sense (it is V_rel turned 90° in the sense of {wk})"))
+                redo(lab, lambda env, ins, lab=lab: 0.5 * np.asarray(env[lab]),
+                     Mistake("coriolis", f"the Coriolis component {lab} taken as ω × V "
+                                         "instead of 2ω × V"))
+                redo(lab, lambda env, ins, lab=lab: 0.0 * np.asarray(env[lab]),
+                     Mistake("coriolis", f"the Coriolis component {lab} left out"))
+                for wj in omegas.values():
+                    if wj == wk:
+                        continue
+
+                    def other_omega(env: dict[str, np.ndarray], ins: tuple[str, ...],
+                                    wj: str = wj) -> np.ndarray:
+                        v = g.xy(env[ins[1]]) - g.xy(env[ins[2]])
+                        w = float(np.asarray(env[wj]))
+                        return 2.0 * w * np.stack([-v[..., 1], v[..., 0]], axis=-1)
+
+                    redo(lab, other_omega,
+                         Mistake("coriolis", f"the Coriolis component {lab} computed with {wj} "
+                                             f"instead of {wk} (use the angular velocity of "
+                                             "the link that carries the path)"))
+        return out
+
+    def _branch_variants(self) -> list[tuple[Mistake, Evaluator]]:
+        from graphkin.kinematics.solve import solve
+
+        chosen = {k: v for k, v in self.sol.branches.items() if v in OTHER_BRANCH}
+        labels = list(chosen)[:_MAX_BRANCHES]
+        out: list[tuple[Mistake, Evaluator]] = []
+        seen: list[np.ndarray] = []
+        for n in range(1, len(labels) + 1):
+            for subset in itertools.combinations(labels, n):
+                forced = {lab: OTHER_BRANCH[chosen[lab]] for lab in subset}
+                try:
+                    alt = solve(self.mech, branches=forced)
+                except GraphkinError:
+                    continue
+                pos = np.array([alt.position(p) for p in self.mech.point_names])
+                if any(np.allclose(pos, s) for s in [self._positions(), *seen]):
+                    continue
+                seen.append(pos)
+                where = ", ".join(f"{lab} ({forced[lab]} instead of {chosen[lab]})"
+                                  for lab in subset)
+                out.append((Mistake("branch", f"the other assembly branch at {where}"),
+                            Evaluator(alt)))
+        return out
+
+    def _positions(self) -> np.ndarray:
+        return np.array([self.sol.position(p) for p in self.mech.point_names])
