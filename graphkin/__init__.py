@@ -28,8 +28,9 @@ Examples
 ... C = [15, 10]
 ... ''')
 >>> sol = mech.solve()
->>> round(float(sol.angle("3")), 6)  # θ3 of Example 3.1, in radians
-0.365102
+>>> import math
+>>> round(math.degrees(sol.angle("3")), 2)  # θ3 of Example 3.1: the book gives 20.92°
+20.92
 """
 
 from graphkin.construction import Construction, Step
