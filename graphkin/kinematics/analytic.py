@@ -82,14 +82,24 @@ _LM_DONE = 1e-8
 #: Iteration limits of the two stages.
 _LM_ITER = 200
 _NEWTON_ITER = 12
+#: Every this many iterations, a residual that fell by less than _STALL_RATIO while
+#: still above _STALL_FAR (scaled) means a local minimum of |Φ|: that start fails.
+_STALL_EVERY = 10
+_STALL_RATIO = 0.9
+_STALL_FAR = 1e-3
+#: Iteration limit when continuing from the previous posture of a sweep.
+_SWEEP_ITER = 60
 #: Number of deterministic pseudo-random restarts when no guess is given.
 _RESTARTS = 40
+#: Restarts at the later postures of a sweep whose first postures do not assemble.
+_SWEEP_RESTARTS = 6
 #: Seed of those restarts: the search is deterministic.
 _SEED = 20240611
 #: Two converged postures are the same when every scaled coordinate agrees to this.
 _SAME_POSTURE = 1e-6
-#: A hint score within this fraction of the size² of the best is a tie.
-_TIE = 1e-9
+#: A hint score within this fraction of the size² of the best is a tie (and a
+#: score this small means the hints are met exactly).
+_TIE = 1e-12
 
 
 def _wrap(a: float) -> float:
@@ -354,7 +364,9 @@ class _System:
         self.row_scale = np.array([1.0 / self.size if k == "L" else 1.0 for k in kinds])
         self.col_scale = np.tile([self.size, self.size, 1.0], self.nlinks)
         self.angle_rows = np.array([k == "A" for k in kinds])
-        self.rate_functions, self.rate_values = self._rates()
+        rates = self._rates()
+        self.rate_functions: list[_Constraint] | None = rates[0]
+        self.rate_values: list[tuple[float, float]] | None = rates[1]
 
     # -- the functions that drives and rates prescribe --------------------
     def _drive_function(self, d: Drive) -> _Constraint:
@@ -466,31 +478,38 @@ def _unit(p0: tuple[float, float], p1: tuple[float, float]) -> tuple[tuple[float
 # ---------------------------------------------------------------------------
 
 
-def _converge(sys: _System, q0: np.ndarray, values: np.ndarray) -> np.ndarray | None:
+def _converge(eqs: _System, q0: np.ndarray, values: np.ndarray,
+              max_iter: int = _LM_ITER) -> np.ndarray | None:
     """Solve Φ(q) = 0 from ``q0``: Levenberg-Marquardt, then Newton polishing.
 
     Returns the converged ``q`` (angles wrapped to (-π, π]) or None.
     """
-    accept = sys.tol.length_rel * 1e-2
+    accept = eqs.tol.length_rel * 1e-2
     with np.errstate(all="ignore"):
         q = np.array(q0, dtype=float)
-        cs = sys.col_scale
+        cs = eqs.col_scale
         try:
-            r, J = sys.scaled(q, values)
+            r, J = eqs.scaled(q, values)
         except (ValueError, OverflowError):
             return None
         f = float(r @ r)
         A = J.T @ J
         mu = 1e-3 * max(float(np.max(np.diag(A))), 1e-12)
         nu = 2.0
-        for _ in range(_LM_ITER):
+        f_before = f
+        for it in range(max_iter):
             if not math.isfinite(f):
                 return None
             if math.sqrt(f) < _LM_DONE:
                 break
+            if it and it % _STALL_EVERY == 0:
+                # stalled far from any solution: a local minimum of |Φ|, give up
+                if f > _STALL_RATIO * f_before and f > _STALL_FAR**2:
+                    return None
+                f_before = f
             g = J.T @ r
             try:
-                step = np.linalg.solve(A + mu * np.eye(sys.n), -g)
+                step = np.linalg.solve(A + mu * np.eye(eqs.n), -g)
             except np.linalg.LinAlgError:
                 mu *= nu
                 nu *= 2.0
@@ -500,7 +519,7 @@ def _converge(sys: _System, q0: np.ndarray, values: np.ndarray) -> np.ndarray | 
                 step /= big
             q_new = q + step * cs
             try:
-                r_new, J_new = sys.scaled(q_new, values)
+                r_new, J_new = eqs.scaled(q_new, values)
             except (ValueError, OverflowError):
                 return None
             f_new = float(r_new @ r_new)
@@ -526,7 +545,10 @@ def _converge(sys: _System, q0: np.ndarray, values: np.ndarray) -> np.ndarray | 
             except np.linalg.LinAlgError:
                 break
             q_new = q + step * cs
-            r_new, J_new = sys.scaled(q_new, values)
+            try:
+                r_new, J_new = eqs.scaled(q_new, values)
+            except (ValueError, OverflowError):
+                break
             f_new = float(r_new @ r_new)
             if not (math.isfinite(f_new) and f_new < f):
                 break
@@ -566,9 +588,9 @@ def _fit_pose(pairs: list[tuple[tuple[float, float], tuple[float, float]]],
 class _Search:
     """Starting guesses (from the assembly hints and the frame), restarts, and the choice."""
 
-    def __init__(self, sys: _System) -> None:
-        self.sys = sys
-        mech = sys.mech
+    def __init__(self, eqs: _System) -> None:
+        self.eqs = eqs
+        mech = eqs.mech
         self.frame_pts = dict(mech.links[FRAME].points)
         self.hints = dict(mech.assembly)
         pts = list(self.frame_pts.values()) + list(self.hints.values())
@@ -584,8 +606,8 @@ class _Search:
         With ``rng`` the links that nothing places get random angles and the
         hinted positions are jittered; without, they get angle 0.
         """
-        sys, mech = self.sys, self.sys.mech
-        size = sys.size
+        eqs, mech = self.eqs, self.eqs.mech
+        size = eqs.size
         known: dict[str, tuple[float, float]] = {}
         for name, xy in self.hints.items():
             if rng is not None:
@@ -596,7 +618,7 @@ class _Search:
         poses: dict[str, tuple[float, float, float]] = {FRAME: (0.0, 0.0, 0.0)}
         if fixed:
             for lid, pose in fixed.items():
-                if lid in sys.index and lid != FRAME:
+                if lid in eqs.index and lid != FRAME:
                     poses[lid] = tuple(float(v) for v in pose)  # type: ignore[assignment]
         angles: dict[str, float] = {}
         for d, v in zip(mech.drives, values):
@@ -612,7 +634,7 @@ class _Search:
 
         for lid in list(poses):
             learn(lid)
-        todo = [lid for lid in sys.ids if lid not in poses]
+        todo = [lid for lid in eqs.ids if lid not in poses]
         while todo:
             progress = False
             for lid in list(todo):
@@ -645,81 +667,89 @@ class _Search:
                 poses[lid] = (self.center[0], self.center[1], angle)
             learn(lid)
             todo.remove(lid)
-        q = np.zeros(sys.n)
-        for lid in sys.ids:
-            k = sys.index[lid]
+        q = np.zeros(eqs.n)
+        for lid in eqs.ids:
+            k = eqs.index[lid]
             q[3 * k:3 * k + 3] = poses[lid]
         return q
 
     def random(self, values: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """Every link anywhere near the frame, at any angle (drive angles kept)."""
-        sys = self.sys
-        q = np.zeros(sys.n)
-        for k in range(sys.nlinks):
-            q[3 * k] = self.center[0] + sys.size * rng.uniform(-1.0, 1.0)
-            q[3 * k + 1] = self.center[1] + sys.size * rng.uniform(-1.0, 1.0)
+        eqs = self.eqs
+        q = np.zeros(eqs.n)
+        for k in range(eqs.nlinks):
+            q[3 * k] = self.center[0] + eqs.size * rng.uniform(-1.0, 1.0)
+            q[3 * k + 1] = self.center[1] + eqs.size * rng.uniform(-1.0, 1.0)
             q[3 * k + 2] = rng.uniform(-math.pi, math.pi)
-        for d, v in zip(sys.mech.drives, values):
+        for d, v in zip(eqs.mech.drives, values):
             if d.kind == "angle":
-                q[3 * sys.index[d.link] + 2] = v
+                q[3 * eqs.index[d.link] + 2] = v
         return q
 
     def score(self, q: np.ndarray) -> tuple[float, float]:
         """(distance² to the hints, distance² to the file's own layout)."""
-        sys, mech = self.sys, self.sys.mech
-        st = _Poses(q, sys.nlinks)
+        eqs, mech = self.eqs, self.eqs.mech
+        st = _Poses(q, eqs.nlinks)
         hint = 0.0
         for name, (hx, hy) in self.hints.items():
             owners = mech.point_links[name]
             lid = next((o for o in owners if o != FRAME), owners[0])
-            px, py = st.world(sys.index[lid], mech.links[lid].points[name])
+            px, py = st.world(eqs.index[lid], mech.links[lid].points[name])
             hint += (px - hx) ** 2 + (py - hy) ** 2
         layout = 0.0
-        for lid in sys.ids:
-            k = sys.index[lid]
+        for lid in eqs.ids:
+            k = eqs.index[lid]
             for p in mech.links[lid].points.values():
                 px, py = st.world(k, p)
                 layout += (px - p[0]) ** 2 + (py - p[1]) ** 2
         return hint, layout
 
     def same(self, q1: np.ndarray, q2: np.ndarray) -> bool:
-        d = (q1 - q2) / self.sys.col_scale
+        d = (q1 - q2) / self.eqs.col_scale
         d[2::3] = _wrap_array(d[2::3])
         return bool(np.max(np.abs(d), initial=0.0) < _SAME_POSTURE)
 
-    def solve(self, values: np.ndarray) -> np.ndarray:
-        """Every start, every converged posture; return the one nearest the hints."""
-        sys = self.sys
+    def solve(self, values: np.ndarray, restarts: int = _RESTARTS,
+              explain: bool = True) -> np.ndarray:
+        """Every start, every converged posture; return the one nearest the hints.
+
+        Raises AssemblyError when nothing converges; with ``explain`` its
+        message names the constraint that stays open at the best compromise.
+        """
+        eqs = self.eqs
         rng = np.random.default_rng(_SEED)
         found: list[np.ndarray] = []
         starts: list[Callable[[], np.ndarray]] = [lambda: self.heuristic(values, None)]
-        for i in range(_RESTARTS):
+        for i in range(restarts):
             if i % 2 == 0:
                 starts.append(lambda: self.heuristic(values, rng))
             else:
                 starts.append(lambda: self.random(values, rng))
-        exact = _TIE * sys.size**2
+        exact = _TIE * eqs.size**2
         for make in starts:
-            q = _converge(sys, make(), values)
+            q = _converge(eqs, make(), values)
             if q is None or any(self.same(q, f) for f in found):
                 continue
             found.append(q)
             if self.hints and self.score(q)[0] <= exact:
                 break  # the hints are met exactly: no posture can be nearer
         if not found:
-            raise _assembly_error(sys, values, self.best_attempt(values, rng))
+            if not explain:
+                raise AssemblyError("cannot assemble the mechanism", key="drive",
+                                    file=eqs.mech.source)
+            raise _assembly_error(eqs, values, self.best_attempt(values))
         scores = [self.score(q) for q in found]
         best_hint = min(s[0] for s in scores)
-        tie = best_hint + _TIE * sys.size**2 * max(1, len(self.hints))
+        tie = best_hint + _TIE * eqs.size**2 * max(1, len(self.hints))
         candidates = [(s[1], i) for i, s in enumerate(scores) if s[0] <= tie]
         return found[min(candidates)[1]]
 
-    def best_attempt(self, values: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    def best_attempt(self, values: np.ndarray) -> np.ndarray:
         """The least-squares compromise of the unsolvable equations (for the message)."""
         q = self.heuristic(values, None)
         with np.errstate(all="ignore"):
             for _ in range(_LM_ITER):
-                r, J = self.sys.scaled(q, values)
+                r, J = self.eqs.scaled(q, values)
                 try:
                     step = np.linalg.lstsq(J, -r, rcond=None)[0]
                 except np.linalg.LinAlgError:
@@ -727,23 +757,23 @@ class _Search:
                 big = float(np.max(np.abs(step), initial=0.0))
                 if not math.isfinite(big):
                     break
-                q = q + step * self.sys.col_scale * min(1.0, 0.5 / max(big, 1e-300))
+                q = q + step * self.eqs.col_scale * min(1.0, 0.5 / max(big, 1e-300))
         return q
 
 
-def _assembly_error(sys: _System, values: np.ndarray, q: np.ndarray) -> AssemblyError:
+def _assembly_error(eqs: _System, values: np.ndarray, q: np.ndarray) -> AssemblyError:
     """Name the constraint that stays open at the best compromise."""
-    mech = sys.mech
+    mech = eqs.mech
     what = ", ".join(_drive_text(d, v) for d, v in zip(mech.drives, values))
     reason = "the loop-closure equations have no real solution"
     with np.errstate(all="ignore"):
-        r, _ = sys.residual(q, values, jac=False)
+        r, _ = eqs.residual(q, values, jac=False)
     if np.all(np.isfinite(r)) and r.size:
         row = 0
         worst, worst_label = 0.0, ""
-        for c in [*sys.cons, *sys.drives]:
+        for c in [*eqs.cons, *eqs.drives]:
             for j, kind in enumerate(c.kinds):
-                v = abs(float(r[row + j])) * (1.0 / sys.size if kind == "L" else 1.0)
+                v = abs(float(r[row + j])) * (1.0 / eqs.size if kind == "L" else 1.0)
                 if v > worst:
                     worst, worst_label = v, c.label
             row += len(c.kinds)
@@ -759,18 +789,18 @@ def _drive_text(d: Drive, v: float) -> str:
     return f"link {d.link} position {v:.6g}"
 
 
-def _check_regular(sys: _System, q: np.ndarray, values: np.ndarray) -> None:
+def _check_regular(eqs: _System, q: np.ndarray, values: np.ndarray) -> None:
     """Raise ConstructionError at a singular (toggle, dead-center) posture."""
-    _, J = sys.scaled(q, values)
-    if not sys.n:
+    _, J = eqs.scaled(q, values)
+    if not eqs.n:
         return
     sv = np.linalg.svd(J, compute_uv=False)
-    if sv.size < sys.n or sv[-1] <= _singular_threshold(sys.tol) * sv[0]:
-        what = ", ".join(_drive_text(d, v) for d, v in zip(sys.mech.drives, values))
+    if sv.size < eqs.n or sv[-1] <= _singular_threshold(eqs.tol) * sv[0]:
+        what = ", ".join(_drive_text(d, v) for d, v in zip(eqs.mech.drives, values))
         raise ConstructionError(
             f"the posture at {what} is singular (a toggle or dead-center posture: the "
             "Jacobian of the loop-closure equations is rank deficient)",
-            key="drive", file=sys.mech.source)
+            key="drive", file=eqs.mech.source)
 
 
 def _singular_threshold(tol: Tolerance) -> float:
@@ -784,22 +814,22 @@ def _singular_threshold(tol: Tolerance) -> float:
 # ---------------------------------------------------------------------------
 
 
-def _rates(sys: _System, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _rates(eqs: _System, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """q̇ and q̈ at a posture (Secs. 3.9 and 4.9)."""
-    A, b = sys.velocity_system(q)
+    A, b = eqs.velocity_system(q)
     # dimensionless rows and columns, as for the posture, to judge the rank
-    rows = np.concatenate([sys.row_scale[:sys.ncons],
-                           [1.0 if g.kinds[0] == "A" else 1.0 / sys.size
-                            for g in sys.rate_functions or []]])
-    sv = np.linalg.svd(A * rows[:, None] * sys.col_scale[None, :], compute_uv=False)
-    if A.shape[0] != sys.n or sv[-1] <= _singular_threshold(sys.tol) * sv[0]:
-        r = sys.mech.rates
+    rows = np.concatenate([eqs.row_scale[:eqs.ncons],
+                           [1.0 if g.kinds[0] == "A" else 1.0 / eqs.size
+                            for g in eqs.rate_functions or []]])
+    sv = np.linalg.svd(A * rows[:, None] * eqs.col_scale[None, :], compute_uv=False)
+    if A.shape[0] != eqs.n or sv[-1] <= _singular_threshold(eqs.tol) * sv[0]:
+        r = eqs.mech.rates
         who = f"the given rate of link {r.link}" if r is not None else "the drive rates"
         raise ConstructionError(f"{who} cannot fix the velocities at this posture (the "
                                 "velocity equations are singular)", key="rates",
-                                file=sys.mech.source)
+                                file=eqs.mech.source)
     qd = np.linalg.solve(A, b)
-    qdd = np.linalg.solve(A, sys.acceleration_rhs(q, qd))
+    qdd = np.linalg.solve(A, eqs.acceleration_rhs(q, qd))
     return qd, qdd
 
 
@@ -808,13 +838,13 @@ def _rates(sys: _System, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 # ---------------------------------------------------------------------------
 
 
-def _solution(sys: _System, q: np.ndarray, qd: np.ndarray | None, qdd: np.ndarray | None,
+def _solution(eqs: _System, q: np.ndarray, qd: np.ndarray | None, qdd: np.ndarray | None,
               valid: np.ndarray, notes: list[str]) -> Solution:
     """A Solution from stacked coordinates of shape (n,) or (N, n)."""
     lead = q.shape[:-1]
     links: dict[str, LinkState] = {}
-    for lid in sys.mech.links:
-        k = sys.index[lid]
+    for lid in eqs.mech.links:
+        k = eqs.index[lid]
         if k == _F:
             zero = np.zeros(lead)
             zero2 = np.zeros((*lead, 2))
@@ -833,14 +863,14 @@ def _solution(sys: _System, q: np.ndarray, qd: np.ndarray | None, qdd: np.ndarra
             None if qdd is None else np.array(qdd[..., th]),
             None if qd is None else np.array(qd[..., sl]),
             None if qdd is None else np.array(qdd[..., sl]))
-    return Solution(mechanism=sys.mech, links=links, method="analytic", valid=valid,
+    return Solution(mechanism=eqs.mech, links=links, method="analytic", valid=valid,
                     notes=notes)
 
 
-def _guess_vector(sys: _System, guess: Guess | Solution, values: np.ndarray) -> np.ndarray:
+def _guess_vector(eqs: _System, guess: Guess | Solution, values: np.ndarray) -> np.ndarray:
     if isinstance(guess, Solution):
         g: dict[str, tuple[float, float, float]] = {}
-        for lid in sys.ids:
+        for lid in eqs.ids:
             s = guess.links[lid]
             ang = np.asarray(s.angle, dtype=float).reshape(-1)
             org = np.asarray(s.origin, dtype=float).reshape(-1, 2)
@@ -850,14 +880,14 @@ def _guess_vector(sys: _System, guess: Guess | Solution, values: np.ndarray) -> 
                 i = int(ok[-1]) if ok.size else 0
             g[lid] = (float(org[i, 0]), float(org[i, 1]), float(ang[i]))
         guess = g
-    return _Search(sys).heuristic(values, None, fixed=guess)
+    return _Search(eqs).heuristic(values, None, fixed=guess)
 
 
 def _drive_values(mech: Mechanism) -> np.ndarray:
     return np.array([d.value for d in mech.drives], dtype=float)
 
 
-def solve_analytic(mech: Mechanism, *, guess: Guess | None = None,
+def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
                    tol: Tolerance | None = None) -> Solution:
     """Solve a mechanism at its posture by Newton-Raphson on the loop-closure equations.
 
@@ -865,9 +895,10 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | None = None,
     ----------
     mech : Mechanism
         The mechanism, as read from a mechanism file.
-    guess : dict, optional
+    guess : dict or Solution, optional
         Link id -> ``(x, y, θ)``: the start of the iteration (origin of the
-        link's local frame and its angle, rad).  Newton's method then stays on
+        link's local frame and its angle, rad), or a solved posture of the
+        same mechanism.  Newton's method then stays on
         the branch of the guess.  Without a guess the solver starts from the
         assembly hints (``[assembly]``), the frame and the drives, plus
         deterministic pseudo-random restarts, and returns the converged posture
@@ -934,10 +965,10 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | None = None,
     (20.9187, 49.501)
     """
     tol = tol or DEFAULT_TOL
-    sys = _System(mech, tol)
+    eqs = _System(mech, tol)
     values = _drive_values(mech)
     if guess is not None:
-        q = _converge(sys, _guess_vector(sys, guess, values), values)
+        q = _converge(eqs, _guess_vector(eqs, guess, values), values)
         if q is None:
             raise AssemblyError(
                 "cannot assemble the mechanism at "
@@ -946,13 +977,13 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | None = None,
                 key="drive", file=mech.source)
         notes = ["analytic: Newton-Raphson from the given guess"]
     else:
-        q = _Search(sys).solve(values)
+        q = _Search(eqs).solve(values)
         notes = ["analytic: Newton-Raphson from the assembly hints, nearest posture chosen"]
-    _check_regular(sys, q, values)
+    _check_regular(eqs, q, values)
     qd = qdd = None
-    if sys.rate_functions is not None:
-        qd, qdd = _rates(sys, q)
-    return _solution(sys, q, qd, qdd, np.array(True), notes)
+    if eqs.rate_functions is not None:
+        qd, qdd = _rates(eqs, q)
+    return _solution(eqs, q, qd, qdd, np.array(True), notes)
 
 
 def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
@@ -996,7 +1027,7 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     Uicker, Pennock & Shigley, 5th ed., Secs. 2.9, 3.9, 3.11, 4.9.
     """
     tol = tol or DEFAULT_TOL
-    sys = _System(mech, tol)
+    eqs = _System(mech, tol)
     dv = np.asarray(drive_values, dtype=float)
     if dv.ndim == 1:
         dv = dv[:, None]
@@ -1004,37 +1035,40 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
         raise ValueError(f"drive_values must have shape (N, {len(mech.drives)}), "
                          f"not {np.shape(drive_values)}")
     N = dv.shape[0]
-    Q = np.full((N, sys.n), np.nan)
-    rated = sys.rate_functions is not None
-    QD = np.full((N, sys.n), np.nan) if rated else None
-    QDD = np.full((N, sys.n), np.nan) if rated else None
+    Q = np.full((N, eqs.n), np.nan)
+    rated = eqs.rate_functions is not None
+    QD = np.full((N, eqs.n), np.nan) if rated else None
+    QDD = np.full((N, eqs.n), np.nan) if rated else None
     valid = np.zeros(N, dtype=bool)
     prev: np.ndarray | None = None
     prev_values: np.ndarray | None = None
     prev_index = -2
     if start is not None:
-        prev = _guess_vector(sys, start, dv[0] if N else sys.values)
+        prev = _guess_vector(eqs, start, dv[0] if N else eqs.values)
+    search = _Search(eqs)
     for i in range(N):
         values = dv[i]
         if prev is None:
+            # the first posture gets the full search; while none assembles, fewer restarts
             try:
-                q0 = _Search(sys).solve(values)
+                q0 = search.solve(values, _RESTARTS if i == 0 else _SWEEP_RESTARTS,
+                                  explain=False)
             except AssemblyError:
                 continue
         else:
             q0 = prev
             if prev_values is not None and prev_index == i - 1:  # a step, not a gap
-                q0 = prev + _sensitivity(sys, prev, prev_values) @ _delta(sys, values,
+                q0 = prev + _sensitivity(eqs, prev, prev_values) @ _delta(eqs, values,
                                                                           prev_values)
-        q = _converge(sys, q0, values)
+        q = _converge(eqs, q0, values, _SWEEP_ITER)
         if q is None and prev is not None and q0 is not prev:
-            q = _converge(sys, prev, values)
+            q = _converge(eqs, prev, values, _SWEEP_ITER)
         if q is None:
             continue
         try:
-            _check_regular(sys, q, values)
+            _check_regular(eqs, q, values)
             if rated:
-                qd, qdd = _rates(sys, q)
+                qd, qdd = _rates(eqs, q)
                 assert QD is not None and QDD is not None
                 QD[i], QDD[i] = qd, qdd
         except ConstructionError:
@@ -1043,24 +1077,24 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
         valid[i] = True
         prev, prev_values, prev_index = q, values, i
     notes = ["analytic: Newton-Raphson, each posture from the one before"]
-    return _solution(sys, Q, QD, QDD, valid, notes)
+    return _solution(eqs, Q, QD, QDD, valid, notes)
 
 
-def _delta(sys: _System, values: np.ndarray, before: np.ndarray) -> np.ndarray:
+def _delta(eqs: _System, values: np.ndarray, before: np.ndarray) -> np.ndarray:
     d = values - before
-    for i, drv in enumerate(sys.mech.drives):
+    for i, drv in enumerate(eqs.mech.drives):
         if drv.kind == "angle":
             d[i] = _wrap(float(d[i]))
     return d
 
 
-def _sensitivity(sys: _System, q: np.ndarray, values: np.ndarray) -> np.ndarray:
+def _sensitivity(eqs: _System, q: np.ndarray, values: np.ndarray) -> np.ndarray:
     """``dq/dd``: the first-order kinematic coefficients (Sec. 3.11), shape (n, n_drives)."""
-    _, J = sys.residual(q, values)
+    _, J = eqs.residual(q, values)
     assert J is not None
-    rhs = np.zeros((sys.m, len(sys.drives)))
-    rhs[sys.ncons:, :] = np.eye(len(sys.drives))
+    rhs = np.zeros((eqs.m, len(eqs.drives)))
+    rhs[eqs.ncons:, :] = np.eye(len(eqs.drives))
     try:
         return np.linalg.solve(J, rhs)
     except np.linalg.LinAlgError:
-        return np.zeros((sys.n, len(sys.drives)))
+        return np.zeros((eqs.n, len(eqs.drives)))

@@ -1,0 +1,460 @@
+"""Tests of the analytic solver itself (the oracle of every graphic construction).
+
+Everything here is checked against something derived independently of the
+solver: the posture a random mechanism was generated from
+(``tests/strategies.py``), finite differences of the solver's own postures
+along a time path, the closed-form four-bar of Sec. 2.9, and the exact
+results of the spec examples (``spec/examples/expected.toml``).
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import replace
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from spec_data import EXAMPLES  # the shared spec examples (pythonpath = tests)
+from strategies import RandomMechanism, fourbars, mechanisms
+
+from graphkin.errors import AssemblyError, ConstructionError
+from graphkin.kinematics.analytic import solve_analytic, solve_analytic_many
+from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms import Mechanism, from_dict, load, loads
+
+HYP = settings(max_examples=50, deadline=None,
+               suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+
+# Newton's method converges quadratically: the posture is exact to rounding.
+POSTURE_REL = 1e-9
+# Central differences with a step of 3e-5 of the fastest motion: truncation
+# error ~1e-9 relative, rounding ~1e-11; 1e-5 leaves room for fast links.
+RATES_REL = 1e-5
+
+
+def _wrap(a: float) -> float:
+    return math.remainder(a, 2.0 * math.pi)
+
+
+def _pose(sol: Solution, lid: str) -> tuple[float, float, float]:
+    s = sol.links[lid]
+    return (float(s.origin[0]), float(s.origin[1]), float(s.angle))
+
+
+def _guess(sol: Solution) -> dict[str, tuple[float, float, float]]:
+    return {lid: _pose(sol, lid) for lid in sol.links if lid != "1"}
+
+
+# ---------------------------------------------------------------------------
+# (a) the generating posture
+# ---------------------------------------------------------------------------
+
+
+@HYP
+@given(mechanisms())
+def test_reproduces_generating_posture(rm: RandomMechanism) -> None:
+    mech = rm.mechanism()
+    sol = solve_analytic(mech)
+    size = rm.scale()
+    assert sol.method == "analytic"
+    assert set(sol.links) == set(mech.links)
+    for lid, (x, y, th) in rm.truth.items():
+        got = _pose(sol, lid)
+        assert abs(got[0] - x) <= POSTURE_REL * size, (lid, got, (x, y, th))
+        assert abs(got[1] - y) <= POSTURE_REL * size, (lid, got, (x, y, th))
+        assert abs(_wrap(got[2] - th)) <= POSTURE_REL, (lid, got, (x, y, th))
+        assert -math.pi < got[2] <= math.pi
+    for name, p in rm.world_points().items():
+        np.testing.assert_allclose(sol.position(name), p, rtol=0, atol=POSTURE_REL * size)
+    frame = sol.links["1"]
+    assert float(frame.angle) == 0.0 and not np.any(frame.origin)
+    # the strategies solve the velocity equations dyad by dyad (Sec. 3.9), independently
+    if rm.omega:
+        w_scale = max(abs(w) for w in rm.omega.values())
+        for lid, w in rm.omega.items():
+            assert abs(float(sol.omega(lid)) - w) <= POSTURE_REL * w_scale, (lid, w)
+        assert float(frame.omega) == 0.0 and float(frame.alpha) == 0.0
+
+
+@HYP
+@given(mechanisms(with_rates=False), st.data())
+def test_rough_hints_give_the_nearest_posture(rm: RandomMechanism, data: st.DataObject) -> None:
+    # Move the hints by up to 10 % of the size: whatever posture the solver
+    # returns must satisfy the constraints (checked through the strategies'
+    # truth being one candidate) and be at least as near the hints as the truth.
+    size = rm.scale()
+    hints = {n: [p[0] + data.draw(st.floats(-0.1, 0.1)) * size,
+                 p[1] + data.draw(st.floats(-0.1, 0.1)) * size]
+             for n, p in rm.data["assembly"].items()}
+    mech = from_dict({**rm.data, "assembly": hints})
+    sol = solve_analytic(mech)
+    truth = rm.world_points()
+
+    def dist2(pos: dict[str, tuple[float, float]]) -> float:
+        return sum((pos[n][0] - h[0]) ** 2 + (pos[n][1] - h[1]) ** 2 for n, h in hints.items())
+
+    got = {n: tuple(sol.position(n)) for n in hints}
+    assert dist2(got) <= dist2(truth) + 1e-9 * size**2
+    assert not sol.has_rates and sol.links["2"].omega is None
+
+
+# ---------------------------------------------------------------------------
+# (b) velocities and accelerations against finite differences
+# ---------------------------------------------------------------------------
+
+
+def _on_path(mech: Mechanism, t: float) -> Mechanism:
+    """The mechanism at time ``t`` on the path d(t) = d + ḋ t + ½ d̈ t² of every drive."""
+    drives = []
+    for d in mech.drives:
+        assert d.rate is not None
+        a = d.rate2 or 0.0
+        drives.append(replace(d, value=d.value + d.rate * t + 0.5 * a * t * t,
+                              rate=d.rate + a * t, rate2=a))
+    return replace(mech, drives=tuple(drives))
+
+
+def _drive_rates_instead(mech: Mechanism, sol: Solution) -> Mechanism:
+    """Move the known rates of ``[rates]`` onto the (single, revolute) drive."""
+    (d,) = mech.drives
+    assert d.kind == "angle"
+    return replace(mech, rates=None, drives=(replace(d, rate=float(sol.omega(d.link)),
+                                                     rate2=float(sol.alpha(d.link))),))
+
+
+@HYP
+@given(mechanisms())
+def test_rates_are_derivatives_of_the_posture(rm: RandomMechanism) -> None:
+    mech = rm.mechanism()
+    sol = solve_analytic(mech)
+    if mech.rates is not None:
+        mech = _drive_rates_instead(mech, sol)
+        sol = solve_analytic(mech, guess=_guess(sol))
+    size = rm.scale()
+    speed = max([abs(d.rate) / (size if d.kind == "position" else 1.0) for d in mech.drives]
+                + [math.sqrt(abs(d.rate2 or 0.0) / (size if d.kind == "position" else 1.0))
+                   for d in mech.drives])
+    moving = [lid for lid in mech.links if lid != "1"]
+    # a time step of 3e-5 of the fastest motion (the drive's or any link's)
+    fastest = max([speed] + [abs(float(sol.omega(k))) for k in moving]
+                  + [float(np.hypot(*sol.links[k].origin_velocity)) / size for k in moving])
+    h = 3e-5 / fastest
+    guess = _guess(sol)
+    plus = solve_analytic(_on_path(mech, h), guess=guess)
+    minus = solve_analytic(_on_path(mech, -h), guess=guess)
+    # characteristic speed and acceleration: the drives', or the fastest link's
+    v_scale = max([speed * size] + [max(float(np.hypot(*sol.links[k].origin_velocity)),
+                                        abs(float(sol.omega(k))) * size) for k in moving])
+    a_scale = max([speed**2 * size]
+                  + [max(float(np.hypot(*sol.links[k].origin_acceleration)),
+                         abs(float(sol.alpha(k))) * size, float(sol.omega(k)) ** 2 * size)
+                     for k in moving])
+    for k in moving:
+        s, p, m = sol.links[k], plus.links[k], minus.links[k]
+        v_fd = (p.origin - m.origin) / (2 * h)
+        w_fd = _wrap(float(p.angle) - float(m.angle)) / (2 * h)
+        np.testing.assert_allclose(s.origin_velocity, v_fd, rtol=0, atol=RATES_REL * v_scale)
+        assert abs(float(s.omega) - w_fd) * size <= RATES_REL * v_scale
+        a_fd = (p.origin_velocity - m.origin_velocity) / (2 * h)
+        al_fd = (float(p.omega) - float(m.omega)) / (2 * h)
+        np.testing.assert_allclose(s.origin_acceleration, a_fd, rtol=0, atol=RATES_REL * a_scale)
+        assert abs(float(s.alpha) - al_fd) * size <= RATES_REL * a_scale
+
+
+@HYP
+@given(fourbars(other_rates=True))
+def test_rates_of_another_link(rm: RandomMechanism) -> None:
+    # [rates] gives ω, α of the coupler or rocker; moving them onto the drive
+    # (as the drive's solved ω, α) must give back the same motion.
+    mech = rm.mechanism()
+    sol = solve_analytic(mech)
+    if mech.rates is None:
+        return
+    r = mech.rates
+    assert float(sol.omega(r.link)) == pytest.approx(r.rate, rel=1e-12)
+    assert float(sol.alpha(r.link)) == pytest.approx(r.rate2 or 0.0, rel=1e-9,
+                                                      abs=1e-9 * abs(r.rate) ** 2)
+    again = solve_analytic(_drive_rates_instead(mech, sol), guess=_guess(sol))
+    for k in mech.links:
+        assert float(again.omega(k)) == pytest.approx(float(sol.omega(k)), rel=1e-9, abs=1e-12)
+        assert float(again.alpha(k)) == pytest.approx(float(sol.alpha(k)), rel=1e-9,
+                                                      abs=1e-9 * abs(r.rate) ** 2)
+
+
+def test_missing_alpha_means_zero() -> None:
+    text = (EXAMPLES / "ex3_1_fourbar.toml").read_text()
+    with_alpha = solve_analytic(loads(text))
+    without = solve_analytic(loads(text.replace("alpha = 0\n", "")))
+    for k in ("2", "3", "4"):
+        assert float(without.alpha(k)) == float(with_alpha.alpha(k))
+
+
+def test_posture_only_file_has_no_rates() -> None:
+    sol = solve_analytic(load(EXAMPLES / "ex2_5_open.toml"))
+    assert not sol.has_rates and not sol.has_accelerations
+    assert all(s.omega is None and s.alpha is None for s in sol.links.values())
+    with pytest.raises(ValueError):
+        sol.velocity("B")
+
+
+# ---------------------------------------------------------------------------
+# (c) the spec examples
+# ---------------------------------------------------------------------------
+
+
+def _expected() -> list[tuple[str, str, object, float]]:
+    if not (EXAMPLES / "expected.toml").exists():
+        return []
+    with open(EXAMPLES / "expected.toml", "rb") as fh:
+        table = tomllib.load(fh)
+    out = []
+    for fname, checks in table.items():
+        for key, (want, tol) in checks.items():
+            if key.startswith("curvature.") and key.split(".")[2] in ("cubic", "ball_point"):
+                continue  # the cubic of stationary curvature is not the oracle's business
+            out.append((fname, key, want, tol))
+    return out
+
+
+def _pole(sol: Solution, i: str, j: str) -> np.ndarray:
+    """Instant center I_ij: the point whose velocity is the same in links i and j (Sec. 3.12).
+
+    v_k(P) = V_k + ω_k k×(P - o_k) = W_k + ω_k k×P with W_k = V_k - ω_k k×o_k,
+    so (ω_i - ω_j) k×P = W_j - W_i, and P = -k×(W_j - W_i)/(ω_i - ω_j).
+    """
+    def w(k: str) -> tuple[float, np.ndarray]:
+        s = sol.links[k]
+        om = float(s.omega)
+        o = np.asarray(s.origin, dtype=float)
+        return om, np.asarray(s.origin_velocity) - om * np.array([-o[1], o[0]])
+
+    wi, Wi = w(i)
+    wj, Wj = w(j)
+    d = (Wj - Wi) / (wi - wj)
+    return -np.array([-d[1], d[0]])
+
+
+def _point_on(sol: Solution, link: str, world: np.ndarray) -> np.ndarray:
+    """Local coordinates in ``link`` of a world point."""
+    s = sol.links[link]
+    c, sn = math.cos(float(s.angle)), math.sin(float(s.angle))
+    d = np.asarray(world) - np.asarray(s.origin)
+    return np.array([c * d[0] + sn * d[1], -sn * d[0] + c * d[1]])
+
+
+def _value(sol: Solution, key: str) -> object:
+    mag = key.endswith("|")
+    parts = key.rstrip("|").split(".")
+    group = parts[0]
+    if group == "links":
+        _, k, what = parts
+        if what == "angle":
+            return math.degrees(float(sol.angle(k)))
+        val = float(sol.omega(k) if what == "omega" else sol.alpha(k))
+    elif group == "points":
+        _, name, what = parts
+        vec = {"position": sol.position, "velocity": sol.velocity,
+               "acceleration": sol.acceleration}[what](name)
+        val = vec
+    elif group == "instant_centers":
+        i, j = parts[1].split("-")
+        val = _pole(sol, i, j)
+    elif group == "paths":
+        # ρ = |v|³ / |v × a|; the center is P + k×v |v|² / (v × a) (curvature of a plane path)
+        name, what = parts[1], parts[2]
+        p, v, a = sol.position(name), sol.velocity(name), sol.acceleration(name)
+        cross = float(v[0] * a[1] - v[1] * a[0])
+        speed2 = float(v @ v)
+        val = (speed2 ** 1.5 / abs(cross) if what == "radius_of_curvature"
+               else p + np.array([-v[1], v[0]]) * speed2 / cross)
+    else:  # curvature of link k relative to the frame
+        k, what = parts[1], parts[2]
+        pole = _pole(sol, "1", k)
+        om, al = float(sol.omega(k)), float(sol.alpha(k))
+        # acceleration of the body point at the pole: A_I = ω² (J - I) (Sec. 4.12), so
+        # the inflection pole J = I + A_I/ω², the inflection diameter |A_I|/ω², and the
+        # Bresse circle (zero tangential acceleration) has diameter |A_I|/|α|
+        a_pole = sol.links[k].acceleration(_point_on(sol, k, pole))
+        if what == "velocity_pole":
+            val = pole
+        elif what == "inflection_pole":
+            val = pole + a_pole / om**2
+        elif what == "inflection_diameter":
+            val = float(np.hypot(*a_pole)) / om**2
+        elif what == "bresse_diameter":
+            val = float(np.hypot(*a_pole)) / abs(al)
+        elif what == "acceleration_center":
+            # Γ: A_O + α k×r - ω² r = 0 with r = Γ - O, a 2x2 linear system
+            s = sol.links[k]
+            m = np.array([[-om**2, -al], [al, -om**2]])
+            val = np.asarray(s.origin) + np.linalg.solve(m, -np.asarray(s.origin_acceleration))
+        else:
+            raise AssertionError(key)
+    if mag:
+        return float(np.hypot(*val))  # type: ignore[misc]
+    return val
+
+
+_SOLVED: dict[str, Solution] = {}
+
+
+@pytest.mark.parametrize(("fname", "key", "want", "tol"), _expected(),
+                         ids=[f"{f}:{k}" for f, k, _, _ in _expected()])
+def test_spec_example(fname: str, key: str, want: object, tol: float) -> None:
+    if fname not in _SOLVED:
+        _SOLVED[fname] = solve_analytic(load(EXAMPLES / fname))
+    got = _value(_SOLVED[fname], key)
+    if isinstance(want, list):
+        np.testing.assert_allclose(np.asarray(got, dtype=float), want, rtol=0, atol=tol)
+    elif key.endswith("angle"):
+        assert abs((float(got) - want + 180.0) % 360.0 - 180.0) <= tol  # type: ignore[arg-type]
+    else:
+        assert abs(float(got) - want) <= tol  # type: ignore[arg-type]
+
+
+def test_example_2_5_both_branches() -> None:
+    # Example 2.5 by the book's closed form: θ3 = θ_S ± ψ, θ4 = θ_S ± (180° - λ)
+    # with the cosine law in triangle A B O4 (both postures from one file via guess)
+    open_ = solve_analytic(load(EXAMPLES / "ex2_5_open.toml"))
+    crossed = solve_analytic(load(EXAMPLES / "ex2_5_crossed.toml"))
+    o4 = np.array([386.370330516, 103.527618041])  # as in the file: 400 mm at 15°, to 1e-9
+    a = np.array([200 * math.cos(math.radians(30)), 200 * math.sin(math.radians(30))])
+    s_vec = o4 - a
+    s = float(np.hypot(*s_vec))
+    th_s = math.atan2(s_vec[1], s_vec[0])
+    psi = math.acos((350**2 + s**2 - 300**2) / (2 * 350 * s))
+    lam = math.acos((300**2 + s**2 - 350**2) / (2 * 300 * s))
+    assert float(open_.angle("3")) == pytest.approx(th_s + psi, abs=1e-12)
+    assert float(crossed.angle("3")) == pytest.approx(th_s - psi, abs=1e-12)
+    assert float(open_.angle("4")) == pytest.approx(th_s + math.pi - lam, abs=1e-12)
+    assert _wrap(float(crossed.angle("4")) - (th_s - math.pi + lam)) == pytest.approx(0, abs=1e-12)
+    # Newton from the crossed posture stays on the crossed branch
+    again = solve_analytic(load(EXAMPLES / "ex2_5_open.toml"), guess=_guess(crossed))
+    assert float(again.angle("3")) == pytest.approx(th_s - psi, abs=1e-12)
+
+
+# ---------------------------------------------------------------------------
+# (d) mechanisms that cannot be assembled, and singular postures
+# ---------------------------------------------------------------------------
+
+FOURBAR = """
+[links.1]
+O2 = [0, 0]
+O4 = [10, 0]
+[links.2]
+O2 = [0, 0]
+A = [{crank}, 0]
+[links.3]
+A = [0, 0]
+B = [{coupler}, 0]
+[links.4]
+O4 = [0, 0]
+B = [{rocker}, 0]
+[drive]
+link = 2
+angle = {angle}
+omega = 1
+"""
+
+
+def test_unassemblable_fourbar_raises_assembly_error() -> None:
+    # at 0° |A O4| = 6 > 2 + 3 = |AB| + |BO4|: the loop cannot close
+    mech = loads(FOURBAR.format(crank=4, coupler=2, rocker=3, angle=0), source="short.toml")
+    with pytest.raises(AssemblyError, match="cannot assemble") as info:
+        solve_analytic(mech)
+    assert info.value.file == "short.toml"
+    assert "pin" in str(info.value)
+
+
+def test_unassemblable_slider_raises_assembly_error() -> None:
+    # Example 3.2 with the slider 300 mm out: the 50 + 140 mm crank and rod cannot reach
+    text = (EXAMPLES / "ex3_2_slider_driven.toml").read_text().replace("position = 164",
+                                                                         "position = 300")
+    with pytest.raises(AssemblyError):
+        solve_analytic(loads(text))
+
+
+def test_toggle_posture_is_singular() -> None:
+    # crank 4 at 0° puts A at (4, 0), |A O4| = 6 = 3 + 3: B = (7, 0) is a double root
+    mech = loads(FOURBAR.format(crank=4, coupler=3, rocker=3, angle=0))
+    with pytest.raises(ConstructionError, match="singular"):
+        solve_analytic(mech)
+
+
+def test_guess_that_does_not_converge_raises() -> None:
+    mech = loads(FOURBAR.format(crank=4, coupler=2, rocker=3, angle=0))
+    with pytest.raises(AssemblyError):
+        solve_analytic(mech, guess={"2": (0, 0, 0), "3": (4, 0, 0), "4": (10, 0, 2)})
+
+
+# ---------------------------------------------------------------------------
+# many postures
+# ---------------------------------------------------------------------------
+
+
+def _closed_form_b(crank: float, coupler: float, rocker: float, th2: np.ndarray,
+                   sign: float) -> np.ndarray:
+    """B of the four-bar O2=(0,0), O4=(10,0) by the cosine law (Sec. 2.9), on side ``sign``.
+
+    B is where the circles (A, coupler) and (O4, rocker) meet: along A→O4 at
+    distance x = (s² + c² - r²)/(2s), then ±h = ±√(c² - x²) to the left.
+    """
+    a = np.stack([crank * np.cos(th2), crank * np.sin(th2)], axis=-1)
+    sv = np.array([10.0, 0.0]) - a
+    s = np.hypot(sv[:, 0], sv[:, 1])
+    u = sv / s[:, None]
+    x = (s**2 + coupler**2 - rocker**2) / (2 * s)
+    h = np.sqrt(np.maximum(coupler**2 - x**2, 0.0))
+    return a + x[:, None] * u + sign * h[:, None] * np.stack([-u[:, 1], u[:, 0]], axis=-1)
+
+
+def test_many_follows_a_crank_rocker_round() -> None:
+    # Grashof crank-rocker: 3 + 10 <= 10 + 8, so the crank turns fully on one branch
+    mech = loads(FOURBAR.format(crank=3, coupler=10, rocker=8, angle=0)
+                 + "alpha = 2\n[assembly]\nB = [8, 8]\n")
+    th = np.radians(np.arange(0.0, 360.0, 5.0))
+    sw = solve_analytic_many(mech, th)
+    assert sw.valid.shape == (72,) and sw.valid.all()
+    np.testing.assert_allclose(sw.position("B"), _closed_form_b(3, 10, 8, th, 1.0), atol=1e-9)
+    np.testing.assert_allclose(sw.omega("2"), 1.0)
+    # every posture equals the single-posture solver there
+    for i in (0, 17, 40):
+        one = solve_analytic(replace(mech, drives=(replace(mech.drives[0], value=th[i]),)),
+                             guess={k: (float(sw.links[k].origin[i, 0]),
+                                        float(sw.links[k].origin[i, 1]),
+                                        float(sw.links[k].angle[i])) for k in ("2", "3", "4")})
+        np.testing.assert_allclose(sw.acceleration("B")[i], one.acceleration("B"), atol=1e-9)
+    # started on the other branch it stays there
+    crossed = solve_analytic(replace(mech, assembly={"B": (8.0, -8.0)}))
+    sw2 = solve_analytic_many(mech, th, start=crossed)
+    np.testing.assert_allclose(sw2.position("B"), _closed_form_b(3, 10, 8, th, -1.0), atol=1e-9)
+
+
+def test_many_marks_postures_that_cannot_assemble() -> None:
+    # Example 3.1's linkage is not Grashof (4 + 18 > 10 + 11): the loop A-B-C-D
+    # closes only for |A D| >= 18 - 11 = 7, i.e. |A D|² = 116 - 80 cos θ2 >= 49:
+    # the crank cannot pass cos θ2 > 67/80
+    mech = load(EXAMPLES / "ex3_1_fourbar.toml")
+    th = np.radians(np.arange(60.0, 420.0, 2.5))
+    sw = solve_analytic_many(mech, th)
+    ad = np.hypot(10 - 4 * np.cos(th), 4 * np.sin(th))
+    reachable = ad > 7.0 + 1e-6
+    assert not sw.valid[~reachable].any()
+    assert sw.valid[ad > 7.05].all()
+    assert np.isnan(sw.links["3"].angle[~sw.valid]).all()
+    assert np.isnan(sw.links["4"].omega[~sw.valid]).all()
+    assert sw.valid.dtype == bool and sw.links["3"].angle.shape == th.shape
+
+
+def test_many_with_a_slider_drive_matches_single_solves() -> None:
+    mech = load(EXAMPLES / "ex3_2_slider_driven.toml")
+    xs = np.linspace(150.0, 175.0, 6)
+    sw = solve_analytic_many(mech, xs[:, None])
+    assert sw.valid.all()
+    for i, x in enumerate(xs):
+        one = solve_analytic(replace(mech, drives=(replace(mech.drives[0], value=x),)))
+        np.testing.assert_allclose(sw.velocity("D")[i], one.velocity("D"), rtol=1e-9)
+        np.testing.assert_allclose(sw.acceleration("D")[i], one.acceleration("D"), rtol=1e-9)
