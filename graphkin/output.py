@@ -34,14 +34,22 @@ def wrap_degrees(rad: float) -> float:
 
 
 def finite(x: Any) -> Any:
-    """A JSON-safe copy: numpy to Python floats, non-finite numbers to None, -0.0 to 0.0."""
+    """A JSON-safe copy: numpy to Python numbers, non-finite floats to None, -0.0 to 0.0.
+
+    Examples
+    --------
+    >>> finite({"a": np.float64("nan"), "b": [np.int64(2), -0.0]})
+    {'a': None, 'b': [2, 0.0]}
+    """
     if isinstance(x, dict):
         return {k: finite(v) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
         return [finite(v) for v in x]
     if isinstance(x, np.ndarray):
         return finite(x.tolist())
-    if isinstance(x, (float, np.floating, int, np.integer)) and not isinstance(x, bool):
+    if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):
+        return int(x)
+    if isinstance(x, (float, np.floating)):
         f = float(x)
         if not math.isfinite(f):
             return None
