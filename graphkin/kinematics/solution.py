@@ -142,6 +142,18 @@ class Solution:
         lid = link or self.owner(name)
         return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
 
+    def _repr_svg_(self) -> str | None:
+        """Jupyter: the solved mechanism drawn inline (matplotlib is imported only here)."""
+        from graphkin.render import repr_svg
+
+        return repr_svg(self)
+
+    def draw(self, diagram: str = "posture", ax: Any = None, **kw: Any) -> Any:
+        """Draw a diagram of this solution; see :func:`graphkin.render.draw`."""
+        from graphkin.render import draw
+
+        return draw(self, diagram, ax=ax, **kw)
+
     def angle(self, link: str) -> np.ndarray:
         """θ of ``link`` (rad)."""
         return self.links[link].angle

@@ -233,6 +233,12 @@ class Mechanism:
 
         return solve(self, tol)  # type: ignore[arg-type]
 
+    def draw(self, diagram: str = "posture", ax: object = None, **kw: object) -> object:
+        """Solve and draw a diagram (into ``ax`` if given); see :func:`graphkin.render.draw`."""
+        from graphkin.render import draw
+
+        return draw(self, diagram, ax=ax, **kw)  # type: ignore[arg-type]
+
     def sweep(self, count: int = 360, start: float | None = None, stop: float | None = None,
               **kw: object) -> object:
         """Solve over many drive values at once; see :func:`graphkin.kinematics.sweep.sweep`."""

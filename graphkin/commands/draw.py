@@ -1,0 +1,76 @@
+"""``graphkin draw FILE --diagram D -o OUT``: draw a construction to scale (SVG, PDF or PNG)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+__all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
+
+DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "all")
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = sub.add_parser(
+        "draw", help="draw a diagram to scale (SVG, PDF or PNG)",
+        description="Draw the mechanism and its construction to a stated scale: the posture, "
+                    "the velocity or acceleration polygon beside the mechanism, the instant "
+                    "centers, the curvature construction, or all of them on one sheet, with "
+                    "a results table comparing the drawing with the analytic solution. The "
+                    "output's suffix chooses the format (.svg, .pdf, .png).")
+    p.add_argument("file", help="mechanism file (TOML)")
+    p.add_argument("--diagram", "-d", default="all", choices=DIAGRAM_CHOICES,
+                   help="which diagram (default: all)")
+    p.add_argument("-o", "--output", required=True,
+                   help="output file: .svg, .pdf, .png, or .dxf (a CAD drawing of the posture, "
+                        "velocity or acceleration construction, e.g. a started drawing to hand "
+                        "out with --upto)")
+    p.add_argument("--upto", type=int, default=None, metavar="K",
+                   help="draw the construction only up to step K (0-based)")
+    p.add_argument("--link", default=None, metavar="K",
+                   help="curvature: the link whose motion is drawn (default: the coupler)")
+    p.add_argument("--no-table", action="store_true", help="leave out the results table")
+    p.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (default 150)")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    from pathlib import Path
+
+    import graphkin
+    from graphkin.errors import InputError
+    from graphkin.render import DiagramUnavailable, draw, save
+    from graphkin.render.svg import FORMATS
+
+    out = Path(args.output)
+    dxf = out.suffix.lower() == ".dxf"
+    if out.suffix.lower().lstrip(".") not in FORMATS and not dxf:
+        raise InputError(f"cannot tell the format from {out.name!r}; use "
+                         + ", ".join("." + f for f in (*FORMATS, "dxf")), key="--output")
+    mech = graphkin.load(args.file)
+    sol = mech.solve()
+    if dxf:
+        from graphkin.io.dxf import write_dxf
+
+        if args.diagram not in ("posture", "velocity", "acceleration"):
+            raise InputError("DXF holds one construction: --diagram posture, velocity or "
+                             "acceleration", key="--diagram", file=args.file)
+        if args.diagram not in sol.constructions:
+            raise InputError(f"no {args.diagram} construction: the file gives no rates",
+                             key="--diagram", file=args.file)
+        write_dxf(sol, args.diagram, out, upto=args.upto)
+        print(f"wrote {out}", file=sys.stderr)
+        return 0
+    try:
+        d = draw(sol, args.diagram, upto=args.upto, table=not args.no_table, link=args.link)
+    except DiagramUnavailable as exc:
+        raise InputError(str(exc), key="--diagram", file=args.file) from None
+    assert d.figure is not None
+    try:
+        save(d.figure, out, dpi=args.dpi)
+    except OSError as exc:
+        raise InputError(f"cannot write {out}: {exc.strerror or exc}", key="--output") from None
+    print(f"wrote {out}", file=sys.stderr)
+    return 0

@@ -1,0 +1,63 @@
+"""``graphkin steps FILE --diagram D -o OUT.html``: the construction step by step, as a web page."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = sub.add_parser(
+        "steps", help="write a self-contained HTML page walking through a construction",
+        description="Write one HTML file (no network needed) that walks through the "
+                    "construction of a diagram: for each step the vector equation with its "
+                    "✓/? marks, one sentence, and the drawing up to that step with the new "
+                    "elements highlighted; previous/next buttons and arrow keys.")
+    p.add_argument("file", help="mechanism file (TOML)")
+    p.add_argument("--diagram", "-d", default="posture",
+                   choices=("posture", "velocity", "acceleration", "centers", "curvature"),
+                   help="which construction (default: posture)")
+    p.add_argument("-o", "--output", default=None, help="the HTML file to write")
+    p.add_argument("--frames", default=None, metavar="DIR",
+                   help="also write one numbered SVG per step into DIR")
+    p.add_argument("--link", default=None, metavar="K",
+                   help="curvature: the link whose motion is drawn (default: the coupler)")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    from pathlib import Path
+
+    import graphkin
+    from graphkin.errors import InputError
+    from graphkin.render import DiagramUnavailable
+    from graphkin.render.teach import steps_html, write_frames
+
+    if args.output is None and args.frames is None:
+        raise InputError("nothing to write: give -o OUT.html and/or --frames DIR",
+                         key="--output")
+    sol = graphkin.load(args.file).solve()
+    try:
+        if args.output is not None:
+            out = Path(args.output)
+            text = steps_html(sol, args.diagram, link=args.link)
+            try:
+                out.write_text(text, encoding="utf-8")
+            except OSError as exc:
+                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
+                                 key="--output") from None
+            print(f"wrote {out}", file=sys.stderr)
+        if args.frames is not None:
+            try:
+                paths = write_frames(sol, args.diagram, args.frames, link=args.link)
+            except OSError as exc:
+                raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
+                                 key="--frames") from None
+            print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
+    except DiagramUnavailable as exc:
+        raise InputError(str(exc), key="--diagram", file=args.file) from None
+    return 0

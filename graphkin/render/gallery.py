@@ -1,0 +1,394 @@
+"""The gallery: textbook figures as mechanism files, their committed drawings and an index.
+
+Every mechanism file under ``gallery/mechanisms/`` (and the instant-center
+and curvature files under ``gallery/centers/`` and ``gallery/curvature/``) is
+solved and drawn; the drawings go to ``gallery/drawings/`` and the index,
+``gallery/README.md``, lists each drawing with the figure it reproduces and
+the book's printed numbers beside graphkin's.  A file's optional
+``[gallery]`` table says which figure it is and what the book prints::
+
+    [gallery]
+    figure = "Fig. 3.7"
+    examples = "Examples 3.1, 3.7"
+    section = "3.4"
+    diagrams = ["velocity"]
+    [[gallery.book]]
+    quantity = "ω3"
+    path = "links.3.omega"       # a path of `graphkin solve --json` ("|" = magnitude)
+    value = 25.6
+    unit = "rad/s"
+    source = "graphic, Fig. 3.7b"
+    why = "..."                  # when the book differs beyond its accuracy
+
+The drawings are byte-for-byte reproducible with the matplotlib recorded in
+``gallery/drawings/MANIFEST.json``; with another version ``--check`` compares
+them structurally (the ids of every group and the text of every label).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Chapters 2-5.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import re
+import tomllib
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+__all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
+
+FOLDERS = {"mechanisms": None, "centers": "centers", "curvature": "curvature"}
+"""Gallery folders of mechanism files, and the diagram drawn by default for each
+(None: ``velocity`` and ``acceleration`` when the file gives rates, else ``posture``)."""
+
+_NUM = re.compile(r"-?\d+\.\d{3,}")
+_D = re.compile(r'(\sd=")([^"]*)(")')
+_POINTS = re.compile(r'(\s(?:x|y|points)=")([^"]*)(")')
+
+
+@dataclass
+class Entry:
+    """One mechanism of the gallery."""
+
+    path: Path
+    folder: str
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def stem(self) -> str:
+        """The drawing's base name: the file's stem, prefixed by its folder outside mechanisms/."""
+        return self.path.stem if self.folder == "mechanisms" else f"{self.folder}-{self.path.stem}"
+
+    def diagrams(self, has_rates: bool) -> list[str]:
+        """The diagrams to draw."""
+        if "diagrams" in self.meta:
+            return [str(d) for d in self.meta["diagrams"]]
+        default = FOLDERS.get(self.folder)
+        if default is not None:
+            return [default]
+        return ["velocity", "acceleration"] if has_rates else ["posture"]
+
+
+def discover(root: str | Path) -> list[Entry]:
+    """Every mechanism file of the gallery, in folder then name order."""
+    root = Path(root)
+    out = []
+    for folder in FOLDERS:
+        for p in sorted((root / folder).glob("*.toml"), key=_natural):
+            with open(p, "rb") as fh:
+                data = tomllib.load(fh)
+            if "links" not in data:
+                continue
+            out.append(Entry(p, folder, dict(data.get("gallery", {}))))
+    return out
+
+
+def _natural(p: Path) -> list[Any]:
+    """Sort key: fig3_7 before fig3_10."""
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", p.stem)]
+
+
+def _from_title(title: str) -> dict[str, str]:
+    """Figure and examples named in a title, for files without a [gallery] table."""
+    out = {}
+    m = re.search(r"Examples? [0-9][0-9.,\s\-and]*[0-9]", title)
+    if m:
+        out["examples"] = m.group(0)
+    m = re.search(r"Figs?\. [0-9][0-9.,\s\-]*[0-9]", title)
+    if m:
+        out["figure"] = m.group(0)
+    return out
+
+
+def compact_svg(data: bytes) -> bytes:
+    """Round the coordinates of paths to 1/100 pt: smaller files, the same drawing.
+
+    Only path data and coordinates are touched, never the text.
+
+    Examples
+    --------
+    >>> compact_svg(b'<path d="M 1.234567 2.5 L 3.000001 4"/>')
+    b'<path d="M 1.23 2.5 L 3 4"/>'
+    """
+    text = data.decode("utf-8")
+
+    def rnd(m: re.Match[str]) -> str:
+        v = round(float(m.group(0)), 2)
+        s = f"{v:.2f}".rstrip("0").rstrip(".")
+        return "0" if s in ("-0", "") else s
+
+    def attr(m: re.Match[str]) -> str:
+        return m.group(1) + _NUM.sub(rnd, m.group(2)) + m.group(3)
+
+    text = _D.sub(attr, text)
+    text = _POINTS.sub(attr, text)
+    return text.encode("utf-8")
+
+
+def structure(data: bytes) -> str:
+    """A digest of an SVG's structure: every id, in order, and every text, by id.
+
+    Two drawings with the same digest show the same constructions, labels and
+    values; they may differ in the last digits of coordinates or fonts
+    (another matplotlib).
+    """
+    root = ET.fromstring(data)
+    items = []
+    for el in root.iter():
+        i = el.get("id")
+        if i is None or re.fullmatch(r"[a-z]+[0-9a-f]{6,}", i) or re.match(
+                r"(line2d|patch|text|axes|figure|[mp][0-9a-f]+)_?\d*$", i):
+            continue
+        texts = "".join(t.text or "" for t in el.iter() if t.tag.endswith(("text", "tspan")))
+        items.append(f"{i}\t{' '.join(texts.split())}")
+    return hashlib.sha256("\n".join(items).encode("utf-8")).hexdigest()
+
+
+def _lookup(obj: Any, path: str) -> Any:
+    mag = path.endswith("|")
+    for part in path.rstrip("|").split("."):
+        obj = obj[part]
+    if mag:
+        return math.hypot(*obj)
+    return obj
+
+
+def _render(entry: Entry) -> tuple[dict[str, bytes], dict[str, Any]]:
+    """The drawings of an entry (name -> compact SVG bytes) and its solution data."""
+    import graphkin
+    from graphkin.errors import GraphkinError, InputError
+    from graphkin.output import solution_to_dict
+    from graphkin.render.mpl import draw
+    from graphkin.render.svg import to_bytes
+
+    mech = graphkin.load(entry.path)
+    try:
+        sol = mech.solve()
+    except GraphkinError as exc:
+        raise InputError(f"cannot solve it: {exc}", file=str(entry.path)) from None
+    data = solution_to_dict(sol)
+    drawings = {}
+    for d in entry.diagrams(mech.has_rates):
+        link = entry.meta.get("link")
+        fig = draw(sol, d, link=None if link is None else str(link)).figure
+        drawings[f"{entry.stem}-{d}.svg"] = compact_svg(to_bytes(fig))
+    return drawings, {"solution": data, "title": mech.title, "method": sol.method,
+                      "has_rates": mech.has_rates}
+
+
+def _fmt(v: Any) -> str:
+    from graphkin.render.scale import fmt
+
+    if isinstance(v, (list, tuple)):
+        return "(" + ", ".join(fmt(float(x), 5) for x in v) + ")"
+    if v is None:
+        return "—"
+    return fmt(float(v), 5)
+
+
+def _last_digit(v: Any) -> float:
+    """The place of the last printed digit of a book value: 1.41 -> 0.01, 24625 -> 1."""
+    vals = v if isinstance(v, (list, tuple)) else [v]
+    places = []
+    for x in vals:
+        text = repr(float(x)) if isinstance(x, float) else str(int(x))
+        if "e" in text:
+            return 0.0
+        frac = text.split(".")[1].rstrip("0") if "." in text else ""
+        places.append(10.0 ** -len(frac))
+    return min(places)
+
+
+def _compare(book: Any, got: Any) -> tuple[str, float, float]:
+    """Graphkin's value minus the book's: text, relative size, absolute size."""
+    if isinstance(book, (list, tuple)):
+        d = [float(g) - float(b) for g, b in zip(got, book)]
+        size = math.hypot(*map(float, book))
+        return _fmt(d), math.hypot(*d) / max(size, 1e-12), max(abs(x) for x in d)
+    d = float(got) - float(book)
+    return _fmt(d), abs(d) / max(abs(float(book)), 1e-12), abs(d)
+
+
+def _rows(entry: Entry, data: dict[str, Any]) -> list[dict[str, str]]:
+    rows = []
+    for b in entry.meta.get("book", []):
+        try:
+            got = _lookup(data, str(b["path"]))
+        except (KeyError, TypeError, IndexError):
+            got = None
+        book = b.get("value")
+        diff, rel, dabs = ("—", math.inf, math.inf) if got is None or book is None \
+            else _compare(book, got)
+        graphic = "graphic" in str(b.get("source", ""))
+        # a graphic value agrees within the drawing's accuracy (2 %); a computed one
+        # within 0.1 % (the book carries rounded intermediate results) or when
+        # graphkin's value rounds to the digits the book prints
+        limit = float(b.get("tolerance", 0.02 if graphic else 0.001))
+        ok = rel <= limit or (not graphic and dabs <= 0.5 * _last_digit(book) + 1e-12)
+        verdict = "agrees" if ok else "**differs**"
+        rows.append({"quantity": str(b.get("quantity", b["path"])), "book": _fmt(book),
+                     "source": str(b.get("source", "")), "graphkin": _fmt(got),
+                     "diff": diff, "unit": str(b.get("unit", "")), "verdict": verdict,
+                     "why": str(b.get("why", ""))})
+    return rows
+
+
+def _readme(root: Path, entries: list[Entry], results: dict[str, dict[str, Any]],
+            drawings: dict[str, list[str]], mpl_version: str) -> str:
+    lines = [
+        "# Gallery: the textbook's figures, drawn by graphkin",
+        "",
+        "Each mechanism file reproduces a figure of Uicker, Pennock & Shigley, *Theory of "
+        "Machines and Mechanisms*, 5th ed.; each drawing is made by the construction the "
+        "book teaches, to a stated scale, with a table comparing every value read off the "
+        "construction with the analytic solution. Below each drawing, the numbers the book "
+        "prints beside graphkin's, and why they differ where they do.",
+        "",
+        "This file and the drawings are generated: `graphkin gallery` rebuilds them, "
+        "`graphkin gallery --check` exits non-zero when one is out of date. The drawings are "
+        f"byte-exact with matplotlib {mpl_version} (recorded in `drawings/MANIFEST.json`); "
+        "with another version `--check` compares their structure (every step's group id and "
+        "every label's text).",
+        "",
+        "The four cases of the planar vector equation (Sec. 2.8, Figs. 2.10-2.13) are vector "
+        "files in [`vector/`](vector/): `graphkin vector gallery/vector/case4.toml`.",
+        "",
+        "## Index",
+        "",
+        "| mechanism | figure | examples | section | drawings |",
+        "|---|---|---|---|---|",
+    ]
+    for e in entries:
+        r = results[e.stem]
+        rel = e.path.relative_to(root).as_posix()
+        links = " ".join(f"[{Path(n).stem.rsplit('-', 1)[-1]}](drawings/{n})"
+                         for n in drawings[e.stem])
+        lines.append(f"| [{e.path.stem}]({rel}) | {e.meta.get('figure', '')} | "
+                     f"{e.meta.get('examples', '')} | {e.meta.get('section', '')} | {links} |")
+    lines.append("")
+    for e in entries:
+        r = results[e.stem]
+        rel = e.path.relative_to(root).as_posix()
+        lines += [f"## {r['title'] or e.path.stem}", ""]
+        facts = [f"File: [`{rel}`]({rel})"]
+        if e.meta.get("figure"):
+            facts.append(f"reproduces {e.meta['figure']}")
+        if e.meta.get("examples"):
+            facts.append(str(e.meta["examples"]))
+        if e.meta.get("section"):
+            facts.append(f"Sec. {e.meta['section']}")
+        lines += ["; ".join(facts) + ".", ""]
+        if e.meta.get("note"):
+            lines += [str(e.meta["note"]).strip(), ""]
+        for n in drawings[e.stem]:
+            lines += [f"![{Path(n).stem}](drawings/{n})", ""]
+        rows = _rows(e, r["solution"])
+        if rows:
+            lines += ["| quantity | book | source | graphkin | graphkin − book | unit | |",
+                      "|---|---|---|---|---|---|---|"]
+            for row in rows:
+                cells = [row[k].replace("|", "\\|") for k in
+                         ("quantity", "book", "source", "graphkin", "diff", "unit", "verdict")]
+                lines.append("| " + " | ".join(cells) + " |")
+            lines.append("")
+            for row in rows:
+                if row["why"]:
+                    text = " ".join(row["why"].split())
+                    lines += [f"* **{row['quantity']}** ({row['source']}): {text}"]
+            if any(row["why"] for row in rows):
+                lines.append("")
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:
+    import matplotlib
+
+    import graphkin
+
+    entries = discover(root)
+    files: dict[str, bytes] = {}
+    results: dict[str, dict[str, Any]] = {}
+    names: dict[str, list[str]] = {}
+    for e in entries:
+        drawings, info = _render(e)
+        for k, v in _from_title(info["title"] or "").items():
+            e.meta.setdefault(k, v)
+        files.update(drawings)
+        results[e.stem] = info
+        names[e.stem] = list(drawings)
+    readme = _readme(root, entries, results, names, matplotlib.__version__)
+    manifest = {"matplotlib": matplotlib.__version__, "graphkin": graphkin.__version__,
+                "drawings": {n: {"sha256": hashlib.sha256(b).hexdigest(),
+                                 "structure": structure(b)} for n, b in sorted(files.items())}}
+    return files, readme, manifest
+
+
+def build(root: str | Path) -> list[Path]:
+    """Regenerate every drawing, the manifest and the README; returns the files written."""
+    root = Path(root)
+    files, readme, manifest = _generate(root)
+    out = root / "drawings"
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for old in sorted(out.glob("*.svg")):
+        if old.name not in files:
+            old.unlink()
+    for name, data in files.items():
+        p = out / name
+        if not p.exists() or p.read_bytes() != data:
+            p.write_bytes(data)
+        written.append(p)
+    (out / "MANIFEST.json").write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n",
+                                       encoding="utf-8")
+    (root / "README.md").write_text(readme, encoding="utf-8")
+    return written
+
+
+def check(root: str | Path) -> list[str]:
+    """What is out of date (empty when the gallery is current).
+
+    With the matplotlib the drawings were made with, each committed drawing
+    must equal the regenerated one byte for byte; with another, its
+    structure (:func:`structure`) must.
+    """
+    import matplotlib
+
+    root = Path(root)
+    files, readme, manifest = _generate(root)
+    out = root / "drawings"
+    problems = []
+    man_path = out / "MANIFEST.json"
+    pinned = None
+    if man_path.exists():
+        pinned = json.loads(man_path.read_text(encoding="utf-8")).get("matplotlib")
+    exact = pinned == matplotlib.__version__
+    for name, data in files.items():
+        p = out / name
+        if not p.exists():
+            problems.append(f"{p}: missing")
+            continue
+        old = p.read_bytes()
+        if exact and old != data:
+            problems.append(f"{p}: out of date")
+        elif not exact and structure(old) != structure(data):
+            problems.append(f"{p}: out of date (its structure differs)")
+    for p in sorted(out.glob("*.svg")):
+        if p.name not in files:
+            problems.append(f"{p}: no mechanism file draws it any more")
+    readme_path = root / "README.md"
+    current = readme_path.read_text(encoding="utf-8") if readme_path.exists() else ""
+    if exact and current != readme:
+        problems.append(f"{readme_path}: out of date")
+    elif not exact and _strip_version(current) != _strip_version(readme):
+        problems.append(f"{readme_path}: out of date")
+    return problems
+
+
+def _strip_version(text: str) -> str:
+    return re.sub(r"matplotlib \d+\.\d+\.\d+\S*", "matplotlib X", text)

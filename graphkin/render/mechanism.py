@@ -1,0 +1,352 @@
+"""The mechanism itself, drawn as the book draws it: bars, plates, pins, blocks and a hatched frame.
+
+Each moving link is the outline of its points (shapely's buffer of their
+convex hull: a bar for two points, a shaded plate for more), numbered; a pin
+is a small circle; a slider is a block on its line; a pin in a slot runs in
+a slot cut in its link; the frame shows a bearing at every fixed pivot and a
+hatched guide under every slider on it.  Sizes are given in inches of paper
+and turned into data units by the panel's scale, so every drawing looks the
+same whatever its scale.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 1.6-1.7 (kinematic diagrams: the
+symbols of links, pins, sliders and the frame), Figs. 2.14 and 3.5.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import shapely
+from shapely.geometry import LineString, MultiPoint, Point, Polygon
+
+from graphkin.mechanisms.model import FRAME
+from graphkin.render.scene import Item, LabelRequest, Panel, point_text, safe_id
+from graphkin.render.sources import Source
+
+__all__ = ["paint_mechanism", "link_points", "mechanism_extent", "BAR_HALF"]
+
+BAR_HALF = 0.045
+"""Half the width of a bar, in inches."""
+BLOCK = (0.17, 0.10)
+"""Half length and half height of a slider block, in inches."""
+BEARING = (0.1, 0.15)
+"""Half width and height of a frame bearing, in inches."""
+HATCH = (0.045, 0.065)
+"""Spacing and length of the hatch strokes of the frame, in inches."""
+
+
+def link_points(src: Source, lid: str) -> dict[str, np.ndarray]:
+    """World positions of a link's named points."""
+    sol = src.solution
+    mech = src.mechanism
+    assert sol is not None and mech is not None
+    return {n: np.asarray(sol.position(n, lid), dtype=float) for n in mech.links[lid].points}
+
+
+def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
+    """The part of a link along each straight slide it carries, out to the block that runs on it.
+
+    A rod that guides a block (an inverted slider-crank, Fig. 3.9) is drawn
+    along its line as far as the block, whatever points the file names on it.
+    """
+    mech, sol = src.mechanism, src.solution
+    assert mech is not None and sol is not None
+    bars = []
+    equivalent = {r.slot_key for r in getattr(mech, "rolling", ())}
+    for s in (*mech.sliders, *mech.slots):
+        if s.on != lid or s.link == lid or s.key in equivalent:
+            continue
+        lw = _line_world(src, s)
+        if lw is None:
+            continue
+        p0, u = lw
+        st = sol.links[lid]
+        ends = [np.asarray(st.position(s.p0), dtype=float),  # type: ignore[arg-type]
+                np.asarray(st.position(s.p1), dtype=float)]  # type: ignore[arg-type]
+        q = np.asarray(sol.position(s.point, s.link), dtype=float)
+        ts = [float(u @ (e - p0)) for e in ends]
+        tq = float(u @ (q - p0))
+        reach = 1.6 * BLOCK[0] * k
+        lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
+        bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
+    return bars
+
+
+def _ring(geom: shapely.Geometry) -> np.ndarray:
+    if isinstance(geom, Polygon):
+        return np.asarray(geom.exterior.coords)[:-1]
+    return np.asarray(geom.convex_hull.exterior.coords)[:-1]  # pragma: no cover
+
+
+def _line_world(src: Source, s: object) -> tuple[np.ndarray, np.ndarray] | None:
+    """A straight slider or slot line in world coordinates: a point and a unit direction."""
+    sol = src.solution
+    if getattr(s, "p0", None) is None or sol is None:
+        return None
+    st = sol.links[s.on]  # type: ignore[attr-defined]
+    p0 = np.asarray(st.position(s.p0), dtype=float)  # type: ignore[attr-defined]
+    p1 = np.asarray(st.position(s.p1), dtype=float)  # type: ignore[attr-defined]
+    d = p1 - p0
+    n = float(np.hypot(*d))
+    if n == 0:
+        return None
+    return p0, d / n
+
+
+def _rect(center: np.ndarray, u: np.ndarray, hl: float, hh: float) -> np.ndarray:
+    n = np.array([-u[1], u[0]])
+    return np.array([center - hl * u - hh * n, center + hl * u - hh * n,
+                     center + hl * u + hh * n, center - hl * u + hh * n])
+
+
+def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
+                    drawn: set[str]) -> None:
+    """Draw the mechanism into ``panel``.
+
+    Parameters
+    ----------
+    src : Source
+    panel : Panel
+        A posture-plane panel with its scale set.
+    known : set of str or None
+        Points already constructed (a link is drawn once all its points are);
+        None: everything.
+    drawn : set of str
+        Points already marked by construction steps (their pins and letters).
+    """
+    mech, sol = src.mechanism, src.solution
+    if mech is None or sol is None:
+        return
+    k = panel.k
+    pre = panel.prefix
+
+    def is_known(name: str) -> bool:
+        return known is None or name in known
+
+    centroid = np.mean([np.asarray(sol.position(n), dtype=float) for n in mech.point_names],
+                       axis=0)
+
+    # ---- moving links ------------------------------------------------
+    for lid in mech.moving:
+        link = mech.links[lid]
+        if not all(is_known(n) for n in link.points):
+            continue
+        pts = link_points(src, lid)
+        arr = np.array(list(pts.values()))
+        g = panel.group(f"{pre}link-{lid}", 1.0 + 0.01 * mech.moving.index(lid), key=f"link {lid}")
+        distinct = MultiPoint([tuple(p) for p in arr]).convex_hull
+        if distinct.geom_type == "Point":
+            if not any(s.link == lid for s in mech.sliders):
+                g.items.append(Item("circle", arr[:1], "link", radius=2.2 * BAR_HALF * k,
+                                    key=f"link {lid}"))
+                _number(panel, g, lid, arr[0], pre)
+            continue
+        shape = shapely.union_all([distinct.buffer(BAR_HALF * k, quad_segs=6),
+                                   *(b.buffer(BAR_HALF * k, quad_segs=6)
+                                     for b in slide_bars(src, lid, k))])
+        plate = distinct.geom_type == "Polygon" and distinct.area > (3 * BAR_HALF * k) ** 2
+        parts = list(shape.geoms) if hasattr(shape, "geoms") else [shape]
+        for j, part in enumerate(parts):
+            g.items.append(Item("polygon", _ring(part), "plate" if plate else "link",
+                                key=f"link {lid}" if j == 0 else f"link {lid}:{j}"))
+        # the number beside the bar, or inside the plate
+        if plate:
+            rp = distinct.buffer(-1.2 * BAR_HALF * k)
+            anchor = np.asarray((rp if not rp.is_empty else distinct).representative_point()
+                                .coords[0])
+            panel.labels.append(LabelRequest(lid, anchor, "number", f"{pre}number-{lid}", g,
+                                             key=f"link {lid}", gap=0.0, center=True))
+        else:
+            line = LineString([tuple(p) for p in arr]).convex_hull
+            c = np.asarray(line.centroid.coords[0])
+            _number(panel, g, lid, c, pre, gap=BAR_HALF + 0.03)
+
+    # ---- slots: a slot cut in the link that carries the path ------------
+    rolling = tuple(getattr(mech, "rolling", ()))
+    equivalent = {r.slot_key for r in rolling}
+    for s in mech.slots:
+        if s.key in equivalent:
+            continue  # a rolling contact's equivalent slot: the roller is drawn instead
+        if not (is_known(s.point) and all(is_known(n) for n in mech.links[s.on].points)):
+            continue
+        p = np.asarray(sol.position(s.point, s.link), dtype=float)
+        g = panel.group(f"{pre}slot-{safe_id(s.key)}", 1.5, key=s.key)
+        if s.is_line:
+            lw = _line_world(src, s)
+            if lw is None:
+                continue
+            u = lw[1]
+            shape = LineString([tuple(p - 0.32 * k * u), tuple(p + 0.32 * k * u)]).buffer(
+                1.3 * BAR_HALF * k, quad_segs=6)
+        else:
+            st = sol.links[s.on]
+            c = np.asarray(st.position(s.center), dtype=float)
+            r = float(s.radius or 0.0)
+            phi = math.atan2(p[1] - c[1], p[0] - c[0])
+            span = min(0.32 * k / max(r, 1e-300), math.pi)
+            ts = np.linspace(phi - span, phi + span, 25)
+            arc = LineString([tuple(c + r * np.array([math.cos(t), math.sin(t)])) for t in ts])
+            shape = arc.buffer(1.3 * BAR_HALF * k, quad_segs=6)
+        if isinstance(shape, Polygon):
+            g.items.append(Item("polygon", _ring(shape), "slot", key=s.key))
+
+    # ---- sliders: blocks, and a hatched guide when they run on the frame -----
+    frame_group = panel.group(f"{pre}frame", 0.8, key="frame")
+    numbered_frame = False
+
+    # ---- rolling contact: the roller itself, and the ground it rolls on ------
+    for r in rolling:
+        if not is_known(r.center):
+            continue
+        c = np.asarray(sol.position(r.center, r.link), dtype=float)
+        g = panel.group(f"{pre}roller-{r.link}", 1.6, key=f"link {r.link}")
+        disc = Point(float(c[0]), float(c[1])).buffer(r.radius, quad_segs=24)
+        g.items.append(Item("polygon", _ring(disc), "link", key=f"roller {r.link}"))
+        if len(mech.links[r.link].points) <= 1:
+            _number(panel, g, r.link, c + np.array([0.0, 0.6 * r.radius]), pre, gap=0.02)
+        lw = _line_world(src, r)
+        if lw is not None and r.on == FRAME:
+            p0, u = lw
+            foot = p0 + float(u @ (c - p0)) * u
+            away = foot - c
+            n = away / max(float(np.hypot(*away)), 1e-300)
+            half = max(1.3 * r.radius, 0.4 * k)
+            frame_group.items.extend(_ground(foot - half * u, foot + half * u, n, k))
+            if not numbered_frame:
+                panel.labels.append(LabelRequest("1", foot + half * u + 0.1 * k * n, "number",
+                                                 f"{pre}number-1", frame_group, key="link 1",
+                                                 gap=0.04))
+                numbered_frame = True
+    for s in mech.sliders:
+        if not is_known(s.point):
+            continue
+        lw = _line_world(src, s)
+        if lw is None:
+            continue
+        u = lw[1]
+        p = np.asarray(sol.position(s.point, s.link), dtype=float)
+        hl, hh = BLOCK[0] * k, BLOCK[1] * k
+        if s.on == FRAME:
+            nrm = np.array([-u[1], u[0]])
+            side = -1.0 if float(nrm @ (centroid - p)) > 0 else 1.0
+            base = p + side * hh * nrm
+            a, b = base - 2.6 * hl * u, base + 2.6 * hl * u
+            frame_group.items.extend(_ground(a, b, side * nrm, k))
+            if not numbered_frame:
+                panel.labels.append(LabelRequest("1", a + 0.3 * (b - a) + side * nrm * 0.08 * k,
+                                                 "number", f"{pre}number-1", frame_group,
+                                                 key="link 1", gap=0.04))
+                numbered_frame = True
+        g = panel.group(f"{pre}slider-{s.link}", 2.5, key=f"link {s.link}")
+        g.items.append(Item("polygon", _rect(p, u, hl, hh), "block", key=f"link {s.link}"))
+        if len(mech.links[s.link].points) <= 1 or s.link not in [x for x in mech.moving
+                                                                   if _has_outline(src, x)]:
+            _number(panel, g, s.link, p, pre, gap=BLOCK[1] + 0.05)
+
+    # ---- frame bearings at fixed pivots ------------------------------
+    frame_pts = mech.links[FRAME].points
+    for name in frame_pts:
+        if len(mech.point_links.get(name, [])) < 2:
+            continue
+        p = np.asarray(sol.position(name, FRAME), dtype=float)
+        others = []
+        for lid in mech.point_links[name]:
+            if lid == FRAME:
+                continue
+            for q in link_points(src, lid).values():
+                if float(np.hypot(*(q - p))) > 0:
+                    others.append((q - p) / float(np.hypot(*(q - p))))
+        down = _free_direction(others)
+        side = np.array([-down[1], down[0]])
+        w, h = BEARING[0] * k, BEARING[1] * k
+        b0, b1 = p + h * down - w * side, p + h * down + w * side
+        frame_group.items.append(Item("polygon", np.array([p, b0, b1]), "bearing"))
+        g0, g1 = p + h * down - 1.6 * w * side, p + h * down + 1.6 * w * side
+        frame_group.items.extend(_ground(g0, g1, down, k))
+        if not numbered_frame:
+            panel.labels.append(LabelRequest("1", g1 + 0.06 * k * down, "number",
+                                             f"{pre}number-1", frame_group, key="link 1",
+                                             gap=0.04))
+            numbered_frame = True
+
+    # ---- points not marked by a construction step --------------------
+    for name in mech.point_names:
+        if name in drawn or not is_known(name):
+            continue
+        from graphkin.render.paint import _is_joint_or_named_point
+
+        p = np.asarray(sol.position(name), dtype=float)
+        main = _is_joint_or_named_point(mech, name)
+        style = ("pin" if len(mech.point_links[name]) >= 2 else "point") if main \
+            else "aux-point"
+        g = panel.group(f"{pre}point-{safe_id(name)}", 4.0, key=name)
+        g.items.append(Item("marker", np.array([p]), style, key=name))
+        panel.labels.append(LabelRequest(point_text(name), p, "label" if main else "label-aux",
+                                         f"{pre}label-{safe_id(name)}", g, key=name))
+
+
+def _ground(a: np.ndarray, b: np.ndarray, out: np.ndarray, k: float) -> list[Item]:
+    """A ground line from ``a`` to ``b`` with short slanted hatch strokes on the ``out`` side."""
+    items = [Item("path", np.array([a, b]), "ground-line")]
+    d = b - a
+    length = float(np.hypot(*d))
+    if length == 0:
+        return items
+    u = d / length
+    step = HATCH[0] * k
+    n = max(int(length / step), 1)
+    stroke = HATCH[1] * k * (np.asarray(out) * 0.7071 - u * 0.7071)
+    for i in range(n + 1):
+        q = a + u * (i * length / n)
+        items.append(Item("path", np.array([q, q + stroke]), "hatch"))
+    return items
+
+
+def _free_direction(dirs: list[np.ndarray]) -> np.ndarray:
+    """The side of a pivot for its bearing: straight down unless a link is there.
+
+    Of the four compass directions (down first), the one farthest from every
+    link that leaves the pivot.
+    """
+    best, score = np.array([0.0, -1.0]), -2.0
+    for cand in ((0.0, -1.0), (-1.0, 0.0), (1.0, 0.0), (0.0, 1.0)):
+        c = np.array(cand)
+        clearance = -max((float(c @ v) for v in dirs), default=-1.0)
+        if clearance >= 0.35:
+            return c
+        if clearance > score:
+            best, score = c, clearance
+    return best
+
+
+def _has_outline(src: Source, lid: str) -> bool:
+    """True when a link is drawn as a bar or plate (two or more distinct points)."""
+    pts = link_points(src, lid)
+    hull = MultiPoint([tuple(p) for p in pts.values()]).convex_hull
+    return hull.geom_type != "Point"
+
+
+def _number(panel: Panel, g: object, lid: str, anchor: np.ndarray, pre: str,
+            gap: float = 0.05) -> None:
+    panel.labels.append(LabelRequest(lid, np.asarray(anchor, dtype=float), "number",
+                                     f"{pre}number-{lid}", g, key=f"link {lid}",  # type: ignore[arg-type]
+                                     gap=gap))
+
+
+def mechanism_extent(src: Source) -> list[np.ndarray]:
+    """Every point the mechanism drawing covers (world coordinates), for the panel's bounds."""
+    mech, sol = src.mechanism, src.solution
+    if mech is None or sol is None:
+        return []
+    out = []
+    for lid in mech.links:
+        out.extend(link_points(src, lid).values())
+    for s in (*mech.sliders, *mech.slots):
+        out.append(np.asarray(sol.position(s.point, s.link), dtype=float))
+    for r in getattr(mech, "rolling", ()):
+        c = np.asarray(sol.position(r.center, r.link), dtype=float)
+        out.extend([c - r.radius, c + r.radius])
+    return out

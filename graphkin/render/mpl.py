@@ -1,0 +1,476 @@
+"""The matplotlib side: a sheet becomes a Figure, each group one SVG ``<g>`` with the step's id.
+
+No pyplot: figures are made with :class:`matplotlib.figure.Figure` directly,
+so the library keeps no global state.  Every group of the scene becomes a
+:class:`StepGroup` artist that writes ``<g id="step-07-C">`` around its
+children; every label is a real ``<text>`` with its own id (``label-C``).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4, 4.3.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from matplotlib import patches
+from matplotlib.artist import Artist
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.text import Text
+
+from graphkin.render.scene import Group, Item, Panel
+from graphkin.render.sheet import TABLE_ROW, Sheet, build_sheet
+from graphkin.render.sources import DIAGRAMS, as_source, optional_modules
+from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
+
+__all__ = ["StepGroup", "Vector", "Drawing", "draw", "sheet_figure", "render_sheet"]
+
+
+class StepGroup(Artist):
+    """An artist that draws its children inside one SVG group with a stable id.
+
+    Parameters
+    ----------
+    gid : str
+        The group's id (a step's :attr:`~graphkin.construction.Step.step_id`).
+    children : list of Artist
+    """
+
+    def __init__(self, gid: str, children: list[Artist], zorder: float = 2.0) -> None:
+        super().__init__()
+        self.set_gid(gid)
+        self.set_zorder(zorder)
+        self.children = list(children)
+        self.step: Any = None
+
+    def get_children(self) -> list[Artist]:
+        """The artists of the group."""
+        return list(self.children)
+
+    def draw(self, renderer: Any) -> None:
+        """Draw the children inside ``<g id=gid>``."""
+        if not self.get_visible():
+            return
+        renderer.open_group("graphkin", gid=self.get_gid())
+        for c in self.children:
+            c.draw(renderer)
+        renderer.close_group("graphkin")
+        self.stale = False
+
+
+class Vector(Line2D):
+    """A vector drawn as a shaft and a filled head; its data are exactly ``[tail, tip]``.
+
+    The shaft stops inside the head so that the point of the arrow is the
+    vector's true tip at any line width.
+    """
+
+    def __init__(self, tail: np.ndarray, tip: np.ndarray, head: float, half: float,
+                 **kw: Any) -> None:
+        super().__init__([tail[0], tip[0]], [tail[1], tip[1]], **kw)
+        d = np.asarray(tip, dtype=float) - np.asarray(tail, dtype=float)
+        n = float(np.hypot(*d))
+        u = d / n if n else np.array([1.0, 0.0])
+        nrm = np.array([-u[1], u[0]])
+        end = np.asarray(tip) - u * min(head * 0.7, n)
+        style = {k: v for k, v in kw.items() if k in ("color", "lw", "ls", "zorder")}
+        self._shaft = Line2D([tail[0], end[0]], [tail[1], end[1]], **style)
+        base = np.asarray(tip) - u * head
+        color = kw.get("color", "k")
+        self._head = patches.Polygon(np.array([tip, base + half * nrm, base - half * nrm]),
+                                     closed=True, fc=color, ec=color, lw=0.3)
+
+    def set_figure(self, fig: Any) -> None:  # noqa: D102
+        super().set_figure(fig)
+        for a in getattr(self, "_shaft", None), getattr(self, "_head", None):
+            if a is not None:
+                a.set_figure(fig)
+
+    def set_transform(self, t: Any) -> None:  # noqa: D102
+        super().set_transform(t)
+        for a in getattr(self, "_shaft", None), getattr(self, "_head", None):
+            if a is not None:
+                a.set_transform(t)
+
+    def set_clip_path(self, path: Any, transform: Any = None) -> None:  # noqa: D102
+        super().set_clip_path(path, transform)
+        for a in getattr(self, "_shaft", None), getattr(self, "_head", None):
+            if a is not None:
+                a.set_clip_path(path, transform)
+
+    @property
+    def tip(self) -> np.ndarray:
+        """The point of the arrow (data)."""
+        return np.asarray(self.get_xydata()[-1])
+
+    @property
+    def tail(self) -> np.ndarray:
+        """The start of the arrow (data)."""
+        return np.asarray(self.get_xydata()[0])
+
+    def draw(self, renderer: Any) -> None:
+        """Draw the shaft and the head in one group."""
+        if not self.get_visible():
+            return
+        renderer.open_group("vector", gid=self.get_gid())
+        self._shaft.draw(renderer)
+        self._head.draw(renderer)
+        renderer.close_group("vector")
+        self.stale = False
+
+
+class Drawing(dict):  # type: ignore[type-arg]
+    """What :func:`draw` returns: construction label -> its main artist.
+
+    Attributes
+    ----------
+    figure : Figure
+    texts : dict
+        Label -> the :class:`~matplotlib.text.Text` of its letter.
+    groups : dict
+        Group id -> :class:`StepGroup`.
+    sheet : Sheet or None
+    """
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.figure: Figure | None = None
+        self.texts: dict[str, Text] = {}
+        self.groups: dict[str, StepGroup] = {}
+        self.sheet: Sheet | None = None
+
+
+def _style(it: Item, highlight: bool) -> dict[str, Any]:
+    st = dict(STYLES.get(it.style, {}))
+    if it.style == "image":
+        st = {"ec": "none", "fc": "#dddddd", "lw": 0.0}
+    st.update(it.overrides)
+    if highlight:
+        for key in ("color", "ec", "mec"):
+            if key in st and st[key] not in ("none",):
+                st[key] = HIGHLIGHT
+        if st.get("mfc", "#ffffff") not in ("#ffffff", "none"):
+            st["mfc"] = HIGHLIGHT
+        if "lw" in st and st.get("lw", 0) > 0:
+            st["lw"] = st["lw"] + 0.5
+        if it.kind == "text":
+            st["color"] = HIGHLIGHT
+    return st
+
+
+def _artists(it: Item, highlight: bool) -> list[Artist]:
+    st = _style(it, highlight)
+    xy = np.asarray(it.xy, dtype=float)
+    out: list[Artist] = []
+    if it.kind == "path":
+        out.append(Line2D(xy[:, 0], xy[:, 1], color=st.get("color", "k"), lw=st.get("lw", 1.0),
+                          ls=st.get("ls", "-"), solid_joinstyle="miter"))
+    elif it.kind == "marker":
+        out.append(Line2D(xy[:, 0], xy[:, 1], ls="none", marker=st.get("marker", "o"),
+                          ms=st.get("ms", 3.0), mfc=st.get("mfc", "k"), mec=st.get("mec", "k"),
+                          mew=st.get("mew", 0.5)))
+    elif it.kind == "polygon":
+        kw: dict[str, Any] = {"closed": True, "fc": st.get("fc", "none"),
+                              "ec": st.get("ec", "k"), "lw": st.get("lw", 1.0),
+                              "joinstyle": "miter"}
+        if "hatch" in st:
+            kw["hatch"] = st["hatch"]
+            kw["ec"] = st.get("ec", "k")
+        if "alpha" in st:
+            kw["alpha"] = st["alpha"]
+        out.append(patches.Polygon(xy, **kw))
+    elif it.kind == "circle":
+        out.append(patches.Circle(tuple(xy[0]), it.radius, fill=False,
+                                  ec=st.get("color", "k"), lw=st.get("lw", 0.5),
+                                  ls=st.get("ls", "-")))
+    elif it.kind == "arc":
+        out.append(patches.Arc(tuple(xy[0]), 2 * it.radius, 2 * it.radius,
+                               theta1=it.theta1, theta2=it.theta2, ec=st.get("color", "k"),
+                               lw=st.get("lw", 0.5), ls=st.get("ls", "-")))
+    elif it.kind == "arrow":
+        out.append(Vector(xy[0], xy[-1], it.head, it.width, color=st.get("color", "k"),
+                          lw=st.get("lw", 1.0), ls=st.get("ls", "-")))
+    elif it.kind == "text":
+        kw = {"fontsize": st.get("size", 8.0), "color": st.get("color", "k"),
+              "ha": it.ha, "va": it.va}
+        if "family" in st:
+            kw["family"] = st["family"]
+        if "weight" in st:
+            kw["fontweight"] = st["weight"]
+        if "style" in st:
+            kw["fontstyle"] = st["style"]
+        out.append(Text(xy[0, 0], xy[0, 1], it.text, **kw))
+    for a in out:
+        if it.gid:
+            a.set_gid(it.gid)
+    return out
+
+
+def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
+    children: list[Artist] = []
+    for it in g.items:
+        arts = _artists(it, g.highlight)
+        for a in arts:
+            a.set_transform(ax.transData)
+            a.set_figure(ax.figure)
+            a.axes = ax
+            a.set_clip_path(ax.patch)
+            children.append(a)
+        if it.key is not None and arts:
+            main = arts[0]
+            if it.kind == "text":
+                drawing.texts.setdefault(_key(g, it.key), main)  # type: ignore[arg-type]
+            else:
+                drawing.setdefault(_key(g, it.key), main)
+                for alias in it.aliases:
+                    drawing.setdefault(_key(g, alias), main)
+    sg = StepGroup(g.gid, children, g.z)
+    sg.step = g.step
+    ax.add_artist(sg)
+    drawing.groups[g.gid] = sg
+    return sg
+
+
+def _key(g: Group, key: str) -> str:
+    pre = g.gid.split("step-")[0] if "step-" in g.gid else ""
+    return pre + key if pre and not key.startswith(pre) else key
+
+
+def _panel_axes(fig: Figure, sheet: Sheet, p: Panel) -> Axes:
+    W, H = sheet.size
+    x, y = p.origin
+    w, h = p.size
+    ax = fig.add_axes((x / W, y / H, w / W, h / H))
+    _setup_axes(ax, p)
+    return ax
+
+
+def _setup_axes(ax: Axes, p: Panel) -> None:
+    ax.set_axis_off()
+    ax.set_xlim(p.view[0], p.view[2])
+    ax.set_ylim(p.view[1], p.view[3])
+    ax.set_gid(f"panel-{p.prefix}{p.name}" if not p.prefix.startswith(p.name) else
+               f"panel-{p.name}")
+
+
+def render_sheet(sheet: Sheet) -> Drawing:
+    """Make the figure of a laid-out sheet."""
+    with rc_context():
+        fig = Figure(figsize=sheet.size)
+        drawing = Drawing()
+        drawing.figure = fig
+        drawing.sheet = sheet
+        if sheet.title:
+            t = fig.text(0.5 * 0.0 + 0.12 / sheet.size[0], 1 - 0.22 / sheet.size[1], sheet.title,
+                         ha="left", va="center", fontsize=STYLES["title"]["size"] + 1,
+                         fontweight="bold")
+            t.set_gid("sheet-title")
+        for p in sheet.panels:
+            ax = _panel_axes(fig, sheet, p)
+            for g in p.groups:
+                _add_group(ax, g, drawing)
+        if sheet.rows:
+            _table(fig, sheet)
+    return drawing
+
+
+def sheet_figure(obj: Any, diagram: str = "all", **kw: Any) -> Figure:
+    """The figure of a whole sheet (see :func:`draw`)."""
+    d = draw(obj, diagram, **kw)
+    assert d.figure is not None
+    return d.figure
+
+
+def _table(fig: Figure, sheet: Sheet) -> None:
+    """The results table: drawn value, analytic value and their relative difference."""
+    W, H = sheet.size
+    x, y = sheet.table_origin
+    w, h = sheet.table_size
+    ax = fig.add_axes((x / W, y / H, w / W, h / H))
+    ax.set_axis_off()
+    ax.set_xlim(0, w)
+    ax.set_ylim(0, h)
+    ax.set_gid("results")
+    texts: list[Artist] = []
+
+    def text(xx: float, yy: float, s: str, style: str, gid: str | None = None,
+             ha: str = "left") -> Text:
+        st = STYLES[style]
+        t = Text(xx, yy, s, fontsize=st["size"], family=st.get("family", "sans-serif"),
+                 fontweight=st.get("weight", "normal"), ha=ha, va="center",
+                 color=st.get("color", "k"))
+        t.set_transform(ax.transData)
+        t.set_figure(fig)
+        if gid:
+            t.set_gid(gid)
+        return t
+
+    top = h - 0.15
+    widths = _column_widths(sheet)
+    texts.append(text(0.08, top, "Results: read off the construction, and the analytic "
+                      "solution", "table-head", "results-title"))
+    yy = top - TABLE_ROW * 1.2
+    texts.append(text(0.08, yy, _row(("quantity", "drawn", "analytic", "rel. diff.", "unit"),
+                                     widths), "table-head", "results-head"))
+    rule = Line2D([0.08, w - 0.08], [yy - TABLE_ROW / 2] * 2, color="k", lw=0.5)
+    rule.set_transform(ax.transData)
+    rule.set_figure(fig)
+    texts.append(rule)
+    worst = 0.0
+    missing = False
+    for r in sheet.rows:
+        yy -= TABLE_ROW
+        cells = (r.quantity, r.drawn, r.exact, _diff_text(r.diff), r.unit)
+        row = text(0.08, yy, _row(cells, widths), "table", f"row-{r.key}")
+        if r.diff is None:
+            missing = True
+        else:
+            worst = max(worst, r.diff)
+        row.axes = ax
+        texts.append(row)
+    yy -= TABLE_ROW * 1.3
+    if missing and all(not r.exact.strip("—") for r in sheet.rows):
+        foot = "The analytic solver gave no answer here."
+    else:
+        foot = (f"Largest relative difference {worst:.1e}: the drawing agrees with the "
+                "analytic solution." if worst < 1e-6 else
+                f"Largest relative difference {worst:.1e}.")
+    texts.append(text(0.08, yy, foot, "table", "results-agreement"))
+    sg = StepGroup("results-table", texts, 3.0)
+    for a in texts:
+        a.axes = ax
+    ax.add_artist(sg)
+
+
+def _diff_text(diff: float | None) -> str:
+    """A relative difference as printed in the table."""
+    if diff is None:
+        return "—"
+    return "0" if diff == 0 else f"{diff:.1e}"
+
+
+def _column_widths(sheet: Sheet) -> tuple[int, ...]:
+    heads = ("quantity", "drawn", "analytic", "rel. diff.", "unit")
+    cols = [[h] for h in heads]
+    for r in sheet.rows:
+        for c, v in zip(cols, (r.quantity, r.drawn, r.exact, "1.0e-16", r.unit)):
+            c.append(v)
+    return tuple(max(len(v) for v in c) for c in cols)
+
+
+def _row(cells: tuple[str, ...], widths: tuple[int, ...]) -> str:
+    """A table row in a monospace font: padded columns, two spaces apart."""
+    row = "  ".join(c.ljust(w) for c, w in zip(cells, widths)).rstrip()
+    return row.replace(" ", "\u00a0")  # SVG viewers collapse ordinary spaces
+
+
+def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int | None = None,
+         *, highlight: int | None = None, table: bool | None = None,
+         values: dict[str, Any] | None = None, max_inches: float | None = None,
+         link: str | None = None) -> Drawing:
+    """Draw a diagram of a mechanism, a solution or a construction.
+
+    Parameters
+    ----------
+    obj : Mechanism, Solution or Construction
+        A mechanism is solved first.  A bare construction is drawn alone (no
+        mechanism), evaluated by itself or with ``values``.
+    diagram : str
+        ``posture``, ``velocity``, ``acceleration``, ``centers``,
+        ``curvature``, several joined by ``+`` (``"posture+velocity"``), or
+        ``all`` (a sheet with every diagram).
+    ax : matplotlib Axes, optional
+        Draw only the diagram's own panel into these axes (their limits are
+        set to the panel's view; the aspect is made equal).  Without ``ax`` a
+        new Figure holds the whole sheet, each panel to a round scale.
+    upto : int, optional
+        Draw the construction only up to step ``upto`` (inclusive):
+        "step k of n".
+    highlight : int, optional
+        A step to draw in the highlight colour.
+    table : bool, optional
+        Add the results table (default: yes for a sheet, no into ``ax``).
+    values : dict, optional
+        Values for a bare construction's inputs.
+    max_inches : float, optional
+        The largest side of a panel.
+    link : str, optional
+        The link whose curvature construction is drawn (default: the first
+        coupler that turns).
+
+    Returns
+    -------
+    Drawing
+        A dict of construction label -> main artist (a marker, a line, an
+        arc, a :class:`Vector`), with ``.texts`` (label -> Text),
+        ``.groups`` (id -> :class:`StepGroup`) and ``.figure``.
+
+    Raises
+    ------
+    DiagramUnavailable
+        No such diagram for this object (no rates, or its module is missing).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.render import draw
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... D = [10, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [4, 0]
+    ... [links.3]
+    ... B = [0, 0]
+    ... C = [18, 0]
+    ... [links.4]
+    ... D = [0, 0]
+    ... C = [11, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 120
+    ... [assembly]
+    ... C = [15, 10]
+    ... ''')
+    >>> d = draw(mech, "posture")
+    >>> d["B"].get_xydata().round(4).tolist()     # B = A + 4 (cos 120°, sin 120°)
+    [[-2.0, 3.4641]]
+    >>> d.groups["step-07-C"].get_gid()
+    'step-07-C'
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (Fig. 2.14), 3.4 (Fig. 3.5),
+    4.3 (Fig. 4.4).
+    """
+    wanted = tuple(d for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
+                   if d in optional_modules)
+    src = as_source(obj, values=values, diagrams=wanted, link=link)
+    if ax is None:
+        sheet = build_sheet(src, diagram, upto=upto, highlight=highlight,
+                            table=True if table is None else table, max_inches=max_inches)
+        return render_sheet(sheet)
+    fig = ax.figure
+    bb = ax.get_position()
+    fw, fh = fig.get_size_inches()
+    room = max(min(bb.width * fw, bb.height * fh) - 1.0, 0.8)
+    sheet = build_sheet(src, diagram, upto=upto, highlight=highlight, table=False,
+                        max_inches=max_inches or room, title="")
+    name = diagram if diagram in [p.name for p in sheet.panels] else sheet.panels[0].name
+    if diagram == "all":
+        name = sheet.panels[0].name
+    panel = sheet.panel(name)
+    drawing = Drawing()
+    drawing.figure = fig  # type: ignore[assignment]
+    drawing.sheet = sheet
+    with rc_context():
+        _setup_axes(ax, panel)
+        ax.set_aspect("equal", adjustable="datalim")
+        for g in panel.groups:
+            _add_group(ax, g, drawing)
+    return drawing

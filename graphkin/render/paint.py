@@ -1,0 +1,660 @@
+"""Construction steps into scene items: what a draftsman draws for each recorded act.
+
+The painter is generic over steps: it looks only at a step's kind (point,
+line, circle, vector, scalar), its operation, its role and the values of its
+inputs and outputs.  The textbook conventions it follows:
+
+* a point of the mechanism is a pin (small circle) or a dot, lettered; a
+  construction point is a small grey dot; a point at infinity is an arrow at
+  the panel's edge marked ∞;
+* a line is drawn thin and only as long as the points on it need (the
+  through-point and the points later found on it), with a right-angle mark
+  where it was drawn perpendicular to a line of the same panel or to a vector
+  laid off there;
+* a circle is drawn as short arcs where it is later cut, as the book swings
+  its arcs (Fig. 2.14), and in full when nothing cuts it;
+* in a polygon, every image is lettered (``b``, ``c`` for velocities; ``b′``
+  for accelerations; ``a₄`` for the point of link 4 at A), absolute vectors
+  are drawn bold from the pole, relative ones thinner; normal components are
+  dashed, tangential ones solid and Coriolis components dash-dotted (Fig. 4.11);
+* an angular rate is a curved arrow on its link with its value and sense.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (Fig. 2.14), Sec. 3.4 (Fig. 3.5),
+Sec. 3.5 (images), Sec. 4.3 (Fig. 4.4), Sec. 4.5 (Fig. 4.11).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from graphkin.construction import Construction, Role, Step
+from graphkin.mechanisms.model import FRAME
+from graphkin.render.scale import fmt
+from graphkin.render.scene import (
+    Group,
+    Item,
+    LabelRequest,
+    Panel,
+    clip_segment,
+    finite_xy,
+    point_text,
+    safe_id,
+    sub_digits,
+)
+from graphkin.render.sources import Source, plane_of
+from graphkin.render.style import style_for_role
+
+__all__ = ["StepPainter", "image_text", "vector_math", "INTERSECTIONS", "POLES"]
+
+INTERSECTIONS = ("intersect_circles", "intersect_line_circle", "meet")
+_LAID_OFF = ("point", "rigid", "translate", "subtract", "add_along", "along_line", "similar",
+             "image", "velocity_difference", "acceleration_difference")
+POLES = {"velocity": ("o_v", "$O_V$"), "acceleration": ("o_a", "$O_A$")}
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+ARROW_HEAD = 0.085
+"""Arrowhead length in inches."""
+ARROW_HALF = 0.028
+"""Arrowhead half width in inches."""
+ARC_HALF = 0.5
+"""Half the length of an arc swung through an intersection, in inches."""
+
+
+def image_text(label: str) -> str:
+    """The letter of an image point: ``v(B)`` -> ``b``, ``a(B)`` -> ``b′``, ``v(A@4)`` -> ``a₄``.
+
+    Examples
+    --------
+    >>> image_text("v(B)"), image_text("a(C)"), image_text("v(A@4)"), image_text("a(O2)")
+    ('b', 'c′', 'a₄', 'o′₂')
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 3.5 (lowercase image letters) and
+    Sec. 4.3 (primed acceleration images).
+    """
+    prime = label.startswith("a(")
+    inner = label[2:-1] if label.endswith(")") else label
+    name, _, link = inner.partition("@")
+    base = name.split("#")[0].split(":")[-1]
+    i = len(base)
+    while i > 0 and base[i - 1].isdigit():
+        i -= 1
+    letters, digits = base[:i] or base, base[i:] if i else ""
+    return letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB)
+
+
+def vector_math(label: str) -> str:
+    """A vector's label as mathtext: ``A_CB^n`` -> ``$A^{n}_{CB}$``.
+
+    Examples
+    --------
+    >>> vector_math("A_CB^n"), vector_math("A_A/4^c"), vector_math("V_B")
+    ('$A^{n}_{CB}$', '$A^{c}_{A/4}$', '$V_{B}$')
+    """
+    base, _, rest = label.partition("_")
+    sub, _, sup = rest.partition("^")
+    sub = sub.replace("{", "").replace("}", "")
+    if not sub:
+        return label
+    return f"${base}^{{{sup}}}_{{{sub}}}$" if sup else f"${base}_{{{sub}}}$"
+
+
+def vector_style(label: str) -> str:
+    """The style of a laid-off vector from its name: normal, tangential, Coriolis."""
+    if "^c" in label:
+        return "vector-c"
+    if "^n" in label:
+        return "vector-n"
+    if "^t" in label:
+        return "vector-t"
+    return "vector-rel"
+
+
+def _is_image(label: str) -> bool:
+    return (label.startswith(("v(", "a(")) and label.endswith(")") and ":" not in label)
+
+
+def _unit(v: np.ndarray) -> np.ndarray | None:
+    n = float(np.hypot(v[0], v[1]))
+    if not math.isfinite(n) or n == 0:
+        return None
+    return v / n
+
+
+class StepPainter:
+    """Paints the steps of one construction into the panels of a sheet.
+
+    Parameters
+    ----------
+    src : Source
+    diagram : str
+        The construction's diagram.
+    panels : dict
+        ``"length"`` -> the mechanism's panel (or None), ``"polygon"`` -> the
+        panel of the diagram's plane (or None).
+    prefix : str
+        Prepended to every id (for sheets with several constructions).
+    kinds, planes : dict
+        Label -> kind and plane of every label of the source.
+    """
+
+    def __init__(self, src: Source, diagram: str, panels: dict[str, Panel | None], prefix: str,
+                 kinds: dict[str, str], planes: dict[str, str]) -> None:
+        self.src = src
+        self.diagram = diagram
+        cx = src.constructions[diagram]
+        self.cx: Construction = cx
+        self.values = src.values.get(diagram, {})
+        self.panels = panels
+        self.prefix = prefix
+        self.kinds = kinds
+        self.planes = planes
+        self.consumers: dict[str, list[Step]] = {}
+        for s in cx.steps:
+            for i in s.inputs:
+                self.consumers.setdefault(i, []).append(s)
+        self.makers: dict[str, Step] = {o: s for s in cx.steps for o in s.outputs}
+        self.drawn_points: set[str] = set()
+        self.arrows: dict[str, dict[tuple[float, ...], Item]] = {}
+        self.arrow_ends: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+        self.quiet_rates = False
+        """Leave angular rates off the mechanism (a sheet of every diagram lists them)."""
+
+    # ---- routing ------------------------------------------------------
+    def panel_for(self, step: Step) -> Panel | None:
+        """The panel a step is drawn in (None: nowhere on this sheet)."""
+        plane = plane_of(step.diagram)
+        own = plane_of(self.diagram)
+        if own == "posture":
+            return self.panels.get("length") or self.panels.get("polygon")
+        if step.kind == "scalar" or plane == "posture":
+            return self.panels.get("length") or self.panels.get("polygon")
+        return self.panels.get("polygon")
+
+    def xy(self, label: str) -> np.ndarray | None:
+        """Finite coordinates of a point label (this construction's values, then any)."""
+        v = self.values.get(label)
+        if v is None:
+            v = self.src.value(self.diagram, label)
+        return None if v is None else finite_xy(v)
+
+    def raw(self, label: str) -> np.ndarray | None:
+        """The raw value of a label (homogeneous point, line, circle, vector or scalar)."""
+        v = self.values.get(label)
+        if v is None:
+            v = self.src.value(self.diagram, label)
+        return None if v is None else np.asarray(v, dtype=float)
+
+    # ---- entry point --------------------------------------------------
+    def paint(self, upto: int | None = None, highlight: int | None = None) -> list[Group]:
+        """Paint steps ``0..upto`` (all by default); returns the groups made."""
+        groups = []
+        last = len(self.cx.steps) - 1 if upto is None else min(upto, len(self.cx.steps) - 1)
+        for step in self.cx.steps[: last + 1]:
+            panel = self.panel_for(step)
+            if panel is None:
+                continue
+            z = {"line": 2.0, "circle": 2.0, "vector": 3.0, "scalar": 3.5}.get(step.kind, 4.0)
+            g = panel.group(self.prefix + step.step_id, z, step=step, diagram=self.diagram,
+                            highlight=(highlight is not None and step.index == highlight),
+                            key=step.label)
+            groups.append(g)
+            if step.kind == "scalar":
+                self.scalar(step, g, panel)
+                continue
+            if plane_of(step.diagram) != panel.plane:
+                continue
+            getattr(self, step.kind if step.kind in ("point", "line", "circle", "vector")
+                    else "other")(step, g, panel)
+        return groups
+
+    # ---- helpers ------------------------------------------------------
+    def label(self, panel: Panel, g: Group, text: str, anchor: np.ndarray, key: str,
+              style: str = "label", gap: float = 0.045,
+              prefer: tuple[float, float] | None = None) -> None:
+        """Ask for a label near ``anchor`` (placed later, avoiding the ink)."""
+        panel.labels.append(LabelRequest(text, np.asarray(anchor, dtype=float), style,
+                                         self.prefix + "label-" + safe_id(key), g, key=key,
+                                         gap=gap, prefer=prefer))
+
+    def arrow(self, panel: Panel, g: Group, tail: np.ndarray, tip: np.ndarray, style: str,
+              key: str | None = None, text: str | None = None) -> Item | None:
+        """An arrow (deduplicated per panel); returns it, or None when empty or repeated."""
+        tail, tip = np.asarray(tail, dtype=float), np.asarray(tip, dtype=float)
+        length = float(np.hypot(*(tip - tail)))
+        if not math.isfinite(length) or length <= 1e-9 * panel.diag():
+            return None
+        tol = 1e-7 * panel.diag()
+        sig = tuple(np.round(np.concatenate([tail, tip]) / tol).astype(float).tolist())
+        seen = self.arrows.setdefault(panel.name, {})
+        if sig in seen:
+            old = seen[sig]
+            if key is not None:
+                old.aliases.append(key)
+            if style == "vector-abs":
+                old.style = style
+            return None
+        self.arrow_ends.setdefault(panel.name, []).append((tail, tip))
+        k = panel.k
+        head = min(ARROW_HEAD * k, 0.45 * length)
+        it = Item("arrow", np.array([tail, tip]), style, key=key, head=head,
+                  width=ARROW_HALF * k * head / (ARROW_HEAD * k))
+        g.items.append(it)
+        seen[sig] = it
+        if text:
+            mid = tail + 0.5 * (tip - tail)
+            self.label(panel, g, text, mid, key or text, style="label-small", gap=0.03)
+        return it
+
+    def marker(self, g: Group, xy: np.ndarray, style: str, key: str) -> Item:
+        """A point marker."""
+        it = Item("marker", np.asarray([xy], dtype=float), style, key=key)
+        g.items.append(it)
+        return it
+
+    def off_sheet(self, panel: Panel, g: Group, label: str, xy: np.ndarray) -> None:
+        """A point beyond the panel: an arrow at the edge toward it, with its coordinates."""
+        x0, y0, x1, y1 = panel.view
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        self.ideal(panel, g, label, np.array([*(xy - c), 0.0]),
+                   text=f"{point_text(label) if panel.plane == 'posture' else image_text(label)}"
+                        f" ({fmt(xy[0], 4)}, {fmt(xy[1], 4)})", center=c)
+
+    def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
+              center: np.ndarray | None = None) -> None:
+        """A point at infinity: an arrow at the panel's edge, marked ∞."""
+        d = _unit(np.asarray(p[:2], dtype=float))
+        if d is None:
+            return
+        x0, y0, x1, y1 = panel.view
+        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
+        ts = []
+        for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
+            if d[i] > 0:
+                ts.append((hi - c[i]) / d[i])
+            elif d[i] < 0:
+                ts.append((lo - c[i]) / d[i])
+        t = min(ts)
+        tip = c + d * (t - 0.12 * panel.k)
+        tail = tip - d * 0.4 * panel.k
+        self.arrow(panel, g, tail, tip, "infinity", key=label)
+        self.label(panel, g, text or f"{point_text(label)} ∞", tail, label,
+                   style="label-small" if text else "label", prefer=(-d[0], -d[1]))
+
+    # ---- points -------------------------------------------------------
+    def point(self, step: Step, g: Group, panel: Panel) -> None:
+        """A point: a pin, a dot, a construction point, an image with its vectors."""
+        for label in step.outputs:
+            p = self.raw(label)
+            if p is None or p.shape != (3,):
+                continue
+            xy = finite_xy(p)
+            if xy is None:
+                if np.all(np.isfinite(p)):
+                    self.ideal(panel, g, label, p)
+                continue
+            x0, y0, x1, y1 = panel.view
+            if not (x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1):
+                if step.role != Role.AUXILIARY:
+                    self.off_sheet(panel, g, label, xy)
+                continue
+            if panel.plane == "posture":
+                self.posture_point(step, g, panel, label, xy)
+            else:
+                self.polygon_point(step, g, panel, label, xy)
+
+    def posture_point(self, step: Step, g: Group, panel: Panel, label: str,
+                      xy: np.ndarray) -> None:
+        """A point of the mechanism's plane: a pin or dot, lettered; or a construction point."""
+        mech = self.src.mechanism
+        if mech is not None and label in mech.point_links:
+            style = "pin" if len(mech.point_links[label]) >= 2 else "point"
+            helper = not _is_joint_or_named_point(mech, label)
+            self.marker(g, xy, "aux-point" if helper else style, label)
+            self.drawn_points.add(label)
+            self.label(panel, g, point_text(label), xy, label,
+                       style="label-aux" if helper else "label")
+            return
+        shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
+        self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
+        if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
+            self.label(panel, g, point_text(label), xy, label, style="label-aux")
+
+    def polygon_point(self, step: Step, g: Group, panel: Panel, label: str,
+                      xy: np.ndarray) -> None:
+        """A point of a polygon: the pole, an image and the vectors that found it."""
+        pole_label, pole_text = POLES.get(panel.plane, (None, ""))
+        pole = self.xy(pole_label) if pole_label else None
+        if step.op == "point" or label == pole_label:
+            self.marker(g, xy, "pole", label)
+            self.label(panel, g, pole_text or point_text(label), xy, label)
+            return
+        image = _is_image(label)
+        if image:
+            self.marker(g, xy, "image-point", label)
+            self.label(panel, g, image_text(label), xy, label)
+        result = step.role == Role.RESULT
+        accel = panel.plane == "acceleration"
+        ins = step.inputs
+
+        def at_pole(q: np.ndarray | None) -> bool:
+            return pole is not None and q is not None and \
+                float(np.hypot(*(q - pole))) <= 1e-9 * panel.diag()
+
+        abs_done = False
+        if step.op == "velocity_difference":
+            ta = self.xy(ins[0])
+            if ta is not None:
+                st = "vector-abs" if (at_pole(ta) and result) else "vector-rel"
+                self.arrow(panel, g, ta, xy, st,
+                           key=f"{label}:abs" if at_pole(ta) else f"{label}:{ins[0]}")
+                abs_done = at_pole(ta)
+        elif step.op == "acceleration_difference":
+            ta = self.xy(ins[0])
+            w = self.raw(ins[1])
+            a, x = self.xy(ins[3]), self.xy(ins[4])
+            if ta is not None and w is not None and a is not None and x is not None:
+                r = x - a
+                mid = ta - float(w) ** 2 * r
+                self.arrow(panel, g, ta, mid, "vector-n", key=f"{label}:n")
+                self.arrow(panel, g, mid, xy, "vector-t", key=f"{label}:t")
+        elif step.op == "meet":
+            for line in ins:
+                thr = self.through(line)
+                if thr is None or float(np.hypot(*(thr - xy))) <= 1e-9 * panel.diag():
+                    continue
+                if at_pole(thr):
+                    self.arrow(panel, g, thr, xy, "vector-abs" if result else "vector-rel",
+                               key=f"{label}:abs")
+                    abs_done = True
+                else:
+                    self.arrow(panel, g, thr, xy, "vector-t" if accel else "vector-rel",
+                               key=f"{label}:{line}")
+        elif step.op in ("translate", "subtract"):
+            p = self.xy(ins[0])
+            if p is not None:
+                tail, tip = (p, xy) if step.op == "translate" else (xy, p)
+                st = vector_style(ins[1])
+                self.arrow(panel, g, tail, tip, st, key=ins[1],
+                           text=vector_math(ins[1]) if st in ("vector-n", "vector-c") else None)
+        elif step.op == "add_along":
+            p = self.xy(ins[0])
+            if p is not None:
+                self.arrow(panel, g, p, xy, "vector-rel", key=f"{label}:along")
+                abs_done = at_pole(p) and result
+        if result and pole is not None and not abs_done and image:
+            self.arrow(panel, g, pole, xy, "vector-abs", key=f"{label}:abs")
+
+    def through(self, line: str) -> np.ndarray | None:
+        """The point a line was drawn through (the tip of the vector it continues)."""
+        s = self.makers.get(line)
+        if s is None:
+            return None
+        plane = plane_of(s.diagram)
+        for i in reversed(s.inputs):
+            if self.kinds.get(i) == "point" and self.planes.get(i) == plane:
+                return self.xy(i)
+        return None
+
+    # ---- lines --------------------------------------------------------
+    def line(self, step: Step, g: Group, panel: Panel) -> None:
+        """A line, as long as the points on it need, with its right-angle mark."""
+        label = step.outputs[0]
+        ln = self.raw(label)
+        if ln is None or ln.shape != (3,) or not np.all(np.isfinite(ln)):
+            return
+        n = ln[:2]
+        nn = float(np.hypot(*n))
+        if nn == 0:
+            return
+        n = n / nn
+        c = ln[2] / nn
+        d = np.array([n[1], -n[0]])
+        eps = 1e-7 * panel.diag()
+        on: list[np.ndarray] = []
+        for i in step.inputs:
+            if self.kinds.get(i) == "point" and self.planes.get(i) == panel.plane:
+                q = self.xy(i)
+                if q is not None and abs(float(n @ q) + c) <= eps:
+                    on.append(q)
+        through = on[0] if on else None
+        foot = None
+        rn = n
+        if step.op == "perpendicular" and self.planes.get(step.inputs[0]) == panel.plane:
+            ref = self.raw(step.inputs[0])
+            if ref is not None and through is not None:
+                rn = ref[:2] / float(np.hypot(*ref[:2]))
+                rc = ref[2] / float(np.hypot(*ref[:2]))
+                foot = through - (float(rn @ through) + rc) * rn
+                on.append(foot)
+        for s in self.consumers.get(label, []):
+            if plane_of(s.diagram) != panel.plane:
+                continue
+            for o in s.outputs:
+                if self.kinds.get(o) == "point":
+                    q = self.xy(o)
+                    if q is not None and abs(float(n @ q) + c) <= eps * 10:
+                        on.append(q)
+        k = panel.k
+        if on:
+            ts = [float(d @ q) for q in on]
+            base = on[0] - ts[0] * d
+            lo, hi = min(ts), max(ts)
+            ext = 0.3 * k if hi - lo > 1e-9 * panel.diag() else 0.9 * k
+            p0, p1 = base + (lo - ext) * d, base + (hi + ext) * d
+        else:
+            x0, y0, x1, y1 = panel.view
+            center = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+            base = center - (float(n @ center) + c) * n
+            p0, p1 = base - panel.diag() * d, base + panel.diag() * d
+        seg = clip_segment(p0, p1, panel.view)
+        if seg is None:
+            return
+        style = ("ref-line" if self.diagram != step.diagram and step.op == "join"
+                 else style_for_role(step.role, "line"))
+        g.items.append(Item("path", np.array(seg), style, key=label))
+        # right-angle marks
+        if step.op == "perpendicular" and through is not None:
+            if foot is not None:
+                away = [q for q in on if float(np.hypot(*(q - foot))) > eps]
+                u = _unit(away[0] - foot) if away else d
+                ref_dir = np.array([rn[1], -rn[0]])
+                if u is not None:
+                    self.right_angle(g, panel, foot, u, ref_dir)
+                return
+            far = [q for q in on if float(np.hypot(*(q - through))) > eps]
+            u = _unit(far[-1] - through) if far else d
+            if u is None:
+                return
+            for tail, tip in self.arrow_ends.get(panel.name, []):
+                if float(np.hypot(*(tip - through))) <= eps:
+                    back = _unit(tail - tip)
+                    if back is not None and abs(float(back @ u)) < 1e-6:
+                        self.right_angle(g, panel, through, u, back)
+                        break
+
+    def right_angle(self, g: Group, panel: Panel, at: np.ndarray, u: np.ndarray,
+                    v: np.ndarray) -> None:
+        """A right-angle mark at ``at`` between the directions ``u`` and ``v``."""
+        s = 0.06 * panel.k
+        pts = np.array([at + s * u, at + s * (u + v), at + s * v])
+        g.items.append(Item("path", pts, "right-angle"))
+
+    # ---- circles ------------------------------------------------------
+    def circle(self, step: Step, g: Group, panel: Panel) -> None:
+        """A circle: arcs where it is cut, or the whole circle."""
+        label = step.outputs[0]
+        c = self.raw(label)
+        if c is None or c.shape != (3,) or not np.all(np.isfinite(c)) or c[2] <= 0:
+            return
+        center, r = c[:2], float(c[2])
+        style = style_for_role(step.role, "circle")
+        cuts = []
+        for s in self.consumers.get(label, []):
+            if plane_of(s.diagram) != panel.plane:
+                continue
+            for o in s.outputs:
+                if self.kinds.get(o) == "point":
+                    q = self.xy(o)
+                    if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
+                        cuts.append(q)
+        if not cuts:
+            # no intersection cuts it: mark the later points that lie on it (a tangent's foot)
+            for s in self.cx.steps[step.index + 1:]:
+                if plane_of(s.diagram) != panel.plane:
+                    continue
+                for o in s.outputs:
+                    if o in step.inputs or self.kinds.get(o) != "point":
+                        continue
+                    q = self.xy(o)
+                    if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
+                        cuts.append(q)
+        if not cuts or step.role == Role.RESULT:
+            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r))
+            return
+        half = min(max(6.0, math.degrees(ARC_HALF * panel.k / r)), 170.0)
+        for i, q in enumerate(cuts):
+            phi = math.degrees(math.atan2(q[1] - center[1], q[0] - center[0]))
+            g.items.append(Item("arc", np.array([center]), style,
+                                key=label if i == 0 else f"{label}:{i}", radius=r,
+                                theta1=phi - half, theta2=phi + half))
+
+    # ---- vectors ------------------------------------------------------
+    def vector(self, step: Step, g: Group, panel: Panel) -> None:
+        """A vector: drawn where it is laid off, else from the pole."""
+        label = step.outputs[0]
+        if any(s.op in ("translate", "subtract") for s in self.consumers.get(label, [])):
+            return  # drawn where it is laid off
+        pole_label = POLES.get(panel.plane, (None, ""))[0]
+        pole = self.xy(pole_label) if pole_label else None
+        v = self.raw(label)
+        if pole is None or v is None or v.shape != (2,) or not np.all(np.isfinite(v)):
+            return
+        self.arrow(panel, g, pole, pole + v, vector_style(label), key=label,
+                   text=vector_math(label))
+
+    def other(self, step: Step, g: Group, panel: Panel) -> None:
+        """A step of an unknown kind draws nothing (its group still exists)."""
+
+    # ---- scalars: angles and angular rates on the mechanism -------------
+    def scalar(self, step: Step, g: Group, panel: Panel) -> None:
+        """An input angle or an angular rate, drawn on its link."""
+        label = step.outputs[0]
+        mech = self.src.mechanism
+        sol = self.src.solution
+        if mech is None or sol is None or panel.plane != "posture":
+            return
+        v = self.raw(label)
+        if v is None or v.shape != () or not math.isfinite(float(v)):
+            return
+        value = float(v)
+        sym, lid = label[:1], label[1:]
+        if sym in ("ω", "α"):
+            rates = [abs(float(self.values[f"{sym}{x}"])) for x in mech.links
+                     if f"{sym}{x}" in self.values
+                     and np.shape(self.values[f"{sym}{x}"]) == ()]
+            if abs(value) <= 1e-9 * max([1.0, *rates]):
+                value = 0.0  # zero but for round-off: say so
+        if lid not in mech.links or lid == FRAME:
+            return
+        center, direction = _link_center(self.src, lid)
+        if center is None:
+            return
+        k = panel.k
+        if sym == "θ" and step.op == "input":
+            self.angle_arc(g, panel, center, value, label)
+        elif sym in ("ω", "α") and not self.quiet_rates and not (
+                value == 0 and step.op in ("add_angle", "scalar")):
+            unit = "rad/s" if sym == "ω" else "rad/s²"
+            text = f"{sym}{sub_digits('x' + lid)[1:]} = {fmt(abs(value), 4)} {unit}"
+            if value != 0:
+                text += " ccw" if value > 0 else " cw"
+            radius = (0.2 if sym == "ω" else 0.3) * k
+            start = direction + math.radians(60 if sym == "ω" else 100)
+            if value == 0:
+                self.label(panel, g, text, center, label, style="label-small", gap=0.25)
+                return
+            sweep = math.radians(250) * (1 if value > 0 else -1)
+            ts = np.linspace(start, start + sweep, 41)
+            pts = center + radius * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
+            g.items.append(Item("path", pts[:-3], "rate", key=label))
+            tan = pts[-1] - pts[-4]
+            self.arrow(panel, g, pts[-1] - tan * 0.01, pts[-1], "rate", key=f"{label}:head")
+            # make the head a fixed size pointing along the arc's end
+            g.items[-1].xy = np.array([pts[-4], pts[-1]])
+            g.items[-1].head = min(0.08 * k, float(np.hypot(*tan)) * 1.5)
+            g.items[-1].width = g.items[-1].head * 0.35
+            mid = center + (radius + 0.02 * k) * np.array([math.cos(start + sweep / 2),
+                                                            math.sin(start + sweep / 2)])
+            self.label(panel, g, text, mid, label, style="label-small", gap=0.05,
+                       prefer=(math.cos(start + sweep / 2), math.sin(start + sweep / 2)))
+
+    def angle_arc(self, g: Group, panel: Panel, pivot: np.ndarray, theta: float,
+                  label: str) -> None:
+        """The input angle: a datum line along +x and an arc to the link (θ2 = 120°)."""
+        k = panel.k
+        r = 0.32 * k
+        g.items.append(Item("path", np.array([pivot, pivot + [0.5 * k, 0.0]]), "datum",
+                            key=f"{label}:datum"))
+        t = math.atan2(math.sin(theta), math.cos(theta))
+        ts = np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3), 2) + 1)
+        pts = pivot + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
+        g.items.append(Item("path", pts, "angle-arc", key=label))
+        if len(pts) >= 3:
+            head = min(0.07 * k, 0.5 * r * abs(t))
+            it = Item("arrow", np.array([pts[-3], pts[-1]]), "angle-arc", key=f"{label}:head",
+                      head=head, width=head * 0.35)
+            g.items.append(it)
+        mid = pivot + (r + 0.02 * k) * np.array([math.cos(t / 2), math.sin(t / 2)])
+        lid = label[1:]
+        self.label(panel, g, f"θ{sub_digits('x' + lid)[1:]} = {fmt(math.degrees(theta), 5)}°",
+                   mid, label, style="label-small", gap=0.04,
+                   prefer=(math.cos(t / 2), math.sin(t / 2)))
+
+
+def _is_joint_or_named_point(mech: object, label: str) -> bool:
+    """A point worth a letter: a joint, a slider point, or a point of a moving link."""
+    links = mech.point_links[label]  # type: ignore[attr-defined]
+    if len(links) >= 2:
+        return True
+    if any(s.point == label for s in (*mech.sliders, *mech.slots)):  # type: ignore[attr-defined]
+        return True
+    return links != [FRAME]
+
+
+def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
+    """Where a link's rate is drawn: its frame pivot if it has one, else its centroid.
+
+    Returns the point and the direction (rad) of the link's body from there.
+    """
+    sol = src.solution
+    mech = src.mechanism
+    if sol is None or mech is None:
+        return None, 0.0
+    names = list(mech.links[lid].points)
+    if not names:
+        return None, 0.0
+    pts = {n: np.asarray(sol.position(n, lid), dtype=float) for n in names}
+    frame = mech.links[FRAME].points
+    pivots = [n for n in names if n in frame]
+    if pivots:
+        c = pts[pivots[0]]
+        others = [pts[n] - c for n in names if float(np.hypot(*(pts[n] - c))) > 0]
+    else:
+        c = np.mean(list(pts.values()), axis=0)
+        others = [pts[n] - c for n in names]
+    if others:
+        m = np.mean(others, axis=0)
+        ang = math.atan2(m[1], m[0]) if float(np.hypot(*m)) > 0 else 0.0
+    else:
+        ang = 0.0
+    return c, ang
+
+
+PaintFn = Callable[[Step, Group, Panel], None]

@@ -1,0 +1,343 @@
+"""The results table of a sheet: each value read off the construction beside the analytic one.
+
+A drawing proves itself on its face: every angle, angular rate, velocity
+and acceleration the construction found is listed with the value of the
+independent analytic solver (Newton-Raphson on the loop-closure equations,
+:func:`graphkin.kinematics.analytic.solve_analytic`) and their relative
+difference.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.9-2.11, 3.9 and 4.9 (the analytic
+solutions the graphic ones are checked against).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from graphkin.errors import GraphkinError
+from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import FRAME
+from graphkin.render.paint import _is_joint_or_named_point
+from graphkin.render.scale import fmt, fmt_angle
+from graphkin.render.scene import finite_xy, sub_digits
+from graphkin.render.sources import Source
+
+__all__ = ["Row", "result_rows", "analytic_solution", "AGREE"]
+
+AGREE = 1e-6
+"""Relative difference below which a value is marked as agreeing (✓)."""
+
+
+@dataclass(frozen=True)
+class Row:
+    """One line of the results table.
+
+    Attributes
+    ----------
+    key : str
+        ``theta3``, ``omega3``, ``V_C``...: a stable id for the row.
+    quantity : str
+        As printed (``ω₃``, ``V_C``).
+    unit : str
+    drawn, exact : str
+        The construction's value and the analytic one, formatted.
+    diff : float or None
+        Relative difference (None when there is no analytic value).
+    """
+
+    key: str
+    quantity: str
+    unit: str
+    drawn: str
+    exact: str
+    diff: float | None
+    drawn_value: tuple[float, ...] = ()
+    exact_value: tuple[float, ...] = ()
+
+
+def analytic_solution(sol: Solution, unit_rates: bool = False) -> Solution | None:
+    """The analytic solution on the construction's branch (None when it cannot be had).
+
+    Newton's method starts from the construction's posture, so both describe
+    the same assembly; the values are then computed independently.  With
+    ``unit_rates`` every drive gets a unit rate when the file gives none (the
+    instant centers of one degree of freedom do not depend on the input speed).
+    """
+    try:
+        from graphkin.kinematics.analytic import solve_analytic
+    except ImportError:  # pragma: no cover - the solver ships with graphkin
+        return None
+    guess = {lid: (float(st.origin[0]), float(st.origin[1]), float(st.angle))
+             for lid, st in sol.links.items() if lid != FRAME}
+    mech = sol.mechanism
+    if unit_rates and not mech.has_rates:
+        mech = replace(mech, rates=None,
+                       drives=tuple(replace(d, rate=1.0, rate2=0.0) for d in mech.drives))
+    try:
+        return solve_analytic(mech, guess=guess)
+    except (GraphkinError, ValueError, ArithmeticError):
+        return None
+
+
+def _rel(d: np.ndarray, e: np.ndarray, scale: float) -> float:
+    """|d - e| relative to |e|, or to ``scale`` (a thousandth of the diagram's size) if larger."""
+    diff = float(np.hypot(*np.atleast_1d(np.asarray(d) - np.asarray(e))[:2])) \
+        if np.ndim(d) else abs(float(d) - float(e))
+    size = float(np.hypot(*np.atleast_1d(e)[:2])) if np.ndim(e) else abs(float(e))
+    return diff / max(size, scale, 1e-300)
+
+
+def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None) -> list[Row]:
+    """The rows for the given diagrams (posture, velocity, acceleration).
+
+    Parameters
+    ----------
+    src : Source
+    diagrams : list of str
+    exact : Solution, optional
+        The analytic solution (computed when not given).
+    """
+    sol = src.solution
+    if sol is None:
+        return []
+    mech = sol.mechanism
+    if exact is None:
+        exact = analytic_solution(sol)
+    unit = mech.length_unit
+    rows: list[Row] = []
+    names = [n for n in mech.point_names
+             if FRAME not in mech.point_links[n] and _is_joint_or_named_point(mech, n)]
+    for d in diagrams:
+        vals = src.values.get(d, {})
+        if d == "posture":
+            for lid in mech.moving:
+                lab = f"θ{lid}"
+                v = vals.get(lab)
+                th = float(v) if v is not None else float(sol.angle(lid))
+                e = None if exact is None else float(exact.angle(lid))
+                diff = None if e is None else abs(math.remainder(th - e, 2 * math.pi))
+                rows.append(Row(f"theta{lid}", "θ" + sub_digits("x" + lid)[1:], "deg",
+                                f"{math.degrees(math.remainder(th, 2 * math.pi)):.4f}",
+                                "—" if e is None else
+                                f"{math.degrees(math.remainder(e, 2 * math.pi)):.4f}",
+                                diff, (th,), () if e is None else (e,)))
+            for n in names:
+                p = finite_xy(vals[n]) if n in vals else np.asarray(sol.position(n))
+                if p is None:
+                    continue
+                e = None if exact is None else np.asarray(exact.position(n), dtype=float)
+                tiny = 1e-9 * mech.scale
+                rows.append(Row(f"R_{n}", f"R_{n}", unit, _pair(p, tiny),
+                                "—" if e is None else _pair(e, tiny),
+                                None if e is None else _rel(p, e, 1e-3 * mech.scale),
+                                tuple(map(float, p)), () if e is None else tuple(map(float, e))))
+        elif d in ("velocity", "acceleration"):
+            sym, img, pole = ("ω", "v", "o_v") if d == "velocity" else ("α", "a", "o_a")
+            qunit = "rad/s" if d == "velocity" else "rad/s²"
+            vunit = f"{unit}/s" if d == "velocity" else f"{unit}/s²"
+            tiny = 1e-9 * max([1.0, *(abs(float(vals[f"{sym}{x}"])) for x in mech.moving
+                                      if f"{sym}{x}" in vals)])
+            for lid in mech.moving:
+                v = vals.get(f"{sym}{lid}")
+                if v is None:
+                    continue
+                w = float(v)
+                e = None
+                if exact is not None:
+                    e = float(exact.omega(lid) if d == "velocity" else exact.alpha(lid))
+                rows.append(Row(f"{'omega' if d == 'velocity' else 'alpha'}{lid}",
+                                sym + sub_digits("x" + lid)[1:], qunit, _rate(w, tiny),
+                                "—" if e is None else _rate(e, tiny),
+                                None if e is None else _rel(np.float64(w), np.float64(e),
+                                                            tiny * 1e6),
+                                (w,), () if e is None else (e,)))
+            o = finite_xy(vals[pole]) if pole in vals else None
+            sizes = [float(np.hypot(*(finite_xy(vals[f"{img}({n})"]) - o))) for n in names
+                     if o is not None and f"{img}({n})" in vals
+                     and finite_xy(vals[f"{img}({n})"]) is not None]
+            vscale = 1e-3 * max([0.0, *sizes])
+            for n in names:
+                lab = f"{img}({n})"
+                if lab not in vals or o is None:
+                    continue
+                p = finite_xy(vals[lab])
+                if p is None:
+                    continue
+                vec = p - o
+                e = None
+                if exact is not None:
+                    e = np.asarray(exact.velocity(n) if d == "velocity"
+                                   else exact.acceleration(n), dtype=float)
+                rows.append(Row(f"{'V' if d == 'velocity' else 'A'}_{n}",
+                                f"{'V' if d == 'velocity' else 'A'}_{n}", vunit,
+                                _polar(vec, vscale * 1e-6),
+                                "—" if e is None else _polar(e, vscale * 1e-6),
+                                None if e is None else _rel(vec, e, vscale),
+                                tuple(map(float, vec)),
+                                () if e is None else tuple(map(float, e))))
+        elif d == "centers":
+            rows.extend(_center_rows(src, exact, unit))
+        elif d == "curvature":
+            rows.extend(_curvature_rows(src, exact, unit))
+    return rows
+
+
+def _body(exact: Solution, lid: str, world: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Velocity and acceleration of the point of link ``lid`` at ``world`` (Eqs. 3.4, 4.5)."""
+    st = exact.links[lid]
+    c, s = math.cos(float(st.angle)), math.sin(float(st.angle))
+    d = np.asarray(world, dtype=float) - np.asarray(st.origin, dtype=float)
+    local = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
+    return np.asarray(st.velocity(local), dtype=float), np.asarray(st.acceleration(local),
+                                                                   dtype=float)
+
+
+def equal_velocity_point(exact: Solution, i: str, j: str) -> np.ndarray:
+    """Where links ``i`` and ``j`` have the same velocity: their instant center, homogeneous.
+
+    From ``V_i(X) = V_j(X)`` with ``V(X) = V(0) + ω k × X`` (Eq. 3.4):
+    ``k × X = -(V_i(0) - V_j(0))/(ω_i - ω_j)``; when ``ω_i = ω_j`` the center
+    is at infinity, perpendicular to the difference of velocities.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 3.12 (the definition of an instant center).
+    """
+    vi, _ = _body(exact, i, np.zeros(2))
+    vj, _ = _body(exact, j, np.zeros(2))
+    dv = vi - vj
+    dw = float(exact.omega(i)) - float(exact.omega(j))
+    size = max(float(np.hypot(*vi)), float(np.hypot(*vj)), 1e-300)
+    if abs(dw) * exact.mechanism.scale <= 1e-12 * size:
+        return np.array([-dv[1], dv[0], 0.0]) / max(float(np.hypot(*dv)), 1e-300)
+    w = -dv / dw
+    return np.array([w[1], -w[0], 1.0])
+
+
+def _center_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]:
+    ic = src.extras.get("centers")
+    vals = src.values.get("centers", {})
+    rows: list[Row] = []
+    if ic is None:
+        return rows
+    scale = 1e-3 * src.solution.mechanism.scale  # type: ignore[union-attr]
+    if exact is not None and not exact.has_rates and src.solution is not None:
+        exact = analytic_solution(src.solution, unit_rates=True)
+    for c in getattr(ic, "centers", {}).values():
+        lab = c.label
+        if lab not in vals:
+            continue
+        p = np.asarray(vals[lab], dtype=float)
+        e = None
+        if exact is not None and exact.has_rates:
+            e = equal_velocity_point(exact, *c.pair)
+        rows.append(Row(f"center-{lab}", lab, unit, _homog(p, scale * 1e-6),
+                        "—" if e is None else _homog(e, scale * 1e-6),
+                        None if e is None else _homog_diff(p, e, scale),
+                        tuple(map(float, p)), () if e is None else tuple(map(float, e))))
+    return rows
+
+
+def _curvature_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]:
+    lc = src.extras.get("curvature")
+    vals = src.values.get("curvature", {})
+    if lc is None or exact is None or not exact.has_accelerations:
+        return []
+    lid = lc.link
+    mech = exact.mechanism
+    scale = 1e-3 * mech.scale
+    w = float(exact.omega(lid))
+    al = float(exact.alpha(lid))
+    st = exact.links[lid]
+    rows: list[Row] = []
+    ie = equal_velocity_point(exact, lid, FRAME)
+    if abs(ie[2]) < 1e-12:
+        return rows
+    i_xy = ie[:2] / ie[2]
+    a_i = _body(exact, lid, i_xy)[1]
+    j_xy = i_xy + a_i / w**2  # Eq. 4.46: A_I = ω² R_JI, from I toward J
+    a0 = _body(exact, lid, np.zeros(2))[1]
+    m = np.array([[-w**2, -al], [al, -w**2]])
+    gamma = np.linalg.solve(m, -a0)  # A(X) = A(0) + α k × X - ω² X = 0
+    expected: dict[str, np.ndarray] = {"I": i_xy, "J": j_xy, "Γ": gamma}
+    for n in mech.links[lid].points:
+        v, a = st.velocity(mech.links[lid].points[n]), st.acceleration(mech.links[lid].points[n])
+        v, a = np.asarray(v, dtype=float), np.asarray(a, dtype=float)
+        cr = float(v[0] * a[1] - v[1] * a[0])
+        sp = float(np.hypot(*v))
+        if sp == 0 or abs(cr) <= 1e-12 * sp * float(np.hypot(*a)) + 1e-300:
+            continue
+        rho = sp**3 / cr  # signed: the center is to the left of V when positive
+        nrm = np.array([-v[1], v[0]]) / sp
+        expected[f"{n}'"] = np.asarray(exact.position(n, lid), dtype=float) + rho * nrm
+    for lab, e in expected.items():
+        if lab not in vals:
+            continue
+        p = finite_xy(vals[lab])
+        if p is None:
+            continue
+        rows.append(Row(f"curvature-{safe_label(lab)}", lab, unit, _pair(p, scale * 1e-6),
+                        _pair(e, scale * 1e-6),
+                        _rel(p, e, scale), tuple(map(float, p)), tuple(map(float, e))))
+    if "I" in vals and "J" in vals:
+        p_i, p_j = finite_xy(vals["I"]), finite_xy(vals["J"])
+        if p_i is not None and p_j is not None:
+            d = float(np.hypot(*(p_j - p_i)))
+            de = float(np.hypot(*(j_xy - i_xy)))
+            rows.append(Row("curvature-inflection-diameter", "|IJ|", unit, fmt(d, 6), fmt(de, 6),
+                            abs(d - de) / max(de, scale), (d,), (de,)))
+    return rows
+
+
+def safe_label(text: str) -> str:
+    """A label as a row id."""
+    return "".join(ch if ch.isalnum() else "_" for ch in text)
+
+
+def _homog(p: np.ndarray, tiny: float = 0.0) -> str:
+    q = finite_xy(p)
+    if q is not None:
+        return _pair(q, tiny)
+    d = np.asarray(p[:2], dtype=float)
+    n = float(np.hypot(*d))
+    if n == 0:
+        return "—"
+    d = d / n
+    d = np.where(np.abs(d) < 1e-12, 0.0, d)
+    if d[0] < 0 or (d[0] == 0 and d[1] < 0):
+        d = -d
+    return f"∞ along ({fmt(d[0], 4)}, {fmt(d[1], 4)})"
+
+
+def _homog_diff(p: np.ndarray, e: np.ndarray, scale: float) -> float:
+    a, b = finite_xy(p), finite_xy(e)
+    if a is not None and b is not None:
+        return _rel(a, b, scale)
+    if a is None and b is None:
+        u, v = np.asarray(p[:2], dtype=float), np.asarray(e[:2], dtype=float)
+        u, v = u / float(np.hypot(*u)), v / float(np.hypot(*v))
+        return abs(float(u[0] * v[1] - u[1] * v[0]))
+    return math.inf
+
+
+def _pair(p: np.ndarray, tiny: float = 0.0) -> str:
+    x, y = (0.0 if abs(float(c)) <= tiny else float(c) for c in p[:2])
+    return f"({fmt(x, 6)}, {fmt(y, 6)})"
+
+
+def _rate(w: float, tiny: float = 0.0) -> str:
+    if abs(w) <= tiny:
+        return "0"
+    return f"{fmt(abs(w), 6)} {'ccw' if w > 0 else 'cw'}"
+
+
+def _polar(v: np.ndarray, tiny: float = 0.0) -> str:
+    m = float(np.hypot(*v))
+    if m <= tiny:
+        return "0"
+    return f"{fmt(m, 6)} {fmt_angle(math.atan2(v[1], v[0]))}"

@@ -1,0 +1,234 @@
+"""The scene of a drawing: panels of groups of items, in data coordinates, without matplotlib.
+
+A sheet is a few *panels* (the mechanism, a velocity polygon, ...), each
+drawn to its own round scale.  A panel holds *groups*: one per construction
+step (its id is the step's id, ``step-07-C``) and one per part of the
+mechanism (``link-3``, ``frame``).  A group holds *items*: a path, a polygon,
+a marker, an arrow, a text.  Labels are placed after everything else is
+known, so that they avoid the lines and each other.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (a construction, step by step).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from graphkin.construction import Step
+from graphkin.render.scale import Scale
+
+__all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
+           "sub_digits", "point_text"]
+
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def safe_id(text: str) -> str:
+    """A label made safe for an SVG id, the way :attr:`Step.step_id` does it.
+
+    Examples
+    --------
+    >>> safe_id("v(B)")
+    'v_B_'
+    """
+    return "".join(ch if ch.isalnum() or ch in "_-" else "_" for ch in text)
+
+
+def sub_digits(text: str) -> str:
+    """Trailing digits as subscripts: ``O2`` -> ``O₂`` (the book's O₂, L₁).
+
+    Examples
+    --------
+    >>> sub_digits("O2"), sub_digits("B"), sub_digits("12")
+    ('O₂', 'B', '12')
+    """
+    i = len(text)
+    while i > 0 and text[i - 1].isdigit():
+        i -= 1
+    if i == 0 or i == len(text):
+        return text
+    return text[:i] + text[i:].translate(_SUB)
+
+
+def point_text(label: str) -> str:
+    """How a point's label is printed: construction suffixes dropped, digits subscript.
+
+    Examples
+    --------
+    >>> point_text("sliders[0]:T"), point_text("O4"), point_text("C'#3")
+    ('T', 'O₄', "C'")
+    """
+    base = label.split("#")[0].split(":")[-1]
+    return sub_digits(base)
+
+
+def finite_xy(p: Any, tol: float = 1e-12) -> np.ndarray | None:
+    """``(x, y)`` of a finite homogeneous point, or None (ideal, NaN or not a point)."""
+    a = np.asarray(p, dtype=float)
+    if a.shape != (3,) or not np.all(np.isfinite(a)):
+        return None
+    w = a[2]
+    if abs(w) <= tol * max(1.0, abs(a[0]), abs(a[1])):
+        return None
+    return a[:2] / w
+
+
+def clip_segment(p0: np.ndarray, p1: np.ndarray,
+                 rect: tuple[float, float, float, float]) -> tuple[np.ndarray, np.ndarray] | None:
+    """The part of the segment ``p0 p1`` inside ``rect = (x0, y0, x1, y1)`` (Liang-Barsky).
+
+    Examples
+    --------
+    >>> a, b = clip_segment(np.array([-5.0, 0]), np.array([5.0, 0]), (-1, -1, 1, 1))
+    >>> a.tolist(), b.tolist()
+    ([-1.0, 0.0], [1.0, 0.0])
+    """
+    x0, y0, x1, y1 = rect
+    d = p1 - p0
+    t0, t1 = 0.0, 1.0
+    for p, q in ((-d[0], p0[0] - x0), (d[0], x1 - p0[0]), (-d[1], p0[1] - y0),
+                 (d[1], y1 - p0[1])):
+        if p == 0:
+            if q < 0:
+                return None
+            continue
+        r = q / p
+        if p < 0:
+            t0 = max(t0, r)
+        else:
+            t1 = min(t1, r)
+        if t0 > t1:
+            return None
+    return p0 + t0 * d, p0 + t1 * d
+
+
+@dataclass
+class Item:
+    """One drawable thing, in data coordinates.
+
+    ``kind`` is ``path`` (a polyline), ``polygon``, ``marker`` (one point),
+    ``arrow`` (``xy = [tail, tip]``), ``circle`` (``xy = [center]``, ``radius``),
+    ``arc`` (also ``theta1``, ``theta2`` in degrees) or ``text``.
+    """
+
+    kind: str
+    xy: np.ndarray
+    style: str
+    gid: str | None = None
+    text: str = ""
+    key: str | None = None
+    radius: float = 0.0
+    theta1: float = 0.0
+    theta2: float = 360.0
+    ha: str = "center"
+    va: str = "center"
+    head: float = 0.0
+    """Arrowhead length (data units) for arrows."""
+    width: float = 0.0
+    """Arrowhead half width (data units)."""
+    overrides: dict[str, Any] = field(default_factory=dict)
+    aliases: list[str] = field(default_factory=list)
+    """Other keys under which :func:`~graphkin.render.draw` returns this item's artist."""
+
+
+@dataclass
+class Group:
+    """A group of items with a stable id: a construction step or a part of the mechanism."""
+
+    gid: str
+    z: float
+    items: list[Item] = field(default_factory=list)
+    step: Step | None = None
+    diagram: str | None = None
+    highlight: bool = False
+    key: str | None = None
+
+
+@dataclass
+class LabelRequest:
+    """A label to place near ``anchor`` (data coordinates) avoiding everything else."""
+
+    text: str
+    anchor: np.ndarray
+    style: str
+    gid: str
+    group: Group
+    key: str | None = None
+    gap: float = 0.045
+    """Clearance from the anchor, in inches."""
+    prefer: tuple[float, float] | None = None
+    """A preferred direction away from the anchor (unit vector), if any."""
+    center: bool = False
+    """Allow the label to sit on the anchor itself (a link number inside a plate)."""
+
+
+@dataclass
+class Panel:
+    """One diagram of a sheet, drawn to its own scale.
+
+    Attributes
+    ----------
+    name : str
+        ``posture``, ``velocity``, ``acceleration``, ``centers``, ``curvature`` or
+        ``results``.
+    plane : str
+        The plane of its points (``posture``, ``velocity``, ``acceleration``).
+    title : str
+    unit : str
+        The data unit (``in/s``).
+    bbox : tuple
+        Content extent in data units ``(x0, y0, x1, y1)``.
+    scale : Scale or None
+        ``None`` for the results table.
+    view : tuple
+        The data rectangle the panel shows (content plus margins).
+    """
+
+    name: str
+    plane: str
+    title: str
+    unit: str
+    bbox: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0)
+    scale: Scale | None = None
+    view: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 1.0)
+    groups: list[Group] = field(default_factory=list)
+    labels: list[LabelRequest] = field(default_factory=list)
+    prefix: str = ""
+    mechanism: bool = False
+    pole: str | None = None
+    origin: tuple[float, float] = (0.0, 0.0)
+    """Where the panel sits on the sheet: its lower-left corner in inches."""
+
+    @property
+    def k(self) -> float:
+        """Data units per inch of paper."""
+        return 1.0 if self.scale is None else self.scale.per_inch
+
+    @property
+    def size(self) -> tuple[float, float]:
+        """Width and height in inches."""
+        x0, y0, x1, y1 = self.view
+        return (x1 - x0) / self.k, (y1 - y0) / self.k
+
+    def group(self, gid: str, z: float, **kw: Any) -> Group:
+        """A new group, appended."""
+        g = Group(gid, z, **kw)
+        self.groups.append(g)
+        return g
+
+    def to_paper(self, xy: np.ndarray) -> np.ndarray:
+        """Data coordinates to inches from the panel's lower-left corner."""
+        x0, y0, _, _ = self.view
+        a = np.asarray(xy, dtype=float)
+        return (a - np.array([x0, y0])) / self.k
+
+    def diag(self) -> float:
+        """The diagonal of the view, in data units."""
+        x0, y0, x1, y1 = self.view
+        return math.hypot(x1 - x0, y1 - y0)

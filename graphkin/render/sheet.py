@@ -1,0 +1,418 @@
+"""A drawing sheet: the panels of one or all diagrams, each to scale, and the results table.
+
+:func:`build_sheet` turns a :class:`~graphkin.render.sources.Source` into a
+:class:`Sheet` of panels (pure data: no matplotlib); :mod:`graphkin.render.mpl`
+then turns the sheet into a matplotlib figure.
+
+* ``posture``: the mechanism with its posture construction (arcs, lines,
+  intersections);
+* ``velocity`` / ``acceleration``: the mechanism (with its angular rates) beside
+  the polygon, each to its own round scale;
+* ``centers`` / ``curvature``: the mechanism with that construction;
+* ``all``: every diagram that can be drawn.
+
+Each sheet ends with the results table (values read off the construction
+and the analytic ones).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4, 4.3 (Figs. 2.14, 3.5, 4.4).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from shapely.geometry import MultiPoint
+
+from graphkin.construction import Role
+from graphkin.mechanisms.model import FRAME
+from graphkin.render.labels import place_labels, text_size
+from graphkin.render.mechanism import mechanism_extent, paint_mechanism
+from graphkin.render.paint import POLES, StepPainter
+from graphkin.render.results import Row, result_rows
+from graphkin.render.scale import choose_scale, paper_unit, quantity_unit
+from graphkin.render.scene import Item, Panel, finite_xy, safe_id
+from graphkin.render.sources import (
+    DIAGRAMS,
+    DiagramUnavailable,
+    Source,
+    plane_of,
+    title_of,
+)
+from graphkin.render.style import IMAGE_FILLS, STYLES
+
+__all__ = ["Sheet", "build_sheet", "MARGIN", "TITLE_H", "FOOT_H"]
+
+MARGIN = 0.45
+"""Clearance around a panel's content, in inches."""
+TITLE_H = 0.3
+"""Height of a panel's title strip, in inches."""
+FOOT_H = 0.4
+"""Height of a panel's scale-bar strip, in inches."""
+GAP = 0.12
+"""Space between panels, in inches."""
+SHEET_TITLE_H = 0.4
+"""Height of the sheet's title, in inches."""
+FAR = 1.0
+"""Construction points farther than this many mechanism sizes from the mechanism are
+left off the sheet."""
+FAR_RESULT = 4.0
+"""Results and given points are kept on the sheet up to this many mechanism sizes away
+(beyond, an arrow at the edge points to them)."""
+
+
+@dataclass
+class Sheet:
+    """Panels laid out on a sheet.
+
+    Attributes
+    ----------
+    panels : list of Panel
+    size : tuple
+        Width and height in inches.
+    title : str
+    diagram : str
+    rows : list of Row
+        The results table (empty when not asked for).
+    """
+
+    panels: list[Panel]
+    size: tuple[float, float]
+    title: str
+    diagram: str
+    rows: list[Row] = field(default_factory=list)
+    prefix: dict[str, str] = field(default_factory=dict)
+    painters: dict[str, StepPainter] = field(default_factory=dict)
+    table_origin: tuple[float, float] = (0.0, 0.0)
+    table_size: tuple[float, float] = (0.0, 0.0)
+
+    def panel(self, name: str) -> Panel:
+        """The panel called ``name``."""
+        for p in self.panels:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+
+def sheet_diagrams(src: Source, diagram: str) -> list[str]:
+    """The diagrams a sheet shows (``all`` expands to those available)."""
+    if diagram == "all":
+        return src.available()
+    if "+" in diagram:
+        parts = [d.strip() for d in diagram.split("+")]
+        for d in parts:
+            sheet_diagrams(src, d)
+        return [d for d in DIAGRAMS if d in parts]
+    if diagram not in DIAGRAMS:
+        raise DiagramUnavailable(src.why_not(diagram), diagram=diagram)
+    src.construction(diagram)  # raises DiagramUnavailable when it cannot be drawn
+    return [diagram]
+
+
+def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
+                highlight: int | None = None, table: bool = True,
+                max_inches: float | None = None, title: str | None = None) -> Sheet:
+    """Lay out the panels of a sheet and paint them.
+
+    Parameters
+    ----------
+    src : Source
+    diagram : str
+        One of :data:`~graphkin.render.sources.DIAGRAMS`, several joined by
+        ``+`` (``"posture+velocity"``), or ``"all"``.
+    upto : int, optional
+        Draw the diagram's construction only up to this step (inclusive).
+    highlight : int, optional
+        The step drawn in the highlight colour (a teaching page's newest step).
+    table : bool
+        Add the results table.
+    max_inches : float, optional
+        The largest side of a panel.
+    title : str, optional
+        The sheet's title (default: the mechanism's title).
+
+    Raises
+    ------
+    DiagramUnavailable
+        The diagram cannot be drawn for this source.
+    """
+    diagrams = sheet_diagrams(src, diagram)
+    many = len(diagrams) > 1
+    mech = src.mechanism
+    unit = src.length_unit
+    paper = paper_unit(unit)
+    panels: list[Panel] = []
+    length_of: dict[str, Panel | None] = {}
+    polygon_of: dict[str, Panel | None] = {}
+
+    def new_panel(name: str, plane: str, with_mech: bool, prefix: str) -> Panel:
+        p = Panel(name, plane, title_of(name), quantity_unit(unit, plane), prefix=prefix,
+                  mechanism=with_mech, pole=POLES.get(plane, (None, ""))[0])
+        panels.append(p)
+        return p
+
+    if mech is not None:
+        main = new_panel("posture", "posture", True, "")
+        if not many and diagram in ("velocity", "acceleration"):
+            main.title = "Mechanism"
+        for d in diagrams:
+            if d in ("posture", "velocity", "acceleration"):
+                length_of[d] = main
+            if d in ("velocity", "acceleration"):
+                polygon_of[d] = new_panel(d, d, False, f"{d}-" if many else "")
+        for d in diagrams:
+            if d not in ("posture", "velocity", "acceleration"):
+                if not many:
+                    panels.remove(main)
+                    main.name = d
+                    main.title = title_of(d)
+                    panels.append(main)
+                    length_of[d] = main
+                else:
+                    length_of[d] = new_panel(d, "posture", True, f"{d}-")
+    else:
+        d = diagrams[0]
+        p = new_panel(d, plane_of(d), False, "")
+        (length_of if p.plane == "posture" else polygon_of)[d] = p
+
+    kinds: dict[str, str] = {}
+    planes: dict[str, str] = {}
+    for cx in src.constructions.values():
+        for s in cx.steps:
+            for o in s.outputs:
+                kinds.setdefault(o, s.kind)
+                planes.setdefault(o, plane_of(s.diagram))
+    painters: dict[str, StepPainter] = {}
+    for d in diagrams:
+        if src.constructions.get(d) is None:
+            continue
+        prefix = f"{d}-" if many and d != "posture" else ""
+        painters[d] = StepPainter(src, d, {"length": length_of.get(d),
+                                           "polygon": polygon_of.get(d)}, prefix, kinds, planes)
+        painters[d].quiet_rates = many
+
+    # ---- extents and scales -------------------------------------------
+    big = max_inches or (4.2 if many else 5.0)
+    for p in panels:
+        pts = _content(src, p, painters)
+        if not pts:
+            pts = [np.zeros(2)]
+        arr = np.array(pts)
+        lo, hi = arr.min(axis=0), arr.max(axis=0)
+        p.bbox = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+        ex, ey = hi - lo
+        room = big if p.plane == "posture" else big * 0.85
+        if not many and p.name in ("centers", "curvature") and max_inches is None:
+            room = 6.5
+        extent = max(float(ex), float(ey), 1e-12)
+        p.scale = choose_scale(extent, room, paper, p.unit)
+        k = p.k
+        minw, minh = 1.6 * k, 0.9 * k
+        cx_, cy_ = (lo + hi) / 2
+        w, h = max(float(ex), minw), max(float(ey), minh)
+        p.view = (cx_ - w / 2 - MARGIN * k, cy_ - h / 2 - MARGIN * k - FOOT_H * k,
+                  cx_ + w / 2 + MARGIN * k, cy_ + h / 2 + MARGIN * k + TITLE_H * k)
+
+    # ---- paint ----------------------------------------------------------
+    for d, painter in painters.items():
+        painter.paint(upto if d == diagram else None, highlight if d == diagram else None)
+    for p in panels:
+        if not p.mechanism:
+            continue
+        known: set[str] | None = None
+        drawn: set[str] = set()
+        for d, painter in painters.items():
+            if length_of.get(d) is p:
+                drawn |= painter.drawn_points
+        post = painters.get("posture")
+        if post is not None and length_of.get("posture") is p and diagram in ("posture",) \
+                and upto is not None:
+            known = {o for s in post.cx.steps[: upto + 1] for o in s.outputs}
+        paint_mechanism(src, p, known, drawn)
+    for d in ("velocity", "acceleration"):
+        p = polygon_of.get(d)
+        if p is not None and d in painters:
+            _images(src, p, painters[d], upto if d == diagram else None)
+    for p in panels:
+        _frame(p)
+        place_labels(p)
+
+    rows: list[Row] = []
+    if table and mech is not None:
+        rows = result_rows(src, diagrams)
+    sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
+                  (mech.title if mech is not None and mech.title else
+                   (next(iter(src.constructions.values())).title if src.constructions
+                    else "")),
+                  diagram, rows, {d: pp.prefix for d, pp in painters.items()}, painters)
+    _layout(sheet)
+    return sheet
+
+
+def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np.ndarray]:
+    """Every point a panel must show, in data units (the full construction, not ``upto``)."""
+    pts: list[np.ndarray] = []
+    allowed: tuple[float, float, float, float] | None = None
+    allowed_result: tuple[float, float, float, float] | None = None
+    if p.mechanism:
+        mext = mechanism_extent(src)
+        pts.extend(mext)
+        if mext:
+            lo, hi = np.min(mext, axis=0), np.max(mext, axis=0)
+            size = max(float(np.max(hi - lo)), 1e-12)
+            reach = FAR * size
+            allowed = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
+            reach = FAR_RESULT * size
+            allowed_result = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
+    if p.pole is not None:
+        for painter in painters.values():
+            q = painter.xy(p.pole)
+            if q is not None:
+                pts.append(q)
+                break
+    for painter in painters.values():
+        for s in painter.cx.steps:
+            if painter.panel_for(s) is not p or plane_of(s.diagram) != p.plane:
+                continue
+            rect = allowed if s.role == Role.AUXILIARY else allowed_result
+            for o in s.outputs:
+                v = painter.raw(o)
+                if v is None:
+                    continue
+                if s.kind == "point":
+                    q = finite_xy(v)
+                    if q is not None and _inside(q, rect):
+                        pts.append(q)
+                elif s.kind == "circle" and v.shape == (3,) and np.all(np.isfinite(v)):
+                    cut = any(c.op in ("intersect_circles", "intersect_line_circle")
+                              for c in painter.consumers.get(o, []))
+                    if not cut:
+                        r = float(v[2])
+                        for q in (v[:2] + [r, 0], v[:2] - [r, 0], v[:2] + [0, r],
+                                  v[:2] - [0, r]):
+                            if _inside(q, rect):
+                                pts.append(q)
+    return pts
+
+
+def _inside(q: np.ndarray, rect: tuple[float, float, float, float] | None) -> bool:
+    return rect is None or (rect[0] <= q[0] <= rect[2] and rect[1] <= q[1] <= rect[3])
+
+
+def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> None:
+    """Shade the image of every link with three or more points (Mehmke's theorem)."""
+    mech = src.mechanism
+    if mech is None:
+        return
+    steps = painter.cx.steps if upto is None else painter.cx.steps[: upto + 1]
+    made = {o for s in steps for o in s.outputs}
+    pref = "v" if p.plane == "velocity" else "a"
+    pole = p.pole
+    for i, lid in enumerate(mech.moving):
+        names = list(mech.links[lid].points)
+        world = {}
+        for n in names:
+            world[n] = np.asarray(src.solution.position(n, lid), dtype=float)  # type: ignore[union-attr]
+        hull = MultiPoint([tuple(v) for v in world.values()]).convex_hull
+        if hull.geom_type != "Polygon":
+            continue
+        ring = list(hull.exterior.coords)[:-1]
+        order = []
+        for c in ring:
+            for n, v in world.items():
+                if n not in order and abs(v[0] - c[0]) + abs(v[1] - c[1]) <= 1e-9 * (
+                        1 + abs(c[0]) + abs(c[1])):
+                    order.append(n)
+                    break
+        pts = []
+        for n in order:
+            lab = f"{pref}({n})"
+            if lab not in made:
+                if FRAME in mech.point_links[n] and pole is not None and pole in made:
+                    lab = pole
+                else:
+                    pts = []
+                    break
+            q = painter.xy(lab)
+            if q is None:
+                pts = []
+                break
+            pts.append(q)
+        if len(pts) < 3:
+            continue
+        g = p.group(f"{p.prefix}image-{safe_id(lid)}", 1.5, key=f"image {lid}")
+        g.items.append(Item("polygon", np.array(pts), "image", key=f"image {lid}",
+                            overrides={"fc": IMAGE_FILLS[i % len(IMAGE_FILLS)]}))
+
+
+def _frame(p: Panel) -> None:
+    """The panel's title and scale bar."""
+    x0, y0, x1, y1 = p.view
+    k = p.k
+    g = p.group(f"{p.prefix}title-{p.name}", 6.0, key=f"title {p.name}")
+    g.items.append(Item("text", np.array([[x0 + 0.08 * k, y1 - 0.16 * k]]), "title",
+                        gid=f"{p.prefix}title-text-{p.name}", text=p.title, ha="left"))
+    if p.scale is None:
+        return
+    s = p.scale
+    length = s.paper_inches * k
+    bx, by = x0 + 0.15 * k, y0 + 0.16 * k
+    g = p.group(f"{p.prefix}scale-{p.name}", 6.0, key=f"scale {p.name}")
+    t = 0.04 * k
+    g.items.append(Item("path", np.array([[bx, by], [bx + length, by]]), "scale-bar",
+                        key=f"scale {p.name}"))
+    for f in (0.0, 0.5, 1.0):
+        h = t if f != 0.5 else t * 0.6
+        g.items.append(Item("path", np.array([[bx + f * length, by - h],
+                                              [bx + f * length, by + h]]), "scale-bar"))
+    g.items.append(Item("text", np.array([[bx + length + 0.08 * k, by]]), "caption",
+                        gid=f"{p.prefix}scale-text-{p.name}", text=s.text, ha="left"))
+
+
+TABLE_ROW = 0.155
+"""Height of a results-table row, in inches."""
+TABLE_CHAR = 0.0585
+"""Width of one character of the table's monospace font, in inches."""
+
+
+def _layout(sheet: Sheet) -> None:
+    """Place the panels in rows (shelves) and the table under them; set the sheet size."""
+    sizes = [p.size for p in sheet.panels]
+    boxes: list[tuple[float, float]] = list(sizes)
+    if sheet.rows:
+        chars = [8, 5, 8, 10, 4]  # the headings
+        for row in sheet.rows:
+            chars = [max(a, b) for a, b in zip(chars, (len(row.quantity), len(row.drawn),
+                                                       len(row.exact), 10, len(row.unit)))]
+        width = max((sum(chars) + 8) * TABLE_CHAR, 86 * TABLE_CHAR) + 0.2
+        boxes.append((width, TABLE_ROW * (len(sheet.rows) + 3) + 0.25))
+    width_cap = max(11.5, max(w for w, _ in boxes))
+    rows: list[list[int]] = [[]]
+    used = 0.0
+    for i, (w, _) in enumerate(boxes):
+        if rows[-1] and used + GAP + w > width_cap:
+            rows.append([])
+            used = 0.0
+        used += (GAP if rows[-1] else 0.0) + w
+        rows[-1].append(i)
+    heights = [max(boxes[i][1] for i in r) for r in rows]
+    W = max(sum(boxes[i][0] for i in r) + GAP * (len(r) - 1) for r in rows) + 2 * GAP
+    if sheet.title:
+        W = max(W, text_size(sheet.title, STYLES["title"]["size"] + 1)[0] * 1.1 + 2 * GAP)
+    H = sum(heights) + GAP * (len(rows) + 1) + (SHEET_TITLE_H if sheet.title else 0.0)
+    y = H - (SHEET_TITLE_H if sheet.title else 0.0) - GAP
+    positions: list[tuple[float, float]] = [(0.0, 0.0)] * len(boxes)
+    for r, h in zip(rows, heights):
+        x = GAP
+        for i in r:
+            positions[i] = (x, y - boxes[i][1])
+            x += boxes[i][0] + GAP
+        y -= h + GAP
+    for p, pos in zip(sheet.panels, positions):
+        p.origin = pos
+    if sheet.rows:
+        sheet.table_origin = positions[-1]
+        sheet.table_size = boxes[-1]
+    sheet.size = (float(W), float(H))

@@ -1,0 +1,125 @@
+"""How each kind of element is drawn: the textbook's draftsman conventions as data.
+
+Construction lines are thin, results bold; normal components of an
+acceleration are dashed, tangential ones solid and the Coriolis component
+dash-dotted (Fig. 4.11); the frame is hatched, pins are small circles and
+sliders blocks.  Styles are plain dictionaries so that the scene (which knows
+no matplotlib) can name them and the matplotlib layer can apply them.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Figs. 3.5, 4.4 and 4.11 (the look of
+polygons and their components), Sec. 1.6 (the symbols of links and pairs).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from graphkin.construction import Role
+
+__all__ = ["STYLES", "HIGHLIGHT", "RC", "rc_context", "IMAGE_FILLS", "style_for_role",
+           "FONT_PT", "SMALL_PT"]
+
+HIGHLIGHT = "#c62828"
+"""Colour of the newest step on a teaching page."""
+
+FONT_PT = 9.0
+"""Size of point letters (points)."""
+SMALL_PT = 7.0
+"""Size of secondary labels (components, scale text)."""
+
+INK = "#000000"
+GREY = "#5a5a5a"
+
+STYLES: dict[str, dict[str, Any]] = {
+    # the mechanism
+    "link": {"ec": INK, "fc": "#ffffff", "lw": 1.0},
+    "plate": {"ec": INK, "fc": "#e9e9e9", "lw": 1.0},
+    "ground": {"ec": INK, "fc": "none", "lw": 0.0, "hatch": "////"},
+    "ground-line": {"color": INK, "lw": 1.0},
+    "hatch": {"color": INK, "lw": 0.5},
+    "bearing": {"ec": INK, "fc": "#ffffff", "lw": 0.9},
+    "block": {"ec": INK, "fc": "#ffffff", "lw": 1.0},
+    "slot": {"ec": INK, "fc": "#ffffff", "lw": 0.8},
+    "pin": {"marker": "o", "ms": 5.0, "mfc": "#ffffff", "mec": INK, "mew": 0.9},
+    "point": {"marker": "o", "ms": 3.2, "mfc": INK, "mec": INK, "mew": 0.5},
+    "aux-point": {"marker": "o", "ms": 2.4, "mfc": GREY, "mec": GREY, "mew": 0.4},
+    "pole": {"marker": "o", "ms": 4.2, "mfc": INK, "mec": INK, "mew": 0.5},
+    "image-point": {"marker": "o", "ms": 2.6, "mfc": INK, "mec": INK, "mew": 0.4},
+    # construction
+    "given-line": {"color": INK, "lw": 1.0},
+    "aux-line": {"color": GREY, "lw": 0.5},
+    "ref-line": {"color": GREY, "lw": 0.5, "ls": (0, (6, 2, 1, 2))},
+    "result-line": {"color": INK, "lw": 1.3},
+    "arc": {"color": GREY, "lw": 0.5},
+    "result-arc": {"color": INK, "lw": 0.9},
+    "right-angle": {"color": GREY, "lw": 0.5},
+    "angle-arc": {"color": INK, "lw": 0.6},
+    "datum": {"color": GREY, "lw": 0.5, "ls": (0, (3, 2))},
+    # vectors
+    "vector-abs": {"color": INK, "lw": 1.5},
+    "vector-rel": {"color": INK, "lw": 1.1},
+    "vector-n": {"color": INK, "lw": 1.0, "ls": (0, (4, 2))},
+    "vector-t": {"color": INK, "lw": 1.0},
+    "vector-c": {"color": INK, "lw": 1.0, "ls": (0, (6, 2, 1.5, 2))},
+    "vector-aux": {"color": GREY, "lw": 0.8},
+    "rate": {"color": INK, "lw": 0.8},
+    "infinity": {"color": INK, "lw": 1.0},
+    # text
+    "label": {"size": FONT_PT},
+    "label-aux": {"size": SMALL_PT, "color": GREY},
+    "label-small": {"size": SMALL_PT},
+    "number": {"size": FONT_PT + 1, "style": "italic"},
+    "title": {"size": FONT_PT + 1, "weight": "bold"},
+    "caption": {"size": SMALL_PT + 0.5},
+    "table": {"size": SMALL_PT, "family": "monospace"},
+    "table-head": {"size": SMALL_PT, "family": "monospace", "weight": "bold"},
+    "scale-bar": {"color": INK, "lw": 0.8},
+}
+
+IMAGE_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")
+"""Light fills for the images of links (one per link, in link order)."""
+
+RC: dict[str, Any] = {
+    "svg.fonttype": "none",
+    "svg.hashsalt": "graphkin",
+    "font.family": "sans-serif",
+    "font.sans-serif": ["DejaVu Sans"],
+    "font.monospace": ["DejaVu Sans Mono"],
+    "mathtext.fontset": "dejavusans",
+    "hatch.linewidth": 0.5,
+    "hatch.color": INK,
+    "lines.solid_capstyle": "butt",
+    "lines.dash_capstyle": "butt",
+    "axes.unicode_minus": True,
+    "pdf.fonttype": 42,
+}
+"""Matplotlib settings of every graphkin drawing (deterministic SVG with real text)."""
+
+
+@contextmanager
+def rc_context() -> Iterator[None]:
+    """Apply :data:`RC` for the duration of a drawing or a save."""
+    import matplotlib as mpl
+
+    with mpl.rc_context(RC):
+        yield
+
+
+def style_for_role(role: Role | str, kind: str) -> str:
+    """The style name of a construction element of ``kind`` with ``role``.
+
+    Examples
+    --------
+    >>> style_for_role("auxiliary", "line"), style_for_role("result", "line")
+    ('aux-line', 'result-line')
+    """
+    role = Role(role)
+    if kind == "line":
+        return {Role.GIVEN: "given-line", Role.RESULT: "result-line"}.get(role, "aux-line")
+    if kind == "circle":
+        return "result-arc" if role == Role.RESULT else "arc"
+    return "aux-point" if role == Role.AUXILIARY else "point"
