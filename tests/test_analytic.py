@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import tomllib
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -458,3 +459,169 @@ def test_many_with_a_slider_drive_matches_single_solves() -> None:
         one = solve_analytic(replace(mech, drives=(replace(mech.drives[0], value=x),)))
         np.testing.assert_allclose(sw.velocity("D")[i], one.velocity("D"), rtol=1e-9)
         np.testing.assert_allclose(sw.acceleration("D")[i], one.acceleration("D"), rtol=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# (f) rolling contact without slip ([[rolling]], Secs. 2.19, 3.7, 4.7)
+# ---------------------------------------------------------------------------
+
+ROLLING = Path(__file__).resolve().parents[1] / "examples"
+WHEEL = ROLLING / "ex3_9_rolling_wheel.toml"
+ROLLER = ROLLING / "ex4_8_roller_follower.toml"
+
+
+def test_rolling_wheel_example_3_9() -> None:
+    # Uicker Ex. 3.9: θ2 = 90°, θ3 = 0, θ4 = -90° (B straight above G), r2 = 150,
+    # r3 = 200, r4 = 50, ρ = 100 mm, ω2 = 10 rad/s ccw, α2 = 0.  The book's Eq. (7)
+    # at this posture: [[0, ρ + r4], [r3, 0]] (θ'3, θ'4) = (r2, 0), so θ'3 = 0,
+    # θ'4 = r2/(ρ + r4) = 1: ω3 = 0, ω4 = 10 ccw, V_G = ω4 ρ to the left.
+    sol = solve_analytic(load(WHEEL))
+    np.testing.assert_allclose(sol.position("G"), [200.0, 100.0], atol=1e-9)
+    np.testing.assert_allclose(sol.position("B"), [200.0, 150.0], atol=1e-9)
+    assert float(sol.omega("3")) == pytest.approx(0.0, abs=1e-12)
+    assert float(sol.omega("4")) == pytest.approx(10.0, rel=1e-12)
+    np.testing.assert_allclose(sol.velocity("G"), [-1000.0, 0.0], atol=1e-9)
+    # A_B = A_A + α3 k×R_BA − ω3² R_BA = (0, −ω2² r2) + α3 (0, 200);
+    # A_B = A_G + α4 k×R_BG − ω4² R_BG = (a_G − 50 α4, −100·50), a_G = −ρ α4 (rolling
+    # to the left): x gives α4 = 0, y gives −15000 + 200 α3 = −5000, α3 = 50.
+    assert float(sol.alpha("4")) == pytest.approx(0.0, abs=1e-9)
+    assert float(sol.alpha("3")) == pytest.approx(50.0, rel=1e-12)
+    np.testing.assert_allclose(sol.acceleration("G"), [0.0, 0.0], atol=1e-9)
+
+
+def test_rolling_roller_example_4_8() -> None:
+    # Uicker Ex. 4.7/4.8 by hand.  3 cos θ2 = 2.1, so B = (2.1, b), b = 3 sin θ2, sits
+    # 1.5 left of the face x = 5 − 1.4 = 3.6 with the follower at θ3 = 0; u = (0, 1),
+    # R = B − D = (−2.9, b).  ω2 = −10, α2 = −25.
+    #   V_B = ω2 k×B = (10 b, −21) = ω3 k×R + v u = ω3 (−b, −2.9) + (0, v)
+    #     → ω3 = −10, v = −21 − 29 = −50 (B runs down the face).
+    #   No slip, circle on the left of u: ω4 − ω3 = −v/ρ → ω4 = −10 + 50/1.5.
+    #   A_B = α2 k×B − ω2² B = (25 b − 210, −52.5 − 100 b)
+    #       = α3 k×R − ω3² R + a u + 2 ω3 k×(v u) = α3 (−b, −2.9) + (290, −100 b) + (0, a)
+    #         + (−1000, 0)
+    #     → x: α3 = −25 − 500/b;  y: a = −52.5 + 2.9 α3;  α4 = α3 − a/ρ (≈ 276.15, the
+    #     book's 527 being a misprint: see tests/kinematics/test_rolling.py).
+    b = 3.0 * math.sin(math.radians(45.572996483))
+    w3, a3 = -10.0, -25.0 - 500.0 / b
+    a = -52.5 + 2.9 * a3
+    sol = solve_analytic(load(ROLLER))
+    assert float(sol.angle("3")) == pytest.approx(0.0, abs=1e-8)
+    assert float(sol.omega("3")) == pytest.approx(w3, rel=1e-7)
+    assert float(sol.alpha("3")) == pytest.approx(a3, rel=1e-7)
+    assert float(sol.omega("4")) == pytest.approx(w3 + 50.0 / 1.5, rel=1e-7)
+    assert float(sol.alpha("4")) == pytest.approx(a3 - a / 1.5, rel=1e-7)
+    assert float(sol.alpha("4")) == pytest.approx(276.15, abs=0.01)
+    assert float(sol.angle("4")) == 0.0  # the file's angle (default 0) at the file's drive
+
+
+def _flipped(path: Path) -> Mechanism:
+    """The same mechanism with the rolling line written backwards (and so on the right)."""
+    text = path.read_text()
+    for a, b in (('["G1", "G2"]', '["G2", "G1"]'), ('["F1", "F2"]', '["F2", "F1"]')):
+        text = text.replace(a, b)
+    return loads(text.replace('side = "left"', 'side = "right"'))
+
+
+@pytest.mark.parametrize("path", [WHEEL, ROLLER], ids=["ex3_9", "ex4_8"])
+def test_rolling_side_right_is_the_same_motion(path: Path) -> None:
+    # σ = −1 for a circle on the right: the reversed line with side "right" is the
+    # same contact, so every rate must agree.
+    sol, flip = solve_analytic(load(path)), solve_analytic(_flipped(path))
+    for k in sol.links:
+        for f in ("angle", "omega", "alpha"):
+            got, want = float(getattr(flip, f)(k)), float(getattr(sol, f)(k))
+            assert got == pytest.approx(want, rel=1e-12, abs=1e-9), (k, f)
+
+
+def _scale(values: list[np.ndarray]) -> float:
+    return max(float(np.max(np.abs(v))) for v in values)
+
+
+@pytest.mark.parametrize("path", [WHEEL, ROLLER], ids=["ex3_9", "ex4_8"])
+def test_rolling_rates_are_derivatives_of_a_sweep(path: Path) -> None:
+    # Over a sweep the drive's ω2, α2 hold at every posture, so with K = dq/dθ2:
+    # q̇ = K ω2 and q̈ = K' ω2² + K α2 = (dq̇/dθ2) ω2 + q̇ α2/ω2 (central differences).
+    mech = load(path)
+    (d,) = mech.drives
+    w, a = float(d.rate), float(d.rate2 or 0.0)
+    h = 1e-4
+    sw = solve_analytic_many(mech, d.value + np.array([-h, 0.0, h]))
+    assert sw.valid.all()
+    one = solve_analytic(mech)
+    size = mech.scale
+    for k in mech.moving:
+        s, o = sw.links[k], one.links[k]
+        # the middle posture is the file's: the same as the single solve
+        assert float(s.angle[1]) == pytest.approx(float(o.angle), abs=1e-12)
+        np.testing.assert_allclose(s.origin[1], o.origin, atol=1e-12 * size)
+        assert float(s.omega[1]) == pytest.approx(float(o.omega), rel=1e-12, abs=1e-12)
+        assert float(s.alpha[1]) == pytest.approx(float(o.alpha), rel=1e-12, abs=1e-12)
+    v_scale = _scale([sw.links[k].origin_velocity[1] for k in mech.moving]
+                     + [sw.links[k].omega[1] * size for k in mech.moving])
+    a_scale = _scale([sw.links[k].origin_acceleration[1] for k in mech.moving]
+                     + [sw.links[k].alpha[1] * size for k in mech.moving])
+    for k in mech.moving:
+        s = sw.links[k]
+        w_fd = _wrap(float(s.angle[2] - s.angle[0])) / (2 * h) * w
+        v_fd = (s.origin[2] - s.origin[0]) / (2 * h) * w
+        assert abs(float(s.omega[1]) - w_fd) * size <= RATES_REL * v_scale, k
+        np.testing.assert_allclose(s.origin_velocity[1], v_fd, rtol=0, atol=RATES_REL * v_scale)
+        al_fd = float(s.omega[2] - s.omega[0]) / (2 * h) * w + float(s.omega[1]) * a / w
+        a_fd = (s.origin_velocity[2] - s.origin_velocity[0]) / (2 * h) * w \
+            + s.origin_velocity[1] * a / w
+        assert abs(float(s.alpha[1]) - al_fd) * size <= RATES_REL * a_scale, k
+        np.testing.assert_allclose(s.origin_acceleration[1], a_fd, rtol=0,
+                                   atol=RATES_REL * a_scale)
+
+
+def test_rolling_sweep_keeps_the_wheel_rolling() -> None:
+    # Ex. 3.9 over the crank's travel: the integrated no-slip condition through the
+    # file's posture (G = (200, 100), θ4 = 0), circle on the left of +x:
+    # θ4 = −(x_G − 200)/ρ; G stays at height ρ and |AB| = r3.
+    mech = load(WHEEL)
+    th = np.radians(np.arange(90.0, 250.0, 5.0))
+    sw = solve_analytic_many(mech, th)
+    assert sw.valid.all()
+    g = sw.position("G")
+    np.testing.assert_allclose(g[:, 1], 100.0, atol=1e-9)
+    np.testing.assert_allclose(np.remainder(sw.angle("4") + (g[:, 0] - 200.0) / 100.0
+                                            + math.pi, 2 * math.pi) - math.pi, 0.0, atol=1e-9)
+    ab = np.hypot(*(sw.position("B") - sw.position("A")).T)
+    np.testing.assert_allclose(ab, 200.0, atol=1e-9)
+    # at θ2 = 240° the loop |A − B(x_G)| = 200 has the roots x_G ≈ −170.84 and −22.25
+    # (a scan of x_G); rolling on from the file's posture reaches −22.25
+    assert float(g[-2, 0]) == pytest.approx(-22.25, abs=0.01)
+    # a sweep that starts elsewhere is continued from the file's posture to its start
+    part = solve_analytic_many(mech, th[::-1][:8])
+    assert part.valid.all()
+    np.testing.assert_allclose(part.position("G"), g[::-1][:8], atol=1e-9)
+    np.testing.assert_allclose(part.alpha("4"), sw.alpha("4")[::-1][:8], atol=1e-9)
+
+
+def test_rolling_sweep_marks_where_the_roller_cannot_touch() -> None:
+    # Ex. 4.8: the roller (1.5) touches the face (1.4 from D) only when |DB| ≥ 2.9:
+    # |DB|² = 34 − 30 cos θ2 ≥ 8.41, i.e. cos θ2 ≤ 0.853.
+    mech = load(ROLLER)
+    th = np.radians(np.arange(0.0, 360.0, 5.0)) + mech.drives[0].value
+    sw = solve_analytic_many(mech, th)
+    c = np.cos(th)
+    assert not sw.valid[c > 0.853 + 1e-3].any()
+    assert sw.valid[c < 0.853 - 1e-3].all()
+
+
+@pytest.mark.parametrize("path", [WHEEL, ROLLER], ids=["ex3_9", "ex4_8"])
+def test_rolling_graphic_construction_equals_analytic(path: Path) -> None:
+    mech = load(path)
+    graphic, exact = mech.solve(), solve_analytic(mech)
+    size = mech.scale
+    for f in ("angle", "omega", "alpha"):
+        want = {k: float(getattr(exact, f)(k)) for k in mech.links}
+        tol = 1e-9 * max(1.0, *map(abs, want.values()))
+        for k in mech.links:
+            assert float(getattr(graphic, f)(k)) == pytest.approx(want[k], rel=1e-9, abs=tol)
+    for f in ("position", "velocity", "acceleration"):
+        want_pts = {p: np.asarray(getattr(exact, f)(p)) for p in mech.point_names}
+        tol = 1e-9 * max(size, *(float(np.max(np.abs(v))) for v in want_pts.values()))
+        for p, v in want_pts.items():
+            np.testing.assert_allclose(getattr(graphic, f)(p), v, rtol=1e-9, atol=tol,
+                                       err_msg=f"{f} of {p}")

@@ -48,14 +48,26 @@ velocity terms ``γ = (Φ_q q̇)_q q̇`` that go to the right-hand side.
 * **Circular slot** (centre ``c`` fixed in ``o``, radius ``ρ``):
   ``f = (|r|² - ρ²) / (2ρ)`` with ``r = P - C``; ``ḟ = r·ṙ/ρ``,
   ``f̈ = (ṙ·ṙ + r·r̈)/ρ`` so ``γ = (ṙ·ṙ + r·(-ω_s² R_s p_s + ω_o² R_o c))/ρ``.
+* **Rolling contact without slip** (``[[rolling]]``: a circle of radius
+  ``ρ`` of link ``l`` on a line of link ``o``).  The contact is the
+  equivalent slot of the center (among the slots, as the parser gives it);
+  no slip adds ``g = (θ_l - θ_o) + σ s/ρ - c`` with ``s = u·(P - L0)`` the
+  travel of the center along the line in ``o``'s coordinates (``σ = +1``
+  when the circle lies on the left of the line, -1 on the right): an angle
+  row plus ``σ/ρ`` times a travel row, so ``γ = σ/ρ γ_travel``.  At the
+  file's drive the posture row is ``θ_l - angle = 0`` instead (the rolling
+  link stands at the file's angle); over a sweep it is ``g`` with ``c``
+  taken from the file's posture.  See :class:`_Rolling` for the derivation.
 
 References
 ----------
 Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
 Sec. 2.7 (loop-closure equations), Secs. 2.9-2.11 (algebraic posture
-analysis), Sec. 3.9 (algebraic velocity analysis), Sec. 3.11 and Sec. 4.11
-(kinematic coefficients), Sec. 4.5 (Coriolis), Sec. 4.9 (algebraic
-acceleration analysis).
+analysis), Sec. 2.19 (apparent angular displacement: the rolling
+constraint), Sec. 3.7 (rolling contact, Eq. 3.13), Sec. 3.9 (algebraic
+velocity analysis), Sec. 3.11 and Sec. 4.11 (kinematic coefficients; Example
+3.9, a wheel rolling on the ground), Sec. 4.5 (Coriolis), Sec. 4.7 (Eq.
+4.19), Sec. 4.9 (algebraic acceleration analysis).
 """
 
 from __future__ import annotations
@@ -93,6 +105,10 @@ _SWEEP_ITER = 60
 _RESTARTS = 40
 #: Restarts at the later postures of a sweep whose first postures do not assemble.
 _SWEEP_RESTARTS = 6
+#: Largest drive step (rad, and fraction of the size) when a sweep of a mechanism
+#: with rolling contact is continued from the file's posture to its first value.
+_MARCH_ANGLE = math.radians(2.0)
+_MARCH_LENGTH = 0.02
 #: Seed of those restarts: the search is deterministic.
 _SEED = 20240611
 #: Two converged postures are the same when every scaled coordinate agrees to this.
@@ -305,7 +321,93 @@ class _OnCircle:
         return [g / self.radius]
 
 
-_Constraint = _Pin | _OnLine | _Angle | _OnCircle
+@dataclass(frozen=True)
+class _Rolling:
+    """No slip between a circle of link ``l`` and a line of link ``o`` (one angle row).
+
+    Derivation.  Let ``u = R_o u_loc`` be the line's unit direction, ``n =
+    σ perp(u)`` its unit normal toward the center ``P`` (``σ = +1`` for a
+    circle on the left of the directed line, -1 on the right), ``ρ`` the
+    radius, and ``C = P - ρ n`` the contact point.  No slip (Eq. 3.13) says
+    ``V_C(l) = V_C(o)``.  With ``V_C(k) = V_P(k) + ω_k perp(C - P)`` and
+    ``C - P = -ρ n``::
+
+        V_P - V_{P∈o} = ρ (ω_l - ω_o) perp(n) = -σ ρ (ω_l - ω_o) u,
+
+    since ``perp(n) = σ perp(perp(u)) = -σ u``.  The left side is the
+    apparent velocity of the center seen from ``o``; along ``u`` it is
+    ``ṡ``, the rate of ``s = u·(P - L0)`` (``L0`` the line's first point
+    fixed in ``o``): indeed ``ṡ = u̇·(P - L0) + u·(V_P - V_L0)`` with
+    ``u̇ = ω_o perp(u)``, and ``V_{P∈o} = V_L0 + ω_o perp(P - L0)`` gives
+    ``u·V_{P∈o} = u·V_L0 - u̇·(P - L0)``.  Hence
+
+        ``ω_l - ω_o = -σ ṡ / ρ``,
+
+    the derivative of the holonomic condition (Sec. 2.19, Eq. b; Example
+    3.9, Eq. 5)
+
+        ``g(q) = (θ_l - θ_o) + σ s/ρ - c = 0``
+
+    (``c`` a constant).  Its Jacobian row is that of the angle row
+    ``θ_l - θ_o`` plus ``σ/ρ`` times that of the travel row ``s`` (an
+    :class:`_OnLine` with ``v = u``); its acceleration row is
+    ``α_l - α_o + σ s̈/ρ = 0``, so ``γ = (σ/ρ) γ_s``.  Written out,
+    ``s̈ = ü·(P - L0) + 2 u̇·(V_P - V_L0) + u·(A_P - A_L0)`` with
+    ``ü = α_o perp(u) - ω_o² u``; collecting terms with
+    ``A_{P∈o} = A_L0 + α_o perp(P - L0) - ω_o² (P - L0)`` and
+    ``V_rel = V_P - V_{P∈o}``,
+
+        ``s̈ = u·(A_P - A_{P∈o} - 2 ω_o perp(V_rel))``,
+
+    the apparent tangential acceleration, Coriolis term included (it
+    vanishes along ``u`` here, since ``V_rel`` is along ``u``).
+
+    Posture rows.  With ``ref`` None (one posture at the file's drive) the
+    posture row is ``θ_l - angle = 0``: at its own drive the file gives the
+    rolling link's angle.  With ``ref = c`` (a sweep) it is ``g`` itself,
+    the integrated no-slip condition through the file's posture.  The rate
+    rows are ``g``'s in both cases (:meth:`rate_eval`).
+    """
+
+    link: int
+    on: int
+    travel: _OnLine
+    sigma: float
+    radius: float
+    angle: float
+    ref: float | None
+    label: str
+    kinds: tuple[str, ...] = ("A",)
+
+    def value(self, st: _Poses) -> float:
+        """``(θ_l - θ_o) + σ s/ρ`` at a posture (not wrapped)."""
+        s = self.travel.eval(st, None, 0)[0]
+        return st.th[self.link] - st.th[self.on] + self.sigma * s / self.radius
+
+    def rate_eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        """``g + c`` and its Jacobian row (the no-slip row of the rates)."""
+        if J is not None:
+            if self.link != _F:
+                J[row, 3 * self.link + 2] += 1.0
+            if self.on != _F:
+                J[row, 3 * self.on + 2] -= 1.0
+            tmp = np.zeros((1, J.shape[1]))
+            self.travel.eval(st, tmp, 0)
+            J[row] += (self.sigma / self.radius) * tmp[0]
+        return [self.value(st)]
+
+    def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        if self.ref is None:
+            if J is not None and self.link != _F:
+                J[row, 3 * self.link + 2] += 1.0
+            return [st.th[self.link] - self.angle]
+        return [self.rate_eval(st, J, row)[0] - self.ref]
+
+    def gamma(self, st: _Poses, qd: Sequence[float]) -> list[float]:
+        return [self.sigma / self.radius * self.travel.gamma(st, qd)[0]]
+
+
+_Constraint = _Pin | _OnLine | _Angle | _OnCircle | _Rolling
 
 
 # ---------------------------------------------------------------------------
@@ -316,7 +418,8 @@ _Constraint = _Pin | _OnLine | _Angle | _OnCircle
 class _System:
     """Constraint, drive and rate equations of a mechanism in ``q``."""
 
-    def __init__(self, mech: Mechanism, tol: Tolerance) -> None:
+    def __init__(self, mech: Mechanism, tol: Tolerance,
+                 rolling_ref: Sequence[float] | None = None) -> None:
         self.mech = mech
         self.tol = tol
         self.ids = list(mech.moving)
@@ -352,6 +455,18 @@ class _System:
             else:
                 assert sk.center is not None and sk.radius is not None
                 self.cons.append(_OnCircle(s, p, o, sk.center, float(sk.radius), lab))
+        # rolling: the contact is the equivalent slot above; no slip is one more row
+        self.rolling_fixed = rolling_ref is None
+        for i, ro in enumerate(mech.rolling):
+            s, o = self.index[ro.link], self.index[ro.on]
+            u, _ = _unit(ro.p0, ro.p1)
+            p = mech.links[ro.link].points[ro.center]
+            lab = f"{ro.key} (link {ro.link} rolls on link {ro.on} without slip)"
+            travel = _OnLine(s, p, o, ro.p0, u, lab)
+            sigma = 1.0 if ro.side == "left" else -1.0
+            self.cons.append(_Rolling(s, o, travel, sigma, float(ro.radius), float(ro.angle),
+                                      None if rolling_ref is None else float(rolling_ref[i]),
+                                      lab))
         self.drives: list[_Constraint] = [self._drive_function(d) for d in mech.drives]
         self.values = np.array([d.value for d in mech.drives], dtype=float)
         kinds: list[str] = []
@@ -435,7 +550,7 @@ class _System:
         A = np.zeros((rows, self.n))
         row = 0
         for c in self.cons:
-            c.eval(st, A, row)
+            (c.rate_eval if isinstance(c, _Rolling) else c.eval)(st, A, row)
             row += len(c.kinds)
         for g in self.rate_functions:
             g.eval(st, A, row)
@@ -455,6 +570,22 @@ class _System:
         for g, (_, acc) in zip(self.rate_functions, self.rate_values):
             out.append(acc - g.gamma(st, qdl)[0])
         return np.array(out)
+
+    # -- rolling contact ----------------------------------------------------
+    def rolling_constants(self, q: np.ndarray) -> list[float]:
+        """``c = (θ_l - θ_o) + σ s/ρ`` of every rolling contact at posture ``q``."""
+        st = _Poses(q, self.nlinks)
+        return [c.value(st) for c in self.cons if isinstance(c, _Rolling)]
+
+    def integrated(self, q: np.ndarray) -> _System:
+        """The same system with the integrated no-slip rows through posture ``q``.
+
+        Its Jacobian is the true constraint Jacobian of the mechanism (the
+        one of the rates); without rolling contact it is ``self``.
+        """
+        if not self.mech.rolling:
+            return self
+        return _System(self.mech, self.tol, self.rolling_constants(q))
 
     # -- output -------------------------------------------------------------
     def pose_of(self, q: np.ndarray, lid: str) -> tuple[float, float, float]:
@@ -624,6 +755,9 @@ class _Search:
         for d, v in zip(mech.drives, values):
             if d.kind == "angle":
                 angles[d.link] = float(v)
+        if eqs.rolling_fixed:  # at the file's drive a rolling link stands at its angle
+            for ro in mech.rolling:
+                angles.setdefault(ro.link, float(ro.angle))
 
         def learn(lid: str) -> None:
             x, y, t = poses[lid]
@@ -684,6 +818,9 @@ class _Search:
         for d, v in zip(eqs.mech.drives, values):
             if d.kind == "angle":
                 q[3 * eqs.index[d.link] + 2] = v
+        if eqs.rolling_fixed:
+            for ro in eqs.mech.rolling:
+                q[3 * eqs.index[ro.link] + 2] = ro.angle
         return q
 
     def score(self, q: np.ndarray) -> tuple[float, float]:
@@ -927,11 +1064,23 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
     --------
     solve_analytic_many : the same over many drive values, with branch continuity.
 
+    Notes
+    -----
+    Rolling contact (``[[rolling]]``): the circle's center runs on the line
+    offset by the radius (the equivalent slot), and at the file's drive the
+    rolling link stands at the file's ``angle`` (absolute).  The rates obey
+    no slip, ``ω_l - ω_o = -σ ṡ/ρ`` and its derivative (Eq. 3.13 and 4.19;
+    ``ṡ`` the center's apparent speed along the line seen from ``on``,
+    ``σ = +1`` for a circle on the left of the line); the singularity check
+    uses these rows.
+
     References
     ----------
     Uicker, Pennock & Shigley, 5th ed., Sec. 2.7 (loop-closure equations),
-    Secs. 2.9-2.11 (algebraic posture analysis), Sec. 3.9 (algebraic velocity
-    analysis), Sec. 4.9 (algebraic acceleration analysis), Sec. 4.5 (Coriolis).
+    Secs. 2.9-2.11 (algebraic posture analysis), Sec. 2.19 (rolling
+    constraint), Sec. 3.7 (rolling contact), Sec. 3.9 (algebraic velocity
+    analysis), Sec. 4.9 (algebraic acceleration analysis), Sec. 4.5
+    (Coriolis), Sec. 4.7 (rolling contact acceleration).
 
     Examples
     --------
@@ -979,6 +1128,8 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
     else:
         q = _Search(eqs).solve(values)
         notes = ["analytic: Newton-Raphson from the assembly hints, nearest posture chosen"]
+    # rolling contact: from here on the no-slip rows (the true constraint Jacobian)
+    eqs = eqs.integrated(q)
     _check_regular(eqs, q, values)
     qd = qdd = None
     if eqs.rate_functions is not None:
@@ -1001,7 +1152,10 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     start : Solution or dict, optional
         Where the first posture starts (a solved posture, or link id ->
         ``(x, y, θ)``).  Default: the posture :func:`solve_analytic` chooses
-        at the first drive value (nearest the assembly hints).
+        at the first drive value (nearest the assembly hints).  With rolling
+        contact: a posture at the file's own drive values (the reference of
+        the no-slip condition, see Notes); default the one
+        :func:`solve_analytic` chooses there.
     tol : Tolerance, optional
         As for :func:`solve_analytic`.
 
@@ -1010,6 +1164,12 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     Solution
         Arrays of leading shape ``(N,)``.  Postures that cannot be assembled
         (or are singular) are NaN, and False in ``valid``.
+
+    Raises
+    ------
+    AssemblyError
+        With rolling contact only: the file's own posture, the reference of
+        the no-slip condition, cannot be assembled.
 
     See Also
     --------
@@ -1022,9 +1182,25 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     (Sec. 3.11) times the change of the drive.  A Python loop over postures:
     this is the oracle, not the fast path.
 
+    Rolling contact (``[[rolling]]``): the file gives the rolling link's
+    angle only at the file's own drive values, so over a sweep the posture
+    row of each contact is the integrated no-slip condition (Sec. 2.19)
+
+        ``(θ_l - θ_o) - (θ_l - θ_o)_ref = -σ (s - s_ref) / ρ``,
+
+    ``s`` the travel of the circle's center along the line in ``on``'s
+    coordinates, ``σ = +1`` for a circle on the left of the line, and
+    ``ref`` the posture at the file's drive values (rolling links at their
+    file angles, as :func:`solve_analytic` finds it).  The sweep continues
+    that posture to the first drive value in steps of at most 2° (or 2 % of
+    the mechanism's size), then on as above; the rates are the same as
+    :func:`solve_analytic`'s.  After a gap that cannot be assembled the
+    search picks the posture nearest the hints among those that satisfy the
+    integrated condition.
+
     References
     ----------
-    Uicker, Pennock & Shigley, 5th ed., Secs. 2.9, 3.9, 3.11, 4.9.
+    Uicker, Pennock & Shigley, 5th ed., Secs. 2.9, 2.19, 3.9, 3.11, 4.9.
     """
     tol = tol or DEFAULT_TOL
     eqs = _System(mech, tol)
@@ -1043,7 +1219,13 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     prev: np.ndarray | None = None
     prev_values: np.ndarray | None = None
     prev_index = -2
-    if start is not None:
+    if mech.rolling and N:
+        # the integrated no-slip condition through the file's posture, reached from
+        # there by continuation (a search could find the circle rolled elsewhere)
+        ref = _reference_posture(eqs, start)
+        eqs = eqs.integrated(ref)
+        prev = _march(eqs, ref, eqs.values, dv[0])
+    elif start is not None:
         prev = _guess_vector(eqs, start, dv[0] if N else eqs.values)
     search = _Search(eqs)
     for i in range(N):
@@ -1078,6 +1260,39 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
         prev, prev_values, prev_index = q, values, i
     notes = ["analytic: Newton-Raphson, each posture from the one before"]
     return _solution(eqs, Q, QD, QDD, valid, notes)
+
+
+def _reference_posture(eqs: _System, start: Solution | Guess | None) -> np.ndarray:
+    """The posture at the file's drive values (rolling links at their file angles).
+
+    From ``start`` when given and Newton converges from it, else the posture
+    :func:`solve_analytic` chooses.  ``eqs`` has the file-angle rolling rows.
+    """
+    values = eqs.values
+    if start is not None:
+        q = _converge(eqs, _guess_vector(eqs, start, values), values)
+        if q is not None:
+            return q
+    return _Search(eqs).solve(values)
+
+
+def _march(eqs: _System, q: np.ndarray, v_from: np.ndarray,
+           v_to: np.ndarray) -> np.ndarray | None:
+    """Continue posture ``q`` at drive ``v_from`` to ``v_to`` in small steps (None: lost)."""
+    d = _delta(eqs, v_to, v_from)
+    steps = 1
+    for i, drv in enumerate(eqs.mech.drives):
+        unit = _MARCH_ANGLE if drv.kind == "angle" else _MARCH_LENGTH * eqs.size
+        steps = max(steps, math.ceil(abs(float(d[i])) / unit))
+    here = np.array(v_from, dtype=float)
+    for k in range(1, steps + 1):
+        there = v_from + d * (k / steps)
+        q_new = _converge(eqs, q + _sensitivity(eqs, q, here) @ (there - here), there,
+                          _SWEEP_ITER)
+        if q_new is None:
+            return None
+        q, here = q_new, there
+    return q
 
 
 def _delta(eqs: _System, values: np.ndarray, before: np.ndarray) -> np.ndarray:

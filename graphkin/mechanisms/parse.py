@@ -254,6 +254,9 @@ class _Parser:
             on = self.link_id(r.get("on"), f"{key}.on")
             if link == on:
                 raise self.fail(f"{key}.on", "a link cannot roll on itself")
+            if link == FRAME:
+                raise self.fail(f"{key}.link", "the rolling circle must be on a moving link "
+                                "(a line rolling on a fixed circle is not supported yet)")
             c = self.table(r.get("circle"), f"{key}.circle")
             center = self.point_of(link, c.get("center"), f"{key}.circle.center")
             rad = c.get("radius")
