@@ -211,12 +211,13 @@ class Mechanism:
 
     @cached_property
     def scale(self) -> float:
-        """Size of the mechanism (largest coordinate span), for tolerances."""
+        """Size of the mechanism (its largest coordinate), for scale-aware tolerances."""
         xs: list[float] = []
         for link in self.links.values():
             for x, y in link.points.values():
                 xs.extend((abs(x), abs(y)))
-        return max([1.0, *xs]) if xs else 1.0
+        big = max(xs, default=0.0)
+        return big if big > 0 else 1.0
 
     def mobility(self) -> int:
         """Degrees of freedom by Kutzbach's criterion (Eq. 1.3): 3(n-1) - 2 j1 - j2."""
