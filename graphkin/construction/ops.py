@@ -13,6 +13,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (cases 1-4), 3.4-3.5 and 4.2-4.3
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -317,22 +318,30 @@ def _angle_along(t: Array, s: Array, *, tol: Tolerance, local_angle: float,
 # ---------------------------------------------------------------------------
 # Compiled kernels: the same operations, specialised once per step.
 #
-# A construction that is evaluated on whole arrays (a sweep) spends its time in
-# the temporaries of the general functions above (np.stack, np.where, hypot,
-# homogeneous divisions).  Each kernel below does the same arithmetic for one
-# step with its constants bound once: a point's Cartesian rows are read once
-# per evaluation and shared, points with w == 1 skip the homogeneous
-# division, tolerance decisions are made exactly but only where a cheap bound
-# cannot rule them out, and outputs are written row by row into one block.
-# The results are those of the general functions up to rounding (sqrt(x²+y²)
-# for hypot), with the same NaN entries.  An operation without a kernel runs
-# through its general function.
+# A construction evaluated on whole arrays (a sweep) spends its time in the
+# temporaries of the general functions above (np.stack, np.where, hypot,
+# homogeneous divisions) and in reading data that has left the cache.  Each
+# kernel below does the arithmetic of one step with its constants bound once:
+# a point's Cartesian rows are read once per evaluation and shared; points
+# stored with w == 1 skip the homogeneous division; tolerance decisions are
+# made exactly, but only where a cheap bound cannot rule them out; outputs
+# are written row by row straight into one block ``(k, ...)`` seen as
+# ``(..., k)``; the cosine and sine of a link angle measured from two points
+# are those points' direction; a constant zero is not subtracted.  The
+# results are those of the general functions up to rounding (``sqrt(x² + y²)``
+# for ``hypot``, the direction for ``cos(atan2(y, x))``), with the same NaN
+# entries.  An operation without a kernel runs through its
+# general function.
 # ---------------------------------------------------------------------------
 
-KernelFactory = Callable[..., "Callable[[Runtime], None] | None"]
+Kernel = Callable[["Runtime"], "bool | None"]
+"""A compiled step: returns True when its outputs are certainly finite (given finite inputs)."""
+KernelFactory = Callable[..., "Kernel | None"]
 KERNELS: dict[str, KernelFactory] = {}
 ORIGINATING: set[str] = set()
 """Operations that can turn finite inputs into non-finite outputs (the others cannot)."""
+
+_ND = np.ndarray
 
 
 def kernel(name: str, originating: bool = False) -> Callable[[KernelFactory], KernelFactory]:
@@ -341,6 +350,8 @@ def kernel(name: str, originating: bool = False) -> Callable[[KernelFactory], Ke
     The factory is called as ``factory(step, tol, info)`` and returns a
     callable ``run(rt)`` that reads the step's inputs from the runtime and
     stores its outputs, or ``None`` to fall back to the general function.
+    ``originating`` operations can give non-finite outputs for finite inputs
+    (no intersection, a division by a length that may vanish).
     """
 
     def deco(f: KernelFactory) -> KernelFactory:
@@ -373,50 +384,44 @@ class CompileInfo:
         self.radius.pop(label, None)
 
 
-def _front(base: Array) -> Array:
-    """A block stored component-first ``(k, ...)`` seen as ``(..., k)``."""
-    nd = base.ndim
-    if nd == 1:
-        return base
-    if nd == 2:
-        return base.T
-    return np.moveaxis(base, 0, -1)
-
-
 def _shape(*xs: Any) -> tuple[int, ...]:
-    s = np.shape(xs[0])
-    for x in xs[1:]:
-        t = np.shape(x)
-        if t != s:
-            s = np.broadcast_shapes(s, t)
+    """The broadcast shape of the arguments (arrays, numpy scalars, floats)."""
+    s: tuple[int, ...] = ()
+    for x in xs:
+        if type(x) is _ND:
+            t = x.shape
+            if t != s:
+                s = t if not s else np.broadcast_shapes(s, t)
     return s
+
+
+def _zero(v: Any) -> bool:
+    """True for a constant (a float) equal to zero: subtracting it is skipped."""
+    return type(v) is float and v == 0.0
 
 
 def _vmin(x: Any) -> float:
     """Smallest entry, NaN ignored (NaN when every entry is NaN)."""
-    if np.ndim(x) == 0:
+    if type(x) is not _ND or x.ndim == 0:
         return float(x)
     return float(np.fmin.reduce(x, axis=None))
 
 
-def _vmax(x: Any) -> float:
-    """Largest entry, NaN ignored."""
-    if np.ndim(x) == 0:
-        return float(x)
-    return float(np.fmax.reduce(x, axis=None))
+def _absmax(a: Any) -> float:
+    """Largest absolute entry (NaN ignored)."""
+    if type(a) is not _ND or a.ndim == 0:
+        return abs(float(a))
+    return float(np.fmax.reduce(np.abs(a), axis=None))
 
 
-def _absmax(*xs: Any) -> float:
-    """Largest absolute entry of several arrays (NaN ignored)."""
-    m = 0.0
-    for x in xs:
-        if np.ndim(x) == 0:
-            v = abs(float(x))
-        else:
-            v = float(np.fmax.reduce(np.abs(x), axis=None))
-        if v > m:
-            m = v
-    return m
+def _drawn_join(rt: Runtime, out: str, p: Any, q: Any) -> bool:
+    """True when this replay already drew the line ``out`` through these very point arrays.
+
+    The acceleration polygon redraws the posture's lines that the velocity
+    polygon drew; replayed together they are drawn once.
+    """
+    hit = rt.joins.get(out)
+    return hit is not None and hit[0] is p and hit[1] is q and rt.env.get(out) is hit[2]
 
 
 class Runtime:
@@ -428,30 +433,35 @@ class Runtime:
         Label -> array (what :class:`~graphkin.construction.protocol.Evaluation` returns).
     xy : dict
         Label -> Cartesian rows ``(x, y)`` of a point (or a circle's center,
-        or a vector's components), read once.
+        or a vector's components), read once.  Constant points have floats.
     unit : set
-        Point labels whose homogeneous ``w`` is exactly 1 (their ``xy`` are
-        their first two rows).
+        Point labels stored with ``w == 1`` (or all NaN): their first two
+        rows are their Cartesian coordinates.
     trig : dict
         Angle label -> ``(cos, sin)``.
     dirty : set
         Labels whose consumers must be checked for non-finite entries:
         inputs given with non-finite entries, points that may be at infinity.
+    joins : dict
+        Line label -> the point arrays it was drawn through (and the line).
     """
 
-    __slots__ = ("env", "xy", "unit", "trig", "dirty")
+    __slots__ = ("env", "xy", "unit", "trig", "trig_off", "dirty", "joins")
 
     def __init__(self, env: dict[str, Array]) -> None:
         self.env = env
         self.xy: dict[str, tuple[Any, Any]] = {}
         self.unit: set[str] = set()
         self.trig: dict[str, tuple[Any, Any]] = {}
+        self.trig_off: dict[tuple[str, float], tuple[Any, Any]] = {}
         self.dirty: set[str] = set()
+        self.joins: dict[str, tuple[Any, Any, Any]] = {}
 
     # ---- inputs --------------------------------------------------------
     def arr(self, label: str) -> Array:
+        """The value of ``label`` as a float array."""
         a = self.env[label]
-        if type(a) is not np.ndarray or a.dtype != np.float64:
+        if type(a) is not _ND or a.dtype != np.float64:
             a = np.asarray(a, dtype=float)
         return a
 
@@ -461,8 +471,7 @@ class Runtime:
         if r is not None:
             return r
         p = self.arr(label)
-        w = p[..., 2]
-        if bool(np.all(w == 1.0)):
+        if (p[..., 2] == 1.0).all():
             r = (p[..., 0], p[..., 1])
             self.unit.add(label)
         else:
@@ -479,7 +488,7 @@ class Runtime:
         return label in self.unit
 
     def C(self, label: str) -> tuple[Any, Any]:
-        """Center rows of a circle (or the first two rows of any array)."""
+        """First two rows of a circle (its center) or of a vector (its components)."""
         r = self.xy.get(label)
         if r is not None:
             return r
@@ -497,14 +506,16 @@ class Runtime:
 
     def cs(self, label: str, offset: float = 0.0) -> tuple[Any, Any]:
         """The cosine and sine of an angle (plus a constant offset), computed once."""
-        key = label if offset == 0.0 else f"{label}\x00{offset!r}"
-        r = self.trig.get(key)
+        if offset == 0.0:
+            r = self.trig.get(label)
+            if r is None:
+                t = self.arr(label)
+                r = self.trig[label] = (np.cos(t), np.sin(t))
+            return r
+        r = self.trig_off.get((label, offset))
         if r is None:
-            t = self.arr(label)
-            if offset != 0.0:
-                t = t + offset
-            r = (np.cos(t), np.sin(t))
-            self.trig[key] = r
+            t = self.arr(label) + offset
+            r = self.trig_off[(label, offset)] = (np.cos(t), np.sin(t))
         return r
 
     # ---- outputs -------------------------------------------------------
@@ -512,33 +523,49 @@ class Runtime:
         self.xy.pop(label, None)
         self.unit.discard(label)
         self.dirty.discard(label)
-        if self.trig:
-            for k in [k for k in self.trig if k == label or k.startswith(label + "\x00")]:
-                del self.trig[k]
+        self.trig.pop(label, None)
+        if self.trig_off:
+            for k in [k for k in self.trig_off if k[0] == label]:
+                del self.trig_off[k]
 
-    def put_point(self, label: str, x: Any, y: Any) -> None:
-        """Store the finite-form point ``(x, y, 1)``."""
-        base = np.empty((3, *_shape(x, y)))
-        base[0] = x
-        base[1] = y
+    def new_point(self, label: str, shape: tuple[int, ...]) -> tuple[Array, Array]:
+        """Store a new finite-form point ``(x, y, 1)``; returns its x and y rows to fill."""
+        base = np.empty((3, *shape))
         base[2] = 1.0
-        if self.trig:
-            self._forget(label)
-        self.env[label] = _front(base)
-        self.xy[label] = (base[0], base[1])
+        if shape:
+            x, y = base[0], base[1]
+            self.env[label] = base.T if len(shape) == 1 else np.moveaxis(base, 0, -1)
+        else:
+            x, y = base[0, ...], base[1, ...]
+            self.env[label] = base
+        self.xy[label] = (x, y)
         self.unit.add(label)
-        self.dirty.discard(label)
+        if self.dirty:
+            self.dirty.discard(label)
+        if self.trig:
+            self.trig.pop(label, None)
+        if self.trig_off:
+            for k in [k for k in self.trig_off if k[0] == label]:
+                del self.trig_off[k]
+        return x, y
 
-    def put_rows(self, label: str, rows: tuple[Any, ...], *, center: bool = False) -> Array:
-        """Store a line, circle or vector from its rows; returns the block ``(k, ...)``."""
-        base = np.empty((len(rows), *_shape(*rows)))
-        for i, r in enumerate(rows):
-            base[i] = r
+    def new_rows(self, label: str, k: int, shape: tuple[int, ...], *,
+                 center: bool = False) -> tuple[Array, ...]:
+        """Store a new line, circle (``k = 3``) or vector (``k = 2``); returns its rows to fill.
+
+        The block itself comes last.
+        """
+        base = np.empty((k, *shape))
         self._forget(label)
-        self.env[label] = _front(base)
-        if center or len(rows) == 2:
-            self.xy[label] = (base[0], base[1])
-        return base
+        if shape:
+            rows = tuple(base[i] for i in range(k))
+            self.env[label] = base.T if len(shape) == 1 else np.moveaxis(base, 0, -1)
+        else:
+            rows = tuple(base[i, ...] for i in range(k))
+            self.env[label] = base
+        if center or k == 2:
+            self.xy[label] = (rows[0], rows[1])
+        return (*rows, base)
 
     def put(self, label: str, value: Any) -> None:
         """Store any value (a scalar array, or what a general function returned)."""
@@ -546,7 +573,7 @@ class Runtime:
         self.env[label] = value
 
 
-def generic_kernel(step: Any, tol: Tolerance) -> Callable[[Runtime], None]:
+def generic_kernel(step: Any, tol: Tolerance) -> Kernel:
     """Run a step through its general function (no kernel, or an exact fallback)."""
     fn = OPS[step.op]
     ins, outs, params = step.inputs, step.outputs, step.params
@@ -563,53 +590,57 @@ def generic_kernel(step: Any, tol: Tolerance) -> Callable[[Runtime], None]:
 
 
 @kernel("rigid")
-def _k_rigid(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_rigid(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, th = step.inputs
     (out,) = step.outputs
-    d0, d1 = np.subtract(step.params["local_q"], step.params["local_p"])
+    d0, d1 = (float(v) for v in np.subtract(step.params["local_q"], step.params["local_p"]))
     offset = float(step.params.get("offset", 0.0))
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(p)
         c, s = rt.cs(th, offset)
-        # rotate (d0, d1) by θ: (c d0 - s d1, s d0 + c d1); a zero component drops out exactly
+        x, y = rt.new_point(out, _shape(ax, c))
+        # Q = P + R(θ) d: the rotation (c d0 - s d1, s d0 + c d1); a zero component drops out
         if d1 == 0.0:
-            v0, v1 = c * d0, s * d0
+            np.multiply(c, d0, out=x)
+            np.multiply(s, d0, out=y)
         elif d0 == 0.0:
-            v0, v1 = -(s * d1), c * d1
+            np.multiply(s, -d1, out=x)
+            np.multiply(c, d1, out=y)
         else:
-            v0, v1 = c * d0 - s * d1, s * d0 + c * d1
-        rt.put_point(out, ax + v0, ay + v1)
+            np.subtract(c * d0, s * d1, out=x)
+            np.add(s * d0, c * d1, out=y)
+        np.add(x, ax, out=x)
+        np.add(y, ay, out=y)
 
     return run
 
 
 @kernel("circle")
-def _k_circle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_circle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     (center,) = step.inputs
     (out,) = step.outputs
     r = float(step.params["radius"])
 
     def run(rt: Runtime) -> None:
         x, y = rt.P(center)
-        rt.put_rows(out, (x, y, r), center=True)
+        cx, cy, cr, _ = rt.new_rows(out, 3, _shape(x, y), center=True)
+        cx[...] = x
+        cy[...] = y
+        cr[...] = r
 
     return run
 
 
-def _k_radius(info: CompileInfo, label: str) -> float | None:
-    return info.radius.get(label)
-
-
 @kernel("intersect_circles", originating=True)
-def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     c1, c2 = step.inputs
     (out,) = step.outputs
     left = step.params["branch"] == "left"
     k1, k2 = info.radius.get(c1), info.radius.get(c2)
     la, lr = tol.length_abs, tol.length_rel
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
         x1, y1 = rt.C(c1)
         x2, y2 = rt.C(c2)
         r1 = k1 if k1 is not None else rt.arr(c1)[..., 2]
@@ -617,78 +648,123 @@ def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], N
         dx = x2 - x1
         dy = y2 - y1
         dd = dx * dx + dy * dy
-        dist = np.sqrt(dd)
-        a = (dd + (r1 * r1 - r2 * r2)) / (2.0 * dist)
-        h2 = r1 * r1 - a * a
-        if not _vmin(h2) >= 0.0:
+        # along and across the line of centers, in units of its length d:
+        # a/d = (d² + r1² - r2²) / 2d², (h/d)² = r1²/d² - (a/d)²
+        p = (dd + (r1 * r1 - r2 * r2)) / (2.0 * dd)
+        q2 = (r1 * r1) / dd - p * p
+        clean = True
+        if not _vmin(q2) >= 0.0:
+            clean = False
             # tangency: a tiny negative h² from a length error below eps counts as zero
+            dist = np.sqrt(dd)
             scale = np.maximum(np.maximum(r1, r2), dist)
             eps = la + lr * np.abs(scale)
-            h2 = np.where((h2 < 0) & (h2 > -2 * eps * scale), 0.0, h2)
-        h = np.sqrt(h2)
-        dmin = _vmin(dist)
-        if not dmin > 2.0 * (la + lr * max(_absmax(r1), _absmax(r2))):
+            q2 = np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
+        q = np.sqrt(q2)
+        if not _vmin(dd) > (2.0 * (la + lr * max(_absmax(r1), _absmax(r2)))) ** 2:
+            clean = False
             # concentric circles (within tolerance) have no intersection
+            dist = np.sqrt(dd)
             scale = np.maximum(np.maximum(r1, r2), dist)
-            h = np.where(dist <= la + lr * np.abs(scale), np.nan, h)
-        ux = dx / dist
-        uy = dy / dist
-        bx = x1 + a * ux
-        by = y1 + a * uy
+            q = np.where(dist <= la + lr * np.abs(scale), np.nan, q)
+        x, y = rt.new_point(out, _shape(dx, x1, x2))
+        # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
         if left:
-            rt.put_point(out, bx - h * uy, by + h * ux)
+            np.subtract(p * dx, q * dy, out=x)
+            np.add(p * dy, q * dx, out=y)
         else:
-            rt.put_point(out, bx + h * uy, by - h * ux)
+            np.add(p * dx, q * dy, out=x)
+            np.subtract(p * dy, q * dx, out=y)
+        np.add(x, x1, out=x)
+        np.add(y, y1, out=y)
+        # finite inputs, every arc pair meets, no concentric pair: every entry is finite
+        return clean
 
     return run
 
 
 @kernel("intersect_line_circle", originating=True)
-def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     line, c = step.inputs
     (out,) = step.outputs
     behind = step.params["branch"] == "behind"
     kr = info.radius.get(c)
     la, lr = tol.length_abs, tol.length_rel
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
         l0, l1, l2 = rt.rows(line)
         cx, cy = rt.C(c)
         r = kr if kr is not None else rt.arr(c)[..., 2]
         s = l0 * cx + l1 * cy + l2
-        fx = cx - s * l0
-        fy = cy - s * l1
         h2 = r * r - s * s
+        clean = True
         if not _vmin(h2) >= 0.0:
+            clean = False
             eps = la + lr * np.abs(np.maximum(r, np.abs(s)))
             h2 = np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
         h = np.sqrt(h2)
+        x, y = rt.new_point(out, _shape(s, cx, cy))
+        # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
         if behind:
-            rt.put_point(out, fx - h * l1, fy + h * l0)
+            np.add(s * l0, h * l1, out=x)
+            np.subtract(s * l1, h * l0, out=y)
         else:
-            rt.put_point(out, fx + h * l1, fy - h * l0)
+            np.subtract(s * l0, h * l1, out=x)
+            np.add(s * l1, h * l0, out=y)
+        np.subtract(cx, x, out=x)
+        np.subtract(cy, y, out=y)
+        return clean
 
     return run
 
 
 @kernel("link_angle")
-def _k_link_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_link_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     a, b = step.inputs
     (out,) = step.outputs
     dl = np.subtract(step.params["local_b"], step.params["local_a"])
-    phi = np.arctan2(dl[1], dl[0])
+    phi = float(np.arctan2(dl[1], dl[0]))
+    cphi, sphi = math.cos(phi), math.sin(phi)
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
         bx, by = rt.P(b)
-        t = np.arctan2(by - ay, bx - ax)
+        dx = bx if _zero(ax) else bx - ax
+        dy = by if _zero(ay) else by - ay
+        t = np.arctan2(dy, dx)
         rt.put(out, t - phi if phi != 0.0 else t)
+        # the direction AB gives cos and sin of the line's angle (not where A == B,
+        # whose angle atan2 takes as 0)
+        n = np.sqrt(dx * dx + dy * dy)
+        if _vmin(n) > 0.0:
+            c = dx / n
+            s = dy / n
+            if phi != 0.0:
+                c, s = c * cphi + s * sphi, s * cphi - c * sphi
+            rt.trig[out] = (c, s)
+
+    return run
+
+
+@kernel("angle_along")
+def _k_angle_along(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+    t_, s_ = step.inputs
+    (out,) = step.outputs
+    phi = float(step.params["local_angle"])
+    sign = float(step.params["sign"])
+
+    def run(rt: Runtime) -> None:
+        tx, ty = rt.P(t_)
+        sx, sy = rt.P(s_)
+        dx = (sx - tx) * sign
+        dy = (sy - ty) * sign
+        rt.put(out, np.arctan2(dy, dx) - phi)
 
     return run
 
 
 @kernel("add_angle")
-def _k_add_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_add_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     (th,) = step.inputs
     (out,) = step.outputs
     offset = step.params["offset"]
@@ -700,136 +776,157 @@ def _k_add_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runt
 
 
 @kernel("join", originating=True)
-def _k_join(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_join(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, q = step.inputs
     (out,) = step.outputs
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
+        env = rt.env
+        pa, qa = env[p], env[q]
+        if _drawn_join(rt, out, pa, qa):
+            return False
         if not (rt.is_unit(p) and rt.is_unit(q)):
-            rt.put(out, g.join(rt.env[p], rt.env[q], tol))
-            return
+            rt.put(out, g.join(pa, qa, tol))
+            rt.joins[out] = (pa, qa, env[out])
+            return False
         px, py = rt.P(p)
         qx, qy = rt.P(q)
         # the cross product (px, py, 1) × (qx, qy, 1)
-        base = rt.put_rows(out, (py - qy, qx - px, px * qy - py * qx))
-        a, b = base[0], base[1]
-        n = np.sqrt(a * a + b * b)
-        # a coincident pair: |P × Q| below the length tolerance of the larger |P|, |Q|
-        bound = tol.length(2.0 * max(_absmax(px, py), _absmax(qx, qy)))
-        if not _vmin(n) > bound:
+        a_, b_, c_, base = rt.new_rows(out, 3, _shape(px, qx))
+        np.subtract(py, qy, out=a_)
+        np.subtract(qx, px, out=b_)
+        np.subtract(px * qy, py * qx, out=c_)
+        n = np.sqrt(a_ * a_ + b_ * b_)
+        # coincident points: n = |P - Q| within the length tolerance of the larger of |P|, |Q|;
+        # as max(|P|, |Q|) <= |Q| + n, none is when n (1 - rel) > abs + rel |Q| everywhere
+        far = pa if (np.ndim(px) == 0 and np.ndim(qx) != 0) else qa
+        big = _absmax(np.asarray(far, dtype=float)[..., :2])
+        clean = True
+        if not _vmin(n) * (1.0 - tol.length_rel) > tol.length(2.0 * big):
+            clean = False
             scale = np.maximum(np.sqrt(px * px + py * py), np.sqrt(qx * qx + qy * qy))
             n = np.where(n <= tol.length(scale), np.nan, n)
         np.divide(base, n, out=base)
+        rt.joins[out] = (pa, qa, env[out])
+        return clean
 
     return run
 
 
 @kernel("perpendicular")
-def _k_perpendicular(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_perpendicular(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     line, p = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         a, b, _ = rt.rows(line)
         px, py, pw = rt.rows(p)
-        c = b * px - a * py
-        if not rt.is_unit(p):
-            c = c / pw
-        rt.put_rows(out, (-b, a, c))
+        unit = rt.is_unit(p)
+        o0, o1, o2, _ = rt.new_rows(out, 3, _shape(a, px))
+        np.negative(b, out=o0)
+        o1[...] = a
+        np.subtract(b * px, a * py, out=o2)
+        if not unit:
+            np.divide(o2, pw, out=o2)
 
     return run
 
 
 @kernel("parallel")
-def _k_parallel(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_parallel(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     line, p = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         a, b, _ = rt.rows(line)
         px, py, pw = rt.rows(p)
-        c = -(a * px + b * py)
-        if not rt.is_unit(p):
-            c = c / pw
-        rt.put_rows(out, (a, b, c))
+        unit = rt.is_unit(p)
+        o0, o1, o2, _ = rt.new_rows(out, 3, _shape(a, px))
+        o0[...] = a
+        o1[...] = b
+        np.add(a * px, b * py, out=o2)
+        np.negative(o2, out=o2)
+        if not unit:
+            np.divide(o2, pw, out=o2)
 
     return run
 
 
 @kernel("meet", originating=True)
-def _k_meet(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_meet(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     l1, l2 = step.inputs
     (out,) = step.outputs
-    angle = tol.angle
+    # |w| <= angle n (ideal) or |w| <= angle (coincident lines), tested on squares with margin
+    gate = (tol.angle * (1.0 + 1e-6)) ** 2
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
         a1, b1, c1 = rt.rows(l1)
         a2, b2, c2 = rt.rows(l2)
+        pw = a1 * b2 - b1 * a2
         px = b1 * c2 - c1 * b2
         py = c1 * a2 - a1 * c2
-        pw = a1 * b2 - b1 * a2
-        n = np.sqrt(px * px + py * py)
-        # an ideal point (|w| <= angle n) or coincident lines (|w| <= angle) anywhere?
-        if bool(np.any(np.abs(pw) <= angle * np.maximum(n, 1.0))):
+        n2 = px * px + py * py
+        if not bool(np.all(pw * pw > gate * np.maximum(n2, 1.0))):
+            # somewhere parallel (an ideal point), coincident, or not known (NaN): exactly
             rt.put(out, g.meet(rt.env[l1], rt.env[l2], tol))
             rt.dirty.add(out)
-            return
-        base = np.empty((3, *_shape(px, py, pw)))
-        base[0] = px
-        base[1] = py
-        base[2] = pw
-        np.divide(base, pw, out=base)
-        if rt.trig:
-            rt._forget(out)
-        rt.env[out] = _front(base)
-        rt.xy[out] = (base[0], base[1])
-        rt.unit.add(out)
-        rt.dirty.discard(out)
+            return False
+        x, y = rt.new_point(out, _shape(pw, px, py))
+        # a finite point: (px, py, pw) / pw
+        np.divide(px, pw, out=x)
+        np.divide(py, pw, out=y)
+        return True
 
     return run
 
 
 @kernel("translate")
-def _k_translate(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_translate(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, v = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(p)
         vx, vy = rt.V(v)
-        rt.put_point(out, ax + vx, ay + vy)
+        x, y = rt.new_point(out, _shape(ax, vx))
+        np.add(ax, vx, out=x)
+        np.add(ay, vy, out=y)
 
     return run
 
 
 @kernel("subtract")
-def _k_subtract(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_subtract(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, v = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(p)
         vx, vy = rt.V(v)
-        rt.put_point(out, ax - vx, ay - vy)
+        x, y = rt.new_point(out, _shape(ax, vx))
+        np.subtract(ax, vx, out=x)
+        np.subtract(ay, vy, out=y)
 
     return run
 
 
 @kernel("vector")
-def _k_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, q = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         px, py = rt.P(p)
         qx, qy = rt.P(q)
-        rt.put_rows(out, (qx - px, qy - py))
+        v0, v1, _ = rt.new_rows(out, 2, _shape(px, qx))
+        np.subtract(qx, px, out=v0)
+        np.subtract(qy, py, out=v1)
 
     return run
 
 
 @kernel("scale_vector")
-def _k_scale_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_scale_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     v, s = step.inputs
     (out,) = step.outputs
     factor = step.params.get("factor", 1.0)
@@ -837,13 +934,15 @@ def _k_scale_vector(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[R
     def run(rt: Runtime) -> None:
         vx, vy = rt.V(v)
         k = rt.arr(s) * factor
-        rt.put_rows(out, (vx * k, vy * k))
+        v0, v1, _ = rt.new_rows(out, 2, _shape(vx, k))
+        np.multiply(vx, k, out=v0)
+        np.multiply(vy, k, out=v1)
 
     return run
 
 
 @kernel("similar")
-def _k_similar(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None] | None:
+def _k_similar(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel | None:
     a, b = step.inputs
     (out,) = step.outputs
     la = np.asarray(step.params["local_a"], dtype=float)
@@ -855,96 +954,118 @@ def _k_similar(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtim
     den = zr[0] ** 2 + zr[1] ** 2
     if den == 0.0:
         return None
-    qr = (zp[0] * zr[0] + zp[1] * zr[1]) / den
-    qi = (zp[1] * zr[0] - zp[0] * zr[1]) / den
+    # p = a + (b - a) q with the complex ratio q = (P - A) / (B - A) of the link
+    qr = float((zp[0] * zr[0] + zp[1] * zr[1]) / den)
+    qi = float((zp[1] * zr[0] - zp[0] * zr[1]) / den)
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
         bx, by = rt.P(b)
-        d0 = bx - ax
-        d1 = by - ay
-        rt.put_point(out, ax + d0 * qr - d1 * qi, ay + d0 * qi + d1 * qr)
+        d0 = bx if _zero(ax) else bx - ax
+        d1 = by if _zero(ay) else by - ay
+        x, y = rt.new_point(out, _shape(d0, ax))
+        np.subtract(d0 * qr, d1 * qi, out=x)
+        np.add(d0 * qi, d1 * qr, out=y)
+        np.add(x, ax, out=x)
+        np.add(y, ay, out=y)
 
     return run
 
 
 @kernel("velocity_difference")
-def _k_vdiff(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
-    img, omega, a, x = step.inputs
+def _k_vdiff(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+    img, omega, a, x_ = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
-        xx, xy_ = rt.P(x)
+        xx, xy_ = rt.P(x_)
         ix, iy = rt.P(img)
         w = rt.arr(omega)
-        rx = xx - ax
-        ry = xy_ - ay
-        rt.put_point(out, ix - w * ry, iy + w * rx)
+        rx = xx if _zero(ax) else xx - ax
+        ry = xy_ if _zero(ay) else xy_ - ay
+        x, y = rt.new_point(out, _shape(rx, ix, w))
+        # V_X = V_A + ω k × R_XA
+        np.multiply(w, ry, out=x)
+        np.subtract(ix, x, out=x)
+        np.multiply(w, rx, out=y)
+        np.add(iy, y, out=y)
 
     return run
 
 
 @kernel("acceleration_difference")
-def _k_adiff(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
-    img, omega, alpha, a, x = step.inputs
+def _k_adiff(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+    img, omega, alpha, a, x_ = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
-        xx, xy_ = rt.P(x)
+        xx, xy_ = rt.P(x_)
         ix, iy = rt.P(img)
         w = rt.arr(omega)
         al = rt.arr(alpha)
         w2 = w * w
-        rx = xx - ax
-        ry = xy_ - ay
-        rt.put_point(out, ix - (al * ry + w2 * rx), iy + (al * rx - w2 * ry))
+        rx = xx if _zero(ax) else xx - ax
+        ry = xy_ if _zero(ay) else xy_ - ay
+        x, y = rt.new_point(out, _shape(rx, ix, w, al))
+        # A_X = A_A + α k × R_XA - ω² R_XA
+        np.add(al * ry, w2 * rx, out=x)
+        np.subtract(ix, x, out=x)
+        np.subtract(al * rx, w2 * ry, out=y)
+        np.add(iy, y, out=y)
 
     return run
 
 
 @kernel("angular_rate", originating=True)
-def _k_angular_rate(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_angular_rate(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     a, b, ia, ib = step.inputs
     (out,) = step.outputs
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
         ax, ay = rt.P(a)
         bx, by = rt.P(b)
         iax, iay = rt.P(ia)
         ibx, iby = rt.P(ib)
-        r0 = bx - ax
-        r1 = by - ay
-        v0 = ibx - iax
-        v1 = iby - iay
-        rt.put(out, (r0 * v1 - r1 * v0) / (r0 * r0 + r1 * r1))
+        r0 = bx if _zero(ax) else bx - ax
+        r1 = by if _zero(ay) else by - ay
+        v0 = ibx if _zero(iax) else ibx - iax
+        v1 = iby if _zero(iay) else iby - iay
+        den = r0 * r0 + r1 * r1
+        rt.put(out, (r0 * v1 - r1 * v0) / den)
+        # finite inputs and two distinct points: a finite rate
+        return _vmin(den) > 0.0
 
     return run
 
 
 @kernel("normal_component", originating=True)
-def _k_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, c, ip, ic = step.inputs
     (out,) = step.outputs
 
-    def run(rt: Runtime) -> None:
+    def run(rt: Runtime) -> bool:
         px, py = rt.P(p)
         cx, cy = rt.P(c)
         ipx, ipy = rt.P(ip)
         icx, icy = rt.P(ic)
-        r0 = cx - px
-        r1 = cy - py
-        v0 = icx - ipx
-        v1 = icy - ipy
-        k = -((v0 * v0 + v1 * v1) / (r0 * r0 + r1 * r1))
-        rt.put_rows(out, (k * r0, k * r1))
+        r0 = cx if _zero(px) else cx - px
+        r1 = cy if _zero(py) else cy - py
+        v0 = icx if _zero(ipx) else icx - ipx
+        v1 = icy if _zero(ipy) else icy - ipy
+        den = r0 * r0 + r1 * r1
+        k = -((v0 * v0 + v1 * v1) / den)
+        o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
+        np.multiply(k, r0, out=o0)
+        np.multiply(k, r1, out=o1)
+        return _vmin(den) > 0.0
 
     return run
 
 
 @kernel("apparent_normal", originating=True)
-def _k_apparent_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_apparent_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     s, center, i_s, i_sk = step.inputs
     (out,) = step.outputs
 
@@ -958,13 +1079,15 @@ def _k_apparent_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Callable
         v0 = ax - bx
         v1 = ay - by
         k = (v0 * v0 + v1 * v1) / (r0 * r0 + r1 * r1)
-        rt.put_rows(out, (k * r0, k * r1))
+        o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
+        np.multiply(k, r0, out=o0)
+        np.multiply(k, r1, out=o1)
 
     return run
 
 
 @kernel("coriolis")
-def _k_coriolis(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_coriolis(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     omega, ip, ipk = step.inputs
     (out,) = step.outputs
 
@@ -972,13 +1095,18 @@ def _k_coriolis(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runti
         ax, ay = rt.P(ip)
         bx, by = rt.P(ipk)
         w2 = 2 * rt.arr(omega)
-        rt.put_rows(out, (-(w2 * (ay - by)), w2 * (ax - bx)))
+        v0 = ax - bx
+        v1 = ay - by
+        o0, o1, _ = rt.new_rows(out, 2, _shape(w2, v0))
+        # 2 ω k × V_rel
+        np.multiply(-w2, v1, out=o0)
+        np.multiply(w2, v0, out=o1)
 
     return run
 
 
 @kernel("add_along", originating=True)
-def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, p0, p1, s = step.inputs
     (out,) = step.outputs
 
@@ -989,13 +1117,17 @@ def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runt
         d0 = x1 - x0
         d1 = y1 - y0
         k = rt.arr(s) / np.sqrt(d0 * d0 + d1 * d1)
-        rt.put_point(out, ax + d0 * k, ay + d1 * k)
+        x, y = rt.new_point(out, _shape(ax, d0, k))
+        np.multiply(d0, k, out=x)
+        np.add(ax, x, out=x)
+        np.multiply(d1, k, out=y)
+        np.add(ay, y, out=y)
 
     return run
 
 
 @kernel("along_line", originating=True)
-def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Runtime], None]:
+def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p0, p1, s = step.inputs
     (out,) = step.outputs
 
@@ -1005,6 +1137,10 @@ def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Callable[[Run
         d0 = x1 - x0
         d1 = y1 - y0
         k = rt.arr(s) / np.sqrt(d0 * d0 + d1 * d1)
-        rt.put_point(out, x0 + d0 * k, y0 + d1 * k)
+        x, y = rt.new_point(out, _shape(x0, d0, k))
+        np.multiply(d0, k, out=x)
+        np.add(x0, x, out=x)
+        np.multiply(d1, k, out=y)
+        np.add(y0, y, out=y)
 
     return run

@@ -14,7 +14,7 @@ from __future__ import annotations
 import json
 import math
 import operator
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -57,11 +57,16 @@ class Evaluation:
         (an entry whose arcs did not meet is False); a 0-d True for one posture.
     failed_at : dict
         For a batch, the first step that failed for each failed entry (step index).
+    unit : frozenset of str
+        Point labels known to be stored with ``w == 1`` exactly, or all NaN
+        (so their first two components are their Cartesian coordinates); set
+        by the compiled evaluation, empty when not known.
     """
 
     values: dict[str, np.ndarray]
     valid: np.ndarray
     failed_at: np.ndarray | None = None
+    unit: frozenset[str] = frozenset()
 
     def __getitem__(self, label: str) -> np.ndarray:
         return self.values[label]
@@ -229,6 +234,35 @@ class Construction:
             valid = np.array(True)
         return Evaluation(env, valid, failed_at)
 
+    def evaluate_for(self, keep: Iterable[str], given: Mapping[str, Any] | None = None, *,
+                     tol: Tolerance | None = None, strict: bool = True, start: int = 0,
+                     values: dict[str, np.ndarray] | None = None) -> Evaluation:
+        """Replay the steps as :meth:`evaluate` does, keeping only the values of ``keep``.
+
+        Every step is carried out and checked exactly as by :meth:`evaluate`
+        (same numbers, same ``valid`` and ``failed_at``), but the value of a
+        label that is not in ``keep`` is let go as soon as no later step reads
+        it, so that a long batch (a sweep) works in a small, hot piece of memory.
+        ``Evaluation.values`` then holds the kept labels and what was given.
+
+        Examples
+        --------
+        >>> cx = Construction()
+        >>> _ = cx.add("point", (), ("A",), xy=(0.0, 0.0))
+        >>> _ = cx.add("point", (), ("D",), xy=(8.0, 0.0))
+        >>> _ = cx.add("circle", ("A",), ("k_A",), radius=5.0)
+        >>> _ = cx.add("circle", ("D",), ("k_D",), radius=5.0)
+        >>> _ = cx.add("intersect_circles", ("k_A", "k_D"), ("C",), branch="left")
+        >>> sorted(cx.evaluate_for({"C"}).values)
+        ['C']
+        """
+        tol = tol or DEFAULT_TOL
+        env: dict[str, np.ndarray] = dict(values or {})
+        env.update({k: np.asarray(v, dtype=float) for k, v in (given or {}).items()})
+        keep = frozenset(keep)
+        keep = keep | frozenset(env)
+        return self._plan(tol, start).run(env, strict, keep)
+
     def _plan(self, tol: Tolerance, start: int) -> _Plan:
         plans: dict[tuple[Tolerance, int], _Plan] = self.__dict__.setdefault("_plans", {})
         plan = plans.get((tol, start))
@@ -308,106 +342,143 @@ class _Plan:
         info = CompileInfo()
         made: set[str] = set()
         externals: list[str] = []
-        self.program: list[tuple[Any, ...]] = []
+        # (run, always checked, inputs, step); run is None for an input step.  A run that
+        # returns True has made sure its outputs are finite (when its inputs are).
+        self.program: list[tuple[Callable[[Runtime], bool | None] | None, bool,
+                                 frozenset[str], Step]] = []
         for step in steps[start:]:
             if step.op == "input":
                 for o in step.outputs:
                     info.forget(o)
                     made.discard(o)
-                self.program.append(("input", step))
+                self.program.append((None, False, frozenset(), step))
                 continue
             for i in step.inputs:
                 if i not in made and i not in externals:
                     externals.append(i)
             if all(i in info.const for i in step.inputs):
-                self.program.append(self._fold(step, info))
+                run, always = self._fold(step, info)
             else:
                 factory = KERNELS.get(step.op)
-                run = factory(step, tol, info) if factory is not None else None
-                always = step.op in ORIGINATING or run is None
-                if run is None:
-                    run = generic_kernel(step, tol)
+                kern = factory(step, tol, info) if factory is not None else None
+                always = step.op in ORIGINATING or kern is None
+                run = kern if kern is not None else generic_kernel(step, tol)
                 for o in step.outputs:
                     info.forget(o)
                 if step.op == "circle":
                     info.radius[step.outputs[0]] = float(step.params["radius"])
-                self.program.append(("run", step, run, always, frozenset(step.inputs)))
+            self.program.append((run, always, frozenset(step.inputs), step))
             made.update(step.outputs)
         self.externals = tuple(externals)
 
-    def _fold(self, step: Step, info: CompileInfo) -> tuple[Any, ...]:
+    def _fold(self, step: Step,
+              info: CompileInfo) -> tuple[Callable[[Runtime], bool | None], bool]:
+        """Evaluate a step whose inputs are all constant once; replaying it copies the values."""
         args = [info.const[i] for i in step.inputs]
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             outs = OPS[step.op](*args, tol=self.tol, **step.params)
-        consts = []
+        consts: list[tuple[str, np.ndarray, Any, bool, bool]] = []
         for name, val in zip(step.outputs, outs):
             val = np.asarray(val, dtype=float)
             info.forget(name)
             info.const[name] = val
-            xy: tuple[Any, Any] | None = None
+            xy: Any = None
             unit = dirty = False
             if step.kind == "point" and val.shape[-1:] == (3,):
                 if bool(np.all(val[..., 2] == 1.0)):
-                    xy, unit = (val[..., 0].copy(), val[..., 1].copy()), True
+                    xy, unit = _rows2(val), True
                 else:
-                    q = g_xy(val)
-                    xy, dirty = (q[..., 0], q[..., 1]), True
+                    xy, dirty = _rows2(g_xy(val)), True
             elif step.kind in ("circle", "vector") and val.ndim >= 1:
-                xy = (val[..., 0].copy(), val[..., 1].copy())
+                xy = _rows2(val)
                 if step.kind == "circle" and val.shape == (3,):
                     info.radius[name] = float(val[2])
             consts.append((name, val, xy, unit, dirty))
         bad = _bad_entries(tuple(c[1] for c in consts), step.kind)
         always = bad is not None and bool(np.any(bad))
-        return ("const", step, tuple(consts), always, frozenset(step.inputs))
 
-    def run(self, env: dict[str, np.ndarray], strict: bool) -> Evaluation:
+        def run(rt: Runtime) -> None:
+            for name, val, xy, unit, dirty in consts:
+                rt.put(name, val.copy())
+                if xy is not None:
+                    rt.xy[name] = xy
+                if unit:
+                    rt.unit.add(name)
+                if dirty:
+                    rt.dirty.add(name)
+
+        return run, always
+
+    def drops(self, keep: frozenset[str]) -> dict[int, tuple[str, ...]]:
+        """Program index -> labels no longer needed after it (neither read later nor kept)."""
+        cache: dict[frozenset[str], dict[int, tuple[str, ...]]] = self.__dict__.setdefault(
+            "_drops", {})
+        hit = cache.get(keep)
+        if hit is not None:
+            return hit
+        last: dict[str, int] = {}
+        for k, (_, _, ins, step) in enumerate(self.program):
+            for o in step.outputs:
+                last.setdefault(o, k)
+                last[o] = max(last[o], k)
+            for i in ins:
+                last[i] = k
+        made = {o for _, _, _, st in self.program for o in st.outputs
+                if st.op != "input"}
+        out: dict[int, list[str]] = {}
+        for lab, k in last.items():
+            if lab in made and lab not in keep:
+                out.setdefault(k, []).append(lab)
+        hit = {k: tuple(v) for k, v in out.items()}
+        cache[keep] = hit
+        return hit
+
+    def run(self, env: dict[str, np.ndarray], strict: bool,
+            keep: frozenset[str] | None = None) -> Evaluation:
         rt = Runtime(env)
         dirty = rt.dirty
         for lab in self.externals:
             if lab in env and not _all_finite(env[lab]):
                 dirty.add(lab)
+        drops = self.drops(keep) if keep is not None else {}
         valid: np.ndarray | None = None
         failed_at: np.ndarray | None = None
+        step: Step | None = None
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            for entry in self.program:
-                kind, step = entry[0], entry[1]
-                if kind == "input":
-                    if step.outputs[0] not in env:
-                        raise _missing_input(step)
-                    continue
-                if kind == "const":
-                    for name, val, xy, unit, dirt in entry[2]:
-                        rt.put(name, val.copy())
-                        if xy is not None:
-                            rt.xy[name] = xy
-                        if unit:
-                            rt.unit.add(name)
-                        if dirt:
-                            dirty.add(name)
-                    if not entry[3]:
+            try:
+                for k, (run, always, ins, step) in enumerate(self.program):
+                    if run is None:
+                        if step.outputs[0] not in env:
+                            raise _missing_input(step)
                         continue
-                else:
-                    try:
-                        entry[2](rt)
-                    except KeyError:
-                        missing = [i for i in step.inputs if i not in env]
-                        if missing:
-                            raise _unknown_input(step, missing[0]) from None
-                        raise
-                    if not entry[3] and (not dirty or dirty.isdisjoint(entry[4])):
-                        continue
-                outs = tuple(env[o] for o in step.outputs)
-                if all(_all_finite(o) for o in outs):
-                    continue
-                bad = _bad_entries(outs, step.kind)
-                if bad is not None and np.any(bad):
-                    if strict:
-                        raise _failure(step, [env[i] for i in step.inputs])
-                    valid, failed_at = _mark(valid, failed_at, bad, step.index)
+                    sure = run(rt)
+                    if (sure is not True and always) or (dirty and not dirty.isdisjoint(ins)):
+                        outs = [env[o] for o in step.outputs]
+                        if not all(map(_all_finite, outs)):
+                            bad = _bad_entries(tuple(outs), step.kind)
+                            if bad is not None and np.any(bad):
+                                if strict:
+                                    raise _failure(step, [env[i] for i in step.inputs])
+                                valid, failed_at = _mark(valid, failed_at, bad, step.index)
+                    if drops:
+                        for lab in drops.get(k, ()):
+                            del env[lab]
+                            rt.xy.pop(lab, None)
+            except KeyError as exc:
+                missing = [i for i in step.inputs if i not in env] if step is not None else []
+                if missing:
+                    raise _unknown_input(step, missing[0]) from None  # type: ignore[arg-type]
+                raise exc
         if valid is None:
             valid = np.array(True)
-        return Evaluation(env, valid, failed_at)
+        return Evaluation(env, valid, failed_at, frozenset(rt.unit))
+
+
+def _rows2(a: np.ndarray) -> tuple[Any, Any]:
+    """The first two rows of a constant: floats for one point, arrays otherwise."""
+    if a.ndim == 1:
+        return float(a[0]), float(a[1])
+    return a[..., 0].copy(), a[..., 1].copy()
 
 
 def _bad_entries(outs: tuple[np.ndarray, ...], kind: str) -> np.ndarray | None:

@@ -296,7 +296,7 @@ def circle(center: ArrayLike, radius: ArrayLike) -> Array:
 
 
 def cross2(u: ArrayLike, v: ArrayLike) -> Array:
-    """z component of the cross product of 2-D vectors (first two components used)."""
+    """Z component of the cross product of 2-D vectors (first two components used)."""
     u, v = _f(u), _f(v)
     return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
 

@@ -18,7 +18,7 @@ stylesheets can find it in the SVG.
 
 References
 ----------
-Uicker, Pennock & Shigley, 5th ed., Sec. 1.10 (transmission angle), Sec. 1.7
+Uicker, Pennock & Shigley, 5th ed., Sec. 1.10 (transmission angle), Sec. 2.13
 (coupler curves), Secs. 3.4 and 4.3 (ω and α).
 """
 
@@ -163,7 +163,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
 
     References
     ----------
-    Uicker, Pennock & Shigley, 5th ed., Secs. 1.7, 1.10, 3.4, 4.3.
+    Uicker, Pennock & Shigley, 5th ed., Secs. 1.10, 2.13, 3.4, 4.3.
 
     Examples
     --------

@@ -1,0 +1,60 @@
+"""``graphkin plot FILE --what omega,alpha -o out.svg``: curves over a sweep of the drive.
+
+Items: ``angle``, ``omega``, ``alpha`` (every moving link, or ``omega:4``),
+``velocity:P``, ``acceleration:P`` (magnitudes), ``path:P`` (a coupler curve)
+and ``transmission`` (Sec. 1.10).  The drawing is deterministic SVG (or PDF,
+PNG by the suffix).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = sub.add_parser(
+        "plot", help="plot angles, rates, coupler curves or transmission angles over a sweep",
+        description="Sweep the drive (as graphkin sweep) and plot curves over it: angle, omega, "
+                    "alpha (omega:4 for one link), velocity:P, acceleration:P, path:P (coupler "
+                    "curve), transmission.")
+    p.add_argument("file", help="mechanism file (TOML)")
+    p.add_argument("--what", default="angle,omega,alpha", metavar="ITEMS",
+                   help="comma-separated items (default angle,omega,alpha)")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.svg",
+                   help="the drawing: .svg, .pdf or .png")
+    p.add_argument("--from", dest="start", type=float, default=None, metavar="DEG",
+                   help="first drive value (default: the file's)")
+    p.add_argument("--to", dest="stop", type=float, default=None, metavar="DEG",
+                   help="end of the range, excluded (default: one full turn on)")
+    p.add_argument("--count", type=int, default=360, metavar="N",
+                   help="number of postures (default 360)")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    import graphkin
+    from graphkin.errors import InputError
+    from graphkin.kinematics.sweep import sweep
+    from graphkin.render.plots import parse_what, save_figure, sweep_figure
+
+    items = parse_what(args.what)
+    mech = graphkin.load(args.file)
+    if args.count < 2:
+        raise InputError(f"--count must be at least 2 to draw a curve, not {args.count}",
+                         key="count", file=args.file)
+    sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
+               transmission=any(i == "transmission" for i, _ in items))
+    fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])
+    try:
+        save_figure(fig, args.output)
+    except OSError as exc:
+        raise InputError(f"cannot write the drawing: {exc.strerror}", key="output",
+                         file=args.output) from None
+    for line in sw.report():
+        print(f"graphkin: {args.file}: {line}", file=sys.stderr)
+    return 0
