@@ -627,3 +627,21 @@ def test_extra_columns_at_the_file_posture_of_example_3_1(examples: Path) -> Non
         assert abs(cols["rho_E"][0] - 4.320695) < 1e-6
         # link 2 turns about the fixed pivot A: its inflection pole is the pole itself
         assert abs(cols["inflection_diameter_2"][0]) < 1e-9
+
+
+def test_rolling_contact_is_swept_by_the_analytic_solver():
+    # Uicker Ex. 3.9: the wheel rolls on the ground, so away from the file's drive its
+    # angle follows the travel of its center: θ4 = −(x_G − 200)/ρ with ρ = 100 mm and
+    # θ4 = 0 at the file's posture (x_G = 200).  The center stays 100 mm above the ground.
+    from pathlib import Path
+
+    import graphkin
+
+    mech = graphkin.load(Path(__file__).resolve().parents[1] / "examples"
+                         / "ex3_9_rolling_wheel.toml")
+    sw = mech.sweep(count=7, start=90.0, stop=125.0)
+    assert sw.method == "analytic"
+    x = sw.columns["x_G"]
+    np.testing.assert_allclose(sw.columns["y_G"], 100.0, atol=1e-9)
+    np.testing.assert_allclose(np.radians(sw.columns["angle_4"]), -(x - 200.0) / 100.0,
+                               atol=1e-9)

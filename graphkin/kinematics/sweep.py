@@ -112,6 +112,13 @@ class _Engine:
         self.combined: Construction | None = None
         self.recipe: Any = False
         self.const_rows: dict[tuple[str, int], float] = {}
+        if mech.rolling:
+            # away from the file's drive a roller's angle follows its travel (the no-slip
+            # condition integrated), which no ruler-and-compass step gives
+            self.method = "analytic"
+            self.reason = ("rolling contact: the roller's angle follows its travel over the "
+                           "sweep, so the analytic solver sweeps it")
+            return
         try:
             self.pc = build_posture(mech, tol)
         except NotDecomposable as exc:
