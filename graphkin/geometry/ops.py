@@ -132,7 +132,7 @@ def normalize_point(p: ArrayLike, tol: Tolerance | None = None) -> Array:
     n = np.hypot(p[..., 0], p[..., 1])
     w = p[..., 2]
     ideal = np.abs(w) <= tol.angle * n
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         fin = p / np.where(w == 0.0, np.nan, w)[..., None]
         ide = np.stack([p[..., 0] / n, p[..., 1] / n, np.zeros_like(w)], axis=-1)
     out = np.where(ideal[..., None], ide, fin)
@@ -177,7 +177,9 @@ def join(p: ArrayLike, q: ArrayLike, tol: Tolerance | None = None) -> Array:
 def meet(line1: ArrayLike, line2: ArrayLike, tol: Tolerance | None = None) -> Array:
     """The point common to two lines; an ideal point when they are parallel.
 
-    Coincident lines give NaN.
+    The lines are taken with unit normals (as every line here is kept), so the
+    ``w`` of their cross product is the sine of the angle between them: they
+    are parallel when it is below ``tol.angle``.  Coincident lines give NaN.
 
     Examples
     --------
@@ -189,7 +191,14 @@ def meet(line1: ArrayLike, line2: ArrayLike, tol: Tolerance | None = None) -> Ar
     tol = tol or DEFAULT_TOL
     l1, l2 = _f(line1), _f(line2)
     p = np.cross(l1, l2)
-    out = normalize_point(p, tol)
+    # with unit normals, w is the sine of the angle between the lines: the parallel test
+    # is an angle test, whatever the length unit (a meet far away is still finite)
+    w = p[..., 2]
+    n = np.hypot(p[..., 0], p[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        fin = p / np.where(w == 0.0, np.nan, w)[..., None]
+        ide = np.stack([p[..., 0] / n, p[..., 1] / n, np.zeros_like(w)], axis=-1)
+    out = np.where((np.abs(w) <= tol.angle)[..., None], ide, fin)
     # coincident lines: parallel and the same offset
     same = (np.abs(p[..., 2]) <= tol.angle) & (
         np.abs(l1[..., 2] - np.sign(dot2(l1, l2)) * l2[..., 2])
@@ -218,7 +227,8 @@ def line_through(p: ArrayLike, d: ArrayLike) -> Array:
 def parallel(line: ArrayLike, through: ArrayLike) -> Array:
     """The line parallel to ``line`` through the point ``through`` (same direction)."""
     line, p = _f(line), _f(through)
-    c = -(line[..., 0] * p[..., 0] + line[..., 1] * p[..., 1]) / p[..., 2]
+    with np.errstate(invalid="ignore", divide="ignore"):  # through an ideal point: no line
+        c = -(line[..., 0] * p[..., 0] + line[..., 1] * p[..., 1]) / p[..., 2]
     return np.stack([line[..., 0], line[..., 1], c], axis=-1)
 
 
@@ -235,7 +245,9 @@ def perpendicular(line: ArrayLike, through: ArrayLike) -> Array:
     """
     line, p = _f(line), _f(through)
     a, b = line[..., 0], line[..., 1]
-    return np.stack([-b, a, (b * p[..., 0] - a * p[..., 1]) / p[..., 2]], axis=-1)
+    with np.errstate(invalid="ignore", divide="ignore"):  # through an ideal point: no line
+        c = (b * p[..., 0] - a * p[..., 1]) / p[..., 2]
+    return np.stack([-b, a, c], axis=-1)
 
 
 def project(p: ArrayLike, line: ArrayLike) -> Array:

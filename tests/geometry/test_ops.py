@@ -192,3 +192,19 @@ def test_broadcasting_one_against_many():
     behind, ahead = ops.intersect_line_circle(lines, [0, 0, 2])
     assert behind.shape == (7, 3)
     assert_allclose(ops.distance(behind, ahead), 4.0)
+
+
+def test_meet_decides_parallel_by_angle_not_by_distance():
+    # Two lines 1e-6 rad apart meet about 1e6 length units away: a finite point in any
+    # unit (it was taken as at infinity only past 1/tol.angle = 1e9 units before).
+    g = ops
+    l1 = g.join(g.point(0, 0), g.point(1, 0))
+    l2 = g.line_through(g.point(0, 1), g.vector(np.cos(1e-6), -np.sin(1e-6)))
+    p = g.meet(l1, l2)
+    assert p[2] == 1.0
+    # x = 1/tan(1e-6)
+    assert p[0] == pytest.approx(1.0 / np.tan(1e-6), rel=1e-9)
+    # 1e-10 rad apart: parallel within the default angle tolerance 1e-9 -> at infinity
+    l3 = g.line_through(g.point(0, 1), g.vector(np.cos(1e-10), -np.sin(1e-10)))
+    q = g.meet(l1, l3)
+    assert q[2] == 0.0 and abs(q[0]) == pytest.approx(1.0)
