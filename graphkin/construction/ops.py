@@ -315,6 +315,80 @@ def _angle_along(t: Array, s: Array, *, tol: Tolerance, local_angle: float,
     return (np.arctan2(v[..., 1], v[..., 0]) - local_angle,)
 
 
+# ---- instant centers and curvature ------------------------------------------------
+
+@op("at_infinity_on")
+def _at_infinity_on(line: Array, *, tol: Tolerance) -> tuple[Array]:
+    """The point at infinity of a line (where it meets every parallel to it)."""
+    d = g.direction(line)
+    return (g.ideal_point(d[..., 0], d[..., 1]),)
+
+
+@op("same_point")
+def _same_point(p: Array, q: Array, *, tol: Tolerance) -> tuple[Array]:
+    """Two centers that coincide: a third center is that same point (Kennedy)."""
+    return (np.asarray(p, dtype=float).copy(),)
+
+
+@op("copy_point")
+def _copy_point(p: Array, *, tol: Tolerance) -> tuple[Array]:
+    """A point that coincides with a known one."""
+    return (np.asarray(p, dtype=float).copy(),)
+
+
+@op("homogeneous_point")
+def _homogeneous_point(*, tol: Tolerance, h: Any) -> tuple[Array]:
+    """A point given by homogeneous coordinates ``(x, y, w)``, finite or at infinity."""
+    return (g.normalize_point(np.asarray(h, dtype=float), tol),)
+
+
+@op("circumcircle", kind="circle")
+def _circumcircle(p: Array, q: Array, r: Array, *, tol: Tolerance) -> tuple[Array]:
+    """The circle through three points: its center is where two bisectors meet."""
+    b1 = g.perpendicular(g.join(p, q, tol), g.midpoint(p, q))
+    b2 = g.perpendicular(g.join(q, r, tol), g.midpoint(q, r))
+    c = g.meet(b1, b2, tol)
+    with np.errstate(invalid="ignore"):
+        return (g.circle(c, g.distance(c, p)),)
+
+
+@op("other_intersection")
+def _other_intersection(c1: Array, c2: Array, p: Array, *, tol: Tolerance) -> tuple[Array]:
+    """Two circles through a point P meet again at P's mirror in their line of centers."""
+    c1, c2 = np.asarray(c1, dtype=float), np.asarray(c2, dtype=float)
+    o1 = g.point(c1[..., 0], c1[..., 1])
+    o2 = g.point(c2[..., 0], c2[..., 1])
+    return (g.reflect(p, g.join(o1, o2, tol)),)
+
+
+@op("second_on_circle")
+def _second_on_circle(line: Array, c: Array, p: Array, *, tol: Tolerance) -> tuple[Array]:
+    """A line through a point P of a circle meets the circle again (P itself if tangent)."""
+    c = np.asarray(c, dtype=float)
+    foot = g.xy(g.project(g.point(c[..., 0], c[..., 1]), line))
+    q = 2.0 * foot - g.xy(p)
+    return (g.point(q[..., 0], q[..., 1]),)
+
+
+@op("perpendicular_cw", kind="line")
+def _perpendicular_cw(line: Array, p: Array, *, tol: Tolerance) -> tuple[Array]:
+    """Through P the perpendicular to a line, directed 90° clockwise from it."""
+    return (-g.perpendicular(line, p),)
+
+
+@op("parallelogram")
+def _parallelogram(p: Array, a: Array, b: Array, *, tol: Tolerance) -> tuple[Array]:
+    """Complete the parallelogram P, A, G, B: ``G = A + B - P``.
+
+    A vertex at infinity makes the opposite vertex that same point at infinity
+    (the two sides through it are parallel to it).
+    """
+    p, a, b = (np.asarray(x, dtype=float) for x in (p, a, b))
+    fin = g.point(*np.moveaxis(g.xy(a) + g.xy(b) - g.xy(p), -1, 0))
+    out = np.where(g.is_ideal(b)[..., None], b, fin)
+    return (np.where(g.is_ideal(a)[..., None], a, out),)
+
+
 # ---------------------------------------------------------------------------
 # Compiled kernels: the same operations, specialised once per step.
 #

@@ -205,71 +205,16 @@ _TEXT_ZERO = 1e-12
 
 
 # ---------------------------------------------------------------------------
-# construction operations the curvature constructions need (not in the general registry)
+# the one construction operation that is curvature's own
 # ---------------------------------------------------------------------------
 
 def _register() -> None:
-    if "circumcircle" not in OPS:
-        @op("circumcircle", kind="circle")
-        def _circumcircle(p: Array, q: Array, r: Array, *, tol: Tolerance) -> tuple[Array]:
-            """The circle through three points: its center is where two bisectors meet."""
-            b1 = g.perpendicular(g.join(p, q, tol), g.midpoint(p, q))
-            b2 = g.perpendicular(g.join(q, r, tol), g.midpoint(q, r))
-            c = g.meet(b1, b2, tol)
-            with np.errstate(invalid="ignore"):
-                return (g.circle(c, g.distance(c, p)),)
-
-    if "other_intersection" not in OPS:
-        @op("other_intersection")
-        def _other_intersection(c1: Array, c2: Array, p: Array, *,
-                                tol: Tolerance) -> tuple[Array]:
-            """Two circles through a point P meet again at P's mirror in their line of centers."""
-            c1, c2 = np.asarray(c1, dtype=float), np.asarray(c2, dtype=float)
-            o1 = g.point(c1[..., 0], c1[..., 1])
-            o2 = g.point(c2[..., 0], c2[..., 1])
-            return (g.reflect(p, g.join(o1, o2, tol)),)
-
-    if "second_on_circle" not in OPS:
-        @op("second_on_circle")
-        def _second_on_circle(line: Array, c: Array, p: Array, *,
-                              tol: Tolerance) -> tuple[Array]:
-            """A line through a point P of a circle meets the circle again (P itself if tangent)."""
-            c = np.asarray(c, dtype=float)
-            foot = g.xy(g.project(g.point(c[..., 0], c[..., 1]), line))
-            q = 2.0 * foot - g.xy(p)
-            return (g.point(q[..., 0], q[..., 1]),)
-
-    if "perpendicular_cw" not in OPS:
-        @op("perpendicular_cw", kind="line")
-        def _perpendicular_cw(line: Array, p: Array, *, tol: Tolerance) -> tuple[Array]:
-            """Through P the perpendicular to a line, directed 90° clockwise from it."""
-            return (-g.perpendicular(line, p),)
-
-    if "parallelogram" not in OPS:
-        @op("parallelogram")
-        def _parallelogram(p: Array, a: Array, b: Array, *, tol: Tolerance) -> tuple[Array]:
-            """Complete the parallelogram P, A, G, B: ``G = A + B - P``.
-
-            A vertex at infinity makes the opposite vertex that same point at
-            infinity (the two sides through it are parallel to it).
-            """
-            p, a, b = (np.asarray(x, dtype=float) for x in (p, a, b))
-            fin = g.point(*np.moveaxis(g.xy(a) + g.xy(b) - g.xy(p), -1, 0))
-            out = np.where(g.is_ideal(b)[..., None], b, fin)
-            return (np.where(g.is_ideal(a)[..., None], a, out),)
-
     if "euler_savary_inflection" not in OPS:
         @op("euler_savary_inflection")
         def _es_inflection(i: Array, a: Array, a_conj: Array, *,
                            tol: Tolerance) -> tuple[Array]:
             """Lay off ``R_AJ_A = R_AI²/R_AA'`` from A along the ray (Eq. 4.43): J_A."""
             return (inflection_points_on_ray(i, a, a_conj),)
-
-    if "copy_point" not in OPS:
-        @op("copy_point")
-        def _copy_point(p: Array, *, tol: Tolerance) -> tuple[Array]:
-            """A point that coincides with a known one."""
-            return (np.asarray(p, dtype=float).copy(),)
 
 
 _register()

@@ -102,7 +102,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from graphkin.construction import Construction, Role
-from graphkin.construction.ops import OPS, op
+from graphkin.construction.ops import OPS
 from graphkin.errors import DegenerateError, GraphkinError, IdealPointError, InputError
 from graphkin.geometry import ops as g
 from graphkin.geometry.point import Point
@@ -137,34 +137,6 @@ Array = np.ndarray
 #: coordinates scaled by the size of the mechanism, is below this loses more
 #: than 6 of 16 digits: another triangle, or the velocities, are used instead.
 _WELL_CONDITIONED = 1e-6
-
-
-# ---------------------------------------------------------------------------
-# three construction operations the centers need (not in the general registry)
-# ---------------------------------------------------------------------------
-
-def _register() -> None:
-    if "at_infinity_on" not in OPS:
-        @op("at_infinity_on")
-        def _at_infinity_on(line: Array, *, tol: Tolerance) -> tuple[Array]:
-            """The point at infinity of a line (where it meets every parallel to it)."""
-            d = g.direction(line)
-            return (g.ideal_point(d[..., 0], d[..., 1]),)
-
-    if "same_point" not in OPS:
-        @op("same_point")
-        def _same_point(p: Array, q: Array, *, tol: Tolerance) -> tuple[Array]:
-            """Two centers that coincide: a third center is that same point (Kennedy)."""
-            return (np.asarray(p, dtype=float).copy(),)
-
-    if "homogeneous_point" not in OPS:
-        @op("homogeneous_point")
-        def _homogeneous_point(*, tol: Tolerance, h: Any) -> tuple[Array]:
-            """A point given by homogeneous coordinates ``(x, y, w)``, finite or at infinity."""
-            return (g.normalize_point(np.asarray(h, dtype=float), tol),)
-
-
-_register()
 
 
 # ---------------------------------------------------------------------------
