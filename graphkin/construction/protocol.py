@@ -291,6 +291,15 @@ class Construction:
         """The steps as plain data."""
         return [s.to_dict() for s in self.steps]
 
+    def _repr_svg_(self) -> str | None:
+        """Jupyter: the construction drawn inline.
+
+        The renderer is imported here, when a notebook asks, never at import time.
+        """
+        from graphkin.render import repr_svg
+
+        return repr_svg(self)
+
     def to_json(self) -> str:
         """The steps as JSON text."""
         return json.dumps(self.to_dict(), ensure_ascii=False, indent=1)
