@@ -954,34 +954,27 @@ def _k_meet(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
-@kernel("translate")
-def _k_translate(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    p, v = step.inputs
-    (out,) = step.outputs
+def _point_and_vector(ufunc: Any) -> KernelFactory:
+    """Kernel factory of a point moved by a vector: ``ufunc`` is np.add or np.subtract."""
 
-    def run(rt: Runtime) -> None:
-        ax, ay = rt.P(p)
-        vx, vy = rt.V(v)
-        x, y = rt.new_point(out, _shape(ax, vx))
-        np.add(ax, vx, out=x)
-        np.add(ay, vy, out=y)
+    def factory(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+        p, v = step.inputs
+        (out,) = step.outputs
 
-    return run
+        def run(rt: Runtime) -> None:
+            ax, ay = rt.P(p)
+            vx, vy = rt.V(v)
+            x, y = rt.new_point(out, _shape(ax, vx))
+            ufunc(ax, vx, out=x)
+            ufunc(ay, vy, out=y)
+
+        return run
+
+    return factory
 
 
-@kernel("subtract")
-def _k_subtract(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    p, v = step.inputs
-    (out,) = step.outputs
-
-    def run(rt: Runtime) -> None:
-        ax, ay = rt.P(p)
-        vx, vy = rt.V(v)
-        x, y = rt.new_point(out, _shape(ax, vx))
-        np.subtract(ax, vx, out=x)
-        np.subtract(ay, vy, out=y)
-
-    return run
+kernel("translate")(_point_and_vector(np.add))
+kernel("subtract")(_point_and_vector(np.subtract))
 
 
 @kernel("vector")
