@@ -1155,6 +1155,16 @@ def _translates(mech: Mechanism, lid: str) -> bool:
     return lid in seen and lid != FRAME
 
 
+def _input_link(mech: Mechanism, given: object) -> object:
+    """The input link: the one given, or the single drive's."""
+    if given is not None:
+        return given
+    if len(mech.drives) != 1:
+        raise InputError("say which link is the input: the file has "
+                         f"{len(mech.drives)} drives", key="drive")
+    return mech.drives[0].link
+
+
 def kinematic_coefficient(sol: Solution | InstantCenters, output: object,
                           input: object | None = None) -> Array:
     """First-order kinematic coefficient of ``output`` for ``input``, from instant centers.
@@ -1216,11 +1226,7 @@ def kinematic_coefficient(sol: Solution | InstantCenters, output: object,
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism
-    if input is None:
-        if len(mech.drives) != 1:
-            raise InputError("say which link is the input: the file has "
-                             f"{len(mech.drives)} drives", key="drive")
-        input = mech.drives[0].link
+    input = _input_link(mech, input)
     i, j = str(input), str(output)
     if i == j:
         return np.ones(np.shape(ic.solution.links[FRAME].angle))
@@ -1301,11 +1307,7 @@ def mechanical_advantage(sol: Solution | InstantCenters, output: object,
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism
-    if input is None:
-        if len(mech.drives) != 1:
-            raise InputError("say which link is the input: the file has "
-                             f"{len(mech.drives)} drives", key="drive")
-        input = mech.drives[0].link
+    input = _input_link(mech, input)
     k = kinematic_coefficient(ic, output, input)
     with np.errstate(divide="ignore"):
         return np.where(k == 0.0, np.inf, 1.0 / np.where(k == 0.0, 1.0, k))
