@@ -38,3 +38,34 @@ def test_spec_example_draws_every_construction(gk, name):
     rows = gk.drawn(name, sheet).sheet.rows
     assert rows and all(r.diff is not None and r.diff < 1e-6 for r in rows), \
         [(r.key, r.diff) for r in rows if r.diff is None or r.diff >= 1e-6]
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_spec_example_centers_and_curvature_are_deterministic_svg(gk, name):
+    # issue 5's acceptance: the centers diagram for every file, the curvature diagram
+    # where the file gives rates; valid SVG, the same bytes twice, every step a group and
+    # every point's letter real <text>.
+    from graphkin.kinematics.curvature import curvature_constructions
+    from graphkin.kinematics.instant_centers import instant_centers
+    from graphkin.render import draw, to_bytes
+
+    sol = gk.solved(name)
+    sheets = [("centers", None, instant_centers(sol).construction)]
+    if sol.mechanism.has_rates:
+        # the curvature of every link that turns about a moving pole (not a frame pivot)
+        for lid, cx in curvature_constructions(sol).items():
+            if len(cx) > 1:
+                sheets.append(("curvature", lid, cx))
+    for diagram, link, cx in sheets:
+        first = to_bytes(draw(sol, diagram, link=link).figure)
+        assert first == to_bytes(draw(sol, diagram, link=link).figure)
+        root = ET.fromstring(first)
+        ids = {el.get("id") for el in root.iter() if el.get("id")}
+        texts = {"".join(el.itertext()) for el in root.iter() if el.tag.endswith("text")}
+        assert cx.steps, diagram
+        missing = [s.step_id for s in cx if not any(i.endswith(s.step_id) for i in ids)]
+        assert not missing, f"{diagram} {link}: {missing}"
+        mech = sol.mechanism
+        for n in mech.point_names:
+            if any(lid != FRAME for lid in mech.point_links[n]):
+                assert n in texts or f"label-{n}" in ids, (diagram, n)
