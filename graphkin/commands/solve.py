@@ -28,15 +28,29 @@ def run(args: argparse.Namespace) -> int:
 
     mech = graphkin.load(args.file)
     sol = mech.solve()
+    constructions = _all_constructions(sol) if args.steps else {}
     if args.json:
         data = solution_to_dict(sol)
         if args.steps:
-            data["constructions"] = {k: c.to_dict() for k, c in sol.constructions.items()}
+            data["constructions"] = {k: c.to_dict() for k, c in constructions.items()}
         json.dump(data, sys.stdout, ensure_ascii=False, indent=1, allow_nan=False)
         sys.stdout.write("\n")
         return 0
     sys.stdout.write(text_report(sol))
-    if args.steps:
-        for name, c in sol.constructions.items():
-            sys.stdout.write(f"\n{name.capitalize()} construction\n{c.table()}\n")
+    for name, c in constructions.items():
+        sys.stdout.write(f"\n{name.capitalize()} construction\n{c.table()}\n")
     return 0
+
+
+def _all_constructions(sol: object) -> dict[str, object]:
+    """Posture and polygons, then the instant centers and each link's curvature."""
+    from graphkin.kinematics.curvature import curvature_constructions
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    out = dict(sol.constructions)  # type: ignore[attr-defined]
+    out["instant centers"] = instant_centers(sol).construction  # type: ignore[arg-type]
+    if sol.has_rates:  # type: ignore[attr-defined]
+        for lid, cx in curvature_constructions(sol).items():  # type: ignore[arg-type]
+            if len(cx) > 1:
+                out[f"curvature of link {lid}"] = cx
+    return out
