@@ -645,3 +645,23 @@ def test_rolling_contact_is_swept_by_the_analytic_solver():
     np.testing.assert_allclose(sw.columns["y_G"], 100.0, atol=1e-9)
     np.testing.assert_allclose(np.radians(sw.columns["angle_4"]), -(x - 200.0) / 100.0,
                                atol=1e-9)
+
+
+def test_a_file_drawn_in_its_dead_zone_still_sweeps():
+    # Example 3.1's crank cannot pass from 326.88° to 33.12° (the coupler and rocker
+    # cannot close: |BD| > BC + CD there).  A file whose drive stands in that zone
+    # is laid out at the first angle of the turn that assembles, and sweeps the same
+    # branch as the book's file (same hints).
+    from spec_data import EXAMPLES
+
+    import graphkin
+
+    text = (EXAMPLES / "ex3_1_fourbar.toml").read_text().replace("angle = 120", "angle = 0")
+    dead = graphkin.loads(text).sweep(count=36)
+    book = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml").sweep(count=36, start=0.0)
+    assert any("cannot be assembled" in n for n in dead.notes)
+    assert not dead.valid[0] and dead.valid[4]
+    np.testing.assert_array_equal(dead.valid, book.valid)
+    ok = dead.valid
+    np.testing.assert_allclose(dead.columns["angle_3"][ok], book.columns["angle_3"][ok],
+                               atol=1e-9)

@@ -35,6 +35,7 @@ dead-center postures), Sec. 2.8 (posture), Secs. 3.4-3.6 and 4.2-4.6
 from __future__ import annotations
 
 import csv
+import dataclasses
 import io
 import math
 import weakref
@@ -119,8 +120,9 @@ class _Engine:
             self.reason = ("rolling contact: the roller's angle follows its travel over the "
                            "sweep, so the analytic solver sweeps it")
             return
+        self.built_at: float | None = None
         try:
-            self.pc = build_posture(mech, tol)
+            self.pc = self._build(mech, tol)
         except NotDecomposable as exc:
             self.method = "analytic"
             self.reason = str(exc)
@@ -146,6 +148,29 @@ class _Engine:
                     w, a = self.pol.rate_inputs[d.index]
                     self.rate_given[w] = 0.0 if d.rate is None else d.rate
                     self.rate_given[a] = 0.0 if d.rate2 is None else d.rate2
+
+    def _build(self, mech: Mechanism, tol: Tolerance) -> PostureConstruction:
+        """The posture construction, laid out at the file's drive if it assembles there.
+
+        Otherwise it is laid out at the first drive angle of the turn where it
+        can (its branches then follow the assembly hints at that posture).
+        """
+        try:
+            return build_posture(mech, tol)
+        except AssemblyError:
+            d = self.drive
+            if d.kind != "angle":
+                raise
+            for k in range(1, 360):
+                moved = dataclasses.replace(d, value=d.value + math.radians(k))
+                drives = tuple(moved if x is d else x for x in mech.drives)
+                try:
+                    pc = build_posture(dataclasses.replace(mech, drives=drives), tol)
+                except AssemblyError:
+                    continue
+                self.built_at = moved.value
+                return pc
+            raise
 
     def _keep(self) -> frozenset[str]:
         """The labels a sweep reads: named points, anchors, angles, rates and their images."""
@@ -943,6 +968,9 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         valid = np.concatenate([_valid_of(blk) for blk in blocks])
         assembled = np.concatenate([_assembled_of(blk) for blk in blocks])
     notes: list[str] = []
+    if eng.built_at is not None:
+        notes.append(f"the file's drive cannot be assembled; the constructions were laid out "
+                     f"at {math.degrees(eng.built_at):.2f}° (branches by the assembly hints there)")
     if eng.method == "analytic":
         notes.append("solved by the analytic solver (Newton-Raphson, each posture from the one "
                      f"before): {eng.reason}")
