@@ -108,6 +108,7 @@ class _Engine:
         self.drive: Drive = mech.drives[0]
         self.method = "construction"
         self.reason = ""
+        self.built_at: float | None = None
         self.pc: PostureConstruction | None = None
         self.pol: Polygons | None = None
         self.combined: Construction | None = None
@@ -120,7 +121,6 @@ class _Engine:
             self.reason = ("rolling contact: the roller's angle follows its travel over the "
                            "sweep, so the analytic solver sweeps it")
             return
-        self.built_at: float | None = None
         try:
             self.pc = self._build(mech, tol)
         except NotDecomposable as exc:
