@@ -57,6 +57,9 @@ class InputError(GraphkinError, ValueError):
     Carries ``file`` and ``key`` (the dotted TOML key) when known.
     """
 
+    file: str | None
+    key: str | None
+
     def __init__(self, message: str, *, key: str | None = None, file: str | None = None,
                  **info: Any) -> None:
         super().__init__(message, key=key, file=file, **info)

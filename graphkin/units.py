@@ -35,7 +35,7 @@ def registry() -> Any:
     """The shared pint unit registry (created on first use)."""
     import pint
 
-    ureg = pint.UnitRegistry()
+    ureg: Any = pint.UnitRegistry()
     # the textbook writes revolutions as "rev" (900 rev/min)
     ureg.define("rev = revolution")
     return ureg

@@ -5,6 +5,11 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from graphkin.construction import Construction
+    from graphkin.kinematics.solution import Solution
 
 __all__ = ["add_parser", "run"]
 
@@ -42,15 +47,15 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _all_constructions(sol: object) -> dict[str, object]:
+def _all_constructions(sol: Solution) -> dict[str, Construction]:
     """Posture and polygons, then the instant centers and each link's curvature."""
     from graphkin.kinematics.curvature import curvature_constructions
     from graphkin.kinematics.instant_centers import instant_centers
 
-    out = dict(sol.constructions)  # type: ignore[attr-defined]
-    out["instant centers"] = instant_centers(sol).construction  # type: ignore[arg-type]
-    if sol.has_rates:  # type: ignore[attr-defined]
-        for lid, cx in curvature_constructions(sol).items():  # type: ignore[arg-type]
+    out = dict(sol.constructions)
+    out["instant centers"] = instant_centers(sol).construction
+    if sol.has_rates:
+        for lid, cx in curvature_constructions(sol).items():
             if len(cx) > 1:
                 out[f"curvature of link {lid}"] = cx
     return out

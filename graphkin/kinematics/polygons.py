@@ -25,10 +25,11 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.3-3.6 (Tables 3.1), 4.2-4.6 (Table 4.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 from graphkin.construction import Construction, Mark, Role, Term, VectorEquation
 from graphkin.kinematics.posture import PostureConstruction, _n
-from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.mechanisms.model import FRAME, Drive, Mechanism, Rolling, Slider, Slot
 
 __all__ = ["Polygons", "build_polygons", "vimg", "aimg"]
 
@@ -80,14 +81,14 @@ class _Poly:
         self.lines: set[str] = set()
 
     # ---- helpers ------------------------------------------------------
-    def V(self, op: str, inputs: tuple[str, ...], out: str, **kw: object) -> str:
+    def V(self, op: str, inputs: tuple[str, ...], out: str, **kw: Any) -> str:
         kw.setdefault("diagram", "velocity")
-        self.v.add(op, inputs, (out,), **kw)  # type: ignore[arg-type]
+        self.v.add(op, inputs, (out,), **kw)
         return out
 
-    def A(self, op: str, inputs: tuple[str, ...], out: str, **kw: object) -> str:
+    def A(self, op: str, inputs: tuple[str, ...], out: str, **kw: Any) -> str:
         kw.setdefault("diagram", "acceleration")
-        self.a.add(op, inputs, (out,), **kw)  # type: ignore[arg-type]
+        self.a.add(op, inputs, (out,), **kw)
         return out
 
     def posture_line(self, p: str, q: str, which: Construction) -> str:
@@ -140,28 +141,28 @@ class _Poly:
             self.rolling_rates(r)
 
     # ---- rolling contact (Sec. 3.7, 4.7) -----------------------------------
-    def rolling(self, key: str) -> object:
+    def rolling(self, key: str) -> Rolling:
         return next(r for r in self.mech.rolling if r.key == key)
 
-    def ev_roll_angle(self, r: object) -> None:
+    def ev_roll_angle(self, r: Rolling) -> None:
         """The roller's ω and α come from the rolling condition once its images allow."""
 
-    def ev_contact(self, r: object) -> None:
+    def ev_contact(self, r: Rolling) -> None:
         """The contact point is placed: nothing to draw until its images are needed."""
 
-    def contact_images(self, r: object) -> tuple[str, str]:
+    def contact_images(self, r: Rolling) -> tuple[str, str]:
         """Images of the contact point C as a point of the roller (velocity, acceleration).
 
         No slip: ``V_C(link) = V_C(on)`` (Eq. 3.13); ``A_C(link) = A_C(on) + A^r``
         with A^r normal to the surfaces (Eq. 4.19).
         """
-        c = f"{r.key}:C"  # type: ignore[attr-defined]
-        i, j = r.link, r.on  # type: ignore[attr-defined]
+        c = f"{r.key}:C"
+        i, j = r.link, r.on
         vj, aj = self.coincident(j, c)
         al = aimg(f"{c}@{i}")
         if al not in {o for st in self.a.steps for o in st.outputs}:
             # ω of the roller is found in the velocity polygon (evaluated before this one)
-            ar = self.A("rolling_normal", (c, r.center, f"ω{i}", self.omega[j]),  # type: ignore[attr-defined]
+            ar = self.A("rolling_normal", (c, r.center, f"ω{i}", self.omega[j]),
                         f"A_C{i}/{j}^r",
                         note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel, normal to the surfaces, "
                              "toward the center (Eq. 4.19).")
@@ -175,32 +176,32 @@ class _Poly:
         """A named point of the link whose image is already drawn."""
         return next(p for p in self.mech.links[lid].points if p in images)
 
-    def ensure_omega(self, r: object, via: str | None = None) -> None:
-        i = r.link  # type: ignore[attr-defined]
+    def ensure_omega(self, r: Rolling, via: str | None = None) -> None:
+        i = r.link
         if i in self.omega:
             return
-        c = f"{r.key}:C"  # type: ignore[attr-defined]
-        vj, _ = self.coincident(r.on, c)  # type: ignore[attr-defined]
+        c = f"{r.key}:C"
+        vj, _ = self.coincident(r.on, c)
         p = via or self.known_point(i, self.vimg)
         self.V("angular_rate", (p, c, self.vimg[p], vj), f"ω{i}", role=Role.RESULT,
                note=f"No slip: the contact point of link {i} has the velocity of the surface's; "
                     f"ω{i} = V_C{p}/R_C{p}.")
         self.omega[i] = f"ω{i}"
 
-    def rolling_rates(self, r: object) -> None:
-        i = r.link  # type: ignore[attr-defined]
+    def rolling_rates(self, r: Rolling) -> None:
+        i = r.link
         self.ensure_omega(r)
         if i in self.alpha:
             return
         _, al = self.contact_images(r)
         p = self.known_point(i, self.aimg)
-        c = f"{r.key}:C"  # type: ignore[attr-defined]
+        c = f"{r.key}:C"
         self.A("angular_rate", (p, c, self.aimg[p], al), f"α{i}", role=Role.RESULT,
                note=f"α{i} = A^t_C{p}/R_C{p}, its sense from the image.")
         self.alpha[i] = f"α{i}"
 
-    def ev_input(self, d: object) -> None:
-        lid, kind, idx = d.link, d.kind, d.index  # type: ignore[attr-defined]
+    def ev_input(self, d: Drive) -> None:
+        lid, kind, idx = d.link, d.kind, d.index
         if kind == "angle":
             w, al = f"ω{lid}", f"α{lid}"
             self.V("input", (), w, name=w, role=Role.GIVEN, note=f"The input speed ω{lid}.")
@@ -273,10 +274,11 @@ class _Poly:
             aimg(name), role=Role.RESULT, equation=eqa,
             note=f"A_{name} = A_{_n(anchor)} + A^n + A^t (case 1).")
 
-    def ev_slider_drive(self, d: object) -> None:
-        s = d.slider  # type: ignore[attr-defined]
+    def ev_slider_drive(self, d: Drive) -> None:
+        s = d.slider
+        assert s is not None
         p, k = s.point, s.on
-        w, al = self.rate_inputs[d.index]  # type: ignore[attr-defined]
+        w, al = self.rate_inputs[d.index]
         vk, ak = self.coincident(k, p)
         l0, l1 = f"{s.key}:L0", f"{s.key}:L1"
         eq = VectorEquation((Term(f"V_{p}", U, U),), (Term(f"V_{p}{k}"), Term(f"V_{p}/{k}")),
@@ -321,7 +323,7 @@ class _Poly:
             _, lid, key = motion
             r = self.rolling(key)
             cp = f"{key}:C"
-            vj, _ = self.coincident(r.on, cp)  # type: ignore[attr-defined]
+            vj, _ = self.coincident(r.on, cp)
             line = self.posture_line(cp, c, self.v)
             lv = self.V("perpendicular", (line, vj), f"⊥{_n(c)}C:v",
                         note=f"Link {lid} turns about the contact point C for now: through the "
@@ -370,13 +372,13 @@ class _Poly:
                               note=f"The two lines meet at the acceleration image of {c} "
                                    "(case 3).")
 
-    def ev_pin_in_slot(self, s: object, lid: str, p: str) -> None:
-        x, k = s.point, s.on  # type: ignore[attr-defined]
+    def ev_pin_in_slot(self, s: Slot, lid: str, p: str) -> None:
+        x, k = s.point, s.on
         lv1, la1, tv1, ta1 = self.motion_lines(("rot", lid, p), x)
         vk, ak = self.coincident(k, x)
         # velocity: the tangent through v(X@k)
-        key = s.key  # type: ignore[attr-defined]
-        is_line = s.is_line  # type: ignore[attr-defined]
+        key = s.key
+        is_line = s.is_line
         if is_line:
             lv2 = self.V("parallel", (f"{key}:line", vk), f"∥{key}:v",
                          note=f"Through the image of {x}{k} draw a line along the slot: "
@@ -413,9 +415,9 @@ class _Poly:
                                   case=3),
                               note=f"They meet at the acceleration image of {x} (case 3).")
 
-    def ev_relative(self, s: object, lid: str, p: str, x: str) -> None:
+    def ev_relative(self, s: Slider | Slot, lid: str, p: str, x: str) -> None:
         """A link turning about P whose path passes through the known point X."""
-        key = s.key  # type: ignore[attr-defined]
+        key = s.key
         is_line = getattr(s, "p0", None) is not None
         vx_i, ax_i = vimg(f"{x}@{lid}"), aimg(f"{x}@{lid}")
         line = self.posture_line(p, x, self.v)

@@ -28,14 +28,15 @@ from __future__ import annotations
 import copy
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
-from graphkin.construction import Construction, Mark, Role, Term, VectorEquation
+from graphkin.construction import Construction, Mark, Role, Step, Term, VectorEquation
 from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
-from graphkin.mechanisms.model import FRAME, XY, Mechanism
+from graphkin.mechanisms.model import FRAME, XY, Mechanism, Slider, Slot
 from graphkin.tolerance import Tolerance
 
 __all__ = ["PostureConstruction", "build_posture", "NotDecomposable"]
@@ -80,6 +81,23 @@ class PostureConstruction:
     events: list[tuple[object, ...]] = field(default_factory=list)
 
 
+@dataclass(frozen=True)
+class _Group:
+    """A group that can be constructed now.
+
+    ``kind`` is ``dyad`` (a pin on two links, each with a locus), ``pin_in_slot``
+    (a link turning about a known point with its pin in a known slot),
+    ``slot_through`` (a link turning about a known point whose slot or line
+    passes through a known point) or ``inverted`` (the rod of an inverted
+    slider-crank and its block).
+    """
+
+    kind: str
+    pin: str = ""
+    links: tuple[str, str] = ("", "")
+    path: Slider | Slot | None = None
+
+
 class _Builder:
     """Adds steps and evaluates them at once on the file's posture."""
 
@@ -101,8 +119,8 @@ class _Builder:
 
     # ---- steps --------------------------------------------------------
     def add(self, op: str, inputs: tuple[str, ...], outputs: tuple[str, ...],
-            **kw: object) -> None:
-        step = self.cx.add(op, inputs, outputs, **kw)  # type: ignore[arg-type]
+            **kw: Any) -> None:
+        step = self.cx.add(op, inputs, outputs, **kw)
         if op == "input":
             return
         args = [self.env[i] for i in step.inputs]
@@ -116,11 +134,11 @@ class _Builder:
             if step.kind == "point" and np.any(np.isnan(val)):
                 raise self._fail(step)
 
-    def _fail(self, step: object) -> ConstructionError:
+    def _fail(self, step: Step) -> ConstructionError:
         from graphkin.construction.protocol import _failure
 
-        exc = _failure(step, [self.env[i] for i in step.inputs])  # type: ignore[attr-defined]
-        return AssemblyError(f"cannot assemble at this drive: {exc}", step=step.label,  # type: ignore[attr-defined]
+        exc = _failure(step, [self.env[i] for i in step.inputs])
+        return AssemblyError(f"cannot assemble at this drive: {exc}", step=step.label,
                              objects=getattr(exc, "objects", {}))
 
     def fresh(self, stem: str) -> str:
@@ -229,24 +247,26 @@ class _Builder:
                     self.add("join", (f"{r.key}:L0", f"{r.key}:L1"), (f"{r.key}:line",),
                              note=f"Draw the surface of {self.link_name(lid)} that link "
                                   f"{r.link} rolls on.")
-        for s in [*self.mech.sliders, *self.mech.slots]:
-            if s.on != lid:
+        paths: list[Slider | Slot] = [*self.mech.sliders, *self.mech.slots]
+        for path in paths:
+            if path.on != lid:
                 continue
-            if getattr(s, "p0", None) is not None:
-                for tag, loc in (("L0", s.p0), ("L1", s.p1)):
-                    lab = f"{s.key}:{tag}"
-                    mark(lab, loc, f"Mark the line of {s.key} on {self.link_name(lid)}.")
+            key = path.key
+            if path.p0 is not None and path.p1 is not None:
+                for tag, loc in (("L0", path.p0), ("L1", path.p1)):
+                    lab = f"{key}:{tag}"
+                    mark(lab, loc, f"Mark the line of {key} on {self.link_name(lid)}.")
                     self.known[lid][lab] = loc
-                if f"{s.key}:line" not in self.env:
-                    self.add("join", (f"{s.key}:L0", f"{s.key}:L1"), (f"{s.key}:line",),
-                             note=f"Draw the path of {s.point}: the line of {s.key}.")
-            else:
-                lab = f"{s.key}:O"
-                if f"{s.key}:k" not in self.env:
-                    mark(lab, s.center, f"Mark the center of the circular slot {s.key}.")
-                    self.add("circle", (lab,), (f"{s.key}:k",), radius=s.radius,
-                             note=f"Draw the circular path of {s.point} ({s.key}).")
-                self.known[lid][lab] = s.center  # type: ignore[assignment]
+                if f"{key}:line" not in self.env:
+                    self.add("join", (f"{key}:L0", f"{key}:L1"), (f"{key}:line",),
+                             note=f"Draw the path of {path.point}: the line of {key}.")
+            elif isinstance(path, Slot) and path.center is not None:
+                lab = f"{key}:O"
+                if f"{key}:k" not in self.env:
+                    mark(lab, path.center, f"Mark the center of the circular slot {key}.")
+                    self.add("circle", (lab,), (f"{key}:k",), radius=path.radius,
+                             note=f"Draw the circular path of {path.point} ({key}).")
+                self.known[lid][lab] = path.center
 
     # ---- propagation -------------------------------------------------
     def propagate(self) -> None:
@@ -271,15 +291,15 @@ class _Builder:
                     self.events.append(("same_angle", b, a))
                     changed = True
             for d in self.mech.drives:
-                s = d.slider
-                if d.kind == "position" and s is not None and s.on in self.placed \
-                        and s.point not in self.env:
-                    eq = VectorEquation((Term(f"R_{s.point}", U, U),),
-                                        (Term(f"R_{s.key}:L0"), Term(f"R_{s.point}", I_, K)),
+                ds = d.slider
+                if d.kind == "position" and ds is not None and ds.on in self.placed \
+                        and ds.point not in self.env:
+                    eq = VectorEquation((Term(f"R_{ds.point}", U, U),),
+                                        (Term(f"R_{ds.key}:L0"), Term(f"R_{ds.point}", I_, K)),
                                         case=1)
-                    self.add("along_line", (f"{s.key}:L0", f"{s.key}:L1", f"s{d.link}"),
-                             (s.point,), role=Role.RESULT, equation=eq,
-                             note=f"Lay off the travel s{d.link} along the line: {s.point}.")
+                    self.add("along_line", (f"{ds.key}:L0", f"{ds.key}:L1", f"s{d.link}"),
+                             (ds.point,), role=Role.RESULT, equation=eq,
+                             note=f"Lay off the travel s{d.link} along the line: {ds.point}.")
                     self.events.append(("slider_drive", d))
                     changed = True
             for r in self.mech.rolling:
@@ -322,11 +342,12 @@ class _Builder:
         pts = self.distinct_known(lid)
         if lid not in self.angle and len(pts) == 1:
             p, ploc = pts[0]
-            r = math.hypot(loc[0] - ploc[0], loc[1] - ploc[1])
+            radius = math.hypot(loc[0] - ploc[0], loc[1] - ploc[1])
             lab = f"k_{name}({_n(p)})"
             if lab not in self.env:
-                self.add("circle", (p,), (lab,), radius=r,
-                         note=f"About {_n(p)} draw an arc of radius {_n(p)}{name} = {r:.6g}.")
+                self.add("circle", (p,), (lab,), radius=radius,
+                         note=f"About {_n(p)} draw an arc of radius {_n(p)}{name} = "
+                              f"{radius:.6g}.")
             return lab, "circle", f"R_{name}{_n(p)}", ("rot", lid, p)
         if lid in self.angle and not pts:
             th = self.angle[lid]
@@ -349,23 +370,23 @@ class _Builder:
                              note=f"Through it draw the path of {name}, parallel to the slide.")
                     return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
             for r in self.mech.rolling:
-                s = next(t for t in self.mech.slots if t.key == r.slot_key)
+                slot = r.slot_key  # the center's equivalent slot
                 if r.link == lid and r.on in self.placed:
                     cloc = self.mech.links[lid].points[r.center]
                     x = self.fresh(f"{name}'")
-                    self.add("rigid", (f"{s.key}:L0", th), (x,), local_p=cloc, local_q=loc,
+                    self.add("rigid", (f"{slot}:L0", th), (x,), local_p=cloc, local_q=loc,
                              note=f"Where {name} would be with the center {r.center} at the "
                                   "path's start.")
                     lab = f"l_{name}({r.key})"
-                    self.add("parallel", (f"{s.key}:line", x), (lab,),
+                    self.add("parallel", (f"{slot}:line", x), (lab,),
                              note=f"Through it draw the path of {name}, parallel to the surface.")
                     return lab, "line", f"R_{name}", ("roll", lid, r.key)
         raise AssertionError("no locus")
 
     # ---- groups ------------------------------------------------------
-    def options(self) -> list[tuple[str, object]]:
+    def options(self) -> list[_Group]:
         """The groups that can be constructed now, in a fixed order."""
-        out: list[tuple[str, object]] = []
+        out: list[_Group] = []
         mech = self.mech
         for pin in mech.pins:
             if pin.name in self.env:
@@ -374,17 +395,19 @@ class _Builder:
             for i in range(len(links)):
                 for j in range(i + 1, len(links)):
                     if self.can_locus(links[i]) and self.can_locus(links[j]):
-                        out.append(("dyad", (pin.name, links[i], links[j])))
-        for s in mech.slots:
-            if s.link not in self.placed and s.on in self.placed and self.one_point(s.link):
-                out.append(("pin_in_slot", s))
-            if s.on not in self.placed and s.link in self.placed and self.one_point(s.on):
-                out.append(("slot_through", s))
-        for s in mech.sliders:
+                        out.append(_Group("dyad", pin=pin.name, links=(links[i], links[j])))
+        for slot in mech.slots:
+            if (slot.link not in self.placed and slot.on in self.placed
+                    and self.one_point(slot.link)):
+                out.append(_Group("pin_in_slot", path=slot))
+            if (slot.on not in self.placed and slot.link in self.placed
+                    and self.one_point(slot.on)):
+                out.append(_Group("slot_through", path=slot))
+        for sl in mech.sliders:
             # the rod of an inverted slider-crank: the block has one known point, no angle
-            if (s.on not in self.placed and s.link not in self.placed and self.one_point(s.on)
-                    and self.one_point(s.link)):
-                out.append(("inverted", s))
+            if (sl.on not in self.placed and sl.link not in self.placed
+                    and self.one_point(sl.on) and self.one_point(sl.link)):
+                out.append(_Group("inverted", path=sl))
         return out
 
     def one_point(self, lid: str) -> bool:
@@ -394,15 +417,16 @@ class _Builder:
         if self.one_point(lid):
             return True
         if lid in self.angle and not self.distinct_known(lid):
-            return any((s.link == lid and s.on in self.placed) or
-                       (s.on == lid and s.link in self.placed) for s in self.mech.sliders) or \
+            return any((sl.link == lid and sl.on in self.placed) or
+                       (sl.on == lid and sl.link in self.placed) for sl in self.mech.sliders) or \
                 any(r.link == lid and r.on in self.placed for r in self.mech.rolling)
         return False
 
-    def do(self, kind: str, arg: object, branch: str | None) -> list[str]:
+    def do(self, group: _Group, branch: str | None) -> list[str]:
         """Construct one group; returns the branch names possible for it."""
+        kind = group.kind
         if kind == "dyad":
-            name, li, lj = arg  # type: ignore[misc]
+            name, (li, lj) = group.pin, group.links
             mech = self.mech
             loc_i = mech.links[li].points[name]
             loc_j = mech.links[lj].points[name]
@@ -433,63 +457,68 @@ class _Builder:
                 raise AssemblyError(f"cannot assemble: the paths of {name} are parallel",
                                     step=name)
             return [""]
+        path = group.path
+        assert path is not None
         if kind == "pin_in_slot":
-            s = arg
-            lid = s.link  # type: ignore[attr-defined]
+            assert isinstance(path, Slot)
+            s = path
+            lid = s.link
             (p, ploc), = self.distinct_known(lid)
-            sloc = self.mech.links[lid].points[s.point]  # type: ignore[attr-defined]
+            sloc = self.mech.links[lid].points[s.point]
             r = math.hypot(sloc[0] - ploc[0], sloc[1] - ploc[1])
-            k = f"k_{s.point}({_n(p)})"  # type: ignore[attr-defined]
+            k = f"k_{s.point}({_n(p)})"
             self.events.append(("pin_in_slot", s, lid, p))
             self.add("circle", (p,), (k,), radius=r,
                      note=f"About {_n(p)} draw an arc through the pin's distance.")
-            if s.is_line:  # type: ignore[attr-defined]
+            if s.is_line:
                 names = ["behind", "ahead"]
-                self.add("intersect_line_circle", (f"{s.key}:line", k), (s.point,),  # type: ignore[attr-defined]
+                self.add("intersect_line_circle", (f"{s.key}:line", k), (s.point,),
                          branch=branch or names[0], role=Role.RESULT,
-                         equation=VectorEquation((Term(f"R_{s.point}", U, K),),  # type: ignore[attr-defined]
+                         equation=VectorEquation((Term(f"R_{s.point}", U, K),),
                                                  (Term(f"R_{s.point}{_n(p)}", K, U),), case=2),
-                         note=f"The arc cuts the slot at {s.point} (case 2).")  # type: ignore[attr-defined]
+                         note=f"The arc cuts the slot at {s.point} (case 2).")
             else:
                 names = ["left", "right"]
-                self.add("intersect_circles", (f"{s.key}:k", k), (s.point,),  # type: ignore[attr-defined]
+                self.add("intersect_circles", (f"{s.key}:k", k), (s.point,),
                          branch=branch or names[0], role=Role.RESULT,
-                         equation=VectorEquation((Term(f"R_{s.point}", K, U),),  # type: ignore[attr-defined]
+                         equation=VectorEquation((Term(f"R_{s.point}", K, U),),
                                                  (Term(f"R_{s.point}{_n(p)}", K, U),), case=4),
-                         note=f"The arc cuts the circular slot at {s.point} (case 4).")  # type: ignore[attr-defined]
+                         note=f"The arc cuts the circular slot at {s.point} (case 4).")
             return names
         if kind in ("slot_through", "inverted"):
-            s = arg
-            lid = s.on  # type: ignore[attr-defined]
+            lid = path.on
             if kind == "slot_through":
-                spoint = s.point  # type: ignore[attr-defined]
+                spoint = path.point
                 delta = (0.0, 0.0)
             else:
+                assert isinstance(path, Slider)
                 # the block's known point A stands off the slide by a constant vector in the rod
-                (spoint, aloc), = self.distinct_known(s.link)  # type: ignore[attr-defined]
-                bloc = self.mech.links[s.link].points[s.point]  # type: ignore[attr-defined]
-                c, sn = math.cos(s.direction_angle), math.sin(s.direction_angle)  # type: ignore[attr-defined]
+                (spoint, aloc), = self.distinct_known(path.link)
+                bloc = self.mech.links[path.link].points[path.point]
+                c, sn = math.cos(path.direction_angle), math.sin(path.direction_angle)
                 dx, dy = aloc[0] - bloc[0], aloc[1] - bloc[1]
                 delta = (c * dx - sn * dy, sn * dx + c * dy)
             (p, ploc), = self.distinct_known(lid)
-            self.events.append(("relative", s, lid, p, spoint))
-            if getattr(s, "p0", None) is not None:
-                return self.tangent(lid, p, ploc, spoint, s, delta, branch)
-            return self.circle_slot_through(lid, p, ploc, spoint, s, branch)
+            self.events.append(("relative", path, lid, p, spoint))
+            if path.p0 is not None:
+                return self.tangent(lid, p, ploc, spoint, path, delta, branch)
+            assert isinstance(path, Slot)
+            return self.circle_slot_through(lid, p, ploc, spoint, path, branch)
         raise AssertionError(kind)
 
-    def tangent(self, lid: str, p: str, ploc: XY, spoint: str, s: object, delta: XY,
+    def tangent(self, lid: str, p: str, ploc: XY, spoint: str, s: Slider | Slot, delta: XY,
                 branch: str | None) -> list[str]:
         """Place a link turning about P so that its line passes through the known point S."""
-        q0 = (s.p0[0] + delta[0], s.p0[1] + delta[1])  # type: ignore[attr-defined]
-        q1 = (s.p1[0] + delta[0], s.p1[1] + delta[1])  # type: ignore[attr-defined]
+        assert s.p0 is not None and s.p1 is not None
+        q0 = (s.p0[0] + delta[0], s.p0[1] + delta[1])
+        q1 = (s.p1[0] + delta[0], s.p1[1] + delta[1])
         ux, uy = q1[0] - q0[0], q1[1] - q0[1]
         n = math.hypot(ux, uy)
         ux, uy = ux / n, uy / n
         t = (ploc[0] - q0[0]) * ux + (ploc[1] - q0[1]) * uy
         foot = (q0[0] + t * ux, q0[1] + t * uy)
         d = math.hypot(foot[0] - ploc[0], foot[1] - ploc[1])
-        key = s.key  # type: ignore[attr-defined]
+        key = s.key
         if d <= self.tol.length(self.mech.scale):
             # the line passes through the pivot: it is the line P-S itself
             lab = f"{key}:T"
@@ -532,15 +561,16 @@ class _Builder:
         self.angle[lid] = th
         return names
 
-    def circle_slot_through(self, lid: str, p: str, ploc: XY, spoint: str, s: object,
+    def circle_slot_through(self, lid: str, p: str, ploc: XY, spoint: str, s: Slot,
                             branch: str | None) -> list[str]:
         """Place a link turning about P whose circular slot passes through the known point S."""
-        cloc = s.center  # type: ignore[attr-defined]
-        key = s.key  # type: ignore[attr-defined]
+        assert s.center is not None and s.radius is not None
+        cloc = s.center
+        key = s.key
         r1 = math.hypot(cloc[0] - ploc[0], cloc[1] - ploc[1])
         self.add("circle", (p,), (f"{key}:kc",), radius=r1,
                  note=f"About {_n(p)} draw the arc of the slot's center.")
-        self.add("circle", (spoint,), (f"{key}:ks",), radius=s.radius,  # type: ignore[attr-defined]
+        self.add("circle", (spoint,), (f"{key}:ks",), radius=s.radius,
                  note=f"About {_n(spoint)} draw an arc of the slot's radius.")
         names = ["left", "right"]
         lab = f"{key}:O"
@@ -581,7 +611,7 @@ def _layout_distance(b: _Builder) -> float:
     return total
 
 
-def _choose(b: _Builder, kind: str, arg: object, names: list[str]) -> tuple[str, str]:
+def _choose(b: _Builder, group: _Group, names: list[str]) -> tuple[str, str]:
     """Pick the branch of a two-way group; returns (branch, reason).
 
     Each branch is carried through to the finished mechanism.  The hinted
@@ -595,7 +625,7 @@ def _choose(b: _Builder, kind: str, arg: object, names: list[str]) -> tuple[str,
     for name in names:
         t = copy.deepcopy(b, {id(b.mech): b.mech})
         try:
-            t.do(kind, arg, name)
+            t.do(group, name)
             try:
                 _finish(t)
             except NotDecomposable:
@@ -628,11 +658,11 @@ def _finish(b: _Builder) -> None:
         if not opts:
             left = ", ".join(b.link_name(k) for k in b.unplaced())
             raise NotDecomposable(f"{left} cannot be found one group at a time", step=left)
-        kind, arg = opts[0]
+        group = opts[0]
         trial = copy.deepcopy(b, {id(b.mech): b.mech})
-        names = trial.do(kind, arg, None)
+        names = trial.do(group, None)
         if len(names) == 1:
-            b.do(kind, arg, names[0])
+            b.do(group, names[0])
             b.propagate()
             continue
         label = next(s for s in reversed(trial.cx.steps) if s.branch).label
@@ -642,8 +672,8 @@ def _finish(b: _Builder) -> None:
                 raise ConstructionError(f"step {label} has the branches {', '.join(names)}, "
                                         f"not {chosen!r}", step=label)
         else:
-            chosen, reason = _choose(b, kind, arg, names)
-        b.do(kind, arg, chosen)
+            chosen, reason = _choose(b, group, names)
+        b.do(group, chosen)
         step = next(s for s in reversed(b.cx.steps) if s.branch)
         b.branches[step.label] = chosen
         if reason not in ("assembly hint", "branch asked for"):

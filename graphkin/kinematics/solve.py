@@ -18,7 +18,7 @@ from graphkin.kinematics.polygons import Polygons, build_polygons
 from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
 from graphkin.kinematics.solution import LinkState, Solution, perp
 from graphkin.mechanisms.model import FRAME, Mechanism
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
 __all__ = ["solve", "link_states", "rate_inputs", "superposition"]
 
@@ -66,7 +66,8 @@ def link_states(mech: Mechanism, pc: PostureConstruction, values: Mapping[str, n
 
 
 def rate_inputs(mech: Mechanism, pol: Polygons, pc: PostureConstruction,
-                values: Mapping[str, np.ndarray]) -> tuple[dict[str, float], dict[str, float]]:
+                values: Mapping[str, np.ndarray],
+                tol: Tolerance | None = None) -> tuple[dict[str, float], dict[str, float]]:
     """The given rates as construction inputs (velocity inputs, acceleration inputs).
 
     When ``[rates]`` names another link, the polygons are linear in the input
@@ -105,12 +106,15 @@ def rate_inputs(mech: Mechanism, pol: Polygons, pc: PostureConstruction,
             return float((body.velocity(loc) - guide.velocity(gloc)) @ u)
         # apparent acceleration along the line: A_P − A_P(guide) − 2ω × V_rel (Table 4.1)
         vrel = body.velocity(loc) - guide.velocity(gloc)
-        cor = 2 * float(guide.omega) * np.array([-vrel[1], vrel[0]])
+        cor = 2 * float(np.asarray(guide.omega)) * np.array([-vrel[1], vrel[0]])
         return float((body.acceleration(loc) - guide.acceleration(gloc) - cor) @ u)
 
+    tol = tol or DEFAULT_TOL
     ev = pol.velocity.evaluate({w: 1.0}, values=dict(values))
     k = measure(ev.values, None, "v")
-    if abs(k) < 1e-12:
+    # k is ω_target (or the slider's speed) per unit input speed: dimensionless, or a length
+    small = tol.angle if target.kind == "angle" else tol.length(mech.scale)
+    if abs(k) <= small or target.rate is None:
         raise InputError(f"link {target.link} does not move when the drive moves, so its rate "
                          "cannot set the drive's", key="rates.link", file=mech.source)
     vin[w] = target.rate / k
@@ -166,7 +170,7 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
         return Solution(mech, states, "construction", constructions, notes=list(pc.notes),
                         branches=dict(pc.branches), values={"posture": values})
     pol = build_polygons(mech, pc)
-    vin, ain = rate_inputs(mech, pol, pc, values)
+    vin, ain = rate_inputs(mech, pol, pc, values, tol)
     ev = pol.velocity.evaluate(vin, values=values, tol=tol)
     ea = pol.acceleration.evaluate(ain, values=ev.values, tol=tol)
     states = link_states(mech, pc, values, ev.values, ea.values, pol)

@@ -15,6 +15,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from graphkin.kinematics.solution import Solution
+    from graphkin.kinematics.sweep import Sweep
+    from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
            "XY"]
@@ -228,21 +234,21 @@ class Mechanism:
         return m
 
     # ---- conveniences (the work is done in graphkin.kinematics) ------
-    def solve(self, tol: object = None) -> object:
+    def solve(self, tol: Tolerance | None = None) -> Solution:
         """Solve at the file's posture; see :func:`graphkin.kinematics.solve.solve`."""
         from graphkin.kinematics.solve import solve
 
-        return solve(self, tol)  # type: ignore[arg-type]
+        return solve(self, tol)
 
-    def draw(self, diagram: str = "posture", ax: object = None, **kw: object) -> object:
+    def draw(self, diagram: str = "posture", ax: Any = None, **kw: Any) -> Any:
         """Solve and draw a diagram (into ``ax`` if given); see :func:`graphkin.render.draw`."""
         from graphkin.render import draw
 
-        return draw(self, diagram, ax=ax, **kw)  # type: ignore[arg-type]
+        return draw(self, diagram, ax=ax, **kw)
 
     def sweep(self, count: int = 360, start: float | None = None, stop: float | None = None,
-              **kw: object) -> object:
+              **kw: Any) -> Sweep:
         """Solve over many drive values at once; see :func:`graphkin.kinematics.sweep.sweep`."""
         from graphkin.kinematics.sweep import sweep
 
-        return sweep(self, count=count, start=start, stop=stop, **kw)  # type: ignore[arg-type]
+        return sweep(self, count=count, start=start, stop=stop, **kw)

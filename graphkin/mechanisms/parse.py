@@ -179,8 +179,8 @@ class _Parser:
 
         pins = []
         owners: dict[str, list[str]] = {}
-        for lid, link in self.links.items():
-            for n in link.points:
+        for lid, lk in self.links.items():
+            for n in lk.points:
                 owners.setdefault(n, []).append(lid)
         for n, lids in owners.items():
             if len(lids) > 1:
