@@ -64,6 +64,9 @@ OTHER_BRANCH = {"left": "right", "right": "left", "behind": "ahead", "ahead": "b
 
 _MAX_BRANCHES = 4  # 2**4 - 1 alternative postures at most
 
+_Redo = Callable[[dict[str, np.ndarray], tuple[str, ...]], np.ndarray]
+"""A construction step done wrongly: its values so far and its inputs -> its (wrong) result."""
+
 
 @dataclass(frozen=True)
 class Mistake:
@@ -360,8 +363,7 @@ class Diagnoser:
         acc_cx = pol.acceleration
         out: list[tuple[Mistake, Evaluator]] = []
 
-        def redo(label: str, fn: Callable[[dict[str, np.ndarray], tuple[str, ...]], np.ndarray],
-                 mistake: Mistake) -> None:
+        def redo(label: str, fn: _Redo, mistake: Mistake) -> None:
             step = acc_cx.step_of(label)
             try:
                 env = acc_cx.upto(step.index).evaluate(ain, values=dict(vel)).values
@@ -378,16 +380,20 @@ class Diagnoser:
                            values={"posture": pc.values, "velocity": vel, "acceleration": acc})
             out.append((mistake, Evaluator(alt)))
 
+        def own(label: str, change: Callable[[np.ndarray], np.ndarray]) -> _Redo:
+            """A redone step whose result is its own result changed by ``change``."""
+            return lambda env, ins: change(np.asarray(env[label]))
+
         omegas = {lid: f"ω{lid}" for lid in mech.moving if f"ω{lid}" in vel}
         for step in acc_cx.steps:
             lab = step.label
             if step.op == "normal_component":
                 center = _n(step.inputs[0])
-                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                redo(lab, own(lab, lambda v: -v),
                      Mistake("normal", f"{lab} drawn away from {center} instead of toward it "
                                        "(a normal component points to the center)"))
             elif step.op == "apparent_normal":
-                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                redo(lab, own(lab, lambda v: -v),
                      Mistake("normal", f"{lab} drawn away from the center of curvature of the "
                                        "path instead of toward it"))
             elif step.op == "acceleration_difference":
@@ -407,13 +413,13 @@ class Diagnoser:
                                        "(a normal component points to the center)"))
             elif step.op == "coriolis":
                 wk = step.inputs[0]
-                redo(lab, lambda env, ins, lab=lab: -np.asarray(env[lab]),
+                redo(lab, own(lab, lambda v: -v),
                      Mistake("coriolis", f"the Coriolis component {lab} drawn with the wrong "
                                          f"sense (it is V_rel turned 90° in the sense of {wk})"))
-                redo(lab, lambda env, ins, lab=lab: 0.5 * np.asarray(env[lab]),
+                redo(lab, own(lab, lambda v: 0.5 * v),
                      Mistake("coriolis", f"the Coriolis component {lab} taken as ω × V "
                                          "instead of 2ω × V"))
-                redo(lab, lambda env, ins, lab=lab: 0.0 * np.asarray(env[lab]),
+                redo(lab, own(lab, lambda v: 0.0 * v),
                      Mistake("coriolis", f"the Coriolis component {lab} left out"))
                 for wj in omegas.values():
                     if wj == wk:

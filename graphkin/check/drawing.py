@@ -190,9 +190,9 @@ def read_svg(path: str | Path) -> DrawingData:
             text = "".join(el.itertext()).strip()
             xs, ys = _floats(el.get("x")), _floats(el.get("y"))
             if not xs:
-                for sub in el:
-                    if local(sub.tag) == "tspan" and sub.get("x") is not None:
-                        xs, ys = _floats(sub.get("x")), _floats(sub.get("y"))
+                for child in el:
+                    if local(child.tag) == "tspan" and child.get("x") is not None:
+                        xs, ys = _floats(child.get("x")), _floats(child.get("y"))
                         break
             at = put(mat, xs[0] if xs else 0.0, ys[0] if ys else 0.0)
             if text.lower().startswith("scale:"):
@@ -307,7 +307,11 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
     tol = tolerance or CheckTolerance()
     data = read_drawing(path)
     at = _snap(data, path_s)
-    poles = {lab: _pole_kind(lab) for lab in at if _pole_kind(lab)}
+    poles: dict[str, str] = {}
+    for lab in at:
+        pk = _pole_kind(lab)
+        if pk:
+            poles[lab] = pk
     kinds = set(poles.values())
     if len(kinds) != 1:
         raise InputError("label the pole of the polygon O_V (velocity) or O_A (acceleration), "

@@ -215,11 +215,10 @@ class Evaluator:
     def component(self, key: Key, p: str, q: str, which: str) -> np.ndarray:
         """``A_PQ^n = −ω² R_PQ`` or ``A_PQ^t = α × R_PQ`` of the link carrying P and Q (Eq. 4.7)."""
         lid = self.common_link(key, p, q)
-        st = self.sol.links[lid]
         r = self.sol.position(p) - self.sol.position(q)
         if which == "n":
-            return -float(st.omega) ** 2 * r
-        return float(st.alpha) * perp(r)
+            return -float(self.sol.omega(lid)) ** 2 * r
+        return float(self.sol.alpha(lid)) * perp(r)
 
     def coriolis(self, key: Key, p: str) -> np.ndarray:
         """The Coriolis component laid off for point P in the acceleration construction."""
@@ -306,7 +305,7 @@ def _with_unit_rate(sol: Solution, key: Key) -> Solution:
     if len(mech.drives) != 1:
         raise InputError("instant centers of a mechanism with several inputs need the "
                          "inputs' rates in the mechanism file", key=key.text)
-    drives = [dataclasses.replace(d, rate=1.0, rate2=0.0) for d in mech.drives]
+    drives = tuple(dataclasses.replace(d, rate=1.0, rate2=0.0) for d in mech.drives)
     return solve(dataclasses.replace(mech, drives=drives), branches=dict(sol.branches))
 
 

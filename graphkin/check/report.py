@@ -203,8 +203,8 @@ def marks_csv(reports: Sequence[tuple[str, Report | None, str]]) -> str:
         good = sum(r.ok for r in rows.values())
         cells = []
         for k in keys:
-            r = rows.get(k)
-            cells.append("" if r is None else r.verdict)
+            row = rows.get(k)
+            cells.append("" if row is None else row.verdict)
         mistakes = "; ".join(f"{r.key}: {r.mistake.text}" for r in rows.values()
                              if r.mistake is not None)
         w.writerow([name, rep.student, "ok" if rep.ok else "wrong", n, good,

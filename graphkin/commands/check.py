@@ -10,6 +10,10 @@ import argparse
 import dataclasses
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING, TextIO
+
+if TYPE_CHECKING:
+    from graphkin.check import Report
 
 __all__ = ["add_parser", "run"]
 
@@ -63,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     mech = graphkin.load(args.file)
     sol = mech.solve()
     single = len(args.answers) + len(args.drawing) == 1 and not args.csv
-    results: list[tuple[str, object, str]] = []
+    results: list[tuple[str, Report | None, str]] = []
     status = 0
     out = sys.stdout
     for path in args.answers:
@@ -100,7 +104,7 @@ def run(args: argparse.Namespace) -> int:
         if not rep.ok and status == 0:
             status = 1
     if args.csv:
-        text = marks_csv(results)  # type: ignore[arg-type]
+        text = marks_csv(results)
         if args.csv == "-":
             out.write(text)
         else:
@@ -112,13 +116,10 @@ def run(args: argparse.Namespace) -> int:
     return status
 
 
-def _print(rep: object, quiet: bool, path: str, out: object) -> None:
-    from graphkin.check import Report
-
-    assert isinstance(rep, Report)
+def _print(rep: Report, quiet: bool, path: str, out: TextIO) -> None:
     if quiet:
         good = sum(r.ok for r in rep.counted)
         line = f"{path}: {good} of {len(rep.counted)} within tolerance"
-        print(line, file=out)  # type: ignore[arg-type]
+        print(line, file=out)
         return
-    print(rep.text(), file=out)  # type: ignore[arg-type]
+    print(rep.text(), file=out)

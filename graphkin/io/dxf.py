@@ -173,8 +173,8 @@ def write_dxf(solution: Solution, diagram: str, path: str | Path,
     doc.header["$INSUNITS"] = INSUNITS.get(lu, 0)
     if note:
         doc.header.custom_vars.append("graphkin_scale", note)
-    for name, color in _LAYERS.items():
-        doc.layers.add(name, color=color)
+    for layer_name, color in _LAYERS.items():
+        doc.layers.add(layer_name, color=color)
     msp = doc.modelspace()
     size = 0.025 * float(mech.scale)
 

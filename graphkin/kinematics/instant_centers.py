@@ -96,7 +96,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
 from itertools import combinations
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -156,6 +156,12 @@ def sort_links(ids: Iterable[object]) -> list[str]:
     ['1', '2', '10', 'crank']
     """
     return sorted((str(i) for i in ids), key=_id_key)
+
+
+def _triangle(i: str, j: str, k: str) -> tuple[str, str, str]:
+    """The links of a Kennedy triangle in the book's order."""
+    a, b, c = sort_links([i, j, k])
+    return a, b, c
 
 
 def pair_key(i: object, j: object) -> Pair:
@@ -464,7 +470,7 @@ class _Kennedy:
         self.notes: list[str] = []
         self.contacts = list(contacts)
         self.several = len(self.mech.drives) > 1 or self.mech.mobility() > 1
-        self._unit: Solution | bool | None = None
+        self._unit: Solution | Literal[False] | None = None  # False: tried, none
         shape = np.shape(sol.links[FRAME].angle)
         # a batch's postures that could not be assembled are NaN throughout: ignored
         self.valid = np.broadcast_to(np.asarray(sol.valid, dtype=bool), shape)
@@ -713,7 +719,7 @@ class _Kennedy:
                         "have the same velocity (Kennedy).")
                 self.add("same_point", (la, lb), lab, role=Role.RESULT, note=note)
                 self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la, lb),
-                           triangles=(tuple(sort_links([i, j, k])),))  # type: ignore[arg-type]
+                           triangles=(_triangle(i, j, k),))
                 return True
         # (kind, ref, line, quality of the line)
         opts: list[tuple[str, str, Array, float]] = []
@@ -736,18 +742,17 @@ class _Kennedy:
                 pt = g.meet(a[2], b[2], self.tol)
             if not self.ok(pt):
                 continue
-            q = min(a[3], b[3], self.quality(self.line_hat(a[2]), self.line_hat(b[2])))
-            if q >= enough and (best is None or q > best[0]):
-                best = (q, ia, ib)
+            qual = min(a[3], b[3], self.quality(self.line_hat(a[2]), self.line_hat(b[2])))
+            if qual >= enough and (best is None or qual > best[0]):
+                best = (qual, ia, ib)
         if best is not None:
             a, b = opts[best[1]], opts[best[2]]
             la, lb = self.make_line(pair, a), self.make_line(pair, b)
             note = (f"{lab} lies on {self.describe(pair, a)} and on {self.describe(pair, b)} "
                     "(Kennedy).")
             self.add("meet", (la, lb), lab, role=Role.RESULT, note=note)
-            tri = tuple(tuple(sort_links([i, j, o[1]])) for o in (a, b) if o[0] == "tri")
-            self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la, lb),
-                       triangles=tri)  # type: ignore[arg-type]
+            tri = tuple(_triangle(i, j, o[1]) for o in (a, b) if o[0] == "tri")
+            self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la, lb), triangles=tri)
             return True
         good = [o for o in opts if o[3] >= enough]
         if parallel_to and good:
@@ -759,11 +764,11 @@ class _Kennedy:
                     f"infinity, so links {i} and {j} do not turn relative to each other and "
                     f"{lab} is at infinity on that line (Kennedy, Fig. 3.27).")
             self.add("at_infinity_on", (la,), lab, role=Role.RESULT, note=note)
-            tri = [tuple(sort_links([i, j, k]))]
+            tris_ij = [_triangle(i, j, k)]
             if a[0] == "tri":
-                tri.insert(0, tuple(sort_links([i, j, a[1]])))
+                tris_ij.insert(0, _triangle(i, j, a[1]))
             self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la,),
-                       triangles=tuple(tri))  # type: ignore[arg-type]
+                       triangles=tuple(tris_ij))
             return True
         return False
 

@@ -194,7 +194,7 @@ class _Engine:
     def posture(self, dv: Array) -> Evaluation:
         """The posture construction at the drive values ``dv`` (internal units)."""
         assert self.pc is not None
-        given = dict(self.held)
+        given: dict[str, Any] = dict(self.held)
         given[self.label] = dv
         return self.pc.construction.evaluate(given, tol=self.tol, strict=False)
 
@@ -435,6 +435,8 @@ def _columns_slow(eng: _Engine, blk: _Block, cols: dict[str, Array]) -> dict[str
     pv = ev.values
     vv = blk.evv.values if blk.evv is not None else {}
     av = blk.eva.values if blk.eva is not None else {}
+    vunit = blk.evv.unit if blk.evv is not None else frozenset()
+    aunit = blk.eva.unit if blk.eva is not None else frozenset()
     zero = np.zeros(n)
     for lid in mech.links:
         if lid == FRAME:
@@ -452,17 +454,20 @@ def _columns_slow(eng: _Engine, blk: _Block, cols: dict[str, Array]) -> dict[str
         if name not in pv:
             missing.append(name)
             continue
+        images: tuple[str, str] | None = None
         if rated:
             assert pol is not None
             vi, ai = pol.velocity_images.get(name), pol.acceleration_images.get(name)
             if vi is None or ai is None or vi not in vv or ai not in av:
                 missing.append(name)
                 continue
+            images = (vi, ai)
         x, y = _xy_rows(pv[name], n, name in ev.unit)
         cols[f"x_{name}"], cols[f"y_{name}"] = x, y
-        if rated:
-            vx, vy = _xy_rows(vv[vi], n, vi in blk.evv.unit)  # type: ignore[union-attr]
-            ax, ay = _xy_rows(av[ai], n, ai in blk.eva.unit)  # type: ignore[union-attr]
+        if images is not None:
+            vi, ai = images
+            vx, vy = _xy_rows(vv[vi], n, vi in vunit)
+            ax, ay = _xy_rows(av[ai], n, ai in aunit)
             cols[f"vx_{name}"], cols[f"vy_{name}"] = vx, vy
             cols[f"ax_{name}"], cols[f"ay_{name}"] = ax, ay
     if missing:
@@ -538,7 +543,8 @@ def _valid_of(blk: _Block) -> Array:
         return np.ones(n, dtype=bool)
     if blk.analytic is not None:
         return np.broadcast_to(np.asarray(blk.analytic.valid), (n,)).copy()
-    ok = np.broadcast_to(np.asarray(blk.ev.valid), (n,)).copy()  # type: ignore[union-attr]
+    assert blk.ev is not None  # a block is either analytic or has its posture replay
+    ok = np.broadcast_to(np.asarray(blk.ev.valid), (n,)).copy()
     for e in (blk.evv, blk.eva):
         if e is not None and e is not blk.ev:
             ok &= np.broadcast_to(np.asarray(e.valid), (n,))
@@ -553,7 +559,8 @@ def _assembled_of(blk: _Block) -> Array:
         return np.broadcast_to(blk.assembled, (n,)).copy()
     if blk.ev is blk.evv:  # one replay of everything, nothing failed
         return np.ones(n, dtype=bool)
-    return np.broadcast_to(np.asarray(blk.ev.valid), (n,)).copy()  # type: ignore[union-attr]
+    assert blk.ev is not None  # a block is either analytic or has its posture replay
+    return np.broadcast_to(np.asarray(blk.ev.valid), (n,)).copy()
 
 
 # ---------------------------------------------------------------------------
@@ -764,7 +771,9 @@ def _concat_solutions(sols: Sequence[Solution]) -> Solution:
                 return None
             return np.concatenate([np.atleast_1d(v) for v in vals], axis=0)
 
-        links[lid] = LinkState(cat("angle"), cat("origin"), cat("omega"), cat("alpha"),  # type: ignore[arg-type]
+        angle, origin = cat("angle"), cat("origin")
+        assert angle is not None and origin is not None  # every link state has both
+        links[lid] = LinkState(angle, origin, cat("omega"), cat("alpha"),
                                cat("origin_velocity"), cat("origin_acceleration"))
     valid = np.concatenate([np.atleast_1d(s.valid) for s in sols])
     return Solution(first.mechanism, links, first.method, first.constructions, valid=valid,
@@ -1043,7 +1052,8 @@ def _transmission_columns(sw: Sweep) -> dict[str, Array]:
     for pin, c1, c2 in _dyads(eng.pc):
         parts = []
         for blk in sw._blocks:
-            v = blk.ev.values  # type: ignore[union-attr]
+            assert blk.ev is not None  # eng.pc is set: every block has its posture replay
+            v = blk.ev.values
             m = len(blk.dv)
             parts.append(np.broadcast_to(_angle_at(v[pin], v[c1], v[c2]), (m,)))
         col = np.concatenate(parts).astype(float)
@@ -1090,7 +1100,8 @@ def _with_unit_rates(sw: Sweep) -> Solution:
         eng.pol = build_polygons(eng.mech, eng.pc)
     blocks = []
     for blk in sw._blocks:
-        evv, eva = eng.rates(blk.ev, unit=True)  # type: ignore[arg-type]
+        assert blk.ev is not None  # eng.pc is set: every block has its posture replay
+        evv, eva = eng.rates(blk.ev, unit=True)
         blocks.append(_Block(blk.dv, blk.ev, evv, eva))
     sols = [_solution_of_block(eng, b) for b in blocks]
     return sols[0] if len(sols) == 1 else _concat_solutions(sols)
@@ -1184,9 +1195,11 @@ def _singular(sw: Sweep) -> list[SingularPosture]:
     def value(i: int) -> float:
         """Drive value of sample i, continued past either end of a full turn."""
         if i < 0:
-            return float(dv[i + n]) - period  # type: ignore[operator]
+            assert period is not None  # only a full turn continues past its ends
+            return float(dv[i + n]) - period
         if i >= n:
-            return float(dv[i - n]) + period  # type: ignore[operator]
+            assert period is not None
+            return float(dv[i - n]) + period
         return float(dv[i])
 
     # ---- ranges that cannot be assembled --------------------------------
@@ -1209,6 +1222,7 @@ def _singular(sw: Sweep) -> list[SingularPosture]:
             where.append(("end", k))
     refined: dict[tuple[str, int], float] = {}
     if goods:
+        gd: list[float] | Array
         if eng.method == "analytic":
             gd = _refine_analytic(sw, goods, bads)
         else:
@@ -1281,7 +1295,8 @@ def _failing_labels(sw: Sweep) -> dict[int, str]:
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     off = 0
     for blk in sw._blocks:
-        fa = blk.ev.failed_at  # type: ignore[union-attr]
+        assert blk.ev is not None  # eng.pc is set: every block has its posture replay
+        fa = blk.ev.failed_at
         if fa is not None:
             fa = np.broadcast_to(fa, (len(blk.dv),))
             for i in np.flatnonzero(fa >= 0):

@@ -27,8 +27,9 @@ __all__ = ["draw", "save", "to_svg", "to_bytes", "repr_svg", "render_sheet", "bu
            "Source", "as_source", "steps_html"]
 
 
-def steps_html(obj: object, diagram: str = "posture", **kw: object) -> str:
+def steps_html(obj: object, diagram: str = "posture", *, link: str | None = None,
+               title: str | None = None) -> str:
     """The teaching page of a diagram; see :func:`graphkin.render.teach.steps_html`."""
     from graphkin.render.teach import steps_html as _steps_html
 
-    return _steps_html(obj, diagram, **kw)  # type: ignore[arg-type]
+    return _steps_html(obj, diagram, link=link, title=title)

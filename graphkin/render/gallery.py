@@ -211,8 +211,8 @@ def _compare(book: Any, got: Any) -> tuple[str, float, float]:
         d = [float(g) - float(b) for g, b in zip(got, book)]
         size = math.hypot(*map(float, book))
         return _fmt(d), math.hypot(*d) / max(size, 1e-12), max(abs(x) for x in d)
-    d = float(got) - float(book)
-    return _fmt(d), abs(d) / max(abs(float(book)), 1e-12), abs(d)
+    diff = float(got) - float(book)
+    return _fmt(diff), abs(diff) / max(abs(float(book)), 1e-12), abs(diff)
 
 
 def _rows(entry: Entry, data: dict[str, Any]) -> list[dict[str, str]]:

@@ -22,8 +22,8 @@ import numpy as np
 import shapely
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
-from graphkin.mechanisms.model import FRAME
-from graphkin.render.scene import Item, LabelRequest, Panel, point_text, safe_id
+from graphkin.mechanisms.model import FRAME, Rolling, Slider, Slot
+from graphkin.render.scene import Group, Item, LabelRequest, Panel, point_text, safe_id
 from graphkin.render.sources import Source
 
 __all__ = ["paint_mechanism", "link_points", "mechanism_extent", "BAR_HALF"]
@@ -54,9 +54,10 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
     """
     mech, sol = src.mechanism, src.solution
     assert mech is not None and sol is not None
-    bars = []
-    equivalent = {r.slot_key for r in getattr(mech, "rolling", ())}
-    for s in (*mech.sliders, *mech.slots):
+    bars: list[LineString] = []
+    equivalent = {r.slot_key for r in mech.rolling}
+    guides: tuple[Slider | Slot, ...] = (*mech.sliders, *mech.slots)
+    for s in guides:
         if s.on != lid or s.link == lid or s.key in equivalent:
             continue
         lw = _line_world(src, s)
@@ -64,8 +65,8 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
             continue
         p0, u = lw
         st = sol.links[lid]
-        ends = [np.asarray(st.position(s.p0), dtype=float),  # type: ignore[arg-type]
-                np.asarray(st.position(s.p1), dtype=float)]  # type: ignore[arg-type]
+        ends = [np.asarray(st.position(s.p0), dtype=float),
+                np.asarray(st.position(s.p1), dtype=float)]
         q = np.asarray(sol.position(s.point, s.link), dtype=float)
         ts = [float(u @ (e - p0)) for e in ends]
         tq = float(u @ (q - p0))
@@ -81,14 +82,14 @@ def _ring(geom: shapely.Geometry) -> np.ndarray:
     return np.asarray(geom.convex_hull.exterior.coords)[:-1]  # pragma: no cover
 
 
-def _line_world(src: Source, s: object) -> tuple[np.ndarray, np.ndarray] | None:
+def _line_world(src: Source, s: Slider | Slot | Rolling) -> tuple[np.ndarray, np.ndarray] | None:
     """A straight slider or slot line in world coordinates: a point and a unit direction."""
     sol = src.solution
-    if getattr(s, "p0", None) is None or sol is None:
+    if s.p0 is None or s.p1 is None or sol is None:
         return None
-    st = sol.links[s.on]  # type: ignore[attr-defined]
-    p0 = np.asarray(st.position(s.p0), dtype=float)  # type: ignore[attr-defined]
-    p1 = np.asarray(st.position(s.p1), dtype=float)  # type: ignore[attr-defined]
+    st = sol.links[s.on]
+    p0 = np.asarray(st.position(s.p0), dtype=float)
+    p1 = np.asarray(st.position(s.p1), dtype=float)
     d = p1 - p0
     n = float(np.hypot(*d))
     if n == 0:
@@ -165,7 +166,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             _number(panel, g, lid, c, pre, gap=BAR_HALF + 0.03)
 
     # ---- slots: a slot cut in the link that carries the path ------------
-    rolling = tuple(getattr(mech, "rolling", ()))
+    rolling = mech.rolling
     equivalent = {r.slot_key for r in rolling}
     for s in mech.slots:
         if s.key in equivalent:
@@ -184,11 +185,11 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         else:
             st = sol.links[s.on]
             c = np.asarray(st.position(s.center), dtype=float)
-            r = float(s.radius or 0.0)
+            rad = float(s.radius or 0.0)
             phi = math.atan2(p[1] - c[1], p[0] - c[0])
-            span = min(0.32 * k / max(r, 1e-300), math.pi)
+            span = min(0.32 * k / max(rad, 1e-300), math.pi)
             ts = np.linspace(phi - span, phi + span, 25)
-            arc = LineString([tuple(c + r * np.array([math.cos(t), math.sin(t)])) for t in ts])
+            arc = LineString([tuple(c + rad * np.array([math.cos(t), math.sin(t)])) for t in ts])
             shape = arc.buffer(1.3 * BAR_HALF * k, quad_segs=6)
         if isinstance(shape, Polygon):
             g.items.append(Item("polygon", _ring(shape), "slot", key=s.key))
@@ -220,31 +221,31 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                                                  f"{pre}number-1", frame_group, key="link 1",
                                                  gap=0.04))
                 numbered_frame = True
-    for s in mech.sliders:
-        if not is_known(s.point):
+    for sl in mech.sliders:
+        if not is_known(sl.point):
             continue
-        lw = _line_world(src, s)
+        lw = _line_world(src, sl)
         if lw is None:
             continue
         u = lw[1]
-        p = np.asarray(sol.position(s.point, s.link), dtype=float)
+        p = np.asarray(sol.position(sl.point, sl.link), dtype=float)
         hl, hh = BLOCK[0] * k, BLOCK[1] * k
-        if s.on == FRAME:
+        if sl.on == FRAME:
             nrm = np.array([-u[1], u[0]])
-            side = -1.0 if float(nrm @ (centroid - p)) > 0 else 1.0
-            base = p + side * hh * nrm
+            sgn = -1.0 if float(nrm @ (centroid - p)) > 0 else 1.0
+            base = p + sgn * hh * nrm
             a, b = base - 2.6 * hl * u, base + 2.6 * hl * u
-            frame_group.items.extend(_ground(a, b, side * nrm, k))
+            frame_group.items.extend(_ground(a, b, sgn * nrm, k))
             if not numbered_frame:
-                panel.labels.append(LabelRequest("1", a + 0.3 * (b - a) + side * nrm * 0.08 * k,
+                panel.labels.append(LabelRequest("1", a + 0.3 * (b - a) + sgn * nrm * 0.08 * k,
                                                  "number", f"{pre}number-1", frame_group,
                                                  key="link 1", gap=0.04))
                 numbered_frame = True
-        g = panel.group(f"{pre}slider-{s.link}", 2.5, key=f"link {s.link}")
-        g.items.append(Item("polygon", _rect(p, u, hl, hh), "block", key=f"link {s.link}"))
-        if len(mech.links[s.link].points) <= 1 or s.link not in [x for x in mech.moving
-                                                                   if _has_outline(src, x)]:
-            _number(panel, g, s.link, p, pre, gap=BLOCK[1] + 0.05)
+        g = panel.group(f"{pre}slider-{sl.link}", 2.5, key=f"link {sl.link}")
+        g.items.append(Item("polygon", _rect(p, u, hl, hh), "block", key=f"link {sl.link}"))
+        if len(mech.links[sl.link].points) <= 1 or sl.link not in [x for x in mech.moving
+                                                                    if _has_outline(src, x)]:
+            _number(panel, g, sl.link, p, pre, gap=BLOCK[1] + 0.05)
 
     # ---- frame bearings at fixed pivots ------------------------------
     frame_pts = mech.links[FRAME].points
@@ -329,10 +330,10 @@ def _has_outline(src: Source, lid: str) -> bool:
     return hull.geom_type != "Point"
 
 
-def _number(panel: Panel, g: object, lid: str, anchor: np.ndarray, pre: str,
+def _number(panel: Panel, g: Group, lid: str, anchor: np.ndarray, pre: str,
             gap: float = 0.05) -> None:
     panel.labels.append(LabelRequest(lid, np.asarray(anchor, dtype=float), "number",
-                                     f"{pre}number-{lid}", g, key=f"link {lid}",  # type: ignore[arg-type]
+                                     f"{pre}number-{lid}", g, key=f"link {lid}",
                                      gap=gap))
 
 
@@ -341,12 +342,13 @@ def mechanism_extent(src: Source) -> list[np.ndarray]:
     mech, sol = src.mechanism, src.solution
     if mech is None or sol is None:
         return []
-    out = []
+    out: list[np.ndarray] = []
     for lid in mech.links:
         out.extend(link_points(src, lid).values())
-    for s in (*mech.sliders, *mech.slots):
+    guides: tuple[Slider | Slot, ...] = (*mech.sliders, *mech.slots)
+    for s in guides:
         out.append(np.asarray(sol.position(s.point, s.link), dtype=float))
-    for r in getattr(mech, "rolling", ()):
+    for r in mech.rolling:
         c = np.asarray(sol.position(r.center, r.link), dtype=float)
         out.extend([c - r.radius, c + r.radius])
     return out

@@ -105,12 +105,12 @@ class Vector(Line2D):
     @property
     def tip(self) -> np.ndarray:
         """The point of the arrow (data)."""
-        return np.asarray(self.get_xydata()[-1])
+        return np.asarray(self.get_xydata())[-1]
 
     @property
     def tail(self) -> np.ndarray:
         """The start of the arrow (data)."""
-        return np.asarray(self.get_xydata()[0])
+        return np.asarray(self.get_xydata())[0]
 
     def draw(self, renderer: Any) -> None:
         """Draw the shaft and the head in one group."""
@@ -123,7 +123,7 @@ class Vector(Line2D):
         self.stale = False
 
 
-class Drawing(dict):  # type: ignore[type-arg]
+class Drawing(dict[str, Artist]):
     """What :func:`draw` returns: construction label -> its main artist.
 
     Attributes
@@ -223,7 +223,8 @@ def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
         if it.key is not None and arts:
             main = arts[0]
             if it.kind == "text":
-                drawing.texts.setdefault(_key(g, it.key), main)  # type: ignore[arg-type]
+                assert isinstance(main, Text)  # _artists makes one Text of a text item
+                drawing.texts.setdefault(_key(g, it.key), main)
             else:
                 drawing.setdefault(_key(g, it.key), main)
                 for alias in it.aliases:
@@ -456,8 +457,11 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
                             table=True if table is None else table, max_inches=max_inches)
         return render_sheet(sheet)
     fig = ax.figure
-    bb = ax.get_position()
-    fw, fh = fig.get_size_inches()
+    bb = ax.get_position()  # relative to the (sub)figure that holds the axes
+    if isinstance(fig, Figure):
+        fw, fh = fig.get_size_inches()
+    else:  # a subfigure
+        fw, fh = fig.bbox.width / fig.dpi, fig.bbox.height / fig.dpi
     room = max(min(bb.width * fw, bb.height * fh) - 1.0, 0.8)
     sheet = build_sheet(src, diagram, upto=upto, highlight=highlight, table=False,
                         max_inches=max_inches or room, title="")
@@ -466,7 +470,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
         name = sheet.panels[0].name
     panel = sheet.panel(name)
     drawing = Drawing()
-    drawing.figure = fig  # type: ignore[assignment]
+    drawing.figure = fig if isinstance(fig, Figure) else fig.figure
     drawing.sheet = sheet
     with rc_context():
         _setup_axes(ax, panel)

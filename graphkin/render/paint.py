@@ -33,7 +33,7 @@ from collections.abc import Callable
 import numpy as np
 
 from graphkin.construction import Construction, Role, Step
-from graphkin.mechanisms.model import FRAME
+from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.render.scale import fmt
 from graphkin.render.scene import (
     Group,
@@ -618,12 +618,12 @@ class StepPainter:
                    prefer=(math.cos(t / 2), math.sin(t / 2)))
 
 
-def _is_joint_or_named_point(mech: object, label: str) -> bool:
+def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:
     """A point worth a letter: a joint, a slider point, or a point of a moving link."""
-    links = mech.point_links[label]  # type: ignore[attr-defined]
+    links = mech.point_links[label]
     if len(links) >= 2:
         return True
-    if any(s.point == label for s in (*mech.sliders, *mech.slots)):  # type: ignore[attr-defined]
+    if any(s.point == label for s in mech.sliders) or any(s.point == label for s in mech.slots):
         return True
     return links != [FRAME]
 

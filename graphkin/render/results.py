@@ -84,7 +84,7 @@ def analytic_solution(sol: Solution, unit_rates: bool = False) -> Solution | Non
         return None
 
 
-def _rel(d: np.ndarray, e: np.ndarray, scale: float) -> float:
+def _rel(d: np.ndarray | float, e: np.ndarray | float, scale: float) -> float:
     """|d - e| relative to |e|, or to ``scale`` (a thousandth of the diagram's size) if larger."""
     diff = float(np.hypot(*np.atleast_1d(np.asarray(d) - np.asarray(e))[:2])) \
         if np.ndim(d) else abs(float(d) - float(e))
@@ -130,12 +130,12 @@ def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None)
                 p = finite_xy(vals[n]) if n in vals else np.asarray(sol.position(n))
                 if p is None:
                     continue
-                e = None if exact is None else np.asarray(exact.position(n), dtype=float)
+                ep = None if exact is None else np.asarray(exact.position(n), dtype=float)
                 tiny = 1e-9 * mech.scale
                 rows.append(Row(f"R_{n}", f"R_{n}", unit, _pair(p, tiny),
-                                "—" if e is None else _pair(e, tiny),
-                                None if e is None else _rel(p, e, 1e-3 * mech.scale),
-                                tuple(map(float, p)), () if e is None else tuple(map(float, e))))
+                                "—" if ep is None else _pair(ep, tiny),
+                                None if ep is None else _rel(p, ep, 1e-3 * mech.scale),
+                                tuple(map(float, p)), () if ep is None else tuple(map(float, ep))))
         elif d in ("velocity", "acceleration"):
             sym, img, pole = ("ω", "v", "o_v") if d == "velocity" else ("α", "a", "o_a")
             qunit = "rad/s" if d == "velocity" else "rad/s²"
@@ -169,17 +169,17 @@ def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None)
                 if p is None:
                     continue
                 vec = p - o
-                e = None
+                evec = None
                 if exact is not None:
-                    e = np.asarray(exact.velocity(n) if d == "velocity"
-                                   else exact.acceleration(n), dtype=float)
+                    evec = np.asarray(exact.velocity(n) if d == "velocity"
+                                      else exact.acceleration(n), dtype=float)
                 rows.append(Row(f"{'V' if d == 'velocity' else 'A'}_{n}",
                                 f"{'V' if d == 'velocity' else 'A'}_{n}", vunit,
                                 _polar(vec, vscale * 1e-6),
-                                "—" if e is None else _polar(e, vscale * 1e-6),
-                                None if e is None else _rel(vec, e, vscale),
+                                "—" if evec is None else _polar(evec, vscale * 1e-6),
+                                None if evec is None else _rel(vec, evec, vscale),
                                 tuple(map(float, vec)),
-                                () if e is None else tuple(map(float, e))))
+                                () if evec is None else tuple(map(float, evec))))
         elif d == "centers":
             rows.extend(_center_rows(src, exact, unit))
         elif d == "curvature":
@@ -225,9 +225,11 @@ def _center_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]:
     rows: list[Row] = []
     if ic is None:
         return rows
-    scale = 1e-3 * src.solution.mechanism.scale  # type: ignore[union-attr]
-    if exact is not None and not exact.has_rates and src.solution is not None:
-        exact = analytic_solution(src.solution, unit_rates=True)
+    sol = src.solution
+    assert sol is not None  # result_rows returns early without a solution
+    scale = 1e-3 * sol.mechanism.scale
+    if exact is not None and not exact.has_rates:
+        exact = analytic_solution(sol, unit_rates=True)
     for c in getattr(ic, "centers", {}).values():
         lab = c.label
         if lab not in vals:

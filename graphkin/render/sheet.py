@@ -232,9 +232,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             known = {o for s in post.cx.steps[: upto + 1] for o in s.outputs}
         paint_mechanism(src, p, known, drawn)
     for d in ("velocity", "acceleration"):
-        p = polygon_of.get(d)
-        if p is not None and d in painters:
-            _images(src, p, painters[d], upto if d == diagram else None)
+        poly = polygon_of.get(d)
+        if poly is not None and d in painters:
+            _images(src, poly, painters[d], upto if d == diagram else None)
     for p in panels:
         _frame(p)
         place_labels(p)
@@ -303,8 +303,8 @@ def _inside(q: np.ndarray, rect: tuple[float, float, float, float] | None) -> bo
 
 def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> None:
     """Shade the image of every link with three or more points (Mehmke's theorem)."""
-    mech = src.mechanism
-    if mech is None:
+    mech, sol = src.mechanism, src.solution
+    if mech is None or sol is None:
         return
     steps = painter.cx.steps if upto is None else painter.cx.steps[: upto + 1]
     made = {o for s in steps for o in s.outputs}
@@ -314,7 +314,7 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
         names = list(mech.links[lid].points)
         world = {}
         for n in names:
-            world[n] = np.asarray(src.solution.position(n, lid), dtype=float)  # type: ignore[union-attr]
+            world[n] = np.asarray(sol.position(n, lid), dtype=float)
         hull = MultiPoint([tuple(v) for v in world.values()]).convex_hull
         if hull.geom_type != "Polygon":
             continue
@@ -326,7 +326,7 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
                         1 + abs(c[0]) + abs(c[1])):
                     order.append(n)
                     break
-        pts = []
+        pts: list[np.ndarray] = []
         for n in order:
             lab = f"{pref}({n})"
             if lab not in made:

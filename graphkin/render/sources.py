@@ -164,7 +164,7 @@ def _optional(sol: Solution, diagram: str,
     module = importlib.import_module(module_name)
     if diagram == "centers":
         fn = getattr(module, "instant_centers", None)
-        return None if fn is None else _unpack(fn(sol), sol)  # type: ignore[return-value]
+        return None if fn is None else _unpack(fn(sol), sol)
     fn = getattr(module, "curvature", None)
     if fn is None:
         return None

@@ -16,9 +16,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from graphkin.construction import Role
+
+if TYPE_CHECKING:  # matplotlib is imported only when something is drawn
+    from matplotlib.typing import RcKeyType
 
 __all__ = ["STYLES", "HIGHLIGHT", "RC", "rc_context", "IMAGE_FILLS", "style_for_role",
            "FONT_PT", "SMALL_PT"]
@@ -83,7 +86,7 @@ STYLES: dict[str, dict[str, Any]] = {
 IMAGE_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")
 """Light fills for the images of links (one per link, in link order)."""
 
-RC: dict[str, Any] = {
+RC: dict[RcKeyType, Any] = {
     "svg.fonttype": "none",
     "svg.hashsalt": "graphkin",
     "font.family": "sans-serif",
