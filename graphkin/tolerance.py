@@ -7,6 +7,12 @@ relative to the size of the figure plus an absolute floor.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TypeVar
+
+import numpy as np
+from numpy.typing import NDArray
+
+_S = TypeVar("_S", float, NDArray[np.float64])
 
 __all__ = ["Tolerance", "DEFAULT_TOL"]
 
@@ -36,8 +42,8 @@ class Tolerance:
     length_abs: float = 1e-12
     angle: float = 1e-9
 
-    def length(self, scale: float) -> float:
-        """Length tolerance for a figure whose size is ``scale``."""
+    def length(self, scale: _S) -> _S:
+        """Length tolerance for a figure whose size is ``scale`` (a number or an array)."""
         return self.length_abs + self.length_rel * abs(scale)
 
 

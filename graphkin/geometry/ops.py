@@ -68,11 +68,6 @@ def _f(a: ArrayLike) -> Array:
     return np.asarray(a, dtype=float)
 
 
-def _length_tol(tol: Tolerance, scale: ArrayLike) -> Array:
-    """``tol.length`` of every figure size in ``scale`` (the same sum, element by element)."""
-    return tol.length_abs + tol.length_rel * np.abs(_f(scale))
-
-
 def point(x: ArrayLike, y: ArrayLike) -> Array:
     """Finite point(s) ``(x, y, 1)``.
 
@@ -173,7 +168,7 @@ def join(p: ArrayLike, q: ArrayLike, tol: Tolerance | None = None) -> Array:
     n = np.hypot(line[..., 0], line[..., 1])
     scale = np.maximum(np.hypot(p[..., 0], p[..., 1]), np.hypot(q[..., 0], q[..., 1]))
     both_finite = (p[..., 2] != 0.0) & (q[..., 2] != 0.0)
-    small = np.where(both_finite, n <= _length_tol(tol, scale), n <= tol.angle)
+    small = np.where(both_finite, n <= tol.length(_f(scale)), n <= tol.angle)
     with np.errstate(invalid="ignore", divide="ignore"):
         out = line / n[..., None]
     return np.where(small[..., None], np.nan, out)
@@ -207,7 +202,7 @@ def meet(line1: ArrayLike, line2: ArrayLike, tol: Tolerance | None = None) -> Ar
     # coincident lines: parallel and the same offset
     same = (np.abs(p[..., 2]) <= tol.angle) & (
         np.abs(l1[..., 2] - np.sign(dot2(l1, l2)) * l2[..., 2])
-        <= _length_tol(tol, np.maximum(np.abs(l1[..., 2]), np.abs(l2[..., 2])) + 1.0))
+        <= tol.length(np.maximum(np.abs(l1[..., 2]), np.abs(l2[..., 2])) + 1.0))
     return np.where(same[..., None], np.nan, out)
 
 
@@ -352,7 +347,7 @@ def intersect_circles(c1: ArrayLike, c2: ArrayLike,
     dist = np.hypot(d[..., 0], d[..., 1])
     r1, r2 = c1[..., 2], c2[..., 2]
     scale = np.maximum(np.maximum(r1, r2), dist)
-    eps = _length_tol(tol, scale)
+    eps = tol.length(_f(scale))
     with np.errstate(invalid="ignore", divide="ignore"):
         a = (dist**2 + r1**2 - r2**2) / (2 * dist)
         h2 = r1**2 - a**2
@@ -387,7 +382,7 @@ def intersect_line_circle(line: ArrayLike, c: ArrayLike,
     r = c[..., 2]
     s = line[..., 0] * c[..., 0] + line[..., 1] * c[..., 1] + line[..., 2]
     foot = c[..., :2] - s[..., None] * line[..., :2]
-    eps = _length_tol(tol, np.maximum(r, np.abs(s)))
+    eps = tol.length(np.maximum(r, np.abs(s)))
     h2 = r**2 - s**2
     h2 = np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
     with np.errstate(invalid="ignore"):
