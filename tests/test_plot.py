@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from spec_data import EXAMPLES
 
 import graphkin
 from graphkin.errors import InputError
@@ -143,3 +144,59 @@ def test_no_pyplot_state() -> None:
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert r.stdout.strip() == "False"
     assert math.isfinite(1.0)
+
+
+def _gid_line(fig, gid):
+    for ax in fig.axes:
+        for line in ax.get_lines():
+            if line.get_gid() == gid:
+                return np.asarray(line.get_xydata(), dtype=float)
+    raise KeyError(gid)
+
+
+def test_centrodes_touch_at_the_pole_and_roll_without_slip():
+    # Sec. 3.20: the moving centrode rolls on the fixed one without slip, touching at
+    # the velocity pole.  For Example 3.1 the pole of the coupler at the file's posture
+    # is I13 = (5.42613, -9.39833) (expected.toml).  Rolling without slip: from the
+    # contact point the two curves have equal arc lengths to the next contact points.
+    from graphkin.render.plots import sweep_figure
+
+    mech = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml")
+    sw = mech.sweep(count=720, start=120.0, stop=160.0, centers=True)
+    fig = sweep_figure(sw, "centrode:3")
+    fixed = _gid_line(fig, "centrode-fixed-3")
+    moving = _gid_line(fig, "centrode-moving-3")
+    np.testing.assert_allclose(fixed[0], [5.42613, -9.39833], atol=1e-4)
+    np.testing.assert_allclose(moving[0], fixed[0], atol=1e-9)
+    for m in (60, 180, 360):
+        lf = np.sum(np.hypot(*np.diff(fixed[: m + 1], axis=0).T))
+        lm = np.sum(np.hypot(*np.diff(moving[: m + 1], axis=0).T))
+        assert lm == pytest.approx(lf, rel=2e-3)
+
+
+def test_coupler_curve_marks_its_osculating_circle_and_balls_point():
+    # the osculating circle at the first posture has the radius of curvature of E's path,
+    # 4.320695 in for Example 3.1 (expected.toml); Ball's point U lies on its own track
+    from graphkin.render.plots import sweep_figure
+
+    mech = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml")
+    fig = sweep_figure(mech.sweep(count=72), "path:E")
+    (ax,) = fig.axes
+    (circ,) = [p for p in ax.patches if p.get_gid() == "path-E-osculating"]
+    assert circ.get_radius() == pytest.approx(4.320695, abs=1e-4)
+    u = _gid_line(fig, "ball-point-3")[0]
+    track = _gid_line(fig, "path-E-ball-point")
+    assert np.min(np.hypot(*(track - u).T)) < 1e-9 * mech.scale
+
+
+def test_path_of_an_instant_center():
+    # I24 of a four-bar lies on the frame line A-D (Kennedy: on I12-I14), so its path is
+    # on y = 0
+    from graphkin.render.plots import sweep_figure
+
+    mech = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml")
+    fig = sweep_figure(mech.sweep(count=36, centers=True), "center:I24")
+    pts = _gid_line(fig, "center-I24")
+    ok = np.isfinite(pts).all(axis=1)
+    assert ok.sum() > 10
+    np.testing.assert_allclose(pts[ok, 1], 0.0, atol=1e-9)

@@ -20,7 +20,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
         "plot", help="plot angles, rates, coupler curves or transmission angles over a sweep",
         description="Sweep the drive (as graphkin sweep) and plot curves over it: angle, omega, "
                     "alpha (omega:4 for one link), velocity:P, acceleration:P, path:P (coupler "
-                    "curve), transmission.")
+                    "curve, with its osculating circle and Ball's point), center:I24 (the path "
+                    "of an instant center), centrode:3 (fixed and moving centrodes), "
+                    "transmission.")
     p.add_argument("file", help="mechanism file (TOML)")
     p.add_argument("--what", default="angle,omega,alpha", metavar="ITEMS",
                    help="comma-separated items (default angle,omega,alpha)")

@@ -8,7 +8,11 @@ Each item of ``what`` is drawn on its own axes of one
   ``angle:3``, ``omega:4`` for one link;
 * ``velocity:P``, ``acceleration:P``: the magnitude of a point's velocity or
   acceleration over the drive;
-* ``path:P``: the path of a point (a coupler curve), drawn to scale;
+* ``path:P``: the path of a point (a coupler curve), drawn to scale, with its
+  osculating circle at the first posture and, for a coupler point, Ball's
+  point of its link and the nearly straight stretch it traces;
+* ``center:I24``: the path of an instant center in the frame (to scale);
+* ``centrode:3``: the fixed and moving centrodes of link 3 (Sec. 3.20);
 * ``transmission``: the transmission angle at every pin found by two arcs,
   with the 45° rule of thumb of Sec. 1.10.
 
@@ -24,14 +28,15 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.10 (transmission angle), Sec. 2.13
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from graphkin.errors import InputError
+from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME
 
 if TYPE_CHECKING:
@@ -41,7 +46,8 @@ if TYPE_CHECKING:
 
 __all__ = ["ITEMS", "parse_what", "sweep_figure", "save_figure"]
 
-ITEMS = ("angle", "omega", "alpha", "velocity", "acceleration", "path", "transmission")
+ITEMS = ("angle", "omega", "alpha", "velocity", "acceleration", "path", "transmission",
+         "center", "centrode")
 """What can be plotted (``item`` or ``item:which``)."""
 
 _UNITS = {"angle": "°", "omega": "rad/s", "alpha": "rad/s²"}
@@ -73,6 +79,10 @@ def parse_what(text: str | Sequence[str]) -> list[tuple[str, str | None]]:
                              "(path, velocity and acceleration take a point: path:E)", key="what")
         if item in ("path", "velocity", "acceleration") and not which.strip():
             raise InputError(f"{item} needs a point, as in {item}:E", key="what")
+        if item == "center" and not which.strip():
+            raise InputError("center needs an instant center, as in center:I24", key="what")
+        if item == "centrode" and not which.strip():
+            raise InputError("centrode needs a link, as in centrode:3", key="what")
         out.append((item, which.strip() or None))
     if not out:
         raise InputError("nothing to plot; valid: " + ", ".join(ITEMS), key="what")
@@ -198,7 +208,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
     items = parse_what(what)
     cols = sw.columns
     rated = "omega_" + FRAME in cols
-    heights = [1.0 if item == "path" else 0.55 for item, _ in items]
+    heights = [1.0 if item in ("path", "center", "centrode") else 0.55 for item, _ in items]
     if fig is None:
         fig = Figure(figsize=(width, width * sum(heights) * 0.75 + 0.3), layout="constrained")
     else:
@@ -248,11 +258,19 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
                 fx, fy = zip(*frame.values())
                 (pivots,) = ax.plot(fx, fy, "^", ms=6, color="0.3")
                 pivots.set_gid("frame-pivots")
+            if rated and ok.size:
+                _curvature_marks(ax, sw, which, int(ok[0]))
             ax.set_aspect("equal", adjustable="datalim")
             unit = sw.mechanism.length_unit
             ax.set_xlabel(f"x, {unit}")
             ax.set_ylabel(f"y, {unit}")
             ax.set_title(f"path of {which} (coupler curve)", fontsize="medium")
+        elif item == "center":
+            assert which is not None
+            _center_path(ax, sw, which)
+        elif item == "centrode":
+            assert which is not None
+            _centrodes(ax, sw, which)
         else:  # transmission
             tcols = {k: v for k, v in cols.items() if k.startswith("transmission_")}
             if not tcols:
@@ -275,6 +293,189 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             ax.legend(loc="best", fontsize="small", frameon=False)
     fig.suptitle(sw.mechanism.title or "sweep", fontsize="medium")
     return fig
+
+
+def _to_frame(sw: Sweep, lid: str, k: np.ndarray | int, local: np.ndarray) -> np.ndarray:
+    """World position, at posture(s) ``k``, of the body point of ``lid`` at ``local``."""
+    cols, link = sw.columns, sw.mechanism.links[lid]
+    name, (lx, ly) = next(iter(link.points.items()))
+    th = np.radians(np.asarray(cols[f"angle_{lid}"], dtype=float)[k])
+    c, s = np.cos(th), np.sin(th)
+    ox = np.asarray(cols[f"x_{name}"], dtype=float)[k] - (c * lx - s * ly)
+    oy = np.asarray(cols[f"y_{name}"], dtype=float)[k] - (s * lx + c * ly)
+    x, y = local[..., 0], local[..., 1]
+    return np.stack([ox + c * x - s * y, oy + s * x + c * y], axis=-1)
+
+
+def _to_link(sw: Sweep, lid: str, world: np.ndarray) -> np.ndarray:
+    """Coordinates in ``lid``'s own frame of world points, one per posture."""
+    cols, link = sw.columns, sw.mechanism.links[lid]
+    name, (lx, ly) = next(iter(link.points.items()))
+    th = np.radians(np.asarray(cols[f"angle_{lid}"], dtype=float))
+    c, s = np.cos(th), np.sin(th)
+    ox = np.asarray(cols[f"x_{name}"], dtype=float) - (c * lx - s * ly)
+    oy = np.asarray(cols[f"y_{name}"], dtype=float) - (s * lx + c * ly)
+    dx, dy = world[..., 0] - ox, world[..., 1] - oy
+    return np.stack([c * dx + s * dy, -s * dx + c * dy], axis=-1)
+
+
+def _pole_path(sw: Sweep, i: str, j: str) -> np.ndarray:
+    """The instant center Iij at every posture (NaN where not assembled or at infinity)."""
+    cols = sw.columns
+    key = f"I{i}{j}" if len(i) == 1 and len(j) == 1 else f"I{i}-{j}"
+    if f"x_{key}" not in cols:
+        from graphkin.kinematics.sweep import sweep as _sweep
+
+        sw2 = _sweep(sw.mechanism, count=len(cols["drive"]), start=float(cols["drive"][0]),
+                     stop=None if len(cols["drive"]) < 2 else
+                     float(cols["drive"][0]) + len(cols["drive"]) * float(
+                         cols["drive"][1] - cols["drive"][0]), centers=True)
+        cols = sw2.columns
+        if f"x_{key}" not in cols:
+            raise InputError(f"no instant center {key} in this mechanism", key="what")
+    return np.stack([np.asarray(cols[f"x_{key}"], dtype=float),
+                     np.asarray(cols[f"y_{key}"], dtype=float)], axis=-1)
+
+
+def _pair(text: str) -> tuple[str, str]:
+    t = text.strip().upper().lstrip("I")
+    i, _, j = t.partition("-") if "-" in t else (t[:1], "", t[1:])
+    if not i or not j:
+        raise InputError(f"cannot read the instant center {text!r}; write I24 or I1-13",
+                         key="what")
+    a, b = sorted((i, j), key=lambda x: (len(x), x))
+    return a, b
+
+
+def _view(ax: Any, sw: Sweep, margin: float = 1.0) -> None:
+    """Limit a to-scale plot to the mechanism's own region, widened by ``margin`` times its size.
+
+    Instant centers run off to infinity where two links turn alike; the view
+    stays on the mechanism rather than following them.
+    """
+    cols = sw.columns
+    xs = [np.asarray(cols[f"x_{n}"], dtype=float) for n in sw.mechanism.point_names]
+    ys = [np.asarray(cols[f"y_{n}"], dtype=float) for n in sw.mechanism.point_names]
+    x, y = np.concatenate(xs), np.concatenate(ys)
+    x, y = x[np.isfinite(x)], y[np.isfinite(y)]
+    if not x.size:
+        return
+    size = max(float(np.ptp(x)), float(np.ptp(y)), 1e-12)
+    cx, cy = (x.min() + x.max()) / 2, (y.min() + y.max()) / 2
+    half = size * (0.5 + margin)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlim(cx - half, cx + half)
+    ax.set_ylim(cy - half, cy + half)
+
+
+def _broken(pts: np.ndarray, sw: Sweep) -> np.ndarray:
+    """A polyline with a gap wherever it jumps through infinity (a pole running off)."""
+    cols = sw.columns
+    xs = np.concatenate([np.asarray(cols[f"x_{n}"], dtype=float)
+                         for n in sw.mechanism.point_names])
+    size = float(np.nanmax(np.abs(xs))) if np.isfinite(xs).any() else 1.0
+    out = np.array(pts, dtype=float)
+    jump = np.hypot(*np.diff(out, axis=0).T) > 20 * max(size, 1e-12)
+    out[1:][jump] = np.nan
+    return out
+
+
+def _center_path(ax: Any, sw: Sweep, which: str) -> None:
+    """The path of an instant center over the sweep (Sec. 3.20: I1k traces the fixed centrode)."""
+    i, j = _pair(which)
+    pts = _broken(_pole_path(sw, i, j), sw)
+    (line,) = ax.plot(pts[:, 0], pts[:, 1], lw=1.2, label=f"I{i}{j}")
+    line.set_gid(f"center-I{i}{j}")
+    _view(ax, sw)
+    unit = sw.mechanism.length_unit
+    ax.set_xlabel(f"x, {unit}")
+    ax.set_ylabel(f"y, {unit}")
+    ax.set_title(f"path of the instant center I{i}{j}", fontsize="medium")
+
+
+def _centrodes(ax: Any, sw: Sweep, lid: str) -> None:
+    """The fixed and moving centrodes of link ``lid`` (Sec. 3.20).
+
+    The fixed centrode is the path of the velocity pole I1k in the frame; the
+    moving centrode is the path of the same pole in the link's own coordinates,
+    drawn where the link stands at the first posture, so that the two touch at
+    that posture's pole and roll on each other without slip.
+    """
+    if lid not in sw.mechanism.links or lid == FRAME:
+        raise InputError(f"no moving link {lid!r} for a centrode", key="what")
+    fixed = _pole_path(sw, FRAME, lid)
+    ok = np.flatnonzero(np.all(np.isfinite(fixed), axis=-1))
+    if not ok.size:
+        raise InputError(f"link {lid} has no finite velocity pole over this sweep", key="what")
+    local = _to_link(sw, lid, fixed)
+    moving = _to_frame(sw, lid, int(ok[0]), local)
+    fb, mb = _broken(fixed, sw), _broken(moving, sw)
+    (f,) = ax.plot(fb[:, 0], fb[:, 1], lw=1.4, label="fixed centrode")
+    f.set_gid(f"centrode-fixed-{lid}")
+    (m,) = ax.plot(mb[:, 0], mb[:, 1], lw=1.4, ls="--", label="moving centrode")
+    m.set_gid(f"centrode-moving-{lid}")
+    (p,) = ax.plot(*fixed[ok[0]], "o", ms=4, color="0.2")
+    p.set_gid(f"centrode-pole-{lid}")
+    ax.annotate(f"I1{lid}" if len(lid) == 1 else f"I1-{lid}", fixed[ok[0]],
+                textcoords="offset points", xytext=(4, 4), fontsize="small")
+    _view(ax, sw)
+    unit = sw.mechanism.length_unit
+    ax.set_xlabel(f"x, {unit}")
+    ax.set_ylabel(f"y, {unit}")
+    ax.legend(loc="best", fontsize="small", frameon=False)
+    ax.set_title(f"centrodes of link {lid}", fontsize="medium")
+
+
+def _curvature_marks(ax: Any, sw: Sweep, name: str, k: int) -> None:
+    """On a coupler curve: the osculating circle at posture ``k`` and Ball's point's path.
+
+    ρ = |V|³/|V × A| and the center of curvature lies along the normal toward
+    which the path turns (Sec. 4.11); Ball's point of the point's link, where
+    the curvature is stationary to third order (Sec. 4.17), is marked with its
+    own path.
+    """
+    cols = sw.columns
+    v = np.array([cols[f"vx_{name}"][k], cols[f"vy_{name}"][k]], dtype=float)
+    a = np.array([cols[f"ax_{name}"][k], cols[f"ay_{name}"][k]], dtype=float)
+    pnt = np.array([cols[f"x_{name}"][k], cols[f"y_{name}"][k]], dtype=float)
+    cross = float(v[0] * a[1] - v[1] * a[0])
+    speed = float(np.hypot(*v))
+    if speed > 0 and cross != 0:
+        rho = speed**3 / abs(cross)
+        normal = np.array([-v[1], v[0]]) / speed * np.sign(cross)
+        center = pnt + rho * normal
+        from matplotlib.patches import Circle
+
+        circ = Circle(tuple(center), rho, fill=False, lw=0.8, ls=":", color="0.4")
+        circ.set_gid(f"path-{name}-osculating")
+        ax.add_patch(circ)
+    owners = [lid for lid in sw.mechanism.point_links[name] if lid != FRAME]
+    if not owners:
+        return
+    lid = owners[0]
+    from graphkin.kinematics.curvature import link_curvature
+
+    mech, d = sw.mechanism, sw.mechanism.drives[0]
+    at = float(cols["drive"][k])
+    moved = dataclasses.replace(d, value=np.radians(at) if d.kind == "angle" else at)
+    try:
+        sol = dataclasses.replace(mech, drives=(moved, *mech.drives[1:])).solve()
+        ball = link_curvature(sol, lid).ball_point
+    except GraphkinError:
+        return
+    if ball is None or not np.all(np.isfinite(ball)):
+        return
+    n = len(cols["drive"])
+    local = _to_link(sw, lid, np.broadcast_to(np.asarray(ball, dtype=float), (n, 2)))[k]
+    # Ball's point moves on an almost straight line near this posture: draw that stretch
+    near = np.arange(max(0, k - n // 12), min(n, k + n // 12 + 1))
+    track = _to_frame(sw, lid, near, np.asarray(local))
+    (u,) = ax.plot(track[:, 0], track[:, 1], lw=0.9, color="0.45", label="Ball's point")
+    u.set_gid(f"path-{name}-ball-point")
+    (mark,) = ax.plot(*np.asarray(ball, dtype=float), "s", ms=4, color="0.2")
+    mark.set_gid(f"ball-point-{lid}")
+    ax.annotate("U", np.asarray(ball, dtype=float), textcoords="offset points",
+                xytext=(4, 4), fontsize="small")
 
 
 def save_figure(fig: Figure, path: str | os.PathLike[str]) -> Path:
