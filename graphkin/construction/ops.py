@@ -268,15 +268,17 @@ def _subtract(p: Array, v: Array, *, tol: Tolerance) -> tuple[Array]:
 
 @op("rolling_normal", kind="vector")
 def _rolling_normal(c: Array, center: Array, omega_i: Array, omega_j: Array, *,
-                    tol: Tolerance) -> tuple[Array]:
-    """Rolling-contact component ``A^r`` of a circle rolling on a line (Eq. 4.19).
+                    tol: Tolerance, factor: float = 1.0) -> tuple[Array]:
+    """Rolling-contact component ``A^r`` (Eq. 4.19), normal to the surfaces.
 
-    The contact point of the circle, seen from the link it rolls on, has the
-    acceleration ``ρ ω_rel²`` toward the circle's center, normal to the surfaces.
+    The contact point of a circle of radius ρ, seen from the link it rolls on,
+    has the acceleration ``factor · ρ ω_rel²`` toward the circle's center:
+    ``factor`` is 1 on a line and ``R/(R ± ρ)`` on a circle of radius R
+    (outside / inside).
     """
     r = g.xy(center) - g.xy(c)
     w = (np.asarray(omega_i) - np.asarray(omega_j))[..., None]
-    return (w**2 * r,)
+    return (factor * w**2 * r,)
 
 
 @op("tangent_foot")
@@ -1211,3 +1213,14 @@ def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
         np.add(y0, y, out=y)
 
     return run
+
+
+@op("along_ray")
+def _along_ray(o: Array, x: Array, *, tol: Tolerance, distance: float) -> tuple[Array]:
+    """The point at a known distance from O toward X (a contact point on the line of centers)."""
+    a, b = g.xy(o), g.xy(x)
+    d = b - a
+    n = np.hypot(d[..., 0], d[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q = a + d * (distance / n)[..., None]
+    return (g.point(q[..., 0], q[..., 1]),)

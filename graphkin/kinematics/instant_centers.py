@@ -560,7 +560,11 @@ class _Kennedy:
         self.slot_normals()
 
     def rolling_contact(self, r: Any, lab: str, note: str) -> None:
-        """The contact point of a circle rolling on a line: the foot of the perpendicular."""
+        """The contact point of a rolling circle (a primary center).
+
+        On a line it is the foot of the perpendicular from the circle's center;
+        on a circle, the point of the line of centers at the circle's radius.
+        """
         sol = self.sol
         on = sol.links[r.on]
         center = self.fresh(r.center)
@@ -569,6 +573,15 @@ class _Kennedy:
                  note=f"The center {r.center} of the rolling circle of link {r.link}.",
                  xy=(_as_float(c[..., 0]), _as_float(c[..., 1])))
         stem = r.key
+        if not r.on_line:
+            # circles touch on their line of centers, R from the center of on's circle
+            o = on.position(r.on_center)
+            self.add("point", (), f"{stem}:O", role=Role.GIVEN,
+                     note=f"The center of link {r.on}'s circle.",
+                     xy=(_as_float(o[..., 0]), _as_float(o[..., 1])))
+            self.add("along_ray", (f"{stem}:O", center), lab, role=Role.GIVEN, note=note,
+                     distance=r.on_radius)
+            return
         for k, loc in enumerate((r.p0, r.p1)):
             q = on.position(loc)
             self.add("point", (), f"{stem}:L{k}", role=Role.GIVEN,

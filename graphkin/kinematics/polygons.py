@@ -163,9 +163,9 @@ class _Poly:
         if al not in {o for st in self.a.steps for o in st.outputs}:
             # ω of the roller is found in the velocity polygon (evaluated before this one)
             ar = self.A("rolling_normal", (c, r.center, f"ω{i}", self.omega[j]),
-                        f"A_C{i}/{j}^r",
-                        note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel, normal to the surfaces, "
-                             "toward the center (Eq. 4.19).")
+                        f"A_C{i}/{j}^r", factor=r.factor,
+                        note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel (× R/(R ± ρ) on a "
+                             "circle), normal to the surfaces, toward the center (Eq. 4.19).")
             self.A("translate", (aj, ar), al, role=Role.RESULT,
                    equation=VectorEquation((Term(f"A_C{i}", U, U),),
                                            (Term(f"A_C{j}"), Term(f"A_C{i}/{j}^r")), case=1),

@@ -240,7 +240,7 @@ class _Builder:
                 self.add("rigid", (anchor, th), (lab,), local_p=aloc, local_q=loc, note=note)
 
         for r in self.mech.rolling:
-            if r.on == lid:
+            if r.on == lid and r.p0 is not None and r.p1 is not None:
                 for tag, loc in (("L0", r.p0), ("L1", r.p1)):
                     mark(f"{r.key}:{tag}", loc, f"Mark the surface that {r.link} rolls on.")
                 if f"{r.key}:line" not in self.env:
@@ -313,11 +313,20 @@ class _Builder:
                     changed = True
                 c = f"{r.key}:C"
                 if r.link in self.placed and r.on in self.placed and c not in self.env:
-                    self.add("perpendicular", (f"{r.key}:line", r.center), (f"{r.key}:n",),
-                             note=f"The common normal: through {r.center} perpendicular to the "
-                                  "surface.")
-                    self.add("meet", (f"{r.key}:line", f"{r.key}:n"), (c,), role=Role.RESULT,
-                             note="It meets the surface at the point of contact.")
+                    if r.on_line:
+                        self.add("perpendicular", (f"{r.key}:line", r.center), (f"{r.key}:n",),
+                                 note=f"The common normal: through {r.center} perpendicular to "
+                                      "the surface.")
+                        self.add("meet", (f"{r.key}:line", f"{r.key}:n"), (c,),
+                                 role=Role.RESULT,
+                                 note="It meets the surface at the point of contact.")
+                    else:
+                        o = r.on_center_point if r.fixed_centers else f"{r.slot_key}:O"
+                        assert o is not None
+                        self.add("along_ray", (o, r.center), (c,),
+                                 distance=r.on_radius, role=Role.RESULT,
+                                 note=f"The circles touch on their line of centers, at "
+                                      f"{r.on_radius:.6g} from the center of link {r.on}'s circle.")
                     self.events.append(("contact", r))
                     changed = True
             for lid in self.mech.links:
@@ -374,13 +383,23 @@ class _Builder:
                 if r.link == lid and r.on in self.placed:
                     cloc = self.mech.links[lid].points[r.center]
                     x = self.fresh(f"{name}'")
-                    self.add("rigid", (f"{slot}:L0", th), (x,), local_p=cloc, local_q=loc,
-                             note=f"Where {name} would be with the center {r.center} at the "
-                                  "path's start.")
-                    lab = f"l_{name}({r.key})"
-                    self.add("parallel", (f"{slot}:line", x), (lab,),
-                             note=f"Through it draw the path of {name}, parallel to the surface.")
-                    return lab, "line", f"R_{name}", ("roll", lid, r.key)
+                    start = f"{slot}:L0" if r.on_line else f"{slot}:O"
+                    self.add("rigid", (start, th), (x,), local_p=cloc, local_q=loc,
+                             note=f"Where {name} would be with the center {r.center} at "
+                                  + ("the path's start." if r.on_line else
+                                     "the center of its path."))
+                    if r.on_line:
+                        lab = f"l_{name}({r.key})"
+                        self.add("parallel", (f"{slot}:line", x), (lab,),
+                                 note=f"Through it draw the path of {name}, parallel to the "
+                                      "surface.")
+                        return lab, "line", f"R_{name}", ("roll", lid, r.key)
+                    lab = f"k_{name}({r.key})"
+                    path = next(t for t in self.mech.slots if t.key == slot)
+                    self.add("circle", (x,), (lab,), radius=path.radius,
+                             note=f"About it draw the path of {name}: an arc of the radius of "
+                                  "the center's path.")
+                    return lab, "circle", f"R_{name}", ("roll", lid, r.key)
         raise AssertionError("no locus")
 
     # ---- groups ------------------------------------------------------

@@ -100,17 +100,25 @@ class Slot:
 
 @dataclass(frozen=True, slots=True)
 class Rolling:
-    """Rolling contact without slip: a circle of ``link`` rolls on a line of ``on``.
+    """Rolling contact without slip: a circle of ``link`` rolls on a line or circle of ``on``.
 
-    ``center`` names the circle's center (a point of ``link``), ``radius`` its
-    radius; ``p0``, ``p1`` the line in ``on``'s coordinates; ``side`` the side
-    of the directed line p0 → p1 on which the circle lies (``"left"`` or
-    ``"right"``, the rule of :class:`graphkin.construction.Side`).  At the
-    file's drive the rolling link stands at ``angle`` (rad, absolute; default
-    0: its own axes as written).  For the posture the center runs on the line
-    offset by the radius (the equivalent pin-in-slot, Example 4.7); for the
-    rates the contact points have equal velocities (Eq. 3.13) and their
-    accelerations differ by a component normal to the surfaces (Eq. 4.19).
+    ``center`` names the rolling circle's center (a point of ``link``),
+    ``radius`` its radius.  The surface of ``on`` is either a line (``p0``,
+    ``p1`` in ``on``'s coordinates, with ``side`` the side of the directed line
+    p0 → p1 on which the circle lies, ``"left"`` or ``"right"``: the rule of
+    :class:`graphkin.construction.Side`) or a circle (``on_center``,
+    ``on_radius`` in ``on``'s coordinates, with ``contact`` ``"outside"``: the
+    circles touch externally, as gears; or ``"inside"``: the rolling circle
+    runs inside, as a planet in a ring gear).  At the file's drive the rolling
+    link stands at ``angle`` (rad, absolute; default 0: its own axes as
+    written).  For the posture the center runs on the surface offset by the
+    radius (the equivalent pin-in-slot, Example 4.7); for the rates the contact
+    points have equal velocities (Eq. 3.13) and their accelerations differ by a
+    component normal to the surfaces (Eq. 4.19).  When both centers are points
+    of one link (gears on fixed centers, a planet on its arm) the distance of
+    the centers is already held and only the no-slip condition is a constraint
+    (``fixed_centers``); ``on_center_point`` then names the point of ``on`` at
+    its circle's center.
     """
 
     index: int
@@ -118,16 +126,41 @@ class Rolling:
     on: str
     center: str
     radius: float
-    p0: XY
-    p1: XY
-    side: str
+    p0: XY | None = None
+    p1: XY | None = None
+    side: str = "left"
     angle: float = 0.0
     key: str = "rolling"
+    on_center: XY | None = None
+    on_radius: float | None = None
+    contact: str = "outside"
+    on_center_point: str | None = None
+    fixed_centers: bool = False
 
     @property
     def slot_key(self) -> str:
         """Key of the equivalent slot of the center."""
         return f"{self.key}:slot"
+
+    @property
+    def on_line(self) -> bool:
+        """True when the surface of ``on`` is a line."""
+        return self.p0 is not None
+
+    @property
+    def factor(self) -> float:
+        """``R/(R ± r)``: the rolling-contact acceleration is ``factor · ρ ω_rel²`` (1 on a line).
+
+        For a circle of radius r rolling on one of radius R the contact point of
+        the rolling circle, seen from ``on``, has the acceleration
+        ``ω_rel² r R/(R + r)`` (outside) or ``ω_rel² r R/(R − r)`` (inside)
+        toward the rolling circle's center.
+        """
+        if self.on_radius is None:
+            return 1.0
+        big = self.on_radius
+        return big / (big + self.radius) if self.contact == "outside" else \
+            big / (big - self.radius)
 
 
 @dataclass(frozen=True, slots=True)
@@ -229,7 +262,8 @@ class Mechanism:
         """Degrees of freedom by Kutzbach's criterion (Eq. 1.3): 3(n-1) - 2 j1 - j2."""
         m = 3 * len(self.moving)
         m -= sum(2 * (len(p.links) - 1) for p in self.pins)
-        # a rolling contact's equivalent slot is among the slots; its no-slip condition is one more
+        # a rolling contact's equivalent slot is among the slots (unless the distance of the
+        # centers is held by the links already); its no-slip condition is one more
         m -= 2 * len(self.sliders) + len(self.slots) + len(self.rolling)
         return m
 

@@ -228,7 +228,7 @@ class _Parser:
                 slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
 
         rolling = self.rolling_entries(len(slots))
-        slots += [r_slot for _, r_slot in rolling]
+        slots += [r_slot for _, r_slot in rolling if r_slot is not None]
         drives = self.drives(pins, sliders)
         rates = self.rates_table(sliders)
         assembly = {}
@@ -245,9 +245,9 @@ class _Parser:
         self.check_mobility(mech)
         return mech
 
-    def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot]]:
+    def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:
         """Rolling contacts, each with the equivalent slot of its circle's center."""
-        out = []
+        out: list[tuple[Rolling, Slot | None]] = []
         for i, r in enumerate(self.entries("rolling")):
             key = f"rolling[{i}]"
             link = self.link_id(r.get("link"), f"{key}.link")
@@ -265,9 +265,60 @@ class _Parser:
             rad = self.rate(rad, "length", f"{key}.circle.radius")
             if not rad > 0:
                 raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {rad}")
-            if "line" not in r:
-                raise self.fail(f"{key}.line", "rolling contact needs the line it rolls on "
-                                "(circles rolling on circles are not supported yet)")
+            angle = math.radians(self.rate(r.get("angle", 0.0), "angle", f"{key}.angle"))
+            if ("line" in r) == ("on_circle" in r):
+                raise self.fail(key, "rolling contact needs the surface it rolls on: a line "
+                                "(line = [...]) or a circle (on_circle = {center, radius})")
+            if "on_circle" in r:
+                oc = self.table(r["on_circle"], f"{key}.on_circle")
+                ocv = oc.get("center")
+                if isinstance(ocv, str):
+                    ocen = self.links[on].points[self.point_of(on, ocv,
+                                                               f"{key}.on_circle.center")]
+                else:
+                    ocen = self.xy(ocv, f"{key}.on_circle.center")
+                orad = oc.get("radius")
+                if isinstance(orad, bool) or not isinstance(orad, (int, float, str)):
+                    raise self.fail(f"{key}.on_circle.radius", "the radius must be a number")
+                orad = self.rate(orad, "length", f"{key}.on_circle.radius")
+                if not orad > 0:
+                    raise self.fail(f"{key}.on_circle.radius",
+                                    f"the radius must be positive, not {orad}")
+                contact = r.get("contact", "outside")
+                if contact not in ("outside", "inside"):
+                    raise self.fail(f"{key}.contact", "contact must be \"outside\" (external "
+                                    f"gears) or \"inside\" (a ring), not {contact!r}")
+                if contact == "inside" and not orad > rad:
+                    raise self.fail(f"{key}.on_circle.radius", "a circle rolling inside "
+                                    "needs a larger circle to roll in")
+                path = orad + rad if contact == "outside" else orad - rad
+                # a point of `on` at its circle's center, and a link that carries it and the
+                # rolling circle's center: then the distance of the centers is already held
+                named = [q for q, loc in self.links[on].points.items()
+                         if math.hypot(loc[0] - ocen[0], loc[1] - ocen[1])
+                         <= 1e-12 * max(1.0, abs(ocen[0]), abs(ocen[1]))]
+                common = [(q, lk) for q in named for lk in self.links.values()
+                          if q in lk.points and center in lk.points]
+                if common:
+                    q, lk = common[0]
+                    (qx, qy), (cx, cy) = lk.points[q], lk.points[center]
+                    dist = math.hypot(cx - qx, cy - qy)
+                    if abs(dist - path) > 1e-9 * max(1.0, path):
+                        raise self.fail(f"{key}.on_circle.radius", f"the centers {q} and "
+                                        f"{center} are {dist:.6g} apart on link {lk.id}; "
+                                        f"rolling {contact} needs {path:.6g}")
+                    roll = Rolling(i, link, on, center, rad, angle=angle, key=key,
+                                   on_center=ocen, on_radius=orad, contact=contact,
+                                   on_center_point=q, fixed_centers=True)
+                    out.append((roll, None))
+                    continue
+                roll = Rolling(i, link, on, center, rad, angle=angle, key=key, on_center=ocen,
+                               on_radius=orad, contact=contact,
+                               on_center_point=named[0] if named else None)
+                slot = Slot(first_slot + i, link, on, center, center=ocen, radius=path,
+                            key=roll.slot_key)
+                out.append((roll, slot))
+                continue
             p0, p1 = self.line_in(on, r["line"], f"{key}.line")
             side = r.get("side")
             if side is None:
@@ -279,7 +330,6 @@ class _Parser:
                 side = "left" if cross > 0 else "right"
             if side not in ("left", "right"):
                 raise self.fail(f"{key}.side", f"side must be \"left\" or \"right\", not {side!r}")
-            angle = math.radians(self.rate(r.get("angle", 0.0), "angle", f"{key}.angle"))
             roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key)
             # the center runs on the line offset by the radius toward its side
             ux, uy = p1[0] - p0[0], p1[1] - p0[1]

@@ -67,3 +67,52 @@ def test_rolling_needs_a_side(tmp_path):
     with pytest.raises(graphkin.InputError) as info:
         graphkin.load(path)
     assert info.value.key == "rolling[0].side"
+
+
+PLANET = """
+units = {{ length = "mm" }}
+[links.1]
+O = [0, 0]
+[links.2]            # the arm
+O = [0, 0]
+P = [{arm}, 0]
+[links.3]            # the planet, pinned to the arm at its center P
+P = [0, 0]
+Q = [20, 0]
+[[rolling]]
+link = 3
+on = 1
+circle = {{ center = "P", radius = 20 }}
+on_circle = {{ center = "O", radius = {big} }}
+contact = "{contact}"
+[drive]
+link = 2
+angle = 30
+omega = 10
+alpha = 3
+"""
+
+
+@pytest.mark.parametrize("contact,big,arm,ratio", [("outside", 40, 60, 3.0),
+                                                    ("inside", 80, 60, -3.0)])
+def test_planet_rolling_on_a_fixed_sun_or_ring(contact, big, arm, ratio):
+    # A planet of radius r = 20 on an arm of length R ± r about the center O of a fixed
+    # circle of radius R.  No slip at the contact point C (on OP, R from O):
+    # V_C = V_P + ω3 × R_CP = 0 with |V_P| = ω2 |OP| and R_CP = ∓r along OP gives
+    # ω3 = ω2 (R + r)/r = 3 ω2 outside, ω3 = −ω2 (R − r)/r = −3 ω2 inside; α3 likewise.
+    # Seen from the fixed circle the planet's contact point accelerates toward P by
+    # ω3² r R/(R ± r) (a circle rolling on a circle, Eq. 4.19).
+    sol = graphkin.loads(PLANET.format(contact=contact, big=big, arm=arm)).solve()
+    assert float(sol.omega("3")) == pytest.approx(ratio * 10.0, rel=1e-12)
+    assert float(sol.alpha("3")) == pytest.approx(ratio * 3.0, rel=1e-12)
+    st = sol.links["3"]
+    p = sol.position("P")
+    c = p / np.hypot(*p) * big                      # the contact point, on OP
+    assert float(st.angle) == 0.0                   # the planet's reference angle
+    cl = np.asarray(c - st.origin)                  # so its local coordinates are c − origin
+    np.testing.assert_allclose(st.velocity(cl), [0.0, 0.0], atol=1e-9)
+    w3, r = ratio * 10.0, 20.0
+    a_c = st.acceleration(cl)
+    expect = w3**2 * r * big / (big + r if contact == "outside" else big - r)
+    assert float(np.hypot(*a_c)) == pytest.approx(expect, rel=1e-9)
+    assert float(a_c @ (p - c)) > 0                 # toward the planet's center
