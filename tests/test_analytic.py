@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import tomllib
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
@@ -537,12 +538,19 @@ def _scale(values: list[np.ndarray]) -> float:
     return max(float(np.max(np.abs(v))) for v in values)
 
 
-@pytest.mark.parametrize("path", [WHEEL, ROLLER], ids=["ex3_9", "ex4_8"])
-def test_rolling_rates_are_derivatives_of_a_sweep(path: Path) -> None:
-    # Over a sweep the drive's ω2, α2 hold at every posture, so with K = dq/dθ2:
-    # q̇ = K ω2 and q̈ = K' ω2² + K α2 = (dq̇/dθ2) ω2 + q̇ α2/ω2 (central differences).
-    mech = load(path)
+def _arr(x: np.ndarray | None) -> np.ndarray:
+    assert x is not None
+    return x
+
+
+def _assert_rates_are_sweep_derivatives(mech: Mechanism) -> None:
+    """Rates of :func:`solve_analytic` against central differences of a sweep.
+
+    Over a sweep the drive's ω2, α2 hold at every posture, so with K = dq/dθ2:
+    q̇ = K ω2 and q̈ = K' ω2² + K α2 = (dq̇/dθ2) ω2 + q̇ α2/ω2.
+    """
     (d,) = mech.drives
+    assert d.rate is not None
     w, a = float(d.rate), float(d.rate2 or 0.0)
     h = 1e-4
     sw = solve_analytic_many(mech, d.value + np.array([-h, 0.0, h]))
@@ -554,24 +562,31 @@ def test_rolling_rates_are_derivatives_of_a_sweep(path: Path) -> None:
         # the middle posture is the file's: the same as the single solve
         assert float(s.angle[1]) == pytest.approx(float(o.angle), abs=1e-12)
         np.testing.assert_allclose(s.origin[1], o.origin, atol=1e-12 * size)
-        assert float(s.omega[1]) == pytest.approx(float(o.omega), rel=1e-12, abs=1e-12)
-        assert float(s.alpha[1]) == pytest.approx(float(o.alpha), rel=1e-12, abs=1e-12)
-    v_scale = _scale([sw.links[k].origin_velocity[1] for k in mech.moving]
-                     + [sw.links[k].omega[1] * size for k in mech.moving])
-    a_scale = _scale([sw.links[k].origin_acceleration[1] for k in mech.moving]
-                     + [sw.links[k].alpha[1] * size for k in mech.moving])
+        assert float(_arr(s.omega)[1]) == pytest.approx(float(_arr(o.omega)), rel=1e-12,
+                                                        abs=1e-12)
+        assert float(_arr(s.alpha)[1]) == pytest.approx(float(_arr(o.alpha)), rel=1e-12,
+                                                        abs=1e-12)
+    v_scale = _scale([_arr(sw.links[k].origin_velocity)[1] for k in mech.moving]
+                     + [_arr(sw.links[k].omega)[1] * size for k in mech.moving])
+    a_scale = _scale([_arr(sw.links[k].origin_acceleration)[1] for k in mech.moving]
+                     + [_arr(sw.links[k].alpha)[1] * size for k in mech.moving])
     for k in mech.moving:
         s = sw.links[k]
+        om, al = _arr(s.omega), _arr(s.alpha)
+        vo, ao = _arr(s.origin_velocity), _arr(s.origin_acceleration)
         w_fd = _wrap(float(s.angle[2] - s.angle[0])) / (2 * h) * w
         v_fd = (s.origin[2] - s.origin[0]) / (2 * h) * w
-        assert abs(float(s.omega[1]) - w_fd) * size <= RATES_REL * v_scale, k
-        np.testing.assert_allclose(s.origin_velocity[1], v_fd, rtol=0, atol=RATES_REL * v_scale)
-        al_fd = float(s.omega[2] - s.omega[0]) / (2 * h) * w + float(s.omega[1]) * a / w
-        a_fd = (s.origin_velocity[2] - s.origin_velocity[0]) / (2 * h) * w \
-            + s.origin_velocity[1] * a / w
-        assert abs(float(s.alpha[1]) - al_fd) * size <= RATES_REL * a_scale, k
-        np.testing.assert_allclose(s.origin_acceleration[1], a_fd, rtol=0,
-                                   atol=RATES_REL * a_scale)
+        assert abs(float(om[1]) - w_fd) * size <= RATES_REL * v_scale, k
+        np.testing.assert_allclose(vo[1], v_fd, rtol=0, atol=RATES_REL * v_scale)
+        al_fd = float(om[2] - om[0]) / (2 * h) * w + float(om[1]) * a / w
+        a_fd = (vo[2] - vo[0]) / (2 * h) * w + vo[1] * a / w
+        assert abs(float(al[1]) - al_fd) * size <= RATES_REL * a_scale, k
+        np.testing.assert_allclose(ao[1], a_fd, rtol=0, atol=RATES_REL * a_scale)
+
+
+@pytest.mark.parametrize("path", [WHEEL, ROLLER], ids=["ex3_9", "ex4_8"])
+def test_rolling_rates_are_derivatives_of_a_sweep(path: Path) -> None:
+    _assert_rates_are_sweep_derivatives(load(path))
 
 
 def test_rolling_sweep_keeps_the_wheel_rolling() -> None:
@@ -613,6 +628,192 @@ def test_rolling_sweep_marks_where_the_roller_cannot_touch() -> None:
 def test_rolling_graphic_construction_equals_analytic(path: Path) -> None:
     mech = load(path)
     graphic, exact = mech.solve(), solve_analytic(mech)
+    size = mech.scale
+    for f in ("angle", "omega", "alpha"):
+        want = {k: float(getattr(exact, f)(k)) for k in mech.links}
+        tol = 1e-9 * max(1.0, *map(abs, want.values()))
+        for k in mech.links:
+            assert float(getattr(graphic, f)(k)) == pytest.approx(want[k], rel=1e-9, abs=tol)
+    for f in ("position", "velocity", "acceleration"):
+        want_pts = {p: np.asarray(getattr(exact, f)(p)) for p in mech.point_names}
+        tol = 1e-9 * max(size, *(float(np.max(np.abs(v))) for v in want_pts.values()))
+        for p, v in want_pts.items():
+            np.testing.assert_allclose(getattr(graphic, f)(p), v, rtol=1e-9, atol=tol,
+                                       err_msg=f"{f} of {p}")
+
+
+# ---------------------------------------------------------------------------
+# (g) a circle rolling on a circle: gears ([[rolling]] with on_circle)
+# ---------------------------------------------------------------------------
+
+OUTSIDE = ROLLING / "planetary_outside.toml"
+INSIDE = ROLLING / "planetary_inside.toml"
+# Both files: arm 2 pivoted at O = (0, 0) at θ2 = 30°, ω2 = 10, α2 = 3; planet 3
+# (r = 20) pinned to the arm at P, |OP| = 60; sun R = 40 (outside) or ring R = 80
+# (inside), fixed in the frame.
+W2, A2, TH2 = 10.0, 3.0, math.radians(30.0)
+PLANETS = [(OUTSIDE, 40.0, 1.0), (INSIDE, 80.0, -1.0)]
+
+
+def _local(sol: Solution, lid: str, xy: np.ndarray) -> np.ndarray:
+    """Local coordinates in link ``lid`` of the world point ``xy``."""
+    s = sol.links[lid]
+    c, sn = math.cos(float(s.angle)), math.sin(float(s.angle))
+    d = np.asarray(xy, dtype=float) - np.asarray(s.origin, dtype=float)
+    return np.array([c * d[0] + sn * d[1], -sn * d[0] + c * d[1]])
+
+
+@pytest.mark.parametrize(("path", "big", "kappa"), PLANETS, ids=["outside", "inside"])
+def test_planet_on_a_fixed_sun_or_ring(path: Path, big: float, kappa: float) -> None:
+    # By hand: P = 60 (cos θ2, sin θ2), V_P = ω2 k×P.  The contact C = O + R d̂
+    # (d̂ = P/60) is C − P = −κ r d̂ (κ = +1 outside, −1 inside).  The sun (ring) is
+    # at rest, so no slip is V_C(3) = V_P + ω3 k×(C − P) = 0:
+    # 60 ω2 − κ r ω3 = 0 → ω3 = 60 ω2/(κ r) = ±3 ω2 = κ (R + κ r)/r ω2, and α3 = ±3 α2.
+    # Then, with A_P = α2 k×P − ω2² P and ω3 = 3κ ω2, α3 = 3κ α2 (κ² = 1):
+    # A_C(3) = A_P + α3 k×(C − P) − ω3² (C − P) = (60 α2 − κ r α3) k×d̂
+    # + (−60 ω2² + κ r ω3²) d̂ = 0 k×d̂ + (180 κ − 60) ω2² d̂ = κ (180 − 60 κ) ω2² d̂:
+    # 120 ω2² along +d̂ (outside) or 240 ω2² along −d̂ (inside), toward P both times,
+    # and = ω3² r R/(R + κ r) (9·20·40/60 = 120, 9·20·80/60 = 240).
+    r = 20.0
+    mech = load(path)
+    (ro,) = mech.rolling
+    sol = solve_analytic(mech)
+    d_hat = np.array([math.cos(TH2), math.sin(TH2)])
+    np.testing.assert_allclose(sol.position("P"), 60.0 * d_hat, atol=1e-12)
+    w3, a3 = 3.0 * kappa * W2, 3.0 * kappa * A2
+    assert float(sol.angle("3")) == pytest.approx(0.0, abs=1e-12)  # the file's angle
+    assert float(sol.omega("3")) == pytest.approx(w3, rel=1e-12)
+    assert float(sol.alpha("3")) == pytest.approx(a3, rel=1e-12)
+    assert w3 == pytest.approx(kappa * (big + kappa * r) / r * W2, rel=1e-15)
+    c_local = _local(sol, "3", big * d_hat)
+    np.testing.assert_allclose(sol.links["3"].velocity(c_local), [0.0, 0.0], atol=1e-10)
+    acc = np.asarray(sol.links["3"].acceleration(c_local))
+    toward_p = kappa * d_hat
+    want = w3**2 * r * big / (big + kappa * r)
+    assert want == pytest.approx((180.0 - 60.0 * kappa) * W2**2, rel=1e-15)
+    np.testing.assert_allclose(acc, want * toward_p, rtol=0, atol=1e-9 * want)
+    # the model's factor R/(R ± r): factor · r ω_rel² (ω_rel = ω3, the sun at rest)
+    assert want == pytest.approx(ro.factor * r * w3**2, rel=1e-12)
+
+
+# An eccentric disk 2 (circle center E, R = 30, 10 from its pivot A) drives a
+# roller 4 (r = 10) pinned at P to the rocker 3 (pivot B, |BP| = 50): the circle it
+# rolls on is moving, and nothing but the equivalent slot |EP| = 40 holds the centers.
+CAM = """
+title = "Roller on an eccentric disk"
+units = { length = "mm" }
+[links.1]
+A = [0, 0]
+B = [60, 50]
+[links.2]
+A = [0, 0]
+E = [10, 0]
+[links.3]
+B = [0, 0]
+P = [50, 0]
+[links.4]
+P = [0, 0]
+[[rolling]]
+link = 4
+on = 2
+circle = { center = "P", radius = 10 }
+on_circle = { center = "E", radius = 30 }
+contact = "outside"
+[drive]
+link = 2
+angle = 30
+omega = "-7 rad/s"
+alpha = "40 rad/s^2"
+[assembly]
+P = [10, 45]
+"""
+
+
+def test_roller_on_a_moving_circle_has_no_slip() -> None:
+    # Seen from the disk, the roller rolls on a fixed circle, so (as above) its contact
+    # point C has no velocity relative to the disk and, relative to the disk, the
+    # acceleration ω_rel² r R/(R + r) toward P.  The contact point of the disk, C ∈ 2,
+    # is the origin of the disk's moving frame there, so V_C(4) = V_C(2) and
+    # A_C(4) = A_C(2) + ω_rel² r R/(R + r) toward P (the Coriolis term 2 ω2 × V_rel
+    # vanishes with V_rel = 0; Sec. 4.5), ω_rel = ω4 − ω2.
+    r, big = 10.0, 30.0
+    mech = loads(CAM)
+    assert mech.slots  # the centers are held by the equivalent slot, not by one link
+    sol = solve_analytic(mech)
+    p, e = np.asarray(sol.position("P")), np.asarray(sol.position("E"))
+    assert float(np.hypot(*(p - e))) == pytest.approx(big + r, rel=1e-12)
+    d_hat = (p - e) / (big + r)
+    c = e + big * d_hat
+    v4 = np.asarray(sol.links["4"].velocity(_local(sol, "4", c)))
+    v2 = np.asarray(sol.links["2"].velocity(_local(sol, "2", c)))
+    v_scale = float(np.max(np.abs(v2)))
+    assert v_scale > 1.0 and abs(float(sol.omega("2"))) > 0  # the disk does move there
+    np.testing.assert_allclose(v4, v2, rtol=0, atol=1e-10 * v_scale)
+    w_rel = float(sol.omega("4")) - float(sol.omega("2"))
+    a4 = np.asarray(sol.links["4"].acceleration(_local(sol, "4", c)))
+    a2 = np.asarray(sol.links["2"].acceleration(_local(sol, "2", c)))
+    want = w_rel**2 * r * big / (big + r)
+    np.testing.assert_allclose(a4 - a2, want * d_hat, rtol=0,
+                               atol=1e-9 * float(np.max(np.abs(a2))))
+
+
+def _cam() -> Mechanism:
+    return loads(CAM)
+
+
+@pytest.mark.parametrize("make", [lambda: load(OUTSIDE), lambda: load(INSIDE), _cam],
+                         ids=["outside", "inside", "cam"])
+def test_circle_rolling_rates_are_derivatives_of_a_sweep(
+        make: Callable[[], Mechanism]) -> None:
+    _assert_rates_are_sweep_derivatives(make())
+
+
+@pytest.mark.parametrize(("path", "kappa"), [(OUTSIDE, 1.0), (INSIDE, -1.0)],
+                         ids=["outside", "inside"])
+def test_planet_sweep_turns_continuously_with_a_fractional_ratio(path: Path,
+                                                                  kappa: float) -> None:
+    # Sun 50 (ring 90) with the planet at |OP| = 70 (= 90 − 20): the integrated no-slip
+    # condition θ3 − θ3_ref = κ (R + κ r)/r (θ2 − θ2_ref) with the ratio 3.5 — not an
+    # integer, so over 1.5 turns of the arm the angle of the line of centers must be
+    # counted on through ±180°, not taken modulo 2π.
+    text = path.read_text().replace("P = [60, 0]", "P = [70, 0]")
+    text = text.replace("radius = 40 }", "radius = 50 }").replace("radius = 80 }",
+                                                                  "radius = 90 }")
+    mech = loads(text)
+    th = TH2 + np.radians(np.arange(0.0, 540.0, 7.0))
+    sw = solve_analytic_many(mech, th)
+    assert sw.valid.all()
+    want = kappa * 3.5 * (th - TH2)
+    err = np.remainder(sw.angle("3") - want + math.pi, 2 * math.pi) - math.pi
+    np.testing.assert_allclose(err, 0.0, atol=1e-9)
+    np.testing.assert_allclose(sw.omega("3"), kappa * 3.5 * W2, rtol=1e-12)
+    np.testing.assert_allclose(sw.alpha("3"), kappa * 3.5 * A2, rtol=1e-12)
+    # a sweep that starts elsewhere is continued from the file's posture to its start
+    # (the short way round: here 154° on, so the line of centers passes ±180° on the way)
+    part = solve_analytic_many(mech, th[22:27])
+    assert part.valid.all()
+    np.testing.assert_allclose(np.remainder(part.angle("3") - sw.angle("3")[22:27] + math.pi,
+                                            2 * math.pi) - math.pi, 0.0, atol=1e-9)
+
+
+def _graphic(mech: Mechanism) -> Solution:
+    """The graphic construction, or a skip while it cannot roll a circle on a circle."""
+    import graphkin
+    from graphkin.errors import GraphkinError
+
+    try:
+        return graphkin.solve(mech)
+    except (GraphkinError, NotImplementedError, KeyError, TypeError, AttributeError) as exc:
+        pytest.skip(f"graphic circle rolling not yet available ({type(exc).__name__}: {exc})")
+
+
+@pytest.mark.parametrize("make", [lambda: load(OUTSIDE), lambda: load(INSIDE), _cam],
+                         ids=["outside", "inside", "cam"])
+def test_circle_rolling_graphic_construction_equals_analytic(
+        make: Callable[[], Mechanism]) -> None:
+    mech = make()
+    exact = solve_analytic(mech)
+    graphic = _graphic(mech)
     size = mech.scale
     for f in ("angle", "omega", "alpha"):
         want = {k: float(getattr(exact, f)(k)) for k in mech.links}

@@ -58,6 +58,15 @@ velocity terms ``γ = (Φ_q q̇)_q q̇`` that go to the right-hand side.
   file's drive the posture row is ``θ_l - angle = 0`` instead (the rolling
   link stands at the file's angle); over a sweep it is ``g`` with ``c``
   taken from the file's posture.  See :class:`_Rolling` for the derivation.
+* **Rolling contact on a circle** (a circle of radius ``r`` of link ``l``
+  on a circle of radius ``R`` of link ``o``, center ``O`` fixed in ``o``:
+  gears).  The center distance is the equivalent circular slot of radius
+  ``R + r`` (outside) or ``R - r`` (inside), unless one link already holds
+  both centers (a planet on its arm: then no slot).  No slip adds
+  ``g = (θ_l - θ_o) - k φ - c`` with ``φ`` the angle of ``P - O`` in
+  ``o``'s axes and ``k = (R + r)/r`` (outside) or ``-(R - r)/r`` (inside),
+  so ``γ = -k γ_φ``; the posture rows are as for a line.  See
+  :class:`_RollingCircle`.
 
 References
 ----------
@@ -407,7 +416,136 @@ class _Rolling:
         return [self.sigma / self.radius * self.travel.gamma(st, qd)[0]]
 
 
-_Constraint = _Pin | _OnLine | _Angle | _OnCircle | _Rolling
+@dataclass
+class _RollingCircle:
+    """No slip between a circle of link ``l`` and a circle of link ``o`` (one angle row).
+
+    Derivation.  Let ``P`` be the rolling circle's center (radius ``r``),
+    ``O`` the center of ``o``'s circle (radius ``R``, fixed in ``o``),
+    ``d = P - O`` and ``d̂ = d/|d|``.  The circles touch at ``C = O + R d̂``
+    with ``|d| = R + κ r`` (``κ = +1`` outside, external gears; ``κ = -1``
+    inside, a planet in a ring), so ``C - P = (R - |d|) d̂ = -κ r d̂``.  No
+    slip (Eq. 3.13) says ``V_C(l) = V_C(o)``, with
+    ``V_C(k) = V_P(k) + ω_k perp(C - P)``::
+
+        V_P - V_{P∈o} = κ r (ω_l - ω_o) perp(d̂).
+
+    The left side is the apparent velocity of the center seen from ``o``.
+    Write ``d = |d| (cos(φ + θ_o), sin(φ + θ_o))``, ``φ`` the angle of ``d``
+    in ``o``'s axes; ``|d|`` is constant (the slot, or the link that holds
+    both centers), ``V_P = V_O + ḋ`` with ``ḋ = |d| (φ̇ + ω_o) perp(d̂)``, and
+    ``V_{P∈o} = V_O + ω_o perp(d)``, so ``V_P - V_{P∈o} = |d| φ̇ perp(d̂)``.
+    Hence
+
+        ``ω_l - ω_o = κ |d| φ̇ / r = k φ̇``,  ``k = κ (R + κ r)/r``:
+
+    ``(R + r)/r · φ̇`` outside, ``-(R - r)/r · φ̇`` inside (a planet carried
+    round a fixed sun turns ``(R + r)/r`` times as fast as its arm; round
+    inside a fixed ring, ``(R - r)/r`` times as fast the other way).  It is
+    the derivative of the holonomic condition (Sec. 2.19)
+
+        ``g(q) = (θ_l - θ_o) - k φ - c = 0``
+
+    (``c`` a constant; ``φ = atan2(d) - θ_o`` taken continuously, see
+    below).  With ``ψ = atan2(d_y, d_x)``, ``∂ψ/∂d = perp(d)/|d|²``, and
+    ``∂d/∂q`` that of two body points (``P`` of ``l`` minus ``O`` of ``o``),
+    its Jacobian row is the angle row ``θ_l - θ_o`` minus ``k`` times
+    ``∂ψ/∂q - ∂θ_o/∂q``.  Its acceleration row: ``ψ̇ = (d × ḋ)/|d|²``, so
+
+        ``ψ̈ = (d × d̈)/|d|² - 2 (d × ḋ)(d · ḋ)/|d|⁴``
+
+    and with ``d̈ = (linear in q̈) - ω_l² R_l p + ω_o² R_o c_o`` (``p``,
+    ``c_o`` the local coordinates of ``P`` and ``O``)
+    ``γ_ψ = (d × (-ω_l² R_l p + ω_o² R_o c_o))/|d|² - 2 (d × ḋ)(d · ḋ)/|d|⁴``
+    and ``γ = -k γ_ψ``.  The contact point of ``l`` then has no apparent
+    tangential acceleration and the normal one ``ω_rel² r R/(R + κ r)``
+    toward ``P`` (Eq. 4.19 for two circles).
+
+    Posture rows as for :class:`_Rolling`: with ``ref`` None (the file's
+    drive) ``θ_l - angle = 0``; with ``ref = c`` (a sweep) ``g``.  ``φ`` is
+    an angle on a covering: ``k φ`` with ``k`` not an integer is not a
+    function of ``φ`` modulo 2π, so ``φ`` is counted on from ``anchor``
+    (``anchor + wrap(atan2(d) - θ_o - anchor)``), and a sweep moves the
+    anchor to each posture it accepts (:meth:`_System.follow`): the steps
+    between postures turn ``φ`` by far less than π.
+    """
+
+    link: int
+    on: int
+    p: tuple[float, float]
+    oc: tuple[float, float]
+    ratio: float
+    angle: float
+    ref: float | None
+    label: str
+    kinds: tuple[str, ...] = ("A",)
+    anchor: float | None = None
+
+    def _d(self, st: _Poses) -> tuple[float, float]:
+        px, py = st.world(self.link, self.p)
+        ox, oy = st.world(self.on, self.oc)
+        return px - ox, py - oy
+
+    def phi(self, st: _Poses) -> float:
+        """``φ``, the angle of ``P - O`` in ``o``'s axes, counted on from the anchor."""
+        dx, dy = self._d(st)
+        raw = math.atan2(dy, dx) - st.th[self.on]
+        if self.anchor is None:
+            return _wrap(raw)
+        return self.anchor + _wrap(raw - self.anchor)
+
+    def value(self, st: _Poses) -> float:
+        """``(θ_l - θ_o) - k φ`` at a posture (not wrapped)."""
+        return st.th[self.link] - st.th[self.on] - self.ratio * self.phi(st)
+
+    def rate_eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        """``g + c`` and its Jacobian row (the no-slip row of the rates)."""
+        if J is not None:
+            k = self.ratio
+            dx, dy = self._d(st)
+            d2 = dx * dx + dy * dy
+            gx, gy = -dy / d2, dx / d2  # ∂ψ/∂d = perp(d)/|d|²
+            if self.link != _F:
+                px, py = st.rot(self.link, self.p)
+                J[row, 3 * self.link] -= k * gx
+                J[row, 3 * self.link + 1] -= k * gy
+                J[row, 3 * self.link + 2] += 1.0 - k * (gx * -py + gy * px)
+            if self.on != _F:
+                cx, cy = st.rot(self.on, self.oc)
+                J[row, 3 * self.on] += k * gx
+                J[row, 3 * self.on + 1] += k * gy
+                # -1 - k ∂φ/∂θ_o, with ∂φ/∂θ_o = -∂ψ/∂d·perp(R_o c_o) - 1
+                J[row, 3 * self.on + 2] += -1.0 + k * (gx * -cy + gy * cx) + k
+        return [self.value(st)]
+
+    def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        if self.ref is None:
+            if J is not None and self.link != _F:
+                J[row, 3 * self.link + 2] += 1.0
+            return [st.th[self.link] - self.angle]
+        return [self.rate_eval(st, J, row)[0] - self.ref]
+
+    def gamma(self, st: _Poses, qd: Sequence[float]) -> list[float]:
+        # γ = -k γ_ψ, γ_ψ = (d × d̈_γ)/|d|² - 2 (d × ḋ)(d·ḋ)/|d|⁴
+        lk, o = self.link, self.on
+        wl = qd[3 * lk + 2] if lk != _F else 0.0
+        wo = qd[3 * o + 2] if o != _F else 0.0
+        vl = (qd[3 * lk] if lk != _F else 0.0, qd[3 * lk + 1] if lk != _F else 0.0)
+        vo = (qd[3 * o] if o != _F else 0.0, qd[3 * o + 1] if o != _F else 0.0)
+        dx, dy = self._d(st)
+        px, py = st.rot(lk, self.p)
+        cx, cy = st.rot(o, self.oc)
+        ddx = vl[0] - wl * py - (vo[0] - wo * cy)
+        ddy = vl[1] + wl * px - (vo[1] + wo * cx)
+        ax = -wl * wl * px + wo * wo * cx
+        ay = -wl * wl * py + wo * wo * cy
+        d2 = dx * dx + dy * dy
+        g_psi = (dx * ay - dy * ax) / d2 \
+            - 2.0 * (dx * ddy - dy * ddx) * (dx * ddx + dy * ddy) / (d2 * d2)
+        return [-self.ratio * g_psi]
+
+
+_Constraint = _Pin | _OnLine | _Angle | _OnCircle | _Rolling | _RollingCircle
 
 
 # ---------------------------------------------------------------------------
@@ -459,14 +597,21 @@ class _System:
         self.rolling_fixed = rolling_ref is None
         for i, ro in enumerate(mech.rolling):
             s, o = self.index[ro.link], self.index[ro.on]
-            u, _ = _unit(ro.p0, ro.p1)
             p = mech.links[ro.link].points[ro.center]
             lab = f"{ro.key} (link {ro.link} rolls on link {ro.on} without slip)"
+            ref = None if rolling_ref is None else float(rolling_ref[i])
+            if ro.p0 is None or ro.p1 is None:
+                assert ro.on_center is not None and ro.on_radius is not None
+                rad, big = float(ro.radius), float(ro.on_radius)
+                ratio = (big + rad) / rad if ro.contact == "outside" else -(big - rad) / rad
+                self.cons.append(_RollingCircle(s, o, p, ro.on_center, ratio, float(ro.angle),
+                                                ref, lab))
+                continue
+            u, _ = _unit(ro.p0, ro.p1)
             travel = _OnLine(s, p, o, ro.p0, u, lab)
             sigma = 1.0 if ro.side == "left" else -1.0
             self.cons.append(_Rolling(s, o, travel, sigma, float(ro.radius), float(ro.angle),
-                                      None if rolling_ref is None else float(rolling_ref[i]),
-                                      lab))
+                                      ref, lab))
         self.drives: list[_Constraint] = [self._drive_function(d) for d in mech.drives]
         self.values = np.array([d.value for d in mech.drives], dtype=float)
         kinds: list[str] = []
@@ -550,7 +695,7 @@ class _System:
         A = np.zeros((rows, self.n))
         row = 0
         for c in self.cons:
-            (c.rate_eval if isinstance(c, _Rolling) else c.eval)(st, A, row)
+            (c.rate_eval if isinstance(c, (_Rolling, _RollingCircle)) else c.eval)(st, A, row)
             row += len(c.kinds)
         for g in self.rate_functions:
             g.eval(st, A, row)
@@ -573,19 +718,35 @@ class _System:
 
     # -- rolling contact ----------------------------------------------------
     def rolling_constants(self, q: np.ndarray) -> list[float]:
-        """``c = (θ_l - θ_o) + σ s/ρ`` of every rolling contact at posture ``q``."""
+        """``c`` of every rolling contact at posture ``q``.
+
+        ``(θ_l - θ_o) + σ s/ρ`` on a line, ``(θ_l - θ_o) - k φ`` on a circle.
+        """
         st = _Poses(q, self.nlinks)
-        return [c.value(st) for c in self.cons if isinstance(c, _Rolling)]
+        return [c.value(st) for c in self.cons if isinstance(c, (_Rolling, _RollingCircle))]
+
+    def follow(self, q: np.ndarray) -> None:
+        """Count the ``φ`` of every rolling contact on a circle on from posture ``q``."""
+        st = _Poses(q, self.nlinks)
+        for c in self.cons:
+            if isinstance(c, _RollingCircle):
+                c.anchor = c.phi(st)
 
     def integrated(self, q: np.ndarray) -> _System:
         """The same system with the integrated no-slip rows through posture ``q``.
 
         Its Jacobian is the true constraint Jacobian of the mechanism (the
-        one of the rates); without rolling contact it is ``self``.
+        one of the rates); without rolling contact it is ``self``.  The ``φ``
+        of a contact on a circle is counted on from ``q`` (as ``self`` counts it).
         """
         if not self.mech.rolling:
             return self
-        return _System(self.mech, self.tol, self.rolling_constants(q))
+        out = _System(self.mech, self.tol, self.rolling_constants(q))
+        st = _Poses(q, self.nlinks)
+        for mine, new in zip(self.cons, out.cons):
+            if isinstance(mine, _RollingCircle) and isinstance(new, _RollingCircle):
+                new.anchor = mine.phi(st)
+        return out
 
     # -- output -------------------------------------------------------------
     def pose_of(self, q: np.ndarray, lid: str) -> tuple[float, float, float]:
@@ -1067,12 +1228,16 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
     Notes
     -----
     Rolling contact (``[[rolling]]``): the circle's center runs on the line
-    offset by the radius (the equivalent slot), and at the file's drive the
-    rolling link stands at the file's ``angle`` (absolute).  The rates obey
-    no slip, ``ω_l - ω_o = -σ ṡ/ρ`` and its derivative (Eq. 3.13 and 4.19;
-    ``ṡ`` the center's apparent speed along the line seen from ``on``,
-    ``σ = +1`` for a circle on the left of the line); the singularity check
-    uses these rows.
+    offset by the radius, or on the circle of radius ``R + r`` (outside) or
+    ``R - r`` (inside) about the center of ``on``'s circle (the equivalent
+    slot; none when one link already holds both centers), and at the file's
+    drive the rolling link stands at the file's ``angle`` (absolute).  The
+    rates obey no slip and its derivative (Eq. 3.13 and 4.19): on a line
+    ``ω_l - ω_o = -σ ṡ/ρ`` (``ṡ`` the center's apparent speed along the line
+    seen from ``on``, ``σ = +1`` for a circle on the left of the line); on a
+    circle ``ω_l - ω_o = (R + r)/r · φ̇`` (outside) or ``-(R - r)/r · φ̇``
+    (inside), ``φ`` the angle of the line of centers in ``on``'s axes.  The
+    singularity check uses these rows.
 
     References
     ----------
@@ -1191,7 +1356,14 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
     ``s`` the travel of the circle's center along the line in ``on``'s
     coordinates, ``σ = +1`` for a circle on the left of the line, and
     ``ref`` the posture at the file's drive values (rolling links at their
-    file angles, as :func:`solve_analytic` finds it).  The sweep continues
+    file angles, as :func:`solve_analytic` finds it).  On a circle it is
+
+        ``(θ_l - θ_o) - (θ_l - θ_o)_ref = ±(R ± r)/r · (φ - φ_ref)``
+
+    (``+(R + r)/r`` outside, ``-(R - r)/r`` inside), ``φ`` the angle of the
+    line of centers in ``on``'s axes, counted continuously from posture to
+    posture (the ratio need not be an integer, so ``φ`` is not taken modulo
+    2π).  The sweep continues
     that posture to the first drive value in steps of at most 2° (or 2 % of
     the mechanism's size), then on as above; the rates are the same as
     :func:`solve_analytic`'s.  After a gap that cannot be assembled the
@@ -1258,6 +1430,7 @@ def solve_analytic_many(mech: Mechanism, drive_values: np.ndarray,
         Q[i] = q
         valid[i] = True
         prev, prev_values, prev_index = q, values, i
+        eqs.follow(q)
     notes = ["analytic: Newton-Raphson, each posture from the one before"]
     return _solution(eqs, Q, QD, QDD, valid, notes)
 
@@ -1292,6 +1465,7 @@ def _march(eqs: _System, q: np.ndarray, v_from: np.ndarray,
         if q_new is None:
             return None
         q, here = q_new, there
+        eqs.follow(q)
     return q
 
 
