@@ -1087,20 +1087,24 @@ def _k_adiff(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
+def _differences(rt: Runtime, a: str, b: str, ia: str,
+                 ib: str) -> tuple[Any, Any, Any, Any]:
+    """``R_BA`` and the image difference ``b − a`` as components (a zero term is skipped)."""
+    ax, ay = rt.P(a)
+    bx, by = rt.P(b)
+    iax, iay = rt.P(ia)
+    ibx, iby = rt.P(ib)
+    return (bx if _zero(ax) else bx - ax, by if _zero(ay) else by - ay,
+            ibx if _zero(iax) else ibx - iax, iby if _zero(iay) else iby - iay)
+
+
 @kernel("angular_rate", originating=True)
 def _k_angular_rate(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     a, b, ia, ib = step.inputs
     (out,) = step.outputs
 
     def run(rt: Runtime) -> bool:
-        ax, ay = rt.P(a)
-        bx, by = rt.P(b)
-        iax, iay = rt.P(ia)
-        ibx, iby = rt.P(ib)
-        r0 = bx if _zero(ax) else bx - ax
-        r1 = by if _zero(ay) else by - ay
-        v0 = ibx if _zero(iax) else ibx - iax
-        v1 = iby if _zero(iay) else iby - iay
+        r0, r1, v0, v1 = _differences(rt, a, b, ia, ib)
         den = r0 * r0 + r1 * r1
         rt.put(out, (r0 * v1 - r1 * v0) / den)
         # finite inputs and two distinct points: a finite rate
@@ -1115,14 +1119,7 @@ def _k_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     (out,) = step.outputs
 
     def run(rt: Runtime) -> bool:
-        px, py = rt.P(p)
-        cx, cy = rt.P(c)
-        ipx, ipy = rt.P(ip)
-        icx, icy = rt.P(ic)
-        r0 = cx if _zero(px) else cx - px
-        r1 = cy if _zero(py) else cy - py
-        v0 = icx if _zero(ipx) else icx - ipx
-        v1 = icy if _zero(ipy) else icy - ipy
+        r0, r1, v0, v1 = _differences(rt, p, c, ip, ic)
         den = r0 * r0 + r1 * r1
         k = -((v0 * v0 + v1 * v1) / den)
         o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
