@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 HERE = pathlib.Path(__file__).resolve().parent
-DEFAULT = pathlib.Path("/work/shared/spec/bench_fourbar.toml")
+DEFAULT = pathlib.Path(__file__).resolve().parent / "bench_fourbar.toml"
 
 
 def _closed_form_module() -> Any:

@@ -21,7 +21,7 @@ import pytest
 import graphkin
 
 HERE = pathlib.Path(__file__).resolve().parent
-BENCH = pathlib.Path("/work/shared/spec/bench_fourbar.toml")
+BENCH = pathlib.Path(__file__).resolve().parent / "bench_fourbar.toml"
 
 
 def _closed_form():

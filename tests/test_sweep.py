@@ -24,7 +24,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from spec_data import SPEC
+from spec_data import BENCH
 from strategies import RandomMechanism, mechanisms
 
 import graphkin
@@ -43,7 +43,7 @@ from graphkin.kinematics.sweep import (
 )
 
 ROOT = Path(__file__).resolve().parents[1]
-BENCH = SPEC / "bench_fourbar.toml"
+
 REL = 1e-9  # sweeps and single postures evaluate the same steps: they agree to rounding
 
 FOURBAR = """
@@ -80,8 +80,6 @@ def _fourbar(d: float, a: float, b: float, c: float, angle: float = 60.0,
 
 @pytest.fixture(scope="module")
 def bench() -> graphkin.Mechanism:
-    if not BENCH.exists():
-        pytest.skip("the shared spec is not beside this checkout")
     return graphkin.load(BENCH)
 
 
@@ -601,8 +599,11 @@ def test_extra_columns(bench: graphkin.Mechanism) -> None:
         # B turns about A at a constant radius 4: its path's radius of curvature is 4
         np.testing.assert_allclose(cols["rho_B"], 4.0, rtol=1e-9)
         np.testing.assert_allclose(cols["cx_B"], 0.0, atol=1e-9)
-        # C swings about D on radius 11
-        np.testing.assert_allclose(cols["rho_C"], 11.0, rtol=1e-9)
+        # C swings about D on radius 11.  Its radius comes through Euler-Savary from
+        # link 3's inflection circle, whose diameter reaches 1.3e6 in (1e5 times the
+        # crank) at one of these postures: round-off grows with that ratio (6e-10 on
+        # one machine, 1.3e-9 on another), so 1e-6 -- a wrong construction is off by O(1)
+        np.testing.assert_allclose(cols["rho_C"], 11.0, rtol=1e-6)
 
 
 def test_importing_the_sweep_does_not_import_matplotlib() -> None:

@@ -22,6 +22,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
+from graphkin.render.results import AGREE, ROUND_OFF, diff_text
 from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import TABLE_ROW, Sheet, build_sheet
 from graphkin.render.sources import DIAGRAMS, as_source, optional_modules
@@ -325,7 +326,7 @@ def _table(fig: Figure, sheet: Sheet) -> None:
     missing = False
     for r in sheet.rows:
         yy -= TABLE_ROW
-        cells = (r.quantity, r.drawn, r.exact, _diff_text(r.diff), r.unit)
+        cells = (r.quantity, r.drawn, r.exact, diff_text(r.diff), r.unit)
         row = text(0.08, yy, _row(cells, widths), "table", f"row-{r.key}")
         if r.diff is None:
             missing = True
@@ -337,8 +338,10 @@ def _table(fig: Figure, sheet: Sheet) -> None:
     if missing and all(not r.exact.strip("—") for r in sheet.rows):
         foot = "The analytic solver gave no answer here."
     else:
-        foot = (f"Largest relative difference {worst:.1e}: the drawing agrees with the "
-                "analytic solution." if worst < 1e-6 else
+        foot = ("The drawing agrees with the analytic solution to round-off "
+                f"(relative differences below {ROUND_OFF:.0e})." if worst < ROUND_OFF else
+                f"Largest relative difference {worst:.1e}: the drawing agrees with the "
+                "analytic solution." if worst < AGREE else
                 f"Largest relative difference {worst:.1e}.")
     texts.append(text(0.08, yy, foot, "table", "results-agreement"))
     sg = StepGroup("results-table", texts, 3.0)
@@ -347,11 +350,6 @@ def _table(fig: Figure, sheet: Sheet) -> None:
     ax.add_artist(sg)
 
 
-def _diff_text(diff: float | None) -> str:
-    """A relative difference as printed in the table."""
-    if diff is None:
-        return "—"
-    return "0" if diff == 0 else f"{diff:.1e}"
 
 
 def _column_widths(sheet: Sheet) -> tuple[int, ...]:

@@ -27,10 +27,30 @@ from graphkin.render.scale import fmt, fmt_angle
 from graphkin.render.scene import finite_xy, sub_digits
 from graphkin.render.sources import Source
 
-__all__ = ["Row", "result_rows", "analytic_solution", "AGREE"]
+__all__ = ["Row", "result_rows", "analytic_solution", "AGREE", "ROUND_OFF", "diff_text"]
 
 AGREE = 1e-6
 """Relative difference below which a value is marked as agreeing (✓)."""
+
+ROUND_OFF = 1e-9
+"""Relative differences below this are floating-point round-off and print as 0.
+
+The construction and the analytic solver reach the same number by different
+arithmetic; their last bits differ from one machine (BLAS, libm, CPU) to
+another.  Printing that round-off would make a drawing differ between
+machines, so the tables print it as 0.
+"""
+
+
+def diff_text(diff: float | None) -> str:
+    """A relative difference as printed in a results table (round-off as ``0``).
+
+    >>> diff_text(5.8e-13), diff_text(2.5e-4), diff_text(None)
+    ('0', '2.5e-04', '—')
+    """
+    if diff is None:
+        return "—"
+    return "0" if diff < ROUND_OFF else f"{diff:.1e}"
 
 
 @dataclass(frozen=True)

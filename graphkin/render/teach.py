@@ -312,7 +312,7 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
 
 def _results_html(src: Any, diagram: str) -> str:
     """The results table (drawn and analytic values) after the last step."""
-    from graphkin.render.results import result_rows
+    from graphkin.render.results import diff_text, result_rows
 
     if src.solution is None:
         return ""
@@ -322,7 +322,7 @@ def _results_html(src: Any, diagram: str) -> str:
     cells = "".join(
         f"<tr><td>{html.escape(r.quantity)}</td><td>{html.escape(r.drawn)}</td>"
         f"<td>{html.escape(r.exact)}</td>"
-        f"<td>{'—' if r.diff is None else f'{r.diff:.1e}'}</td><td>{html.escape(r.unit)}</td>"
+        f"<td>{diff_text(r.diff)}</td><td>{html.escape(r.unit)}</td>"
         "</tr>" for r in rows)
     return ('<table class="results"><caption>Read off the construction, and the analytic '
             "solution</caption><tr><th>quantity</th><th>drawn</th><th>analytic</th>"

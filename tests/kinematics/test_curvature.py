@@ -25,8 +25,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
-from strategies import fourbars, mechanisms, slider_cranks
+from hypothesis import HealthCheck, assume, example, given, settings
+from strategies import RandomMechanism, fourbars, mechanisms, slider_cranks
 
 import graphkin
 from graphkin.errors import GraphkinError
@@ -233,6 +233,23 @@ class Around:
         """dκ/dφ of the body point with local coordinates loc (φ: the link's angle)."""
         return derivative([self.kappa_of(loc, j) for j in STEPS], self.h) / self.dphi
 
+    def dkappa_dphi_richardson(self, loc, data: dict):
+        """dκ/dφ by Richardson's extrapolation over steps h and h/2, and its error bound.
+
+        The five-point stencil's error is c h⁴ f⁽⁵⁾.  Near Ball's point of a
+        slowly turning coupler κ(φ) bends so sharply that this is of the order
+        of 1e-6/size at h = 1e-4 (two four-bars found by Hypothesis, ω₃/ω₂ =
+        -0.16 and -0.03: 2.0e-6 and 5.5e-6 at h = 1e-4, 80 times more at 3e-4,
+        the ratio 3⁴ of pure truncation, and round-off taking over below 3e-5).
+        (16 D(h/2) - D(h))/15 cancels the h⁴ term; |D(h) - D(h/2)| bounds what
+        is left.  A wrong Ball's point is not hidden by it: moving the point by
+        1e-6 of the mechanism's size changes dκ/dφ·size by 1 to 15 there.
+        """
+        if not hasattr(self, "_half"):
+            self._half = Around(data, self.sols[0], self.lid, h=self.h / 2)
+        coarse, fine = self.dkappa_dphi(loc), self._half.dkappa_dphi(loc)
+        return (16 * fine - coarse) / 15, abs(fine - coarse)
+
 
 def load_data(path: Path) -> dict:
     with open(path, "rb") as fh:
@@ -351,8 +368,31 @@ def _cubic_points(k, size):
     return out
 
 
+# found by Hypothesis on another machine: ω₃/ω₂ = -0.16, Ball's point 0.34 sizes from I with
+# the inflection diameter 110 sizes; the plain stencil at h = 1e-4 gave |dκ/dφ|·size = 2e-6
+BALL_FAR = RandomMechanism(
+    kind="fourbar",
+    data={"title": "random fourbar", "units": {"length": "mm"},
+          "links": {"1": {"O2": [0.0, 0.0], "O4": [0.19312040518988316, -0.7218543337926775]},
+                    "2": {"A": [-0.20028590388673342, -0.14961803602598914],
+                          "O2": [0.20028590388673342, 0.14961803602598914]},
+                    "3": {"A": [-0.5, 0.0], "B": [1.0, 0.0], "E": [-0.5, 0.0]},
+                    "4": {"B": [0.453153893518325, 0.21130913087034958],
+                          "O4": [-0.453153893518325, -0.21130913087034964]}},
+          "drive": {"link": 2, "angle": 0.0, "omega": "1.0 rad/s cw"},
+          "assembly": {"A": [-0.40057180777346685, -0.2992360720519783],
+                       "B": [1.0994281922265332, -0.2992360720519783],
+                       "E": [-0.40057180777346685, -0.2992360720519783]}},
+    truth={"2": (-0.20028590388673342, -0.14961803602598914, 0.0),
+           "3": (0.0994281922265332, -0.2992360720519783, 0.0),
+           "4": (0.6462742987082082, -0.5105452029223279, 0.0)},
+    omega={"2": -1.0, "3": 0.16076134640539858, "4": 0.7080528674257266},
+)
+
+
 @FD
 @given(fourbars(other_rates=False))
+@example(BALL_FAR)
 def test_cubic_and_ball_point_have_stationary_curvature(rm):
     sol = graphkin.solve(rm.mechanism())
     k = link_curvature(sol, "3")
@@ -370,11 +410,13 @@ def test_cubic_and_ball_point_have_stationary_curvature(rm):
         if kap * size > 20:
             continue  # a tiny radius near I: its curvature varies too fast for the stencil
         # a generic point's |dκ/dφ| is of the order of |κ| + 1/size (see the test below)
-        assert abs(ar.dkappa_dphi(loc)) <= 1e-6 * (kap + 1 / size), p
+        rate, err = ar.dkappa_dphi_richardson(loc, rm.data)
+        assert abs(rate) <= 1e-6 * (kap + 1 / size) + err, p
     if ball is not None:
         loc = local_of(st, ball)
         assert abs(ar.kappa_of(loc, 0)) * size <= 1e-8  # an inflection point ...
-        assert abs(ar.dkappa_dphi(loc)) * size <= 1e-6  # ... of stationary curvature
+        rate, err = ar.dkappa_dphi_richardson(loc, rm.data)
+        assert abs(rate) * size <= 1e-6 + err * size  # ... of stationary curvature
 
 
 @FD
