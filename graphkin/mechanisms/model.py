@@ -216,6 +216,8 @@ class Mechanism:
     title: str = ""
     length_unit: str = "mm"
     source: str = "<mechanism>"
+    line_points: frozenset[str] = frozenset()
+    """Point names the file uses to define a slider's, slot's or rolling surface's line."""
 
     @cached_property
     def moving(self) -> list[str]:
@@ -235,6 +237,35 @@ class Mechanism:
     def point_names(self) -> list[str]:
         """Every named point once, in file order."""
         return list(self.point_links)
+
+    @cached_property
+    def helper_points(self) -> frozenset[str]:
+        """Points that only define a line: drawn as the line or slot, not as points.
+
+        A helper point (``S``, ``T`` of a slider's line, ``S1``, ``S2`` of a
+        slot) is named in some ``line = [...]``, belongs to one link only (it is
+        no pin), is not the point that runs on a line, and has no assembly hint.
+        Drawings, results tables and teaching steps leave such points out.
+
+        Examples
+        --------
+        >>> import graphkin
+        >>> from graphkin.mechanisms import from_dict
+        >>> m = from_dict({"links": {
+        ...     "1": {"A": [0, 0], "S": [-10, 2], "T": [10, 2]},
+        ...     "2": {"A": [0, 0], "B": [3, 0]},
+        ...     "3": {"B": [0, 0], "C": [9, 0]},
+        ...     "4": {"C": [0, 0]}},
+        ...     "sliders": [{"link": 4, "on": 1, "point": "C", "line": ["S", "T"]}],
+        ...     "drive": {"link": 2, "angle": 30}, "assembly": {"C": [9, 2]}})
+        >>> sorted(m.helper_points)
+        ['S', 'T']
+        """
+        runners = {s.point for s in self.sliders} | {s.point for s in self.slots} \
+            | {r.center for r in self.rolling}
+        return frozenset(n for n in self.line_points
+                         if len(self.point_links.get(n, ())) == 1 and n not in runners
+                         and n not in self.assembly)
 
     @property
     def has_rates(self) -> bool:

@@ -78,6 +78,7 @@ class _Parser:
     def __init__(self, data: Mapping[str, Any], source: str) -> None:
         self.data = data
         self.source = source
+        self.line_names: set[str] = set()  # points named to define a slider's or slot's line
 
     def fail(self, key: str | None, message: str) -> InputError:
         return InputError(message, key=key, file=self.source)
@@ -121,6 +122,7 @@ class _Parser:
         for i, v in enumerate(value):
             if isinstance(v, str):
                 pts.append(self.links[link].points[self.point_of(link, v, f"{key}[{i}]")])
+                self.line_names.add(v)
             else:
                 pts.append(self.xy(v, f"{key}[{i}]"))
         (x0, y0), (x1, y1) = pts
@@ -241,7 +243,7 @@ class _Parser:
                          slots=tuple(slots), rolling=tuple(r for r, _ in rolling),
                          drives=tuple(drives), rates=rates,
                          assembly=assembly, title=title, length_unit=self.unit,
-                         source=self.source)
+                         source=self.source, line_points=frozenset(self.line_names))
         self.check_mobility(mech)
         return mech
 
