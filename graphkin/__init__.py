@@ -28,11 +28,11 @@ Examples
 ... C = [15, 10]
 ... ''')
 >>> sol = mech.solve()
->>> import math
->>> round(math.degrees(sol.angle("3")), 2)  # θ3 of Example 3.1: the book gives 20.92°
+>>> round(float(sol.angle("3")), 2)  # θ3 in degrees; Example 3.1: the book gives 20.92°
 20.92
 """
 
+from graphkin import examples
 from graphkin.construction import Construction, Step
 from graphkin.errors import (
     AssemblyError,
@@ -52,6 +52,7 @@ from graphkin.tolerance import DEFAULT_TOL, Tolerance
 __version__ = "0.1.0"
 
 __all__ = [
+    "examples",
     "load", "loads", "from_dict", "solve", "Mechanism", "Solution", "LinkState",
     "Construction", "Step", "Tolerance", "DEFAULT_TOL", "GraphkinError", "InputError",
     "ConstructionError", "NoIntersectionError", "ParallelDirectionsError", "DegenerateError",

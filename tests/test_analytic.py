@@ -252,7 +252,7 @@ def _value(sol: Solution, key: str) -> object:
     if group == "links":
         _, k, what = parts
         if what == "angle":
-            return math.degrees(float(sol.angle(k)))
+            return math.degrees(float(sol.angle_rad(k)))
         val = float(sol.omega(k) if what == "omega" else sol.alpha(k))
     elif group == "points":
         _, name, what = parts
@@ -327,13 +327,14 @@ def test_example_2_5_both_branches() -> None:
     th_s = math.atan2(s_vec[1], s_vec[0])
     psi = math.acos((350**2 + s**2 - 300**2) / (2 * 350 * s))
     lam = math.acos((300**2 + s**2 - 350**2) / (2 * 300 * s))
-    assert float(open_.angle("3")) == pytest.approx(th_s + psi, abs=1e-12)
-    assert float(crossed.angle("3")) == pytest.approx(th_s - psi, abs=1e-12)
-    assert float(open_.angle("4")) == pytest.approx(th_s + math.pi - lam, abs=1e-12)
-    assert _wrap(float(crossed.angle("4")) - (th_s - math.pi + lam)) == pytest.approx(0, abs=1e-12)
+    assert float(open_.angle_rad("3")) == pytest.approx(th_s + psi, abs=1e-12)
+    assert float(crossed.angle_rad("3")) == pytest.approx(th_s - psi, abs=1e-12)
+    assert float(open_.angle_rad("4")) == pytest.approx(th_s + math.pi - lam, abs=1e-12)
+    th4 = float(crossed.angle_rad("4"))
+    assert _wrap(th4 - (th_s - math.pi + lam)) == pytest.approx(0, abs=1e-12)
     # Newton from the crossed posture stays on the crossed branch
     again = solve_analytic(load(EXAMPLES / "ex2_5_open.toml"), guess=_guess(crossed))
-    assert float(again.angle("3")) == pytest.approx(th_s - psi, abs=1e-12)
+    assert float(again.angle_rad("3")) == pytest.approx(th_s - psi, abs=1e-12)
 
 
 # ---------------------------------------------------------------------------
@@ -504,13 +505,13 @@ def test_rolling_roller_example_4_8() -> None:
     w3, a3 = -10.0, -25.0 - 500.0 / b
     a = -52.5 + 2.9 * a3
     sol = solve_analytic(load(ROLLER))
-    assert float(sol.angle("3")) == pytest.approx(0.0, abs=1e-8)
+    assert float(sol.angle_rad("3")) == pytest.approx(0.0, abs=1e-8)
     assert float(sol.omega("3")) == pytest.approx(w3, rel=1e-7)
     assert float(sol.alpha("3")) == pytest.approx(a3, rel=1e-7)
     assert float(sol.omega("4")) == pytest.approx(w3 + 50.0 / 1.5, rel=1e-7)
     assert float(sol.alpha("4")) == pytest.approx(a3 - a / 1.5, rel=1e-7)
     assert float(sol.alpha("4")) == pytest.approx(276.15, abs=0.01)
-    assert float(sol.angle("4")) == 0.0  # the file's angle (default 0) at the file's drive
+    assert float(sol.angle_rad("4")) == 0.0  # the file's angle (default 0) at the file's drive
 
 
 def _flipped(path: Path) -> Mechanism:
@@ -597,7 +598,7 @@ def test_rolling_sweep_keeps_the_wheel_rolling() -> None:
     assert sw.valid.all()
     g = sw.position("G")
     np.testing.assert_allclose(g[:, 1], 100.0, atol=1e-9)
-    np.testing.assert_allclose(np.remainder(sw.angle("4") + (g[:, 0] - 200.0) / 100.0
+    np.testing.assert_allclose(np.remainder(sw.angle_rad("4") + (g[:, 0] - 200.0) / 100.0
                                             + math.pi, 2 * math.pi) - math.pi, 0.0, atol=1e-9)
     ab = np.hypot(*(sw.position("B") - sw.position("A")).T)
     np.testing.assert_allclose(ab, 200.0, atol=1e-9)
@@ -679,7 +680,7 @@ def test_planet_on_a_fixed_sun_or_ring(path: Path, big: float, kappa: float) -> 
     d_hat = np.array([math.cos(TH2), math.sin(TH2)])
     np.testing.assert_allclose(sol.position("P"), 60.0 * d_hat, atol=1e-12)
     w3, a3 = 3.0 * kappa * W2, 3.0 * kappa * A2
-    assert float(sol.angle("3")) == pytest.approx(0.0, abs=1e-12)  # the file's angle
+    assert float(sol.angle_rad("3")) == pytest.approx(0.0, abs=1e-12)  # the file's angle
     assert float(sol.omega("3")) == pytest.approx(w3, rel=1e-12)
     assert float(sol.alpha("3")) == pytest.approx(a3, rel=1e-12)
     assert w3 == pytest.approx(kappa * (big + kappa * r) / r * W2, rel=1e-15)
@@ -782,7 +783,7 @@ def test_planet_sweep_turns_continuously_with_a_fractional_ratio(path: Path,
     sw = solve_analytic_many(mech, th)
     assert sw.valid.all()
     want = kappa * 3.5 * (th - TH2)
-    err = np.remainder(sw.angle("3") - want + math.pi, 2 * math.pi) - math.pi
+    err = np.remainder(sw.angle_rad("3") - want + math.pi, 2 * math.pi) - math.pi
     np.testing.assert_allclose(err, 0.0, atol=1e-9)
     np.testing.assert_allclose(sw.omega("3"), kappa * 3.5 * W2, rtol=1e-12)
     np.testing.assert_allclose(sw.alpha("3"), kappa * 3.5 * A2, rtol=1e-12)
@@ -790,8 +791,8 @@ def test_planet_sweep_turns_continuously_with_a_fractional_ratio(path: Path,
     # (the short way round: here 154° on, so the line of centers passes ±180° on the way)
     part = solve_analytic_many(mech, th[22:27])
     assert part.valid.all()
-    np.testing.assert_allclose(np.remainder(part.angle("3") - sw.angle("3")[22:27] + math.pi,
-                                            2 * math.pi) - math.pi, 0.0, atol=1e-9)
+    d3 = part.angle_rad("3") - sw.angle_rad("3")[22:27]
+    np.testing.assert_allclose(np.remainder(d3 + math.pi, 2 * math.pi) - math.pi, 0.0, atol=1e-9)
 
 
 def _graphic(mech: Mechanism) -> Solution:

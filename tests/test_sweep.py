@@ -119,7 +119,7 @@ def _compare_with_solve(sw, data: dict, i: int, rel: float = REL) -> None:
         if kind == "drive":
             continue
         if kind == "angle":
-            ref = math.degrees(float(sol.angle(name)))
+            ref = math.degrees(float(sol.angle_rad(name)))
             assert abs(math.remainder(got - ref, 360.0)) <= rel * 360, (key, i, got, ref)
         elif kind in ("omega", "alpha"):
             ref = float(getattr(sol, kind)(name))
@@ -258,7 +258,7 @@ def test_sweep_agrees_with_the_analytic_solver(bench: graphkin.Mechanism,
                            float(sol.links[lid].angle[i])) for lid in mech.moving}
             ref = solve_analytic(m2, guess=guess)
             for lid in mech.moving:
-                a = math.degrees(float(ref.angle(lid)))
+                a = math.degrees(float(ref.angle_rad(lid)))
                 assert abs(math.remainder(sw.columns[f"angle_{lid}"][i] - a, 360)) < 1e-9
                 for kind in ("omega", "alpha"):
                     r = float(getattr(ref, kind)(lid))

@@ -172,7 +172,7 @@ class Evaluator:
         """
         sol, k, a = self.sol, key.kind, key.args
         if k == "theta":
-            return Exact(math.degrees(float(sol.angle(a[0]))))
+            return Exact(math.degrees(float(sol.angle_rad(a[0]))))
         if k == "omega":
             self._rates(key)
             return Exact(float(sol.omega(a[0])))

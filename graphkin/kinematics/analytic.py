@@ -1275,7 +1275,7 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
     ... ''')
     >>> sol = solve_analytic(mech)
     >>> import math
-    >>> round(math.degrees(float(sol.angle("3"))), 4), round(float(sol.omega("4")), 3)
+    >>> round(math.degrees(float(sol.angle_rad("3"))), 4), round(float(sol.omega("4")), 3)
     (20.9187, 49.501)
     """
     tol = tol or DEFAULT_TOL

@@ -154,20 +154,41 @@ class Solution:
 
         return draw(self, diagram, ax=ax, **kw)
 
-    def angle(self, link: str) -> np.ndarray:
-        """θ of ``link`` (rad)."""
-        return self.links[link].angle
+    def _link(self, link: str | int) -> LinkState:
+        """The state of ``link`` (an id as in the file: ``"3"`` or ``3``)."""
+        lid = str(link)
+        try:
+            return self.links[lid]
+        except KeyError:
+            from graphkin.errors import InputError
 
-    def omega(self, link: str) -> np.ndarray:
+            raise InputError(f"no link {lid!r} (links: {', '.join(self.links)})",
+                             key=lid) from None
+
+    def angle(self, link: str | int) -> np.ndarray:
+        """θ of ``link`` in degrees, counterclockwise from +x (:meth:`angle_rad` in radians).
+
+        >>> import graphkin
+        >>> sol = graphkin.examples.fourbar().solve()
+        >>> round(float(sol.angle(3)), 2)  # Example 3.1: the book gives 20.92°
+        20.92
+        """
+        return np.degrees(self._link(link).angle)
+
+    def angle_rad(self, link: str | int) -> np.ndarray:
+        """θ of ``link`` (rad)."""
+        return self._link(link).angle
+
+    def omega(self, link: str | int) -> np.ndarray:
         """ω of ``link`` (rad/s, counterclockwise positive)."""
-        w = self.links[link].omega
+        w = self._link(link).omega
         if w is None:
             raise ValueError("velocities are not known (the file gives no rates)")
         return w
 
-    def alpha(self, link: str) -> np.ndarray:
+    def alpha(self, link: str | int) -> np.ndarray:
         """α of ``link`` (rad/s², counterclockwise positive)."""
-        a = self.links[link].alpha
+        a = self._link(link).alpha
         if a is None:
             raise ValueError("accelerations are not known (the file gives no rates)")
         return a

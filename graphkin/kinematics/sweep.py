@@ -506,7 +506,7 @@ def _point_columns(sol: Solution, name: str, cols: dict[str, Array], rated: bool
 def _columns_of_solution(mech: Mechanism, sol: Solution, cols: dict[str, Array], n: int,
                          rated: bool) -> dict[str, Array]:
     for lid in mech.links:
-        cols[f"angle_{lid}"] = wrap_degrees(_full(sol.angle(lid), n))
+        cols[f"angle_{lid}"] = wrap_degrees(_full(sol.angle_rad(lid), n))
         if rated:
             cols[f"omega_{lid}"] = _full(sol.omega(lid), n)
             cols[f"alpha_{lid}"] = _full(sol.alpha(lid), n)

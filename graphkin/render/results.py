@@ -138,8 +138,8 @@ def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None)
             for lid in mech.moving:
                 lab = f"θ{lid}"
                 v = vals.get(lab)
-                th = float(v) if v is not None else float(sol.angle(lid))
-                e = None if exact is None else float(exact.angle(lid))
+                th = float(v) if v is not None else float(sol.angle_rad(lid))
+                e = None if exact is None else float(exact.angle_rad(lid))
                 diff = None if e is None else abs(math.remainder(th - e, 2 * math.pi))
                 rows.append(Row(f"theta{lid}", "θ" + sub_digits("x" + lid)[1:], "deg",
                                 f"{math.degrees(math.remainder(th, 2 * math.pi)):.4f}",

@@ -104,7 +104,7 @@ def test_svg_fitted_to_the_crank_and_flipped_image_named(fourbar: Path, tmp_path
 
     # E flipped about bc: the velocity of the mirror point E' = (10, +4) of link 3
     # (see test_textbook.test_velocity_image_flipped for the hand value 42.67 ft/s).
-    th3 = float(an.angle("3"))
+    th3 = float(an.angle_rad("3"))
     r = np.array([10 * math.cos(th3) - 4 * math.sin(th3), 10 * math.sin(th3) + 4 * math.cos(th3)])
     v_e_flipped = an.velocity("B") + float(an.omega("3")) * np.array([-r[1], r[0]])
     assert math.hypot(*v_e_flipped) / 12 == pytest.approx(42.67, rel=1e-3)

@@ -26,7 +26,7 @@ def test_stephenson_iii_driven_at_the_far_crank_is_solved_and_says_so(capsys):
             d_file = np.hypot(lq[0] - lp[0], lq[1] - lp[1])
             d = np.hypot(*(sol.position(q) - sol.position(p)))
             assert abs(d - d_file) <= 1e-9 * mech.scale
-    assert abs(float(sol.angle("6")) - np.radians(5.0)) <= 1e-12
+    assert abs(float(sol.angle_rad("6")) - np.radians(5.0)) <= 1e-12
     assert main(["solve", str(FILE), "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["method"] == "analytic" and out["notes"]
