@@ -30,7 +30,6 @@ from strategies import RandomMechanism, mechanisms
 import graphkin
 from graphkin.construction import Construction
 from graphkin.errors import InputError
-from graphkin.kinematics import sweep as sweep_mod
 from graphkin.kinematics.polygons import build_polygons
 from graphkin.kinematics.posture import build_posture
 from graphkin.kinematics.sweep import (
@@ -41,6 +40,7 @@ from graphkin.kinematics.sweep import (
     transmission_angle,
     wrap_degrees,
 )
+from graphkin.kinematics.sweep import run as sweep_run
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -518,7 +518,7 @@ def test_analytic_fallback_says_so_and_still_works() -> None:
 def test_long_sweeps_go_in_blocks_and_tell_progress(monkeypatch: pytest.MonkeyPatch,
                                                     bench: graphkin.Mechanism) -> None:
     whole = bench.sweep(count=40)
-    monkeypatch.setattr(sweep_mod, "BLOCK", 16)
+    monkeypatch.setattr(sweep_run, "BLOCK", 16)  # where sweep() reads it
     seen: list[float] = []
     parts = sweep(bench, count=40, progress=seen.append)
     assert seen == [16 / 40, 32 / 40, 1.0]

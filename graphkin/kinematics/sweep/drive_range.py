@@ -1,0 +1,89 @@
+"""The drive range of a sweep and the drive values where the mechanism stops assembling.
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
+Sec. 1.10 (dead-center postures), Sec. 2.8 (posture).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from graphkin.errors import AssemblyError
+from graphkin.kinematics.sweep.columns import _assembled_of
+from graphkin.kinematics.sweep.engine import _Engine
+
+Array = np.ndarray
+
+
+def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple[float, float,
+                                                                                 bool]:
+    """Start and stop as the user writes them (degrees or travel), and whether it is one turn."""
+    d = eng.drive
+    if d.kind == "angle":
+        # the file's angle as written (degrees), free of the round trip through radians
+        a = round(math.degrees(d.value), 10) if start is None else float(start)
+        b = a + 360.0 if stop is None else float(stop)
+        return a, b, math.isclose(abs(b - a), 360.0, rel_tol=1e-12)
+    if start is not None and stop is not None:
+        return float(start), float(stop), False
+    lo, hi = _travel(eng)
+    return (lo if start is None else float(start)), (hi if stop is None else float(stop)), False
+
+
+def _travel(eng: _Engine) -> tuple[float, float]:
+    """The travel of a slider drive over which the mechanism assembles, around the file's value.
+
+    Searched outward up to four times the size of the mechanism, then
+    refined by bisection.
+    """
+    d, mech = eng.drive, eng.mech
+    reach = 4.0 * mech.scale
+    ok = _assembles(eng)
+    out = []
+    for sign in (-1.0, 1.0):
+        xs = d.value + sign * reach * np.linspace(0.0, 1.0, 401)
+        good = ok(xs)
+        if not good[0]:
+            raise AssemblyError(f"cannot assemble at the file's travel {d.value:g}",
+                                key="drive", file=mech.source)
+        bad = np.flatnonzero(~good)
+        if bad.size == 0:
+            out.append(float(xs[-1]))
+            continue
+        k = int(bad[0])
+        lo, hi = _bisect(ok, np.array([xs[k - 1]]), np.array([xs[k]]))
+        out.append(float(lo[0]))
+    return min(out), max(out)
+
+
+def _assembles(eng: _Engine) -> Callable[[Array], Array]:
+    """Drive values (internal units) -> whether the posture assembles there."""
+    if eng.method == "analytic":
+        def ok_analytic(x: Array) -> Array:
+            blk = eng.solve(np.atleast_1d(np.asarray(x, dtype=float)))
+            return _assembled_of(blk)
+        return ok_analytic
+
+    def ok(x: Array) -> Array:
+        x = np.atleast_1d(np.asarray(x, dtype=float))
+        ev = eng.posture(x)
+        return np.broadcast_to(np.asarray(ev.valid), x.shape).copy()
+
+    return ok
+
+
+def _bisect(ok: Callable[[Array], Array], good: Array, bad: Array,
+            steps: int = 48) -> tuple[Array, Array]:
+    """Narrow pairs (good, bad) of drive values around the boundaries of ``ok``."""
+    good, bad = good.astype(float).copy(), bad.astype(float).copy()
+    for _ in range(steps):
+        mid = 0.5 * (good + bad)
+        m = ok(mid)
+        good = np.where(m, mid, good)
+        bad = np.where(m, bad, mid)
+    return good, bad

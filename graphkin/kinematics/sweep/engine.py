@@ -1,0 +1,264 @@
+"""The posture and polygon constructions of one mechanism, built once and replayed on arrays.
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
+Sec. 2.8 (posture), Secs. 3.4-3.6 and 4.2-4.6 (polygons), Sec. 5.4 (several inputs).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import weakref
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from graphkin.construction import Construction, Evaluation
+from graphkin.errors import AssemblyError, GraphkinError, InputError
+from graphkin.kinematics.polygons import Polygons, build_polygons
+from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
+from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import Drive, Mechanism
+from graphkin.tolerance import Tolerance
+
+Array = np.ndarray
+
+
+class _Engine:
+    """The posture and polygon constructions of a mechanism and how to evaluate them."""
+
+    def __init__(self, mech: Mechanism, tol: Tolerance) -> None:
+        if not mech.drives:
+            raise InputError("the mechanism has no drive to sweep", key="drive", file=mech.source)
+        self.mech = mech
+        self.tol = tol
+        self.drive: Drive = mech.drives[0]
+        self.method = "construction"
+        self.reason = ""
+        self.built_at: float | None = None
+        self.pc: PostureConstruction | None = None
+        self.pol: Polygons | None = None
+        self.combined: Construction | None = None
+        self.recipe: Any = False
+        self.const_rows: dict[tuple[str, int], float] = {}
+        if mech.rolling:
+            # away from the file's drive a roller's angle follows its travel (the no-slip
+            # condition integrated), which no ruler-and-compass step gives
+            self.method = "analytic"
+            self.reason = ("rolling contact: the roller's angle follows its travel over the "
+                           "sweep, so the analytic solver sweeps it")
+            return
+        try:
+            self.pc = self._build(mech, tol)
+        except NotDecomposable as exc:
+            self.method = "analytic"
+            self.reason = str(exc)
+            return
+        d = self.drive
+        self.label = f"θ{d.link}" if d.kind == "angle" else f"s{d.link}"
+        if self.label not in self.pc.inputs:  # pragma: no cover - the builder names them so
+            raise GraphkinError(f"the posture construction has no input {self.label!r}")
+        self.held = {k: v for k, v in self.pc.inputs.items() if k != self.label}
+        if mech.has_rates:
+            self.pol = build_polygons(mech, self.pc)
+            if mech.rates is None:
+                # posture, velocity and acceleration as one construction: one replay per block
+                cx = Construction(title=self.pc.construction.title)
+                cx.extend(self.pc.construction)
+                self.n_posture = len(cx)
+                cx.extend(self.pol.velocity)
+                cx.extend(self.pol.acceleration)
+                self.combined = cx
+                self.keep = self._keep()
+                self.rate_given: dict[str, float] = {}
+                for d in mech.drives:
+                    w, a = self.pol.rate_inputs[d.index]
+                    self.rate_given[w] = 0.0 if d.rate is None else d.rate
+                    self.rate_given[a] = 0.0 if d.rate2 is None else d.rate2
+
+    def _build(self, mech: Mechanism, tol: Tolerance) -> PostureConstruction:
+        """The posture construction, laid out at the file's drive if it assembles there.
+
+        Otherwise it is laid out at the first drive angle of the turn where it
+        can (its branches then follow the assembly hints at that posture).
+        """
+        try:
+            return build_posture(mech, tol)
+        except AssemblyError:
+            d = self.drive
+            if d.kind != "angle":
+                raise
+            for k in range(1, 360):
+                moved = dataclasses.replace(d, value=d.value + math.radians(k))
+                drives = tuple(moved if x is d else x for x in mech.drives)
+                try:
+                    pc = build_posture(dataclasses.replace(mech, drives=drives), tol)
+                except AssemblyError:
+                    continue
+                self.built_at = moved.value
+                return pc
+            raise
+
+    def _keep(self) -> frozenset[str]:
+        """The labels a sweep reads: named points, anchors, angles, rates and their images."""
+        assert self.pc is not None
+        mech, pc, pol = self.mech, self.pc, self.pol
+        keep = set(mech.point_names) | set(pc.angles.values()) | set(pc.inputs)
+        keep |= {a for a, _ in pc.anchors.values()}
+        for pin, c1, c2 in _dyads(pc):
+            keep |= {pin, c1, c2}
+        if pol is not None:
+            for lab in list(keep):
+                for images in (pol.velocity_images, pol.acceleration_images):
+                    if lab in images:
+                        keep.add(images[lab])
+            keep |= {f"ω{lid}" for lid in mech.links} | {f"α{lid}" for lid in mech.links}
+            for w, a in pol.rate_inputs.values():
+                keep |= {w, a}
+        return frozenset(keep)
+
+    # ---- evaluation -------------------------------------------------
+    def posture(self, dv: Array) -> Evaluation:
+        """The posture construction at the drive values ``dv`` (internal units)."""
+        assert self.pc is not None
+        given: dict[str, Any] = dict(self.held)
+        given[self.label] = dv
+        return self.pc.construction.evaluate(given, tol=self.tol, strict=False)
+
+    def rates(self, ev: Evaluation, unit: bool = False) -> tuple[Evaluation, Evaluation]:
+        """The velocity and acceleration constructions on an evaluated posture.
+
+        With ``unit``, the swept drive turns at unit speed and every other
+        input is at rest: the velocities are the first-order kinematic
+        coefficients (Sec. 3.11).
+        """
+        assert self.pol is not None and self.pc is not None
+        pol, mech = self.pol, self.mech
+        vin: dict[str, Any] = {}
+        ain: dict[str, Any] = {}
+        for d in mech.drives:
+            w, a = pol.rate_inputs[d.index]
+            if unit:
+                vin[w] = 1.0 if d is self.drive else 0.0
+                ain[a] = 0.0
+            else:
+                vin[w] = 0.0 if d.rate is None else d.rate
+                ain[a] = 0.0 if d.rate2 is None else d.rate2
+        if mech.rates is not None and not unit:
+            return self._scaled_rates(ev, vin, ain)
+        evv = pol.velocity.evaluate(vin, values=ev.values, tol=self.tol, strict=False)
+        eva = pol.acceleration.evaluate(ain, values=evv.values, tol=self.tol, strict=False)
+        return evv, eva
+
+    def _scaled_rates(self, ev: Evaluation, vin: dict[str, Any],
+                      ain: dict[str, Any]) -> tuple[Evaluation, Evaluation]:
+        """``[rates]`` of another link: the input's rates found posture by posture.
+
+        The polygons are linear in the input speed and affine in the input
+        acceleration (superposition, Sec. 5.4), as in
+        :func:`graphkin.kinematics.solve.rate_inputs`, but with the ratio of
+        every posture.
+        """
+        assert self.pol is not None
+        pol, mech, tol = self.pol, self.mech, self.tol
+        target = mech.rates
+        assert target is not None
+        if target.kind != "angle":
+            raise InputError("[rates] of a slider are not supported yet; give the drive's rate",
+                             key="rates", file=mech.source)
+        (d,) = mech.drives
+        w, a = pol.rate_inputs[d.index]
+        k = np.asarray(pol.velocity.evaluate({w: 1.0}, values=ev.values, tol=tol,
+                                             strict=False)[f"ω{target.link}"])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            vin[w] = np.where(k == 0.0, np.nan, (target.rate or 0.0) / np.where(k == 0.0, 1.0, k))
+        evv = pol.velocity.evaluate(vin, values=ev.values, tol=tol, strict=False)
+        a0 = np.asarray(pol.acceleration.evaluate({a: 0.0}, values=evv.values, tol=tol,
+                                                  strict=False)[f"α{target.link}"])
+        a1 = np.asarray(pol.acceleration.evaluate({a: 1.0}, values=evv.values, tol=tol,
+                                                  strict=False)[f"α{target.link}"])
+        want = 0.0 if target.rate2 is None else target.rate2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ain[a] = (want - a0) / (a1 - a0)
+        eva = pol.acceleration.evaluate(ain, values=evv.values, tol=tol, strict=False)
+        return evv, eva
+
+    def solve(self, dv: Array) -> _Block:
+        """Everything at the drive values ``dv``: one block of a sweep."""
+        if self.method == "analytic":
+            return self._analytic(dv)
+        if self.combined is not None:
+            given: dict[str, Any] = dict(self.held)
+            given.update(self.rate_given)
+            given[self.label] = dv
+            ev = self.combined.evaluate_for(self.keep, given, tol=self.tol, strict=False)
+            fa = ev.failed_at
+            assembled = None
+            if fa is not None:
+                assembled = ~((fa >= 0) & (fa < self.n_posture))
+            return _Block(dv, ev, ev, ev, assembled=assembled)
+        ev = self.posture(dv)
+        if self.pol is None:
+            return _Block(dv, ev, None, None)
+        evv, eva = self.rates(ev)
+        return _Block(dv, ev, evv, eva)
+
+    def _analytic(self, dv: Array) -> _Block:
+        from graphkin.kinematics.analytic import solve_analytic_many
+
+        mech = self.mech
+        full = np.empty((len(dv), len(mech.drives)))
+        for i, d in enumerate(mech.drives):
+            full[:, i] = dv if i == 0 else d.value
+        sol = solve_analytic_many(mech, full, tol=self.tol)
+        return _Block(dv, None, None, None, sol)
+
+
+@dataclass
+class _Block:
+    dv: Array
+    ev: Evaluation | None
+    evv: Evaluation | None
+    eva: Evaluation | None
+    analytic: Solution | None = None
+    assembled: Array | None = None
+    user: Array | None = None
+
+
+_ENGINES: dict[int, tuple[weakref.ref[Mechanism], Tolerance, _Engine]] = {}
+
+
+def _engine(mech: Mechanism, tol: Tolerance) -> _Engine:
+    """The engine of ``mech``, built once per mechanism object and tolerance."""
+    key = id(mech)
+    hit = _ENGINES.get(key)
+    if hit is not None and hit[0]() is mech and hit[1] == tol:
+        return hit[2]
+    eng = _Engine(mech, tol)
+    if len(_ENGINES) > 64:
+        for k in [k for k, v in _ENGINES.items() if v[0]() is None]:
+            del _ENGINES[k]
+    _ENGINES[key] = (weakref.ref(mech), tol, eng)
+    return eng
+
+
+def _dyads(pc: PostureConstruction) -> list[tuple[str, str, str]]:
+    """(pin, first center, second center) of every case-4 group of two arcs."""
+    cx = pc.construction
+    out = []
+    for s in cx.steps:
+        if s.op != "intersect_circles" or s.label not in pc.branches:
+            continue
+        centers = []
+        for k in s.inputs:
+            src = cx.step_of(k)
+            if src.op != "circle":
+                break
+            centers.append(src.inputs[0])
+        else:
+            if not s.label.count(":"):
+                out.append((s.outputs[0], centers[0], centers[1]))
+    return out

@@ -1,0 +1,179 @@
+"""The result of a sweep: its columns, its report lines and its CSV.
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
+Secs. 2.8, 3.4-3.6, 4.2-4.6.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import IO, Any
+
+import numpy as np
+
+from graphkin.kinematics.solution import Solution
+from graphkin.kinematics.sweep.columns import _concat_solutions, _solution_of_block
+from graphkin.kinematics.sweep.engine import _Block, _Engine
+from graphkin.kinematics.sweep.singular import SingularPosture, _singular
+from graphkin.mechanisms.model import Drive, Mechanism
+
+Array = np.ndarray
+
+
+@dataclass
+class Sweep:
+    """A mechanism solved over many drive values at once.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    drive : Drive
+        The swept drive (the first one; the others are held at the file's values).
+    values : ndarray, shape (N,)
+        The drive values: radians for an angle, the file's length unit for a slider.
+    columns : dict
+        CSV column name (``spec/sweep.md``) -> 1-D array of length N; NaN
+        where the posture cannot be assembled (and, for the rates only,
+        where they are not defined).
+    valid : ndarray of bool
+        Postures that assemble and whose rates are finite.
+    assembled : ndarray of bool
+        Postures that assemble.
+    method : str
+        ``"construction"``, or ``"analytic"`` when the mechanism cannot be solved
+        one group at a time (``notes`` says why).
+    notes : list of str
+    branches : dict
+        Step label -> the branch kept through the sweep.
+
+    Notes
+    -----
+    ``solution`` (the sweep as a :class:`Solution`), ``singular`` (ranges,
+    dead centers, limit positions) and ``unassembled`` are computed when first
+    asked for.  The evaluated constructions keep only the values the sweep
+    reports (named points, link angles, rates and their images).
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Secs. 2.8, 3.4-3.6, 4.2-4.6.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... D = [10, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [4, 0]
+    ... [links.3]
+    ... B = [0, 0]
+    ... C = [12, 0]
+    ... [links.4]
+    ... D = [0, 0]
+    ... C = [11, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 120
+    ... omega = 10
+    ... [assembly]
+    ... C = [9, 11]
+    ... ''')
+    >>> sw = mech.sweep(count=8)
+    >>> sw.columns["drive"]
+    array([120., 165., 210., 255., 300., 345., 390., 435.])
+    >>> bool(sw.valid.all()), list(sw.columns)[:5]
+    (True, ['drive', 'angle_1', 'omega_1', 'alpha_1', 'angle_2'])
+    """
+
+    mechanism: Mechanism
+    drive: Drive
+    values: Array
+    columns: dict[str, Array]
+    valid: Array
+    assembled: Array
+    method: str = "construction"
+    notes: list[str] = field(default_factory=list)
+    branches: dict[str, str] = field(default_factory=dict)
+    _engine: _Engine | None = field(default=None, repr=False, compare=False)
+    _blocks: list[_Block] = field(default_factory=list, repr=False, compare=False)
+    _cyclic: bool = field(default=False, repr=False, compare=False)
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    @property
+    def drive_values(self) -> Array:
+        """The drive values as written in the CSV: degrees, or the slider's travel."""
+        return self.columns["drive"]
+
+    @cached_property
+    def solution(self) -> Solution:
+        """The sweep as a :class:`Solution` whose arrays have the leading shape (N,)."""
+        assert self._engine is not None
+        sols = [_solution_of_block(self._engine, b) for b in self._blocks]
+        if len(sols) == 1:
+            return sols[0]
+        return _concat_solutions(sols)
+
+    @cached_property
+    def singular(self) -> list[SingularPosture]:
+        """Ranges that cannot be assembled, dead centers and limit positions, in drive order.
+
+        Boundaries are refined by bisection on the drive (to well below 0.01°).
+        """
+        return _singular(self)
+
+    @property
+    def unassembled(self) -> list[tuple[float, float]]:
+        """Drive ranges (degrees or travel) where the mechanism cannot be assembled."""
+        return [(s.drive, s.end if s.end is not None else s.drive) for s in self.singular
+                if s.kind == "cannot-assemble"]
+
+    def report(self, events: bool = False) -> list[str]:
+        """Lines for standard error: notes, unassemblable ranges (and, with ``events``, the rest).
+
+        Dead centers inside an assembled range (a change point, where the
+        named branch may stop being the continuous one) are always reported.
+        """
+        out = list(self.notes)
+        for s in self.singular:
+            if s.kind == "cannot-assemble" or events:
+                out.append(s.note)
+            elif s.change_point:
+                out.append(s.note)
+        return out
+
+    def to_csv(self, file: str | IO[str]) -> None:
+        """Write the columns as CSV: one row per posture; empty cells where not defined."""
+        if isinstance(file, str):
+            with open(file, "w", newline="", encoding="utf-8") as fh:
+                self._write(fh)
+        else:
+            self._write(file)
+
+    def csv_text(self) -> str:
+        """The CSV as a string."""
+        buf = io.StringIO()
+        self._write(buf)
+        return buf.getvalue()
+
+    def _write(self, fh: IO[str]) -> None:
+        w = csv.writer(fh, lineterminator="\n")
+        names = list(self.columns)
+        w.writerow(names)
+        cols = []
+        for name in names:
+            c = np.asarray(self.columns[name], dtype=float)
+            lst: list[Any] = c.tolist()
+            if not np.isfinite(c).all():
+                lst = ["" if not math.isfinite(v) else v for v in lst]
+            cols.append(lst)
+        w.writerows(zip(*cols))

@@ -1,0 +1,193 @@
+"""``sweep``: a mechanism solved over many drive values at once, in blocks.
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
+Sec. 2.8 (posture), Secs. 3.4-3.6 and 4.2-4.6 (polygons), Sec. 1.10 (transmission angle).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from graphkin.errors import InputError
+from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
+from graphkin.kinematics.sweep.drive_range import _drive_range
+from graphkin.kinematics.sweep.engine import _Block, _engine
+from graphkin.kinematics.sweep.extra_columns import (
+    _center_columns,
+    _curvature_columns,
+    _transmission_columns,
+)
+from graphkin.kinematics.sweep.report import Sweep
+from graphkin.mechanisms.model import Mechanism
+from graphkin.tolerance import DEFAULT_TOL, Tolerance
+
+Array = np.ndarray
+
+
+#: Sweeps longer than this are evaluated in blocks (so a progress callback can be told).
+BLOCK = 100_000
+
+
+def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
+          stop: float | None = None, *, tol: Tolerance | None = None,
+          transmission: bool = False, centers: bool = False, curvature: bool = False,
+          progress: Callable[[float], None] | None = None) -> Sweep:
+    """Solve a mechanism over ``count`` values of its (first) drive, all at once.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    count : int
+        Number of postures.
+    start, stop : float, optional
+        The drive range, as ``--from``/``--to`` of ``graphkin sweep``: degrees
+        for a revolute drive, the travel in the file's length unit for a slider.
+        Defaults: from the file's drive angle through one full turn (``stop``
+        excluded); for a slider, the travel over which the mechanism assembles
+        around the file's position.  The drive values are
+        ``start + (stop - start) k / count``, ``k = 0 .. count - 1``.
+    tol : Tolerance, optional
+    transmission : bool
+        Add ``transmission_<P>`` columns: the transmission angle (degrees,
+        0-180) at each pin found by two arcs (case 4), between the two links'
+        lines to their centers (Sec. 1.10).
+    centers : bool
+        Add the instant centers: ``x_I<i><j>``, ``y_I<i><j>`` (empty at
+        infinity) and, for a center that goes to infinity, its direction
+        ``dx_I<i><j>``, ``dy_I<i><j>`` (when :mod:`graphkin.kinematics.instant_centers`
+        is installed).
+    curvature : bool
+        Add the radius and center of curvature of every moving point's path,
+        ``rho_<P>``, ``cx_<P>``, ``cy_<P>`` (Eq. 4.49), and every moving link's
+        inflection pole and inflection-circle diameter, ``jx_<k>``, ``jy_<k>``,
+        ``inflection_diameter_<k>`` (Sec. 4.15), when the file gives rates.
+    progress : callable, optional
+        Called with the fraction done, for long sweeps (evaluated in blocks of
+        :data:`BLOCK` postures).
+
+    Returns
+    -------
+    Sweep
+
+    Raises
+    ------
+    InputError
+        A count below 1, or no drive.
+    AssemblyError
+        The mechanism cannot be assembled at the file's posture (where the
+        branches are chosen).
+
+    Notes
+    -----
+    The constructions are built once per mechanism (branches chosen at the
+    file's posture by the assembly hints) and evaluated on whole arrays; the
+    named branches are kept through the sweep (see the module notes on
+    continuity).  With several drives the first is swept and the others are
+    held at the file's values (their rates, if given, apply throughout).
+    Mechanisms that cannot be solved one group at a time are solved by
+    :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
+    each posture from the one before), and ``method`` and ``notes`` say so.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (posture), Secs. 3.4-3.6 and
+    4.2-4.6 (polygons), Sec. 1.10 (transmission angle).
+
+    Examples
+    --------
+    A crank-rocker (crank 4, coupler 12, rocker 11, frame 10) through one turn
+    of its crank at 10 rad/s:
+
+    >>> import graphkin
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... D = [10, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [4, 0]
+    ... [links.3]
+    ... B = [0, 0]
+    ... C = [12, 0]
+    ... [links.4]
+    ... D = [0, 0]
+    ... C = [11, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 0
+    ... omega = 10
+    ... [assembly]
+    ... C = [9, 11]
+    ... ''')
+    >>> sw = sweep(mech, count=3600)
+    >>> sw.columns["omega_3"].shape
+    (3600,)
+    >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((6² + 11² - 12²)/(2·6·11))
+    95.6519
+    """
+    if int(count) != count or count < 1:
+        raise InputError(f"the number of postures must be a whole number of at least 1, not "
+                         f"{count!r}", key="count", file=mech.source)
+    count = int(count)
+    tol = tol or DEFAULT_TOL
+    eng = _engine(mech, tol)
+    a, b, cyclic = _drive_range(eng, start, stop)
+    user = a + (b - a) * (np.arange(count, dtype=float) / count)
+    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    blocks: list[_Block] = []
+    if count <= BLOCK:
+        blk = eng.solve(dv)
+        blk.user = user
+        blocks.append(blk)
+        cols = _columns(eng, blk)
+    else:
+        parts = []
+        for i in range(0, count, BLOCK):
+            blk = eng.solve(dv[i:i + BLOCK])
+            blk.user = user[i:i + BLOCK]
+            blocks.append(blk)
+            parts.append(_columns(eng, blk))
+            if progress is not None:
+                progress(min(1.0, (i + BLOCK) / count))
+        cols = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    if len(blocks) == 1:
+        valid, assembled = _valid_of(blocks[0]), _assembled_of(blocks[0])
+    else:
+        valid = np.concatenate([_valid_of(blk) for blk in blocks])
+        assembled = np.concatenate([_assembled_of(blk) for blk in blocks])
+    notes: list[str] = []
+    if eng.built_at is not None:
+        notes.append(f"the file's drive cannot be assembled; the constructions were laid out "
+                     f"at {math.degrees(eng.built_at):.2f}° (branches by the assembly hints there)")
+    if eng.method == "analytic":
+        notes.append("solved by the analytic solver (Newton-Raphson, each posture from the one "
+                     f"before): {eng.reason}")
+    if not valid.all():
+        _blank(cols, assembled, valid)
+    sw = Sweep(mech, eng.drive, dv, cols, valid, assembled, eng.method, notes,
+               dict(eng.pc.branches) if eng.pc is not None else {}, eng, blocks, cyclic)
+    if transmission:
+        sw.columns.update(_transmission_columns(sw))
+    if centers:
+        sw.columns.update(_center_columns(sw))
+    if curvature:
+        sw.columns.update(_curvature_columns(sw))
+    return sw
+
+
+def _blank(cols: dict[str, Array], assembled: Array, valid: Array) -> None:
+    """NaN where a posture cannot be assembled (every column but the drive)."""
+    for k, c in cols.items():
+        if k == "drive":
+            continue
+        c = np.array(c, dtype=float)
+        c[~assembled] = np.nan
+        c[~np.isfinite(c)] = np.nan
+        if k[:2] in ("vx", "vy", "ax", "ay") or k.startswith(("omega_", "alpha_")):
+            c[~valid] = np.nan
+        cols[k] = c

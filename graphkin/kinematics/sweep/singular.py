@@ -1,0 +1,344 @@
+"""The special postures a sweep meets: ranges that cannot assemble, dead centers, limits.
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.:
+Sec. 1.10 (toggle and dead-center postures).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphkin.construction import Construction
+from graphkin.kinematics.polygons import build_polygons
+from graphkin.kinematics.sweep.columns import wrap_degrees
+from graphkin.kinematics.sweep.drive_range import _assembles, _bisect
+from graphkin.kinematics.sweep.engine import _Engine
+from graphkin.mechanisms.model import FRAME
+
+if TYPE_CHECKING:
+    from graphkin.kinematics.sweep.report import Sweep
+
+Array = np.ndarray
+
+
+@dataclass(frozen=True)
+class SingularPosture:
+    """A special posture met by a sweep, located to the drive value.
+
+    Attributes
+    ----------
+    kind : str
+        ``"cannot-assemble"`` (a range: ``drive`` to ``end``), ``"dead-center"``
+        (the two branches of ``label`` meet: the arcs are tangent, the
+        transmission angle is 0° or 180°), or ``"limit"`` (a link pinned to the
+        frame stops and turns back: ``ω = 0``; for a crank-rocker driven by its
+        crank this is the toggle posture of Sec. 1.10, crank and coupler in line).
+    drive : float
+        The drive value (degrees, or the slider's travel).
+    end : float or None
+        The end of a range.
+    label : str
+        The construction step (``"C"``) or the link (``"4"``).
+    note : str
+        One line for the report.
+    change_point : bool
+        A dead center inside an assembled range: the branches touch without a
+        gap, and beyond it the named branch need not be the continuous motion.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 1.10 (toggle and dead-center postures).
+    """
+
+    kind: str
+    drive: float
+    end: float | None
+    label: str
+    note: str
+    change_point: bool = False
+
+
+def _fmt(eng: _Engine, v: float) -> str:
+    if eng.drive.kind == "angle":
+        return f"{v:.2f}°"
+    return f"{v:.4g}"
+
+
+def _to_user(eng: _Engine, x: float) -> float:
+    return math.degrees(x) if eng.drive.kind == "angle" else float(x)
+
+
+def _runs(mask: Array) -> list[tuple[int, int]]:
+    """Maximal runs of True as (first, last) indices."""
+    if not mask.any():
+        return []
+    m = np.concatenate([[False], mask, [False]]).astype(int)
+    d = np.diff(m)
+    starts = np.flatnonzero(d == 1)
+    ends = np.flatnonzero(d == -1) - 1
+    return list(zip(starts.tolist(), ends.tolist()))
+
+
+def _singular(sw: Sweep) -> list[SingularPosture]:
+    eng = sw._engine
+    assert eng is not None
+    out: list[SingularPosture] = []
+    dv = sw.values
+    n = len(dv)
+    if n == 0:
+        return out
+    period = 2 * math.pi if sw._cyclic else None
+    bad = ~sw.assembled
+    if bad.all():
+        a, b = _to_user(eng, dv[0]), _to_user(eng, dv[-1])
+        out.append(SingularPosture("cannot-assemble", a, b, "",
+                                   f"cannot assemble for drive {_fmt(eng, a)} to {_fmt(eng, b)}"))
+        return out
+
+    def value(i: int) -> float:
+        """Drive value of sample i, continued past either end of a full turn."""
+        if i < 0:
+            assert period is not None  # only a full turn continues past its ends
+            return float(dv[i + n]) - period
+        if i >= n:
+            assert period is not None
+            return float(dv[i - n]) + period
+        return float(dv[i])
+
+    # ---- ranges that cannot be assembled --------------------------------
+    runs = _runs(bad)
+    if period is not None and len(runs) > 1 and runs[0][0] == 0 and runs[-1][1] == n - 1:
+        first = runs.pop(0)
+        last = runs.pop()
+        runs.append((last[0], first[1] + n))
+    goods: list[float] = []
+    bads: list[float] = []
+    where: list[tuple[str, int]] = []
+    for k, (i0, i1) in enumerate(runs):
+        if i0 > 0 or period is not None:
+            goods.append(value(i0 - 1))
+            bads.append(value(i0))
+            where.append(("start", k))
+        if i1 < n - 1 or period is not None:
+            goods.append(value(i1 + 1))
+            bads.append(value(i1))
+            where.append(("end", k))
+    refined: dict[tuple[str, int], float] = {}
+    if goods:
+        gd: list[float] | Array
+        if eng.method == "analytic":
+            gd = _refine_analytic(sw, goods, bads)
+        else:
+            gd, _ = _bisect(_assembles(eng), np.array(goods), np.array(bads))
+        refined = {key: float(v) for key, v in zip(where, gd)}
+    failing = _failing_labels(sw)
+    for k, (i0, i1) in enumerate(runs):
+        a = refined.get(("start", k), value(i0))
+        b = refined.get(("end", k), value(i1))
+        ua, ub = _to_user(eng, a), _to_user(eng, b)
+        lab = failing.get(i0 % n, "")
+        out.append(SingularPosture("cannot-assemble", ua, ub, lab,
+                                   f"cannot assemble for drive {_fmt(eng, ua)} to {_fmt(eng, ub)}"))
+        if lab and eng.pc is not None and _is_branch(eng.pc.construction, lab):
+            for key, v in ((("start", k), a), (("end", k), b)):
+                if key in refined:
+                    u = _to_user(eng, v)
+                    out.append(SingularPosture(
+                        "dead-center", u, None, lab,
+                        f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
+                        "(an end of a range where it cannot be assembled)"))
+    if eng.pc is not None:
+        # ---- change points: the branches touch inside an assembled range -----
+        out.extend(_change_points(sw, eng))
+        # ---- limit positions of the links pinned to the frame ----------------
+        out.extend(_limits(sw, eng))
+    out.sort(key=lambda s: (s.drive, s.kind))
+    return out
+
+
+def _refine_analytic(sw: Sweep, goods: list[float], bads: list[float],
+                     steps: int = 24) -> list[float]:
+    """Bisection of assembly boundaries with Newton's method started from the assembled side."""
+    from graphkin.kinematics.analytic import solve_analytic_many
+
+    mech = sw.mechanism
+    sol = sw.solution
+    dv = sw.values
+    period = 2 * math.pi if sw._cyclic else 0.0
+    out = []
+    for good, bad in zip(goods, bads):
+        # the sample nearest the assembled side seeds Newton's method
+        gap = dv - good
+        if period:
+            gap = np.remainder(gap + period / 2, period) - period / 2
+        i = int(np.argmin(np.abs(gap)))
+        guess = {lid: (float(sol.links[lid].origin[i, 0]), float(sol.links[lid].origin[i, 1]),
+                       float(sol.links[lid].angle[i])) for lid in mech.moving}
+        for _ in range(steps):
+            mid = 0.5 * (good + bad)
+            full = np.array([[mid if k == 0 else d.value for k, d in enumerate(mech.drives)]])
+            s = solve_analytic_many(mech, full, guess)
+            if bool(np.asarray(s.valid).reshape(-1)[0]):
+                good = mid
+                guess = {lid: (float(np.reshape(s.links[lid].origin, (-1, 2))[0, 0]),
+                               float(np.reshape(s.links[lid].origin, (-1, 2))[0, 1]),
+                               float(np.reshape(s.links[lid].angle, (-1,))[0]))
+                         for lid in mech.moving}
+            else:
+                bad = mid
+        out.append(good)
+    return out
+
+
+def _failing_labels(sw: Sweep) -> dict[int, str]:
+    eng = sw._engine
+    out: dict[int, str] = {}
+    if eng is None or eng.pc is None:
+        return out
+    cx = eng.combined if eng.combined is not None else eng.pc.construction
+    off = 0
+    for blk in sw._blocks:
+        assert blk.ev is not None  # eng.pc is set: every block has its posture replay
+        fa = blk.ev.failed_at
+        if fa is not None:
+            fa = np.broadcast_to(fa, (len(blk.dv),))
+            for i in np.flatnonzero(fa >= 0):
+                out[off + int(i)] = cx[int(fa[i])].label
+        off += len(blk.dv)
+    return out
+
+
+def _is_branch(cx: Construction, label: str) -> bool:
+    try:
+        return cx.step_of(label).branch is not None
+    except KeyError:
+        return False
+
+
+def _separations(cx: Construction, values: dict[str, Array]) -> dict[str, Array]:
+    """For every two-way step: the half-distance between its two answers over the figure size.
+
+    Zero where the branches meet (tangent arcs, a tangent line).
+    """
+    out: dict[str, Array] = {}
+    for s in cx.steps:
+        if s.branch is None or any(i not in values for i in s.inputs):
+            continue
+        with np.errstate(invalid="ignore", divide="ignore"):
+            if s.op == "intersect_circles":
+                c1, c2 = (np.asarray(values[i], dtype=float) for i in s.inputs)
+                d = c2[..., :2] - c1[..., :2]
+                dist = np.hypot(d[..., 0], d[..., 1])
+                r1, r2 = c1[..., 2], c2[..., 2]
+                a = (dist**2 + r1**2 - r2**2) / (2 * dist)
+                h = np.sqrt(np.maximum(r1**2 - a**2, 0.0))
+                out[s.label] = h / np.maximum(r1, r2)
+            elif s.op == "intersect_line_circle":
+                line, c = (np.asarray(values[i], dtype=float) for i in s.inputs)
+                dd = line[..., 0] * c[..., 0] + line[..., 1] * c[..., 1] + line[..., 2]
+                r = c[..., 2]
+                out[s.label] = np.sqrt(np.maximum(r**2 - dd**2, 0.0)) / r
+    return out
+
+
+def _change_points(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
+    assert eng.pc is not None
+    cx = eng.pc.construction
+    seps: dict[str, list[Array]] = {}
+    for blk in sw._blocks:
+        full = eng.posture(blk.dv)
+        for k, v in _separations(cx, full.values).items():
+            seps.setdefault(k, []).append(np.broadcast_to(v, (len(blk.dv),)))
+    out: list[SingularPosture] = []
+    dv = sw.values
+    n = len(dv)
+    for lab, parts in seps.items():
+        sep = np.concatenate(parts)
+        sep = np.where(sw.assembled, sep, np.inf)
+        idx = [i for i in range(1, n - 1)
+               if sep[i] <= sep[i - 1] and sep[i] <= sep[i + 1] and sep[i] < 0.05]
+        for i in idx:
+            lo, hi = dv[i - 1], dv[i + 1]
+
+            def f(x: Array, lab: str = lab) -> Array:
+                ev = eng.posture(np.atleast_1d(x))
+                s = _separations(cx, ev.values).get(lab)
+                if s is None:
+                    return np.full(np.shape(x), np.inf)
+                return np.where(np.broadcast_to(ev.valid, np.shape(s)), s, np.inf)
+
+            gr = (math.sqrt(5) - 1) / 2
+            for _ in range(60):
+                m1 = hi - gr * (hi - lo)
+                m2 = lo + gr * (hi - lo)
+                v = f(np.array([m1, m2]))
+                if v[0] <= v[1]:
+                    hi = m2
+                else:
+                    lo = m1
+            x = 0.5 * (lo + hi)
+            if float(f(np.array([x]))[0]) < 1e-6:
+                u = _to_user(eng, x)
+                br = eng.pc.branches.get(lab, "")
+                out.append(SingularPosture(
+                    "dead-center", u, None, lab,
+                    f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
+                    f"(change point); the sweep keeps the branch named {br!r}, which need not "
+                    "be the continuous motion beyond it", change_point=True))
+    return out
+
+
+def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
+    """Where a link pinned to the frame stops and turns back (``ω = 0``)."""
+    assert eng.pc is not None
+    mech = eng.mech
+    frame_pts = set(mech.links[FRAME].points)
+    slid = {s.link for s in mech.sliders}
+    cands = [lid for lid in mech.moving
+             if lid != eng.drive.link and lid not in slid
+             and frame_pts & set(mech.links[lid].points)
+             and any(lid in p.links and FRAME in p.links for p in mech.pins)]
+    if not cands:
+        return []
+    if eng.pol is None:
+        eng.pol = build_polygons(mech, eng.pc)
+    out: list[SingularPosture] = []
+    dv = sw.values
+
+    def omegas(x: Array) -> tuple[dict[str, Array], Array]:
+        ev = eng.posture(np.atleast_1d(x))
+        evv, _ = eng.rates(ev, unit=True)
+        ok = np.broadcast_to(ev.valid & evv.valid, np.shape(x))
+        return {lid: np.broadcast_to(np.asarray(evv[f"ω{lid}"]), np.shape(x)) for lid in cands}, ok
+
+    w_all, ok_all = omegas(dv)
+    for lid in cands:
+        w = w_all[lid]
+        s = np.sign(w)
+        idx = np.flatnonzero(ok_all[:-1] & ok_all[1:] & (s[:-1] * s[1:] < 0))
+        if idx.size == 0:
+            continue
+        lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
+        slo = s[idx]
+        for _ in range(48):
+            mid = 0.5 * (lo + hi)
+            wm, _ok = omegas(mid)
+            same = np.sign(wm[lid]) == slo
+            lo = np.where(same, mid, lo)
+            hi = np.where(same, hi, mid)
+        x = 0.5 * (lo + hi)
+        ev = eng.posture(x)
+        th = np.broadcast_to(np.asarray(ev.values[eng.pc.angles[lid]]), x.shape)
+        for xi, ti in zip(x, th):
+            u = _to_user(eng, float(xi))
+            out.append(SingularPosture(
+                "limit", u, None, lid,
+                f"limit position of link {lid} (ω{lid} = 0) at drive {_fmt(eng, u)}, "
+                f"θ{lid} = {float(wrap_degrees(np.array([ti]))[0]):.2f}°"))
+    return out
