@@ -20,11 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from graphkin.construction.ops import (
+from graphkin.construction.ops import OPS, OUTPUT_KIND
+from graphkin.construction.ops.runtime import (
     KERNELS,
-    OPS,
     ORIGINATING,
-    OUTPUT_KIND,
     CompileInfo,
     Runtime,
     generic_kernel,

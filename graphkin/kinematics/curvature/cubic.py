@@ -1,0 +1,178 @@
+"""The cubic of stationary curvature and Ball's point (Sec. 4.17, Eqs. 4.55-4.57)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from graphkin.errors import ConstructionError
+from graphkin.kinematics.curvature._vec import _cross, _dot, _xy
+from graphkin.kinematics.solution import perp
+from graphkin.tolerance import DEFAULT_TOL, Tolerance
+
+__all__ = ["stationary_curvature_cubic", "ball_point", "Cubic"]
+
+Array = np.ndarray
+
+
+def _tn(pole: Array, tangent: Array, p: Array) -> tuple[Array, Array]:
+    r = _xy(p) - _xy(pole)
+    return _dot(r, tangent), _cross(tangent, r)
+
+
+def stationary_curvature_cubic(pole: ArrayLike, tangent: ArrayLike, p1: ArrayLike,
+                               p2: ArrayLike, scale: float = 1.0,
+                               tol: Tolerance | None = None) -> tuple[float, float]:
+    """``M`` and ``N`` of the cubic of stationary curvature through two of its points.
+
+    Eq. 4.57, ``(x² + y²)(x/M - y/N) = xy`` with ``x`` along the centrode
+    tangent and ``y`` along the normal, is linear in ``1/M`` and ``1/N``.
+
+    Parameters
+    ----------
+    pole : array_like, shape (2,)
+        The velocity pole ``I``.
+    tangent : array_like, shape (2,)
+        The unit positive centrode tangent ``T`` (``N`` is 90° ccw from it).
+    p1, p2 : array_like, shape (2,)
+        Two points of the cubic (points of constant path curvature: pins to
+        links that turn about frame pivots, points held on frame-fixed lines).
+    scale : float
+        Size of the figure: ``1/M`` below ``tol.angle/scale`` is taken as 0.
+    tol : Tolerance, optional
+
+    Returns
+    -------
+    (M, N) : tuple of float
+        ``inf`` where the parameter is infinite (a degenerate cubic).
+
+    Raises
+    ------
+    ConstructionError
+        The two points do not determine the cubic.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 4.17, Eqs. 4.55 and 4.57.
+
+    Examples
+    --------
+    Example 4.16: ``I = (0, -1)``, ``T`` at 135°, pins ``A = (0, 1)``, ``B = (2, 1)``.
+
+    >>> t = np.array([-1.0, 1.0]) / np.sqrt(2.0)
+    >>> m, n = stationary_curvature_cubic([0, -1], t, [0, 1], [2, 1])
+    >>> round(m, 6), n
+    (-2.828427, inf)
+    """
+    tol = tol or DEFAULT_TOL
+    rows, rhs = [], []
+    for p in (p1, p2):
+        x, y = (float(v) for v in _tn(np.asarray(pole, float), np.asarray(tangent, float),
+                                       np.asarray(p, float)))
+        s = x * x + y * y
+        rows.append([s * x, -s * y])
+        rhs.append(x * y)
+    a = np.array(rows)
+    det = float(np.linalg.det(a))
+    norm = float(np.abs(a).max()) ** 2
+    if norm == 0.0 or abs(det) <= tol.angle * norm:
+        raise ConstructionError("the two points do not determine the cubic of stationary "
+                                "curvature", step="cubic")
+    m, n = np.linalg.solve(a, np.array(rhs))
+    small = tol.angle / max(scale, 1e-300)
+    big_m = math.inf if abs(m) <= small else 1.0 / float(m)
+    big_n = math.inf if abs(n) <= small else 1.0 / float(n)
+    return big_m, big_n
+
+
+def ball_point(pole: ArrayLike, inflection_pole: ArrayLike, tangent: ArrayLike, M: float,
+               N: float, tol: Tolerance | None = None) -> Array | None:
+    """Ball's point: where the cubic of stationary curvature meets the inflection circle again.
+
+    With the inflection circle ``x² + y² = d y`` (``d = R_JI``), Eq. 4.57 gives
+    ``x (d/M - 1) = (d/N) y``: a line through ``I`` that meets the circle at
+    Ball's point.  ``None`` when that line is indeterminate (the cubic
+    contains the whole inflection circle) or tangent to the circle at ``I``.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 4.17 (Ball's point), Example 4.16.
+
+    Examples
+    --------
+    Example 4.16: ``N = ∞``, so Ball's point is the inflection pole ``J``.
+
+    >>> t = np.array([-1.0, 1.0]) / np.sqrt(2.0)
+    >>> ball_point([0, -1], [-2, -3], t, -2 * np.sqrt(2.0), np.inf)
+    array([-2., -3.])
+    """
+    tol = tol or DEFAULT_TOL
+    i, j = np.asarray(pole, dtype=float), np.asarray(inflection_pole, dtype=float)
+    t = np.asarray(tangent, dtype=float)
+    nrm = perp(t)
+    d = float(np.hypot(*(j - i)))
+    dm = 0.0 if math.isinf(M) else d / M
+    dn = 0.0 if math.isinf(N) else d / N
+    ux, uy = dn, dm - 1.0  # the line's direction in (T, N) coordinates
+    h = math.hypot(ux, uy)
+    if h <= tol.angle:
+        return None
+    ux, uy = ux / h, uy / h
+    r = d * uy
+    if abs(r) <= tol.length(max(d, 1.0)):
+        return None
+    return i + r * (ux * t + uy * nrm)
+
+# ---------------------------------------------------------------------------
+# results
+# ---------------------------------------------------------------------------
+
+@dataclass
+class Cubic:
+    """The cubic of stationary curvature of a motion (Eq. 4.55).
+
+    Attributes
+    ----------
+    pole : ndarray, shape (2,)
+        The velocity pole ``I``.
+    tangent, normal : ndarray, shape (2,)
+        Unit positive centrode tangent ``T`` and normal ``N`` (90° ccw from ``T``).
+    M, N : float
+        The parameters of ``1/r = 1/(M sin ψ) - 1/(N cos ψ)``; ``inf`` where infinite.
+    g_n, g_t : ndarray or None
+        Where Hain's auxiliary line ``G`` meets ``N`` and ``T`` (``None`` at infinity).
+    """
+
+    pole: Array
+    tangent: Array
+    normal: Array
+    M: float
+    N: float
+    g_n: Array | None = None
+    g_t: Array | None = None
+
+    def radius(self, psi: ArrayLike) -> Array:
+        """``r(ψ)`` of Eq. 4.55 (``inf`` where the ray meets the cubic only at ``I``)."""
+        psi = np.asarray(psi, dtype=float)
+        im = 0.0 if math.isinf(self.M) else 1.0 / self.M
+        in_ = 0.0 if math.isinf(self.N) else 1.0 / self.N
+        with np.errstate(divide="ignore", invalid="ignore"):
+            inv = im / np.sin(psi) - in_ / np.cos(psi)
+            return 1.0 / inv
+
+    def point(self, psi: ArrayLike) -> Array:
+        """The point of the cubic on the ray at ``ψ`` from ``T``."""
+        psi = np.asarray(psi, dtype=float)
+        r = self.radius(psi)
+        u = (np.cos(psi)[..., None] * self.tangent + np.sin(psi)[..., None] * self.normal)
+        return self.pole + r[..., None] * u
+
+    def residual(self, p: ArrayLike) -> Array:
+        """``(x² + y²)(x/M - y/N) - xy`` (Eq. 4.57): zero on the cubic."""
+        x, y = _tn(self.pole, self.tangent, np.asarray(p, dtype=float))
+        im = 0.0 if math.isinf(self.M) else 1.0 / self.M
+        in_ = 0.0 if math.isinf(self.N) else 1.0 / self.N
+        return (x * x + y * y) * (x * im - y * in_) - x * y
