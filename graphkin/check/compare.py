@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin import text
 from graphkin.check.answers import CheckTolerance, Given
 from graphkin.check.exact import Exact, wrap180
 
@@ -148,12 +149,7 @@ def fmt(x: float) -> str:
     >>> fmt(35530.6), fmt(25.3828), fmt(0.054321), fmt(0.0)
     ('35531', '25.38', '0.05432', '0')
     """
-    a = abs(x)
-    if a == 0 or not math.isfinite(a):
-        return f"{x:g}"
-    if 1e-3 <= a < 1e7:
-        return f"{x:.{max(0, 3 - math.floor(math.log10(a)))}f}"
-    return f"{x:.4g}"
+    return text.fmt(x, 4, trim=False)
 
 
 def show_given(given: Given) -> str:

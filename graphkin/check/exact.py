@@ -268,9 +268,9 @@ class Evaluator:
 
 
 def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
-    """``instant_centers_json(sol)`` of :mod:`graphkin.kinematics.instant_centers`, if present."""
+    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers`, if present."""
     try:
-        from graphkin.kinematics.instant_centers import instant_centers_json
+        from graphkin.output.centers import instant_centers_json
     except ImportError:
         return {}
     try:
@@ -281,9 +281,9 @@ def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
 
 
 def _optional_paths(sol: Solution) -> dict[str, Any]:
-    """``paths_json(sol)`` of :mod:`graphkin.kinematics.curvature`, if present."""
+    """``paths_json(sol)`` of :mod:`graphkin.output.curvature`, if present."""
     try:
-        from graphkin.kinematics.curvature import paths_json
+        from graphkin.output.curvature import paths_json
     except ImportError:
         return {}
     try:

@@ -19,6 +19,7 @@ from graphkin.check.compare import compare, show_exact, show_given
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.check.exact import Evaluator
 from graphkin.kinematics.solution import Solution
+from graphkin.text import table
 
 __all__ = ["Row", "Report", "check", "check_given", "marks_csv"]
 
@@ -80,17 +81,17 @@ class Report:
     def text(self) -> str:
         """The report as a table, a hint under each wrong answer, and a summary line."""
         head = ("answer", "given", "exact", "error", "verdict")
-        table = [head] + [(r.key, r.given, r.exact, r.error, r.verdict) for r in self.rows]
-        widths = [max(len(t[i]) for t in table) for i in range(len(head))]
+        aligned = table([head] + [(r.key, r.given, r.exact, r.error, r.verdict)
+                                  for r in self.rows])
         lines = []
         if self.title:
             lines.append(self.title)
         tol = self.tolerance
         lines.append(f"tolerance: {tol.relative * 100:g} % of magnitude, {tol.angle:g}° of "
                      "direction")
-        lines.append("  ".join(h.ljust(w) for h, w in zip(head, widths)).rstrip())
-        for r, t in zip(self.rows, table[1:]):
-            lines.append("  ".join(c.ljust(w) for c, w in zip(t, widths)).rstrip())
+        lines.append(aligned[0])
+        for r, t in zip(self.rows, aligned[1:]):
+            lines.append(t)
             if r.verdict == WRONG:
                 hint = (f"likely mistake: {r.mistake.text}" if r.mistake
                         else "no usual mistake explains it")

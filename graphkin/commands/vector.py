@@ -44,6 +44,7 @@ from graphkin.kinematics.vector_equation import (
     VectorEquationResult,
     solve_vector_equation,
 )
+from graphkin.text import table
 
 __all__ = ["add_parser", "run", "VectorFile", "load", "loads", "text_report", "to_dict"]
 
@@ -249,9 +250,7 @@ def text_report(vf: VectorFile, result: VectorEquationResult, steps: bool = Fals
         head = f"solution {k + 1}" + (f" ({branch}):" if branch else ":")
         cells = [f"{n} = {_polar_text(p, vf.units)}" for n, p in zip(NAMES, result.polar(k))]
         rows.append([head, *cells])
-    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-    for r in rows:
-        lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+    lines += table(rows)
     if steps:
         lines.append("")
         lines.append(result.construction.table())

@@ -31,6 +31,7 @@ from graphkin.construction.ops.runtime import (
 from graphkin.construction.step import Role, Step, VectorEquation
 from graphkin.errors import ConstructionError, DegenerateError, NoIntersectionError
 from graphkin.geometry.ops import xy as g_xy
+from graphkin.text import table
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
 __all__ = ["Construction", "Evaluation"]
@@ -283,8 +284,7 @@ class Construction:
         for s in self.steps:
             rows.append((str(s.index), s.label, s.op, ", ".join(s.inputs), str(s.role),
                          s.branch or "", "" if s.equation is None else str(s.equation)))
-        widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-        return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
+        return "\n".join(table(rows))
 
     def to_dict(self) -> list[dict[str, Any]]:
         """The steps as plain data."""

@@ -18,27 +18,9 @@ from graphkin.kinematics.solution import Solution
 from graphkin.kinematics.solve import link_states
 from graphkin.kinematics.sweep.engine import _Block, _Engine
 from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.text import wrap_degrees
 
 Array = np.ndarray
-
-
-def wrap_degrees(rad: Any) -> Array:
-    """Angles (rad) as degrees in (-180, 180], element by element, as ``solve`` prints them.
-
-    References
-    ----------
-    Uicker, Pennock & Shigley, 5th ed., Sec. 2.2 (angles measured counterclockwise from +x).
-
-    Examples
-    --------
-    >>> wrap_degrees(np.array([np.pi, -np.pi, 3 * np.pi / 2, 0.25]))
-    array([180.        , 180.        , -90.        ,  14.32394488])
-    """
-    d = np.degrees(np.asarray(rad, dtype=float))
-    # d - 360 k with k = ceil((d - 180) / 360): the turn that brings d into (-180, 180]
-    k = np.ceil((d - 180.0) * (1.0 / 360.0))
-    d -= 360.0 * k
-    return d
 
 
 def _xy_rows(a: Any, n: int, unit: bool) -> tuple[Array, Array]:
