@@ -43,6 +43,12 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--curvature", action="store_true",
                    help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
                         "the inflection poles and diameters of the links")
+    p.add_argument("--units", default=None, metavar="UNITS",
+                   help="write lengths, velocities, accelerations and angular rates in these "
+                        "units, e.g. \"ft, ft/s, ft/s^2\" (angles stay in degrees)")
+    p.add_argument("--units-row", action="store_true",
+                   help="write each column's unit on a second header line (the column names "
+                        "stay those of spec/sweep.md)")
     p.add_argument("--singular", action="store_true",
                    help="also report dead centers, limit positions and Grashof's classification "
                         "on standard error")
@@ -63,8 +69,11 @@ def run(args: argparse.Namespace) -> int:
     import graphkin
     from graphkin.errors import InputError
     from graphkin.kinematics.sweep import grashof, sweep
+    from graphkin.output import OutputUnits
+    from graphkin.output.csv import column_unit, convert_columns
 
     mech = graphkin.load(args.file)
+    OutputUnits.of(mech.length_unit, args.units)  # a bad --units fails before the sweep runs
     if args.count < 1:
         raise InputError(f"--count must be at least 1, not {args.count}", key="count",
                          file=args.file)
@@ -74,11 +83,20 @@ def run(args: argparse.Namespace) -> int:
     sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                transmission=args.transmission, centers=args.centers, curvature=args.curvature,
                progress=progress)
+    units = OutputUnits.of(mech.length_unit, args.units)
+    slider = sw.drive.kind != "angle"
+    try:
+        columns = convert_columns(sw.columns, units, slider) if args.units else None
+    except KeyError as exc:
+        raise InputError(f"no unit is known for the column {exc.args[0]!r}",
+                         key="--units") from None
+    units_row = ([column_unit(n, units, slider) for n in sw.columns] if args.units_row
+                 else None)
     if args.csv == "-":
-        sw.to_csv(sys.stdout)
+        sw.to_csv(sys.stdout, columns=columns, units_row=units_row)
     else:
         try:
-            sw.to_csv(args.csv)
+            sw.to_csv(args.csv, columns=columns, units_row=units_row)
         except OSError as exc:
             raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
                              file=args.csv) from None
