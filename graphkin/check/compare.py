@@ -19,9 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from graphkin import text
 from graphkin.check.answers import CheckTolerance, Given
 from graphkin.check.exact import Exact, wrap180
+from graphkin.text import fmt as text_fmt
 
 __all__ = ["Comparison", "compare", "show_given", "show_exact", "fmt"]
 
@@ -149,7 +149,7 @@ def fmt(x: float) -> str:
     >>> fmt(35530.6), fmt(25.3828), fmt(0.054321), fmt(0.0)
     ('35531', '25.38', '0.05432', '0')
     """
-    return text.fmt(x, 4, trim=False)
+    return text_fmt(x, 4, trim=False)
 
 
 def show_given(given: Given) -> str:
