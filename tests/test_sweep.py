@@ -672,7 +672,7 @@ def test_a_file_drawn_in_its_dead_zone_still_sweeps():
 # centers and curvature columns against the single-posture constructions
 # ---------------------------------------------------------------------------
 
-def _at(mech: graphkin.Mechanism, value: float) -> graphkin.Mechanism:
+def _with_drive(mech: graphkin.Mechanism, value: float) -> graphkin.Mechanism:
     """The mechanism with its first drive at ``value`` (rad)."""
     import dataclasses
 
@@ -689,7 +689,7 @@ def test_swept_centers_are_the_single_posture_kennedy_centers(bench: graphkin.Me
     from graphkin.kinematics.instant_centers import instant_centers
 
     sw = bench.sweep(count=24, centers=True)
-    ic = instant_centers(graphkin.solve(_at(bench, float(sw.values[k]))))
+    ic = instant_centers(graphkin.solve(_with_drive(bench, float(sw.values[k]))))
     scale = bench.scale
     for c in ic.centers.values():
         x, y = c.xy
@@ -708,7 +708,7 @@ def test_swept_curvature_is_the_single_posture_construction(bench: graphkin.Mech
     from graphkin.kinematics.curvature import curvature, path_curvatures
 
     sw = bench.sweep(count=24, curvature=True)
-    sol = graphkin.solve(_at(bench, float(sw.values[k])))
+    sol = graphkin.solve(_with_drive(bench, float(sw.values[k])))
     cols = sw.columns
     scale = bench.scale
     for lid, lc in curvature(sol).items():

@@ -139,9 +139,9 @@ def with_dimensions(mech: Mechanism, dimensions: Mapping[str, Any]) -> Mechanism
     --------
     >>> import graphkin
     >>> m = graphkin.examples.fourbar()
-    >>> longer = with_dimensions(m, {"links.3.C": (13.0, 0.0)})
-    >>> longer.links["3"].points["C"], m.links["3"].points["C"] != (13.0, 0.0)
-    ((13.0, 0.0), True)
+    >>> longer = with_dimensions(m, {"links.3.C": (19.0, 0.0)})
+    >>> longer.links["3"].points["C"], m.links["3"].points["C"]
+    ((19.0, 0.0), (18.0, 0.0))
     """
     arrays, m = _dimension_arrays(mech, dimensions)
     if m != 1:
@@ -376,12 +376,12 @@ class Batch:
     @property
     def never_assembles(self) -> Array:
         """Shape (M,): designs that cannot be assembled at any posture of the range."""
-        return ~self.assembled.any(axis=1)
+        return np.asarray(~self.assembled.any(axis=1))
 
     @property
     def always_assembles(self) -> Array:
         """Shape (M,): designs that can be assembled at every posture of the range."""
-        return self.assembled.all(axis=1)
+        return np.asarray(self.assembled.all(axis=1))
 
     def design(self, m: int) -> Mechanism:
         """Design ``m`` as a mechanism of its own (to solve, draw or sweep it alone)."""
@@ -462,16 +462,18 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
 
     Examples
     --------
-    Three coupler lengths of a crank-rocker (crank 4, rocker 11, frame 10), one
-    turn of the crank in 8 steps:
+    Three coupler lengths of the four-bar of Example 3.1 (crank 4, rocker 11,
+    frame 10, coupler 18 in the file), one turn of the crank in 8 steps:
 
     >>> import numpy as np, graphkin
     >>> m = graphkin.examples.fourbar()
-    >>> b = batch(m, {"links.3.C": [[11.0, 0], [12.0, 0], [13.0, 0]]}, count=8)
+    >>> b = batch(m, {"links.3.C": [[17.0, 0], [18.0, 0], [19.0, 0]]}, count=8)
     >>> b.columns["angle_4"].shape
     (3, 8)
-    >>> bool(np.allclose(b.columns["x_C"][1], m.sweep(count=8).columns["x_C"]))
+    >>> bool(np.allclose(b.columns["x_C"][1], m.sweep(count=8).columns["x_C"], equal_nan=True))
     True
+    >>> b.assembled.sum(axis=1)  # 4 + 18 > 10 + 11: the longer couplers cannot follow the crank
+    array([8, 6, 6])
     """
     if int(count) != count or count < 1:
         raise InputError(f"the number of postures must be a whole number of at least 1, not "

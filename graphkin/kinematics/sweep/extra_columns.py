@@ -83,7 +83,7 @@ def _kennedy_replay(sw: Sweep, sol: Solution) -> tuple[Construction, list[str]] 
     replays its steps on the whole arrays.  Returns the steps to replay and
     the centers' labels in order of discovery (None when nothing assembles).
     """
-    from graphkin.kinematics.instant_centers import _Kennedy, instant_centers
+    from graphkin.kinematics.instant_centers.kennedy import _Kennedy, instant_centers
 
     eng = sw._engine
     key = ("kennedy", float(sw.values[0]), float(sw.values[-1]), len(sw))
@@ -118,11 +118,8 @@ def _center_columns(sw: Sweep) -> dict[str, Array]:
     Uicker, Pennock & Shigley, 5th ed., Secs. 3.12-3.14 (Kennedy's theorem).
     """
     try:
-        from graphkin.kinematics.instant_centers import (
-            _equal_velocity_point,
-            _Kennedy,
-            _parse_pair,
-        )
+        from graphkin.kinematics.instant_centers.kennedy import _equal_velocity_point, _Kennedy
+        from graphkin.kinematics.instant_centers.labels import _parse_pair
     except ImportError:
         return {}
     sol = sw.solution
