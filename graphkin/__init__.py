@@ -46,6 +46,7 @@ from graphkin.errors import (
 )
 from graphkin.kinematics.solution import LinkState, Solution
 from graphkin.kinematics.solve import solve
+from graphkin.kinematics.sweep.batch import Batch, batch
 from graphkin.mechanisms import Mechanism, from_dict, load, loads
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
@@ -56,5 +57,5 @@ __all__ = [
     "load", "loads", "from_dict", "solve", "Mechanism", "Solution", "LinkState",
     "Construction", "Step", "Tolerance", "DEFAULT_TOL", "GraphkinError", "InputError",
     "ConstructionError", "NoIntersectionError", "ParallelDirectionsError", "DegenerateError",
-    "IdealPointError", "AssemblyError", "__version__",
+    "IdealPointError", "AssemblyError", "batch", "Batch", "__version__",
 ]

@@ -666,3 +666,65 @@ def test_a_file_drawn_in_its_dead_zone_still_sweeps():
     ok = dead.valid
     np.testing.assert_allclose(dead.columns["angle_3"][ok], book.columns["angle_3"][ok],
                                atol=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# centers and curvature columns against the single-posture constructions
+# ---------------------------------------------------------------------------
+
+def _with_drive(mech: graphkin.Mechanism, value: float) -> graphkin.Mechanism:
+    """The mechanism with its first drive at ``value`` (rad)."""
+    import dataclasses
+
+    d = dataclasses.replace(mech.drives[0], value=value)
+    return dataclasses.replace(mech, drives=(d, *mech.drives[1:]))
+
+
+@pytest.mark.parametrize("k", [0, 5, 11, 17, 23])
+def test_swept_centers_are_the_single_posture_kennedy_centers(bench: graphkin.Mechanism,
+                                                              k: int) -> None:
+    # the sweep resolves the Kennedy search once and replays its steps on the arrays; at each
+    # posture the centers must be where the single-posture search (its own choice of lines)
+    # puts them
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    sw = bench.sweep(count=24, centers=True)
+    ic = instant_centers(graphkin.solve(_with_drive(bench, float(sw.values[k]))))
+    scale = bench.scale
+    for c in ic.centers.values():
+        x, y = c.xy
+        np.testing.assert_allclose(sw.columns[f"x_{c.label}"][k], x, atol=1e-9 * scale,
+                                   rtol=1e-9)
+        np.testing.assert_allclose(sw.columns[f"y_{c.label}"][k], y, atol=1e-9 * scale,
+                                   rtol=1e-9)
+
+
+@pytest.mark.parametrize("k", [0, 5, 11, 17, 23])
+def test_swept_curvature_is_the_single_posture_construction(bench: graphkin.Mechanism,
+                                                            k: int) -> None:
+    # J, the inflection diameter and Γ of every moving link, and ρ and the center of
+    # curvature of every moving point, as the single-posture constructions of Secs. 4.14-4.16
+    # (Euler-Savary, Bobillier, Hartmann) find them
+    from graphkin.kinematics.curvature import curvature, path_curvatures
+
+    sw = bench.sweep(count=24, curvature=True)
+    sol = graphkin.solve(_with_drive(bench, float(sw.values[k])))
+    cols = sw.columns
+    scale = bench.scale
+    for lid, lc in curvature(sol).items():
+        # the diameter reaches 1e5 crank lengths near the crank-rocker's toggles: scale-aware
+        big = max(scale, float(lc.inflection_diameter))
+        np.testing.assert_allclose(cols[f"inflection_diameter_{lid}"][k],
+                                   lc.inflection_diameter, rtol=1e-7, atol=1e-9 * big)
+        np.testing.assert_allclose([cols[f"jx_{lid}"][k], cols[f"jy_{lid}"][k]],
+                                   lc.inflection_pole, rtol=1e-7, atol=1e-9 * big)
+        np.testing.assert_allclose([cols[f"gx_{lid}"][k], cols[f"gy_{lid}"][k]],
+                                   lc.acceleration_center, rtol=1e-7, atol=1e-9 * scale)
+    for name, pcv in path_curvatures(sol).items():
+        if pcv.radius is None:
+            assert f"rho_{name}" not in cols or not np.isfinite(cols[f"rho_{name}"][k])
+            continue
+        np.testing.assert_allclose(cols[f"rho_{name}"][k], pcv.radius, rtol=1e-7)
+        assert pcv.center is not None
+        np.testing.assert_allclose([cols[f"cx_{name}"][k], cols[f"cy_{name}"][k]],
+                                   pcv.center, rtol=1e-7, atol=1e-7 * scale)

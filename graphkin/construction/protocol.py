@@ -373,7 +373,7 @@ class _Plan:
                 run = kern if kern is not None else generic_kernel(step, tol)
                 for o in step.outputs:
                     info.forget(o)
-                if step.op == "circle":
+                if step.op == "circle" and np.ndim(step.params["radius"]) == 0:
                     info.radius[step.outputs[0]] = float(step.params["radius"])
             self.program.append((run, always, frozenset(step.inputs), step))
             made.update(step.outputs)

@@ -13,6 +13,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.5-1.7 (links, pairs, mobility).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
+    from graphkin.kinematics.sweep.batch import Batch
     from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
@@ -317,3 +319,19 @@ class Mechanism:
         from graphkin.kinematics.sweep import sweep
 
         return sweep(self, count=count, start=start, stop=stop, **kw)
+
+    def with_dimensions(self, dimensions: Mapping[str, Any]) -> Mechanism:
+        """The mechanism with points moved in their links' coordinates (``{"links.3.C": (x, y)}``).
+
+        See :func:`graphkin.kinematics.sweep.batch.with_dimensions`.
+        """
+        from graphkin.kinematics.sweep.batch import with_dimensions
+
+        return with_dimensions(self, dimensions)
+
+    def batch(self, dimensions: Mapping[str, Any], count: int = 360, start: float | None = None,
+              stop: float | None = None, **kw: Any) -> Batch:
+        """Sweep many designs at once (dimensions as arrays); see :func:`graphkin.batch`."""
+        from graphkin.kinematics.sweep.batch import batch
+
+        return batch(self, dimensions, count=count, start=start, stop=stop, **kw)
