@@ -3,19 +3,18 @@
 The contract is ``spec/sweep.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
 velocity and acceleration; empty cells where the mechanism cannot be
-assembled, reported once on standard error as a range of the drive.
+assembled, reported once on standard error as a range of the drive.  On a
+terminal, a job longer than a second shows a progress bar (the sweep, then
+the writing of the CSV, which takes longer).
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
+from typing import IO, cast
 
 __all__ = ["add_parser", "run"]
-
-#: Sweeps at least this long get a progress bar (when standard error is a terminal).
-PROGRESS_FROM = 200_000
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -49,39 +48,31 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     return p
 
 
-def _progress(frac: float) -> None:
-    width = 30
-    done = int(round(width * frac))
-    sys.stderr.write(f"\rsweep [{'#' * done}{' ' * (width - done)}] {100 * frac:5.1f}%")
-    if frac >= 1.0:
-        sys.stderr.write("\n")
-    sys.stderr.flush()
-
-
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.errors import InputError
     from graphkin.kinematics.sweep import grashof, sweep
+    from graphkin.progress import CountingWriter, bar
 
     mech = graphkin.load(args.file)
     if args.count < 1:
         raise InputError(f"--count must be at least 1, not {args.count}", key="count",
                          file=args.file)
-    progress: Any = None
-    if args.count >= PROGRESS_FROM and sys.stderr.isatty():
-        progress = _progress
-    sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
-               transmission=args.transmission, centers=args.centers, curvature=args.curvature,
-               progress=progress)
-    if args.csv == "-":
-        sw.to_csv(sys.stdout)
-    else:
-        try:
-            sw.to_csv(args.csv)
-        except OSError as exc:
-            raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
-                             file=args.csv) from None
+    with bar("sweep", total=args.count, unit="posture") as b:
+        sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
+                   transmission=args.transmission, centers=args.centers,
+                   curvature=args.curvature, progress=b.fraction)
+    with bar("write CSV", total=args.count + 1, unit="row") as b:
+        if args.csv == "-":
+            sw.to_csv(cast(IO[str], CountingWriter(sys.stdout, b)))
+        else:
+            try:
+                with open(args.csv, "w", newline="", encoding="utf-8") as fh:
+                    sw.to_csv(cast(IO[str], CountingWriter(fh, b)))
+            except OSError as exc:
+                raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
+                                 file=args.csv) from None
     for line in sw.report(events=args.singular):
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
     if args.singular:
