@@ -43,8 +43,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
                         "the inflection poles and diameters of the links")
     p.add_argument("--singular", action="store_true",
-                   help="also report dead centers, limit positions and Grashof's classification "
-                        "on standard error")
+                   help="also report dead centers, limit positions (of links pinned to the "
+                        "frame and of sliders on it) and Grashof's classification on standard "
+                        "error")
     return p
 
 
