@@ -46,7 +46,7 @@ Schema = Mapping[str, Any]
 
 UNITS: Schema = {
     "length": None,   # any length unit pint knows; default mm
-    "force": None,    # forces extension (forces.md): any force unit; default N
+    "force": None,    # forces (docs/formats/mechanism.md#forces): a force unit; default N
 }
 """``units = { ... }``: the same in every file kind (``units = "in"`` means the length)."""
 
@@ -74,7 +74,7 @@ MECHANISM: Schema = {
     "rates": {"link": None, "omega": None, "alpha": None, "velocity": None,
               "acceleration": None},
     "assembly": {"*": None},              # <point> = [x, y]
-    # forces (forces.md, Ch. 11-12)
+    # forces (docs/formats/mechanism.md#forces, Ch. 11-12)
     "loads": {"link": None, "point": None, "force": None, "torque": None},
     "inertia": {"*": {"center": None, "mass": None, "weight": None, "moment": None}},
     "gravity": {"acceleration": None},

@@ -1,4 +1,4 @@
-"""What ``graphkin solve`` prints: the JSON of ``spec/output.md`` and a textbook-style report.
+"""What ``graphkin solve`` prints: the JSON of ``docs/formats/json.md`` and a textbook-style report.
 
 References
 ----------
@@ -75,7 +75,7 @@ def _sections() -> list[Any]:
 
 
 def solution_to_dict(sol: Solution) -> dict[str, Any]:
-    """The ``graphkin solve --json`` object of ``spec/output.md`` (and a few extra keys)."""
+    """The ``graphkin solve --json`` object of ``docs/formats/json.md`` (and a few extra keys)."""
     mech = sol.mechanism
     links: dict[str, Any] = {}
     for lid, st in sol.links.items():

@@ -30,7 +30,7 @@ __all__ = ["DELAY", "Bar", "bar", "track", "enabled", "CountingWriter"]
 T = TypeVar("T")
 
 DELAY = 1.0
-"""Seconds a job runs before its bar appears (sweep.md: a bar for long sweeps only)."""
+"""Seconds a job runs before its bar appears: short jobs print nothing."""
 
 
 def enabled(stream: IO[str] | None = None) -> bool:

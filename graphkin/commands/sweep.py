@@ -1,6 +1,6 @@
 """``graphkin sweep FILE [--from DEG] [--to DEG] [--count N] --csv OUT.csv``: whole cycles.
 
-The contract is ``spec/sweep.md``: one CSV row per posture, the drive first,
+The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
 velocity and acceleration; empty cells where the mechanism cannot be
 assembled, reported once on standard error as a range of the drive.  On a

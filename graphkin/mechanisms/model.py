@@ -1,4 +1,4 @@
-"""The mechanism as described by a mechanism file (``spec/format.md``).
+"""The mechanism as described by a mechanism file (``docs/formats/mechanism.md``).
 
 Plain frozen values: links with their points in their own coordinates, pins
 (a point name shared by links), sliders, slots, drives and rates.  Inside

@@ -1,4 +1,4 @@
-"""Read and validate a mechanism file (``spec/format.md``).
+"""Read and validate a mechanism file (``docs/formats/mechanism.md``).
 
 Every problem becomes an :class:`~graphkin.errors.InputError` naming the file,
 the dotted key and the reason, so the CLI can print one line and exit 2.
@@ -36,7 +36,7 @@ def load(path: str | Path) -> Mechanism:
     Parameters
     ----------
     path : str or Path
-        A TOML file in the format of ``spec/format.md``.
+        A TOML file in the format of ``docs/formats/mechanism.md``.
 
     Returns
     -------
@@ -437,7 +437,7 @@ class _Parser:
 def _lonely_points(mech: Mechanism) -> str:
     """Name the points that appear in only one link: a misspelt pin is among them.
 
-    A pin is a point name shared by two links (format.md), so ``Cc`` in link 4
+    A pin is a point name shared by two links (docs/formats/mechanism.md), so ``Cc`` in link 4
     where link 3 has ``C`` leaves two free ends and two more degrees of freedom.
     """
     owners: dict[str, list[str]] = {}

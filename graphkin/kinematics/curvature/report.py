@@ -18,7 +18,7 @@ _TEXT_ZERO = 1e-12
 """Coordinates below this fraction of the figure print as 0 in the text report."""
 
 # ---------------------------------------------------------------------------
-# output (spec/output.md)
+# output (docs/formats/json.md)
 # ---------------------------------------------------------------------------
 
 def _num(x: float | None) -> float | None:
@@ -34,7 +34,7 @@ def _pair(p: Array | None) -> list[float] | None:
 
 
 def curvature_json(sol: Solution) -> dict[str, Any] | None:
-    """The ``curvature`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``curvature`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     Keyed by link id, for every moving link that turns: ``velocity_pole``,
     ``inflection_pole``, ``inflection_diameter``, ``acceleration_center``,
@@ -102,7 +102,7 @@ def curvature_json(sol: Solution) -> dict[str, Any] | None:
 
 
 def paths_json(sol: Solution) -> dict[str, Any] | None:
-    """The ``paths`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``paths`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     For every named point of a moving link: ``radius_of_curvature`` (a
     magnitude) and ``center_of_curvature`` of its absolute path, both

@@ -31,7 +31,7 @@ def _canonical(d: Array) -> list[float]:
 
 
 def instant_centers_json(sol: Solution) -> dict[str, Any] | None:
-    """The ``instant_centers`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``instant_centers`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     Keys ``"i-j"`` (lower id first); ``{"position": [x, y]}``, or
     ``{"direction": [dx, dy]}`` (a unit vector) for a center at infinity; plus
