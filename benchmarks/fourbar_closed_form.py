@@ -24,7 +24,7 @@ normals of the unknown directions)::
 and every point of a link follows from Eqs. 3.4 and 4.5:
 ``V_P = V_O + ω × R_PO``, ``A_P = A_O + α × R_PO - ω² R_PO``.
 
-It produces the same columns as ``graphkin sweep`` (``spec/sweep.md``) so that
+It produces the same columns as ``graphkin sweep`` (``docs/formats/sweep-csv.md``) so that
 both do the same work when they are timed against each other.
 """
 

@@ -50,7 +50,7 @@ from graphkin.kinematics.sweep.batch import Batch, batch
 from graphkin.mechanisms import Mechanism, from_dict, load, loads
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
-__version__ = "0.1.0"
+__version__ = "0.1.0"  # the one source of the version (pyproject.toml reads it)
 
 __all__ = [
     "examples",

@@ -39,12 +39,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
+    from graphkin import __version__
 
-    try:
-        return f"graphkin {version('graphkin')}"
-    except PackageNotFoundError:
-        return "graphkin (not installed)"
+    return f"graphkin {__version__}"
 
 
 def main(argv: Sequence[str] | None = None) -> int:

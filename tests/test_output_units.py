@@ -90,7 +90,7 @@ def test_sweep_units_row_and_conversion(capsys):
     plain = list(csv.reader(io.StringIO(capsys.readouterr().out)))
     assert main(["sweep", FOURBAR, "--count", "4", "--units", "ft", "--units-row"]) == 0
     rows = list(csv.reader(io.StringIO(capsys.readouterr().out)))
-    assert rows[0] == plain[0]  # the column names of spec/sweep.md are unchanged
+    assert rows[0] == plain[0]  # the column names of docs/formats/sweep-csv.md are unchanged
     unit = dict(zip(rows[0], rows[1]))
     assert (unit["drive"], unit["angle_3"], unit["omega_3"], unit["alpha_3"]) == \
         ("deg", "deg", "rad/s", "rad/s^2")

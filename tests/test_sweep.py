@@ -1,4 +1,4 @@
-"""Sweeps: the same constructions on whole arrays of drive values (``spec/sweep.md``).
+"""Sweeps: the same constructions on whole arrays of drive values (``docs/formats/sweep-csv.md``).
 
 Every number a sweep gives is checked against something computed another way:
 single solves of the mechanism with its drive set to that value (through
@@ -137,7 +137,7 @@ def _compare_with_solve(sw, data: dict, i: int, rel: float = REL) -> None:
 # ---------------------------------------------------------------------------
 
 def test_columns_and_order_follow_the_spec(bench: graphkin.Mechanism) -> None:
-    # spec/sweep.md: drive; per link (file order) angle, omega, alpha; per named point
+    # docs/formats/sweep-csv.md: drive; per link (file order) angle, omega, alpha; per named point
     # (file order, once) x, y, vx, vy, ax, ay -- built here from the TOML itself
     data = _data(BENCH)
     want = ["drive"]
@@ -614,7 +614,7 @@ def test_importing_the_sweep_does_not_import_matplotlib() -> None:
 
 
 def test_extra_columns_at_the_file_posture_of_example_3_1(examples: Path) -> None:
-    # the first posture of a default sweep is the file's: spec/examples/expected.toml gives
+    # the first posture of a default sweep is the file's: tests/data/spec/expected.toml gives
     # I13 = (5.42613, -9.39833), I24 = (-11.0627, 0), the inflection diameter of link 3,
     # 40.3807 in, and the radius of curvature of E's path, 4.320695 in (Example 3.1)
     mech = graphkin.load(examples / "ex3_1_fourbar.toml")

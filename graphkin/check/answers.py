@@ -549,7 +549,7 @@ def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
 
 
 def load_answers(path: str | Path, mech: Mechanism) -> Answers:
-    """Read an answers file (TOML, see ``spec/answers.md``) for a mechanism.
+    """Read an answers file (TOML, see ``docs/formats/answers.md``) for a mechanism.
 
     Raises
     ------

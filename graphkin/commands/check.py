@@ -1,7 +1,7 @@
 """``graphkin check FILE ANSWERS... [--drawing D] [--csv OUT]``: mark hand solutions.
 
 Exit status 0 when every answer is within tolerance, 1 when any is not, 2
-when a file cannot be read (``spec/answers.md``).
+when a file cannot be read (``docs/formats/answers.md``).
 """
 
 from __future__ import annotations

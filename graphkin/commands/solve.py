@@ -20,7 +20,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                        description="Solve a mechanism at the file's posture: positions, and "
                                    "velocities and accelerations when the file gives rates.")
     p.add_argument("file", help="mechanism file (TOML, see the README)")
-    p.add_argument("--json", action="store_true", help="print the JSON of spec/output.md")
+    p.add_argument("--json", action="store_true",
+                   help="print the result as JSON (docs/formats/json.md)")
     p.add_argument("--steps", action="store_true",
                    help="also list every construction step with its vector equation")
     p.add_argument("--units", default=None, metavar="UNITS",

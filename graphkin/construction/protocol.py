@@ -101,6 +101,26 @@ class Construction:
     def __len__(self) -> int:
         return len(self.steps)
 
+    def __repr__(self) -> str:
+        """A short summary: the title, the number of steps by role, the results (never raises).
+
+        >>> Construction(title="velocity polygon")
+        <Construction 'velocity polygon': 0 steps>
+        """
+        try:
+            head = f"<Construction {self.title!r}: {len(self.steps)} steps"
+            if not self.steps:
+                return head + ">"
+            roles: dict[str, int] = {}
+            for s in self.steps:
+                roles[str(s.role)] = roles.get(str(s.role), 0) + 1
+            counts = ", ".join(f"{n} {r}" for r, n in roles.items())
+            results = [o for s in self.steps if str(s.role) == "result" for o in s.outputs]
+            more = f"; results {' '.join(results[:12])}{' …' if len(results) > 12 else ''}"
+            return f"{head} ({counts}){more if results else ''}>"
+        except Exception:  # a repr never raises
+            return f"<Construction at {id(self):#x}>"
+
     def __iter__(self) -> Iterator[Step]:
         return iter(self.steps)
 

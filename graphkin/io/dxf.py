@@ -1,4 +1,4 @@
-"""DXF in and out (optional: ``pip install graphkin[dxf]``, which brings ezdxf).
+"""DXF in and out, with ezdxf (imported only when a DXF is read or written).
 
 :func:`write_dxf` writes a construction (the posture, or the velocity or
 acceleration polygon, whole or up to a step) as a drawing a student can go on
@@ -50,7 +50,8 @@ def require_ezdxf() -> Any:
     try:
         import ezdxf
     except ImportError:
-        raise InputError("DXF needs ezdxf: pip install 'graphkin[dxf]'") from None
+        raise InputError("DXF needs ezdxf, a dependency of graphkin: pip install ezdxf") \
+            from None
     return ezdxf
 
 

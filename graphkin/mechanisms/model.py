@@ -1,4 +1,4 @@
-"""The mechanism as described by a mechanism file (``spec/format.md``).
+"""The mechanism as described by a mechanism file (``docs/formats/mechanism.md``).
 
 Plain frozen values: links with their points in their own coordinates, pins
 (a point name shared by links), sliders, slots, drives and rates.  Inside
@@ -220,6 +220,31 @@ class Mechanism:
     source: str = "<mechanism>"
     line_points: frozenset[str] = frozenset()
     """Point names the file uses to define a slider's, slot's or rolling surface's line."""
+
+    def __repr__(self) -> str:
+        """A short summary: title, links, pins, pairs, drives (never raises).
+
+        >>> import graphkin
+        >>> graphkin.examples.fourbar()  # doctest: +ELLIPSIS
+        <Mechanism 'Four-bar linkage ...': links 1 2 3 4, pins A D B C, drive link 2 at 120°, ...>
+        """
+        try:
+            parts = [f"links {' '.join(self.links)}"]
+            if self.pins:
+                parts.append(f"pins {' '.join(p.name for p in self.pins)}")
+            slots = [s for s in self.slots if not s.key.startswith("rolling")]
+            for what, items in (("slider", self.sliders), ("slot", slots),
+                                ("rolling contact", self.rolling)):
+                if items:
+                    parts.append(f"{len(items)} {what}{'s' if len(items) > 1 else ''}")
+            for d in self.drives:
+                at = (f"{math.degrees(d.value):.6g}°" if d.kind == "angle"
+                      else f"{d.value:.6g} {self.length_unit}")
+                parts.append(f"drive link {d.link} at {at}")
+            parts.append(f"lengths in {self.length_unit}")
+            return f"<Mechanism {self.title or self.source!r}: {', '.join(parts)}>"
+        except Exception:  # a repr never raises
+            return f"<Mechanism at {id(self):#x}>"
 
     @cached_property
     def moving(self) -> list[str]:

@@ -1,4 +1,4 @@
-"""What graphkin reports: the JSON of ``spec/output.md`` and the textbook-style text report.
+"""What graphkin reports: the JSON of ``docs/formats/json.md`` and the textbook-style text report.
 
 One layer builds every report from the result objects, with one formatter
 (:mod:`graphkin.text`) and one choice of units (:class:`OutputUnits`):

@@ -1,4 +1,4 @@
-"""The instant centers in the JSON and in the text report (``spec/output.md``).
+"""The instant centers in the JSON and in the text report (``docs/formats/json.md``).
 
 References
 ----------
@@ -40,7 +40,7 @@ def _canonical(d: Array) -> list[float]:
 
 def instant_centers_json(sol: Solution, units: OutputUnits | None = None
                          ) -> dict[str, Any] | None:
-    """The ``instant_centers`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``instant_centers`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     Keys ``"i-j"`` (lower id first); ``{"position": [x, y]}``, or
     ``{"direction": [dx, dy]}`` (a unit vector) for a center at infinity; plus

@@ -1,6 +1,6 @@
-"""The units of a sweep's CSV columns (``spec/sweep.md``), and the columns in other units.
+"""The units of a sweep's CSV columns (``docs/formats/sweep-csv.md``), and the columns in other units.
 
-The column names of ``spec/sweep.md`` stay as they are (``omega_3``, not
+The column names of ``docs/formats/sweep-csv.md`` stay as they are (``omega_3``, not
 ``omega_3 [rad/s]``) so that every reader of the CSV keeps working; the
 units go in an optional second line (``graphkin sweep --units-row``), which
 ``pandas.read_csv(f, header=[0, 1])`` or a spreadsheet reads as a second

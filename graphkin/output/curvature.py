@@ -1,4 +1,4 @@
-"""Curvature and path curvature in the JSON and in the text report (``spec/output.md``).
+"""Curvature and path curvature in the JSON and in the text report (``docs/formats/json.md``).
 
 References
 ----------
@@ -40,7 +40,7 @@ def _units(sol: Solution, units: OutputUnits | None) -> OutputUnits:
 
 
 def curvature_json(sol: Solution, units: OutputUnits | None = None) -> dict[str, Any] | None:
-    """The ``curvature`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``curvature`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     Keyed by link id, for every moving link that turns: ``velocity_pole``,
     ``inflection_pole``, ``inflection_diameter``, ``acceleration_center``,
@@ -101,7 +101,7 @@ def curvature_json(sol: Solution, units: OutputUnits | None = None) -> dict[str,
 
 
 def paths_json(sol: Solution, units: OutputUnits | None = None) -> dict[str, Any] | None:
-    """The ``paths`` section of ``graphkin solve --json`` (``spec/output.md``).
+    """The ``paths`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     For every named point of a moving link: ``radius_of_curvature`` (a
     magnitude) and ``center_of_curvature`` of its absolute path, both

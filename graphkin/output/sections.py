@@ -1,7 +1,7 @@
 """The sections a report has beyond the posture and its rates, in the order they are printed.
 
 Each section is built from the result objects of one part of the analysis
-and gives its JSON object (a key of ``spec/output.md``) and its part of the
+and gives its JSON object (a key of ``docs/formats/json.md``) and its part of the
 text report.  A new kind of result adds a module to :mod:`graphkin.output`
 (``graphkin/output/forces.py`` for the force analysis of Chs. 11-12: a
 ``forces_json(sol, units)`` and a ``forces_text(sol, units)``) and one

@@ -1,4 +1,4 @@
-"""The posture and its rates: the JSON object of ``spec/output.md`` and the text report.
+"""The posture and its rates: the JSON object of ``docs/formats/json.md`` and the text report.
 
 References
 ----------
@@ -47,7 +47,7 @@ def finite(x: Any) -> Any:
 
 
 def solution_to_dict(sol: Solution, units: OutputUnits | None = None) -> dict[str, Any]:
-    """The ``graphkin solve --json`` object of ``spec/output.md`` (and a few extra keys).
+    """The ``graphkin solve --json`` object of ``docs/formats/json.md`` (and a few extra keys).
 
     ``units`` (default: the file's length unit, seconds, radians per second)
     converts every length, velocity, acceleration and angular rate, and is

@@ -68,7 +68,7 @@ class OutputUnits:
         return cls(**units)
 
     def json(self) -> dict[str, str]:
-        """The ``units`` object of the JSON: spec/output.md's keys, then one a quantity."""
+        """The ``units`` object of the JSON: docs/formats/json.md's keys, then one a quantity."""
         return {"length": self.length, "time": "s", "angle": "deg",
                 "position": self.length, "velocity": self.velocity,
                 "acceleration": self.acceleration, "omega": self.omega, "alpha": self.alpha}

@@ -342,7 +342,7 @@ class Batch:
     dimensions : dict
         ``"links.<link>.<point>"`` -> ``(M, 2)``: the varied points, one row per design.
     columns : dict
-        The columns of ``spec/sweep.md``, each of shape ``(M, N)``: row ``m`` is
+        The columns of ``docs/formats/sweep-csv.md``, each of shape ``(M, N)``: row ``m`` is
         what ``sweep`` gives design ``m``; NaN where it cannot be assembled.
     valid, assembled : ndarray of bool, shape (M, N)
         As for a :class:`~graphkin.kinematics.sweep.Sweep`, per design.

@@ -1,4 +1,4 @@
-"""The CSV columns of ``spec/sweep.md`` read from an evaluated block of postures.
+"""The CSV columns of ``docs/formats/sweep-csv.md`` read from an evaluated block of postures.
 
 References
 ----------
@@ -81,7 +81,7 @@ def _recipe(eng: _Engine) -> list[tuple[str, str, int, str, int]] | None:
 
 
 def _columns(eng: _Engine, blk: _Block) -> dict[str, Array]:
-    """The columns of ``spec/sweep.md`` for one block."""
+    """The columns of ``docs/formats/sweep-csv.md`` for one block."""
     mech = eng.mech
     dv = blk.dv
     n = len(dv)

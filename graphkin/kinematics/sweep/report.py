@@ -39,7 +39,7 @@ class Sweep:
     values : ndarray, shape (N,)
         The drive values: radians for an angle, the file's length unit for a slider.
     columns : dict
-        CSV column name (``spec/sweep.md``) -> 1-D array of length N; NaN
+        CSV column name (``docs/formats/sweep-csv.md``) -> 1-D array of length N; NaN
         where the posture cannot be assembled (and, for the rates only,
         where they are not defined).
     valid : ndarray of bool
