@@ -91,6 +91,9 @@ class Evaluator:
     Parameters
     ----------
     sol : Solution
+    accelerations : dict, optional
+        Point name -> acceleration image ``[x, y]`` read off a polygon redrawn
+        with a mistake: what the student's pencil gives for every later point.
 
     Examples
     --------
@@ -113,9 +116,13 @@ class Evaluator:
     array([-6.,  0.])
     """
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution, *,
+                 accelerations: dict[str, np.ndarray] | None = None) -> None:
         self.sol = sol
         self.mech = sol.mechanism
+        #: image points read off an acceleration polygon drawn with a mistake (the student's
+        #: pencil), used instead of the links' rigid motion
+        self.images = dict(accelerations or {})
         self._ic: dict[str, Any] | None = None
         self._paths: dict[str, Any] | None = None
 
@@ -188,7 +195,7 @@ class Evaluator:
             return Exact(None, np.asarray(xy, dtype=float))
         if k == "A":
             self._rates(key, acc=True)
-            xy = sol.acceleration(a[0]) - (sol.acceleration(a[1]) if len(a) == 2 else 0.0)
+            xy = self._acc(a[0]) - (self._acc(a[1]) if len(a) == 2 else 0.0)
             return Exact(None, np.asarray(xy, dtype=float))
         if k in ("An", "At"):
             self._rates(key, acc=True)
@@ -201,6 +208,11 @@ class Evaluator:
         if k == "rho":
             return Exact(self.radius(key, a[0]))
         raise InputError(f"no exact value for {key.text!r}", key=key.text)  # pragma: no cover
+
+    def _acc(self, name: str) -> np.ndarray:
+        if name in self.images:
+            return self.images[name]
+        return np.asarray(self.sol.acceleration(name), dtype=float)
 
     def common_link(self, key: Key, p: str, q: str) -> str:
         """A moving link that carries both points (the frame if only it does)."""
