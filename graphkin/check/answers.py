@@ -257,11 +257,15 @@ class Key:
         normal and tangential components of ``A_PQ``), ``Ac`` (the Coriolis
         component at a point), ``I`` (args: two link ids), ``rho`` (a point).
     args : tuple of str
+    link : str or None
+        For ``V_A4``, ``A_A4``: the link whose coincident point at A is meant
+        (the book's A4, Sec. 3.6), else None.
     """
 
     text: str
     kind: str
     args: tuple[str, ...]
+    link: str | None = field(default=None, repr=False)
 
     @property
     def quantity(self) -> str:
@@ -395,6 +399,10 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
             raise InputError(f"no point {rest!r}; points are {', '.join(names)}", key=raw,
                              file=file)
         pair = _split_pair(rest, names, raw, "points", file)
+        if pair is None and kind in ("V", "A"):
+            on = point_on_link(rest, mech)
+            if on is not None:
+                return Key(raw, kind, (on[0],), link=on[1])
         if pair is None:
             raise InputError(f"{rest!r} is not a point or a pair of points; points are "
                              f"{', '.join(names)}", key=raw, file=file)
@@ -402,6 +410,33 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
             raise InputError("a difference needs two different points", key=raw, file=file)
         return Key(raw, kind, pair)
     raise InputError(f"unknown answer key; {KEY_HELP}", key=raw, file=file)
+
+
+def point_on_link(text: str, mech: Mechanism) -> tuple[str, str] | None:
+    """``"A4"`` -> ``("A", "4")``: the point of link 4 that coincides with A (Sec. 3.6).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [2, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 90
+    ... ''')
+    >>> point_on_link("B1", mech), point_on_link("B3", mech)
+    (('B', '1'), None)
+    """
+    text = text.replace("@", "")
+    for i in range(len(text) - 1, 0, -1):
+        name, lid = text[:i], text[i:]
+        if name in mech.point_names and lid in mech.links:
+            return name, lid
+    return None
 
 
 def _id_order(lid: str) -> tuple[int, int | str]:

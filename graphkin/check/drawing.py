@@ -459,6 +459,7 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         a, b = find(int(index[2 * k])), find(int(index[2 * k + 1]))
         parent[a] = b
     V = np.array(verts)
+    root_of_end = np.array([find(int(i)) for i in index])
 
     def nearest(at: tuple[float, float], among: list[int] | None = None) -> tuple[int, float]:
         ids = among if among is not None else list(range(len(V)))
@@ -466,29 +467,38 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         k = int(np.argmin(d))
         return ids[k], float(d[k])
 
+    def nearest_end(at: tuple[float, float], root: int) -> tuple[np.ndarray, float]:
+        """The segment end nearest a label, among the ends of one polygon (exact, unclustered)."""
+        mine = ends[root_of_end == root]
+        d = np.hypot(*(mine - np.asarray(at)).T)
+        k = int(np.argmin(d))
+        return mine[k], float(d[k])
+
     out: list[Polygon] = []
     for text, at in data.labels:
         kind = _pole_kind(text)
         if not kind:
             continue
         vi, _ = nearest(at)
-        comp = [i for i in range(len(V)) if find(i) == find(vi)]
+        root = find(vi)
+        comp = [i for i in range(len(V)) if find(i) == root]
         cv = V[comp]
         size = float(np.hypot(*(cv.max(axis=0) - cv.min(axis=0)))) or longest
-        poly = Polygon(kind, (float(V[vi][0]), float(V[vi][1])), scale=data.scale,
+        pxy, _ = nearest_end(at, root)
+        poly = Polygon(kind, (float(pxy[0]), float(pxy[1])), scale=data.scale,
                        unit=data.unit)
         best: dict[str, tuple[float, tuple[float, float]]] = {}
         lo, hi = cv.min(axis=0) - 0.1 * size, cv.max(axis=0) + 0.1 * size
         for t2, at2 in data.labels:
             if _pole_kind(t2):
                 continue
-            j, d = nearest(at2, comp)
+            exy, d = nearest_end(at2, root)
             if d > 0.12 * size:
                 if np.all(np.asarray(at2) >= lo) and np.all(np.asarray(at2) <= hi):
                     poly.ignored.append(t2)
                 continue
             if t2 not in best or d < best[t2][0]:
-                best[t2] = (d, (float(V[j][0]), float(V[j][1])))
+                best[t2] = (d, (float(exy[0]), float(exy[1])))
         poly.points = {t2: xy for t2, (_, xy) in best.items()}
         out.append(poly)
     return out
@@ -562,6 +572,19 @@ def _point_name(label: str, upper: dict[str, str]) -> str | None:
     return upper.get(text.upper())
 
 
+def _on_link(label: str, mech: Any) -> tuple[str, str] | None:
+    """``a′₄`` -> ``("A", "4")``: the image of the coincident point A4 (Sec. 3.6)."""
+    from graphkin.check.answers import point_on_link
+
+    text = re.sub(r"[\s'′’\"″_{}]", "", label.translate(_SUBSCRIPTS))
+    upper = {n.upper(): n for n in mech.point_names}
+    for i in range(len(text) - 1, 0, -1):
+        name = upper.get(text[:i].upper())
+        if name is not None:
+            return point_on_link(name + text[i:], mech)
+    return None
+
+
 def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
                   tolerance: CheckTolerance | None = None,
                   diagnoser: Diagnoser | None = None,
@@ -632,19 +655,32 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     upper = {n.upper(): n for n in mech.point_names if n not in helpers}
     pole = np.array(poly.pole)
     drawn: dict[str, np.ndarray] = {}
+    on_link: dict[str, tuple[str, str]] = {}
     ignored = list(poly.ignored)
+    helper_names = {n.upper() for n in helpers}
     for lab, xy in poly.points.items():
         name = _point_name(lab, upper)
         if name is None:
-            ignored.append(lab)
-        else:
+            on = _on_link(lab, mech)
+            if on is not None and on[0] not in helpers:
+                name = f"{on[0]}{on[1]}"
+                on_link[name] = on
+            elif _point_name(lab, {h: h for h in helper_names}) is None:
+                ignored.append(lab)        # slot-definition points are never named
+        if name is not None:
             drawn.setdefault(name, np.array(xy) - pole)
     if not drawn:
         raise InputError("no image points labelled with the mechanism's point names "
                          f"({', '.join(n.lower() for n in upper.values())}) in the {diagram} "
                          "polygon", file=path_s)
     ev = diag.ev
-    exact_of = sol.velocity if diagram == "velocity" else sol.acceleration
+    plain = sol.velocity if diagram == "velocity" else sol.acceleration
+
+    def exact_of(name: str) -> np.ndarray:
+        if name in on_link:
+            return ev.on_link(*on_link[name], "V" if diagram == "velocity" else "A")
+        return np.asarray(plain(name), dtype=float)
+
     stated = scale or poly.scale
     lu = mech.length_unit
     fitted: str | None = None
@@ -684,12 +720,14 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     rows: list[Row] = []
     givens: list[Given] = []
     letter = "V" if diagram == "velocity" else "A"
-    for name in mech.point_names:
-        if name not in drawn:
-            continue
+    order = [n for n in mech.point_names if n in drawn] + [n for n in drawn if n in on_link]
+    for name in order:
         z = complex(*drawn[name]) * turn
         vec = np.array([z.real, z.imag])
-        key = Key(f"{letter}_{name}", letter, (name,))
+        if name in on_link:
+            key = Key(f"{letter}_{name}", letter, (on_link[name][0],), link=on_link[name][1])
+        else:
+            key = Key(f"{letter}_{name}", letter, (name,))
         mag = float(np.hypot(*vec))
         direction = math.degrees(math.atan2(vec[1], vec[0])) if mag > 0 else None
         raw = f"{fmt(mag / factor)} {unit}" + (f" at {direction:.2f}°" if direction is not None
@@ -704,7 +742,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         else:
             row = check_given(ev, diag, given, tol)
             if mm_per_unit is not None:
-                row.error += f"; {dist / abs(turn) * mm_per_unit:.2g} mm on the drawing"
+                mm = dist / abs(turn) * mm_per_unit
+                row.error += f"; {mm if mm >= 5e-4 else 0.0:.2g} mm on the drawing"
             else:
                 row.error += f"; {dist / factor:.3g} {unit} from exact"
         rows.append(row)

@@ -189,6 +189,9 @@ class Evaluator:
         if k == "R":
             xy = sol.position(a[0]) - (sol.position(a[1]) if len(a) == 2 else 0.0)
             return Exact(None, np.asarray(xy, dtype=float))
+        if k in ("V", "A") and key.link is not None:
+            self._rates(key, acc=k == "A")
+            return Exact(None, self.on_link(a[0], key.link, k))
         if k == "V":
             self._rates(key)
             xy = sol.velocity(a[0]) - (sol.velocity(a[1]) if len(a) == 2 else 0.0)
@@ -208,6 +211,24 @@ class Evaluator:
         if k == "rho":
             return Exact(self.radius(key, a[0]))
         raise InputError(f"no exact value for {key.text!r}", key=key.text)  # pragma: no cover
+
+    def on_link(self, name: str, lid: str, kind: str) -> np.ndarray:
+        """Velocity (``V``) or acceleration (``A``) of the point of link ``lid`` at ``name``.
+
+        ``V = V_O + ω × R`` and ``A = A_O + α × R − ω² R`` of the link's motion
+        at the point's place (Eqs. 3.4, 4.5): the coincident point A4 of Sec. 3.6.
+        """
+        st = self.sol.links[lid]
+        r = np.asarray(self.sol.position(name), dtype=float) - np.asarray(st.origin, dtype=float)
+        if st.omega is None or st.origin_velocity is None:
+            raise InputError("the mechanism file gives no rates", key=f"{kind}_{name}{lid}")
+        w = float(st.omega)
+        if kind == "V":
+            return np.asarray(st.origin_velocity, dtype=float) + w * perp(r)
+        if st.alpha is None or st.origin_acceleration is None:
+            raise InputError("the mechanism file gives no rates", key=f"{kind}_{name}{lid}")
+        return (np.asarray(st.origin_acceleration, dtype=float) + float(st.alpha) * perp(r)
+                - w**2 * r)
 
     def _acc(self, name: str) -> np.ndarray:
         if name in self.images:
