@@ -271,7 +271,8 @@ class Diagnoser:
                 yield (Mistake("unit", f"too small by a factor of {label}: radians written as "
                                        "degrees", f"unit:{label}"), Exact(exact.value / f))
             return
-        if with_sense and not (shape == "scalar" and given.signed):
+        if with_sense and not (shape == "scalar" and given.signed) \
+                and not (shape == "vector" and given.direction is not None):
             return
         sign = -1.0 if with_sense else 1.0
         pre = "sense reversed and " if with_sense else ""

@@ -142,6 +142,8 @@ def _transform(text: str | None) -> np.ndarray:
     m = np.eye(3)
     for name, args in re.findall(r"(\w+)\s*\(([^)]*)\)", text or ""):
         a = _floats(args)
+        if not all(math.isfinite(x) for x in a):
+            return np.full((3, 3), np.nan)
         t = np.eye(3)
         if name == "matrix" and len(a) == 6:
             t = np.array([[a[0], a[2], a[4]], [a[1], a[3], a[5]], [0, 0, 1]])
@@ -248,7 +250,8 @@ def _walk(el: ET.Element, path: Path, parent: np.ndarray, depth: int = 0):  # ty
         if depth > MAX_DEPTH:
             raise InputError(f"not a readable SVG file: elements nested more than {MAX_DEPTH} "
                              "deep", file=str(path))
-        mat = mat @ _transform(el.get("transform"))
+        with np.errstate(over="ignore", invalid="ignore"):
+            mat = mat @ _transform(el.get("transform"))
         if not np.all(np.isfinite(mat)):
             raise InputError("not a readable SVG file: a transform is not finite",
                              file=str(path))
@@ -300,7 +303,8 @@ def read_svg(path: str | Path) -> DrawingData:
     unit_scale, data.unit = _unit_scale(root)
 
     def put(mat: np.ndarray, x: float, y: float) -> tuple[float, float]:
-        p = mat @ np.array([x, y, 1.0])
+        with np.errstate(over="ignore", invalid="ignore"):
+            p = mat @ np.array([x, y, 1.0])
         if not (math.isfinite(p[0]) and math.isfinite(p[1])):
             raise InputError("not a readable SVG file: a coordinate is not finite",
                              file=str(path))
