@@ -359,6 +359,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
             s = name + s[len(g):]
     names = list(mech.point_names)
     links = list(mech.links)
+    shown = [n for n in names if n not in mech.helper_points]  # never slot-definition points
 
     m = re.fullmatch(r"(theta|omega|alpha)_?(.+)", s)
     if m:
@@ -370,7 +371,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
     if m:
         p = m.group(1)
         if p not in names:
-            raise InputError(f"no point {p!r}; points are {', '.join(names)}", key=raw, file=file)
+            raise InputError(f"no point {p!r}; points are {', '.join(shown)}", key=raw, file=file)
         return Key(raw, "rho", (p,))
     m = re.fullmatch(r"I_?(.+)", s)
     if m:
@@ -396,7 +397,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
                                  f"A_{rest}B^{kind[-1]}", key=raw, file=file)
             return Key(raw, kind, (rest,))
         if kind == "Ac":
-            raise InputError(f"no point {rest!r}; points are {', '.join(names)}", key=raw,
+            raise InputError(f"no point {rest!r}; points are {', '.join(shown)}", key=raw,
                              file=file)
         pair = _split_pair(rest, names, raw, "points", file)
         if pair is None and kind in ("V", "A"):
@@ -405,7 +406,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
                 return Key(raw, kind, (on[0],), link=on[1])
         if pair is None:
             raise InputError(f"{rest!r} is not a point or a pair of points; points are "
-                             f"{', '.join(names)}", key=raw, file=file)
+                             f"{', '.join(shown)}", key=raw, file=file)
         if pair[0] == pair[1]:
             raise InputError("a difference needs two different points", key=raw, file=file)
         return Key(raw, kind, pair)

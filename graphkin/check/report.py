@@ -196,8 +196,9 @@ class Report:
     def text(self) -> str:
         """The report as a table, a hint under each wrong answer, and a summary line."""
         head = ("answer", "given", "exact", "error", "verdict", "decided by")
-        table = [head] + [tuple(printable(c) for c in (r.key, r.given, r.exact, r.error,
-                                                         r.verdict, r.rule)) for r in self.rows]
+        table = [head] + [tuple(printable(c) for c in (
+            r.key, r.given, r.exact, "" if r.verdict == UNREADABLE else r.error, r.verdict,
+            r.rule)) for r in self.rows]
         widths = [max(len(t[i]) for t in table) for i in range(len(head))]
         lines = []
         if self.title:
