@@ -24,7 +24,7 @@ def test_json_has_the_contract_keys_and_no_nan(capsys):
     text = capsys.readouterr().out
     assert "NaN" not in text and "Infinity" not in text
     data = json.loads(text)
-    # docs/formats/json.md's three keys, then the unit of each quantity (issue 13: JSON carries units)
+    # the JSON format's three keys, then the unit of each quantity (issue 13: JSON has units)
     assert data["units"] == {"length": "in", "time": "s", "angle": "deg", "position": "in",
                              "velocity": "in/s", "acceleration": "in/s^2", "omega": "rad/s",
                              "alpha": "rad/s^2"}

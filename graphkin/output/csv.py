@@ -1,4 +1,4 @@
-"""The units of a sweep's CSV columns (``docs/formats/sweep-csv.md``), and the columns in other units.
+"""The units of a sweep's CSV columns (``docs/formats/sweep-csv.md``); columns in other units.
 
 The column names of ``docs/formats/sweep-csv.md`` stay as they are (``omega_3``, not
 ``omega_3 [rad/s]``) so that every reader of the CSV keeps working; the
