@@ -34,8 +34,13 @@ def test_every_toml_example_in_the_docs_is_valid(page, block):
         graphkin.from_dict(data, source=str(page))   # a whole mechanism: it loads
     elif set(data) & {"A", "B", "C"}:
         check_keys(data, VECTOR, str(page))
-    elif "links" not in data and any(k in data for k in ("omega3", "theta3", "V_E")):
-        pass                             # answers files: checked in test_answers_file
+    elif "links" not in data and any(k in data for k in ("omega3", "theta3", "V_E",
+                                                          "tolerance", "student")):
+        # answers files (their keys are checked in tests/check): the tolerance table parses
+        if "tolerance" in data:
+            from graphkin.check.answers import CheckTolerance
+
+            CheckTolerance.parse(data["tolerance"], file=str(page))
     else:
         # a fragment of a mechanism file: every key is one the format knows
         from graphkin.keys import MECHANISM
