@@ -19,7 +19,7 @@ import graphkin
 
 PACKAGE = Path(graphkin.__file__).parent
 
-BASE = {"errors", "tolerance", "units", "text"}
+BASE = {"errors", "tolerance", "units", "text", "keys", "progress"}
 """Leaf modules every layer may use."""
 
 MODEL = BASE | {"geometry", "construction", "mechanisms"}
@@ -29,6 +29,8 @@ ALLOWED: dict[str, set[str]] = {
     "tolerance": set(),
     "units": {"errors"},
     "text": set(),
+    "keys": {"errors"},
+    "progress": set(),
     "geometry": BASE,
     "construction": BASE | {"geometry"},
     "mechanisms": BASE | {"geometry"},
