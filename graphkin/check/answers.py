@@ -328,23 +328,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> parse_key("V_CB", mech)
     Key(text='V_CB', kind='V', args=('C', 'B'))
     >>> parse_key("omega3", mech).args, parse_key("I13", mech).args
@@ -745,18 +729,7 @@ def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... units = { length = "in" }
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = "900 rev/min"
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ans = loads_answers('V_B = "31.4 ft/s at -150 deg"', mech)
     >>> g = ans.given[0]
     >>> round(g.value, 1), g.direction, g.unit

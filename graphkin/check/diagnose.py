@@ -133,20 +133,9 @@ class Diagnoser:
     --------
     >>> import graphkin
     >>> from graphkin.check.answers import loads_answers
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... omega = 3
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ev = Evaluator(graphkin.solve(mech))
-    >>> ans = loads_answers('omega2 = "3 rad/s cw"', mech)
+    >>> ans = loads_answers('omega2 = "900 rev/min cw"', mech)  # the file's ω2 is ccw
     >>> Diagnoser(ev).diagnose(ans.given[0], CheckTolerance()).kind
     'sense'
     """

@@ -99,21 +99,10 @@ class Evaluator:
     --------
     >>> import graphkin
     >>> from graphkin.check.answers import parse_key
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... omega = 3
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ev = Evaluator(graphkin.solve(mech))
-    >>> ev.value(parse_key("V_B", mech)).xy.round(6)   # ω × R = 3 k × (0, 2)
-    array([-6.,  0.])
+    >>> ev.value(parse_key("V_B", mech)).xy.round(4)   # ω2 k × R_BA, 94.25 rad/s × 4 in ∠120°
+    array([-326.4839, -188.4956])
     """
 
     def __init__(self, sol: Solution, *,

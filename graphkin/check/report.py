@@ -329,19 +329,7 @@ def check(sol: Solution, answers: Answers, tolerance: CheckTolerance | None = No
 
     >>> import graphkin
     >>> from graphkin.check import loads_answers
-    >>> mech = graphkin.loads('''
-    ... units = { length = "in" }
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = "900 rev/min"
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> rep = check(mech.solve(), loads_answers('V_B = "31.4 ft/s at -150 deg"', mech))
     >>> rep.ok, rep.rows[0].exact
     (True, '31.42 ft/s at -150.00°')

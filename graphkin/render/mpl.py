@@ -435,25 +435,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     --------
     >>> import graphkin
     >>> from graphkin.render import draw
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... [assembly]
-    ... C = [15, 10]
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> d = draw(mech, "posture")
     >>> d["B"].get_xydata().round(4).tolist()     # B = A + 4 (cos 120°, sin 120°)
     [[-2.0, 3.4641]]

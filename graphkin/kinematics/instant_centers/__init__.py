@@ -57,27 +57,7 @@ Examples
 The four-bar of Examples 3.1 and 3.13:
 
 >>> import graphkin
->>> sol = graphkin.loads('''
-... units = { length = "in" }
-... [links.1]
-... A = [0, 0]
-... D = [10, 0]
-... [links.2]
-... A = [0, 0]
-... B = [4, 0]
-... [links.3]
-... B = [0, 0]
-... C = [18, 0]
-... [links.4]
-... D = [0, 0]
-... C = [11, 0]
-... [drive]
-... link = 2
-... angle = 120
-... omega = "900 rev/min"
-... [assembly]
-... C = [15, 10]
-... ''').solve()
+>>> sol = graphkin.examples.fourbar().solve()
 >>> ic = instant_centers(sol)
 >>> ic.order
 ['I12', 'I14', 'I23', 'I34', 'I13', 'I24']

@@ -557,37 +557,16 @@ def instant_centers(sol: Solution, *, tol: Tolerance | None = None,
 
     Examples
     --------
-    The inverted slider-crank of Fig. 3.26: the block 3 slides on the rod 4,
+    The inverted slider-crank of Example 3.3: the block 3 slides on the rod 4,
     so I34 is at infinity, perpendicular to the rod.
 
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... E = [0, 0]
-    ... D = [14, 0]
-    ... [links.2]
-    ... E = [0, 0]
-    ... A = [3, 0]
-    ... [links.3]
-    ... A = [0, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... L1 = [0, 0]
-    ... L2 = [1, 0]
-    ... [[sliders]]
-    ... link = 3
-    ... on = 4
-    ... point = "A"
-    ... line = ["L1", "L2"]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... ''').solve()
+    >>> sol = graphkin.examples.inverted_slider_crank().solve()
     >>> ic = instant_centers(sol)
     >>> ic["I34"].how.value, bool(ic["I34"].is_ideal)
     ('primary', True)
-    >>> [round(float(v), 4) + 0.0 for v in ic["I13"].xy]  # on x = 0 and ⊥ DA through D
-    [0.0, -65.3333]
+    >>> [round(float(v), 4) for v in ic["I13"].xy]  # on EA (30°) and ⊥ the slide through D
+    [15.1508, 8.7473]
     """
     mech = sol.mechanism
     for c in contacts:
@@ -606,16 +585,7 @@ def instant_center(sol: Solution | InstantCenters, i: object, j: object) -> Arra
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
+    >>> sol = graphkin.examples.fourbar().solve()
     >>> instant_center(sol, 2, 1)
     array([0., 0., 1.])
     """

@@ -215,16 +215,7 @@ def kinematic_coefficient(sol: Solution | InstantCenters, output: object,
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
+    >>> sol = graphkin.examples.fourbar().solve()
     >>> float(kinematic_coefficient(sol, 2))
     1.0
     """
@@ -296,16 +287,7 @@ def mechanical_advantage(sol: Solution | InstantCenters, output: object,
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
+    >>> sol = graphkin.examples.fourbar().solve()
     >>> float(mechanical_advantage(sol, 2))
     1.0
     """
