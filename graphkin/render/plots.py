@@ -178,30 +178,10 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... E = [6, -3]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
-    >>> fig = sweep_figure(mech.sweep(count=90), "omega,path:E")
+    >>> mech = graphkin.examples.crank_rocker()
+    >>> fig = sweep_figure(mech.sweep(count=90), "omega,path:P")
     >>> [a.get_gid() for a in fig.axes]
-    ['plot-omega', 'plot-path-E']
+    ['plot-omega', 'plot-path-P']
     """
     from matplotlib.figure import Figure
 

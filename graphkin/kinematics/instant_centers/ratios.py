@@ -93,23 +93,13 @@ def angular_velocity_ratio(sol: Solution | InstantCenters, i: object, j: object,
 
     >>> import graphkin
     >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [4, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [4, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 60
-    ... [assembly]
-    ... C = [5, 1.7]
+    ... drive = { link = 2, angle = 60 }
+    ... assembly = { C = [5, 1.7] }
+    ... [links]
+    ... 1 = { A = [0, 0], D = [4, 0] }
+    ... 2 = { A = [0, 0], B = [2, 0] }
+    ... 3 = { B = [0, 0], C = [4, 0] }
+    ... 4 = { D = [0, 0], C = [2, 0] }
     ... ''').solve()
     >>> float(angular_velocity_ratio(sol, 2, 4)), float(angular_velocity_ratio(sol, 2, 3))
     (1.0, 0.0)

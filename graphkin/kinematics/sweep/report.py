@@ -67,29 +67,10 @@ class Sweep:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
+    >>> mech = graphkin.examples.crank_rocker()
     >>> sw = mech.sweep(count=8)
     >>> sw.columns["drive"]
-    array([120., 165., 210., 255., 300., 345., 390., 435.])
+    array([ 60., 105., 150., 195., 240., 285., 330., 375.])
     >>> bool(sw.valid.all()), list(sw.columns)[:5]
     (True, ['drive', 'angle_1', 'omega_1', 'alpha_1', 'angle_2'])
     """

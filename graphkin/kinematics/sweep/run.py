@@ -104,31 +104,12 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     of its crank at 10 rad/s:
 
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 0
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
-    >>> sw = sweep(mech, count=3600)
+    >>> mech = graphkin.examples.crank_rocker()
+    >>> sw = sweep(mech, count=3600, start=0)
     >>> sw.columns["omega_3"].shape
     (3600,)
-    >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((6² + 11² - 12²)/(2·6·11))
-    95.6519
+    >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
+    128.6822
     """
     if int(count) != count or count < 1:
         raise InputError(f"the number of postures must be a whole number of at least 1, not "
