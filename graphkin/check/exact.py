@@ -290,26 +290,22 @@ class Evaluator:
 
 
 def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
-    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers`, if present."""
-    try:
-        from graphkin.output.centers import instant_centers_json
-    except ImportError:
-        return {}
-    try:
-        out = instant_centers_json(sol)
-    except (GraphkinError, ArithmeticError, ValueError, KeyError, TypeError):
-        return {}
-    return out if isinstance(out, dict) else {}
+    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers` ({} if it fails)."""
+    from graphkin.output.centers import instant_centers_json
+
+    return _section(instant_centers_json, sol)
 
 
 def _optional_paths(sol: Solution) -> dict[str, Any]:
-    """``paths_json(sol)`` of :mod:`graphkin.output.curvature`, if present."""
+    """``paths_json(sol)`` of :mod:`graphkin.output.curvature` ({} if it fails)."""
+    from graphkin.output.curvature import paths_json
+
+    return _section(paths_json, sol)
+
+
+def _section(fn: Any, sol: Solution) -> dict[str, Any]:
     try:
-        from graphkin.output.curvature import paths_json
-    except ImportError:
-        return {}
-    try:
-        out = paths_json(sol)
+        out = fn(sol)
     except (GraphkinError, ArithmeticError, ValueError, KeyError, TypeError):
         return {}
     return out if isinstance(out, dict) else {}

@@ -93,13 +93,16 @@ def angular_velocity_ratio(sol: Solution | InstantCenters, i: object, j: object,
 
     >>> import graphkin
     >>> sol = graphkin.loads('''
-    ... drive = { link = 2, angle = 60 }
-    ... assembly = { C = [5, 1.7] }
     ... [links]
     ... 1 = { A = [0, 0], D = [4, 0] }
     ... 2 = { A = [0, 0], B = [2, 0] }
     ... 3 = { B = [0, 0], C = [4, 0] }
     ... 4 = { D = [0, 0], C = [2, 0] }
+    ... [drive]
+    ... link = 2
+    ... angle = 60
+    ... [assembly]
+    ... C = [5, 1.7]
     ... ''').solve()
     >>> float(angular_velocity_ratio(sol, 2, 4)), float(angular_velocity_ratio(sol, 2, 3))
     (1.0, 0.0)
@@ -206,8 +209,8 @@ def kinematic_coefficient(sol: Solution | InstantCenters, output: object,
     --------
     >>> import graphkin
     >>> sol = graphkin.examples.fourbar().solve()
-    >>> float(kinematic_coefficient(sol, 2))
-    1.0
+    >>> round(float(kinematic_coefficient(sol, 4)), 4)  # ω4/ω2 = 49.50/94.25 rad/s (Example 3.1)
+    0.5252
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism
@@ -278,8 +281,8 @@ def mechanical_advantage(sol: Solution | InstantCenters, output: object,
     --------
     >>> import graphkin
     >>> sol = graphkin.examples.fourbar().solve()
-    >>> float(mechanical_advantage(sol, 2))
-    1.0
+    >>> round(float(mechanical_advantage(sol, 4)), 4)  # ω2/ω4 = 1/0.5252
+    1.9039
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism
