@@ -14,7 +14,8 @@ from graphkin.construction import Construction
 from graphkin.errors import ConstructionError, GraphkinError
 from graphkin.geometry import ops as g
 from graphkin.kinematics.curvature._vec import _dot, _sin_angle, _unit
-from graphkin.kinematics.curvature.bresse import bresse_pole
+from graphkin.kinematics.curvature.bobillier import _BobillierSteps
+from graphkin.kinematics.curvature.bresse import _BresseSteps, bresse_pole
 from graphkin.kinematics.curvature.centrodes import centrode_radii
 from graphkin.kinematics.curvature.conjugates import _frame_pins
 from graphkin.kinematics.curvature.construction import (
@@ -23,11 +24,18 @@ from graphkin.kinematics.curvature.construction import (
     _RAY_FROM_N,
     _RAYS,
     _USABLE,
-    _Curvature,
+    _CurvatureBase,
 )
-from graphkin.kinematics.curvature.cubic import Cubic, ball_point, stationary_curvature_cubic
+from graphkin.kinematics.curvature.cubic import (
+    Cubic,
+    _HainSteps,
+    ball_point,
+    stationary_curvature_cubic,
+)
 from graphkin.kinematics.curvature.euler_savary import euler_savary
+from graphkin.kinematics.curvature.hartmann import _HartmannSteps
 from graphkin.kinematics.curvature.inflection import pole_velocity
+from graphkin.kinematics.curvature.inflection_circle import _InflectionCircleSteps
 from graphkin.kinematics.curvature.paths import PathCurvature, path_curvature
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME
@@ -37,6 +45,11 @@ __all__ = ["LinkCurvature", "link_curvature", "curvature", "curvature_constructi
            "path_curvatures"]
 
 Array = np.ndarray
+
+
+class _Curvature(_InflectionCircleSteps, _BobillierSteps, _HartmannSteps, _BresseSteps,
+                 _HainSteps, _CurvatureBase):
+    """The sections of Secs. 4.12-4.17 for one link, each idea's steps from its own module."""
 
 
 @dataclass
