@@ -85,8 +85,23 @@ class Sweep:
     notes: list[str] = field(default_factory=list)
     branches: dict[str, str] = field(default_factory=dict)
     _engine: _Engine | None = field(default=None, repr=False, compare=False)
-    _blocks: list[_Block] = field(default_factory=list, repr=False, compare=False)
+    _parts: list[_Block] = field(default_factory=list, repr=False, compare=False)
     _cyclic: bool = field(default=False, repr=False, compare=False)
+    _released: bool = field(default=False, repr=False, compare=False)
+
+    @property
+    def _blocks(self) -> list[_Block]:
+        """The evaluated blocks; a long sweep let their values go and replays them here."""
+        if self._released:
+            eng = self._engine
+            assert eng is not None
+            for i, b in enumerate(self._parts):
+                if b.ev is None and b.analytic is None:
+                    again = eng.solve(b.dv)
+                    again.user = b.user
+                    self._parts[i] = again
+            self._released = False
+        return self._parts
 
     def __len__(self) -> int:
         return len(self.values)

@@ -29,8 +29,10 @@ from graphkin.tolerance import DEFAULT_TOL, Tolerance
 Array = np.ndarray
 
 
-#: Sweeps longer than this are evaluated in blocks (so a progress callback can be told).
-BLOCK = 100_000
+#: Sweeps longer than this are evaluated in blocks of this many postures: few enough that a
+#: block's arrays stay in the processor's cache, many enough that the fixed cost of a replay
+#: does not count (a progress callback is told after each block).
+BLOCK = 8_192
 
 
 def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
@@ -121,30 +123,36 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
     dv = np.radians(user) if eng.drive.kind == "angle" else user
     blocks: list[_Block] = []
+    released = False
     if count <= BLOCK:
         blk = eng.solve(dv)
         blk.user = user
         blocks.append(blk)
         cols = _columns(eng, blk)
+        valid, assembled = _valid_of(blk), _assembled_of(blk)
     else:
-        # blocks small enough for the cache, written straight into the columns
+        # blocks small enough to stay in the cache, written straight into the columns; the
+        # constructions' values are let go after each block (and replayed if asked for again:
+        # Sweep.solution, singular postures, extra columns), so the next block reuses the memory
         cols = {}
+        valid = np.empty(count, dtype=bool)
+        assembled = np.empty(count, dtype=bool)
         for i in range(0, count, BLOCK):
             blk = eng.solve(dv[i:i + BLOCK])
             blk.user = user[i:i + BLOCK]
-            blocks.append(blk)
             part = _columns(eng, blk)
             if not cols:
                 cols = {k: np.empty(count) for k in part}
             for k, v in part.items():
                 cols[k][i:i + BLOCK] = v
+            valid[i:i + BLOCK] = _valid_of(blk)
+            assembled[i:i + BLOCK] = _assembled_of(blk)
+            if blk.analytic is None:
+                blk = _Block(blk.dv, None, None, None, user=blk.user)
+                released = True
+            blocks.append(blk)
             if progress is not None:
                 progress(min(1.0, (i + BLOCK) / count))
-    if len(blocks) == 1:
-        valid, assembled = _valid_of(blocks[0]), _assembled_of(blocks[0])
-    else:
-        valid = np.concatenate([_valid_of(blk) for blk in blocks])
-        assembled = np.concatenate([_assembled_of(blk) for blk in blocks])
     notes: list[str] = []
     if eng.built_at is not None:
         notes.append(f"the file's drive cannot be assembled; the constructions were laid out "
@@ -155,7 +163,8 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     if not valid.all():
         _blank(cols, assembled, valid)
     sw = Sweep(mech, eng.drive, dv, cols, valid, assembled, eng.method, notes,
-               dict(eng.pc.branches) if eng.pc is not None else {}, eng, blocks, cyclic)
+               dict(eng.pc.branches) if eng.pc is not None else {}, eng, blocks, cyclic,
+               released)
     if transmission:
         sw.columns.update(_transmission_columns(sw))
     if centers:
