@@ -32,7 +32,6 @@ import argparse
 import json
 import math
 import sys
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,6 +39,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.keys import VECTOR, check_keys, read_units
+from graphkin.io.files import parse_toml, read_text
 from graphkin.kinematics.vector_equation import (
     NAMES,
     Polar,
@@ -85,13 +85,7 @@ def load(path: str | Path) -> VectorFile:
         The file cannot be read or says something unusable (naming the key).
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read the file ({exc.strerror or exc})", file=str(p)) from None
-    except UnicodeDecodeError:
-        raise InputError("the file is not UTF-8 text", file=str(p)) from None
-    return loads(text, source=str(p))
+    return loads(read_text(p), source=str(p))
 
 
 def loads(text: str, source: str = "<vector file>") -> VectorFile:
@@ -104,10 +98,7 @@ def loads(text: str, source: str = "<vector file>") -> VectorFile:
     >>> str(f.knowns["A"]), str(f.knowns["B"]), str(f.knowns["C"])
     ('3∠?', '4∠?', '5∠0°')
     """
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"TOML syntax error: {_one_line(str(exc))}", file=source) from None
+    data = parse_toml(text, source)
 
     def fail(key: str | None, message: str) -> InputError:
         return InputError(message, key=key, file=source)
