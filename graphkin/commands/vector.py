@@ -38,8 +38,8 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.keys import VECTOR, check_keys, read_units
 from graphkin.io.files import parse_toml, read_text
+from graphkin.keys import VECTOR, check_keys, read_units
 from graphkin.kinematics.vector_equation import (
     NAMES,
     Polar,
@@ -141,12 +141,9 @@ def _one_line(text: str) -> str:
 
 
 def _quantity(text: str) -> Any:
-    from graphkin.units import registry
+    from graphkin.units import quantity
 
-    try:
-        return registry().Quantity(text.replace("^", "**"))
-    except Exception as exc:  # pint raises several unrelated types
-        raise ValueError(f"cannot read {text!r} as a quantity") from exc
+    return quantity(text)  # the number read by float(); pint sees only a checked unit
 
 
 def _read(value: Any) -> float | str | None:

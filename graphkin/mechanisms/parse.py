@@ -12,8 +12,8 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.io.files import parse_toml, read_text
+from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.mechanisms.model import (
     FRAME,
     XY,
