@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphkin.errors import InputError
+from graphkin.io.files import check_file
 
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
@@ -303,6 +304,7 @@ def read_dxf(path: str | Path) -> DrawingData:
     """
     ezdxf = require_ezdxf()
     path = Path(path)
+    check_file(path)  # a regular file of at most 20 MB
     try:
         doc = ezdxf.readfile(str(path))
     except OSError as exc:

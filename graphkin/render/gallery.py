@@ -35,11 +35,12 @@ import hashlib
 import json
 import math
 import re
-import tomllib
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from graphkin.io.files import load_toml
 
 __all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
 
@@ -81,8 +82,7 @@ def discover(root: str | Path) -> list[Entry]:
     out = []
     for folder in FOLDERS:
         for p in sorted((root / folder).glob("*.toml"), key=_natural):
-            with open(p, "rb") as fh:
-                data = tomllib.load(fh)
+            data = load_toml(p)  # bounded; a malformed file is one InputError naming it
             if "links" not in data:
                 continue
             out.append(Entry(p, folder, dict(data.get("gallery", {}))))

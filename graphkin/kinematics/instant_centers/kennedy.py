@@ -123,8 +123,58 @@ class _Kennedy(_PrimaryCenters):
         """True when ``a`` has an answer at every posture that could be assembled."""
         return self.every(np.all(np.isfinite(a), axis=-1))
 
+    def best_meet(self, opts: list[tuple[str, str, Array, float]],
+                  enough: float) -> tuple[float, int, int] | None:
+        """The best-conditioned pair of lines among ``opts`` (every pair at once).
+
+        Returns ``(quality, index, index)`` of the first pair (in the order of
+        :func:`itertools.combinations`) of the highest quality that is at
+        least ``enough`` and meets at every posture, or None.
+        """
+        m = len(opts)
+        if m < 2:
+            return None
+        shape = np.broadcast_shapes(*(np.shape(o[2]) for o in opts))
+        lines = np.stack([np.broadcast_to(np.asarray(o[2], dtype=float), shape) for o in opts])
+        ia, ib = np.triu_indices(m, 1)
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            pts = g.meet(lines[ia], lines[ib], self.tol)
+            hats = self.line_hat(lines)
+            sines = np.linalg.norm(np.cross(hats[ia], hats[ib]), axis=-1)
+        n = len(ia)
+        valid = np.broadcast_to(self.valid, pts.shape[1:-1])
+        meets = np.all(np.isfinite(pts), axis=-1)
+        ok = np.all(np.where(valid, meets, True).reshape(n, -1), axis=1)
+        sines = np.where(np.isfinite(sines), sines, 0.0)
+        if valid.any():
+            qline = np.min(np.where(valid, sines, np.inf).reshape(n, -1), axis=1)
+        else:
+            qline = np.zeros(n)
+        q = np.array([o[3] for o in opts])
+        qual = np.minimum(np.minimum(q[ia], q[ib]), qline)
+        cand = ok & (qual >= enough)
+        if not cand.any():
+            return None
+        k = int(np.argmax(np.where(cand, qual, -np.inf)))
+        return float(qual[k]), int(ia[k]), int(ib[k])
+
     def try_pair(self, pair: Pair, enough: float) -> bool:
-        """Find ``Iij`` by Kennedy's theorem if two lines of centers meet well enough."""
+        """Find ``Iij`` by Kennedy's theorem if two lines of centers meet well enough.
+
+        A pair that failed is not tried again until a center of one of its
+        two links is found (only that changes its lines of centers).
+        """
+        stamp = self.__dict__.setdefault("_stamp", {})
+        failed = self.__dict__.setdefault("_failed_at", {})
+        now = (stamp.get(pair[0], 0), stamp.get(pair[1], 0))
+        if failed.get((pair, enough)) == now:
+            return False
+        if self._try_pair(pair, enough):
+            return True
+        failed[(pair, enough)] = now
+        return False
+
+    def _try_pair(self, pair: Pair, enough: float) -> bool:
         i, j = pair
         lab = center_label(*pair)
         tris = self.triangles(pair)
@@ -152,15 +202,7 @@ class _Kennedy(_PrimaryCenters):
                 line = g.join(p, q, self.tol)
             if self.ok(line):
                 opts.append(("tri", k, line, self.quality(self.point_hat(p), self.point_hat(q))))
-        best: tuple[float, int, int] | None = None
-        for (ia, a), (ib, b) in combinations(enumerate(opts), 2):
-            with np.errstate(invalid="ignore", divide="ignore"):
-                pt = g.meet(a[2], b[2], self.tol)
-            if not self.ok(pt):
-                continue
-            qual = min(a[3], b[3], self.quality(self.line_hat(a[2]), self.line_hat(b[2])))
-            if qual >= enough and (best is None or qual > best[0]):
-                best = (qual, ia, ib)
+        best = self.best_meet(opts, enough)
         if best is not None:
             a, b = opts[best[1]], opts[best[2]]
             la, lb = self.make_line(pair, a), self.make_line(pair, b)

@@ -64,6 +64,10 @@ class _Recorder:
         lab = center_label(*pair)
         self.centers[pair] = Center(pair, lab, self.env[lab], how, source, len(self.centers) + 1,
                                     lines, triangles, speed, note)
+        # a new center changes the lines of centers of the pairs of its links only
+        stamp = self.__dict__.setdefault("_stamp", {})
+        for lid in pair:
+            stamp[lid] = stamp.get(lid, 0) + 1
 
     def fresh(self, label: str) -> str:
         if label not in self.env:
