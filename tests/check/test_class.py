@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from strategies import mechanisms
 
 import graphkin
 from graphkin.cli import main
@@ -449,3 +451,39 @@ def test_huge_and_special_files_exit_2(fourbar: Path, tmp_path: Path,
         code = main(["check", str(fourbar), *args])
         err = capsys.readouterr().err
         assert code == 2 and len(err.strip().splitlines()) == 1 and words in err, err
+
+
+# ---- every kind of mechanism ----------------------------------------------------------
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mechanisms())
+def test_exact_answers_pass_and_slips_are_named_on_random_mechanisms(rm) -> None:  # type: ignore[no-untyped-def]
+    """Answers from the analytic solver pass; ω with the sense reversed, V ×12 are named."""
+    from graphkin.check import check, loads_answers
+
+    mech = rm.mechanism()
+    if not mech.has_rates:
+        return
+    an = solve_analytic(mech)
+    lines = []
+    for lid in mech.links:
+        if lid != "1":
+            lines.append(f"omega{lid} = {float(an.omega(lid)):.9g}")
+    pts = [p for p in mech.point_names if p not in mech.helper_points]
+    for p in pts:
+        v = np.asarray(an.velocity(p), dtype=float)
+        if math.hypot(*v) > 0:
+            lines.append(f"V_{p} = {_vec(v, f'{mech.length_unit}/s', 1.0)}")
+    rep = check(mech.solve(), loads_answers("\n".join(lines), mech))
+    assert rep.ok, rep.text()
+    # the first moving link's ω with its sense reversed (|ω| ≥ 3 % of the fastest, by the
+    # strategy's construction), and the fastest point's velocity 12 times too large
+    lid = next(k for k in mech.links if k != "1")
+    fastest = max(pts, key=lambda p: math.hypot(*an.velocity(p)))
+    text = (f"omega{lid} = {-float(an.omega(lid)):.9g}\n"
+            f"V_{fastest} = {_vec(12 * np.asarray(an.velocity(fastest)), 'x', 1.0)}")
+    text = text.replace('x at', f'{mech.length_unit}/s at')
+    rows = {r.key: r for r in check(mech.solve(), loads_answers(text, mech)).rows}
+    assert rows[f"omega{lid}"].verdict == "WRONG"
+    assert rows[f"omega{lid}"].code in ("sense", "follows:V_" + fastest)
+    assert rows[f"V_{fastest}"].code in ("unit:12", "follows:omega" + lid), rows
