@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.check.text import printable
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
 from graphkin.units import parse_quantity
@@ -727,7 +728,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
                 raise InputError(exc.message + suggest(k, known), key=k, file=file) from None
             given.append(parse_value(key, v, mech, file=file))
         except InputError as exc:
-            bad.append(exc)
+            bad.append(InputError(printable(exc.message), key=printable(exc.key or k),
+                                  file=exc.file))
     if not given:
         if bad:
             raise bad[0]

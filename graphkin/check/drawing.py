@@ -591,8 +591,7 @@ def _on_link(label: str, mech: Any) -> tuple[str, str] | None:
 
 def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
                   tolerance: CheckTolerance | None = None,
-                  diagnoser: Diagnoser | None = None,
-                  drawing_tolerance: bool = False) -> Report:
+                  diagnoser: Diagnoser | None = None) -> Report:
     """Check a drawn velocity or acceleration polygon against the exact one.
 
     Parameters
@@ -608,8 +607,6 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
         paper unit is known.
     diagnoser : Diagnoser, optional
         Shared between files.
-    drawing_tolerance : bool
-        Unused (kept for callers that say the drawing tolerance was given).
 
     Returns
     -------
