@@ -417,11 +417,41 @@ def _merge_collinear(pts: list[tuple[float, float]]) -> list[tuple[float, float]
     return out
 
 
+def _to_tips(long: np.ndarray, marks: np.ndarray, size: float) -> np.ndarray:
+    """Run each long segment on to the tip of an arrowhead drawn beyond its end.
+
+    A shaft that stops at the base of its arrowhead (a filled triangle, a
+    separate tapered polyline) points at the image point: the tip is the end
+    of a short stroke straight ahead of the shaft (within about 8° of its
+    line, and no farther than an arrowhead's size).  Two-line arrowheads,
+    whose barbs lie behind the tip, leave the shaft as it is.
+    """
+    if not len(marks):
+        return long
+    for seg in long:
+        for k in (0, 1):
+            p, q = seg[k], seg[1 - k]
+            d = p - q
+            n = float(np.hypot(*d))
+            if n == 0:
+                continue
+            d = d / n
+            rel = marks - p
+            along = rel @ d
+            across = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
+            ok = (along > 0) & (along <= size) & (across <= 0.14 * along)
+            if np.any(ok):
+                j = int(np.argmax(np.where(ok, along, -np.inf)))
+                seg[k] = marks[j]
+    return long
+
+
 def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
     """The polygons of a drawing made in CAD or by hand: one per labelled pole.
 
     Vertices are the ends of the long segments (a segment shorter than 8 % of
-    the longest is an arrowhead or a tick); ends closer than 1 % of the
+    the longest is an arrowhead or a tick; a shaft that stops at its
+    arrowhead's base runs on to the tip); ends closer than 1 % of the
     longest segment are one vertex; the polygon is the connected set of
     segments that holds the pole, and each label names its nearest vertex.
     """
@@ -437,7 +467,8 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         raise InputError("the drawing has a coordinate that is not finite", file=path)
     lengths = np.hypot(*(arr[:, 1] - arr[:, 0]).T)
     longest = float(lengths.max())
-    keep = arr[lengths >= 0.08 * longest]
+    short = lengths < 0.08 * longest
+    keep = _to_tips(arr[~short].copy(), arr[short].reshape(-1, 2), 0.08 * longest)
     eps = 0.01 * longest
     # cluster the ends into vertices
     ends = keep.reshape(-1, 2)

@@ -277,6 +277,13 @@ def _cad(path: Path, vectors: dict[str, np.ndarray], style: str, *,
         if style == "tapered":
             host.add_lwpolyline([(*p0, 0, 0, 0), (*base, 1.2, 0, 0), (*p1, 0, 0, 0)],
                                 format="xyseb")
+        elif style == "separate-taper":  # the shaft to the arrowhead's base, the taper apart
+            host.add_line(tuple(p0), tuple(base))
+            host.add_lwpolyline([(*base, 1.2, 0, 0), (*p1, 0, 0, 0)], format="xyseb")
+        elif style == "triangle":        # a closed triangle at the tip, the shaft to its base
+            host.add_line(tuple(p0), tuple(base))
+            side = np.array([-d[1], d[0]]) * 0.6
+            host.add_lwpolyline([tuple(base + side), tuple(p1), tuple(base - side)], close=True)
         elif style == "leader":
             host.add_leader([tuple(p1), tuple(p0)])
         else:  # two short LINEs as the arrowhead, the shaft to the tip
@@ -310,7 +317,8 @@ def velocities(fourbar: Path) -> dict[str, np.ndarray]:
     return {p.lower(): np.asarray(an.velocity(p), dtype=float) for p in "BCEF"}
 
 
-@pytest.mark.parametrize("style", ["tapered", "lines", "leader", "block"])
+@pytest.mark.parametrize("style", ["tapered", "separate-taper", "triangle", "lines", "leader",
+                                   "block"])
 def test_cad_drawings_as_students_draw_them(fourbar: Path, tmp_path: Path, style: str,
                                             velocities: dict[str, np.ndarray],
                                             capsys: pytest.CaptureFixture[str]) -> None:
@@ -358,8 +366,12 @@ def test_svg_with_transforms_and_tspans(fourbar: Path, tmp_path: Path,
     parts = []
     for lab, v in velocities.items():
         x, y = v / PER_MM
-        parts.append(f'<path d="M0,0 L{x:.6f},{y:.6f}"/>'
-                     f'<path d="M{x:.6f},{y:.6f} l-1,0.5 l0.2,-1 z"/>')
+        d = np.array([x, y]) / math.hypot(x, y)
+        c1 = np.array([x, y]) - 2.5 * d + 0.7 * np.array([-d[1], d[0]])
+        c2 = c1 - 1.4 * np.array([-d[1], d[0]])
+        parts.append(f'<path d="M0,0 L{x:.6f},{y:.6f}"/>'         # an arrowhead at the tip
+                     f'<path d="M{x:.6f},{y:.6f} L{c1[0]:.6f},{c1[1]:.6f} '
+                     f'L{c2[0]:.6f},{c2[1]:.6f} z"/>')
         parts.append(f'<text transform="translate({x + 0.8:.6f},{y + 0.8:.6f}) scale(1,-1)">'
                      f'<tspan>{lab}</tspan></text>')
     parts.append('<text transform="translate(-4,1) scale(1,-1)">O<tspan baseline-shift="sub" '
