@@ -299,8 +299,15 @@ def read_svg(path: str | Path) -> DrawingData:
     """
     path = Path(path)
     root = _parse_svg(path)
+    unit_scale, unit = _unit_scale(root)
+    data = _svg_data(_walk(root, path, _paper(unit_scale)), path)
+    data.unit = unit
+    return data
+
+
+def _svg_data(elements: Any, path: Path) -> DrawingData:
+    """Segments, strokes and labels of walked SVG elements (``(element, matrix, depth)``)."""
     data = DrawingData()
-    unit_scale, data.unit = _unit_scale(root)
 
     def put(mat: np.ndarray, x: float, y: float) -> tuple[float, float]:
         with np.errstate(over="ignore", invalid="ignore"):
@@ -310,7 +317,7 @@ def read_svg(path: str | Path) -> DrawingData:
                              file=str(path))
         return float(p[0]), float(p[1])
 
-    for el, mat, _ in _walk(root, path, _paper(unit_scale)):
+    for el, mat, _ in elements:
         tag = _local(el.tag)
         if tag == "line":
             a = [_number(el, k, path) for k in ("x1", "y1", "x2", "y2")]
@@ -391,7 +398,17 @@ def _graphkin_panels(root: ET.Element, path: Path) -> list[Polygon]:
                 pole = marks[0]
             else:
                 points.setdefault(label, marks[0])
-        if pole is None:
+        if pole is None or not points:
+            # the drawing's details changed: read the panel alone as any drawing is read
+            data = _svg_data(_children(panel, path, pmat, pdepth), path)
+            data.unit = unit
+            try:
+                found = find_polygons(data, str(path))
+            except InputError:
+                continue
+            for poly in found:
+                poly.scale = poly.scale or scale
+            out += [p for p in found if p.diagram == diagram]
             continue
         out.append(Polygon(diagram, pole, points, scale, unit))
     return out
@@ -783,6 +800,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     checked = [i for i, r in enumerate(rows) if r.verdict != FIT]
     sub = [rows[i] for i in checked]
     follow_through(sub, [givens[i] for i in checked], ev, diag, tol)
+    ignored = [t for t in ignored if len(re.sub(r"[^0-9A-Za-z]", "", t)) <= 3]  # not titles
     if ignored:
         notes.append("labels that name no image point, ignored: "
                      + ", ".join(printable(t) for t in sorted(set(ignored))))
