@@ -337,7 +337,8 @@ class Diagnoser:
             if lid == FRAME:
                 continue
             for q in self.mech.links[lid].points:
-                if q == p or float(np.hypot(*self._vec("A", q))) > floor:
+                if q == p or q in self.mech.helper_points \
+                        or float(np.hypot(*self._vec("A", q))) > floor:
                     continue
                 key = Key(f"A_{p}{q}", "A", (p, q))
                 for comp, name in (("n", "normal"), ("t", "tangential")):
@@ -604,9 +605,15 @@ class Diagnoser:
                     word = "left of" if side * (1 if d[1] > 0 else -1) > 0 else "right of"
                 sep = "" if len(p) == len(q) == 1 else "-"
                 return f"{label} {word} {p}{sep}{q}"
-        if label in names:
+        helpers = self.mech.helper_points
+        moved = [n for n in names if n not in helpers and float(np.hypot(
+            *(np.asarray(alt.position(n)) - np.asarray(self.sol.position(n)))))
+            > 1e-6 * float(self.mech.scale)]
+        if label in names and label not in helpers:
             return f"{label} at the other intersection"
-        return f"the other intersection at step {label}"
+        if moved:
+            return f"{', '.join(moved)} at the other intersection"
+        return "the other intersection"
 
     def _positions(self) -> np.ndarray:
         return np.array([self.sol.position(p) for p in self.mech.point_names])
