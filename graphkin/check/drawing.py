@@ -379,9 +379,9 @@ def _graphkin_panels(root: ET.Element, path: Path) -> list[Polygon]:
         scale = None
         for el, mat, depth in _children(panel, path, pmat, pdepth):
             gid = el.get("id") or ""
-            if gid.startswith("scale-text-"):
+            if re.match(r"(?:.*-)?scale-text-", gid):       # ids may carry the panel's prefix
                 scale = "".join(el.itertext()).strip()
-            if not gid.startswith("step-") or _local(el.tag) != "g":
+            if not re.match(r"(?:.*-)?step-\d+-", gid) or _local(el.tag) != "g":
                 continue
             marks = []
             label = ""
@@ -680,13 +680,15 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
     rows: list[Row] = []
     titles: list[str] = []
     notes: list[str] = []
-    tol_used = tol
+    scales: list[SheetScale] = []
     for poly in polys:
         r, t, n, tol_used = _check_polygon(sol, poly, path_s, scale, tol, diag)
         rows += r
         titles.append(t)
         notes += n
-    rep = Report(rows, tol_used, path_s, title="; ".join(titles))
+        scales += [sc for sc in tol_used.scales if sc not in scales]
+    rep = Report(rows, dataclasses.replace(tol, scales=tuple(scales)), path_s,
+                 title="; ".join(titles))
     rep.notes += notes
     return rep
 
