@@ -179,9 +179,12 @@ class Report:
 def sheet_allowance(ev: Evaluator, given: Given, tol: CheckTolerance) -> float | None:
     """The drawing tolerance in the answer's own units, when a scale is known.
 
-    ``tol.drawing`` millimetres times the drawing's scale; for ω and α, divided
-    by the length of the link's longest side (the image side it is read from:
-    ω = V_PQ / R_PQ, Sec. 3.4).
+    ``tol.drawing`` millimetres times the drawing's scale for a vector drawn
+    from the pole.  A difference (``V_CB``) is read between two drawn points,
+    each within ``tol.drawing`` of its place, so it may be off by twice as
+    much; ω and α are such a difference divided by the length of the link's
+    longest side (the image side they are best read from: ω = V_PQ / R_PQ,
+    Sec. 3.4).
     """
     if tol.drawing is None:
         return None
@@ -192,9 +195,11 @@ def sheet_allowance(ev: Evaluator, given: Given, tol: CheckTolerance) -> float |
         pts = [ev.sol.position(n, lid) for n in ev.mech.links[lid].points
                if n not in ev.mech.helper_points]
         size = max((float(((a - b) ** 2).sum() ** 0.5) for a in pts for b in pts), default=0.0)
-        return None if per is None or size <= 0 else tol.drawing * per / size
+        return None if per is None or size <= 0 else 2.0 * tol.drawing * per / size
     if key.kind in ("V", "A", "An", "At", "Ac"):
         per = tol.per_mm("velocity" if key.kind == "V" else "acceleration")
+        if per is not None and len(key.args) == 2 and key.kind in ("V", "A"):
+            return 2.0 * tol.drawing * per
     elif key.kind in ("R", "I", "rho"):
         per = tol.per_mm("length")
     else:

@@ -499,3 +499,58 @@ def test_exact_answers_pass_and_slips_are_named_on_random_mechanisms(rm) -> None
     assert rows[f"omega{lid}"].verdict == "WRONG"
     assert rows[f"omega{lid}"].code in ("sense", "follows:V_" + fastest)
     assert rows[f"V_{fastest}"].code in ("unit:12", "follows:omega" + lid), rows
+
+
+def test_a_nearly_stationary_coupler_is_judged_on_the_paper() -> None:
+    """ω3 near zero, read off image points each within 0.5 mm of their place on the sheet.
+
+    ω3 = (R_CB × V_CB) / |R_CB|² (V_CB = ω3 k × R_CB, Eq. 3.4); the image points b, c of
+    a polygon about 100 mm across are each moved 0.5 mm (0.5 % of its size) in a random
+    direction.  Relative to ω3 that is a large error, on the paper it is drawing accuracy.
+    """
+    from graphkin.check import check, loads_answers
+
+    # a near-parallelogram: AB = 4, DC = 4.2, BC = 10.2, AD = 10 (a coupler nearly translating)
+    mech = graphkin.loads("""
+units = { length = "in" }
+[links.1]
+A = [0, 0]
+D = [10, 0]
+[links.2]
+A = [0, 0]
+B = [4, 0]
+[links.3]
+B = [0, 0]
+C = [10.2, 0]
+[links.4]
+D = [0, 0]
+C = [4.2, 0]
+[drive]
+link = 2
+angle = 60
+omega = 10
+alpha = 0
+[assembly]
+C = [12.1, 3.6]
+""")
+    an = solve_analytic(mech)
+    w3 = abs(float(an.omega("3")))
+    assert 0 < w3 < 0.05 * 10.0
+    size = max(math.hypot(*an.velocity(p)) for p in mech.point_names)
+    per = size / 100.0                           # in/s per mm: the polygon is 100 mm across
+    r_cb = np.asarray(an.position("C")) - np.asarray(an.position("B"))
+    rng = np.random.default_rng(4)
+    sol = mech.solve()
+    strict = 0
+    for _ in range(20):
+        dv = [0.5 * per * np.array([math.cos(t), math.sin(t)])
+              for t in rng.uniform(0, 2 * math.pi, 2)]
+        v_cb = (np.asarray(an.velocity("C")) + dv[0]) - (np.asarray(an.velocity("B")) + dv[1])
+        w = float(r_cb[0] * v_cb[1] - r_cb[1] * v_cb[0]) / float(r_cb @ r_cb)
+        text = (f'tolerance = {{ drawing = "0.5 mm", scale = "1 mm = {per:.9g} in/s" }}\n'
+                f"omega3 = {w:.9g}\n")
+        (row,) = check(sol, loads_answers(text, mech)).rows
+        assert row.verdict == "ok", row
+        (plain,) = check(sol, loads_answers(f"omega3 = {w:.9g}", mech)).rows
+        strict += plain.verdict == "WRONG"
+    assert strict >= 10          # by 2 % of the value alone most readings would fail
