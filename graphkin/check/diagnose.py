@@ -208,6 +208,22 @@ class Diagnoser:
         # the variant must differ from the exact value here, or there is nothing to follow
         return not self._matches(given, exact, tol, floor, self._reference(given, exact), sheet)
 
+    def agrees(self, index: int, given: Given, tol: CheckTolerance,
+               sheet: float | None = None) -> bool:
+        """Whether whole-solution variant ``index`` gives ``given`` within tolerance too.
+
+        An answer given right that the variant would have made wrong shows the
+        student did not make that mistake (it is not carried through).
+        """
+        _, ev = self.variants()[index]
+        try:
+            cand = ev.value(given.key)
+            exact = self.ev.value(given.key)
+        except GraphkinError:
+            return True
+        floor = self.ev.floor(given.key.quantity)
+        return self._matches(given, cand, tol, floor, self._reference(given, exact), sheet)
+
     def candidates(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
         """Every mistaken value worth testing for ``given``, most likely first.
 

@@ -234,17 +234,23 @@ def follow_through(rows: list[Row], given: list[Given], ev: Evaluator, diag: Dia
     other assembly, a normal component reversed, the input's rate in the
     wrong unit...) explains several answers.  The first of them (in the
     file's order) is wrong with the mistake named; the others are marked
-    ``follows`` (as an instructor gives follow-through credit).
+    ``follows`` (as an instructor gives follow-through credit).  A carried
+    mistake that would have spoilt an answer the student got right is not
+    the student's: such answers keep their own diagnoses.
     """
     wrong = [i for i, r in enumerate(rows) if r.verdict == WRONG]
     if len(wrong) < 2:
         return
     variants = diag.variants()
+    right = [i for i, r in enumerate(rows) if r.verdict == OK]
     explained: dict[int, list[int]] = {}
     for vi in range(len(variants)):
         hits = [i for i in wrong
                 if diag.explains(vi, given[i], tol, sheet_allowance(ev, given[i], tol))]
-        if len(hits) >= 2:
+        # a mistake the student did not make: an answer given right that it would spoil
+        if len(hits) >= 2 and all(diag.agrees(vi, given[i], tol,
+                                              sheet_allowance(ev, given[i], tol))
+                                  for i in right):
             explained[vi] = hits
     taken: set[int] = set()
     while explained:

@@ -554,3 +554,21 @@ C = [12.1, 3.6]
         (plain,) = check(sol, loads_answers(f"omega3 = {w:.9g}", mech)).rows
         strict += plain.verdict == "WRONG"
     assert strict >= 10          # by 2 % of the value alone most readings would fail
+
+
+def test_no_follow_through_from_a_mistake_an_answer_given_right_rules_out(
+        fourbar: Path) -> None:
+    """V_E and V_F both 12 times too large, ω3 right: two slips of units, not ω2 × 12.
+
+    ω2 taken 12 times too large would make ω3 12 times too large as well (the polygon
+    is linear in ω2, Sec. 3.4); ω3 is right, so each velocity keeps its own diagnosis.
+    """
+    from graphkin.check import check, loads_answers
+
+    mech = graphkin.load(fourbar)
+    an = solve_analytic(mech)
+    text = (f"omega3 = {float(an.omega('3')):.6g}\n"
+            f"V_E = {_vec(an.velocity('E'), 'ft/s', 1.0)}\n"
+            f"V_F = {_vec(an.velocity('F'), 'ft/s', 1.0)}\n")
+    rows = {r.key: r for r in check(mech.solve(), loads_answers(text, mech)).rows}
+    assert [rows[k].code for k in ("omega3", "V_E", "V_F")] == ["", "unit:12", "unit:12"]
