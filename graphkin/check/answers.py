@@ -580,8 +580,13 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         return g
     # vectors
     if isinstance(value, dict):
-        unknown = set(value) - {"magnitude", "direction", "angle"}
-        if unknown or "magnitude" not in value:
+        valid = ("magnitude", "direction", "angle")
+        for u in value:
+            if u not in valid:
+                raise InputError(f"unknown key{suggest(u, valid)}; a vector table has "
+                                 "magnitude and, optionally, direction", key=f"{k}.{u}",
+                                 file=file)
+        if "magnitude" not in value:
             raise InputError("a vector table has magnitude and, optionally, direction",
                              key=k, file=file)
         mag, _, g.unit, g.factor = _quantity(value["magnitude"], kind, mech, k, file)
@@ -738,7 +743,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
 
 
 def _is_vector_table(v: dict[str, Any]) -> bool:
-    return "magnitude" in v
+    near = {"magnitude", "direction", "angle"}
+    return "magnitude" in v or any(difflib.get_close_matches(k, near, n=1) for k in v)
 
 
 def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
