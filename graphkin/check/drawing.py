@@ -434,17 +434,18 @@ def _merge_collinear(pts: list[tuple[float, float]]) -> list[tuple[float, float]
     return out
 
 
-def _to_tips(long: np.ndarray, marks: np.ndarray, size: float) -> np.ndarray:
+def _to_tips(long: np.ndarray, strokes: np.ndarray, size: float, eps: float) -> np.ndarray:
     """Run each long segment on to the tip of an arrowhead drawn beyond its end.
 
     A shaft that stops at the base of its arrowhead (a filled triangle, a
     separate tapered polyline) points at the image point: the tip is the end
     of a short stroke straight ahead of the shaft (within about 8° of its
-    line, and no farther than an arrowhead's size).  Two-line arrowheads,
-    whose barbs lie behind the tip, leave the shaft as it is.
+    line, and no farther than an arrowhead's size).  An end that is already a
+    tip (short strokes leave it backwards: barbs, an arrowhead's sides) stays.
     """
-    if not len(marks):
+    if not len(strokes):
         return long
+    marks = strokes.reshape(-1, 2)
     for seg in long:
         for k in (0, 1):
             p, q = seg[k], seg[1 - k]
@@ -453,6 +454,13 @@ def _to_tips(long: np.ndarray, marks: np.ndarray, size: float) -> np.ndarray:
             if n == 0:
                 continue
             d = d / n
+            at_p = np.hypot(*(strokes - p).transpose(2, 0, 1)) <= eps       # (n, 2)
+            touching = np.any(at_p, axis=1)
+            if np.any(touching):
+                other = np.where(at_p[touching][:, :1], strokes[touching][:, 1],
+                                 strokes[touching][:, 0])
+                if np.any((other - p) @ d < 0):
+                    continue
             rel = marks - p
             along = rel @ d
             across = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
@@ -485,10 +493,18 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
     lengths = np.hypot(*(arr[:, 1] - arr[:, 0]).T)
     longest = float(lengths.max())
     short = lengths < 0.08 * longest
-    keep = _to_tips(arr[~short].copy(), arr[short].reshape(-1, 2), 0.08 * longest)
+    marks = arr[short].reshape(-1, 2)
     eps = 0.01 * longest
+    keep = _to_tips(arr[~short].copy(), arr[short], 0.08 * longest, eps)
     # cluster the ends into vertices
     ends = keep.reshape(-1, 2)
+    # an end that an arrowhead's strokes touch, or that was run on to a tip, is an arrow's tip
+    tip = np.zeros(len(ends), dtype=bool)
+    original = arr[~short].reshape(-1, 2)
+    tip |= np.any(ends != original, axis=1)
+    if len(marks):
+        near = np.hypot(*(ends[:, None, :] - marks[None, :, :]).transpose(2, 0, 1))
+        tip |= np.any(near <= eps, axis=1)
     verts: list[np.ndarray] = []
     index = np.empty(len(ends), dtype=int)
     for i, e in enumerate(ends):
@@ -521,9 +537,14 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
 
     def nearest_end(at: tuple[float, float], root: int) -> tuple[np.ndarray, float]:
         """The segment end nearest a label, among the ends of one polygon (exact, unclustered)."""
-        mine = ends[root_of_end == root]
+        sel = root_of_end == root
+        mine, tips = ends[sel], tip[sel]
         d = np.hypot(*(mine - np.asarray(at)).T)
         k = int(np.argmin(d))
+        # a label beside an arrow's tip names the tip, though a bare line end be nearer
+        close = (d <= d[k] + 0.02 * longest) & tips
+        if np.any(close) and not tips[k]:
+            k = int(np.argmin(np.where(close, d, np.inf)))
         return mine[k], float(d[k])
 
     out: list[Polygon] = []
