@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.check.text import printable
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
 from graphkin.units import parse_quantity
@@ -563,8 +564,13 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         return g
     # vectors
     if isinstance(value, dict):
-        unknown = set(value) - {"magnitude", "direction", "angle"}
-        if unknown or "magnitude" not in value:
+        valid = ("magnitude", "direction", "angle")
+        for u in value:
+            if u not in valid:
+                raise InputError(f"unknown key{suggest(u, valid)}; a vector table has "
+                                 "magnitude and, optionally, direction", key=f"{k}.{u}",
+                                 file=file)
+        if "magnitude" not in value:
             raise InputError("a vector table has magnitude and, optionally, direction",
                              key=k, file=file)
         mag, _, g.unit, g.factor = _quantity(value["magnitude"], kind, mech, k, file)
@@ -711,7 +717,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
                 raise InputError(exc.message + suggest(k, known), key=k, file=file) from None
             given.append(parse_value(key, v, mech, file=file))
         except InputError as exc:
-            bad.append(exc)
+            bad.append(InputError(printable(exc.message), key=printable(exc.key or k),
+                                  file=exc.file))
     if not given:
         if bad:
             raise bad[0]
@@ -720,7 +727,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
 
 
 def _is_vector_table(v: dict[str, Any]) -> bool:
-    return "magnitude" in v
+    near = {"magnitude", "direction", "angle"}
+    return "magnitude" in v or any(difflib.get_close_matches(k, near, n=1) for k in v)
 
 
 def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
