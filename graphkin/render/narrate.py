@@ -362,7 +362,8 @@ class _Teller:
         for s in self.cx.steps:
             if self.helper(s):
                 continue
-            if polygon and s.op in ("point", "scalar", "input") and not out and not pending:
+            if s.op in ("point", "scalar", "input") and s.role.value == "given" and not out \
+                    and not pending and (polygon or s.op != "input"):
                 start.append(s)
                 continue
             if start:
@@ -475,6 +476,12 @@ class _Teller:
         polygon = self.diagram in ("velocity", "acceleration")
         lead = group[-1]
         if not polygon:
+            if len(group) > 1 and all(s.op in ("point", "scalar") for s in group):
+                names = [point_name(o) for s in group if s.op == "point" for o in s.outputs]
+                ps = self.tell_generic(group)
+                what = "fixed points" if self.diagram == "posture" else "points"
+                ps.title = f"The {what} {', '.join(names)}" if names else ps.title
+                return ps
             return self.tell_generic(group)
         prep = [s for s in group if s.op in PREPARATORY and s.op != "join"]
         if lead.op in ("point", "scalar", "input") and all(
@@ -489,16 +496,45 @@ class _Teller:
         return fn(lead)
 
     def tell_generic(self, group: list[Step]) -> PageStep:
+        """A step told from its own note (posture, instant centers, curvature)."""
         lead = group[-1]
-        words = _OP_WORDS.get(lead.op, lead.op.replace("_", " "))
-        names = ", ".join(point_name(o) for o in lead.outputs)
+        notes = [s.note for s in group if s.note]
+        title = _first_sentence(notes[-1]) if notes else \
+            _OP_WORDS.get(lead.op, lead.op.replace("_", " ")).capitalize()
         sides = None
         if lead.equation is not None:
             sides = [lead.equation.lhs, lead.equation.rhs]
-        text = " ".join(s.note for s in group if s.note)
-        return PageStep(f"{words[0].upper()}{words[1:]}: {names}", sides,
-                        None if lead.equation is None else lead.equation.case,
-                        text=text, refs=_REFS.get(self.diagram, ""), vector=sides is not None)
+        numbers = []
+        for s in group:
+            numbers.extend(self.posture_numbers(s))
+        text = " ".join(notes)
+        return PageStep(title, sides, None if lead.equation is None else lead.equation.case,
+                        text=text, numbers=numbers, refs=_REFS.get(self.diagram, ""),
+                        vector=sides is not None)
+
+    def posture_numbers(self, s: Step) -> list[str]:
+        """The numbers of a step drawn on the mechanism: a point found, an angle measured."""
+        out = []
+        if s.role.value == "given" or plane(s.diagram) != "posture":
+            return out
+        for o in s.outputs:
+            v = self.raw(o)
+            if v is None:
+                continue
+            if s.kind == "point" and v.shape == (3,):
+                if abs(v[2]) > 1e-12:
+                    xy = v[:2] / v[2]
+                    out.append(f"{point_name(o)} = ⟦({fmt(_round(xy[0]), 4)}, "
+                               f"{fmt(_round(xy[1]), 4)}) {self.unit_file}⟧.")
+                elif np.all(np.isfinite(v[:2])):
+                    out.append(f"{point_name(o)} is at infinity, in the direction "
+                               f"⟦{_deg_line(v[:2])}⟧.")
+            elif s.kind == "scalar" and v.shape == () and o.startswith("θ"):
+                d = math.degrees(float(v)) % 360.0
+                out.append(f"{o} = ⟦{d:.2f}°⟧.")
+            elif s.kind == "circle" and v.shape == (3,) and s.role.value == "result":
+                out.append(f"radius ⟦{fmt(_round(float(v[2])), 4)} {self.unit_file}⟧.")
+        return out
 
     def tell_start(self, group: list[Step]) -> PageStep:
         pole = "O_A" if self.accel else "O_V"
@@ -634,10 +670,24 @@ class _Teller:
             text = (f"{_pretty(vname)} is along {path}, its size unknown. Through {tip} draw a "
                     f"line parallel to {path}: the sought image lies on it.")
             title = f"Direction of {_pretty(vname)}: along {path}"
+        numbers = []
+        ln = self.raw(ref, "posture")
+        if ln is None:
+            ln = self.raw(ref)
+        if ln is not None and ln.shape == (3,) and np.all(np.isfinite(ln[:2])):
+            d = np.array([ln[1], -ln[0]])  # the direction of the line (a, b, c)
+            if kind == "perpendicular":
+                p, q = self._posture_pair(ref)
+                numbers.append(f"{p}{q} lies at {_deg_line(d)} on the mechanism; the line "
+                               f"through {letter if tip == letter else 'the tip'} is at "
+                               f"{_deg_line(np.array([-d[1], d[0]]))}.")
+            else:
+                numbers.append(f"The {_path_words(ref)[4:]} lies at {_deg_line(d)}: so does the "
+                               "line.")
         refs = "Sec. 4.4" if self.accel else "Sec. 3.4"
         if kind == "parallel":
             refs = "Sec. 4.5, Eq. 4.17" if self.accel else "Sec. 3.5, Eq. 3.6"
-        return PageStep(title, sides, None, text=text, refs=refs, vector=True)
+        return PageStep(title, sides, None, text=text, numbers=numbers, refs=refs, vector=True)
 
     def tell_perpendicular(self, s: Step) -> PageStep:
         return self._line(s, "perpendicular")
@@ -814,27 +864,27 @@ class _Teller:
         a, b, ia, ib = s.inputs
         lab = s.outputs[0]
         k = lab[1:]
-        A, B = point_name(a), point_name(b) + _image_point(ib)[1]
+        A, B, Bn = point_name(a), point_name(b) + _image_point(ib)[1], point_name(b)
         r = self.dist(a, b)
         val = self.scalar(lab)
         t, _ = self.rate(lab)
         if self.accel:
             at = abs(val) * r
-            formula = f"α{k} = A^t_{B}{A}/R_{B}{A}"
+            formula = f"α{k} = A^t_{B}{A}/R_{Bn}{A}"
             numbers = [f"A^t_{B}{A} = {self.q(at, 'A')} (the tangential component, read off).",
                        f"α{k} = ({self.q(at, 'A')})/({self.length(a, b)}) = "
                        f"{t.split(' = ', 1)[1]}."]
-            text = (f"The tangential component A^t_{B}{A} = α{k} × R_{B}{A} gives α{k}; its "
+            text = (f"The tangential component A^t_{B}{A} = α{k} × R_{Bn}{A} gives α{k}; its "
                     f"sense is the sense in which A^t_{B}{A}, drawn at {B}, turns {B} about {A}.")
             title = f"Angular acceleration of link {k}: {formula}"
             refs = "Sec. 4.3, Eq. 4.7"
         else:
             v = abs(val) * r
-            formula = f"ω{k} = V_{B}{A}/R_{B}{A}"
+            formula = f"ω{k} = V_{B}{A}/R_{Bn}{A}"
             numbers = [f"V_{B}{A} = {self.q(v, 'V')} (read off the polygon).",
                        f"ω{k} = ({self.q(v, 'V')})/({self.length(a, b)}) = "
                        f"{t.split(' = ', 1)[1]}."]
-            text = (f"V_{B}{A} = ω{k} × R_{B}{A}: its size divided by the length {A}{B} gives "
+            text = (f"V_{B}{A} = ω{k} × R_{Bn}{A}: its size divided by the length {A}{B} gives "
                     f"ω{k}; its sense is the sense in which V_{B}{A}, drawn at {B}, turns {B} "
                     f"about {A}.")
             if "rolling" in a or "rolling" in b:
@@ -953,6 +1003,22 @@ def _deg(v: np.ndarray) -> str:
     if d > 180.0:
         d -= 360.0
     return f"{d:.1f}°"
+
+
+def _first_sentence(note: str) -> str:
+    """The first sentence of a note, as a title (without its final period)."""
+    m = re.match(r"(.+?(?<!\bEq)(?<!\bEqs)(?<!\bFig)(?<!\bFigs)(?<!\bSec)[.;])(\s|$)", note)
+    first = (m.group(1) if m else note).rstrip(".;")
+    head, colon, _ = first.partition(": ")
+    if colon and len(head.split()) >= 3 and head.count("(") == head.count(")"):
+        first = head
+    return first[0].upper() + first[1:] if first else note
+
+
+def _deg_line(d: np.ndarray) -> str:
+    """The angle of a line (not a vector) in [0°, 180°): ``20.9°``."""
+    a = math.degrees(math.atan2(float(d[1]), float(d[0]))) % 180.0
+    return f"{0.0 if a > 179.95 else a:.1f}° from the x axis"
 
 
 def _sub(label: str) -> str:
