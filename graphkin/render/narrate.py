@@ -514,7 +514,7 @@ class _Teller:
 
     def posture_numbers(self, s: Step) -> list[str]:
         """The numbers of a step drawn on the mechanism: a point found, an angle measured."""
-        out = []
+        out: list[str] = []
         if s.role.value == "given" or plane(s.diagram) != "posture":
             return out
         for o in s.outputs:
