@@ -118,7 +118,7 @@ def _robust_box(xs: list[np.ndarray], ys: list[np.ndarray],
     return lo, hi
 
 
-def _polygon_box(X: list[Any], Y: list[Any], keep: float = 75.0) -> tuple[np.ndarray,
+def _polygon_box(X: list[Any], Y: list[Any], keep: float = 90.0) -> tuple[np.ndarray,
                                                                           np.ndarray]:
     """A box that holds the polygon (and its pole) at most postures.
 
@@ -339,7 +339,8 @@ header h1 { font-size: 16px; margin: 0; }
 #marks .tick { position: absolute; width: 2px; height: 10px; background: #1565c0; }
 #drive-text { min-width: 9em; font-variant-numeric: tabular-nums; }
 #status { color: #c62828; min-width: 12em; }
-main { display: grid; grid-template-columns: 1.3fr 1fr 1fr 230px; gap: 8px; padding: 8px; }
+main { display: grid; grid-template-columns: 1.3fr 1fr 1fr 230px; gap: 8px; padding: 8px;
+       align-items: start; }
 figure { margin: 0; background: #fff; border: 1px solid #ddd; border-radius: 4px;
          display: flex; flex-direction: column; min-width: 0; }
 figcaption { font-weight: bold; font-size: 14px; padding: 4px 8px; }
@@ -392,7 +393,8 @@ _JS = r"""
     var svg = document.getElementById(k);
     if (svg && D[k]) polys[k] = {svg: svg, size: setup(svg, D[k].view)};
   });
-  var layer = {};
+  var layer = {}, kind0 = 'velocity';
+  var fit = document.getElementById('fit');
   function clear(svg) { while (svg.lastChild) svg.removeChild(svg.lastChild); }
   function line(g, a, b, cls, w) {
     if (!ok(a) || !ok(b)) return null;
@@ -524,12 +526,39 @@ _JS = r"""
       if (D.frame.indexOf(p) < 0) label(g, q, p.toLowerCase() + prime, fs, 'lbl');
     });
     el(g, 'circle', {cx: 0, cy: 0, r: fs * 0.18, fill: '#c62828'});
-    label(g, pole, kind === 'velocity' ? 'O_V' : 'O_A', fs * 0.8, 'lbl', -fs * 1.8, fs * 0.3);
+    var t = el(g, 'text', {x: -fs * 1.4, y: fs * 0.1, 'font-size': fs * 0.8, 'class': 'lbl'}, 'O');
+    el(t, 'tspan', {'font-size': fs * 0.55, dy: fs * 0.2}, kind === 'velocity' ? 'V' : 'A');
     var sc = D[kind].scale, v = D[kind].view;
+    if (fit && fit.checked) {
+      var xs = [0], ys = [0];
+      Object.keys(D.points).forEach(function (p) {
+        var q = img(p, i, kind); if (ok(q)) { xs.push(q[0]); ys.push(q[1]); }
+      });
+      var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
+      var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
+      var span = Math.max(x1 - x0, y1 - y0, 1e-12), m = span * 0.12;
+      v = [x0 - m, y0 - m - span * 0.1, x0 + span + m, y0 + span + m];
+      pg.size = setup(svg, v);
+      kind0 = kind; sc = nice(span / 4);
+    } else {
+      pg.size = setup(svg, D[kind].view);
+    }
     var y = v[1] + (v[3] - v[1]) * 0.04, x = v[0] + (v[2] - v[0]) * 0.05;
     el(g, 'line', {x1: x, y1: -y, x2: x + sc.bar, y2: -y, stroke: '#111', 'stroke-width': w * 1.5,
                    'class': 'scalebar'});
     label(g, [x + sc.bar, y], sc.value + ' ' + sc.unit, fs * 0.75, 'lbl', fs * 0.3, -fs * 0.2);
+    var cap = document.getElementById(kind + '-scale');
+    if (cap) cap.textContent = 'drawn to scale: bar = ' + sc.value + ' ' + sc.unit;
+  }
+  function nice(x) {
+    var base = D[kind0].scale;
+    var f = base.factor, k = Math.pow(10, Math.floor(Math.log10(x / f)));
+    var steps = [1, 2, 2.5, 5, 10], v = 10 * k;
+    for (var s = 0; s < steps.length; s++) {
+      if (steps[s] * k >= x / f) { v = steps[s] * k; break; }
+    }
+    v = Number(v.toPrecision(3));
+    return {value: v, unit: base.unit, factor: f, bar: v * f};
   }
   function fmt(x, d) {
     if (!isFinite(x)) return '—';
@@ -616,7 +645,7 @@ _JS = r"""
     speed = Number(e.target.value);
   });
   choose.addEventListener('change', function () { values(cur); });
-  ['show-centers', 'show-inflection'].forEach(function (id) {
+  ['show-centers', 'show-inflection', 'fit'].forEach(function (id) {
     var c = document.getElementById(id);
     if (c) c.addEventListener('change', function () { show(cur); });
   });
@@ -639,7 +668,8 @@ _JS = r"""
     requestAnimationFrame(tick);
   }
   requestAnimationFrame(tick);
-  var first = valid.indexOf('1');
+  var first = D.rates ? rvalid.indexOf('1') : -1;
+  if (first < 0) first = valid.indexOf('1');
   show(first < 0 ? 0 : first);
   window.graphkinCycle = {show: show, step: stepBy, current: function () { return cur; },
                           count: n, errors: errors, play: function () { setPlaying(true); },
@@ -701,7 +731,7 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
                          ("acceleration", "Acceleration polygon")):
             polygons += (f'<figure><figcaption>{cap}</figcaption>'
                          f'<svg id="{key}" xmlns="http://www.w3.org/2000/svg"></svg>'
-                         f'<div class="scale">drawn to scale: bar = '
+                         f'<div class="scale" id="{key}-scale">drawn to scale: bar = '
                          f"{html.escape(data[key]['scale']['value'].__format__('g'))} "
                          f"{html.escape(data[key]['scale']['unit'])}</div></figure>")
     return (
@@ -721,7 +751,10 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
         '<span id="drive-text"></span>'
         '<div id="slider-wrap"><input type="range" id="drive" min="0" max="0" value="0" '
         'aria-label="drive"><div id="marks"></div></div>'
-        f'<span id="status"></span>{toggles}</div>\n'
+        f'<span id="status"></span>{toggles}'
+        + ('<label title="redraw each polygon at a round scale that fits it">'
+           '<input type="checkbox" id="fit"> fit polygons</label>' if data["rates"] else "")
+        + "</div>\n"
         '<main><figure><figcaption>Mechanism</figcaption>'
         '<svg id="mechanism" xmlns="http://www.w3.org/2000/svg"></svg></figure>'
         f'{polygons}<div id="values"><label>point <select id="point">{options}</select>'

@@ -225,3 +225,23 @@ def test_cycle_marks_what_cannot_be_assembled(browser, tmp_path):
     b.js(f"graphkinCycle.show({int(bad[0])})")
     assert "cannot be assembled" in b.js("document.getElementById('status').textContent")
     assert b.errors() == []
+
+
+def test_cycle_fit_redraws_each_polygon_at_its_own_round_scale(browser, tmp_path):
+    mech = graphkin.examples.inverted_slider_crank()
+    path = tmp_path / "inv.html"
+    path.write_text(animate_html(mech, count=90), encoding="utf-8")
+    b = browser
+    b.open(path)
+    fixed = b.js("document.getElementById('acceleration-scale').textContent")
+    b.js("document.getElementById('fit').click()")
+    sw = mech.sweep(count=90)
+    k = int(np.flatnonzero(sw.valid)[10])
+    b.js(f"graphkinCycle.show({k})")
+    images = b.js(_IMAGES + "('acceleration')")
+    for p, (x, y) in images.items():  # the vertices stay the sweep's values
+        big = np.nanmax(np.abs([sw.columns[f"ax_{p}"], sw.columns[f"ay_{p}"]]))
+        assert np.allclose([x, y], [sw.columns[f"ax_{p}"][k], sw.columns[f"ay_{p}"][k]],
+                           atol=1e-4 * big)
+    assert re.match(r"drawn to scale: bar = [\d.]+ ", fixed)
+    assert b.errors() == []
