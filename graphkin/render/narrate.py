@@ -333,7 +333,8 @@ class _Teller:
             return "—"
         m = float(np.hypot(*v))
         s = f"{fmt(_round(m / self.f), 4)} {self.L}/s{'²' if self.accel else ''}"
-        if m > 0:
+        tiny = 1e-9 * (self.scale.value * self.scale.factor if self.scale is not None else 1.0)
+        if m > tiny:
             s += f" ∠{_deg(v)}"
         return f"⟦{s}⟧" if answer else s
 
@@ -476,6 +477,10 @@ class _Teller:
         polygon = self.diagram in ("velocity", "acceleration")
         lead = group[-1]
         if not polygon:
+            if self.diagram == "posture" and lead.op in ("rigid", "intersect_circles"):
+                ps = self.tell_generic(group)
+                getattr(self, f"posture_{lead.op}")(lead, ps)
+                return ps
             if len(group) > 1 and all(s.op in ("point", "scalar") for s in group):
                 names = [point_name(o) for s in group if s.op == "point" for o in s.outputs]
                 ps = self.tell_generic(group)
@@ -508,9 +513,47 @@ class _Teller:
         for s in group:
             numbers.extend(self.posture_numbers(s))
         text = " ".join(notes)
+        if notes and _first_sentence(text) == title:
+            text = text[len(title):].lstrip(".;: ")
         return PageStep(title, sides, None if lead.equation is None else lead.equation.case,
                         text=text, numbers=numbers, refs=_REFS.get(self.diagram, ""),
                         vector=sides is not None)
+
+    def posture_rigid(self, s: Step, ps: PageStep) -> None:
+        """A point of a link laid off from a known point at the link's angle (case 1)."""
+        a, th = s.inputs[0], s.inputs[1]
+        b = s.outputs[0]
+        A, B = point_name(a), point_name(b)
+        link = th[1:] if th.startswith("θ") else ""
+        r = self.dist(a, b)
+        ps.title = f"Position of {B}: R_{B} = R_{A} + R_{B}{A}"
+        ps.text = (f"{B} is a point of link {link}: lay off {A}{B} from {A} at the link's angle "
+                   f"(case 1: R_{B}{A} is known in size and direction).")
+        ps.numbers.insert(0, f"R_{B}{A} = {fmt(_round(r), 4)} {self.unit_file} at {th}.")
+        ps.refs = "Sec. 2.8, Table 2.2 (case 1)"
+
+    def posture_intersect_circles(self, s: Step, ps: PageStep) -> None:
+        """Two arcs meet (case 4)."""
+        c = s.outputs[0]
+        C = point_name(c)
+        centers = []
+        for k in s.inputs:
+            m = self.makers.get(k)
+            if m is not None and m.inputs:
+                centers.append((point_name(m.inputs[0]), float(m.params.get("radius", math.nan))))
+        if len(centers) == 2:
+            (P, rp), (Q, rq) = centers
+            ps.title = f"Position of {C}: R_{C} = R_{P} + R_{C}{P} = R_{Q} + R_{C}{Q}"
+            ps.text = (f"{C} is {P}{C} = {fmt(rp, 4)} {self.unit_file} from {P} and {Q}{C} = "
+                       f"{fmt(rq, 4)} {self.unit_file} from {Q}: where the two arcs cross (case 4, "
+                       "both directions unknown). Of the two crossings the "
+                       f"{s.branch or 'chosen'} one is the linkage as assembled.")
+            eq = s.equation
+            if eq is not None and len(eq.lhs) == 1 and len(eq.rhs) == 1:
+                ps.sides = [(Term(f"R_{C}", U, U),), (Term(f"R_{P}"), eq.lhs[0]),
+                            (Term(f"R_{Q}"), eq.rhs[0])]
+                ps.case = 4
+        ps.refs = "Sec. 2.8, Fig. 2.14, Table 2.2 (case 4)"
 
     def posture_numbers(self, s: Step) -> list[str]:
         """The numbers of a step drawn on the mechanism: a point found, an angle measured."""
@@ -532,8 +575,10 @@ class _Teller:
             elif s.kind == "scalar" and v.shape == () and o.startswith("θ"):
                 d = math.degrees(float(v)) % 360.0
                 out.append(f"{o} = ⟦{d:.2f}°⟧.")
-            elif s.kind == "circle" and v.shape == (3,) and s.role.value == "result":
-                out.append(f"radius ⟦{fmt(_round(float(v[2])), 4)} {self.unit_file}⟧.")
+            elif s.kind == "circle" and v.shape == (3,):
+                r = f"{fmt(_round(float(v[2])), 4)} {self.unit_file}"
+                known = "radius" in s.params
+                out.append(f"Radius {r}." if known else f"Radius ⟦{r}⟧.")
         return out
 
     def tell_start(self, group: list[Step]) -> PageStep:
@@ -707,8 +752,9 @@ class _Teller:
         return point_name(m.inputs[0]), point_name(m.inputs[1])
 
     def _fixed_name(self, ref: str) -> str:
+        """The point whose image the pole is, for a line drawn through the pole."""
         p, _ = self._posture_pair(ref)
-        return p if self.mech is not None and p in self.mech.links[FRAME].points else ""
+        return p
 
     # a known component laid off
     def tell_normal_component(self, s: Step, lay: Step) -> PageStep:
@@ -761,8 +807,15 @@ class _Teller:
                 + ("It is subtracted: lay it off backward, ending at "
                    f"{image_letter(lay.inputs[0])}." if sub
                    else f"Lay it off from {image_letter(lay.inputs[0])}."))
-        numbers = [f"{wt}; {rel} = {self.q(v, 'V')} (from the velocity polygon).",
-                   f"{_pretty(name)} = 2 ω{k} {rel} = 2({_wtext(wt)})({self.q(v, 'V')}) = "
+        maker = self.src.constructions.get("velocity")
+        given = False
+        if maker is not None:
+            vs = next((st for st in maker.steps if vp in st.outputs), None)
+            given = vs is not None and vs.op == "add_along" and vs.inputs[3] in self.given_rates
+        vt = self.q(v, "V", answer=not given)
+        numbers = [f"{wt}; {rel} = {vt} "
+                   f"({'given' if given else 'from the velocity polygon'}).",
+                   f"{_pretty(name)} = 2 ω{k} {rel} = 2({_wtext(wt)})({vt}) = "
                    f"{self.q(ac, 'A')}; lay off {self.paper(ac)}."]
         ds = self.downstream(lay.outputs[0])
         sides = None

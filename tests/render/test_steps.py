@@ -183,3 +183,16 @@ def test_cli_steps_writes_the_page(tmp_path, gk):
                  "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
     assert "Coriolis component" in text
+
+
+def test_posture_steps_are_told_with_the_arcs_lengths(gk):
+    """Example 3.1's posture: C is R_CB = 18 in from B and R_CD = 11 in from D (case 4)."""
+    told = _told(gk, "ex3_1_fourbar", "posture")
+    (c,) = [ps for ps in told if plain(ps.title).startswith("Position of C")]
+    assert plain(c.title) == "Position of C: R_C = R_B + R_CB = R_D + R_CD"
+    assert c.case == 4 and len(c.sides) == 3 and "BC = 18 in" in c.text
+    exact = gk.exact("ex3_1_fourbar")
+    x, y = (float(v) for v in exact.position("C"))
+    assert _numbers(plain(c.numbers[-1]))[:2] == pytest.approx([x, y], abs=0.01)
+    for ps in told:
+        assert not INTERNAL.search(plain(ps.title)), ps.title
