@@ -93,7 +93,7 @@ def _sym_html(text: str) -> str:
         sup = sup1 or sup2
         return vector_html(f"{base}_{sub}" + (f"^{sup}" if sup else ""))
 
-    esc = re.sub(r"\b([VAR])(?:\^([ntcr]))?_([A-Za-z0-9/]+)(?:\^([ntcr]))?", vec, esc)
+    esc = re.sub(r"\b([VAR])(?:\^([ntcr]))?_([A-Za-z0-9]+(?:/\d+)?)(?:\^([ntcr]))?", vec, esc)
     return re.sub(r"([ωα])(\d+)", r"\1<sub>\2</sub>", esc)
 
 

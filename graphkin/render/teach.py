@@ -262,6 +262,11 @@ sub, sup { font-size: 70%; }
 table.results { border-collapse: collapse; font-size: 14px; margin-top: 8px; }
 table.results td, table.results th { padding: 2px 10px; border-bottom: 1px solid var(--rule);
                                      text-align: left; }
+section.step.wide { grid-template-columns: 1fr; }
+.js section.step.wide.current { grid-template-rows: auto minmax(0, 1fr); }
+.wide .text h2 { margin-bottom: 2px; }
+.wide .numbers { columns: 2; column-gap: 24px; }
+.wide .numbers li { break-inside: avoid; }
 section.results { display: block; }
 .js section.results.current { display: block; height: auto; }
 @media (max-width: 1150px) { .keys { display: none; } nav h1 { max-width: 32vw; } }
@@ -357,6 +362,10 @@ _JS = """
 """
 
 
+WIDE = 1.8
+"""A drawing this many times wider than tall goes under the text, across the page."""
+
+
 def _answer_css(labels: set[str]) -> str:
     """Rules that hide the values of found angular rates printed in the drawings."""
     from graphkin.render.scene import safe_id
@@ -371,7 +380,9 @@ def _step_section(ps: PageStep, k: int, n: int, svg: str) -> str:
     nums = f'<ul class="numbers">{nums}</ul>' if nums else ""
     refs = f'<p class="refs">{html.escape(ps.refs)}</p>' if ps.refs else ""
     steps = " ".join(str(i) for i in ps.steps)
-    return (f'<section class="step" id="step-{k + 1}" data-step="{k}" '
+    m = re.search(r'viewBox="[-\d.]+ [-\d.]+ ([\d.]+) ([\d.]+)"', svg)
+    wide = m is not None and float(m.group(1)) >= WIDE * float(m.group(2))
+    return (f'<section class="step{" wide" if wide else ""}" id="step-{k + 1}" data-step="{k}" '
             f'data-steps="{steps}" data-vector="{"1" if ps.vector else "0"}">\n'
             f'<div class="text"><h2><span class="count">Step {k + 1} of {n}</span>'
             f"{answer_html(ps.title)}</h2>\n{eq}\n<p class=\"what\">{answer_html(ps.text)}</p>\n"

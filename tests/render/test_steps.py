@@ -196,3 +196,12 @@ def test_posture_steps_are_told_with_the_arcs_lengths(gk):
     assert _numbers(plain(c.numbers[-1]))[:2] == pytest.approx([x, y], abs=0.01)
     for ps in told:
         assert not INTERNAL.search(plain(ps.title)), ps.title
+
+
+def test_vector_names_are_typeset_with_their_subscripts():
+    from graphkin.render.narrate import answer_html
+
+    html = answer_html("α4 = A^t_A4D/R_AD; V_A3/2 = ⟦30 m/s⟧")
+    assert "<i>A</i><sup>t</sup><sub>A4D</sub>/<i>R</i><sub>AD</sub>" in html
+    assert "<i>V</i><sub>A3/2</sub>" in html and "α<sub>4</sub>" in html
+    assert '<span class="answer"><span class="val">30 m/s</span></span>' in html
