@@ -94,6 +94,7 @@ def _sym_html(text: str) -> str:
         return vector_html(f"{base}_{sub}" + (f"^{sup}" if sup else ""))
 
     esc = re.sub(r"\b([VAR])(?:\^([ntcr]))?_([A-Za-z0-9]+(?:/\d+)?)(?:\^([ntcr]))?", vec, esc)
+    esc = re.sub(r"\bO_([VA])\b", r"<i>O</i><sub>\1</sub>", esc)
     return re.sub(r"([ωα])(\d+)", r"\1<sub>\2</sub>", esc)
 
 

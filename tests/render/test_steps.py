@@ -201,7 +201,8 @@ def test_posture_steps_are_told_with_the_arcs_lengths(gk):
 def test_vector_names_are_typeset_with_their_subscripts():
     from graphkin.render.narrate import answer_html
 
-    html = answer_html("α4 = A^t_A4D/R_AD; V_A3/2 = ⟦30 m/s⟧")
+    html = answer_html("α4 = A^t_A4D/R_AD; V_A3/2 = ⟦30 m/s⟧ from O_V")
+    assert "<i>O</i><sub>V</sub>" in html
     assert "<i>A</i><sup>t</sup><sub>A4D</sub>/<i>R</i><sub>AD</sub>" in html
     assert "<i>V</i><sub>A3/2</sub>" in html and "α<sub>4</sub>" in html
     assert '<span class="answer"><span class="val">30 m/s</span></span>' in html
