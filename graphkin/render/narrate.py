@@ -507,6 +507,13 @@ class _Teller:
         notes = [s.note for s in group if s.note]
         title = _first_sentence(notes[-1]) if notes else \
             _OP_WORDS.get(lead.op, lead.op.replace("_", " ")).capitalize()
+        if lead.op == "circle_on_diameter" and len(lead.inputs) == 2:
+            # name the diameter by its own end points (the Bresse circle's is I and E*, not
+            # the coupler point E)
+            a, b = (point_name(x) for x in lead.inputs)
+            title = f"Draw the {lead.outputs[0]} on the diameter {a}{b}"
+            notes = [re.sub(r"^Draw the [^:]*? on the diameter \w+(?=[:.]|\s\()", title, n)
+                     for n in notes]
         sides = None
         if lead.equation is not None:
             sides = [lead.equation.lhs, lead.equation.rhs]
@@ -514,7 +521,7 @@ class _Teller:
         for s in group:
             numbers.extend(self.posture_numbers(s))
         text = " ".join(notes)
-        if notes and _first_sentence(text) == title:
+        if notes and text.startswith(title):
             text = text[len(title):].lstrip(".;: ")
         return PageStep(title, sides, None if lead.equation is None else lead.equation.case,
                         text=text, numbers=numbers, refs=_REFS.get(self.diagram, ""),

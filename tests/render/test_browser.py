@@ -20,7 +20,7 @@ from graphkin.render.teach import steps_html
 INTERNAL = re.compile(r"\S:\S|[>⊥∥@\[\]]|\b[va]\(|\bdds?\d|\bo_[va]\b")
 
 PAGES = [("ex3_1_fourbar", "acceleration"), ("ex4_4_coriolis_block", "acceleration"),
-         ("ex3_3_inverted_slider", "velocity")]
+         ("ex3_3_inverted_slider", "velocity"), ("ex3_2_slider_driven", "velocity")]
 
 
 @pytest.fixture(scope="module")
@@ -176,7 +176,9 @@ def test_cycle_page_draws_the_sweep(browser, cycle):
     i, j = int(good[len(good) // 5]), int(good[3 * len(good) // 5])
     drawn = {}
     for k in (i, j):
-        b.js(f"graphkinCycle.show({k})")
+        # move the drive slider as a user does
+        b.js(f"(function () {{ var s = document.getElementById('drive'); s.value = {k}; "
+             "s.dispatchEvent(new Event('input')); })()")
         assert b.js("Number(document.body.getAttribute('data-posture'))") == k
         pos = b.js(_IMAGES + "('mechanism')")
         vel = b.js(_IMAGES + "('velocity')")
