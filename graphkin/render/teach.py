@@ -477,9 +477,12 @@ def _results_html(src: Any, diagram: str) -> str:
     rows = result_rows(src, [diagram])
     if not rows:
         return ""
+    def ans(text: str) -> str:
+        return f'<span class="answer"><span class="val">{html.escape(text)}</span></span>'
+
     cells = "".join(
-        f"<tr><td>{html.escape(r.quantity)}</td><td>{html.escape(r.drawn)}</td>"
-        f"<td>{html.escape(r.exact)}</td>"
+        f"<tr><td>{html.escape(r.quantity)}</td><td>{ans(r.drawn)}</td>"
+        f"<td>{ans(r.exact)}</td>"
         f"<td>{diff_text(r.diff)}</td><td>{html.escape(r.unit)}</td>"
         "</tr>" for r in rows)
     return ('<table class="results"><caption>Read off the construction, and the analytic '

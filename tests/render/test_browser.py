@@ -95,6 +95,15 @@ def test_answers_toggle_hides_and_shows_the_numbers(browser, step_page):
     assert b.js(_STATE)["answer"] == "visible"
     b.js("document.dispatchEvent(new KeyboardEvent('keydown', {key: 'a'}))")
     assert b.js(_STATE)["answer"] == "hidden"
+    # the rates found, printed on the drawings, and the results table hide with them
+    found = b.js("""[].slice.call(document.querySelectorAll(
+        '[id$="label-ω3"], [id$="label-α3"], [id$="label-ω4"], [id$="label-α4"],'
+        + ' table.results .answer .val')).map(function (e) {
+          return getComputedStyle(e).visibility; })""")
+    assert found and set(found) == {"hidden"}
+    b.js("document.getElementById('answers').click()")
+    assert set(b.js("""[].slice.call(document.querySelectorAll('table.results .answer .val'))
+        .map(function (e) { return getComputedStyle(e).visibility; })""")) <= {"visible"}
 
 
 def test_print_media_shows_every_step_in_order(browser, step_page):
