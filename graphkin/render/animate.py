@@ -230,7 +230,9 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     big = max((float(np.nanmax(np.abs(a))) for a in extent_pts if np.isfinite(a).any()),
               default=1.0)
     guides = []
-    lined: list[Slider | Slot] = [*mech.sliders, *mech.slots]
+    # the equivalent slot of a rolling wheel's center (Example 4.7) is no part: not drawn
+    lined: list[Slider | Slot] = [*mech.sliders,
+                                  *(sl for sl in mech.slots if not sl.key.startswith("rolling"))]
     for gl in lined:
         st = sol.links[gl.on]
         if gl.p0 is not None and gl.p1 is not None and getattr(gl, "center", None) is None:
