@@ -72,3 +72,22 @@ def test_cli_animate_mistakes_are_one_line(tmp_path, capsys, args, words):
     assert main(["animate", str(src), "-o", str(tmp_path / "x.html"), *args]) == 2
     err = capsys.readouterr().err.strip()
     assert words in err and len(err.splitlines()) == 1 and "Traceback" not in err
+
+
+def test_frames_and_gif_for_slides(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    out = tmp_path / "frames"
+    assert main(["animate", str(EXAMPLES / "ex3_1_fourbar.toml"), "--count", "6",
+                 "--frames", str(out), "--gif", str(tmp_path / "c.gif")]) == 0
+    files = sorted(out.glob("cycle-*.svg"))
+    assert [p.name for p in files] == [f"cycle-{i:03d}.svg" for i in range(6)]
+    texts = {t.text for t in ET.parse(files[0]).getroot().iter("{http://www.w3.org/2000/svg}text")}
+    assert any(t and "θ2 = 120.00°" in t for t in texts)  # the file's drive comes first
+    gif = (tmp_path / "c.gif").read_bytes()
+    assert gif[:6] in (b"GIF87a", b"GIF89a")
+
+
+def test_cli_animate_needs_an_output(tmp_path, capsys):
+    assert main(["animate", str(EXAMPLES / "ex3_1_fourbar.toml")]) == 2
+    assert "nothing to write" in capsys.readouterr().err
