@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import html
 import re
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -163,6 +165,29 @@ def _scale_of(src: Any, diagram: str, max_inches: float) -> Any:
         return None
 
 
+SMALLEST_PT = 8.0
+"""The smallest text on a teaching page's drawings (points): the secondary labels
+(components, rates, the scale) are raised to it so that they read at 14 px or more
+when the drawing fills a 1300 px window."""
+
+
+@contextmanager
+def _classroom_type() -> Iterator[None]:
+    """Raise the drawings' secondary text to :data:`SMALLEST_PT` while frames are made."""
+    from graphkin.render.style import STYLES
+
+    saved = {k: dict(v) for k, v in STYLES.items() if "size" in v}
+    try:
+        for v in STYLES.values():
+            if "size" in v and v["size"] < SMALLEST_PT:
+                v["size"] = SMALLEST_PT
+        yield
+    finally:
+        for k, v in saved.items():
+            STYLES[k].clear()
+            STYLES[k].update(v)
+
+
 def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
                 max_inches: float = FRAME_INCHES) -> list[str]:
     """The drawing after each page step, its own construction steps highlighted (SVG texts)."""
@@ -171,12 +196,13 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
     from graphkin.render.svg import to_svg
 
     out = []
-    for ps in steps:
-        sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps), table=False,
-                            max_inches=max_inches, title="")
-        d = render_sheet(sheet)
-        assert d.figure is not None
-        out.append(to_svg(d.figure))
+    with _classroom_type():
+        for ps in steps:
+            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
+                                table=False, max_inches=max_inches, title="")
+            d = render_sheet(sheet)
+            assert d.figure is not None
+            out.append(to_svg(d.figure))
     return out
 
 
@@ -362,7 +388,7 @@ _JS = """
 """
 
 
-WIDE = 1.8
+WIDE = 1.45
 """A drawing this many times wider than tall goes under the text, across the page."""
 
 
