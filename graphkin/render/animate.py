@@ -195,6 +195,9 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     else:
         data["drive"] = {"label": f"s{d.link}", "unit": mech.length_unit,
                          "values": [round(float(v), 6) for v in sw.drive_values]}
+    held = [f"θ{x.link}" if x.kind == "angle" else f"s{x.link}" for x in mech.drives[1:]]
+    data["held"] = (f"{data['drive']['label']} is swept; {', '.join(held)} held at the file's "
+                    "value (its rate applies throughout)") if held else ""
     data["valid"] = "".join("1" if v else "0" for v in np.asarray(sw.assembled).tolist())
     data["rated_valid"] = "".join("1" if v else "0" for v in np.asarray(sw.valid).tolist())
     events = []
@@ -331,6 +334,7 @@ body { margin: 0; font: 15px/1.4 "DejaVu Sans", Verdana, sans-serif; color: #111
        background: #fafafa; }
 header { padding: 6px 14px; background: #fff; border-bottom: 1px solid #ddd; }
 header h1 { font-size: 16px; margin: 0; }
+header .held { margin: 2px 0 0; font-size: 13px; color: #555; }
 .controls { display: flex; flex-wrap: wrap; align-items: center; gap: 8px; padding: 6px 14px;
             background: #fff; border-bottom: 1px solid #ddd; }
 .controls button, .controls select { font: inherit; padding: 2px 10px; }
@@ -743,7 +747,9 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
         ".lbl{fill:#111;font-family:'DejaVu Sans',sans-serif}"
         ".ic{fill:#1565c0}.inf{fill:#2e7d32}.guide{stroke:#777;stroke-dasharray:none}"
         ".rel{stroke:#555}</style>\n</head>\n<body>\n"
-        f"<header><h1>{title}: the whole cycle</h1></header>\n"
+        f"<header><h1>{title}: the whole cycle</h1>"
+        + (f'<p class="held">{html.escape(data["held"])}</p>' if data["held"] else "")
+        + "</header>\n"
         '<div class="controls"><button id="play" type="button">▶ Play</button>'
         '<button id="prev" type="button" title="one posture back">◀ −1</button>'
         '<button id="next" type="button" title="one posture on">+1 ▶</button>'

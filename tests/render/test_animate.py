@@ -45,6 +45,8 @@ def test_page_is_light_and_offline():
                      re.S).group(1)
     data = json.loads(blob.replace("<\\/", "</"))
     assert data["n"] == 360 and "I13" in data["centers"]
+    # two inputs (Example 5.4): the page says which is swept and which is held
+    assert data["held"].startswith("θ2 is swept; θ3 held")
 
 
 def test_unassemblable_range_and_toggles_are_in_the_data():
