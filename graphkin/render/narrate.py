@@ -507,7 +507,8 @@ class _Teller:
         notes = [s.note for s in group if s.note]
         title = _first_sentence(notes[-1]) if notes else \
             _OP_WORDS.get(lead.op, lead.op.replace("_", " ")).capitalize()
-        if lead.op == "circle_on_diameter" and len(lead.inputs) == 2:
+        if lead.op == "circle_on_diameter" and len(lead.inputs) == 2 \
+                and re.fullmatch(r"[A-Za-z ]+", lead.outputs[0]):
             # name the diameter by its own end points (the Bresse circle's is I and E*, not
             # the coupler point E)
             a, b = (point_name(x) for x in lead.inputs)
@@ -1073,6 +1074,8 @@ def _first_sentence(note: str) -> str:
     head, colon, _ = first.partition(": ")
     if colon and len(head.split()) >= 3 and head.count("(") == head.count(")"):
         first = head
+    if len(first) > 80 and " (" in first:  # the parenthesis stays in the text
+        first = first[:first.index(" (")]
     return first[0].upper() + first[1:] if first else note
 
 

@@ -206,3 +206,18 @@ def test_vector_names_are_typeset_with_their_subscripts():
     assert "<i>A</i><sup>t</sup><sub>A4D</sub>/<i>R</i><sub>AD</sub>" in html
     assert "<i>V</i><sub>A3/2</sub>" in html and "α<sub>4</sub>" in html
     assert '<span class="answer"><span class="val">30 m/s</span></span>' in html
+
+
+ALL = sorted(p.stem for p in EXAMPLES.glob("ex[0-9]*.toml"))
+
+
+@pytest.mark.parametrize("name", ALL)
+def test_posture_centers_and_curvature_steps_have_titles_in_words(gk, name):
+    sol = gk.solved(name)
+    for diagram in ("posture", "centers", "curvature"):
+        src = as_source(sol, diagrams=(diagram,) if diagram != "posture" else ())
+        if diagram not in src.constructions:
+            continue
+        for ps in narrate(src, diagram):
+            title = plain(ps.title)
+            assert title and not INTERNAL.search(title), (diagram, title)
