@@ -28,7 +28,7 @@ Sec. 3.5 (images), Sec. 4.3 (Fig. 4.4), Sec. 4.5 (Fig. 4.11).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 
 import numpy as np
 
@@ -192,8 +192,14 @@ class StepPainter:
         return None if v is None else np.asarray(v, dtype=float)
 
     # ---- entry point --------------------------------------------------
-    def paint(self, upto: int | None = None, highlight: int | None = None) -> list[Group]:
-        """Paint steps ``0..upto`` (all by default); returns the groups made."""
+    def paint(self, upto: int | None = None,
+              highlight: int | Collection[int] | None = None) -> list[Group]:
+        """Paint steps ``0..upto`` (all by default); returns the groups made.
+
+        ``highlight`` is the step (or the steps) drawn in the highlight colour.
+        """
+        lit = set() if highlight is None else (
+            {highlight} if isinstance(highlight, int) else set(highlight))
         groups = []
         last = len(self.cx.steps) - 1 if upto is None else min(upto, len(self.cx.steps) - 1)
         for step in self.cx.steps[: last + 1]:
@@ -202,7 +208,7 @@ class StepPainter:
                 continue
             z = {"line": 2.0, "circle": 2.0, "vector": 3.0, "scalar": 3.5}.get(step.kind, 4.0)
             g = panel.group(self.prefix + step.step_id, z, step=step, diagram=self.diagram,
-                            highlight=(highlight is not None and step.index == highlight),
+                            highlight=step.index in lit,
                             key=step.label)
             groups.append(g)
             if step.kind == "scalar":

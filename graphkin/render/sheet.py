@@ -21,6 +21,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4, 4.3 (Figs. 2.14, 3.5, 4.4).
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -112,7 +113,7 @@ def sheet_diagrams(src: Source, diagram: str) -> list[str]:
 
 
 def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
-                highlight: int | None = None, table: bool = True,
+                highlight: int | Collection[int] | None = None, table: bool = True,
                 max_inches: float | None = None, title: str | None = None) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
@@ -124,8 +125,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         ``+`` (``"posture+velocity"``), or ``"all"``.
     upto : int, optional
         Draw the diagram's construction only up to this step (inclusive).
-    highlight : int, optional
-        The step drawn in the highlight colour (a teaching page's newest step).
+    highlight : int or collection of int, optional
+        The step (or steps) drawn in the highlight colour (a teaching page's newest act).
     table : bool
         Add the results table.
     max_inches : float, optional
