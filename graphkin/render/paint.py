@@ -48,6 +48,7 @@ from graphkin.render.scene import (
 )
 from graphkin.render.sources import Source, plane_of
 from graphkin.render.style import style_for_role
+from graphkin.render.text import math_escape, plain
 
 __all__ = ["StepPainter", "image_text", "vector_math", "INTERSECTIONS", "POLES"]
 
@@ -86,7 +87,7 @@ def image_text(label: str) -> str:
     while i > 0 and base[i - 1].isdigit():
         i -= 1
     letters, digits = base[:i] or base, base[i:] if i else ""
-    return letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB)
+    return plain(letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB))
 
 
 def vector_math(label: str) -> str:
@@ -98,11 +99,14 @@ def vector_math(label: str) -> str:
     ('$A^{n}_{CB}$', '$A^{c}_{A/4}$', '$V_{B}$')
     """
     base, _, rest = label.partition("_")
-    sub, _, sup = rest.partition("^")
+    sub, _, sup = rest.rpartition("^") if "^" in rest else (rest, "", "")
     sub = sub.replace("{", "").replace("}", "")
     if not sub:
-        return label
-    return f"${base}^{{{sup}}}_{{{sub}}}$" if sup else f"${base}_{{{sub}}}$"
+        return plain(label)
+    b, lo, hi = math_escape(base), math_escape(sub), math_escape(sup)
+    if b is None or lo is None or hi is None:
+        return plain(label)
+    return f"${b}^{{{hi}}}_{{{lo}}}$" if hi else f"${b}_{{{lo}}}$"
 
 
 def vector_style(label: str) -> str:

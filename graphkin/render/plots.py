@@ -38,6 +38,7 @@ import numpy as np
 
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME
+from graphkin.render.text import plain
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -291,7 +292,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             ax.set_ylabel("transmission angle γ, °")
             ax.set_xlabel(_drive_label(sw))
             ax.legend(loc="best", fontsize="small", frameon=False)
-    fig.suptitle(sw.mechanism.title or "sweep", fontsize="medium")
+    fig.suptitle(plain(sw.mechanism.title or "sweep"), fontsize="medium")
     return fig
 
 

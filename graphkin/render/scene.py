@@ -22,6 +22,7 @@ import numpy as np
 
 from graphkin.construction import Step
 from graphkin.render.scale import Scale
+from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
            "sub_digits", "point_text"]
@@ -65,7 +66,7 @@ def point_text(label: str) -> str:
     ('T', 'O₄', "C'")
     """
     base = label.split("#")[0].split(":")[-1]
-    return sub_digits(base)
+    return plain(sub_digits(base))
 
 
 def finite_xy(p: Any, tol: float = 1e-12) -> np.ndarray | None:
