@@ -167,6 +167,7 @@ class StepPainter:
         self.drawn_points: set[str] = set()
         self.arrows: dict[str, dict[tuple[float, ...], Item]] = {}
         self.arrow_ends: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+        self._helper_xy: list[np.ndarray] | None = None
         self.quiet_rates = False
         """Leave angular rates off the mechanism (a sheet of every diagram lists them)."""
 
@@ -317,6 +318,9 @@ class StepPainter:
                       xy: np.ndarray) -> None:
         """A point of the mechanism's plane: a pin or dot, lettered; or a construction point."""
         mech = self.src.mechanism
+        if mech is not None and label in mech.helper_points:
+            self.drawn_points.add(label)  # drawn as its line or slot, not as a point
+            return
         if mech is not None and label in mech.point_links:
             style = "pin" if len(mech.point_links[label]) >= 2 else "point"
             helper = not _is_joint_or_named_point(mech, label)
@@ -325,10 +329,23 @@ class StepPainter:
             self.label(panel, g, point_text(label), xy, label,
                        style="label-aux" if helper else "label")
             return
+        if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
+            return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
             self.label(panel, g, point_text(label), xy, label, style="label-aux")
+
+    def _on_helper(self, xy: np.ndarray, panel: Panel) -> bool:
+        """True when ``xy`` is where a helper point of the mechanism is."""
+        mech, sol = self.src.mechanism, self.src.solution
+        if mech is None or sol is None or not mech.helper_points:
+            return False
+        if self._helper_xy is None:
+            self._helper_xy = [np.asarray(sol.position(n), dtype=float)
+                               for n in sorted(mech.helper_points)]
+        tol = 1e-9 * panel.diag()
+        return any(float(np.hypot(*(xy - q))) <= tol for q in self._helper_xy)
 
     def polygon_point(self, step: Step, g: Group, panel: Panel, label: str,
                       xy: np.ndarray) -> None:
@@ -340,6 +357,9 @@ class StepPainter:
             self.label(panel, g, pole_text or point_text(label), xy, label)
             return
         image = _is_image(label)
+        mech = self.src.mechanism
+        if image and mech is not None and label[2:-1] in mech.helper_points:
+            return  # a helper point has no image (issue 11: only the line it defines)
         if image:
             self.marker(g, xy, "image-point", label)
             self.label(panel, g, image_text(label), xy, label)
@@ -623,7 +643,13 @@ class StepPainter:
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:
-    """A point worth a letter: a joint, a slider point, or a point of a moving link."""
+    """A point worth a letter: a joint, a slider point, or a point of a moving link.
+
+    A helper point (:attr:`Mechanism.helper_points`: ``S``, ``T``, ``L1``...)
+    never is: it is drawn as the line or slot it defines.
+    """
+    if label in mech.helper_points:
+        return False
     links = mech.point_links[label]
     if len(links) >= 2:
         return True

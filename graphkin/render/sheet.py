@@ -311,7 +311,7 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
     pref = "v" if p.plane == "velocity" else "a"
     pole = p.pole
     for i, lid in enumerate(mech.moving):
-        names = list(mech.links[lid].points)
+        names = [n for n in mech.links[lid].points if n not in mech.helper_points]
         world = {}
         for n in names:
             world[n] = np.asarray(sol.position(n, lid), dtype=float)

@@ -31,7 +31,7 @@ from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
-__all__ = ["instant_centers", "instant_center"]
+__all__ = ["instant_centers", "instant_center", "FAR_AS_INFINITY"]
 
 Pair = tuple[str, str]
 
@@ -41,6 +41,34 @@ Array = np.ndarray
 #: coordinates scaled by the size of the mechanism, is below this loses more
 #: than 6 of 16 digits: another triangle, or the velocities, are used instead.
 _WELL_CONDITIONED = 1e-6
+
+#: A center farther from the origin than this many sizes of the mechanism is
+#: at infinity: its two lines of centers are parallel but for the round-off
+#: of the file's numbers (an angle below 1e-6 rad, far finer than any drawing).
+#: The center is then recorded as the point at infinity in that direction, so
+#: that the report, JSON and drawings print a direction, never a huge coordinate.
+FAR_AS_INFINITY = 1e6
+
+
+def _far_as_ideal(p: Array, far: float) -> Array:
+    """A finite point farther than ``far`` from the origin as the point at infinity there.
+
+    Examples
+    --------
+    >>> _far_as_ideal(np.array([-2.5e8, 0.0, 1.0]), 5e6).tolist()
+    [-1.0, 0.0, 0.0]
+    >>> _far_as_ideal(np.array([3.0, 4.0, 1.0]), 5e6).tolist()
+    [3.0, 4.0, 1.0]
+    """
+    p = np.asarray(p, dtype=float)
+    if p.shape[-1:] != (3,):
+        return p
+    w = p[..., 2]
+    r = np.hypot(p[..., 0], p[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        far_away = (w != 0) & np.isfinite(r) & (r > far * np.abs(w))
+        ideal = np.stack([p[..., 0] / r, p[..., 1] / r, np.zeros_like(w)], axis=-1)
+    return np.where(far_away[..., None], ideal, p)
 
 
 def _perp(v: Array) -> Array:
@@ -86,6 +114,7 @@ class _Kennedy:
     def found(self, pair: Pair, how: How, source: str, note: str, *, lines: tuple[str, ...] = (),
               triangles: tuple[tuple[str, str, str], ...] = (), speed: bool = False) -> None:
         lab = center_label(*pair)
+        self.env[lab] = _far_as_ideal(self.env[lab], FAR_AS_INFINITY * self.mech.scale)
         self.centers[pair] = Center(pair, lab, self.env[lab], how, source, len(self.centers) + 1,
                                     lines, triangles, speed, note)
 
