@@ -120,6 +120,33 @@ def vector_style(label: str) -> str:
     return "vector-rel"
 
 
+def _unknown_terms(step: Step) -> list[str]:
+    """Names of the vectors a step finds: the unknown-magnitude terms of its equation."""
+    eq = step.equation
+    if eq is None:
+        return []
+    terms = (*eq.lhs, *eq.rhs)
+    return [t.name for t in terms if str(getattr(t.magnitude, "value", t.magnitude)) == "?"
+            and str(getattr(t.direction, "value", t.direction)) != "?"]
+
+
+def _component_names(step: Step) -> dict[str, str]:
+    """The normal and tangential components named in a step's equation: ``{"n": "A_CD^n"}``."""
+    eq = step.equation
+    out: dict[str, str] = {}
+    if eq is None:
+        return out
+    for t in (*eq.lhs, *eq.rhs):
+        for sup in ("n", "t", "c"):
+            if t.name.endswith("^" + sup):
+                out.setdefault(sup, t.name)
+    return out
+
+
+def _math_or_none(name: str | None) -> str | None:
+    return None if not name else vector_math(name)
+
+
 def _is_image(label: str) -> bool:
     return (label.startswith(("v(", "a(")) and label.endswith(")") and ":" not in label)
 
@@ -254,7 +281,8 @@ class StepPainter:
         seen[sig] = it
         if text:
             mid = tail + 0.5 * (tip - tail)
-            self.label(panel, g, text, mid, key or text, style="label-small", gap=0.03)
+            # at point-label size: mathtext sub- and superscripts (0.7 of it) stay above 6 pt
+            self.label(panel, g, text, mid, key or text, style="label-vector", gap=0.03)
         return it
 
     def marker(self, g: Group, xy: np.ndarray, style: str, key: str) -> Item:
@@ -386,10 +414,17 @@ class StepPainter:
             if ta is not None and w is not None and a is not None and x is not None:
                 r = x - a
                 mid = ta - float(w) ** 2 * r
-                self.arrow(panel, g, ta, mid, "vector-n", key=f"{label}:n")
-                self.arrow(panel, g, mid, xy, "vector-t", key=f"{label}:t")
+                names = _component_names(step)
+                self.arrow(panel, g, ta, mid, "vector-n", key=f"{label}:n",
+                           text=_math_or_none(names.get("n")))
+                self.arrow(panel, g, mid, xy, "vector-t", key=f"{label}:t",
+                           text=_math_or_none(names.get("t")))
         elif step.op == "meet":
-            for line in ins:
+            unknown = _unknown_terms(step)
+            for li, line in enumerate(ins):
+                name = unknown[li] if len(unknown) == len(ins) else None
+                if not accel and name is not None and "/" not in name:
+                    name = None  # a velocity polygon letters only the apparent (slip) vectors
                 thr = self.through(line)
                 if thr is None or float(np.hypot(*(thr - xy))) <= 1e-9 * panel.diag():
                     continue
@@ -399,14 +434,13 @@ class StepPainter:
                     abs_done = True
                 else:
                     self.arrow(panel, g, thr, xy, "vector-t" if accel else "vector-rel",
-                               key=f"{label}:{line}")
+                               key=f"{label}:{line}", text=_math_or_none(name))
         elif step.op in ("translate", "subtract"):
             p = self.xy(ins[0])
             if p is not None:
                 tail, tip = (p, xy) if step.op == "translate" else (xy, p)
                 st = vector_style(ins[1])
-                self.arrow(panel, g, tail, tip, st, key=ins[1],
-                           text=vector_math(ins[1]) if st in ("vector-n", "vector-c") else None)
+                self.arrow(panel, g, tail, tip, st, key=ins[1], text=vector_math(ins[1]))
         elif step.op == "add_along":
             p = self.xy(ins[0])
             if p is not None:

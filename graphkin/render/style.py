@@ -75,6 +75,7 @@ STYLES: dict[str, dict[str, Any]] = {
     "label": {"size": FONT_PT},
     "label-aux": {"size": SMALL_PT, "color": GREY},
     "label-small": {"size": SMALL_PT},
+    "label-vector": {"size": FONT_PT},
     "number": {"size": FONT_PT + 1, "style": "italic"},
     "title": {"size": FONT_PT + 1, "weight": "bold"},
     "caption": {"size": SMALL_PT + 0.5},
