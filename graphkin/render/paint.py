@@ -317,8 +317,8 @@ class StepPainter:
         tip = c + d * (t - 0.12 * panel.k)
         tail = tip - d * 0.4 * panel.k
         self.arrow(panel, g, tail, tip, "infinity", key=label)
-        self.label(panel, g, text or f"{point_text(label)} ∞", tail, label,
-                   style="label-small" if text else "label", prefer=(-d[0], -d[1]))
+        self.label(panel, g, text or f"{point_text(label)} ∞", tail, label, style="label",
+                   prefer=(-d[0], -d[1]))
 
     # ---- points -------------------------------------------------------
     def point(self, step: Step, g: Group, panel: Panel) -> None:
@@ -360,9 +360,12 @@ class StepPainter:
         if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
             return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
+        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
-            self.label(panel, g, point_text(label), xy, label, style="label-aux")
+            # a center or a point the construction finds: black, at point-label size
+            self.label(panel, g, point_text(label), xy, label,
+                       style="label" if found else "label-aux")
 
     def _on_helper(self, xy: np.ndarray, panel: Panel) -> bool:
         """True when ``xy`` is where a helper point of the mechanism is."""
@@ -511,7 +514,7 @@ class StepPainter:
             center = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
             base = center - (float(n @ center) + c) * n
             p0, p1 = base - panel.diag() * d, base + panel.diag() * d
-        seg = clip_segment(p0, p1, panel.view)
+        seg = clip_segment(p0, p1, panel.inner or panel.view)
         if seg is None:
             return
         style = ("ref-line" if self.diagram != step.diagram and step.op == "join"

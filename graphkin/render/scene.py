@@ -205,6 +205,8 @@ class Panel:
     pole: str | None = None
     origin: tuple[float, float] = (0.0, 0.0)
     """Where the panel sits on the sheet: its lower-left corner in inches."""
+    inner: tuple[float, float, float, float] | None = None
+    """The view less the title and scale-bar strips: where construction lines may run."""
 
     @property
     def k(self) -> float:

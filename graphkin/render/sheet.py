@@ -214,6 +214,16 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         w, h = max(float(ex), minw), max(float(ey), minh)
         p.view = (cx_ - w / 2 - MARGIN * k, cy_ - h / 2 - MARGIN * k - FOOT_H * k,
                   cx_ + w / 2 + MARGIN * k, cy_ + h / 2 + MARGIN * k + TITLE_H * k)
+        p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
+
+    # ---- the Kennedy circle beside the instant centers (Fig. 3.22b) ------
+    ic = src.extras.get("centers")
+    if "centers" in diagrams and ic is not None and hasattr(ic, "kennedy_circle") \
+            and length_of.get("centers") is not None:
+        from graphkin.render.kennedy import kennedy_panel
+
+        kp = kennedy_panel(ic, "centers-" if many else "")
+        panels.insert(panels.index(length_of["centers"]) + 1, kp)  # type: ignore[arg-type]
 
     # ---- paint ----------------------------------------------------------
     for d, painter in painters.items():

@@ -82,6 +82,11 @@ STYLES: dict[str, dict[str, Any]] = {
     "table": {"size": SMALL_PT, "family": "monospace"},
     "table-head": {"size": SMALL_PT, "family": "monospace", "weight": "bold"},
     "scale-bar": {"color": INK, "lw": 0.8},
+    # the Kennedy circle (Fig. 3.22b)
+    "kennedy-circle": {"color": GREY, "lw": 0.6},
+    "kennedy-known": {"color": INK, "lw": 1.0},
+    "kennedy-unknown": {"color": GREY, "lw": 0.6, "ls": (0, (3, 2))},
+    "label-order": {"size": SMALL_PT, "color": INK},
 }
 
 IMAGE_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")

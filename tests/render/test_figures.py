@@ -1,0 +1,56 @@
+"""Required elements of the figures, read back from the SVG by group id (issue 11)."""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+from spec_data import EXAMPLES
+
+from graphkin.render.style import FONT_PT
+
+NAMES = sorted(p.stem for p in EXAMPLES.glob("ex*.toml") if p.stem != "expected")
+
+
+def _ids(svg: bytes) -> set[str]:
+    return {el.get("id") for el in ET.fromstring(svg).iter() if el.get("id")}
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_centers_figure_has_the_kennedy_circle(gk, name):
+    sol = gk.solved(name)
+    ids = _ids(gk.svg(name, "centers"))
+    n = len(sol.mechanism.links)
+    assert "kennedy-circle" in ids and "panel-kennedy" in ids
+    assert all(f"kennedy-link-{lid}" in ids for lid in sol.mechanism.links)
+    # one chord per pair of links: N = n(n-1)/2 (Eq. 3.20)
+    chords = {i for i in ids if re.fullmatch(r"kennedy-I\d+(-\d+)?", i)}
+    assert len(chords) == n * (n - 1) // 2
+    d = gk.drawn(name, "centers")
+    ic = d.sheet.painters["centers"].src.extras["centers"]
+    for c in ic.centers.values():
+        assert f"kennedy-order-{c.label}" in ids
+        assert d.texts[f"order {c.label}"].get_text() == str(c.order)
+
+
+@pytest.mark.parametrize("name", ["ex3_1_fourbar", "ex5_4_fivebar"])
+def test_instant_center_letters_are_black_at_point_label_size(gk, name):
+    d = gk.drawn(name, "centers")
+    ic = d.sheet.painters["centers"].src.extras["centers"]
+    for c in ic.centers.values():
+        t = d.texts.get(c.label)
+        if t is None:
+            continue  # a center at infinity is an arrow marked ∞
+        assert t.get_fontsize() == FONT_PT
+        assert t.get_color() in ("k", "#000000", "black")
+
+
+def test_a_center_at_infinity_is_printed_as_a_direction(gk):
+    # Example 4.7 at its posture: the follower's face is vertical, so the common normal
+    # through B and the line I12-I13 are parallel: I23 is at infinity along x.
+    d = gk.drawn("ex4_7_cam_follower", "centers")
+    row = {r.key: r for r in d.sheet.rows}["center-I23"]
+    assert row.drawn.startswith("∞ along (1, 0)") and row.exact.startswith("∞ along (1, 0)")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert "I₂₃ ∞" in texts
