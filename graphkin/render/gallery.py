@@ -284,6 +284,9 @@ def _readme(root: Path, entries: list[Entry], results: dict[str, dict[str, Any]]
         "The four cases of the planar vector equation (Sec. 2.8, Figs. 2.10-2.13) are vector "
         "files in [`vector/`](vector/): `graphkin vector gallery/vector/case4.toml`.",
         "",
+    ]
+    lines += _before_after(root, drawings)
+    lines += [
         "## Index",
         "",
         "| mechanism | figure | examples | section | drawings |",
@@ -329,6 +332,31 @@ def _readme(root: Path, entries: list[Entry], results: dict[str, dict[str, Any]]
             if any(row["why"] for row in rows):
                 lines.append("")
     return "\n".join(lines).rstrip() + "\n"
+
+
+BEFORE_AFTER = (("curvature", "before/ex4_14_inflection_bresse_curvature.png",
+                 "curvature-ex4_14_fourbar-curvature.svg"),
+                ("instant centers", "before/ex4_14_inflection_bresse_centers.png",
+                 "curvature-ex4_14_fourbar-centers.svg"))
+"""Issue 11's before/after pair of Example 4.14: the drawing of the first release (a
+committed PNG) beside the drawing the gallery makes now."""
+
+
+def _before_after(root: Path, drawings: dict[str, list[str]]) -> list[str]:
+    made = {n for names in drawings.values() for n in names}
+    pairs = [(what, old, new) for what, old, new in BEFORE_AFTER
+             if (root / old).is_file() and new in made]
+    if not pairs:
+        return []
+    lines = ["## Before and after: Example 4.14", "",
+             "The same file drawn before the figures were reworked (left: one panel with every "
+             "construction line, literal underscores, no Kennedy circle, a center at infinity "
+             "as huge coordinates) and now (right: the curvature sheet split into the book's "
+             "figures with the cubic drawn, the Kennedy circle beside the instant centers).",
+             "", "| | before | after |", "|---|---|---|"]
+    for what, old, new in pairs:
+        lines.append(f"| {what} | ![before]({old}) | ![after](drawings/{new}) |")
+    return lines + [""]
 
 
 def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:

@@ -394,10 +394,19 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
                 parts = [a]
                 if hasattr(a, "_shaft"):
                     parts = [a._shaft]  # a vector: its shaft (the head is at its tip)
+                axbox = None
+                if a.axes is not None:  # what the panel shows: its drawing is clipped there
+                    ab = a.axes.bbox
+                    axbox = box(ab.x0, ab.y0, ab.x1, ab.y1)
                 for part in parts:
                     part.axes = a.axes
                     for seg in _segments(part):
-                        lines.append(LineString(seg))
+                        ln = LineString(seg)
+                        if axbox is not None:
+                            ln = ln.intersection(axbox)
+                            if ln.is_empty:
+                                continue
+                        lines.append(ln)
                         owners.append(gid)
     out: list[tuple[str, str, str]] = []
     if boxes:

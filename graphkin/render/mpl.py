@@ -25,7 +25,7 @@ from matplotlib.text import Text
 from graphkin.render.results import AGREE, ROUND_OFF, diff_text
 from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import TABLE_ROW, Sheet, build_sheet
-from graphkin.render.sources import DIAGRAMS, as_source, optional_modules
+from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
 from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
 from graphkin.render.text import plain
 
@@ -466,8 +466,10 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (Fig. 2.14), 3.4 (Fig. 3.5),
     4.3 (Fig. 4.4).
     """
-    wanted = tuple(d for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
-                   if d in optional_modules)
+    wanted = tuple(dict.fromkeys(
+        "curvature" if d in CURVATURE_PANELS else d
+        for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
+        if d in optional_modules or d in CURVATURE_PANELS))
     src = as_source(obj, values=values, diagrams=wanted, link=link)
     if ax is None:
         sheet = build_sheet(src, diagram, upto=upto, highlight=highlight,

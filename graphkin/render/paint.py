@@ -41,6 +41,7 @@ from graphkin.render.scene import (
     LabelRequest,
     Panel,
     clip_segment,
+    construction_text,
     finite_xy,
     point_text,
     safe_id,
@@ -295,8 +296,9 @@ class StepPainter:
         """A point beyond the panel: an arrow at the edge toward it, with its coordinates."""
         x0, y0, x1, y1 = panel.view
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        name = construction_text(label) if panel.plane == "posture" else image_text(label)
         self.ideal(panel, g, label, np.array([*(xy - c), 0.0]),
-                   text=f"{point_text(label) if panel.plane == 'posture' else image_text(label)}"
+                   text=f"{name}"
                         f" ({fmt(xy[0], 4)}, {fmt(xy[1], 4)})", center=c)
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
@@ -317,7 +319,7 @@ class StepPainter:
         tip = c + d * (t - 0.12 * panel.k)
         tail = tip - d * 0.4 * panel.k
         self.arrow(panel, g, tail, tip, "infinity", key=label)
-        self.label(panel, g, text or f"{point_text(label)} ∞", tail, label, style="label",
+        self.label(panel, g, text or f"{construction_text(label)} ∞", tail, label, style="label",
                    prefer=(-d[0], -d[1]))
 
     # ---- points -------------------------------------------------------
@@ -364,8 +366,9 @@ class StepPainter:
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
             # a center or a point the construction finds: black, at point-label size
-            self.label(panel, g, point_text(label), xy, label,
-                       style="label" if found else "label-aux")
+            text = construction_text(label)
+            self.label(panel, g, text, xy, label,
+                       style="label" if found or text.startswith("$") else "label-aux")
 
     def _on_helper(self, xy: np.ndarray, panel: Panel) -> bool:
         """True when ``xy`` is where a helper point of the mechanism is."""
@@ -520,6 +523,12 @@ class StepPainter:
         style = ("ref-line" if self.diagram != step.diagram and step.op == "join"
                  else style_for_role(step.role, "line"))
         g.items.append(Item("path", np.array(seg), style, key=label))
+        if self.diagram in _CURVATURE and label.split("*")[0] in ("N", "T"):
+            # the centrode normal and tangent, lettered at their positive ends
+            a, b = np.asarray(seg[0]), np.asarray(seg[1])
+            tip = b if float((b - a) @ d) >= 0 else a
+            self.label(panel, g, label.split("*")[0], tip - 0.15 * panel.k * d *
+                       (1 if tip is b else -1), label, style="label")
         # right-angle marks
         if step.op == "perpendicular" and through is not None:
             if foot is not None:
@@ -567,7 +576,7 @@ class StepPainter:
                         cuts.append(q)
         if not cuts:
             # no intersection cuts it: mark the later points that lie on it (a tangent's foot)
-            for s in self.cx.steps[step.index + 1:]:
+            for s in (x for x in self.cx.steps if x.index > step.index):
                 if plane_of(s.diagram) != panel.plane:
                     continue
                 for o in s.outputs:
@@ -577,7 +586,12 @@ class StepPainter:
                     if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
                         cuts.append(q)
         if not cuts or step.role == Role.RESULT:
-            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r))
+            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
+                                gid=safe_id(self.prefix + label.replace(" ", "-"))))
+            if label.split("*")[0] in ("inflection circle", "Bresse circle"):
+                top = center + np.array([0.0, r])
+                self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
+                           label, style="label-small", prefer=(0.0, 1.0))
             return
         half = min(max(6.0, math.degrees(ARC_HALF * panel.k / r)), 170.0)
         for i, q in enumerate(cuts):
@@ -725,3 +739,5 @@ def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
 
 
 PaintFn = Callable[[Step, Group, Panel], None]
+
+_CURVATURE = ("curvature", "inflection", "bobillier", "hartmann", "cubic")

@@ -25,7 +25,7 @@ from graphkin.render.scale import Scale
 from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text"]
+           "sub_digits", "point_text", "construction_text"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -67,6 +67,31 @@ def point_text(label: str) -> str:
     """
     base = label.split("#")[0].split(":")[-1]
     return plain(sub_digits(base))
+
+
+def construction_text(label: str) -> str:
+    """A construction point's label with real subscripts: ``J_B`` -> ``$J_{B}$``, ``A_H3``.
+
+    Plain text when there is nothing to subscript; user letters are escaped.
+
+    Examples
+    --------
+    >>> construction_text("J_B"), construction_text("Q_Γ"), construction_text("C'")
+    ('$J_{B}$', '$Q_{Γ}$', "C'")
+    """
+    from graphkin.render.text import math_escape
+
+    base = label.split("#")[0].split(":")[-1]
+    head, sep, sub = base.partition("_")
+    if not sep or not head or not sub:
+        return point_text(label)
+    h, lo = math_escape(head), math_escape(sub.replace("_", ""))
+    if h is None or lo is None:
+        return point_text(label)
+    prime = ""
+    while lo.endswith("'"):
+        lo, prime = lo[:-1], prime + "'"
+    return f"${h}_{{{lo}}}{prime}$"
 
 
 def finite_xy(p: Any, tol: float = 1e-12) -> np.ndarray | None:

@@ -82,6 +82,8 @@ STYLES: dict[str, dict[str, Any]] = {
     "table": {"size": SMALL_PT, "family": "monospace"},
     "table-head": {"size": SMALL_PT, "family": "monospace", "weight": "bold"},
     "scale-bar": {"color": INK, "lw": 0.8},
+    "cubic": {"color": INK, "lw": 1.1, "ls": (0, (8, 2))},
+    "ball": {"marker": "o", "ms": 5.5, "mfc": "none", "mec": INK, "mew": 1.0},
     # the Kennedy circle (Fig. 3.22b)
     "kennedy-circle": {"color": GREY, "lw": 0.6},
     "kennedy-known": {"color": INK, "lw": 1.0},

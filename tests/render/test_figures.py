@@ -54,3 +54,33 @@ def test_a_center_at_infinity_is_printed_as_a_direction(gk):
     assert row.drawn.startswith("∞ along (1, 0)") and row.exact.startswith("∞ along (1, 0)")
     texts = {t.get_text() for t in d.texts.values()}
     assert "I₂₃ ∞" in texts
+
+
+@pytest.mark.parametrize("name", ["ex4_14_inflection_bresse", "ex4_16_cubic"])
+def test_curvature_sheet_is_split_into_the_books_figures(gk, name):
+    # Figs. 4.33-4.35 (a), 4.29 (b), 4.25/4.30 (c), 4.37-4.39 (d): one idea per panel
+    ids = _ids(gk.svg(name, "curvature"))
+    for panel in ("inflection", "bobillier", "hartmann", "cubic"):
+        assert f"panel-{panel}" in ids, panel
+    for gid in ("inflection-inflection-circle", "inflection-Bresse-circle", "cubic-cubic",
+                "cubic-ball-point", "inflection-label-N", "inflection-label-T"):
+        assert gid in ids, gid
+    d = gk.drawn(name, "curvature")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert "inflection circle" in texts and "Bresse circle" in texts
+    # no literal underscores: J_B, A_N, G_T are real subscripts
+    assert not [t for t in texts if "_" in t and not t.startswith("$")], texts
+
+
+def test_each_curvature_figure_alone(gk):
+    from graphkin.render import draw
+
+    sol = gk.solved("ex4_14_inflection_bresse")
+    for panel in ("inflection", "bobillier", "hartmann", "cubic"):
+        d = draw(sol, panel)
+        assert [p.name for p in d.sheet.panels] == [panel]
+
+
+def test_a_link_about_a_frame_pivot_gets_a_sentence(gk):
+    d = gk.drawn("ex4_7_cam_follower", "curvature")
+    assert "turns about the frame pivot" in d.texts["curvature note"].get_text()

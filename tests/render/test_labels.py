@@ -19,7 +19,7 @@ from graphkin.render.labels import collisions
 from graphkin.render.text import is_math
 
 GALLERY = Path(__file__).resolve().parents[2] / "gallery"
-DIAGRAMS = ("posture", "velocity", "acceleration", "centers")
+DIAGRAMS = ("posture", "velocity", "acceleration", "centers", "curvature")
 FILES = sorted(p for p in EXAMPLES.glob("ex*.toml") if p.stem != "expected") + sorted(
     p for folder in ("mechanisms", "centers", "curvature") for p in (GALLERY / folder).glob(
         "*.toml"))
