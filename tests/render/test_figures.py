@@ -84,3 +84,14 @@ def test_each_curvature_figure_alone(gk):
 def test_a_link_about_a_frame_pivot_gets_a_sentence(gk):
     d = gk.drawn("ex4_7_cam_follower", "curvature")
     assert "turns about the frame pivot" in d.texts["curvature note"].get_text()
+
+
+def test_image_fills_stay_distinct_in_greyscale():
+    from graphkin.render.style import IMAGE_FILLS
+
+    def grey(h: str) -> float:  # ITU-R BT.601 luma, as a photocopier sees it
+        r, g, b = (int(h[i:i + 2], 16) / 255 for i in (1, 3, 5))
+        return 0.299 * r + 0.587 * g + 0.114 * b
+
+    lum = [grey(h) for h in IMAGE_FILLS[:4]]
+    assert min(abs(a - b) for i, a in enumerate(lum) for b in lum[i + 1:]) >= 0.06
