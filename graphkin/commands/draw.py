@@ -9,7 +9,8 @@ from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int
 
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
-DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "all")
+DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "inflection",
+                   "bobillier", "hartmann", "cubic", "all")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:

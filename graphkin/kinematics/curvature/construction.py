@@ -71,6 +71,7 @@ class _Build:
         self.env: dict[str, Array] = {}
         self.made: dict[str, str] = {}  # cache key -> label
         self.notes: list[str] = []
+        self.sections: dict[str, str] = {}
         c, s = math.cos(float(st.angle)), math.sin(float(st.angle))
         self._rot = np.array([[c, -s], [s, c]])
         self.origin = np.asarray(st.origin, dtype=float)
@@ -128,7 +129,12 @@ class _Build:
         return self.made[key]
 
     def section(self, fn: _Section) -> bool:
-        """Record a group of steps and evaluate it; undo it if it has no answer."""
+        """Record a group of steps and evaluate it; undo it if it has no answer.
+
+        Each step's first output is filed under the section's name in
+        :attr:`sections` (``circle``, ``bresse``, ``hartmann``, ``hain``...), so
+        that a drawing can show one idea per figure.
+        """
         n0, made = len(self.cx.steps), dict(self.made)
         try:
             fn()
@@ -138,6 +144,9 @@ class _Build:
             self.made = made
             return False
         self.env = dict(ev.values)
+        name = _section_name(fn)
+        for st in self.cx.steps[n0:]:
+            self.sections.setdefault(st.outputs[0], name)
         return True
 
     def val(self, label: str) -> Array:
@@ -145,6 +154,25 @@ class _Build:
 
     def pt(self, label: str) -> Array:
         return g.xy(self.val(label))
+
+
+_SECTIONS = ("pivot", "bobillier", "collineation_axis", "accelerations", "circle", "bresse",
+             "four_circles", "hartmann", "bobillier_conjugate", "hain", "ball", "ball_at_j")
+
+
+def _section_name(fn: Any) -> str:
+    """The name of a section: its method's name (through a ``partial`` or a ``lambda``)."""
+    from functools import partial
+
+    if isinstance(fn, partial):
+        fn = fn.func
+    name = getattr(fn, "__name__", "")
+    if name == "<lambda>":
+        called = getattr(getattr(fn, "__code__", None), "co_names", ())
+        name = next((n for n in called if n in _SECTIONS), name)
+        if name == "bobillier" and fn.__code__.co_consts and True in fn.__code__.co_consts:
+            name = "euler_savary"  # bobillier(..., layoff=True): J laid off by Eq. 4.43
+    return name
 
 
 def _figure_size(sol: Solution) -> float:

@@ -133,6 +133,8 @@ class LinkCurvature:
     construction: Construction | None
     values: dict[str, Array] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    sections: dict[str, str] = field(default_factory=dict)
+    """Step output label -> the section that drew it (``circle``, ``hartmann``, ``hain``...)."""
 
 
 def _is_batch(sol: Solution) -> bool:
@@ -372,7 +374,8 @@ def link_curvature(sol: Solution, link: str, *, tol: Tolerance | None = None,
         bresse_pole=e_pole, bresse_diameter=bd, conjugates=conj, conjugate_methods=conj_how,
         known={n: why for n, (_, why) in b.known.items()}, cubic=cubic, ball_point=ball,
         moving_centrode=mc, fixed_centrode=fc, method=b.method,
-        construction=b.cx if len(b.cx) else None, values=dict(b.env), notes=b.notes)
+        construction=b.cx if len(b.cx) else None, values=dict(b.env), notes=b.notes,
+        sections=dict(b.sections))
 
 # ---------------------------------------------------------------------------
 # every link, every path

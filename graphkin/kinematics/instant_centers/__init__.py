@@ -79,7 +79,11 @@ from graphkin.kinematics.instant_centers.centers import (
     KnownCenter,
     KnownLine,
 )
-from graphkin.kinematics.instant_centers.kennedy import instant_center, instant_centers
+from graphkin.kinematics.instant_centers.kennedy import (
+    FAR_AS_INFINITY,
+    instant_center,
+    instant_centers,
+)
 from graphkin.kinematics.instant_centers.labels import center_label, pair_key, sort_links
 from graphkin.kinematics.instant_centers.line_of_centers import (
     LineOfCentersVelocity,
@@ -94,7 +98,8 @@ from graphkin.kinematics.instant_centers.ratios import (
 __all__ = ["How", "Center", "InstantCenters", "KnownCenter", "KnownLine", "LineOfCentersVelocity",
            "center_label", "pair_key", "sort_links", "instant_centers", "instant_center",
            "angular_velocity_ratio", "kinematic_coefficient", "mechanical_advantage",
-           "line_of_centers_velocity", "instant_centers_json", "instant_centers_text"]
+           "line_of_centers_velocity", "instant_centers_json", "instant_centers_text",
+           "FAR_AS_INFINITY"]
 
 
 # the reports moved to the output layer (graphkin.output); the old import path still works

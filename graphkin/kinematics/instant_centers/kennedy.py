@@ -24,12 +24,12 @@ from graphkin.kinematics.instant_centers.labels import (
     pair_key,
     sort_links,
 )
-from graphkin.kinematics.instant_centers.primary import _PrimaryCenters
+from graphkin.kinematics.instant_centers.primary import FAR_AS_INFINITY, _PrimaryCenters
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
-__all__ = ["instant_centers", "instant_center"]
+__all__ = ["instant_centers", "instant_center", "FAR_AS_INFINITY"]
 
 Pair = tuple[str, str]
 

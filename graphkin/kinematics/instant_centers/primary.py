@@ -26,6 +26,54 @@ Pair = tuple[str, str]
 
 Array = np.ndarray
 
+#: A center farther from the mechanism than this many sizes of the mechanism is
+#: at infinity: its two lines of centers are parallel but for the round-off
+#: of the file's numbers (an angle below 1e-6 rad, far finer than any drawing).
+#: The center is then recorded as the point at infinity in that direction, so
+#: that the report, JSON and drawings print a direction, never a huge coordinate.
+FAR_AS_INFINITY = 1e6
+
+
+def _far_as_ideal(p: Array, far: float, origin: tuple[float, float] = (0.0, 0.0)) -> Array:
+    """A finite point farther than ``far`` from ``origin`` as the point at infinity there.
+
+    The distance is measured from the mechanism (``origin``: the middle of its
+    frame points), so a mechanism drawn far from the file's origin keeps its
+    finite centers.
+
+    Examples
+    --------
+    >>> _far_as_ideal(np.array([-2.5e8, 0.0, 1.0]), 5e6).tolist()
+    [-1.0, 0.0, 0.0]
+    >>> _far_as_ideal(np.array([3.0, 4.0, 1.0]), 5e6).tolist()
+    [3.0, 4.0, 1.0]
+    >>> _far_as_ideal(np.array([1e9 + 3.0, 4.0, 1.0]), 5e6, origin=(1e9, 0.0)).tolist()
+    [1000000003.0, 4.0, 1.0]
+    """
+    p = np.asarray(p, dtype=float)
+    if p.shape[-1:] != (3,):
+        return p
+    w = p[..., 2]
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        dx = p[..., 0] - origin[0] * w
+        dy = p[..., 1] - origin[1] * w
+        r = np.hypot(dx, dy)
+        far_away = (w != 0) & np.isfinite(r) & (r > far * np.abs(w))
+        ideal = np.stack([dx / r * np.sign(w), dy / r * np.sign(w), np.zeros_like(w)], axis=-1)
+    return np.where(far_away[..., None], ideal, p)
+
+
+def far_as_ideal(p: Array, mech: Mechanism) -> Array:
+    """An instant center beyond :data:`FAR_AS_INFINITY` sizes of ``mech`` as a point at infinity.
+
+    Distances are measured from the middle of the frame's points and in sizes
+    of the mechanism (:attr:`Mechanism.scale`), so the decision does not
+    depend on the file's unit or on where the mechanism is drawn.
+    """
+    frame = list(mech.links[FRAME].points.values()) or [(0.0, 0.0)]
+    origin = (float(np.mean([q[0] for q in frame])), float(np.mean([q[1] for q in frame])))
+    return _far_as_ideal(p, FAR_AS_INFINITY * mech.scale, origin)
+
 
 class _Recorder:
     """The state of the search for a mechanism's centers, and the recording of its steps."""
@@ -62,6 +110,7 @@ class _Recorder:
     def found(self, pair: Pair, how: How, source: str, note: str, *, lines: tuple[str, ...] = (),
               triangles: tuple[tuple[str, str, str], ...] = (), speed: bool = False) -> None:
         lab = center_label(*pair)
+        self.env[lab] = far_as_ideal(self.env[lab], self.mech)
         self.centers[pair] = Center(pair, lab, self.env[lab], how, source, len(self.centers) + 1,
                                     lines, triangles, speed, note)
         # a new center changes the lines of centers of the pairs of its links only
