@@ -71,6 +71,8 @@ def _sections() -> list[Any]:
         out.append(("paths", paths_json))
     except ImportError:
         pass
+    from graphkin.forces.report import forces_section  # spec/forces.md
+    out.append(("forces", forces_section))
     return out
 
 
@@ -161,6 +163,10 @@ def text_report(sol: Solution) -> str:
         text = _optional_text(fn, sol)
         if text:
             lines += ["", title, text]
+    from graphkin.forces.report import forces_report, forces_text  # spec/forces.md
+    fs = forces_report(sol)
+    if fs is not None:
+        lines += ["", forces_text(fs).rstrip("\n")]
     return "\n".join(lines) + "\n"
 
 

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
+    from graphkin.mechanisms.loads import Inertia, Load
     from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
@@ -218,6 +219,19 @@ class Mechanism:
     source: str = "<mechanism>"
     line_points: frozenset[str] = frozenset()
     """Point names the file uses to define a slider's, slot's or rolling surface's line."""
+    force_unit: str = "N"
+    """``units.force`` (spec/forces.md): the unit of every force; torques in force × length."""
+    loads: tuple[Load, ...] = ()
+    """Applied forces and couples (``[[loads]]``, Ch. 11)."""
+    inertia: dict[str, Inertia] = field(default_factory=dict)
+    """Link id -> mass properties (``[inertia.N]``, Ch. 12)."""
+    gravity: XY | None = None
+    """The acceleration of gravity (length unit/s²) when ``[gravity]`` is given."""
+
+    @property
+    def has_forces(self) -> bool:
+        """True when the file asks for a force analysis (loads or mass properties)."""
+        return bool(self.loads) or bool(self.inertia)
 
     @cached_property
     def moving(self) -> list[str]:

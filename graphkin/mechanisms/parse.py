@@ -13,6 +13,8 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
+from graphkin.mechanisms.loads import TOP_KEYS as _FORCE_KEYS
+from graphkin.mechanisms.loads import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
     XY,
@@ -30,7 +32,7 @@ from graphkin.units import length_factor, parse_rate
 __all__ = ["load", "loads", "from_dict"]
 
 _TOP_KEYS = {"title", "units", "links", "sliders", "slots", "rolling", "drive", "rates",
-             "assembly"}
+             "assembly"} | _FORCE_KEYS
 
 
 def load(path: str | Path) -> Mechanism:
@@ -243,7 +245,8 @@ class _Parser:
                          slots=tuple(slots), rolling=tuple(r for r, _ in rolling),
                          drives=tuple(drives), rates=rates,
                          assembly=assembly, title=title, length_unit=self.unit,
-                         source=self.source, line_points=frozenset(self.line_names))
+                         source=self.source, line_points=frozenset(self.line_names),
+                         **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         return mech
 
