@@ -423,6 +423,14 @@ class _Builder:
                         Term(f1, Mark.UNKNOWN, Mark.KNOWN, -1),
                         Term(f2, Mark.UNKNOWN, Mark.KNOWN, -1)), case=3)
                     if kind_of(j2) == PIN:
+                        ln = self.env[line1[0]]
+                        pp = self.env[j2.point]
+                        if abs(float(ln @ pp)) <= self.tol.length(self.scale):
+                            raise ConstructionError(
+                                f"link {lid}: the line of action of {f1} passes through the "
+                                f"pin {j2.point}, so no force at {j2.point} can balance "
+                                f"{r}'s moment: equilibrium cannot be held at this posture "
+                                "(a dead center)", step=f1)
                         self.emit("force_three", (r, line1[0], j2.point), (f1, f2, x),
                                   f"link {lid} is a three-force member: the lines of {r} and "
                                   f"{f1} meet at the concurrency point {x}; {f2} acts along "
@@ -431,6 +439,11 @@ class _Builder:
                         p.order.append(f"link {lid}: three-force member, concurrency point "
                                        f"{x}")
                     else:
+                        if self.parallel(_dir(self.env[line1[0]]), self.env[f"n_{j2.key}"]):
+                            raise ConstructionError(
+                                f"link {lid}: {f1} and {f2} are parallel, so the force "
+                                "polygon cannot close: equilibrium cannot be held at this "
+                                "posture", step=f1)
                         self.emit("force_slide_three", (r, line1[0], f"n_{j2.key}"),
                                   (f1, f2, x),
                                   f"link {lid}: the force polygon {r} + {f1} + {f2} = 0 with "
