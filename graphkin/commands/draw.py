@@ -7,7 +7,8 @@ import sys
 
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
-DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "all")
+DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "forces",
+                   "all")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:

@@ -1,0 +1,401 @@
+"""Free-body diagrams and force polygons, laid out as the book's Fig. 11.5.
+
+(a) the mechanism with its loads, to a length scale; (b-d) the free-body
+diagram of each moving link, to the same length scale, every force drawn on
+its line of action (dashed), with the concurrency point of a three-force
+member (Fig. 11.5e) and the drive's torque; then the force polygon of each
+link, to one stated force scale, each closing (Σ F = 0, Fig. 11.5f).  With
+several loaded links the polygons of each partial analysis (Sec. 12.5) come
+first, then those of the totals.
+
+Every artist has a gid: ``forces-mechanism``, ``fbd-3``, ``fbd-3-F_23``,
+``polygon-3``, ``polygon-3-F_23`` (the arrow, tail to head at the force scale),
+``concurrency-3``, ``force-scale``.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Figs. 11.5, 11.8, 12.8, 12.10.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from graphkin.render.scale import choose_scale, fmt
+from graphkin.render.style import FONT_PT, GREY, INK, SMALL_PT, rc_context
+
+if TYPE_CHECKING:
+    from graphkin.forces.solve import ForceSolution
+    from graphkin.render.mpl import Drawing
+
+__all__ = ["draw_forces", "force_name"]
+
+PANEL_IN = 3.1
+"""Side of one panel (inches)."""
+_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_LOAD = "#1f4e9c"
+_INERTIA = "#9c2f1f"
+_DRIVE = "#2e7d32"
+
+
+def force_name(label: str) -> str:
+    """A construction label as the book writes it: ``F_34′`` -> ``F₃₄′``.
+
+    Examples
+    --------
+    >>> force_name("F_34′"), force_name("-m3A_G3"), force_name("T_12")
+    ('F₃₄′', '−m₃A_G₃', 'T₁₂')
+    """
+    head, sep, rest = label.partition("_")
+    if label.startswith("-m"):
+        body = label[2:]
+        k = body.index("A_")
+        return "−m" + body[:k].translate(_SUB) + "A_" + body[k + 2:].translate(_SUB)
+    if not sep:
+        return label.replace("$", r"\$")
+    digits = "".join(ch for ch in rest if ch.isdigit())
+    tail = rest[len(digits):]
+    return (head + digits.translate(_SUB) + tail).replace("$", r"\$")
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = float(np.hypot(*v))
+    return v / n if n > 0 else np.array([1.0, 0.0])
+
+
+class _Panel:
+    """An axes placed on the figure so that one inch of paper is ``per_inch`` data units."""
+
+    def __init__(self, fig: Any, col: int, row: int, nrows: int, center: np.ndarray,
+                 per_inch: float, title: str, gid: str) -> None:
+        fw, fh = fig.get_size_inches()
+        x0 = 0.25 + col * (PANEL_IN + 0.2)
+        y0 = fh - 0.75 - (row + 1) * (PANEL_IN + 0.45)
+        self.ax = fig.add_axes((x0 / fw, y0 / fh, PANEL_IN / fw, PANEL_IN / fh))
+        half = PANEL_IN * per_inch / 2
+        self.ax.set_xlim(center[0] - half, center[0] + half)
+        self.ax.set_ylim(center[1] - half, center[1] + half)
+        self.ax.set_aspect("equal")
+        self.ax.set_axis_off()
+        self.ax.set_gid(gid)
+        self.ax.set_title(title, fontsize=FONT_PT, loc="left")
+        self.per_inch = per_inch
+
+    def arrow(self, tail: np.ndarray, head: np.ndarray, color: str, gid: str,
+              lw: float = 1.3) -> Any:
+        from matplotlib.patches import FancyArrowPatch
+
+        a = FancyArrowPatch(tuple(tail), tuple(head), arrowstyle="-|>", mutation_scale=9,
+                            color=color, lw=lw, shrinkA=0, shrinkB=0)
+        a.set_gid(gid)
+        self.ax.add_patch(a)
+        return a
+
+    def text(self, at: np.ndarray, s: str, gid: str, color: str = INK,
+             size: float = FONT_PT, offset: tuple[float, float] = (3, 3)) -> Any:
+        t = self.ax.annotate(s, tuple(at), xytext=offset, textcoords="offset points",
+                             fontsize=size, color=color)
+        t.set_gid(gid)
+        return t
+
+
+def _links(ax: Any, fs: ForceSolution, only: str | None, gid: str) -> None:
+    """The links as lines (a plate for three or more points), pins as small circles."""
+    from matplotlib.patches import Polygon
+
+    sol = fs.solution
+    mech = fs.mechanism
+    for lid in mech.moving if only is None else [only]:
+        names = [n for n in mech.links[lid].points if n not in mech.helper_points]
+        pts = np.array([sol.position(n, lid) for n in names]) if names else np.zeros((0, 2))
+        if len(pts) >= 3:
+            c = pts.mean(axis=0)
+            order = np.argsort(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0]))
+            poly = Polygon(pts[order], closed=True, ec=INK, fc="#eeeeee", lw=1.0)
+            poly.set_gid(f"{gid}-link-{lid}")
+            ax.add_patch(poly)
+        elif len(pts) == 2:
+            (ln,) = ax.plot(pts[:, 0], pts[:, 1], color=INK, lw=2.0, solid_capstyle="round")
+            ln.set_gid(f"{gid}-link-{lid}")
+        for j in fs.joints:
+            if lid in (j.lo, j.hi) and j.kind != "pin":
+                p = fs.geometry.points[j.point]
+                (b,) = ax.plot([p[0]], [p[1]], marker="s", ms=9, mfc="white", mec=INK,
+                               mew=0.9)
+                b.set_gid(f"{gid}-block-{j.key}")
+        for n, p in zip(names, pts):
+            (m,) = ax.plot([p[0]], [p[1]], marker="o", ms=4, mfc="white", mec=INK, mew=0.8)
+            m.set_gid(f"{gid}-point-{n}")
+            t = ax.annotate(n, tuple(p), xytext=(-4, -11), textcoords="offset points",
+                            fontsize=SMALL_PT)
+            t.set_gid(f"{gid}-label-{n}")
+    if only is None:
+        for p in mech.pins:
+            if "1" in p.links:
+                xy = sol.position(p.name)
+                (g,) = ax.plot([xy[0]], [xy[1]], marker="^", ms=9, mfc="none", mec=INK,
+                               mew=0.8, zorder=0)
+                g.set_gid(f"{gid}-ground-{p.name}")
+
+
+def _forces_on(fs: ForceSolution, lid: str) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
+    """(label, force, point of application, colour) of every force on a link; loads first."""
+    sol = fs.solution
+    mech = fs.mechanism
+    out: list[tuple[str, np.ndarray, np.ndarray, str]] = []
+    for ld in mech.loads:
+        if ld.link == lid and ld.force is not None and ld.point is not None:
+            out.append((_load_name(fs, ld), np.asarray(ld.force, float),
+                        np.asarray(sol.position(ld.point, lid)), _LOAD))
+    if lid in fs.inertia:
+        f = fs.inertia[lid]
+        g = mech.inertia[lid].center
+        out.append((f"−m{lid}A_{g}".translate(_SUB), f.force, f.point, _INERTIA))
+    if mech.gravity is not None and lid in mech.inertia:
+        inr = mech.inertia[lid]
+        out.append((f"W{lid}".translate(_SUB), inr.mass * np.asarray(mech.gravity),
+                    np.asarray(sol.position(inr.center, lid)), _LOAD))
+    for j in fs.joints:
+        if lid in (j.lo, j.hi):
+            out.append((force_name(j.label(lid)), fs.force(j.other(lid), lid),
+                        fs.point(j.key), INK))
+    for d in mech.drives:
+        if d.link == lid and d.kind == "position" and d.slider is not None:
+            key = next(j.key for j in fs.joints if j.source is d.slider)
+            u = fs.geometry.along[key]
+            out.append((f"F_{d.slider.point}", fs.drives[lid][1] * u,
+                        fs.geometry.points[d.slider.point], _DRIVE))
+    return out
+
+
+def _load_name(fs: ForceSolution, ld: Any) -> str:
+    from graphkin.forces.graphic import applied_labels
+
+    for label, _, src in applied_labels(fs.mechanism, fs.dynamic).get(ld.link, []):
+        if src is ld:
+            return force_name(label)
+    return "P"
+
+
+def _extent(points: list[np.ndarray]) -> tuple[np.ndarray, float]:
+    a = np.array(points)
+    lo, hi = a.min(axis=0), a.max(axis=0)
+    return (lo + hi) / 2, float(max(hi - lo))
+
+
+def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
+    """Draw the mechanism with its loads, each link's free body and force polygon.
+
+    Parameters
+    ----------
+    obj : Mechanism, Solution or ForceSolution
+    table : bool
+        Write the results (joint forces, the drive's torque) under the title.
+
+    Returns
+    -------
+    Drawing
+        Label -> artist (``fbd-3-F₂₃``-style gids), with ``.figure``.
+
+    Raises
+    ------
+    DiagramUnavailable
+        The file has no loads and no mass properties.
+    """
+    import matplotlib.pyplot as plt  # noqa: F401  (the backend)
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Arc
+
+    from graphkin.forces.report import forces_report
+    from graphkin.forces.solve import ForceSolution
+    from graphkin.render.mpl import Drawing
+    from graphkin.render.sources import DiagramUnavailable
+
+    if isinstance(obj, ForceSolution):
+        fs = obj
+    else:
+        sol = obj.solve() if hasattr(obj, "pins") else obj
+        got = forces_report(sol)
+        if got is None:
+            raise DiagramUnavailable("no forces diagram: the file has no [[loads]] and no "
+                                     "[inertia.N] (spec/forces.md)", diagram="forces")
+        fs = got
+    mech = fs.mechanism
+    sol = fs.solution
+    moving = list(mech.moving)
+    polys: list[tuple[str, str, list[tuple[str, np.ndarray, str]]]] = []
+    for p in fs.partials if len(fs.partials) > 1 else []:
+        env = fs.built.values if fs.built is not None else {}
+        for lid in moving:
+            items = []
+            for label, kind, _src in _applied(fs, lid) if lid == p.link else []:
+                items.append((force_name(label), env[label][:2], kind))
+            for j in fs.joints:
+                if lid in (j.lo, j.hi):
+                    w = env[p.forces[j.key]][:2]
+                    items.append((force_name(j.label(lid, p.suffix)),
+                                  w if lid == j.hi else -w, INK))
+            if _is_polygon(items):
+                polys.append((lid, f"{p.suffix} loads of link {p.link}", items))
+    for lid in moving:
+        items = [(lab, f, c) for lab, f, _, c in _forces_on(fs, lid)]
+        if _is_polygon(items):
+            polys.append((lid, "", items))
+    # the scales: one length scale for (a)-(d), one force scale for every polygon
+    pts = [np.asarray(sol.position(n)) for n in mech.point_names
+           if n not in mech.helper_points]
+    center, span = _extent(pts)
+    lscale = choose_scale(span * 1.35, PANEL_IN, "in", mech.length_unit)
+    fmax = 0.0
+    for _, _, items in polys:
+        acc = np.zeros(2)
+        path = [acc.copy()]
+        for _, v, _ in items:
+            acc = acc + v
+            path.append(acc.copy())
+        fmax = max(fmax, _extent(path)[1])
+    fscale = choose_scale(max(fmax, 1e-300) * 1.3, PANEL_IN, "in", mech.force_unit)
+    ncols = 4
+    n_top = 1 + len(moving)
+    rows_top = math.ceil(n_top / ncols)
+    rows = rows_top + math.ceil(len(polys) / ncols)
+    width = 0.25 + ncols * (PANEL_IN + 0.2)
+    height = 0.75 + rows * (PANEL_IN + 0.45) + 0.3
+    fig = Figure(figsize=(width, height))
+    drawing = Drawing()
+    drawing.figure = fig
+    # polygon name -> [(label, tail, head)] in force units, as drawn (for tests and readers)
+    vectors: dict[str, list[tuple[str, np.ndarray, np.ndarray]]] = {}
+    drawing.vectors = vectors  # type: ignore[attr-defined]
+    with rc_context():
+        kind = "Dynamic" if fs.dynamic else "Static"
+        title = fig.text(0.25 / width, 1 - 0.3 / height,
+                         f"{kind} force analysis: {mech.title or mech.source}",
+                         fontsize=FONT_PT + 1, weight="bold")
+        title.set_gid("forces-title")
+        drawing.texts["title"] = title
+        sub = (f"lengths 1 in = {fmt(lscale.value, 4)} {lscale.unit};  forces 1 in = "
+               f"{fmt(fscale.value, 4)} {fscale.unit}")
+        if table:
+            bits = []
+            for lid, (k, v) in fs.drives.items():
+                if k == "torque":
+                    sense = "ccw" if v > 0 else "cw" if v < 0 else ""
+                    bits.append(f"T{'1' + lid}".translate(_SUB) + f" = {fmt(abs(v), 4)} "
+                                f"{mech.force_unit}·{mech.length_unit} {sense}")
+                else:
+                    bits.append(f"input force on {lid} = {fmt(v, 4)} {mech.force_unit}")
+            sub += "   " + ";  ".join(bits)
+        st = fig.text(0.25 / width, 1 - 0.55 / height, sub, fontsize=SMALL_PT + 1)
+        st.set_gid("force-scale")
+        drawing.texts["force-scale"] = st
+        # (a) the mechanism with its loads
+        pa = _Panel(fig, 0, 0, rows, center, lscale.per_inch, "(a) mechanism and loads",
+                    "forces-mechanism")
+        _links(pa.ax, fs, None, "forces-mechanism")
+        arrow_len = 0.55 * lscale.per_inch
+        for lid in moving:
+            for lab, f, at, color in _forces_on(fs, lid):
+                if color == INK:
+                    continue
+                u = _unit(f)
+                drawing[f"load-{lab}"] = pa.arrow(at - u * arrow_len, at, color,
+                                                  f"forces-mechanism-{lab}")
+                pa.text(at - u * arrow_len, lab, f"forces-mechanism-label-{lab}", color)
+        # (b...) free bodies
+        for k, lid in enumerate(moving, start=1):
+            names = [n for n in mech.links[lid].points if n not in mech.helper_points]
+            lpts = [np.asarray(sol.position(n, lid)) for n in names] or [center]
+            c, _ = _extent(lpts)
+            letter = "bcdefghijklmnop"[(k - 1) % 15]
+            pb = _Panel(fig, k % ncols, k // ncols, rows, c, lscale.per_inch,
+                        f"({letter}) free body of link {lid}", f"fbd-{lid}")
+            _links(pb.ax, fs, lid, f"fbd-{lid}")
+            half = PANEL_IN * lscale.per_inch
+            for lab, f, at, color in _forces_on(fs, lid):
+                if np.hypot(*f) == 0:
+                    continue
+                u = _unit(f)
+                (ln,) = pb.ax.plot([at[0] - u[0] * half, at[0] + u[0] * half],
+                                   [at[1] - u[1] * half, at[1] + u[1] * half], color=GREY,
+                                   lw=0.5, ls=(0, (4, 3)))
+                ln.set_gid(f"fbd-{lid}-line-{lab}")
+                drawing[f"fbd-{lid}-{lab}"] = pb.arrow(at - u * arrow_len, at, color,
+                                                        f"fbd-{lid}-{lab}")
+                drawing.texts[f"fbd-{lid}-{lab}"] = pb.text(
+                    at - u * arrow_len, lab, f"fbd-{lid}-label-{lab}", color)
+            x = _concurrency(fs, lid)
+            if x is not None:
+                (m,) = pb.ax.plot([x[0]], [x[1]], marker="o", ms=4, color=INK)
+                m.set_gid(f"concurrency-{lid}")
+                pb.text(x, "X", f"concurrency-{lid}-label", size=SMALL_PT)
+            for d in mech.drives:
+                if d.link == lid and d.kind == "angle" and d.pivot is not None:
+                    t = fs.drives[lid][1]
+                    o = sol.position(d.pivot)
+                    r = 0.25 * lscale.per_inch
+                    arc = Arc(tuple(o), 2 * r, 2 * r, theta1=30, theta2=300, color=_DRIVE,
+                              lw=1.2)
+                    arc.set_gid(f"fbd-{lid}-torque")
+                    pb.ax.add_patch(arc)
+                    tip = 300 if t >= 0 else 30
+                    a = math.radians(tip)
+                    e = np.asarray(o) + r * np.array([math.cos(a), math.sin(a)])
+                    tang = np.array([-math.sin(a), math.cos(a)]) * (1 if t >= 0 else -1)
+                    pb.arrow(e - tang * 0.05 * lscale.per_inch, e, _DRIVE,
+                             f"fbd-{lid}-torque-head")
+                    sense = "ccw" if t > 0 else "cw" if t < 0 else ""
+                    pb.text(np.asarray(o) + np.array([r, r]),
+                            f"T{'1' + lid}".translate(_SUB) + f" {sense}",
+                            f"fbd-{lid}-torque-label", _DRIVE)
+        # force polygons
+        for k, (lid, tag, items) in enumerate(polys):
+            path = [np.zeros(2)]
+            for _, v, _ in items:
+                path.append(path[-1] + v)
+            c, _ = _extent(path)
+            pos = rows_top * ncols + k
+            name = f"polygon-{lid}" + (f"-{tag.split()[0]}" if tag else "")
+            title = (f"force polygon of link {lid}: ΣF = 0" if not tag
+                     else f"{tag}: polygon of link {lid}")
+            pp = _Panel(fig, pos % ncols, pos // ncols, rows, c, fscale.per_inch, title, name)
+            vectors[name] = [(lab, tail, tail + v) for (lab, v, _), tail in zip(items, path)]
+            for (lab, v, color), tail in zip(items, path):
+                if np.hypot(*v) == 0:
+                    continue
+                drawing[f"{name}-{lab}"] = pp.arrow(tail, tail + v, color, f"{name}-{lab}")
+                drawing.texts[f"{name}-{lab}"] = pp.text(tail + v / 2, lab,
+                                                         f"{name}-label-{lab}", color,
+                                                         size=SMALL_PT)
+            (o,) = pp.ax.plot([0], [0], marker="o", ms=3, color=INK)
+            o.set_gid(f"{name}-start")
+    return drawing
+
+
+def _is_polygon(items: list[tuple[str, np.ndarray, str]]) -> bool:
+    """Three or more forces: a polygon worth drawing (two are just equal and opposite)."""
+    return sum(1 for _, v, _ in items if float(np.hypot(*v)) > 0) >= 3
+
+
+def _applied(fs: ForceSolution, lid: str) -> list[tuple[str, str, Any]]:
+    from graphkin.forces.graphic import applied_labels
+
+    out = []
+    for label, kind, src in applied_labels(fs.mechanism, fs.dynamic).get(lid, []):
+        if kind == "couple":
+            continue
+        out.append((label, _INERTIA if kind == "inertia" else _LOAD, src))
+    return out
+
+
+def _concurrency(fs: ForceSolution, lid: str) -> np.ndarray | None:
+    """The concurrency point of a link that was solved as a three-force member."""
+    if fs.built is None or len(fs.partials) != 1:
+        return None
+    x = fs.built.values.get(f"X_{lid}")
+    if x is None or abs(float(x[2])) < 1e-12:
+        return None
+    return np.asarray(x[:2] / x[2])

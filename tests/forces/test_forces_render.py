@@ -1,0 +1,58 @@
+"""The forces drawing, read back: every free body and polygon by gid, polygons closed."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphkin
+from graphkin.render import draw, to_svg
+
+DATA = Path(__file__).resolve().parent.parent / "data" / "forces"
+
+
+@pytest.fixture(scope="module")
+def ex12_4():
+    return draw(graphkin.load(DATA / "ex12_4_dynamic_fourbar.toml").solve(), "forces")
+
+
+def _ids(fig) -> set[str]:
+    root = ET.fromstring(to_svg(fig))
+    return {el.get("id") for el in root.iter() if el.get("id")}
+
+
+def test_layout_of_fig_11_5(ex12_4):
+    """(a) mechanism, (b-d) free bodies of 2, 3, 4, then polygons (partials and totals)."""
+    ids = _ids(ex12_4.figure)
+    for gid in ("forces-mechanism", "fbd-2", "fbd-3", "fbd-4", "polygon-3", "polygon-4",
+                "polygon-3-′", "polygon-4-″", "force-scale", "fbd-2-torque"):
+        assert gid in ids, gid
+    # every force on link 4's free body is drawn: P4, the inertia force, F34, F14
+    for lab in ("P₄", "−m₄A_G₄", "F₃₄", "F₁₄"):
+        assert f"fbd-4-{lab}" in ids
+
+
+def test_polygons_close(ex12_4):
+    """Σ F = 0: the last head returns to the first tail (Fig. 11.5f)."""
+    assert ex12_4.vectors
+    for name, vecs in ex12_4.vectors.items():
+        start, end = vecs[0][1], vecs[-1][2]
+        size = max(float(np.hypot(*(h - t))) for _, t, h in vecs)
+        assert float(np.hypot(*(end - start))) <= 1e-9 * size, name
+        for (_, _, h), (_, t, _) in zip(vecs, vecs[1:]):
+            np.testing.assert_allclose(h, t)  # head to tail
+
+
+def test_scale_is_stated(ex12_4):
+    text = ex12_4.texts["force-scale"].get_text()
+    assert "forces 1 in = " in text and "N" in text and "lengths 1 in = " in text
+
+
+def test_no_forces_no_diagram():
+    from graphkin.render import DiagramUnavailable
+
+    with pytest.raises(DiagramUnavailable):
+        draw(graphkin.examples.fourbar().solve(), "forces")
