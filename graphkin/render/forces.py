@@ -272,22 +272,22 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
     drawing.vectors = vectors  # type: ignore[attr-defined]
     with rc_context():
         kind = "Dynamic" if fs.dynamic else "Static"
-        title = fig.text(0.25 / width, 1 - 0.3 / height,
+        head = fig.text(0.25 / width, 1 - 0.3 / height,
                          f"{kind} force analysis: {mech.title or mech.source}",
                          fontsize=FONT_PT + 1, weight="bold")
-        title.set_gid("forces-title")
-        drawing.texts["title"] = title
+        head.set_gid("forces-title")
+        drawing.texts["title"] = head
         sub = (f"lengths 1 in = {fmt(lscale.value, 4)} {lscale.unit};  forces 1 in = "
                f"{fmt(fscale.value, 4)} {fscale.unit}")
         if table:
             bits = []
-            for lid, (k, v) in fs.drives.items():
-                if k == "torque":
-                    sense = "ccw" if v > 0 else "cw" if v < 0 else ""
-                    bits.append(f"T{'1' + lid}".translate(_SUB) + f" = {fmt(abs(v), 4)} "
+            for lid, (what, val) in fs.drives.items():
+                if what == "torque":
+                    sense = "ccw" if val > 0 else "cw" if val < 0 else ""
+                    bits.append(f"T{'1' + lid}".translate(_SUB) + f" = {fmt(abs(val), 4)} "
                                 f"{mech.force_unit}·{mech.length_unit} {sense}")
                 else:
-                    bits.append(f"input force on {lid} = {fmt(v, 4)} {mech.force_unit}")
+                    bits.append(f"input force on {lid} = {fmt(val, 4)} {mech.force_unit}")
             sub += "   " + ";  ".join(bits)
         st = fig.text(0.25 / width, 1 - 0.55 / height, sub, fontsize=SMALL_PT + 1)
         st.set_gid("force-scale")
@@ -334,20 +334,20 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
                 pb.text(x, "X", f"concurrency-{lid}-label", size=SMALL_PT)
             for d in mech.drives:
                 if d.link == lid and d.kind == "angle" and d.pivot is not None:
-                    t = fs.drives[lid][1]
+                    tq = fs.drives[lid][1]
                     o = sol.position(d.pivot)
                     r = 0.25 * lscale.per_inch
                     arc = Arc(tuple(o), 2 * r, 2 * r, theta1=30, theta2=300, color=_DRIVE,
                               lw=1.2)
                     arc.set_gid(f"fbd-{lid}-torque")
                     pb.ax.add_patch(arc)
-                    tip = 300 if t >= 0 else 30
+                    tip = 300 if tq >= 0 else 30
                     a = math.radians(tip)
                     e = np.asarray(o) + r * np.array([math.cos(a), math.sin(a)])
-                    tang = np.array([-math.sin(a), math.cos(a)]) * (1 if t >= 0 else -1)
+                    tang = np.array([-math.sin(a), math.cos(a)]) * (1 if tq >= 0 else -1)
                     pb.arrow(e - tang * 0.05 * lscale.per_inch, e, _DRIVE,
                              f"fbd-{lid}-torque-head")
-                    sense = "ccw" if t > 0 else "cw" if t < 0 else ""
+                    sense = "ccw" if tq > 0 else "cw" if tq < 0 else ""
                     pb.text(np.asarray(o) + np.array([r, r]),
                             f"T{'1' + lid}".translate(_SUB) + f" {sense}",
                             f"fbd-{lid}-torque-label", _DRIVE)
