@@ -116,3 +116,18 @@ def test_shaking_force_is_the_sum_of_inertia_forces(ex12_4):
     fs, _ = ex12_4.shaking
     np.testing.assert_allclose(fs, ex12_4.inertia["3"].force + ex12_4.inertia["4"].force,
                                rtol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["ex11_1", "ex12_4"])
+def test_construction_replays(name, request):
+    """The recorded steps are the whole construction: a replay from the givens alone
+    (pin positions, accelerations of G, α) gives every force again."""
+    fs = request.getfixturevalue(name)
+    cx = fs.construction
+    made = {o for s in cx for o in s.outputs}
+    givens = {k: v for k, v in fs.built.values.items() if k not in made}
+    for run in (cx.replay, cx.evaluate):
+        ev = run(givens)
+        for label in made:
+            np.testing.assert_allclose(ev[label], fs.built.values[label], rtol=1e-12,
+                                       atol=1e-12, err_msg=label)
