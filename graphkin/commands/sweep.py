@@ -43,6 +43,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--curvature", action="store_true",
                    help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
                         "the inflection poles and diameters of the links")
+    p.add_argument("--torque", action="store_true",
+                   help="add the drive's torque (torque_2) or input force (force_4) that holds "
+                        "the loads and inertia forces of the file (docs/forces.md)")
+    p.add_argument("--joint-forces", action="store_true",
+                   help="with --torque: also the magnitude of every joint force (F_3-4)")
     p.add_argument("--singular", action="store_true",
                    help="also report dead centers, limit positions and Grashof's classification "
                         "on standard error")
@@ -74,6 +79,10 @@ def run(args: argparse.Namespace) -> int:
     sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                transmission=args.transmission, centers=args.centers, curvature=args.curvature,
                progress=progress)
+    if args.torque or args.joint_forces:
+        from graphkin.forces.sweep import force_columns
+
+        sw.columns.update(force_columns(sw, joints=args.joint_forces))
     if args.csv == "-":
         sw.to_csv(sys.stdout)
     else:
