@@ -208,6 +208,8 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
     if mech.inertia and not dynamic:
         notes.append("the file gives no rates: a static analysis (inertia forces need "
                      "the accelerations)")
+    if mech.friction:
+        _tilt_for_friction(sol, joints, geo, dynamic, notes, tol)
     applied = {lid: [("", w) for w, _ in items]
                for lid, items in applied_wrenches(sol, dynamic).items()}
     inertia = _inertia(sol) if dynamic else {}
@@ -233,6 +235,61 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
               for d in mech.drives}
     return ForceSolution(sol, joints, fw, drives, inertia, dynamic, "analytic", None, geo,
                          applied, notes)
+
+
+def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
+                       notes: list[str], tol: Tolerance | None) -> None:
+    """Tilt each rough slider's line of action by the friction angle (Sec. 11.10, Ex 11.4).
+
+    As the book recommends, the problem is first solved without friction to
+    find the sense of each normal force; the friction force opposes the
+    impending motion of the slider relative to its guide (given, or from the
+    velocity); the resultant then leans by φ = atan μ from the normal.
+    """
+    from graphkin.forces.analytic import solve_matrix
+
+    mech = sol.mechanism
+    plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    for j in joints:
+        src = j.source
+        if j.kind != SLIDE or src is None or src.index not in mech.friction:
+            continue
+        mu, impending = mech.friction[src.index]
+        n, u = geo.normal[j.key], geo.along[j.key]
+        on_block = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
+        c = float(on_block @ n)
+        if impending is None:
+            if not sol.has_rates:
+                raise InputError("say which way the slider's motion is impending: impending = "
+                                 "\"ahead\" or \"behind\" (a static file has no velocity)",
+                                 key=f"{src.key}.impending", file=mech.source)
+            p = src.point
+            v = np.asarray(sol.velocity(p, src.link)) - _velocity_in(sol, src.on,
+                                                                       sol.position(p, src.link))
+            speed = float(v @ u)
+            if abs(speed) <= 1e-12 * max(1.0, float(np.hypot(*v))):
+                raise InputError("the slider is at rest relative to its guide at this posture: "
+                                 "say impending = \"ahead\" or \"behind\"",
+                                 key=f"{src.key}.impending", file=mech.source)
+            s = 1.0 if speed > 0 else -1.0
+        else:
+            s = 1.0 if impending == "ahead" else -1.0
+        if c == 0:
+            notes.append(f"{src.key}: no normal force without friction, so no friction")
+            continue
+        d = np.sign(c) * n - mu * s * u
+        geo.normal[j.key] = d / float(np.hypot(*d))
+        notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
+                     f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
+                     f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
+
+
+def _velocity_in(sol: Solution, lid: str, world: Any) -> np.ndarray:
+    """Velocity of the point of link ``lid`` at a world position."""
+    st = sol.links[lid]
+    d = np.asarray(world) - np.asarray(st.origin)
+    c, s = np.cos(st.angle), np.sin(st.angle)
+    return np.asarray(st.velocity(np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])))
 
 
 def pin_kind(j: Joint) -> bool:

@@ -249,7 +249,15 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                    "lbf)") from None
     out: dict[str, Any] = {"force_unit": force_unit}
     if not any(k in data for k in TOP_KEYS):
+        raw = data.get("sliders", [])
+        for i, item in enumerate(raw if isinstance(raw, list) else [raw]):
+            if isinstance(item, Mapping) and ("friction" in item or "impending" in item):
+                raise fail(f"sliders[{i}].friction", "friction acts in a force analysis: "
+                           "the file has no [[loads]] and no [inertia.N]")
         return out
+    if "loads" not in data and "inertia" not in data:
+        raise fail("gravity", "gravity acts on the links with [inertia.N] (mass and "
+                   "center); none has one")
     L, F = f"({length_unit})", f"({force_unit})"
     torque_unit = f"{F}*{L}"
 
@@ -350,6 +358,28 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                            f"({moment:g})")
         inertia[lid] = Inertia(lid, center, mass, moment)
     out["inertia"] = inertia
+
+    friction: dict[int, tuple[float, str | None]] = {}
+    raw_sl = data.get("sliders", [])
+    if isinstance(raw_sl, Mapping):
+        raw_sl = [raw_sl]
+    for i, item in enumerate(raw_sl if isinstance(raw_sl, list) else []):
+        if not isinstance(item, Mapping) or "friction" not in item and "impending" not in item:
+            continue
+        key = f"sliders[{i}]"
+        mu = item.get("friction")
+        if isinstance(mu, bool) or not isinstance(mu, (int, float)) or not \
+                (math.isfinite(float(mu)) and float(mu) >= 0):
+            raise fail(f"{key}.friction", "the coefficient of friction is a number >= 0, "
+                       f"not {mu!r}")
+        imp = item.get("impending")
+        if imp is not None and imp not in ("ahead", "behind"):
+            raise fail(f"{key}.impending", "the impending motion of the slider along its "
+                       "line is \"ahead\" (toward the line's second point) or \"behind\", "
+                       f"not {imp!r}")
+        friction[i] = (float(mu), imp)
+    if friction:
+        out["friction"] = friction
 
     if "gravity" in data:
         g = data["gravity"]

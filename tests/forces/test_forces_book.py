@@ -131,3 +131,26 @@ def test_construction_replays(name, request):
         for label in made:
             np.testing.assert_allclose(ev[label], fs.built.values[label], rtol=1e-12,
                                        atol=1e-12, err_msg=label)
+
+
+def test_ex11_4_friction_at_the_slider():
+    """Ex 11.4: Ex 11.2 with μ = 0.25, block's motion impending to the left.
+
+    By hand: F_34 along the rod at θ3 = -16.78°, F_14 = F (sin φ, cos φ) leaning right by
+    φ = atan 0.25; ΣF on the block with P = -100 i: F34 cos θ3 + F sin φ = 100 and
+    F34 sin θ3 + F cos φ = 0.  The book (graphic): F34 = 97 lb, F14 = 29 lb, T12 = 399 in·lb cw.
+    """
+    root = Path(__file__).resolve().parents[2]
+    fs = solve_forces(graphkin.load(root / "gallery" / "mechanisms"
+                                    / "ex11_4_slider_crank_friction.toml").solve())
+    t3 = math.radians(float(fs.solution.angle(3)))
+    phi = math.atan(0.25)
+    a = np.array([[math.cos(t3), math.sin(phi)], [math.sin(t3), math.cos(phi)]])
+    f34, f14 = np.linalg.solve(a, [100.0, 0.0])
+    assert float(np.hypot(*fs.force(3, 4))) == pytest.approx(f34, rel=1e-9)
+    assert float(np.hypot(*fs.force(1, 4))) == pytest.approx(f14, rel=1e-9)
+    assert f34 == pytest.approx(97, abs=0.5) and f14 == pytest.approx(29, abs=0.5)
+    assert fs.torque(2) == pytest.approx(-399, abs=1.0)
+    # Coulomb: the tangential part is μ times the normal part, pointing right (+x)
+    fx, fy = fs.force(1, 4)
+    assert fx == pytest.approx(0.25 * fy, rel=1e-12) and fx > 0

@@ -104,3 +104,32 @@ def test_dead_center_cannot_hold(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert "equilibrium cannot be held" in err and len(err.splitlines()) == 1
     assert "dead.toml: drive: " in err
+
+
+def test_friction_keys():
+    slider = ('units = { length = "in", force = "lbf" }\n[links.1]\nO2 = [0, 0]\n'
+              '[links.2]\nO2 = [0, 0]\nA = [6, 0]\n[links.3]\nA = [0, 0]\nB = [18, 0]\n'
+              '[links.4]\nB = [0, 0]\n[[sliders]]\nlink = 4\non = 1\npoint = "B"\n'
+              'line = [[0, 0], [1, 0]]\nEXTRA\n[drive]\nlink = 2\nangle = 120\n'
+              'LOADS[assembly]\nB = [14, 0]\n')
+
+    def fill(extra: str, loads: str) -> str:
+        return slider.replace("EXTRA", extra).replace("LOADS", loads)
+
+    load = '[[loads]]\nlink = 4\npoint = "B"\nforce = "100 lbf at 180 deg"\n'
+    with pytest.raises(InputError) as info:
+        load_text(fill("friction = -1", load), source="m.toml")
+    assert info.value.key == "sliders[0].friction"
+    with pytest.raises(InputError) as info:
+        load_text(fill('friction = 0.2\nimpending = "left"', load),
+                  source="m.toml")
+    assert info.value.key == "sliders[0].impending"
+    with pytest.raises(InputError) as info:
+        load_text(fill("friction = 0.2", ""), source="m.toml")
+    assert info.value.key == "sliders[0].friction"
+    # a static file must say which way the motion is impending
+    mech = load_text(fill("friction = 0.2", load), source="m.toml")
+    from graphkin.forces import solve_forces
+    with pytest.raises(InputError) as info:
+        solve_forces(mech.solve())
+    assert info.value.key == "sliders[0].impending"

@@ -117,3 +117,37 @@ def test_static_without_rates(case: tuple[Any, dict[str, Any]]) -> None:
     big = max([float(np.hypot(*w[:2])) for w in matrix.forces.values()] + [1.0])
     for key, w in matrix.forces.items():
         assert np.all(np.abs(graphic.forces[key][:2] - w[:2]) <= 1e-9 * big)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(slider_cranks(), st.floats(0.05, 0.6), st.floats(1.0, 500.0), st.floats(-180, 180))
+def test_friction_is_coulomb(rm: Any, mu: float, mag: float, ang: float) -> None:
+    """Rough sliders (Sec. 11.10): the graphic method agrees with the matrix method, and
+    the force on each slider obeys Coulomb's law against its sliding velocity."""
+    data = copy.deepcopy(rm.data)
+    for s in data.get("sliders", []):
+        s["friction"] = mu
+    moving = [lid for lid in data["links"] if str(lid) != "1"]
+    lid = moving[-1]
+    point = next(iter(data["links"][lid]))
+    data["loads"] = [{"link": int(lid), "point": point, "force": f"{mag} N at {ang} deg"}]
+    mech = from_dict(data, source="<random slider-crank>")
+    sol = mech.solve()
+    graphic = solve_forces(sol)
+    matrix = solve_forces(sol, method="analytic")
+    big = max(float(np.hypot(*w[:2])) for w in matrix.forces.values())
+    for key, w in matrix.forces.items():
+        assert np.all(np.abs(graphic.forces[key][:2] - w[:2]) <= 1e-9 * big)
+    for j in graphic.joints:
+        if j.kind != "slide":
+            continue
+        sl = j.source
+        f = graphic.force(sl.on, sl.link)
+        st_on = sol.links[sl.on]
+        u = st_on._r(np.subtract(sl.p1, sl.p0))
+        u = u / np.hypot(*u)
+        n = np.array([-u[1], u[0]])
+        v = np.asarray(sol.velocity(sl.point, sl.link))  # the guide is the frame here
+        tangential, normal = float(f @ u), float(f @ n)
+        assert abs(abs(tangential) - mu * abs(normal)) <= 1e-9 * big
+        assert tangential * float(v @ u) <= 0  # friction opposes the sliding
