@@ -38,12 +38,16 @@ def _wrench(f: Any, p: Any) -> np.ndarray:
     return np.array([f[0], f[1], p[0] * f[1] - p[1] * f[0]])
 
 
-def applied_wrenches(sol: Solution, dynamic: bool) -> dict[str, list[tuple[np.ndarray, str]]]:
+def applied_wrenches(sol: Solution, dynamic: bool, mistake: str | None = None
+                     ) -> dict[str, list[tuple[np.ndarray, str]]]:
     """Per link, the applied wrenches ``(Fx, Fy, M_origin)`` with the point each acts at.
 
     Loads, couples, inertia forces ``-m A_G`` with the torque ``-I_G α``
     (d'Alembert, Sec. 12.3) and weights.  The second item names the point
     whose velocity gives the force's power (``""`` for a pure couple).
+    ``mistake`` makes the usual students' errors instead (to diagnose
+    them): ``"not-reversed"`` takes ``+m A_G`` and ``+I_G α``, ``"h-side"``
+    offsets h to the wrong side (``-m A_G`` with ``+I_G α``).
     """
     mech = sol.mechanism
     out: dict[str, list[tuple[np.ndarray, str]]] = {}
@@ -58,8 +62,10 @@ def applied_wrenches(sol: Solution, dynamic: bool) -> dict[str, list[tuple[np.nd
     for lid, inr in mech.inertia.items():
         g = sol.position(inr.center, lid)
         if dynamic:
-            w = _wrench(-inr.mass * np.asarray(sol.acceleration(inr.center, lid)), g)
-            w[2] -= inr.moment * float(sol.alpha(lid))
+            sf = 1.0 if mistake == "not-reversed" else -1.0
+            st = 1.0 if mistake in ("not-reversed", "h-side") else -1.0
+            w = _wrench(sf * inr.mass * np.asarray(sol.acceleration(inr.center, lid)), g)
+            w[2] += st * inr.moment * float(sol.alpha(lid))
             out.setdefault(lid, []).append((w, inr.center))
         if mech.gravity is not None:
             out.setdefault(lid, []).append(
@@ -67,9 +73,9 @@ def applied_wrenches(sol: Solution, dynamic: bool) -> dict[str, list[tuple[np.nd
     return out
 
 
-def solve_matrix(sol: Solution, joints: list[Joint], geo: Geometry,
-                 dynamic: bool) -> tuple[dict[str, np.ndarray], dict[str, float],
-                                         dict[str, np.ndarray]]:
+def solve_matrix(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
+                 mistake: str | None = None
+                 ) -> tuple[dict[str, np.ndarray], dict[str, float], dict[str, np.ndarray]]:
     """Every joint force and drive by one linear solve.
 
     Returns
@@ -132,7 +138,7 @@ def solve_matrix(sol: Solution, joints: list[Joint], geo: Geometry,
             d = next(d for d in mech.drives if d.link == lid)
             if d.kind == "position" and d.slider is not None and d.slider.on != FRAME:
                 a[row[d.slider.on]:row[d.slider.on] + 3, c] -= w
-    for lid, items in applied_wrenches(sol, dynamic).items():
+    for lid, items in applied_wrenches(sol, dynamic, mistake).items():
         for w, _ in items:
             b[row[lid]:row[lid] + 3] -= w
     # scale the moment rows so that the condition number measures geometry, not units

@@ -173,7 +173,7 @@ def _inertia(sol: Solution) -> dict[str, InertiaForce]:
 
 
 def solve_forces(sol: Solution, tol: Tolerance | None = None,
-                 method: str = "construction") -> ForceSolution:
+                 method: str = "construction", mistake: str | None = None) -> ForceSolution:
     """Find every joint force and the drives' torques of a solved posture.
 
     Parameters
@@ -184,6 +184,10 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
     method : {"construction", "analytic"}
         The graphic method (falling back to the matrix method when it finds no
         order), or the matrix method alone.
+    mistake : str, optional
+        Solve with a usual mistake (by the matrix method), to diagnose a
+        student's answer: ``"not-reversed"`` (the inertia force taken as
+        ``+m A_G``), ``"h-side"`` (h on the wrong side of G).
 
     Returns
     -------
@@ -214,6 +218,8 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
                for lid, items in applied_wrenches(sol, dynamic).items()}
     inertia = _inertia(sol) if dynamic else {}
     built: BuiltForces | None = None
+    if mistake is not None:
+        method = "analytic"
     if method == "construction":
         try:
             built = build_forces(sol, joints, geo, dynamic, tol)
@@ -230,7 +236,7 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
             drives[d.link] = (kind, float(env[built.drives[d.link]]))
         return ForceSolution(sol, joints, forces, drives, inertia, dynamic, "construction",
                              built, geo, applied, notes)
-    fw, dv, _ = solve_matrix(sol, joints, geo, dynamic)
+    fw, dv, _ = solve_matrix(sol, joints, geo, dynamic, mistake)
     drives = {d.link: ("torque" if d.kind == "angle" else "force", dv[d.link])
               for d in mech.drives}
     return ForceSolution(sol, joints, fw, drives, inertia, dynamic, "analytic", None, geo,

@@ -27,7 +27,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Load", "Inertia", "force_fields", "parse_amount", "STANDARD_GRAVITY"]
+__all__ = ["Load", "Inertia", "force_fields", "parse_amount", "parse_answer_amount",
+           "STANDARD_GRAVITY"]
 
 STANDARD_GRAVITY = 9.80665
 """Standard gravity (m/s²): ``weight = mass × g0`` (a weight in lbf gives its mass)."""
@@ -163,6 +164,37 @@ def parse_amount(value: Any, unit: str, default_unit: str) -> float:
     if not math.isfinite(out):
         raise ValueError(f"{value!r} is not finite")
     return out
+
+
+def parse_answer_amount(value: Any, kind: str, mech: Any) -> tuple[float, str | None, str,
+                                                                   float]:
+    """A measured force or torque of an answers file: (value, sense, unit shown, unit size).
+
+    ``kind`` is ``"force"`` (in the file's force unit) or ``"torque"`` (force ×
+    length, ``cw`` negative).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> m = graphkin.examples.fourbar()
+    >>> parse_answer_amount("183 lbf*in cw", "torque", m)[:2]
+    (-183.0, 'cw')
+    """
+    unit = mech.force_unit if kind == "force" else f"({mech.force_unit})*({mech.length_unit})"
+    shown = mech.force_unit if kind == "force" else f"{mech.force_unit}*{mech.length_unit}"
+    sense = None
+    if isinstance(value, str):
+        m = _SENSE.match(value.strip())
+        if m:
+            value, sense = m.group(1), m.group(2).lower()
+    v = parse_amount(value, unit, unit)
+    if sense == "cw":
+        v = -v
+    written = _NUMBER.match(value) if isinstance(value, str) else None
+    if written and written.group(2):
+        shown = written.group(2)
+        return v, sense, shown, parse_amount(f"1 {shown}", unit, unit)
+    return v, sense, shown, 1.0
 
 
 def _angle(text: str) -> float:
