@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphkin.render.scale import choose_scale, fmt
-from graphkin.render.style import FONT_PT, GREY, INK, SMALL_PT, rc_context
+from graphkin.render.style import FONT_PT, GREY, HIGHLIGHT, INK, SMALL_PT, rc_context
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
@@ -141,33 +141,42 @@ def _links(ax: Any, fs: ForceSolution, only: str | None, gid: str) -> None:
                 g.set_gid(f"{gid}-ground-{p.name}")
 
 
-def _forces_on(fs: ForceSolution, lid: str) -> list[tuple[str, np.ndarray, np.ndarray, str]]:
-    """(label, force, point of application, colour) of every force on a link; loads first."""
+_Force = tuple[str, np.ndarray, np.ndarray, str, tuple[str, ...]]
+_Item = tuple[str, np.ndarray, str, tuple[str, ...]]
+
+
+def _forces_on(fs: ForceSolution, lid: str) -> list[_Force]:
+    """Every force on a link, loads first.
+
+    Each as (label, force, point of application, colour, the construction
+    labels that find it); a given load has no construction label.
+    """
     sol = fs.solution
     mech = fs.mechanism
-    out: list[tuple[str, np.ndarray, np.ndarray, str]] = []
+    out: list[_Force] = []
     for ld in mech.loads:
         if ld.link == lid and ld.force is not None and ld.point is not None:
             out.append((_load_name(fs, ld), np.asarray(ld.force, float),
-                        np.asarray(sol.position(ld.point, lid)), _LOAD))
+                        np.asarray(sol.position(ld.point, lid)), _LOAD, ()))
     if lid in fs.inertia:
         f = fs.inertia[lid]
         g = mech.inertia[lid].center
-        out.append((f"−m{lid}A_{g}".translate(_SUB), f.force, f.point, _INERTIA))
+        out.append((f"−m{lid}A_{g}".translate(_SUB), f.force, f.point, _INERTIA, ()))
     if mech.gravity is not None and lid in mech.inertia:
         inr = mech.inertia[lid]
         out.append((f"W{lid}".translate(_SUB), inr.mass * np.asarray(mech.gravity),
-                    np.asarray(sol.position(inr.center, lid)), _LOAD))
+                    np.asarray(sol.position(inr.center, lid)), _LOAD, ()))
     for j in fs.joints:
         if lid in (j.lo, j.hi):
             out.append((force_name(j.label(lid)), fs.force(j.other(lid), lid),
-                        fs.point(j.key), INK))
+                        fs.point(j.key), INK, (j.label(lid), j.label(j.other(lid)))))
     for d in mech.drives:
         if d.link == lid and d.kind == "position" and d.slider is not None:
             key = next(j.key for j in fs.joints if j.source is d.slider)
             u = fs.geometry.along[key]
             out.append((f"F_{d.slider.point}", fs.drives[lid][1] * u,
-                        fs.geometry.points[d.slider.point], _DRIVE))
+                        fs.geometry.points[d.slider.point], _DRIVE,
+                        (f"F_{d.slider.point}·u",)))
     return out
 
 
@@ -186,7 +195,7 @@ def _extent(points: list[np.ndarray]) -> tuple[np.ndarray, float]:
     return (lo + hi) / 2, float(max(hi - lo))
 
 
-def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
+def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Drawing:
     """Draw the mechanism with its loads, each link's free body and force polygon.
 
     Parameters
@@ -194,6 +203,10 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
     obj : Mechanism, Solution or ForceSolution
     table : bool
         Write the results (joint forces, the drive's torque) under the title.
+    upto : int, optional
+        Draw only what the force construction has found up to step ``upto``
+        (inclusive), the newest step's forces in the highlight colour: a
+        started drawing to hand out, or one frame of ``graphkin steps -d forces``.
 
     Returns
     -------
@@ -226,22 +239,35 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
     mech = fs.mechanism
     sol = fs.solution
     moving = list(mech.moving)
-    polys: list[tuple[str, str, list[tuple[str, np.ndarray, str]]]] = []
+    polys: list[tuple[str, str, list[_Item]]] = []
+    known: set[str] | None = None
+    newest: set[str] = set()
+    if upto is not None and fs.construction is not None:
+        steps = fs.construction.steps[: upto + 1]
+        known = {o for st_ in steps for o in st_.outputs}
+        newest = set(steps[-1].outputs) if steps else set()
+
+    def seen(raw: tuple[str, ...]) -> bool:
+        return known is None or not raw or any(r in known for r in raw)
+
+    def hue(raw: tuple[str, ...], color: str) -> str:
+        return HIGHLIGHT if any(r in newest for r in raw) else color
+
     for p in fs.partials if len(fs.partials) > 1 else []:
         env = fs.built.values if fs.built is not None else {}
         for lid in moving:
-            items = []
+            items: list[_Item] = []
             for label, kind, _src in _applied(fs, lid) if lid == p.link else []:
-                items.append((force_name(label), env[label][:2], kind))
+                items.append((force_name(label), env[label][:2], kind, ()))
             for j in fs.joints:
                 if lid in (j.lo, j.hi):
                     w = env[p.forces[j.key]][:2]
                     items.append((force_name(j.label(lid, p.suffix)),
-                                  w if lid == j.hi else -w, INK))
+                                  w if lid == j.hi else -w, INK, (p.forces[j.key],)))
             if _is_polygon(items):
                 polys.append((lid, f"{p.suffix} loads of link {p.link}", items))
     for lid in moving:
-        items = [(lab, f, c) for lab, f, _, c in _forces_on(fs, lid)]
+        items = [(lab, f, c, raw) for lab, f, _, c, raw in _forces_on(fs, lid)]  # noqa: C416
         if _is_polygon(items):
             polys.append((lid, "", items))
     # the scales: one length scale for (a)-(d), one force scale for every polygon
@@ -253,7 +279,7 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
     for _, _, items in polys:
         acc = np.zeros(2)
         path = [acc.copy()]
-        for _, v, _ in items:
+        for _, v, _, _ in items:
             acc = acc + v
             path.append(acc.copy())
         fmax = max(fmax, _extent(path)[1])
@@ -279,7 +305,7 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
         drawing.texts["title"] = head
         sub = (f"lengths 1 in = {fmt(lscale.value, 4)} {lscale.unit};  forces 1 in = "
                f"{fmt(fscale.value, 4)} {fscale.unit}")
-        if table:
+        if table and upto is None:
             bits = []
             for lid, (what, val) in fs.drives.items():
                 if what == "torque":
@@ -298,7 +324,7 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
         _links(pa.ax, fs, None, "forces-mechanism")
         arrow_len = 0.55 * lscale.per_inch
         for lid in moving:
-            for lab, f, at, color in _forces_on(fs, lid):
+            for lab, f, at, color, _ in _forces_on(fs, lid):
                 if color == INK:
                     continue
                 u = _unit(f)
@@ -315,9 +341,20 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
                         f"({letter}) free body of link {lid}", f"fbd-{lid}")
             _links(pb.ax, fs, lid, f"fbd-{lid}")
             half = PANEL_IN * lscale.per_inch
-            for lab, f, at, color in _forces_on(fs, lid):
-                if np.hypot(*f) == 0:
+            if known is not None and f"l_{lid}" in known:  # a two-force member's line
+                ln_ = fs.built.values[f"l_{lid}"] if fs.built is not None else None
+                if ln_ is not None:
+                    d_ = np.array([ln_[1], -ln_[0]])
+                    p_ = -ln_[2] * np.array([ln_[0], ln_[1]])
+                    (two,) = pb.ax.plot([p_[0] - d_[0] * 1e3 * half, p_[0] + d_[0] * 1e3 * half],
+                                        [p_[1] - d_[1] * 1e3 * half, p_[1] + d_[1] * 1e3 * half],
+                                        color=hue((f"l_{lid}",), GREY), lw=0.7,
+                                        ls=(0, (6, 2, 1, 2)))
+                    two.set_gid(f"fbd-{lid}-two-force-line")
+            for lab, f, at, color, raw in _forces_on(fs, lid):
+                if np.hypot(*f) == 0 or not seen(raw):
                     continue
+                color = hue(raw, color)
                 u = _unit(f)
                 (ln,) = pb.ax.plot([at[0] - u[0] * half, at[0] + u[0] * half],
                                    [at[1] - u[1] * half, at[1] + u[1] * half], color=GREY,
@@ -328,12 +365,13 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
                 drawing.texts[f"fbd-{lid}-{lab}"] = pb.text(
                     at - u * arrow_len, lab, f"fbd-{lid}-label-{lab}", color)
             x = _concurrency(fs, lid)
-            if x is not None:
+            if x is not None and seen((f"X_{lid}",)):
                 (m,) = pb.ax.plot([x[0]], [x[1]], marker="o", ms=4, color=INK)
                 m.set_gid(f"concurrency-{lid}")
                 pb.text(x, "X", f"concurrency-{lid}-label", size=SMALL_PT)
             for d in mech.drives:
-                if d.link == lid and d.kind == "angle" and d.pivot is not None:
+                if d.link == lid and d.kind == "angle" and d.pivot is not None \
+                        and seen((f"T_1{lid}",)):
                     tq = fs.drives[lid][1]
                     o = sol.position(d.pivot)
                     r = 0.25 * lscale.per_inch
@@ -353,8 +391,10 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
                             f"fbd-{lid}-torque-label", _DRIVE)
         # force polygons
         for k, (lid, tag, items) in enumerate(polys):
+            if not all(seen(raw) for *_, raw in items):
+                continue
             path = [np.zeros(2)]
-            for _, v, _ in items:
+            for _, v, _, _ in items:
                 path.append(path[-1] + v)
             c, _ = _extent(path)
             pos = rows_top * ncols + k
@@ -362,10 +402,11 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
             title = (f"force polygon of link {lid}: ΣF = 0" if not tag
                      else f"{tag}: polygon of link {lid}")
             pp = _Panel(fig, pos % ncols, pos // ncols, rows, c, fscale.per_inch, title, name)
-            vectors[name] = [(lab, tail, tail + v) for (lab, v, _), tail in zip(items, path)]
-            for (lab, v, color), tail in zip(items, path):
+            vectors[name] = [(lab, tail, tail + v) for (lab, v, _, _), tail in zip(items, path)]
+            for (lab, v, color, raw), tail in zip(items, path):
                 if np.hypot(*v) == 0:
                     continue
+                color = hue(raw, color)
                 drawing[f"{name}-{lab}"] = pp.arrow(tail, tail + v, color, f"{name}-{lab}")
                 drawing.texts[f"{name}-{lab}"] = pp.text(tail + v / 2, lab,
                                                          f"{name}-label-{lab}", color,
@@ -375,9 +416,9 @@ def draw_forces(obj: Any, *, table: bool = True) -> Drawing:
     return drawing
 
 
-def _is_polygon(items: list[tuple[str, np.ndarray, str]]) -> bool:
+def _is_polygon(items: list[_Item]) -> bool:
     """Three or more forces: a polygon worth drawing (two are just equal and opposite)."""
-    return sum(1 for _, v, _ in items if float(np.hypot(*v)) > 0) >= 3
+    return sum(1 for _, v, _, _ in items if float(np.hypot(*v)) > 0) >= 3
 
 
 def _applied(fs: ForceSolution, lid: str) -> list[tuple[str, str, Any]]:
@@ -399,3 +440,70 @@ def _concurrency(fs: ForceSolution, lid: str) -> np.ndarray | None:
     if x is None or abs(float(x[2])) < 1e-12:
         return None
     return np.asarray(x[:2] / x[2])
+
+
+def forces_frames(obj: Any) -> list[tuple[Any, str]]:
+    """One drawing per step of the force construction: (step, SVG text).
+
+    Raises
+    ------
+    DiagramUnavailable
+        No loads and no masses, or the forces were solved by the matrix method.
+    """
+    from graphkin.forces.report import forces_report
+    from graphkin.render.sources import DiagramUnavailable
+    from graphkin.render.svg import to_svg
+
+    sol = obj.solve() if hasattr(obj, "pins") else obj
+    fs = forces_report(sol)
+    if fs is None or fs.construction is None:
+        why = ("the file has no [[loads]] and no [inertia.N]" if fs is None else
+               "the forces were solved by the matrix method (no graphic order)")
+        raise DiagramUnavailable(f"no force construction: {why}", diagram="forces")
+    out = []
+    for k, step in enumerate(fs.construction):
+        d = draw_forces(fs, upto=k)
+        out.append((step, to_svg(d.figure)))
+    return out
+
+
+def forces_steps_html(obj: Any, title: str | None = None) -> str:
+    """The force construction step by step as one self-contained HTML page.
+
+    Each step: its number, the vector equation with its ✓/? marks, one
+    sentence in the book's words, and the drawing with what the construction
+    has found so far (the newest step in the highlight colour).  Previous/next
+    buttons and the arrow keys walk through it.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Secs. 11.6-11.8, 12.5.
+    """
+    import html
+
+    frames = forces_frames(obj)
+    sol = obj.solve() if hasattr(obj, "pins") else obj
+    head = html.escape(title or sol.mechanism.title or sol.mechanism.source)
+    parts = []
+    n = len(frames)
+    for k, (step, svg) in enumerate(frames):
+        eq = "" if step.equation is None else \
+            f"<p class='eq'>{html.escape(str(step.equation))}</p>"
+        body = svg[svg.index("<svg"):]
+        parts.append(f"<section class='frame' id='step-{k}' style='display:"
+                     f"{'block' if k == 0 else 'none'}'><h2>Step {k + 1} of {n}: "
+                     f"{html.escape(step.label)}</h2>{eq}<p>{html.escape(step.note)}</p>"
+                     f"<div class='fig'>{body}</div></section>")
+    script = ("let k=0;const f=[...document.querySelectorAll('.frame')];"
+              "function show(i){k=Math.max(0,Math.min(f.length-1,i));"
+              "f.forEach((e,j)=>e.style.display=j===k?'block':'none');}"
+              "document.getElementById('prev').onclick=()=>show(k-1);"
+              "document.getElementById('next').onclick=()=>show(k+1);"
+              "document.addEventListener('keydown',e=>{if(e.key==='ArrowLeft')show(k-1);"
+              "if(e.key==='ArrowRight')show(k+1);});")
+    return ("<!DOCTYPE html><html><head><meta charset='utf-8'>"
+            f"<title>Forces: {head}</title><style>body{{font-family:sans-serif;margin:1em}}"
+            ".eq{font-family:monospace}.fig svg{max-width:100%;height:auto}</style></head>"
+            f"<body><h1>Force analysis: {head}</h1><p><button id='prev'>◀ previous</button> "
+            "<button id='next'>next ▶</button> (or the arrow keys)</p>"
+            + "".join(parts) + f"<script>{script}</script></body></html>\n")

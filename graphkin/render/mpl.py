@@ -450,7 +450,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     if diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
         from graphkin.render.forces import draw_forces
 
-        return draw_forces(obj, table=table is not False)
+        return draw_forces(obj, table=table is not False, upto=upto)
     wanted = tuple(d for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
                    if d in optional_modules)
     src = as_source(obj, values=values, diagrams=wanted, link=link)

@@ -56,3 +56,32 @@ def test_no_forces_no_diagram():
 
     with pytest.raises(DiagramUnavailable):
         draw(graphkin.examples.fourbar().solve(), "forces")
+
+
+def test_upto_draws_what_is_found(tmp_path):
+    """Step by step (Ex 11.1): before the three-force step F34 is not drawn; at it, it is
+    drawn in the highlight colour with the polygon of link 4."""
+    from graphkin.forces import solve_forces
+    from graphkin.render.style import HIGHLIGHT
+
+    sol = graphkin.load(DATA / "ex11_1_static_fourbar.toml").solve()
+    fs = solve_forces(sol)
+    k = next(i for i, s in enumerate(fs.construction) if s.op == "force_three")
+    before = draw(sol, "forces", upto=k - 1)
+    at = draw(sol, "forces", upto=k)
+    assert "fbd-4-F₃₄" not in before and "polygon-4" not in before.vectors
+    assert "fbd-4-F₃₄" in at and "polygon-4" in at.vectors
+    from matplotlib.colors import to_hex
+    assert to_hex(at["fbd-4-F₃₄"].get_edgecolor()) == HIGHLIGHT
+
+
+def test_steps_page(tmp_path):
+    from graphkin.cli import main
+
+    out = tmp_path / "f.html"
+    assert main(["steps", str(DATA / "ex11_1_static_fourbar.toml"), "-d", "forces", "-o",
+                 str(out), "--frames", str(tmp_path / "fr")]) == 0
+    text = out.read_text()
+    assert text.count("<section class='frame'") == 8
+    assert "three-force member" in text and "<svg" in text
+    assert len(list((tmp_path / "fr").glob("forces-*.svg"))) == 8
