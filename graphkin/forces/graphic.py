@@ -408,6 +408,34 @@ class _Builder:
                     p.order.append(f"link {lid}: {lab} balances the known forces")
                     progress = True
                     continue
+                if len(unknown) == 3 and count == 3:
+                    # a four-force member (Sec. 11.8): three forces on known lines
+                    lns = [lines[j.key] for j in unknown]
+                    dirs = [_dir(self.env[ln[0]]) for ln in lns if ln is not None]
+                    if len(dirs) != 3:
+                        continue
+                    # q where the two most crossing lines meet; the third is found first
+                    pairs = [(0, 1, 2), (0, 2, 1), (1, 2, 0)]
+                    i, k, m = max(pairs, key=lambda t: abs(float(
+                        dirs[t[0]][0] * dirs[t[1]][1] - dirs[t[0]][1] * dirs[t[1]][0])))
+                    order = [unknown[i], unknown[k], unknown[m]]
+                    r = resultant(lid, [*loads, *(on_label(kk, lid) for kk in knowns)])
+                    labs = [j.label(lid, sfx) for j in order]
+                    q = self.fresh(f"q_{lid}{sfx}")
+                    eq = VectorEquation((Term(r),), tuple(
+                        Term(x, Mark.UNKNOWN, Mark.KNOWN, -1) for x in labs), case=None)
+                    ins = tuple(lines[j.key][0] for j in order)  # type: ignore[index]
+                    self.emit("force_four", (r, *ins), (*labs, q),
+                              f"link {lid} is a four-force member (Sec. 11.8): the lines of "
+                              f"{labs[0]} and {labs[1]} meet at {q}; Σ M_{q} = 0 gives "
+                              f"{labs[2]}; {r} + {labs[2]} acts along the line to {q}, and "
+                              f"the force polygon gives {labs[0]} and {labs[1]}",
+                              role=Role.RESULT, equation=eq)
+                    for j, lab in zip(order, labs):
+                        set_known(j, lid, lab)
+                    p.order.append(f"link {lid}: four-force member, moments about {q}")
+                    progress = True
+                    continue
                 if len(unknown) == 2 and count == 3:
                     j1, j2 = unknown
                     if kind_of(j2) == "line":

@@ -213,6 +213,31 @@ def _slide_three(r: Array, line1: Array, n2: Array, *,
     return f1, f2, _concurrency(line1, _line_or_infinity(f2))
 
 
+@op("force_four", kind=KIND)
+def _four(r: Array, line1: Array, line2: Array, line3: Array, *,
+          tol: Tolerance) -> tuple[Array, Array, Array, Array]:
+    """A four-force member (Sec. 11.8, Ex 11.3): a known R and three forces on known lines.
+
+    The lines of the first two unknowns meet at q; ``Σ M_q = 0`` leaves one
+    unknown, the third force; then R plus the third acts along the line to q
+    and the force polygon gives the other two.  Computed as the three
+    equilibrium equations at once.  Outputs F1, F2, F3 (wrenches) and q.
+    """
+    cols = []
+    for ln in (line1, line2, line3):
+        d, p0 = _unit_on(ln)
+        cols.append(wrench(d, p0))
+    m = np.stack(cols, axis=-1)  # (..., 3, 3): unit wrenches as columns
+    rr = np.asarray(r, dtype=float)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        try:
+            a = np.linalg.solve(m, -rr[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            a = np.full(rr.shape, np.nan)
+    f1, f2, f3 = (cols[k] * a[..., k:k + 1] for k in range(3))
+    return f1, f2, f3, _concurrency(line1, line2)
+
+
 @op("force_balance", kind=KIND)
 def _balance(r: Array, *, tol: Tolerance) -> tuple[Array]:
     """The one unknown force on a link: equal and opposite to the resultant of the others."""

@@ -106,15 +106,22 @@ class ForceSolution:
     def force(self, i: str | int, j: str | int) -> np.ndarray:
         """F_ij, the force exerted by link i on link j (``force(3, 4)`` is F_34).
 
-        >>> import graphkin
+        With two joints between the links (``"1-3@B"``, ``"1-3@D"``) their sum;
+        :attr:`forces` has each.
         """
         a, b = str(i), str(j)
-        for jt in self.joints:
+        total = np.zeros(2)
+        found = False
+        for jt in self.joints:  # two joints between one pair (F_13@B, F_13@D): their sum
             if (jt.lo, jt.hi) == (a, b):
-                return self.forces[jt.key][:2].copy()
-            if (jt.lo, jt.hi) == (b, a):
-                return -self.forces[jt.key][:2]
-        raise KeyError(f"links {a} and {b} share no joint")
+                total = total + self.forces[jt.key][:2]
+                found = True
+            elif (jt.lo, jt.hi) == (b, a):
+                total = total - self.forces[jt.key][:2]
+                found = True
+        if not found:
+            raise KeyError(f"links {a} and {b} share no joint")
+        return total
 
     def point(self, key: str) -> np.ndarray:
         """A point on the line of action of a joint's force (spec/forces.md).

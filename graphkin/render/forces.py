@@ -168,7 +168,8 @@ def _forces_on(fs: ForceSolution, lid: str) -> list[_Force]:
                     np.asarray(sol.position(inr.center, lid)), _LOAD, ()))
     for j in fs.joints:
         if lid in (j.lo, j.hi):
-            out.append((force_name(j.label(lid)), fs.force(j.other(lid), lid),
+            w = fs.forces[j.key][:2]
+            out.append((force_name(j.label(lid)), w if lid == j.hi else -w,
                         fs.point(j.key), INK, (j.label(lid), j.label(j.other(lid)))))
     for d in mech.drives:
         if d.link == lid and d.kind == "position" and d.slider is not None:

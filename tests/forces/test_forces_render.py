@@ -46,6 +46,18 @@ def test_polygons_close(ex12_4):
             np.testing.assert_allclose(h, t)  # head to tail
 
 
+@pytest.mark.parametrize("path", sorted((Path(__file__).resolve().parents[2] / "gallery"
+                                          / "mechanisms").glob("ex1[12]_*.toml")),
+                         ids=lambda p: p.stem)
+def test_gallery_polygons_close(path):
+    """Every force polygon of the gallery's Chapter 11-12 examples closes."""
+    d = draw(graphkin.load(path).solve(), "forces")
+    assert d.vectors
+    for name, vecs in d.vectors.items():
+        size = max(float(np.hypot(*(h - t))) for _, t, h in vecs)
+        assert float(np.hypot(*(vecs[-1][2] - vecs[0][1]))) <= 1e-9 * size, name
+
+
 def test_scale_is_stated(ex12_4):
     text = ex12_4.texts["force-scale"].get_text()
     assert "forces 1 in = " in text and "N" in text and "lengths 1 in = " in text
