@@ -5,7 +5,7 @@ Usage::
     python benchmarks/bench_sweep.py [--count 3600] [--repeat 30] [FILE]
 
 All three do the same work for every posture of one turn of the crank of
-``spec/bench_fourbar.toml``: positions, velocities and accelerations of every
+``benchmarks/bench_fourbar.toml``: positions, velocities and accelerations of every
 point (and every link's angle, ω, α).  The closed form is Freudenstein's
 equation with the loop-closure derivatives (``fourbar_closed_form.py``); it
 produces the same CSV columns.  pylinkage is timed if it is installed (its

@@ -24,7 +24,7 @@ normals of the unknown directions)::
 and every point of a link follows from Eqs. 3.4 and 4.5:
 ``V_P = V_O + ω × R_PO``, ``A_P = A_O + α × R_PO - ω² R_PO``.
 
-It produces the same columns as ``graphkin sweep`` (``spec/sweep.md``) so that
+It produces the same columns as ``graphkin sweep`` (``docs/formats/sweep-csv.md``) so that
 both do the same work when they are timed against each other.
 """
 
@@ -35,7 +35,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["FourBar", "fourbar_from_mechanism", "wrap_deg"]
+__all__ = ["FourBar", "fourbar_from_mechanism", "fourbar_batch", "wrap_deg"]
 
 
 def wrap_deg(rad: np.ndarray) -> np.ndarray:
@@ -68,16 +68,16 @@ class FourBar:
         self.ids = ids
         self.links = links
         f, k2, k3, k4 = ids
-        self.A = np.asarray(links[f][a], dtype=float)
-        self.D = np.asarray(links[f][d], dtype=float)
-        v = self.D - self.A
-        self.r1 = math.hypot(*v)
-        self.t1 = math.atan2(v[1], v[0])
+        self.A = links[f][a]
+        self.D = links[f][d]
+        v = (self.D[0] - self.A[0], self.D[1] - self.A[1])
+        self.r1 = np.hypot(*v)
+        self.t1 = np.arctan2(v[1], v[0])
 
-        def seg(lid: str, p: str, q: str) -> tuple[float, float]:
+        def seg(lid: str, p: str, q: str) -> tuple[Any, Any]:
             dx = links[lid][q][0] - links[lid][p][0]
             dy = links[lid][q][1] - links[lid][p][1]
-            return math.hypot(dx, dy), math.atan2(dy, dx)
+            return np.hypot(dx, dy), np.arctan2(dy, dx)
 
         # link lengths and where each link's own x axis stands from its line
         self.r2, self.phi2 = seg(k2, a, b)
@@ -92,7 +92,7 @@ class FourBar:
         # direction of the crank line AB (the link's x axis plus the line's local angle)
         q2 = theta2 + self.phi2
         c2, s2 = np.cos(q2), np.sin(q2)
-        c1, s1 = math.cos(t1), math.sin(t1)
+        c1, s1 = np.cos(t1), np.sin(t1)
         # Freudenstein's equation P cos θ4 + Q sin θ4 = S (Example 2.5, Eqs. 4-5)
         P = (2 * r1 * r4 * c1) - (2 * r4 * r2) * c2
         Q = (2 * r1 * r4 * s1) - (2 * r4 * r2) * s2
@@ -120,8 +120,9 @@ class FourBar:
         a, b, c, d = self.names
         ax, ay = self.A
         dx, dy = self.D
-        n = np.shape(theta2)[0]
-        zero = np.zeros(n)
+        # one design: shape (N,); a batch of designs (lengths of shape (M, 1)): (M, N)
+        zero = np.zeros(np.broadcast_shapes(np.shape(theta2), np.shape(r2), np.shape(r3),
+                                            np.shape(r4), np.shape(r1)))
         # link poses: (x-axis angle, cos, sin of the line, anchor point, anchor local,
         # anchor position/velocity/acceleration, ω, α)
         t3 = q3 - self.phi3
@@ -135,13 +136,13 @@ class FourBar:
             k3: (t3, q3, c3, s3, b, ab, vb, (abx, aby), w3, a3),
             k4: (t4, q4, c4, s4, d, (dx, dy), (0.0, 0.0), (0.0, 0.0), w4, a4),
         }
-        cols: dict[str, np.ndarray] = {"drive": np.degrees(theta2)}
+        cols: dict[str, np.ndarray] = {"drive": np.degrees(theta2) + zero}
         cols[f"angle_{f}"] = zero
         cols[f"omega_{f}"] = zero
         cols[f"alpha_{f}"] = zero
         for lid in (k2, k3, k4):
             t, _, _, _, _, _, _, _, w, al = poses[lid]
-            cols[f"angle_{lid}"] = wrap_deg(t)
+            cols[f"angle_{lid}"] = wrap_deg(t + zero)
             cols[f"omega_{lid}"] = w + zero
             cols[f"alpha_{lid}"] = al + zero
         done: set[str] = set()
@@ -162,7 +163,7 @@ class FourBar:
                 # R_PO in the link's own frame, turned by the line's angle
                 ux, uy = loc[0] - lp[0], loc[1] - lp[1]
                 phi = {k2: self.phi2, k3: self.phi3, k4: self.phi4}[lid]
-                cp, sp = math.cos(-phi), math.sin(-phi)
+                cp, sp = np.cos(-phi), np.sin(-phi)
                 ux, uy = cp * ux - sp * uy, sp * ux + cp * uy
                 rx = cq * ux - sq * uy
                 ry = sq * ux + cq * uy
@@ -196,3 +197,19 @@ def fourbar_from_mechanism(mech: Any) -> FourBar:
             best = (dist, fb)
     assert best is not None
     return best[1]
+
+
+def fourbar_batch(mech: Any, dimensions: dict[str, Any]) -> FourBar:
+    """The closed form for many designs at once: ``"links.<k>.<P>"`` -> ``(M, 2)`` arrays.
+
+    Every varied coordinate becomes an ``(M, 1)`` column, so the lengths, and
+    every column :meth:`FourBar.solve` returns, have the shape ``(M, N)``.
+    The root of Freudenstein's equation is the file's design's.
+    """
+    base = fourbar_from_mechanism(mech)
+    links: dict[str, dict[str, Any]] = {lid: dict(link.points) for lid, link in mech.links.items()}
+    for key, value in dimensions.items():
+        _, lid, name = key.split(".")
+        a = np.asarray(value, dtype=float)
+        links[lid][name] = (a[:, 0:1], a[:, 1:2])
+    return FourBar(links, base.sign)

@@ -36,7 +36,7 @@ def _closed_form():
 @pytest.fixture(scope="module")
 def mech():
     if not BENCH.exists():
-        pytest.skip("spec/bench_fourbar.toml is not beside this checkout")
+        pytest.skip("benchmarks/bench_fourbar.toml is missing")
     return graphkin.load(BENCH)
 
 

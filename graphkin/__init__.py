@@ -46,15 +46,16 @@ from graphkin.errors import (
 )
 from graphkin.kinematics.solution import LinkState, Solution
 from graphkin.kinematics.solve import solve
+from graphkin.kinematics.sweep.batch import Batch, batch
 from graphkin.mechanisms import Mechanism, from_dict, load, loads
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
-__version__ = "0.1.0"
+__version__ = "0.1.0"  # the one source of the version (pyproject.toml reads it)
 
 __all__ = [
     "examples",
     "load", "loads", "from_dict", "solve", "Mechanism", "Solution", "LinkState",
     "Construction", "Step", "Tolerance", "DEFAULT_TOL", "GraphkinError", "InputError",
     "ConstructionError", "NoIntersectionError", "ParallelDirectionsError", "DegenerateError",
-    "IdealPointError", "AssemblyError", "__version__",
+    "IdealPointError", "AssemblyError", "batch", "Batch", "__version__",
 ]

@@ -26,7 +26,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="graphkin",
         description="Graphic constructions of planar mechanism kinematics "
-                    "(Uicker, Pennock & Shigley), exact and drawn.")
+                    "(Uicker, Pennock & Shigley), exact and drawn.",
+        epilog="To start: graphkin example list; graphkin example fourbar > fourbar.toml; "
+               "graphkin solve fourbar.toml. 'graphkin COMMAND --help' for each command.")
     parser.add_argument("--version", action="version", version=_version())
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     for info in sorted(pkgutil.iter_modules(commands.__path__), key=lambda m: m.name):
@@ -39,12 +41,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
+    from graphkin import __version__
 
-    try:
-        return f"graphkin {version('graphkin')}"
-    except PackageNotFoundError:
-        return "graphkin (not installed)"
+    return f"graphkin {__version__}"
 
 
 def main(argv: Sequence[str] | None = None) -> int:

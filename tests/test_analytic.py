@@ -4,7 +4,7 @@ Everything here is checked against something derived independently of the
 solver: the posture a random mechanism was generated from
 (``tests/strategies.py``), finite differences of the solver's own postures
 along a time path, the closed-form four-bar of Sec. 2.9, and the exact
-results of the spec examples (``spec/examples/expected.toml``).
+results of the spec examples (``tests/data/spec/expected.toml``).
 """
 
 from __future__ import annotations

@@ -24,7 +24,10 @@ def test_json_has_the_contract_keys_and_no_nan(capsys):
     text = capsys.readouterr().out
     assert "NaN" not in text and "Infinity" not in text
     data = json.loads(text)
-    assert data["units"] == {"length": "in", "time": "s", "angle": "deg"}
+    # the JSON format's three keys, then the unit of each quantity (issue 13: JSON has units)
+    assert data["units"] == {"length": "in", "time": "s", "angle": "deg", "position": "in",
+                             "velocity": "in/s", "acceleration": "in/s^2", "omega": "rad/s",
+                             "alpha": "rad/s^2"}
     for key in ("links", "points", "instant_centers", "curvature", "paths"):
         assert key in data
     assert set(data["links"]) == {"1", "2", "3", "4"}

@@ -107,7 +107,11 @@ def test_gallery_files(name, expect, capsys):
 @pytest.mark.parametrize("text, where", [
     ("[A\n", "TOML syntax error"),
     ("colour = 1\n", "colour: unknown key"),
-    ("[A]\nsize = 2\n", "A.size: unknown key; valid keys: magnitude, angle"),
+    ("[A]\nsize = 2\n", "A.size: unknown key 'size' (valid keys: magnitude, angle)"),
+    ("[A]\nmagnitud = 2\n", "A.magnitud: unknown key 'magnitud' (did you mean 'magnitude'?)"),
+    ("titel = \"x\"\n", "titel: unknown key 'titel' (did you mean 'title'?)"),
+    ("units = { angle = \"rad\" }\n", "units.angle: unknown key 'angle'"),
+    ("units = { length = \"furlongz\" }\n", "units: unknown unit"),
     ("A = 3\n", "A: expected a table"),
     ("[A]\nmagnitude = true\n", "A.magnitude: expected a number"),
     ("[A]\nmagnitude = \"x\"\n", "A.magnitude: cannot read"),

@@ -1,4 +1,4 @@
-"""Sweeps: the same constructions on whole arrays of drive values (``spec/sweep.md``).
+"""Sweeps: the same constructions on whole arrays of drive values (``docs/formats/sweep-csv.md``).
 
 Every number a sweep gives is checked against something computed another way:
 single solves of the mechanism with its drive set to that value (through
@@ -137,7 +137,7 @@ def _compare_with_solve(sw, data: dict, i: int, rel: float = REL) -> None:
 # ---------------------------------------------------------------------------
 
 def test_columns_and_order_follow_the_spec(bench: graphkin.Mechanism) -> None:
-    # spec/sweep.md: drive; per link (file order) angle, omega, alpha; per named point
+    # docs/formats/sweep-csv.md: drive; per link (file order) angle, omega, alpha; per named point
     # (file order, once) x, y, vx, vy, ax, ay -- built here from the TOML itself
     data = _data(BENCH)
     want = ["drive"]
@@ -614,7 +614,7 @@ def test_importing_the_sweep_does_not_import_matplotlib() -> None:
 
 
 def test_extra_columns_at_the_file_posture_of_example_3_1(examples: Path) -> None:
-    # the first posture of a default sweep is the file's: spec/examples/expected.toml gives
+    # the first posture of a default sweep is the file's: tests/data/spec/expected.toml gives
     # I13 = (5.42613, -9.39833), I24 = (-11.0627, 0), the inflection diameter of link 3,
     # 40.3807 in, and the radius of curvature of E's path, 4.320695 in (Example 3.1)
     mech = graphkin.load(examples / "ex3_1_fourbar.toml")
@@ -666,3 +666,65 @@ def test_a_file_drawn_in_its_dead_zone_still_sweeps():
     ok = dead.valid
     np.testing.assert_allclose(dead.columns["angle_3"][ok], book.columns["angle_3"][ok],
                                atol=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# centers and curvature columns against the single-posture constructions
+# ---------------------------------------------------------------------------
+
+def _with_drive(mech: graphkin.Mechanism, value: float) -> graphkin.Mechanism:
+    """The mechanism with its first drive at ``value`` (rad)."""
+    import dataclasses
+
+    d = dataclasses.replace(mech.drives[0], value=value)
+    return dataclasses.replace(mech, drives=(d, *mech.drives[1:]))
+
+
+@pytest.mark.parametrize("k", [0, 5, 11, 17, 23])
+def test_swept_centers_are_the_single_posture_kennedy_centers(bench: graphkin.Mechanism,
+                                                              k: int) -> None:
+    # the sweep resolves the Kennedy search once and replays its steps on the arrays; at each
+    # posture the centers must be where the single-posture search (its own choice of lines)
+    # puts them
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    sw = bench.sweep(count=24, centers=True)
+    ic = instant_centers(graphkin.solve(_with_drive(bench, float(sw.values[k]))))
+    scale = bench.scale
+    for c in ic.centers.values():
+        x, y = c.xy
+        np.testing.assert_allclose(sw.columns[f"x_{c.label}"][k], x, atol=1e-9 * scale,
+                                   rtol=1e-9)
+        np.testing.assert_allclose(sw.columns[f"y_{c.label}"][k], y, atol=1e-9 * scale,
+                                   rtol=1e-9)
+
+
+@pytest.mark.parametrize("k", [0, 5, 11, 17, 23])
+def test_swept_curvature_is_the_single_posture_construction(bench: graphkin.Mechanism,
+                                                            k: int) -> None:
+    # J, the inflection diameter and Γ of every moving link, and ρ and the center of
+    # curvature of every moving point, as the single-posture constructions of Secs. 4.14-4.16
+    # (Euler-Savary, Bobillier, Hartmann) find them
+    from graphkin.kinematics.curvature import curvature, path_curvatures
+
+    sw = bench.sweep(count=24, curvature=True)
+    sol = graphkin.solve(_with_drive(bench, float(sw.values[k])))
+    cols = sw.columns
+    scale = bench.scale
+    for lid, lc in curvature(sol).items():
+        # the diameter reaches 1e5 crank lengths near the crank-rocker's toggles: scale-aware
+        big = max(scale, float(lc.inflection_diameter))
+        np.testing.assert_allclose(cols[f"inflection_diameter_{lid}"][k],
+                                   lc.inflection_diameter, rtol=1e-7, atol=1e-9 * big)
+        np.testing.assert_allclose([cols[f"jx_{lid}"][k], cols[f"jy_{lid}"][k]],
+                                   lc.inflection_pole, rtol=1e-7, atol=1e-9 * big)
+        np.testing.assert_allclose([cols[f"gx_{lid}"][k], cols[f"gy_{lid}"][k]],
+                                   lc.acceleration_center, rtol=1e-7, atol=1e-9 * scale)
+    for name, pcv in path_curvatures(sol).items():
+        if pcv.radius is None:
+            assert f"rho_{name}" not in cols or not np.isfinite(cols[f"rho_{name}"][k])
+            continue
+        np.testing.assert_allclose(cols[f"rho_{name}"][k], pcv.radius, rtol=1e-7)
+        assert pcv.center is not None
+        np.testing.assert_allclose([cols[f"cx_{name}"][k], cols[f"cy_{name}"][k]],
+                                   pcv.center, rtol=1e-7, atol=1e-7 * scale)

@@ -1,6 +1,6 @@
 """Checking hand solutions: measured answers, or drawn polygons, against the exact constructions.
 
-``graphkin check FILE ANSWERS`` (``spec/answers.md``): each measured value is
+``graphkin check FILE ANSWERS`` (``docs/formats/answers.md``): each measured value is
 compared with the exact one within drawing accuracy (2 % of magnitude and 2° of
 direction by default), and a wrong one is explained by the usual mistake that
 reproduces it (sense reversed, a unit factor, an image flipped over, a normal

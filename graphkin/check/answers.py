@@ -13,6 +13,7 @@ Coriolis), 4.14 (radius of curvature of a path).
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 import tomllib
@@ -26,8 +27,12 @@ from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
 from graphkin.units import parse_quantity
 
-__all__ = ["Key", "Given", "Answers", "CheckTolerance", "parse_key", "parse_value",
-           "load_answers", "loads_answers", "answers_from_dict", "KEY_HELP"]
+__all__ = ["Key", "Given", "Answers", "CheckTolerance", "SheetScale", "parse_key", "parse_value",
+           "load_answers", "loads_answers", "answers_from_dict", "read_scale", "valid_keys",
+           "read_limited", "MAX_FILE_BYTES", "KEY_HELP"]
+
+#: the largest answers file or drawing read (bytes): a class's files are a few kB
+MAX_FILE_BYTES = 20_000_000
 
 KEY_HELP = ("keys are theta<k>, omega<k>, alpha<k>, V_<P>, A_<P>, V_<P><Q>, A_<P><Q>, "
             "A_<P><Q>^n, A_<P><Q>^t, A_<P>^c, R_<P>, R_<P><Q>, I<i><j>, rho_<P>, "
@@ -47,6 +52,70 @@ _GREEK = {"θ": "theta", "ω": "omega", "α": "alpha", "ρ": "rho"}
 
 
 @dataclass(frozen=True)
+class SheetScale:
+    """A drawing scale: how much of a quantity one millimetre of paper stands for.
+
+    Attributes
+    ----------
+    quantity : str
+        ``velocity``, ``acceleration`` or ``length`` (a posture drawing).
+    per_mm : float
+        The quantity, in graphkin's internal units, of one millimetre on the sheet.
+    text : str
+        The scale as written (``"1 mm = 5 mm/s"``).
+    """
+
+    quantity: str
+    per_mm: float
+    text: str
+
+
+def read_scale(text: str, length_unit: str, *, key: str = "tolerance.scale",
+               file: str | None = None, paper_unit: str | None = None,
+               kinds: tuple[str, ...] = ("velocity", "acceleration", "length")) -> SheetScale:
+    """Read a scale ``"1 mm = 5 mm/s"`` (paper length = quantity).
+
+    Both sides go through :func:`graphkin.units.parse_quantity` (no arithmetic
+    is evaluated).  ``paper_unit`` is the unit of a bare number on the left.
+
+    Examples
+    --------
+    >>> s = read_scale("1 mm = 5 mm/s", "mm")
+    >>> s.quantity, s.per_mm
+    ('velocity', 5.0)
+    >>> read_scale("1 in = 1000 ft/s²", "in").quantity
+    'acceleration'
+    """
+    if not isinstance(text, str) or "=" not in text:
+        raise InputError(f"a scale reads like \"1 mm = 5 mm/s\", not {text!r}", key=key,
+                         file=file)
+    left, right = (_sup(t).strip() for t in text.split("=", 1))
+    try:
+        if paper_unit and re.fullmatch(r"\s*[-+]?[\d.]+(?:[eE][-+]?\d+)?\s*", left):
+            left = f"{left} {paper_unit}"
+        paper = parse_quantity(left, "length", "mm")[0]
+        if not re.search(r"[A-Za-z]", left):
+            raise ValueError
+    except ValueError:
+        raise InputError(f"the left side of the scale, {left!r}, is not a length on paper",
+                         key=key, file=file) from None
+    for kind in kinds:
+        try:
+            value = parse_quantity(right, kind, length_unit)[0]
+        except ValueError:
+            continue
+        if not (paper > 0 and value > 0):
+            raise InputError("both sides of the scale must be positive", key=key, file=file)
+        return SheetScale(kind, value / paper, text.strip())
+    raise InputError(f"the right side of the scale, {right!r}, is not a "
+                     f"{' or '.join(kinds)}", key=key, file=file)
+
+
+def _sup(text: str) -> str:
+    return text.replace("²", "^2").replace("³", "^3").replace("·", "*")
+
+
+@dataclass(frozen=True)
 class CheckTolerance:
     """How close a measured value must be to count as right.
 
@@ -57,6 +126,12 @@ class CheckTolerance:
         size of the mechanism.
     angle : float
         Degrees, for directions and link angles.
+    drawing : float or None
+        Drawing accuracy as a length on the sheet, in millimetres: a vector is
+        also right when its end lies within this distance of the exact end
+        on the paper (needs the scale of its polygon).
+    scales : tuple of SheetScale
+        The scales of the student's drawings (one per quantity).
 
     Examples
     --------
@@ -64,30 +139,69 @@ class CheckTolerance:
     CheckTolerance(relative=0.02, angle=2.0)
     >>> CheckTolerance.parse({"relative": "5 %", "angle": 3})
     CheckTolerance(relative=0.05, angle=3.0)
+    >>> t = CheckTolerance.parse({"drawing": "0.5 mm", "scale": "1 mm = 5 mm/s"}, length_unit="mm")
+    >>> t.drawing, t.per_mm("velocity")
+    (0.5, 5.0)
     """
 
     relative: float = 0.02
     angle: float = 2.0
+    drawing: float | None = None
+    scales: tuple[SheetScale, ...] = ()
+
+    def __repr__(self) -> str:
+        extra = "" if self.drawing is None else f", drawing={self.drawing!r}"
+        extra += "".join(f", scale={s.text!r}" for s in self.scales)
+        return f"CheckTolerance(relative={self.relative!r}, angle={self.angle!r}{extra})"
+
+    def per_mm(self, quantity: str) -> float | None:
+        """How much of ``quantity`` one millimetre of the drawing stands for, if known."""
+        for s in self.scales:
+            if s.quantity == quantity:
+                return s.per_mm
+        return None
+
+    def describe(self) -> str:
+        """The tolerance in words, for the report's head."""
+        text = f"{self.relative * 100:g} % of magnitude, {self.angle:g}° of direction"
+        if self.drawing is not None:
+            text += f", or {self.drawing:g} mm on the drawing"
+            if self.scales:
+                text += f" ({'; '.join(s.text for s in self.scales)})"
+        return text
 
     @classmethod
     def parse(cls, data: Any, *, file: str | None = None,
-              base: CheckTolerance | None = None) -> CheckTolerance:
+              base: CheckTolerance | None = None, length_unit: str = "mm") -> CheckTolerance:
         """A tolerance from the ``tolerance`` table of an answers file (or CLI values)."""
         base = base or cls()
         if not isinstance(data, dict):
             raise InputError("tolerance must be a table such as "
                              "{ relative = 0.02, angle = 2.0 }", key="tolerance", file=file)
-        unknown = set(data) - {"relative", "angle"}
-        if unknown:
-            raise InputError(f"unknown tolerance key {sorted(unknown)[0]!r}; valid: relative, "
-                             "angle", key="tolerance", file=file)
-        rel = base.relative if "relative" in data else None
-        ang = base.angle if "angle" in data else None
+        valid = ("relative", "angle", "drawing", "scale")
+        for k in data:
+            if k not in valid:
+                raise InputError(f"unknown key{suggest(k, valid)}; valid: {', '.join(valid)}",
+                                 key=f"tolerance.{k}", file=file)
+        rel, ang, drawing, scales = base.relative, base.angle, base.drawing, base.scales
         if "relative" in data:
             rel = parse_fraction(data["relative"], key="tolerance.relative", file=file)
         if "angle" in data:
             ang = parse_degrees(data["angle"], key="tolerance.angle", file=file)
-        return cls(base.relative if rel is None else rel, base.angle if ang is None else ang)
+        if "drawing" in data:
+            try:
+                drawing = parse_quantity(data["drawing"], "length", "mm")[0]
+            except ValueError as exc:
+                raise InputError(f"{exc} (write \"0.5 mm\")", key="tolerance.drawing",
+                                 file=file) from None
+            if not drawing > 0:
+                raise InputError("the drawing tolerance must be a positive length",
+                                 key="tolerance.drawing", file=file)
+        if "scale" in data:
+            raw = data["scale"]
+            texts = raw if isinstance(raw, list) else [raw]
+            scales = tuple(read_scale(t, length_unit, file=file) for t in texts)
+        return cls(rel, ang, drawing, scales)
 
 
 def parse_fraction(value: Any, *, key: str, file: str | None = None) -> float:
@@ -144,11 +258,15 @@ class Key:
         normal and tangential components of ``A_PQ``), ``Ac`` (the Coriolis
         component at a point), ``I`` (args: two link ids), ``rho`` (a point).
     args : tuple of str
+    link : str or None
+        For ``V_A4``, ``A_A4``: the link whose coincident point at A is meant
+        (the book's A4, Sec. 3.6), else None.
     """
 
     text: str
     kind: str
     args: tuple[str, ...]
+    link: str | None = field(default=None, repr=False)
 
     @property
     def quantity(self) -> str:
@@ -244,6 +362,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
             s = name + s[len(g):]
     names = list(mech.point_names)
     links = list(mech.links)
+    shown = [n for n in names if n not in mech.helper_points]  # never slot-definition points
 
     m = re.fullmatch(r"(theta|omega|alpha)_?(.+)", s)
     if m:
@@ -255,7 +374,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
     if m:
         p = m.group(1)
         if p not in names:
-            raise InputError(f"no point {p!r}; points are {', '.join(names)}", key=raw, file=file)
+            raise InputError(f"no point {p!r}; points are {', '.join(shown)}", key=raw, file=file)
         return Key(raw, "rho", (p,))
     m = re.fullmatch(r"I_?(.+)", s)
     if m:
@@ -289,16 +408,47 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
                                  f"A_{rest}B^{kind[-1]}", key=raw, file=file)
             return Key(raw, kind, (rest,))
         if kind == "Ac":
-            raise InputError(f"no point {rest!r}; points are {', '.join(names)}", key=raw,
+            raise InputError(f"no point {rest!r}; points are {', '.join(shown)}", key=raw,
                              file=file)
         pair = _split_pair(rest, names, raw, "points", file)
+        if pair is None and kind in ("V", "A"):
+            on = point_on_link(rest, mech)
+            if on is not None:
+                return Key(raw, kind, (on[0],), link=on[1])
         if pair is None:
             raise InputError(f"{rest!r} is not a point or a pair of points; points are "
-                             f"{', '.join(names)}", key=raw, file=file)
+                             f"{', '.join(shown)}", key=raw, file=file)
         if pair[0] == pair[1]:
             raise InputError("a difference needs two different points", key=raw, file=file)
         return Key(raw, kind, pair)
     raise InputError(f"unknown answer key; {KEY_HELP}", key=raw, file=file)
+
+
+def point_on_link(text: str, mech: Mechanism) -> tuple[str, str] | None:
+    """``"A4"`` -> ``("A", "4")``: the point of link 4 that coincides with A (Sec. 3.6).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> mech = graphkin.loads('''
+    ... [links.1]
+    ... A = [0, 0]
+    ... [links.2]
+    ... A = [0, 0]
+    ... B = [2, 0]
+    ... [drive]
+    ... link = 2
+    ... angle = 90
+    ... ''')
+    >>> point_on_link("B1", mech), point_on_link("B3", mech)
+    (('B', '1'), None)
+    """
+    text = text.replace("@", "")
+    for i in range(len(text) - 1, 0, -1):
+        name, lid = text[:i], text[i:]
+        if name in mech.point_names and lid in mech.links:
+            return name, lid
+    return None
 
 
 def _id_order(lid: str) -> tuple[int, int | str]:
@@ -414,7 +564,13 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         return g
     if key.shape == "scalar":
         v, sense, g.unit, g.factor = _quantity(value, kind, mech, k, file)
-        g.value, g.signed = v, sense is not None or v < 0
+        # a number is signed (ccw positive, answers.md); so is a string with a sense or a
+        # sign; a string with a unit and neither ("5.9 rad/s") gives the magnitude only
+        g.value = v
+        g.signed = not isinstance(value, str) or sense is not None \
+            or value.strip()[:1] in "+-"
+        if not g.signed:
+            g.note = "magnitude only: judged on its size (write cw/ccw or a sign for a sense)"
         return g
     if key.shape == "magnitude":
         if isinstance(value, str) and _INFINITY.match(value):
@@ -498,12 +654,16 @@ class Answers:
     source : str
     meta : dict
         ``student``, ``name``, ``title``... as written.
+    unreadable : list of InputError
+        The entries that could not be read (each names its key): reported, and
+        the rest of the file is marked all the same.
     """
 
     given: list[Given]
     tolerance: CheckTolerance = field(default_factory=CheckTolerance)
     source: str = ""
     meta: dict[str, Any] = field(default_factory=dict)
+    unreadable: list[InputError] = field(default_factory=list)
 
     @property
     def student(self) -> str:
@@ -511,27 +671,88 @@ class Answers:
         return str(self.meta.get("student", self.meta.get("name", "")))
 
 
+def valid_keys(mech: Mechanism) -> list[str]:
+    """Every answer key of the usual forms for a mechanism, and the other keys of the file.
+
+    For suggestions (``difflib``) when a key is misspelt.
+    """
+    links = list(mech.links)
+    moving = [lid for lid in links if lid != "1"]
+    helpers = mech.helper_points
+    names = [n for n in mech.point_names if n not in helpers]
+    keys = list(META_KEYS)
+    for lid in moving:
+        keys += [f"theta{lid}", f"omega{lid}", f"alpha{lid}"]
+    for n in names:
+        keys += [f"V_{n}", f"A_{n}", f"R_{n}", f"rho_{n}"]
+    for link in mech.links.values():
+        pts = [n for n in link.points if n in names]
+        for p in pts:
+            for q in pts:
+                if p != q:
+                    sep = "" if len(p) == len(q) == 1 else "-"
+                    keys += [f"V_{p}{sep}{q}", f"A_{p}{sep}{q}", f"A_{p}{sep}{q}^n",
+                             f"A_{p}{sep}{q}^t"]
+    for i, a in enumerate(links):
+        for b in links[i + 1:]:
+            keys.append(f"I{a}{b}" if len(a) == len(b) == 1 else f"I{a}-{b}")
+    return list(dict.fromkeys(keys))
+
+
+def suggest(word: str, valid: Any) -> str:
+    """``" (did you mean 'x'?)"`` for the nearest valid key, or ``""``.
+
+    Examples
+    --------
+    >>> suggest("titel", ["title", "student"])
+    " (did you mean 'title'?)"
+    """
+    near = difflib.get_close_matches(word, list(valid), n=1, cutoff=0.6)
+    return f" (did you mean {near[0]!r}?)" if near else ""
+
+
 def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
                       source: str = "") -> Answers:
-    """Parse the data of an answers file (see :func:`load_answers`)."""
+    """Parse the data of an answers file (see :func:`load_answers`).
+
+    An entry that cannot be read (an unknown key, a value of the wrong form) is
+    kept in :attr:`Answers.unreadable` with the nearest valid key, and the rest
+    is read all the same (a class of forty: one typo costs one answer).
+
+    Raises
+    ------
+    InputError
+        Nothing in the file can be marked (the first problem, or "no answers").
+    """
     file = source or None
     tol = CheckTolerance()
     meta: dict[str, Any] = {}
     given: list[Given] = []
+    bad: list[InputError] = []
+    known: list[str] | None = None
     for k, v in data.items():
-        if k == "tolerance":
-            tol = CheckTolerance.parse(v, file=file)
-            continue
-        if k in META_KEYS:
-            meta[k] = v
-            continue
-        if isinstance(v, dict) and not _is_vector_table(v):
-            raise InputError(f"unexpected table; {KEY_HELP}", key=k, file=file)
-        key = parse_key(k, mech, file=file)
-        given.append(parse_value(key, v, mech, file=file))
+        try:
+            if k == "tolerance":
+                tol = CheckTolerance.parse(v, file=file, length_unit=mech.length_unit)
+                continue
+            if k in META_KEYS:
+                meta[k] = v
+                continue
+            if isinstance(v, dict) and not _is_vector_table(v):
+                raise InputError(f"unexpected table; {KEY_HELP}", key=k, file=file)
+            try:
+                key = parse_key(k, mech, file=file)
+            except InputError as exc:
+                known = known if known is not None else valid_keys(mech)
+                raise InputError(exc.message + suggest(k, known), key=k, file=file) from None
+            given.append(parse_value(key, v, mech, file=file))
+        except InputError as exc:
+            bad.append(exc)
     if not given:
+        if bad:
+            raise bad[0]
         raise InputError(f"no answers in the file; {KEY_HELP}", file=file)
-    return Answers(given, tol, source, meta)
+    return Answers(given, tol, source, meta, bad)
 
 
 def _is_vector_table(v: dict[str, Any]) -> bool:
@@ -565,22 +786,59 @@ def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise InputError(f"not valid TOML: {exc}", file=source or None) from None
+    except RecursionError:
+        raise InputError("not valid TOML: nested too deeply", file=source or None) from None
     return answers_from_dict(data, mech, source=source)
 
 
-def load_answers(path: str | Path, mech: Mechanism) -> Answers:
-    """Read an answers file (TOML, see ``spec/answers.md``) for a mechanism.
+def read_limited(path: str | Path, what: str = "file") -> str:
+    """The text of a regular file of at most :data:`MAX_FILE_BYTES` (UTF-8).
 
     Raises
     ------
     InputError
-        The file cannot be read, is not TOML, or has a key or value that
-        cannot be used; the message names the file and the key.
+        Not a regular file (a pipe, a device), too large, unreadable, not UTF-8.
     """
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read the file: {getattr(exc, 'strerror', None) or exc}",
+        st = path.stat()
+        if not path.is_file():
+            raise InputError(f"cannot read the {what}: not a regular file", file=str(path))
+        if st.st_size > MAX_FILE_BYTES:
+            raise InputError(f"cannot read the {what}: file too large ({st.st_size} bytes; "
+                             f"the limit is {MAX_FILE_BYTES // 1_000_000} MB)", file=str(path))
+        with path.open("rb") as fh:
+            raw = fh.read(MAX_FILE_BYTES + 1)
+        if len(raw) > MAX_FILE_BYTES:
+            raise InputError(f"cannot read the {what}: file too large", file=str(path))
+        return raw.decode("utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read the {what}: {exc.strerror or exc}",
                          file=str(path)) from None
+    except UnicodeDecodeError:
+        raise InputError(f"cannot read the {what}: not UTF-8 text", file=str(path)) from None
+
+
+def load_answers(path: str | Path, mech: Mechanism) -> Answers:
+    """Read an answers file (TOML, see ``docs/formats/answers.md``) for a mechanism.
+
+    Raises
+    ------
+    InputError
+        The file cannot be read, is not TOML, or has nothing that can be
+        marked; the message names the file and the key.
+    """
+    text = read_limited(path)
     return loads_answers(text, mech, source=str(path))
+
+
+def student_of(text: str) -> str:
+    r"""The student's name from an answers file's text, even when the TOML is broken.
+
+    Examples
+    --------
+    >>> student_of('student = "A. Student"\nomega3 = ')
+    'A. Student'
+    """
+    m = re.search(r'^\s*(?:student|name)\s*=\s*"([^"\n]*)"', text, re.MULTILINE)
+    return m.group(1) if m else ""

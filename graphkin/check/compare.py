@@ -21,6 +21,7 @@ import numpy as np
 
 from graphkin.check.answers import CheckTolerance, Given
 from graphkin.check.exact import Exact, wrap180
+from graphkin.text import fmt as text_fmt
 
 __all__ = ["Comparison", "compare", "show_given", "show_exact", "fmt"]
 
@@ -35,10 +36,14 @@ class Comparison:
         Within tolerance.
     error : str
         The error in words and numbers (``"+0.9 %"``, ``"-0.6 %, +0.05°"``).
+    rule : str
+        Which rule decided the verdict (``"within 2 %"``, ``"end 0.3 mm from
+        exact on the drawing (tolerance 0.5 mm)"``, ``"sense reversed"``).
     """
 
     ok: bool
     error: str
+    rule: str = ""
 
 
 def _pct(x: float) -> str:
@@ -51,7 +56,7 @@ def _deg(d: float) -> str:
 
 
 def compare(given: Given, exact: Exact, tol: CheckTolerance, *, floor: float = 0.0,
-            reference: float | None = None) -> Comparison:
+            reference: float | None = None, sheet: float | None = None) -> Comparison:
     """Compare a measured value with the exact one.
 
     Parameters
@@ -64,26 +69,73 @@ def compare(given: Given, exact: Exact, tol: CheckTolerance, *, floor: float = 0
     reference : float, optional
         The length a position error is measured against (default: the exact
         point's distance from the origin, at least 1).
+    sheet : float, optional
+        The drawing tolerance in the quantity's own units (``tol.drawing``
+        millimetres times the drawing's scale, divided by the link's length
+        for ω and α): the answer is right too when it is this close, so a
+        small vector in a large polygon is judged by where its end is on the
+        paper (issue: drawing accuracy is a length on the sheet).
 
     Examples
     --------
     >>> from graphkin.check.answers import Key
     >>> g = Given(Key("omega3", "omega", ("3",)), "25.6 rad/s ccw", value=25.6, signed=True)
     >>> compare(g, Exact(25.38), CheckTolerance())
-    Comparison(ok=True, error='+0.87 %')
-    >>> compare(g, Exact(-25.38), CheckTolerance()).ok
-    False
+    Comparison(ok=True, error='+0.87 %', rule='within 2 %')
+    >>> compare(g, Exact(-25.38), CheckTolerance()).rule
+    'sense reversed'
     """
     shape = given.key.shape
     if shape == "angle":
         assert given.value is not None and exact.value is not None
         d = wrap180(given.value - exact.value)
-        return Comparison(abs(d) <= tol.angle, _deg(d))
+        ok = abs(d) <= tol.angle
+        return Comparison(ok, _deg(d), f"{'within' if ok else 'outside'} {tol.angle:g}°")
     if shape in ("scalar", "magnitude"):
-        return _scalar(given, exact, tol, floor)
-    if shape == "point":
-        return _point(given, exact, tol, reference)
-    return _vector(given, exact, tol, floor)
+        c = _scalar(given, exact, tol, floor)
+    elif shape == "point":
+        c = _point(given, exact, tol, reference)
+    else:
+        c = _vector(given, exact, tol, floor)
+    if sheet is not None and sheet > 0 and tol.drawing:
+        c = _on_sheet(c, given, exact, tol, sheet)
+    return c
+
+
+def _on_sheet(c: Comparison, given: Given, exact: Exact, tol: CheckTolerance,
+              sheet: float) -> Comparison:
+    """Apply the drawing rule: right when the drawn end is within ``tol.drawing`` mm."""
+    mm = float(tol.drawing or 0.0)
+    shape = given.key.shape
+    if shape in ("scalar", "magnitude"):
+        g = float(given.value or 0.0)
+        e = float(exact.value or 0.0)
+        if math.isinf(g) or math.isinf(e):
+            return c
+        signed = given.signed and shape == "scalar"
+        dist = abs(g - e) if signed else abs(abs(g) - abs(e))
+    elif shape == "point":
+        if exact.ideal or given.ideal or given.point is None or exact.xy is None:
+            return c
+        dist = float(np.hypot(*(given.point - exact.xy)))
+    else:
+        if exact.xy is None:
+            return c
+        gv = given.components()
+        if gv is None:
+            dist = abs(float(given.value or 0.0) - exact.magnitude)
+        else:
+            dist = float(np.hypot(*(gv - exact.xy)))
+    on_paper = dist / sheet * mm
+    if on_paper <= mm:
+        if c.ok:
+            return c
+        return Comparison(True, c.error, f"within {mm:g} mm on the drawing ({on_paper:.2g} mm "
+                                         f"off; {c.rule})")
+    if c.ok:
+        return c
+    return Comparison(False, c.error, f"{c.rule}, and {on_paper:.2g} mm off on the drawing "
+                                      f"(more than {mm:g} mm)")
 
 
 def _scalar(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Comparison:
@@ -91,7 +143,8 @@ def _scalar(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Co
     e = float(exact.value if exact.value is not None else 0.0)
     if math.isinf(e) or math.isinf(g):
         ok = math.isinf(e) and math.isinf(g)
-        return Comparison(ok, "" if ok else "straight path" if math.isinf(e) else "not straight")
+        return Comparison(ok, "" if ok else "straight path" if math.isinf(e) else "not straight",
+                          "infinite radius" if ok else "straight or not")
     signed = given.signed and given.key.shape == "scalar"
     diff = (g - e) if signed else (abs(g) - abs(e))
     ok = abs(diff) <= tol.relative * abs(e) + floor
@@ -99,24 +152,43 @@ def _scalar(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Co
         text = f"{diff / given.factor:+.4g} {given.unit}"
     else:
         text = _pct((abs(g) - abs(e)) / abs(e))
+    rule = f"{'within' if ok else 'outside'} {tol.relative * 100:g} %"
+    if abs(e) <= floor:
+        rule = "zero within round-off" if ok else "not zero"
     if signed and abs(g) > floor and abs(e) > floor and (g > 0) != (e > 0):
         text += ", sense"
-    return Comparison(ok, text)
+        rule = "sense reversed"
+    elif not signed and given.key.shape == "scalar":
+        rule += " (magnitude only)"
+    return Comparison(ok, text, rule)
 
 
 def _vector(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Comparison:
     assert exact.xy is not None
     mag = exact.magnitude
     g = float(given.value if given.value is not None else 0.0)
-    ok = abs(g - mag) <= tol.relative * mag + floor
+    ok_mag = abs(g - mag) <= tol.relative * mag + floor
     parts = [_pct((g - mag) / mag) if mag > floor
              else f"{(g - mag) / given.factor:+.4g} {given.unit}"]
+    rules = [f"magnitude {'within' if ok_mag else 'outside'} {tol.relative * 100:g} %"
+             if mag > floor else ("zero within round-off" if ok_mag else "not zero")]
+    ok = ok_mag
     ed = exact.direction
     if given.direction is not None and mag > floor and g > floor and ed is not None:
         d = wrap180(given.direction - ed)
-        ok = ok and abs(d) <= tol.angle
+        ok_dir = abs(d) <= tol.angle
+        ok = ok and ok_dir
         parts.append(_deg(d))
-    return Comparison(ok, ", ".join(parts))
+        rules.append(f"direction {'within' if ok_dir else 'outside'} {tol.angle:g}°")
+        if abs(d) > 180.0 - tol.angle:
+            rules[-1] = "sense reversed"
+    elif given.direction is None:
+        rules[-1] += " (magnitude only)"
+    if ok:
+        rule = "within " + " and ".join(r.split(" within ")[-1] for r in rules)
+    else:
+        rule = ", ".join(r for r in rules if "within" not in r)
+    return Comparison(ok, ", ".join(parts), rule)
 
 
 def _point(given: Given, exact: Exact, tol: CheckTolerance,
@@ -124,16 +196,21 @@ def _point(given: Given, exact: Exact, tol: CheckTolerance,
     assert exact.xy is not None
     if exact.ideal or given.ideal:
         if not (exact.ideal and given.ideal):
-            return Comparison(False, "at infinity" if exact.ideal else "not at infinity")
+            return Comparison(False, "at infinity" if exact.ideal else "not at infinity",
+                              "at infinity or not")
         assert given.direction is not None and exact.direction is not None
         d = wrap180(given.direction - exact.direction)
         d = d - 180.0 if d > 90.0 else d + 180.0 if d <= -90.0 else d  # either sense
-        return Comparison(abs(d) <= tol.angle, _deg(d))
+        ok = abs(d) <= tol.angle
+        return Comparison(ok, _deg(d), f"direction {'within' if ok else 'outside'} "
+                                       f"{tol.angle:g}°")
     assert given.point is not None
     dist = float(np.hypot(*(given.point - exact.xy)))
     ref = reference if reference is not None else max(1.0, float(np.hypot(*exact.xy)))
-    return Comparison(dist <= tol.relative * ref,
-                      f"{dist / given.factor:.4g} {given.unit} ({dist / ref * 100:.2f} %)")
+    ok = dist <= tol.relative * ref
+    return Comparison(ok, f"{dist / given.factor:.4g} {given.unit} ({dist / ref * 100:.2f} %)",
+                      f"{'within' if ok else 'outside'} {tol.relative * 100:g} % of the "
+                      "mechanism's size")
 
 
 def _sense_word(x: float) -> str:
@@ -148,12 +225,7 @@ def fmt(x: float) -> str:
     >>> fmt(35530.6), fmt(25.3828), fmt(0.054321), fmt(0.0)
     ('35531', '25.38', '0.05432', '0')
     """
-    a = abs(x)
-    if a == 0 or not math.isfinite(a):
-        return f"{x:g}"
-    if 1e-3 <= a < 1e7:
-        return f"{x:.{max(0, 3 - math.floor(math.log10(a)))}f}"
-    return f"{x:.4g}"
+    return text_fmt(x, 4, trim=False)
 
 
 def show_given(given: Given) -> str:

@@ -28,10 +28,11 @@ component is directed toward the center), Sec. 4.5 (Coriolis component
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -76,13 +77,29 @@ class Mistake:
     ----------
     kind : str
         ``sense``, ``unit``, ``relative``, ``flipped``, ``normal``,
-        ``coriolis``, ``branch`` or ``inertia``.
+        ``coriolis``, ``branch``, ``inertia`` (forces), or ``combined`` (two mistakes at
+        once).
     text : str
         The mistake in words.
+    code : str
+        A short code to sort and filter marks by: ``sense``, ``unit:12``,
+        ``image-flipped``, ``normal-reversed``, ``coriolis-omega``,
+        ``coriolis-sense``, ``branch``, ``difference-for-absolute``..., two
+        mistakes joined by ``+``.
+    variant : int or None
+        The whole solution redrawn with this mistake (an index into
+        :meth:`Diagnoser.variants`), when the mistake carries through to
+        later answers (follow-through marking).
     """
 
     kind: str
     text: str
+    code: str = ""
+    variant: int | None = field(default=None, compare=False)
+
+    def __post_init__(self) -> None:
+        if not self.code:
+            object.__setattr__(self, "code", self.kind)
 
 
 def _lower(name: str) -> str:
@@ -142,40 +159,87 @@ class Diagnoser:
         self._variants: list[tuple[Mistake, Evaluator]] | None = None
 
     # ---- the search -----------------------------------------------------
-    def diagnose(self, given: Given, tol: CheckTolerance) -> Mistake | None:
-        """The first usual mistake whose value matches ``given`` within ``tol``."""
+    def diagnose(self, given: Given, tol: CheckTolerance,
+                 sheet: float | None = None) -> Mistake | None:
+        """The first usual mistake (or pair of them) whose value matches ``given``."""
         try:
             exact = self.ev.value(given.key)
         except GraphkinError:
             return None
         floor = self.ev.floor(given.key.quantity)
-        ref = self.ev.reference_length(exact.xy) if given.key.shape == "point" \
-            and exact.xy is not None and not exact.ideal else None
+        ref = self._reference(given, exact)
         for mistake, cand in self.candidates(given, exact):
-            if cand.xy is not None and not np.all(np.isfinite(cand.xy)):
-                continue
-            try:
-                if compare(given, cand, tol, floor=floor, reference=ref).ok:
-                    return mistake
-            except (AssertionError, TypeError, ValueError):
-                continue
+            if self._matches(given, cand, tol, floor, ref, sheet):
+                return mistake
         return None
 
+    def _reference(self, given: Given, exact: Exact) -> float | None:
+        if given.key.shape == "point" and exact.xy is not None and not exact.ideal:
+            return self.ev.reference_length(exact.xy)
+        return None
+
+    @staticmethod
+    def _matches(given: Given, cand: Exact, tol: CheckTolerance, floor: float,
+                 ref: float | None, sheet: float | None) -> bool:
+        if cand.xy is not None and not np.all(np.isfinite(cand.xy)):
+            return False
+        if cand.value is not None and not math.isfinite(cand.value):
+            return False
+        try:
+            return compare(given, cand, tol, floor=floor, reference=ref, sheet=sheet).ok
+        except (AssertionError, TypeError, ValueError):
+            return False
+
+    def explains(self, index: int, given: Given, tol: CheckTolerance,
+                 sheet: float | None = None) -> bool:
+        """Whether whole-solution variant ``index`` gives ``given`` within tolerance.
+
+        Follow-through marking: an answer that is wrong only because an earlier
+        answer's mistake was carried through the rest of the construction.
+        """
+        mistake, ev = self.variants()[index]
+        try:
+            cand = ev.value(given.key)
+            exact = self.ev.value(given.key)
+        except GraphkinError:
+            return False
+        floor = self.ev.floor(given.key.quantity)
+        if not self._matches(given, cand, tol, floor, self._reference(given, exact), sheet):
+            return False
+        # the variant must differ from the exact value here, or there is nothing to follow
+        return not self._matches(given, exact, tol, floor, self._reference(given, exact), sheet)
+
     def candidates(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
-        """Every mistaken value worth testing for ``given``, most likely first."""
+        """Every mistaken value worth testing for ``given``, most likely first.
+
+        Single mistakes first; then each polygon mistake combined with a
+        reversed sense or a unit factor (two usual mistakes at once).
+        """
         key = given.key
         yield from self._sense(given, exact)
         yield from self._units(given, exact, with_sense=False)
-        yield from self._relative(key)
-        yield from self._flipped(key)
-        yield from self._normal(key)
-        yield from self._forces(key)
-        for mistake, ev in self.variants():
+        polygon: list[tuple[Mistake, Exact]] = []
+        for item in itertools.chain(self._relative(key), self._flipped(key), self._normal(key),
+                                    self._forces(key)):
+            polygon.append(item)
+            yield item
+        for i, (mistake, ev) in enumerate(self.variants()):
             try:
-                yield mistake, ev.value(key)
+                value = ev.value(key)
             except GraphkinError:
                 continue
+            item = (dataclasses.replace(mistake, variant=i), value)
+            polygon.append(item)
+            yield item
         yield from self._units(given, exact, with_sense=True)
+        # two usual mistakes at once: a polygon mistake and a slip of sense or units
+        for mistake, value in polygon:
+            extras = itertools.chain(
+                () if mistake.kind == "sense" else self._sense(given, value),
+                () if mistake.kind == "unit" else self._units(given, value, with_sense=False))
+            for extra, changed in extras:
+                yield (Mistake("combined", f"{mistake.text}; and {extra.text}",
+                               f"{mistake.code}+{extra.code}"), changed)
 
     # ---- simple mistakes on the value itself ------------------------------
     def _sense(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
@@ -183,7 +247,8 @@ class Diagnoser:
         shape = key.shape
         if shape == "scalar" and given.signed:
             w = "ccw" if (exact.value or 0.0) > 0 else "cw"
-            yield Mistake("sense", f"sense reversed: {key.pretty()} is {w}"), exact.scaled(-1.0)
+            yield (Mistake("sense", f"sense reversed: {key.pretty()} is {w}"),
+                   exact.scaled(-1.0))
         elif shape == "angle":
             assert exact.value is not None
             yield (Mistake("sense", "angle of the link measured from its other end "
@@ -200,17 +265,20 @@ class Diagnoser:
                         f"{_lower(q)})")
             else:
                 text = f"sense reversed: {key.text} drawn the wrong way round (180° out)"
-            yield Mistake("sense", text), exact.scaled(-1.0)
+            code = "action-for-reaction" if key.kind == "F" else "sense"
+            yield Mistake("sense", text, code), exact.scaled(-1.0)
 
     def _forces(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
         """Dynamic force analysis (Sec. 12.4): the inertia force not reversed, h misplaced."""
         if key.kind not in ("F", "T") or not self.ev.forces().dynamic:
             return
         yield (Mistake("inertia", "the inertia force was not reversed: d'Alembert's force is "
-                                  "-m A_G, opposite to the acceleration of G (Sec. 12.4)"),
+                                  "-m A_G, opposite to the acceleration of G (Sec. 12.4)",
+                       "inertia-not-reversed"),
                self.ev.force(key, "not-reversed"))
         yield (Mistake("inertia", "h is on the wrong side of G: the offset inertia force must "
-                                  "have the moment -I_G α about G, opposite to α (Eq. 12.18)"),
+                                  "have the moment -I_G α about G, opposite to α (Eq. 12.18)",
+                       "inertia-h-side"),
                self.ev.force(key, "h-side"))
 
     def _units(self, given: Given, exact: Exact,
@@ -221,18 +289,20 @@ class Diagnoser:
             if not with_sense:
                 f, label, why = UNIT_FACTORS[7]
                 yield (Mistake("unit", f"too small by a factor of {label}: radians written as "
-                                       "degrees"), Exact(exact.value / f))
+                                       "degrees", f"unit:{label}"), Exact(exact.value / f))
             return
-        if with_sense and not (shape == "scalar" and given.signed):
+        if with_sense and not (shape == "scalar" and given.signed) \
+                and not (shape == "vector" and given.direction is not None):
             return
         sign = -1.0 if with_sense else 1.0
         pre = "sense reversed and " if with_sense else ""
         if shape == "point" and (exact.ideal or given.ideal):
             return
         for f, label, why in UNIT_FACTORS:
-            yield (Mistake("unit", f"{pre}too large by a factor of {label}: {why}"),
+            code = ("sense+" if with_sense else "") + f"unit:{label}"
+            yield (Mistake("unit", f"{pre}too large by a factor of {label}: {why}", code),
                    exact.scaled(sign * f))
-            yield (Mistake("unit", f"{pre}too small by a factor of {label}: {why}"),
+            yield (Mistake("unit", f"{pre}too small by a factor of {label}: {why}", code),
                    exact.scaled(sign / f))
 
     # ---- mistakes of the polygon --------------------------------------------
@@ -252,20 +322,22 @@ class Diagnoser:
                 vp = self._vec(k, p)
                 floor = self.ev.floor("velocity" if k == "V" else "acceleration")
                 for q in self.mech.point_names:
-                    if q == p:
+                    if q == p or q in self.mech.helper_points:
                         continue
                     vq = self._vec(k, q)
                     if float(np.hypot(*vq)) <= floor:
                         continue
                     yield (Mistake("relative", f"the {word} difference {k}_{p}{q} given for "
-                                               f"the absolute {word} {k}_{p}"),
+                                               f"the absolute {word} {k}_{p}",
+                                   "difference-for-absolute"),
                            Exact(None, vp - vq))
                 if k == "A":
                     yield from self._components_for_absolute(p, floor)
             else:
                 p, q = key.args
                 yield (Mistake("relative", f"the absolute {word} {k}_{p} given for the "
-                                           f"{word} difference {k}_{p}{q}"),
+                                           f"{word} difference {k}_{p}{q}",
+                               "absolute-for-difference"),
                        Exact(None, self._vec(k, p)))
                 if k == "A":
                     for comp, name in (("n", "normal"), ("t", "tangential")):
@@ -274,7 +346,8 @@ class Diagnoser:
                         except GraphkinError:
                             break
                         yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
-                                                   f"given for A_{p}{q}"), Exact(None, c))
+                                                   f"given for A_{p}{q}", "component-for-whole"),
+                               Exact(None, c))
         except (GraphkinError, ValueError):
             return
 
@@ -293,7 +366,8 @@ class Diagnoser:
                     except GraphkinError:
                         continue
                     yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
-                                               f"given for A_{p}"), Exact(None, c))
+                                               f"given for A_{p}", "component-for-whole"),
+                           Exact(None, c))
 
     def _flipped(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
         """The image triangle of the link drawn mirror-wise."""
@@ -309,7 +383,7 @@ class Diagnoser:
             if lid == FRAME:
                 continue
             pts = self.mech.links[lid].points
-            others = [q for q in pts if q != p]
+            others = [q for q in pts if q != p and q not in self.mech.helper_points]
             st = self.sol.links[lid]
             for q, r in itertools.combinations(others, 2):
                 m = _mirror(pts[p], pts[q], pts[r])
@@ -323,7 +397,8 @@ class Diagnoser:
                 yield (Mistake("flipped", f"the {word} image of link {lid} is flipped over: "
                                           f"triangle {tri} drawn mirror-wise about "
                                           f"{_lower(q)}{_lower(r)} (the image keeps the link's "
-                                          "shape and the order of its letters)"),
+                                          "shape and the order of its letters)",
+                                "image-flipped"),
                        Exact(None, np.asarray(v, dtype=float) - base))
 
     def _normal(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
@@ -342,12 +417,13 @@ class Diagnoser:
             if st.omega is None:
                 return
             for q in self.mech.links[lid].points:
-                if q == p:
+                if q == p or q in self.mech.helper_points:
                     continue
                 r = self.sol.position(p, lid) - self.sol.position(q, lid)
                 an = -float(st.omega) ** 2 * r
                 yield (Mistake("normal", f"A_{p}{q}^n drawn away from {q} instead of toward "
-                                         f"it (a normal component points to the center)"),
+                                         f"it (a normal component points to the center)",
+                               "normal-reversed"),
                        Exact(None, a - 2.0 * an))
 
     # ---- whole polygons redrawn with one mistake ------------------------------
@@ -360,8 +436,39 @@ class Diagnoser:
             except GraphkinError:
                 pass
             out += self._branch_variants()
+            out += self._rate_variants()
             self._variants = out
         return self._variants
+
+    def _rate_variants(self) -> list[tuple[Mistake, Evaluator]]:
+        """The input's rate with the wrong sense or a unit slip, carried through everything."""
+        from graphkin.kinematics.solve import solve
+
+        mech = self.mech
+        out: list[tuple[Mistake, Evaluator]] = []
+        if mech.rates is not None or not self.sol.has_rates:
+            return out
+        for d in mech.drives:
+            if not d.rate:
+                continue
+            w = f"ω{d.link}"
+            changes: list[tuple[float, Mistake]] = [
+                (-1.0, Mistake("sense", f"the input {w} taken with the wrong sense", "sense"))]
+            for f, label, why in UNIT_FACTORS:
+                changes.append((f, Mistake("unit", f"the input {w} too large by a factor of "
+                                                   f"{label}: {why}", f"unit:{label}")))
+                changes.append((1.0 / f, Mistake("unit", f"the input {w} too small by a factor "
+                                                         f"of {label}: {why}", f"unit:{label}")))
+            for f, mistake in changes:
+                drives = tuple(dataclasses.replace(e, rate=(e.rate or 0.0) * f) if e is d else e
+                               for e in mech.drives)
+                try:
+                    alt = solve(dataclasses.replace(mech, drives=drives),
+                                branches=dict(self.sol.branches))
+                except (GraphkinError, ValueError, ArithmeticError):
+                    continue
+                out.append((mistake, Evaluator(alt)))
+        return out
 
     def _construction_variants(self) -> list[tuple[Mistake, Evaluator]]:
         sol = self.sol
@@ -394,7 +501,14 @@ class Diagnoser:
             alt = Solution(mech, states, "construction", sol.constructions,
                            branches=dict(sol.branches),
                            values={"posture": pc.values, "velocity": vel, "acceleration": acc})
-            out.append((mistake, Evaluator(alt)))
+            # the student's pencil: every later image point where the polygon put it
+            images = {}
+            for name, lab in pol.acceleration_images.items():
+                if name in mech.point_names and lab in acc:
+                    xy = g.xy(np.asarray(acc[lab], dtype=float))
+                    if np.all(np.isfinite(xy)):
+                        images[name] = np.asarray(xy, dtype=float)
+            out.append((mistake, Evaluator(alt, accelerations=images)))
 
         def own(label: str, change: Callable[[np.ndarray], np.ndarray]) -> _Redo:
             """A redone step whose result is its own result changed by ``change``."""
@@ -407,11 +521,12 @@ class Diagnoser:
                 center = _n(step.inputs[0])
                 redo(lab, own(lab, lambda v: -v),
                      Mistake("normal", f"{lab} drawn away from {center} instead of toward it "
-                                       "(a normal component points to the center)"))
+                                       "(a normal component points to the center)",
+                             "normal-reversed"))
             elif step.op == "apparent_normal":
                 redo(lab, own(lab, lambda v: -v),
                      Mistake("normal", f"{lab} drawn away from the center of curvature of the "
-                                       "path instead of toward it"))
+                                       "path instead of toward it", "normal-reversed"))
             elif step.op == "acceleration_difference":
                 x = _n(step.outputs[0][2:-1].replace("@", ""))
                 a = _n(step.inputs[3])
@@ -426,17 +541,20 @@ class Diagnoser:
 
                 redo(step.outputs[0], reversed_normal,
                      Mistake("normal", f"A_{x}{a}^n drawn away from {a} instead of toward it "
-                                       "(a normal component points to the center)"))
+                                       "(a normal component points to the center)",
+                             "normal-reversed"))
             elif step.op == "coriolis":
                 wk = step.inputs[0]
                 redo(lab, own(lab, lambda v: -v),
                      Mistake("coriolis", f"the Coriolis component {lab} drawn with the wrong "
-                                         f"sense (it is V_rel turned 90° in the sense of {wk})"))
+                                         f"sense (it is V_rel turned 90° in the sense of {wk})",
+                             "coriolis-sense"))
                 redo(lab, own(lab, lambda v: 0.5 * v),
                      Mistake("coriolis", f"the Coriolis component {lab} taken as ω × V "
-                                         "instead of 2ω × V"))
+                                         "instead of 2ω × V", "coriolis-no-2"))
                 redo(lab, own(lab, lambda v: 0.0 * v),
-                     Mistake("coriolis", f"the Coriolis component {lab} left out"))
+                     Mistake("coriolis", f"the Coriolis component {lab} left out",
+                             "coriolis-missing"))
                 for wj in omegas.values():
                     if wj == wk:
                         continue
@@ -450,7 +568,8 @@ class Diagnoser:
                     redo(lab, other_omega,
                          Mistake("coriolis", f"the Coriolis component {lab} computed with {wj} "
                                              f"instead of {wk} (use the angular velocity of "
-                                             "the link that carries the path)"))
+                                             "the link that carries the path)",
+                                 "coriolis-omega"))
         return out
 
     def _branch_variants(self) -> list[tuple[Mistake, Evaluator]]:
@@ -471,11 +590,43 @@ class Diagnoser:
                 if any(np.allclose(pos, s) for s in [self._positions(), *seen]):
                     continue
                 seen.append(pos)
-                where = ", ".join(f"{lab} ({forced[lab]} instead of {chosen[lab]})"
+                where = ", ".join(self._branch_words(alt, lab, forced[lab], chosen[lab])
                                   for lab in subset)
-                out.append((Mistake("branch", f"the other assembly branch at {where}"),
+                out.append((Mistake("branch", f"the other assembly ({where})", "branch"),
                             Evaluator(alt)))
         return out
+
+    def _branch_words(self, alt: Solution, label: str, forced: str, chosen: str) -> str:
+        """What the student drew on the other branch: ``"C below BD"``."""
+        cx = self.sol.constructions.get("posture")
+        names = self.mech.point_names
+        try:
+            step = cx.step_of(label) if cx is not None else None
+        except (KeyError, GraphkinError):
+            step = None
+        if step is not None and step.op == "intersect_circles" and label in names:
+            centers = []
+            for c in step.inputs:
+                try:
+                    cs = cx.step_of(c) if cx is not None else None
+                except (KeyError, GraphkinError):
+                    cs = None
+                if cs is not None and cs.inputs and cs.inputs[0] in names:
+                    centers.append(cs.inputs[0])
+            if len(centers) == 2:
+                p, q = centers
+                a, b, x = (np.asarray(alt.position(n), dtype=float) for n in (p, q, label))
+                d = b - a
+                side = float(d[0] * (x - a)[1] - d[1] * (x - a)[0])
+                if abs(d[0]) >= abs(d[1]):
+                    word = "above" if side * (1 if d[0] > 0 else -1) > 0 else "below"
+                else:
+                    word = "left of" if side * (1 if d[1] > 0 else -1) > 0 else "right of"
+                sep = "" if len(p) == len(q) == 1 else "-"
+                return f"{label} {word} {p}{sep}{q}"
+        if label in names:
+            return f"{label} at the other intersection"
+        return f"the other intersection at step {label}"
 
     def _positions(self) -> np.ndarray:
         return np.array([self.sol.position(p) for p in self.mech.point_names])

@@ -91,6 +91,9 @@ class Evaluator:
     Parameters
     ----------
     sol : Solution
+    accelerations : dict, optional
+        Point name -> acceleration image ``[x, y]`` read off a polygon redrawn
+        with a mistake: what the student's pencil gives for every later point.
 
     Examples
     --------
@@ -113,9 +116,13 @@ class Evaluator:
     array([-6.,  0.])
     """
 
-    def __init__(self, sol: Solution) -> None:
+    def __init__(self, sol: Solution, *,
+                 accelerations: dict[str, np.ndarray] | None = None) -> None:
         self.sol = sol
         self.mech = sol.mechanism
+        #: image points read off an acceleration polygon drawn with a mistake (the student's
+        #: pencil), used instead of the links' rigid motion
+        self.images = dict(accelerations or {})
         self._ic: dict[str, Any] | None = None
         self._paths: dict[str, Any] | None = None
 
@@ -188,13 +195,16 @@ class Evaluator:
         if k == "R":
             xy = sol.position(a[0]) - (sol.position(a[1]) if len(a) == 2 else 0.0)
             return Exact(None, np.asarray(xy, dtype=float))
+        if k in ("V", "A") and key.link is not None:
+            self._rates(key, acc=k == "A")
+            return Exact(None, self.on_link(a[0], key.link, k))
         if k == "V":
             self._rates(key)
             xy = sol.velocity(a[0]) - (sol.velocity(a[1]) if len(a) == 2 else 0.0)
             return Exact(None, np.asarray(xy, dtype=float))
         if k == "A":
             self._rates(key, acc=True)
-            xy = sol.acceleration(a[0]) - (sol.acceleration(a[1]) if len(a) == 2 else 0.0)
+            xy = self._acc(a[0]) - (self._acc(a[1]) if len(a) == 2 else 0.0)
             return Exact(None, np.asarray(xy, dtype=float))
         if k in ("An", "At"):
             self._rates(key, acc=True)
@@ -234,6 +244,29 @@ class Evaluator:
             raise InputError(f"{key.text} is not a drive's torque (drives: {drives})",
                              key=key.text)
         return Exact(float(fs.drives[j][1]))
+
+    def on_link(self, name: str, lid: str, kind: str) -> np.ndarray:
+        """Velocity (``V``) or acceleration (``A``) of the point of link ``lid`` at ``name``.
+
+        ``V = V_O + ω × R`` and ``A = A_O + α × R − ω² R`` of the link's motion
+        at the point's place (Eqs. 3.4, 4.5): the coincident point A4 of Sec. 3.6.
+        """
+        st = self.sol.links[lid]
+        r = np.asarray(self.sol.position(name), dtype=float) - np.asarray(st.origin, dtype=float)
+        if st.omega is None or st.origin_velocity is None:
+            raise InputError("the mechanism file gives no rates", key=f"{kind}_{name}{lid}")
+        w = float(st.omega)
+        if kind == "V":
+            return np.asarray(st.origin_velocity, dtype=float) + w * perp(r)
+        if st.alpha is None or st.origin_acceleration is None:
+            raise InputError("the mechanism file gives no rates", key=f"{kind}_{name}{lid}")
+        return (np.asarray(st.origin_acceleration, dtype=float) + float(st.alpha) * perp(r)
+                - w**2 * r)
+
+    def _acc(self, name: str) -> np.ndarray:
+        if name in self.images:
+            return self.images[name]
+        return np.asarray(self.sol.acceleration(name), dtype=float)
 
     def common_link(self, key: Key, p: str, q: str) -> str:
         """A moving link that carries both points (the frame if only it does)."""
@@ -301,9 +334,9 @@ class Evaluator:
 
 
 def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
-    """``instant_centers_json(sol)`` of :mod:`graphkin.kinematics.instant_centers`, if present."""
+    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers`, if present."""
     try:
-        from graphkin.kinematics.instant_centers import instant_centers_json
+        from graphkin.output.centers import instant_centers_json
     except ImportError:
         return {}
     try:
@@ -314,9 +347,9 @@ def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
 
 
 def _optional_paths(sol: Solution) -> dict[str, Any]:
-    """``paths_json(sol)`` of :mod:`graphkin.kinematics.curvature`, if present."""
+    """``paths_json(sol)`` of :mod:`graphkin.output.curvature`, if present."""
     try:
-        from graphkin.kinematics.curvature import paths_json
+        from graphkin.output.curvature import paths_json
     except ImportError:
         return {}
     try:

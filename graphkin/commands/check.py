@@ -1,7 +1,7 @@
 """``graphkin check FILE ANSWERS... [--drawing D] [--csv OUT]``: mark hand solutions.
 
 Exit status 0 when every answer is within tolerance, 1 when any is not, 2
-when a file cannot be read (``spec/answers.md``).
+when a file cannot be read (``docs/formats/answers.md``).
 """
 
 from __future__ import annotations
@@ -40,7 +40,14 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--angle", metavar="DEG",
                    help="angle tolerance of directions and link angles, degrees (overrides the "
                         "answers files)")
-    p.add_argument("--csv", metavar="OUT", help="write one row of marks per answers file")
+    p.add_argument("--drawing-tolerance", metavar="LENGTH",
+                   help='drawing accuracy as a length on the sheet, e.g. "0.5 mm": a vector '
+                        "whose end is that close on the paper is right (needs the drawing's "
+                        "scale: the answers file's tolerance.scale, or the drawing's own)")
+    p.add_argument("--csv", metavar="OUT",
+                   help="write one row of marks per answers file (counts, a summary, and per "
+                        "answer the given and exact values, the error, the verdict and a "
+                        "mistake code)")
     p.add_argument("--quiet", action="store_true",
                    help="print only one summary line per file")
     return p
@@ -49,9 +56,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
-    from graphkin.check import CheckTolerance, check, load_answers, marks_csv
-    from graphkin.check.answers import parse_degrees, parse_fraction
+    from graphkin.check import CheckTolerance, Diagnoser, Evaluator, check, loads_answers, marks_csv
+    from graphkin.check.answers import parse_degrees, parse_fraction, read_limited, student_of
+    from graphkin.check.report import UNREADABLE, Report, printable
     from graphkin.errors import InputError
+    from graphkin.units import parse_quantity
 
     if not args.answers and not args.drawing:
         raise InputError("give an answers file or --drawing", file=args.file)
@@ -60,54 +69,75 @@ def run(args: argparse.Namespace) -> int:
         override["relative"] = parse_fraction(args.relative, key="--relative")
     if args.angle is not None:
         override["angle"] = parse_degrees(args.angle, key="--angle")
+    if args.drawing_tolerance is not None:
+        try:
+            mm = parse_quantity(args.drawing_tolerance, "length", "mm")[0]
+        except ValueError as exc:
+            raise InputError(f"{exc} (write \"0.5 mm\")", key="--drawing-tolerance") from None
+        if not mm > 0:
+            raise InputError("must be a positive length", key="--drawing-tolerance")
+        override["drawing"] = mm
 
     def tol_for(base: CheckTolerance) -> CheckTolerance:
-        return dataclasses.replace(base, **override)
+        return dataclasses.replace(base, **override)  # type: ignore[arg-type]
 
     mech = graphkin.load(args.file)
     sol = mech.solve()
+    diag = Diagnoser(Evaluator(sol))
     single = len(args.answers) + len(args.drawing) == 1 and not args.csv
     results: list[tuple[str, Report | None, str]] = []
     status = 0
     out = sys.stdout
+
+    def warn(line: str) -> None:
+        print(f"graphkin: {printable(line)}", file=sys.stderr)
+
     for path in args.answers:
+        text = ""
         try:
-            answers = load_answers(path, mech)
-            rep = check(sol, answers, tol_for(answers.tolerance))
+            text = read_limited(path)
+            answers = loads_answers(text, mech, source=path)
+            rep = check(sol, answers, tol_for(answers.tolerance), diagnoser=diag)
         except InputError as exc:
             if single:
                 raise
-            print(f"graphkin: {exc.one_line()}", file=sys.stderr)
-            results.append((path, None, exc.message))
+            warn(exc.one_line())
+            bad = Report([], CheckTolerance(), path, student_of(text), error=exc.message)
+            results.append((path, bad, exc.message))
             status = 2
             continue
         rep.title = "" if single else f"== {path}" + (f" ({rep.student})" if rep.student else "")
         _print(rep, args.quiet, path, out)
+        for r in rep.rows:
+            if r.verdict == UNREADABLE:
+                warn(f"{path}: {r.key}: {r.error}")
         results.append((path, rep, ""))
-        if not rep.ok and status == 0:
-            status = 1
+        status = _worse(status, rep)
     for path in args.drawing:
         from graphkin.check.drawing import check_drawing
 
         try:
-            rep = check_drawing(sol, path, scale=args.scale, tolerance=tol_for(CheckTolerance()))
+            rep = check_drawing(sol, path, scale=args.scale, tolerance=tol_for(CheckTolerance()),
+                                diagnoser=diag, drawing_tolerance="drawing" in override)
         except InputError as exc:
             if single:
                 raise
-            print(f"graphkin: {exc.one_line()}", file=sys.stderr)
+            warn(exc.one_line())
             results.append((path, None, exc.message))
             status = 2
             continue
         rep.title = f"== {path}" if not single else rep.title
         _print(rep, args.quiet, path, out)
         results.append((path, rep, ""))
-        if not rep.ok and status == 0:
-            status = 1
+        status = _worse(status, rep)
     if args.csv:
         text = marks_csv(results)
         if args.csv == "-":
             out.write(text)
         else:
+            if any(Path(args.csv).resolve() == Path(p).resolve()
+                   for p in [args.file, *args.answers, *args.drawing]):
+                raise InputError("the marks would overwrite an input file", file=args.csv)
             try:
                 Path(args.csv).write_text(text, encoding="utf-8")
             except OSError as exc:
@@ -116,10 +146,19 @@ def run(args: argparse.Namespace) -> int:
     return status
 
 
+def _worse(status: int, rep: Report) -> int:
+    """Exit status: 2 when anything was unreadable, else 1 when any answer is not right."""
+    if rep.unreadable:
+        return 2
+    if not rep.ok and status == 0:
+        return 1
+    return status
+
+
 def _print(rep: Report, quiet: bool, path: str, out: TextIO) -> None:
+    from graphkin.check.report import printable
+
     if quiet:
-        good = sum(r.ok for r in rep.counted)
-        line = f"{path}: {good} of {len(rep.counted)} within tolerance"
-        print(line, file=out)
+        print(printable(f"{path}: {rep.summary()}"), file=out)
         return
     print(rep.text(), file=out)

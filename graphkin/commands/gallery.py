@@ -10,8 +10,10 @@ __all__ = ["add_parser", "run"]
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
+    # a maintainer's tool (it works on a checkout's gallery/ folder): no help= keeps it
+    # out of `graphkin --help`, and it still runs for CI and the gallery's maintainers
     p = sub.add_parser(
-        "gallery", help="rebuild the gallery of textbook figures (or --check it)",
+        "gallery",
         description="Solve and draw every mechanism file of the gallery (gallery/mechanisms, "
                     "gallery/centers, gallery/curvature), write the drawings into "
                     "gallery/drawings and the index gallery/README.md with the book's "

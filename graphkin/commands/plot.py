@@ -42,6 +42,7 @@ def run(args: argparse.Namespace) -> int:
     import graphkin
     from graphkin.errors import InputError
     from graphkin.kinematics.sweep import sweep
+    from graphkin.progress import bar
     from graphkin.render.plots import parse_what, save_figure, sweep_figure
 
     items = parse_what(args.what)
@@ -49,14 +50,18 @@ def run(args: argparse.Namespace) -> int:
     if args.count < 2:
         raise InputError(f"--count must be at least 2 to draw a curve, not {args.count}",
                          key="count", file=args.file)
-    sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
-               transmission=any(i == "transmission" for i, _ in items))
-    fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])
-    try:
-        save_figure(fig, args.output)
-    except OSError as exc:
-        raise InputError(f"cannot write the drawing: {exc.strerror}", key="output",
-                         file=args.output) from None
+    # three stages: the sweep, the figure, the file (a bar only past a second, on a terminal)
+    with bar("plot", total=3, unit="stage") as b:
+        sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
+                   transmission=any(i == "transmission" for i, _ in items))
+        b.update(1)
+        fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])
+        b.update(1)
+        try:
+            save_figure(fig, args.output)
+        except OSError as exc:
+            raise InputError(f"cannot write the drawing: {exc.strerror}", key="output",
+                             file=args.output) from None
     for line in sw.report():
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
     return 0

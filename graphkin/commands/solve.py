@@ -1,4 +1,4 @@
-"""``graphkin solve FILE [--json] [--steps]``: solve a mechanism at its posture."""
+"""``graphkin solve FILE [--json] [--steps] [--units UNITS]``: solve a mechanism at its posture."""
 
 from __future__ import annotations
 
@@ -20,28 +20,34 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                        description="Solve a mechanism at the file's posture: positions, and "
                                    "velocities and accelerations when the file gives rates.")
     p.add_argument("file", help="mechanism file (TOML, see the README)")
-    p.add_argument("--json", action="store_true", help="print the JSON of spec/output.md")
+    p.add_argument("--json", action="store_true",
+                   help="print the result as JSON (docs/formats/json.md)")
     p.add_argument("--steps", action="store_true",
                    help="also list every construction step with its vector equation")
+    p.add_argument("--units", default=None, metavar="UNITS",
+                   help="report in these units, e.g. \"ft, ft/s, ft/s^2\" or \"m, rev/min\" "
+                        "(a length alone sets the velocity and acceleration units too; "
+                        "default: the file's length unit, seconds and rad/s)")
     return p
 
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
-    from graphkin.output import solution_to_dict, text_report
+    from graphkin.output import OutputUnits, solution_to_dict, text_report
 
     mech = graphkin.load(args.file)
+    units = OutputUnits.of(mech.length_unit, args.units)
     sol = mech.solve()
     constructions = _all_constructions(sol) if args.steps else {}
     if args.json:
-        data = solution_to_dict(sol)
+        data = solution_to_dict(sol, units)
         if args.steps:
             data["constructions"] = {k: c.to_dict() for k, c in constructions.items()}
         json.dump(data, sys.stdout, ensure_ascii=False, indent=1, allow_nan=False)
         sys.stdout.write("\n")
         return 0
-    sys.stdout.write(text_report(sol))
+    sys.stdout.write(text_report(sol, units))
     for name, c in constructions.items():
         sys.stdout.write(f"\n{name.capitalize()} construction\n{c.table()}\n")
     return 0

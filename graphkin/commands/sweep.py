@@ -1,21 +1,20 @@
 """``graphkin sweep FILE [--from DEG] [--to DEG] [--count N] --csv OUT.csv``: whole cycles.
 
-The contract is ``spec/sweep.md``: one CSV row per posture, the drive first,
+The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
 velocity and acceleration; empty cells where the mechanism cannot be
-assembled, reported once on standard error as a range of the drive.
+assembled, reported once on standard error as a range of the drive.  On a
+terminal, a job longer than a second shows a progress bar (the sweep, then
+the writing of the CSV, which takes longer).
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
-from typing import Any
+from typing import IO, cast
 
 __all__ = ["add_parser", "run"]
-
-#: Sweeps at least this long get a progress bar (when standard error is a terminal).
-PROGRESS_FROM = 200_000
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -43,24 +42,22 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--curvature", action="store_true",
                    help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
                         "the inflection poles and diameters of the links")
+    p.add_argument("--units", default=None, metavar="UNITS",
+                   help="write lengths, velocities, accelerations and angular rates in these "
+                        "units, e.g. \"ft, ft/s, ft/s^2\" (angles stay in degrees)")
+    p.add_argument("--units-row", action="store_true",
+                   help="write each column's unit on a second header line (the column names "
+                        "stay those of docs/formats/sweep-csv.md)")
     p.add_argument("--torque", action="store_true",
                    help="add the drive's torque (torque_2) or input force (force_4) that holds "
                         "the loads and inertia forces of the file (docs/forces.md)")
     p.add_argument("--joint-forces", action="store_true",
                    help="with --torque: also the magnitude of every joint force (F_3-4)")
     p.add_argument("--singular", action="store_true",
-                   help="also report dead centers, limit positions and Grashof's classification "
-                        "on standard error")
+                   help="also report dead centers, limit positions (of links pinned to the "
+                        "frame and of sliders on it) and Grashof's classification on standard "
+                        "error")
     return p
-
-
-def _progress(frac: float) -> None:
-    width = 30
-    done = int(round(width * frac))
-    sys.stderr.write(f"\rsweep [{'#' * done}{' ' * (width - done)}] {100 * frac:5.1f}%")
-    if frac >= 1.0:
-        sys.stderr.write("\n")
-    sys.stderr.flush()
 
 
 def run(args: argparse.Namespace) -> int:
@@ -68,29 +65,44 @@ def run(args: argparse.Namespace) -> int:
     import graphkin
     from graphkin.errors import InputError
     from graphkin.kinematics.sweep import grashof, sweep
+    from graphkin.output import OutputUnits
+    from graphkin.output.csv import column_unit, convert_columns
+    from graphkin.progress import CountingWriter, bar
 
     mech = graphkin.load(args.file)
+    OutputUnits.of(mech.length_unit, args.units)  # a bad --units fails before the sweep runs
     if args.count < 1:
         raise InputError(f"--count must be at least 1, not {args.count}", key="count",
                          file=args.file)
-    progress: Any = None
-    if args.count >= PROGRESS_FROM and sys.stderr.isatty():
-        progress = _progress
-    sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
-               transmission=args.transmission, centers=args.centers, curvature=args.curvature,
-               progress=progress)
+    with bar("sweep", total=args.count, unit="posture") as b:
+        sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
+                   transmission=args.transmission, centers=args.centers,
+                   curvature=args.curvature, progress=b.fraction)
     if args.torque or args.joint_forces:
         from graphkin.forces.sweep import force_columns
 
         sw.columns.update(force_columns(sw, joints=args.joint_forces))
-    if args.csv == "-":
-        sw.to_csv(sys.stdout)
-    else:
-        try:
-            sw.to_csv(args.csv)
-        except OSError as exc:
-            raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
-                             file=args.csv) from None
+    units = OutputUnits.of(mech.length_unit, args.units)
+    slider = sw.drive.kind != "angle"
+    try:
+        columns = convert_columns(sw.columns, units, slider) if args.units else None
+    except KeyError as exc:
+        raise InputError(f"no unit is known for the column {exc.args[0]!r}",
+                         key="--units") from None
+    units_row = ([column_unit(n, units, slider) for n in sw.columns] if args.units_row
+                 else None)
+    with bar("write CSV", total=args.count + 1, unit="row") as b:
+        if args.csv == "-":
+            sw.to_csv(cast(IO[str], CountingWriter(sys.stdout, b)), columns=columns,
+                      units_row=units_row)
+        else:
+            try:
+                with open(args.csv, "w", newline="", encoding="utf-8") as fh:
+                    sw.to_csv(cast(IO[str], CountingWriter(fh, b)), columns=columns,
+                              units_row=units_row)
+            except OSError as exc:
+                raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
+                                 file=args.csv) from None
     for line in sw.report(events=args.singular):
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
     if args.singular:

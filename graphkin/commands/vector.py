@@ -5,6 +5,7 @@ written ``"?"``, the book's mark) is unknown, and exactly two parts must be::
 
     title = "Case 4 (Fig. 2.13)"   # optional
     units = "in"                   # optional: the unit of every magnitude
+                                   # (also units = { length = "in" })
     branch = "left"                # optional: keep one branch (case 2: behind/ahead,
                                    #           case 4: left/right)
     [A]
@@ -38,17 +39,16 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
+from graphkin.keys import VECTOR, check_keys, read_units
 from graphkin.kinematics.vector_equation import (
     NAMES,
     Polar,
     VectorEquationResult,
     solve_vector_equation,
 )
+from graphkin.text import table
 
 __all__ = ["add_parser", "run", "VectorFile", "load", "loads", "text_report", "to_dict"]
-
-_TOP_KEYS = ("title", "units", "branch", *NAMES)
-_PARTS = ("magnitude", "angle")
 
 
 @dataclass(frozen=True)
@@ -112,16 +112,14 @@ def loads(text: str, source: str = "<vector file>") -> VectorFile:
     def fail(key: str | None, message: str) -> InputError:
         return InputError(message, key=key, file=source)
 
-    for key in data:
-        if key not in _TOP_KEYS:
-            raise fail(key, f"unknown key; valid keys: {', '.join(_TOP_KEYS)}")
+    check_keys(data, VECTOR, source)
     title = data.get("title", "")
     if not isinstance(title, str):
         raise fail("title", f"expected a string, not {title!r}")
-    units = data.get("units")
+    units = None
+    if "units" in data:
+        units = read_units(data["units"], "units", source, VECTOR["units"]).get("length")
     if units is not None:
-        if not isinstance(units, str) or not units.strip():
-            raise fail("units", f"expected a unit such as \"in\" or \"m/s\", not {units!r}")
         try:
             _quantity(f"1 {units}")
         except ValueError:
@@ -135,9 +133,6 @@ def loads(text: str, source: str = "<vector file>") -> VectorFile:
         if not isinstance(table, Mapping):
             raise fail(name, f"expected a table [{name}] with magnitude and angle, "
                              f"not {table!r}")
-        for key in table:
-            if key not in _PARTS:
-                raise fail(f"{name}.{key}", f"unknown key; valid keys: {', '.join(_PARTS)}")
         try:
             m = _magnitude(table.get("magnitude"), units)
         except ValueError as exc:
@@ -249,9 +244,7 @@ def text_report(vf: VectorFile, result: VectorEquationResult, steps: bool = Fals
         head = f"solution {k + 1}" + (f" ({branch}):" if branch else ":")
         cells = [f"{n} = {_polar_text(p, vf.units)}" for n, p in zip(NAMES, result.polar(k))]
         rows.append([head, *cells])
-    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-    for r in rows:
-        lines.append("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip())
+    lines += table(rows)
     if steps:
         lines.append("")
         lines.append(result.construction.table())

@@ -31,6 +31,7 @@ from graphkin.construction.ops.runtime import (
 from graphkin.construction.step import Role, Step, VectorEquation
 from graphkin.errors import ConstructionError, DegenerateError, NoIntersectionError
 from graphkin.geometry.ops import xy as g_xy
+from graphkin.text import table
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
 __all__ = ["Construction", "Evaluation"]
@@ -99,6 +100,26 @@ class Construction:
 
     def __len__(self) -> int:
         return len(self.steps)
+
+    def __repr__(self) -> str:
+        """A short summary: the title, the number of steps by role, the results (never raises).
+
+        >>> Construction(title="velocity polygon")
+        <Construction 'velocity polygon': 0 steps>
+        """
+        try:
+            head = f"<Construction {self.title!r}: {len(self.steps)} steps"
+            if not self.steps:
+                return head + ">"
+            roles: dict[str, int] = {}
+            for s in self.steps:
+                roles[str(s.role)] = roles.get(str(s.role), 0) + 1
+            counts = ", ".join(f"{n} {r}" for r, n in roles.items())
+            results = [o for s in self.steps if str(s.role) == "result" for o in s.outputs]
+            more = f"; results {' '.join(results[:12])}{' …' if len(results) > 12 else ''}"
+            return f"{head} ({counts}){more if results else ''}>"
+        except Exception:  # a repr never raises
+            return f"<Construction at {id(self):#x}>"
 
     def __iter__(self) -> Iterator[Step]:
         return iter(self.steps)
@@ -283,8 +304,7 @@ class Construction:
         for s in self.steps:
             rows.append((str(s.index), s.label, s.op, ", ".join(s.inputs), str(s.role),
                          s.branch or "", "" if s.equation is None else str(s.equation)))
-        widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-        return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
+        return "\n".join(table(rows))
 
     def to_dict(self) -> list[dict[str, Any]]:
         """The steps as plain data."""
@@ -373,7 +393,7 @@ class _Plan:
                 run = kern if kern is not None else generic_kernel(step, tol)
                 for o in step.outputs:
                     info.forget(o)
-                if step.op == "circle":
+                if step.op == "circle" and np.ndim(step.params["radius"]) == 0:
                     info.radius[step.outputs[0]] = float(step.params["radius"])
             self.program.append((run, always, frozenset(step.inputs), step))
             made.update(step.outputs)

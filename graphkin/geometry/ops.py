@@ -303,8 +303,10 @@ def angle_between(line1: ArrayLike, line2: ArrayLike) -> Array:
 def circle(center: ArrayLike, radius: ArrayLike) -> Array:
     """Circle(s) ``(cx, cy, r)`` from a finite center and a radius."""
     c = xy(center)
-    r = np.broadcast_to(_f(radius), c.shape[:-1])
-    return np.concatenate([c, r[..., None]], axis=-1)
+    r = _f(radius)
+    shape = np.broadcast_shapes(c.shape[:-1], r.shape)
+    c = np.broadcast_to(c, (*shape, 2))
+    return np.concatenate([c, np.broadcast_to(r, shape)[..., None]], axis=-1)
 
 
 def cross2(u: ArrayLike, v: ArrayLike) -> Array:

@@ -1,4 +1,4 @@
-"""DXF in and out (optional: ``pip install graphkin[dxf]``, which brings ezdxf).
+"""DXF in and out, with ezdxf (imported only when a DXF is read or written).
 
 :func:`write_dxf` writes a construction (the posture, or the velocity or
 acceleration polygon, whole or up to a step) as a drawing a student can go on
@@ -50,7 +50,8 @@ def require_ezdxf() -> Any:
     try:
         import ezdxf
     except ImportError:
-        raise InputError("DXF needs ezdxf: pip install 'graphkin[dxf]'") from None
+        raise InputError("DXF needs ezdxf, a dependency of graphkin: pip install ezdxf") \
+            from None
     return ezdxf
 
 
@@ -62,6 +63,9 @@ class DrawingData:
     ----------
     segments : list of ((x0, y0), (x1, y1))
     labels : list of (text, (x, y))
+    strokes : list of list of (x, y)
+        Polylines, paths and leaders as drawn (their collinear pieces are one
+        segment of a polygon: a tapered arrowhead continues its shaft).
     unit : str or None
         The drawing's length unit, when it says.
     scale : str or None
@@ -70,6 +74,7 @@ class DrawingData:
 
     segments: list[tuple[tuple[float, float], tuple[float, float]]] = field(default_factory=list)
     labels: list[tuple[str, tuple[float, float]]] = field(default_factory=list)
+    strokes: list[list[tuple[float, float]]] = field(default_factory=list)
     unit: str | None = None
     scale: str | None = None
 
@@ -294,14 +299,18 @@ def _clip_line(line: np.ndarray, lo: np.ndarray, hi: np.ndarray
 def read_dxf(path: str | Path) -> DrawingData:
     """Read the straight segments and text labels of a DXF drawing's model space.
 
-    LINE, LWPOLYLINE and POLYLINE give segments; TEXT and MTEXT give labels at
-    their anchor point.  A header variable ``graphkin_scale`` or a text
-    ``Scale: 1 in = 20 ft/s`` gives the drawing's scale.
+    LINE, LWPOLYLINE, POLYLINE and LEADER give segments; TEXT, MTEXT (with its
+    formatting codes and stacked sub- and superscripts read as plain letters:
+    O with a subscript V is ``OV``) and block attributes give labels at their
+    anchor point; blocks (INSERT) are read as the entities they place.  A
+    header variable ``graphkin_scale`` or a text ``Scale: 1 in = 20 ft/s``
+    gives the drawing's scale.
 
     Raises
     ------
     InputError
-        ezdxf is missing, or the file is not a readable DXF.
+        ezdxf is missing, or the file is not a readable DXF (truncated,
+        binary garbage, a coordinate that is not finite).
     """
     ezdxf = require_ezdxf()
     path = Path(path)
@@ -310,39 +319,83 @@ def read_dxf(path: str | Path) -> DrawingData:
     except OSError as exc:
         raise InputError(f"cannot read the drawing: {exc.strerror or exc}",
                          file=str(path)) from None
-    except ezdxf.DXFError as exc:
-        raise InputError(f"not a readable DXF file: {exc}", file=str(path)) from None
+    except Exception as exc:  # ezdxf raises DXFError, struct.error, ValueError... on bad files
+        raise InputError(f"not a readable DXF file: {type(exc).__name__}: {exc}"[:300],
+                         file=str(path)) from None
     data = DrawingData()
-    data.unit = _UNIT_OF_CODE.get(int(doc.header.get("$INSUNITS", 0) or 0))
-    if doc.header.custom_vars.has_tag("graphkin_scale"):
-        data.scale = doc.header.custom_vars.get("graphkin_scale")
-    for e in doc.modelspace():
-        t = e.dxftype()
-        if t == "LINE":
-            s, f = e.dxf.start, e.dxf.end
-            data.segments.append(((s.x, s.y), (f.x, f.y)))
-        elif t == "LWPOLYLINE":
-            pts = [(float(p[0]), float(p[1])) for p in e.get_points("xy")]
-            if e.closed and len(pts) > 2:
-                pts.append(pts[0])
-            data.segments += list(zip(pts, pts[1:]))
-        elif t == "POLYLINE":
-            pts = [(float(v.dxf.location.x), float(v.dxf.location.y)) for v in e.vertices]
-            if e.is_closed and len(pts) > 2:
-                pts.append(pts[0])
-            data.segments += list(zip(pts, pts[1:]))
-        elif t in ("TEXT", "MTEXT"):
-            if t == "TEXT":
-                s = e.dxf.text
-                halign, valign = e.dxf.get("halign", 0), e.dxf.get("valign", 0)
-                at = e.dxf.align_point if (halign or valign) and e.dxf.hasattr("align_point") \
-                    else e.dxf.insert
-            else:
-                s = e.plain_text()
-                at = e.dxf.insert
-            s = s.strip()
-            if s.lower().startswith("scale:"):
-                data.scale = data.scale or s.split(":", 1)[1].strip()
-            elif s:
-                data.labels.append((s, (float(at.x), float(at.y))))
+    try:
+        data.unit = _UNIT_OF_CODE.get(int(doc.header.get("$INSUNITS", 0) or 0))
+        if doc.header.custom_vars.has_tag("graphkin_scale"):
+            data.scale = doc.header.custom_vars.get("graphkin_scale")
+        count = [0]
+        for e in doc.modelspace():
+            _read_entity(e, data, 0, count)
+    except InputError:
+        raise
+    except Exception as exc:  # malformed entities
+        raise InputError(f"not a readable DXF file: {type(exc).__name__}: {exc}"[:300],
+                         file=str(path)) from None
+    for seg in data.segments:
+        if not all(math.isfinite(c) for p in seg for c in p):
+            raise InputError("not a readable DXF file: a coordinate is not finite",
+                             file=str(path))
     return data
+
+
+#: most entities read from one drawing (blocks included), and deepest block nesting
+MAX_ENTITIES = 1_000_000
+MAX_BLOCK_DEPTH = 16
+
+
+def _mtext_plain(raw: str) -> str:
+    r"""MTEXT without its formatting codes; a stack (``\\S^V;``) becomes its plain letters."""
+    import re
+
+    from ezdxf.tools.text import plain_mtext
+
+    raw = re.sub(r"\\S([^;]*);", lambda m: re.sub(r"[\^/#]", "", m.group(1)), raw)
+    return str(plain_mtext(raw))
+
+
+def _read_entity(e: Any, data: DrawingData, depth: int, count: list[int]) -> None:
+    count[0] += 1
+    if count[0] > MAX_ENTITIES:
+        raise InputError(f"the drawing has more than {MAX_ENTITIES} entities")
+    t = e.dxftype()
+    if t == "LINE":
+        s, f = e.dxf.start, e.dxf.end
+        data.segments.append(((float(s.x), float(s.y)), (float(f.x), float(f.y))))
+    elif t == "LWPOLYLINE":
+        pts = [(float(p[0]), float(p[1])) for p in e.get_points("xy")]
+        if e.closed and len(pts) > 2:
+            pts.append(pts[0])
+        data.strokes.append(pts)
+    elif t == "POLYLINE":
+        pts = [(float(v.dxf.location.x), float(v.dxf.location.y)) for v in e.vertices]
+        if e.is_closed and len(pts) > 2:
+            pts.append(pts[0])
+        data.strokes.append(pts)
+    elif t == "LEADER":
+        data.strokes.append([(float(v[0]), float(v[1])) for v in e.vertices])
+    elif t == "INSERT":
+        if depth >= MAX_BLOCK_DEPTH:
+            return
+        for sub in e.virtual_entities():
+            _read_entity(sub, data, depth + 1, count)
+        for att in e.attribs:
+            _label(att.dxf.text, att.dxf.insert, data)
+    elif t in ("TEXT", "ATTRIB"):
+        halign, valign = e.dxf.get("halign", 0), e.dxf.get("valign", 0)
+        at = e.dxf.align_point if (halign or valign) and e.dxf.hasattr("align_point") \
+            else e.dxf.insert
+        _label(e.dxf.text, at, data)
+    elif t == "MTEXT":
+        _label(_mtext_plain(e.text), e.dxf.insert, data)
+
+
+def _label(text: str, at: Any, data: DrawingData) -> None:
+    s = str(text).strip()
+    if s.lower().startswith("scale:"):
+        data.scale = data.scale or s.split(":", 1)[1].strip()
+    elif s:
+        data.labels.append((s, (float(at.x), float(at.y))))

@@ -112,6 +112,31 @@ class Solution:
     branches: dict[str, str] = field(default_factory=dict)
     values: dict[str, dict[str, np.ndarray]] = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        """A short summary: the link angles (and ω) and the diagrams (never raises).
+
+        >>> import graphkin
+        >>> graphkin.examples.fourbar().solve()  # doctest: +ELLIPSIS
+        <Solution of 'Four-bar ...' by construction: θ2 = 120°, θ3 = 20.92°, ... rad/s; ...>
+        """
+        try:
+            title = self.mechanism.title or self.mechanism.source
+            shape = np.shape(self.valid)
+            head = f"<Solution of {title!r} by {self.method}"
+            if shape:
+                return f"{head}: {shape[0]} postures ({int(np.sum(self.valid))} assembled)>"
+            moving = [k for k in self.links if k != FRAME]
+            text = ", ".join(f"θ{k} = {float(np.degrees(self.links[k].angle)):.4g}°"
+                             for k in moving)
+            if self.has_rates:
+                text += "; " + ", ".join(f"ω{k} = {float(self.links[k].omega):.4g}"  # type: ignore[arg-type]
+                                         for k in moving) + " rad/s"
+            if self.constructions:
+                text += f"; diagrams {' '.join(self.constructions)}"
+            return f"{head}: {text}>"
+        except Exception:  # a repr never raises
+            return f"<Solution at {id(self):#x}>"
+
     @property
     def has_rates(self) -> bool:
         """True when velocities (and accelerations) are known."""

@@ -1,4 +1,4 @@
-"""The mechanism as described by a mechanism file (``spec/format.md``).
+"""The mechanism as described by a mechanism file (``docs/formats/mechanism.md``).
 
 Plain frozen values: links with their points in their own coordinates, pins
 (a point name shared by links), sliders, slots, drives and rates.  Inside
@@ -13,6 +13,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.5-1.7 (links, pairs, mobility).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
+    from graphkin.kinematics.sweep.batch import Batch
     from graphkin.mechanisms.loads import Inertia, Load
     from graphkin.tolerance import Tolerance
 
@@ -236,6 +238,31 @@ class Mechanism:
         """True when the file asks for a force analysis (loads or mass properties)."""
         return bool(self.loads) or bool(self.inertia)
 
+    def __repr__(self) -> str:
+        """A short summary: title, links, pins, pairs, drives (never raises).
+
+        >>> import graphkin
+        >>> graphkin.examples.fourbar()  # doctest: +ELLIPSIS
+        <Mechanism 'Four-bar linkage ...': links 1 2 3 4, pins A D B C, drive link 2 at 120°, ...>
+        """
+        try:
+            parts = [f"links {' '.join(self.links)}"]
+            if self.pins:
+                parts.append(f"pins {' '.join(p.name for p in self.pins)}")
+            slots = [s for s in self.slots if not s.key.startswith("rolling")]
+            for what, items in (("slider", self.sliders), ("slot", slots),
+                                ("rolling contact", self.rolling)):
+                if items:
+                    parts.append(f"{len(items)} {what}{'s' if len(items) > 1 else ''}")
+            for d in self.drives:
+                at = (f"{math.degrees(d.value):.6g}°" if d.kind == "angle"
+                      else f"{d.value:.6g} {self.length_unit}")
+                parts.append(f"drive link {d.link} at {at}")
+            parts.append(f"lengths in {self.length_unit}")
+            return f"<Mechanism {self.title or self.source!r}: {', '.join(parts)}>"
+        except Exception:  # a repr never raises
+            return f"<Mechanism at {id(self):#x}>"
+
     @cached_property
     def moving(self) -> list[str]:
         """Ids of the moving links, in file order."""
@@ -334,3 +361,19 @@ class Mechanism:
         from graphkin.kinematics.sweep import sweep
 
         return sweep(self, count=count, start=start, stop=stop, **kw)
+
+    def with_dimensions(self, dimensions: Mapping[str, Any]) -> Mechanism:
+        """The mechanism with points moved in their links' coordinates (``{"links.3.C": (x, y)}``).
+
+        See :func:`graphkin.kinematics.sweep.batch.with_dimensions`.
+        """
+        from graphkin.kinematics.sweep.batch import with_dimensions
+
+        return with_dimensions(self, dimensions)
+
+    def batch(self, dimensions: Mapping[str, Any], count: int = 360, start: float | None = None,
+              stop: float | None = None, **kw: Any) -> Batch:
+        """Sweep many designs at once (dimensions as arrays); see :func:`graphkin.batch`."""
+        from graphkin.kinematics.sweep.batch import batch
+
+        return batch(self, dimensions, count=count, start=start, stop=stop, **kw)

@@ -1,4 +1,4 @@
-"""Read and validate a mechanism file (``spec/format.md``).
+"""Read and validate a mechanism file (``docs/formats/mechanism.md``).
 
 Every problem becomes an :class:`~graphkin.errors.InputError` naming the file,
 the dotted key and the reason, so the CLI can print one line and exit 2.
@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.mechanisms.loads import TOP_KEYS as _FORCE_KEYS
+from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.mechanisms.loads import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -31,17 +31,13 @@ from graphkin.units import length_factor, parse_rate
 
 __all__ = ["load", "loads", "from_dict"]
 
-_TOP_KEYS = {"title", "units", "links", "sliders", "slots", "rolling", "drive", "rates",
-             "assembly"} | _FORCE_KEYS
-
-
 def load(path: str | Path) -> Mechanism:
     """Read a mechanism file.
 
     Parameters
     ----------
     path : str or Path
-        A TOML file in the format of ``spec/format.md``.
+        A TOML file in the format of ``docs/formats/mechanism.md``.
 
     Returns
     -------
@@ -149,19 +145,12 @@ class _Parser:
     # ---- the mechanism -----------------------------------------------
     def mechanism(self) -> Mechanism:
         data = self.data
-        for k in data:
-            if k not in _TOP_KEYS:
-                # unknown top-level keys are allowed (extensions) but not misspellings of ours
-                close = [t for t in _TOP_KEYS if _similar(k, t)]
-                if close:
-                    raise self.fail(k, f"unknown key (did you mean {close[0]!r}?)")
+        check_keys(data, MECHANISM, self.source)
         title = data.get("title", "")
         if not isinstance(title, str):
             raise self.fail("title", "the title must be a string")
-        units = self.table(data.get("units", {}), "units")
-        self.unit = units.get("length", "mm")
-        if not isinstance(self.unit, str):
-            raise self.fail("units.length", "the length unit must be a string such as \"mm\"")
+        self.units = read_units(data.get("units", {}), "units", self.source)
+        self.unit = self.units.get("length", "mm")
         try:
             length_factor(self.unit)
         except ValueError as exc:
@@ -434,8 +423,11 @@ class _Parser:
         m = mech.mobility()
         n = len(mech.drives)
         if m != n:
-            raise self.fail("drive", f"wrong number of constraints: the mechanism has {m} "
-                            f"degree(s) of freedom (Kutzbach) but {n} drive(s)")
+            message = (f"wrong number of constraints: the mechanism has {m} degree(s) of "
+                       f"freedom (Kutzbach) but {n} drive(s)")
+            if m > n:
+                message += _lonely_points(mech)
+            raise self.fail("drive", message)
         for lid in mech.moving:
             link = mech.links[lid]
             slid = any(s.link == lid or s.on == lid for s in mech.sliders)
@@ -443,16 +435,27 @@ class _Parser:
                 raise self.fail(f"links.{lid}", "a moving link needs at least one point")
 
 
-def _similar(a: str, b: str) -> bool:
-    """True for a probable misspelling (one edit apart, or a plural)."""
-    if a == b:
-        return False
-    if a.rstrip("s") == b.rstrip("s"):
-        return True
-    if abs(len(a) - len(b)) > 1:
-        return False
-    # one substitution, insertion or deletion
-    i = 0
-    while i < min(len(a), len(b)) and a[i] == b[i]:
-        i += 1
-    return a[i + 1:] == b[i + 1:] or a[i:] == b[i + 1:] or a[i + 1:] == b[i:]
+
+def _lonely_points(mech: Mechanism) -> str:
+    """Name the points that appear in only one link: a misspelt pin is among them.
+
+    A pin is a point name shared by two links (docs/formats/mechanism.md), so ``Cc`` in link 4
+    where link 3 has ``C`` leaves two free ends and two more degrees of freedom.
+    """
+    owners: dict[str, list[str]] = {}
+    for lid, lk in mech.links.items():
+        for name in lk.points:
+            owners.setdefault(name, []).append(lid)
+    lonely = {name: lids[0] for name, lids in owners.items()
+              if len(lids) == 1 and name not in mech.line_points}
+    if not lonely:
+        return ""
+    listed = ", ".join(f"{name} (link {lid})" for name, lid in lonely.items())
+    text = f"; points named in only one link: {listed}"
+    for name, lid in lonely.items():
+        guess = nearest(name, [o for o, olid in lonely.items() if olid != lid])
+        if guess is not None:
+            text += (f"; {name!r} (link {lid}) and {guess!r} (link {lonely[guess]}) look "
+                     "alike: is a pin misspelt?")
+            break
+    return text

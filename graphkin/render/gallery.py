@@ -310,12 +310,13 @@ def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:
     import matplotlib
 
     import graphkin
+    from graphkin.progress import track
 
     entries = discover(root)
     files: dict[str, bytes] = {}
     results: dict[str, dict[str, Any]] = {}
     names: dict[str, list[str]] = {}
-    for e in entries:
+    for e in track(entries, "gallery", unit="figure"):
         drawings, info = _render(e)
         for k, v in _from_title(info["title"] or "").items():
             e.meta.setdefault(k, v)

@@ -143,6 +143,23 @@ class Drawing(dict[str, Artist]):
         self.texts: dict[str, Text] = {}
         self.groups: dict[str, StepGroup] = {}
         self.sheet: Sheet | None = None
+        self.own_figure = False  # True when draw() made the figure (no ``ax`` given)
+
+    def __repr__(self) -> str:
+        """A short summary instead of every artist (never raises)."""
+        try:
+            panels = " ".join(p.name for p in self.sheet.panels) if self.sheet else "?"
+            return f"<Drawing {panels}: {len(self)} labelled artists, {len(self.groups)} steps>"
+        except Exception:
+            return f"<Drawing at {id(self):#x}>"
+
+    def _repr_svg_(self) -> str | None:
+        """Jupyter: ``sol.draw("velocity")`` shows itself (a figure of your own shows itself)."""
+        if not self.own_figure or self.figure is None:
+            return None
+        from graphkin.render.svg import to_bytes
+
+        return to_bytes(self.figure).decode("utf-8")
 
 
 def _style(it: Item, highlight: bool) -> dict[str, Any]:
@@ -265,6 +282,7 @@ def render_sheet(sheet: Sheet) -> Drawing:
         fig = Figure(figsize=sheet.size)
         drawing = Drawing()
         drawing.figure = fig
+        drawing.own_figure = True
         drawing.sheet = sheet
         if sheet.title:
             t = fig.text(0.5 * 0.0 + 0.12 / sheet.size[0], 1 - 0.22 / sheet.size[1], sheet.title,

@@ -16,6 +16,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from graphkin.text import fmt, fmt_angle
+
 __all__ = ["NICE", "nice_ceil", "paper_unit", "Scale", "choose_scale", "quantity_unit", "fmt",
            "fmt_angle", "CM"]
 
@@ -156,42 +158,3 @@ def choose_scale(extent: float, max_inches: float, paper: str, unit: str) -> Sca
         value = nice_ceil(need / factor)
     return Scale(per_inch=value * factor / paper_in, paper=paper, value=value, unit=shown,
                  factor=factor)
-
-
-def fmt(x: float, digits: int = 5) -> str:
-    """A number with about ``digits`` significant digits, without exponent when reasonable.
-
-    Examples
-    --------
-    >>> fmt(25.38276), fmt(-1819.361), fmt(3250000.0), fmt(0.0), fmt(1e-14)
-    ('25.383', '-1819.4', '3250000', '0', '1e-14')
-    """
-    x = float(x)
-    if not math.isfinite(x):
-        return "—"
-    if x == 0:
-        return "0"
-    ax = abs(x)
-    if ax >= 1e9 or ax < 1e-4:
-        return f"{x:.{max(digits - 3, 1)}g}".replace("e-0", "e-").replace("e+0", "e")
-    decimals = max(digits - 1 - math.floor(math.log10(ax)), 0)
-    s = f"{x:.{decimals}f}"
-    if "." in s:
-        s = s.rstrip("0").rstrip(".")
-    return "0" if s in ("-0", "") else s
-
-
-def fmt_angle(rad: float) -> str:
-    """An angle in degrees in (-180, 180] with two decimals: ``∠154.05°``.
-
-    Examples
-    --------
-    >>> fmt_angle(math.pi)
-    '∠180.00°'
-    """
-    d = math.degrees(rad) % 360.0
-    if d > 180.0:
-        d -= 360.0
-    if abs(d) < 0.005:
-        d = 0.0
-    return f"∠{d:.2f}°"

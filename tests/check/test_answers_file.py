@@ -79,7 +79,7 @@ theta3 = "20.9°"
     g = {x.key.text: x for x in ans.given}
     assert g["omega3"].value == pytest.approx(25.6) and g["omega3"].signed
     assert g["omega4"].value == -49.6 and g["omega4"].signed       # a minus sign is cw
-    assert g["alpha3"].value == 113 and not g["alpha3"].signed     # no sense: magnitude only
+    assert g["alpha3"].value == 113 and g["alpha3"].signed         # a number is signed (ccw +)
     assert g["V_E"].value == pytest.approx(27.6 * 12) and g["V_E"].direction == 165.3
     assert g["V_E"].unit == "ft/s" and g["V_E"].factor == pytest.approx(12)
     assert g["V_B"].direction == pytest.approx(math.degrees(math.atan2(-188.5, -326.5)))
@@ -106,8 +106,8 @@ def _run(tmp_path: Path, examples: Path, text: str, capsys: pytest.CaptureFixtur
     ("omega3 = true", "omega3"),
     ("I13 = [1, 2, 3]", "I13"),
     ("I13 = \"somewhere\"", "I13"),
-    ("tolerance = { relative = -1 }\nomega3 = 2", "tolerance.relative"),
-    ("tolerance = { percent = 2 }\nomega3 = 2", "tolerance"),
+    ("tolerance = { relative = -1 }", "tolerance.relative"),
+    ("tolerance = { percent = 2 }", "tolerance.percent"),
     ("student = \"x\"", "no answers"),
     ("[V_E]\nx = 1", "V_E"),
 ])
@@ -133,3 +133,48 @@ def test_rates_needed(tmp_path: Path, examples: Path, capsys: pytest.CaptureFixt
     f.write_text("omega3 = 2\n")
     assert main(["check", str(examples / "ex2_5_open.toml"), str(f)]) == 2
     assert "no rates" in capsys.readouterr().err
+
+
+# ---- a class of forty: one bad entry costs one answer -----------------------------------
+
+@pytest.mark.parametrize(("text", "key", "words"), [
+    # Example 3.1: ω3 = 25.38 rad/s ccw (analytic), so omega3 is right and marked
+    ('V_X = 3\nomega3 = "25.4 rad/s ccw"', "V_X", "did you mean"),
+    ('tolerance = { percent = 2 }\nomega3 = "25.4 rad/s ccw"', "tolerance.percent",
+     "valid: relative, angle, drawing, scale"),
+    ('tolerance = { relative = -1 }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
+     "positive"),
+    ('omgea3 = 2\nomega3 = "25.4 rad/s ccw"', "omgea3", "did you mean 'omega3'"),
+])
+def test_bad_entry_is_reported_and_the_rest_marked(tmp_path: Path, examples: Path, text: str,
+                                                   key: str, words: str,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = _run(tmp_path, examples, text, capsys)
+    assert code == 2                                   # answers.md: 2 = unreadable
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "answers.toml" in lines[0] and key in lines[0]
+    assert words in lines[0]
+    assert "Traceback" not in err
+    row = next(line for line in out.splitlines() if line.startswith("omega3"))
+    assert " ok " in row                               # the rest is still marked
+    assert "UNREADABLE" in out and "1 unreadable" in out
+
+
+def test_invalid_toml_in_a_class_gives_a_row_with_the_student(tmp_path: Path, examples: Path,
+                                                               capsys: pytest.CaptureFixture[str]
+                                                               ) -> None:
+    import csv
+    import io
+
+    bad = tmp_path / "bad.toml"
+    bad.write_text('student = "B. Student"\nω3 = 25.4\n', encoding="utf-8")  # unquoted ω
+    good = tmp_path / "good.toml"
+    good.write_text('student = "C. Student"\nomega3 = 25.4\n', encoding="utf-8")
+    code = main(["check", str(examples / "ex3_1_fourbar.toml"), str(bad), str(good), "--csv",
+                 "-", "--quiet"])
+    out = capsys.readouterr().out
+    assert code == 2
+    rows = list(csv.DictReader(io.StringIO(out[out.index("file,"):])))
+    assert rows[0]["student"] == "B. Student" and rows[0]["status"] == "unreadable"
+    assert "not valid TOML" in rows[0]["summary"]
+    assert rows[1]["student"] == "C. Student" and rows[1]["status"] == "ok"

@@ -114,7 +114,7 @@ def test_svg_fitted_to_the_crank_and_flipped_image_named(fourbar: Path, tmp_path
     svg.write_text(_svg(pts, None))
     rep = check_drawing(mech.solve(), svg)
     rows = {r.key: r for r in rep.rows}
-    assert rows["V_B"].verdict == "fit"
+    assert rows["V_B"].verdict == "ok"       # fitted by least squares over b, c, f
     assert rows["V_C"].verdict == "ok" and rows["V_F"].verdict == "ok"
     assert rows["V_E"].verdict == "WRONG" and rows["V_E"].mistake.kind == "flipped"
     assert "turned +30.00°" not in rep.title  # the fit turns the drawing back by -30°
@@ -135,7 +135,7 @@ def test_svg_with_stated_scale(fourbar: Path, tmp_path: Path,
     # the same scale noted on the drawing itself
     svg.write_text(_svg(dict(pts), "1 in = 20 ft/s"))
     assert main(["check", str(fourbar), "--drawing", str(svg)]) == 0
-    assert "(scale 1 in = 20 ft/s)" in capsys.readouterr().out
+    assert "(scale 1 in = 20 ft/s, not turned)" in capsys.readouterr().out
     # a wrong stated scale: every vector twice too long or too short
     assert main(["check", str(fourbar), "--drawing", str(svg), "--scale", "1 in = 40 ft/s"]) == 1
     capsys.readouterr()
@@ -160,7 +160,9 @@ def test_batch_csv(fourbar: Path, tmp_path: Path, capsys: pytest.CaptureFixture[
         ("the textbook", "ok", "11", "11")
     assert (two["status"], two["answers"], two["within_tolerance"]) == ("wrong", "3", "1")
     assert two["omega4"] == "WRONG" and two["omega3"] == "ok" and two["V_E"] == "WRONG"
-    assert "sense reversed" in two["mistakes"] and "factor of 12" in two["mistakes"]
+    assert two["omega4 mistake"] == "sense" and two["V_E mistake"] == "unit:12"
+    assert two["omega4 given"] == "49.64 rad/s cw" and "ccw" in two["omega4 exact"]
+    assert two["summary"] == "1 of 3 within tolerance, 2 wrong (omega4: sense; V_E: unit:12)."
     assert broken["status"].startswith("unreadable")
     # without the broken file the worst is a wrong answer: exit 1
     assert main(["check", str(fourbar), *files[:2], "--csv", str(marks), "--quiet"]) == 1

@@ -262,7 +262,7 @@ def test_no_hint_when_nothing_explains_it(fourbar: Path) -> None:
     assert row.verdict == "WRONG" and row.mistake is None
 
 
-# ---- instant centers and curvature (values of spec/examples/expected.toml) -----------
+# ---- instant centers and curvature (values of tests/data/spec/expected.toml) -----------
 
 def test_instant_center_and_radius_of_curvature(fourbar: Path) -> None:
     rep = _report(fourbar, 'I13 = [5.43, -9.40]\nI24 = [-11.06, 0]\nrho_E = "4.32 in"\n'

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -23,22 +22,36 @@ from graphkin.geometry import ops as g
 from graphkin.tolerance import Tolerance
 
 
+def _pair(v: Any) -> tuple[Any, Any]:
+    """A constant pair: two floats, or two arrays for a batch of designs (shape ``(M, 1, 2)``)."""
+    a = np.asarray(v, dtype=float)
+    if a.ndim == 1:
+        return float(a[0]), float(a[1])
+    return a[..., 0], a[..., 1]
+
+
+def _num(v: Any) -> Any:
+    """A constant number: a float, or an array for a batch of designs (shape ``(M, 1)``)."""
+    a = np.asarray(v, dtype=float)
+    return float(a) if a.ndim == 0 else a
+
+
 @kernel("rigid")
 def _k_rigid(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     p, th = step.inputs
     (out,) = step.outputs
-    d0, d1 = (float(v) for v in np.subtract(step.params["local_q"], step.params["local_p"]))
+    d0, d1 = _pair(np.subtract(step.params["local_q"], step.params["local_p"]))
     offset = float(step.params.get("offset", 0.0))
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(p)
         c, s = rt.cs(th, offset)
-        x, y = rt.new_point(out, _shape(ax, c))
+        x, y = rt.new_point(out, _shape(ax, c, d0))
         # Q = P + R(θ) d: the rotation (c d0 - s d1, s d0 + c d1); a zero component drops out
-        if d1 == 0.0:
+        if _zero(d1):
             np.multiply(c, d0, out=x)
             np.multiply(s, d0, out=y)
-        elif d0 == 0.0:
+        elif _zero(d0):
             np.multiply(s, -d1, out=x)
             np.multiply(c, d1, out=y)
         else:
@@ -54,11 +67,11 @@ def _k_rigid(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
 def _k_circle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     (center,) = step.inputs
     (out,) = step.outputs
-    r = float(step.params["radius"])
+    r = _num(step.params["radius"])
 
     def run(rt: Runtime) -> None:
         x, y = rt.P(center)
-        cx, cy, cr, _ = rt.new_rows(out, 3, _shape(x, y), center=True)
+        cx, cy, cr, _ = rt.new_rows(out, 3, _shape(x, y, r), center=True)
         cx[...] = x
         cy[...] = y
         cr[...] = r
@@ -156,9 +169,9 @@ def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
 def _k_link_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     a, b = step.inputs
     (out,) = step.outputs
-    dl = np.subtract(step.params["local_b"], step.params["local_a"])
-    phi = float(np.arctan2(dl[1], dl[0]))
-    cphi, sphi = math.cos(phi), math.sin(phi)
+    dl0, dl1 = _pair(np.subtract(step.params["local_b"], step.params["local_a"]))
+    phi = _num(np.arctan2(dl1, dl0))
+    cphi, sphi = _num(np.cos(phi)), _num(np.sin(phi))
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
@@ -166,14 +179,14 @@ def _k_link_angle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
         dx = bx if _zero(ax) else bx - ax
         dy = by if _zero(ay) else by - ay
         t = np.arctan2(dy, dx)
-        rt.put(out, t - phi if phi != 0.0 else t)
+        rt.put(out, t if _zero(phi) else t - phi)
         # the direction AB gives cos and sin of the line's angle (not where A == B,
         # whose angle atan2 takes as 0)
         n = np.sqrt(dx * dx + dy * dy)
         if _vmin(n) > 0.0:
             c = dx / n
             s = dy / n
-            if phi != 0.0:
+            if not _zero(phi):
                 c, s = c * cphi + s * sphi, s * cphi - c * sphi
             rt.trig[out] = (c, s)
 
@@ -375,22 +388,23 @@ def _k_similar(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel | None:
     la = np.asarray(step.params["local_a"], dtype=float)
     lb = np.asarray(step.params["local_b"], dtype=float)
     lp = np.asarray(step.params["local_p"], dtype=float)
-    if la.shape != (2,) or lb.shape != (2,) or lp.shape != (2,):
+    if la.shape[-1:] != (2,) or lb.shape[-1:] != (2,) or lp.shape[-1:] != (2,):
         return None
     zr, zp = lb - la, lp - la
-    den = zr[0] ** 2 + zr[1] ** 2
-    if den == 0.0:
+    den = zr[..., 0] ** 2 + zr[..., 1] ** 2
+    if not np.all(den != 0.0):
         return None
     # p = a + (b - a) q with the complex ratio q = (P - A) / (B - A) of the link
-    qr = float((zp[0] * zr[0] + zp[1] * zr[1]) / den)
-    qi = float((zp[1] * zr[0] - zp[0] * zr[1]) / den)
+    # (arrays of shape (M, 1) for a batch of designs)
+    qr = _num((zp[..., 0] * zr[..., 0] + zp[..., 1] * zr[..., 1]) / den)
+    qi = _num((zp[..., 1] * zr[..., 0] - zp[..., 0] * zr[..., 1]) / den)
 
     def run(rt: Runtime) -> None:
         ax, ay = rt.P(a)
         bx, by = rt.P(b)
         d0 = bx if _zero(ax) else bx - ax
         d1 = by if _zero(ay) else by - ay
-        x, y = rt.new_point(out, _shape(d0, ax))
+        x, y = rt.new_point(out, _shape(d0, ax, qr))
         np.subtract(d0 * qr, d1 * qi, out=x)
         np.add(d0 * qi, d1 * qr, out=y)
         np.add(x, ax, out=x)

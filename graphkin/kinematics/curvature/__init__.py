@@ -142,6 +142,8 @@ array([-2., -3.])
 
 from __future__ import annotations
 
+from typing import Any
+
 from graphkin.kinematics.curvature.bresse import bresse_pole
 from graphkin.kinematics.curvature.centrodes import centrode_radii
 from graphkin.kinematics.curvature.conjugates import known_conjugates
@@ -164,7 +166,6 @@ from graphkin.kinematics.curvature.link import (
     path_curvatures,
 )
 from graphkin.kinematics.curvature.paths import PathCurvature, path_curvature
-from graphkin.kinematics.curvature.report import curvature_json, curvature_text, paths_json
 
 __all__ = ["Cubic", "LinkCurvature", "PathCurvature", "euler_savary", "inflection_points_on_ray",
            "radius_of_curvature", "inflection_pole", "pole_velocity", "acceleration_center",
@@ -172,3 +173,19 @@ __all__ = ["Cubic", "LinkCurvature", "PathCurvature", "euler_savary", "inflectio
            "path_curvature", "known_conjugates", "link_curvature", "curvature",
            "curvature_constructions", "path_curvatures", "curvature_json", "paths_json",
            "curvature_text"]
+
+
+_REPORTS = ("curvature_json", "paths_json", "curvature_text")
+
+
+def __getattr__(name: str) -> Any:
+    """The report functions, which live in :mod:`graphkin.output.curvature` (the output layer).
+
+    Imported on first use, so that loading the kinematics does not load the
+    output layer above it; the old import path keeps working.
+    """
+    if name in _REPORTS:
+        import importlib
+
+        return getattr(importlib.import_module("graphkin.output.curvature"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -91,6 +91,8 @@ I13 lies on the line I12-I23 and on the line I14-I34 (Kennedy).
 
 from __future__ import annotations
 
+from typing import Any
+
 from graphkin.kinematics.instant_centers.centers import (
     Center,
     How,
@@ -109,9 +111,24 @@ from graphkin.kinematics.instant_centers.ratios import (
     kinematic_coefficient,
     mechanical_advantage,
 )
-from graphkin.kinematics.instant_centers.report import instant_centers_json, instant_centers_text
 
 __all__ = ["How", "Center", "InstantCenters", "KnownCenter", "KnownLine", "LineOfCentersVelocity",
            "center_label", "pair_key", "sort_links", "instant_centers", "instant_center",
            "angular_velocity_ratio", "kinematic_coefficient", "mechanical_advantage",
            "line_of_centers_velocity", "instant_centers_json", "instant_centers_text"]
+
+
+_REPORTS = ("instant_centers_json", "instant_centers_text")
+
+
+def __getattr__(name: str) -> Any:
+    """The report functions, which live in :mod:`graphkin.output.centers` (the output layer).
+
+    Imported on first use, so that loading the kinematics does not load the
+    output layer above it; the old import path keeps working.
+    """
+    if name in _REPORTS:
+        import importlib
+
+        return getattr(importlib.import_module("graphkin.output.centers"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -36,7 +36,7 @@ Modules
 ``engine``
     The constructions of one mechanism, built once, replayed on arrays.
 ``columns``
-    The CSV columns of ``spec/sweep.md`` read from an evaluated block.
+    The CSV columns of ``docs/formats/sweep-csv.md`` read from an evaluated block.
 ``run``
     :func:`sweep` itself: drive values, blocks, the :class:`Sweep`.
 ``drive_range``

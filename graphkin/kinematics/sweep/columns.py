@@ -1,4 +1,4 @@
-"""The CSV columns of ``spec/sweep.md`` read from an evaluated block of postures.
+"""The CSV columns of ``docs/formats/sweep-csv.md`` read from an evaluated block of postures.
 
 References
 ----------
@@ -18,27 +18,9 @@ from graphkin.kinematics.solution import Solution
 from graphkin.kinematics.solve import link_states
 from graphkin.kinematics.sweep.engine import _Block, _Engine
 from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.text import wrap_degrees
 
 Array = np.ndarray
-
-
-def wrap_degrees(rad: Any) -> Array:
-    """Angles (rad) as degrees in (-180, 180], element by element, as ``solve`` prints them.
-
-    References
-    ----------
-    Uicker, Pennock & Shigley, 5th ed., Sec. 2.2 (angles measured counterclockwise from +x).
-
-    Examples
-    --------
-    >>> wrap_degrees(np.array([np.pi, -np.pi, 3 * np.pi / 2, 0.25]))
-    array([180.        , 180.        , -90.        ,  14.32394488])
-    """
-    d = np.degrees(np.asarray(rad, dtype=float))
-    # d - 360 k with k = ceil((d - 180) / 360): the turn that brings d into (-180, 180]
-    k = np.ceil((d - 180.0) * (1.0 / 360.0))
-    d -= 360.0 * k
-    return d
 
 
 def _xy_rows(a: Any, n: int, unit: bool) -> tuple[Array, Array]:
@@ -99,7 +81,7 @@ def _recipe(eng: _Engine) -> list[tuple[str, str, int, str, int]] | None:
 
 
 def _columns(eng: _Engine, blk: _Block) -> dict[str, Array]:
-    """The columns of ``spec/sweep.md`` for one block."""
+    """The columns of ``docs/formats/sweep-csv.md`` for one block."""
     mech = eng.mech
     dv = blk.dv
     n = len(dv)

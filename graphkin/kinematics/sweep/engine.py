@@ -44,6 +44,8 @@ class _Engine:
         self.combined: Construction | None = None
         self.recipe: Any = False
         self.const_rows: dict[tuple[str, int], float] = {}
+        #: what later sweeps reuse (the resolved Kennedy search, ...), keyed by what it depends on
+        self.extras: dict[Any, Any] = {}
         if mech.rolling:
             # away from the file's drive a roller's angle follows its travel (the no-slip
             # condition integrated), which no ruler-and-compass step gives

@@ -9,17 +9,22 @@ Secs. 4.14-4.15 (radius of curvature, Eq. 4.49; inflection circle).
 
 from __future__ import annotations
 
+import dataclasses
+from typing import Any
+
 import numpy as np
 
+from graphkin.construction import Construction
 from graphkin.errors import InputError
 from graphkin.geometry import ops as g
 from graphkin.kinematics.polygons import build_polygons
-from graphkin.kinematics.solution import Solution
+from graphkin.kinematics.solution import LinkState, Solution
 from graphkin.kinematics.sweep.columns import _concat_solutions, _solution_of_block
 from graphkin.kinematics.sweep.engine import _Block, _dyads
 from graphkin.kinematics.sweep.four_bar import fourbar, transmission_angle
 from graphkin.kinematics.sweep.report import Sweep
 from graphkin.mechanisms.model import FRAME
+from graphkin.tolerance import DEFAULT_TOL
 
 Array = np.ndarray
 
@@ -54,24 +59,98 @@ def _transmission_columns(sw: Sweep) -> dict[str, Array]:
     return out
 
 
+#: Postures the Kennedy search is resolved on (evenly spaced over the sweep's assembled ones).
+KENNEDY_SAMPLE = 64
+
+
+def _take(sol: Solution, idx: Array) -> Solution:
+    """The postures ``idx`` of a swept solution."""
+    def cut(a: Any) -> Any:
+        return None if a is None else np.asarray(a)[idx]
+
+    links = {lid: LinkState(cut(st.angle), cut(st.origin), cut(st.omega), cut(st.alpha),
+                            cut(st.origin_velocity), cut(st.origin_acceleration))
+             for lid, st in sol.links.items()}
+    return dataclasses.replace(sol, links=links, valid=np.ones(len(idx), dtype=bool),
+                               values={})
+
+
+def _kennedy_replay(sw: Sweep, sol: Solution) -> tuple[Construction, list[str]] | None:
+    """The Kennedy search of a sweep, resolved once: the steps after the primary centers.
+
+    The search (which lines of centers meet at each center) is run on a
+    sample of the sweep's postures and kept on the engine; the sweep then
+    replays its steps on the whole arrays.  Returns the steps to replay and
+    the centers' labels in order of discovery (None when nothing assembles).
+    """
+    from graphkin.kinematics.instant_centers.kennedy import _Kennedy, instant_centers
+
+    eng = sw._engine
+    key = ("kennedy", float(sw.values[0]), float(sw.values[-1]), len(sw))
+    cache = eng.extras if eng is not None else {}
+    hit = cache.get(key)
+    if hit is not None:
+        return hit
+    ok = np.flatnonzero(sw.valid if sol.has_rates else sw.assembled)
+    if ok.size == 0:
+        return None
+    idx = ok[np.unique(np.linspace(0, ok.size - 1, min(KENNEDY_SAMPLE, ok.size)).astype(int))]
+    sample = _take(sol, idx)
+    head = _Kennedy(sample, DEFAULT_TOL, ())
+    head.primary()  # the search records these steps first, then its own
+    ic = instant_centers(sample)
+    steps = Construction(title=ic.construction.title)
+    for s in ic.construction.steps[len(head.cx):]:
+        if s.op == "homogeneous_point":  # found from the velocities: given per posture
+            steps.add("input", (), s.outputs, name=s.outputs[0], diagram=s.diagram)
+        else:
+            steps.steps.append(dataclasses.replace(s, index=len(steps.steps)))
+    hit = (steps, [c.label for c in ic.centers.values()])
+    cache[key] = hit
+    return hit
+
+
 def _center_columns(sw: Sweep) -> dict[str, Array]:
+    """Every instant center over the sweep: the Kennedy search resolved once, replayed on arrays.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Secs. 3.12-3.14 (Kennedy's theorem).
+    """
     try:
-        from graphkin.kinematics.instant_centers import instant_centers
+        from graphkin.kinematics.instant_centers.kennedy import _equal_velocity_point, _Kennedy
+        from graphkin.kinematics.instant_centers.labels import _parse_pair
     except ImportError:
         return {}
     sol = sw.solution
     if not sol.has_rates:
         sol = _with_unit_rates(sw)
-    ic = instant_centers(sol)
+    plan = _kennedy_replay(sw, sol)
+    if plan is None:
+        return {}
+    steps, labels = plan
+    # the primary centers (pins, sliders, contacts, slot normals) on the whole arrays
+    kn = _Kennedy(sol, DEFAULT_TOL, ())
+    kn.primary()
+    env = dict(kn.env)
+    given: dict[str, Any] = {}
+    for s in steps:
+        if s.op == "input":
+            i, j = _parse_pair(s.outputs[0])
+            given[s.outputs[0]] = _equal_velocity_point(sol, i, j, sw.mechanism.scale,
+                                                        DEFAULT_TOL)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        ev = steps.evaluate(given, values=env, strict=False)
     out: dict[str, Array] = {}
     n = len(sw)
-    for c in ic:
-        p = np.asarray(c.point, dtype=float)
+    for name in labels:
+        if name not in ev.values:
+            continue
+        p = np.asarray(ev.values[name], dtype=float)
         p = np.broadcast_to(p, (n, 3)) if p.ndim == 1 else p
         ideal = p[:, 2] == 0.0
         with np.errstate(invalid="ignore", divide="ignore"):
             xy = g.xy(p)
-        name = c.label
         x, y = xy[:, 0].copy(), xy[:, 1].copy()
         x[~sw.assembled] = np.nan
         y[~sw.assembled] = np.nan
@@ -100,44 +179,63 @@ def _with_unit_rates(sw: Sweep) -> Solution:
 
 
 def _curvature_columns(sw: Sweep) -> dict[str, Array]:
+    """Curvature of every moving point's path and every moving link's inflection circle and Γ.
+
+    Read from the swept columns (positions, velocities and accelerations of
+    the named points, ω and α of the links: the polygons' results), with no
+    second pass through the link states: per link, from any point ``P`` of it,
+    the velocity pole ``I = P + k × V_P / ω`` (Sec. 3.13), the acceleration
+    of the link's point at ``I``, ``A_I = A_P + α k × R_IP - ω² R_IP`` (Eq. 4.5),
+    the inflection pole ``J = I + A_I / ω²`` (Eqs. 4.46-4.47) and the center of
+    acceleration Γ (Eqs. 4.44-4.45); per point, ``ρ = V² / A^n`` (Eq. 4.49).
+    """
     try:
-        from graphkin.kinematics.curvature import inflection_pole, path_curvature
+        from graphkin.kinematics.curvature import (
+            acceleration_center,
+            inflection_pole,
+            path_curvature,
+        )
     except ImportError:
         return {}
     mech = sw.mechanism
     if not mech.has_rates:
         return {}
-    sol = sw.solution
+    cols = sw.columns
     out: dict[str, Array] = {}
-    n = len(sw)
+
+    def pt(name: str, kind: str = "") -> Array:
+        return np.stack([cols[f"{kind}x_{name}"], cols[f"{kind}y_{name}"]], axis=-1)
+
+    def clean(arr: Array, bad: Array) -> Array:
+        arr = np.array(arr, dtype=float)
+        arr[bad | ~np.isfinite(arr)] = np.nan
+        return arr
+
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for lid in mech.moving:
-            st = sol.links[lid]
-            w = np.broadcast_to(np.asarray(st.omega, dtype=float), (n,))
-            # the velocity pole: V_O + ω k × (I - O) = 0, so I = O + k × V_O / ω
-            vo = np.asarray(st.origin_velocity, dtype=float)
-            pole = np.asarray(st.origin) + np.stack([-vo[:, 1], vo[:, 0]], axis=-1) / w[:, None]
-            c, s = np.cos(st.angle), np.sin(st.angle)
-            r = pole - st.origin
-            local = np.stack([c * r[:, 0] + s * r[:, 1], -s * r[:, 0] + c * r[:, 1]], axis=-1)
-            a_pole = st.acceleration(local)
+            name = next(iter(mech.links[lid].points))
+            p, v, a = pt(name), pt(name, "v"), pt(name, "a")
+            w, al = cols[f"omega_{lid}"], cols[f"alpha_{lid}"]
+            pole = p + np.stack([-v[:, 1], v[:, 0]], axis=-1) / w[:, None]
+            r = pole - p
+            a_pole = a + al[:, None] * np.stack([-r[:, 1], r[:, 0]], axis=-1) - \
+                (w * w)[:, None] * r
             j = inflection_pole(pole, a_pole, w)
-            dia = np.hypot(*(j - pole).T)
+            dia = np.hypot(j[:, 0] - pole[:, 0], j[:, 1] - pole[:, 1])
+            gamma = acceleration_center(p, a, w, al)
             bad = ~sw.valid | (w == 0.0)
-            for arr in (j[:, 0], j[:, 1], dia):
-                arr[bad | ~np.isfinite(arr)] = np.nan
-            out[f"jx_{lid}"], out[f"jy_{lid}"] = j[:, 0], j[:, 1]
-            out[f"inflection_diameter_{lid}"] = dia
+            out[f"jx_{lid}"], out[f"jy_{lid}"] = clean(j[:, 0], bad), clean(j[:, 1], bad)
+            out[f"inflection_diameter_{lid}"] = clean(dia, bad)
+            bad_g = ~sw.valid | ((w == 0.0) & (al == 0.0))
+            out[f"gx_{lid}"], out[f"gy_{lid}"] = clean(gamma[:, 0], bad_g), \
+                clean(gamma[:, 1], bad_g)
         for name in mech.point_names:
-            if sol.owner(name) == FRAME:
+            if FRAME in mech.point_links[name]:
                 continue
-            rho, center = path_curvature(sol.position(name), sol.velocity(name),
-                                         sol.acceleration(name))
-            rho = np.array(np.broadcast_to(rho, (n,)), dtype=float)
-            center = np.array(np.broadcast_to(center, (n, 2)), dtype=float)
+            rho, center = path_curvature(pt(name), pt(name, "v"), pt(name, "a"))
             bad = ~sw.valid | ~np.isfinite(rho)
-            rho[bad] = np.nan
-            center[bad | ~np.isfinite(center).all(axis=-1)] = np.nan
-            out[f"rho_{name}"] = rho
-            out[f"cx_{name}"], out[f"cy_{name}"] = center[:, 0], center[:, 1]
+            out[f"rho_{name}"] = clean(rho, bad)
+            bad_c = bad | ~np.isfinite(center).all(axis=-1)
+            out[f"cx_{name}"], out[f"cy_{name}"] = clean(center[:, 0], bad_c), \
+                clean(center[:, 1], bad_c)
     return out

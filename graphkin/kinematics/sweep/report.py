@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import IO, Any
@@ -38,7 +39,7 @@ class Sweep:
     values : ndarray, shape (N,)
         The drive values: radians for an angle, the file's length unit for a slider.
     columns : dict
-        CSV column name (``spec/sweep.md``) -> 1-D array of length N; NaN
+        CSV column name (``docs/formats/sweep-csv.md``) -> 1-D array of length N; NaN
         where the posture cannot be assembled (and, for the rates only,
         where they are not defined).
     valid : ndarray of bool
@@ -151,13 +152,19 @@ class Sweep:
                 out.append(s.note)
         return out
 
-    def to_csv(self, file: str | IO[str]) -> None:
-        """Write the columns as CSV: one row per posture; empty cells where not defined."""
+    def to_csv(self, file: str | IO[str], *, columns: dict[str, Array] | None = None,
+               units_row: Sequence[str] | None = None) -> None:
+        """Write the columns as CSV: one row per posture; empty cells where not defined.
+
+        ``columns`` replaces :attr:`columns` (the same columns in other units,
+        :func:`graphkin.output.csv.convert_columns`); ``units_row`` is written
+        as a second header line, one unit per column.
+        """
         if isinstance(file, str):
             with open(file, "w", newline="", encoding="utf-8") as fh:
-                self._write(fh)
+                self._write(fh, columns, units_row)
         else:
-            self._write(file)
+            self._write(file, columns, units_row)
 
     def csv_text(self) -> str:
         """The CSV as a string."""
@@ -165,13 +172,17 @@ class Sweep:
         self._write(buf)
         return buf.getvalue()
 
-    def _write(self, fh: IO[str]) -> None:
+    def _write(self, fh: IO[str], columns: dict[str, Array] | None = None,
+               units_row: Sequence[str] | None = None) -> None:
+        columns = self.columns if columns is None else columns
         w = csv.writer(fh, lineterminator="\n")
-        names = list(self.columns)
+        names = list(columns)
         w.writerow(names)
+        if units_row is not None:
+            w.writerow(units_row)
         cols = []
         for name in names:
-            c = np.asarray(self.columns[name], dtype=float)
+            c = np.asarray(columns[name], dtype=float)
             lst: list[Any] = c.tolist()
             if not np.isfinite(c).all():
                 lst = ["" if not math.isfinite(v) else v for v in lst]

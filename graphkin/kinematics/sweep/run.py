@@ -146,15 +146,19 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         blocks.append(blk)
         cols = _columns(eng, blk)
     else:
-        parts = []
+        # blocks small enough for the cache, written straight into the columns
+        cols = {}
         for i in range(0, count, BLOCK):
             blk = eng.solve(dv[i:i + BLOCK])
             blk.user = user[i:i + BLOCK]
             blocks.append(blk)
-            parts.append(_columns(eng, blk))
+            part = _columns(eng, blk)
+            if not cols:
+                cols = {k: np.empty(count) for k in part}
+            for k, v in part.items():
+                cols[k][i:i + BLOCK] = v
             if progress is not None:
                 progress(min(1.0, (i + BLOCK) / count))
-        cols = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
     if len(blocks) == 1:
         valid, assembled = _valid_of(blocks[0]), _assembled_of(blocks[0])
     else:

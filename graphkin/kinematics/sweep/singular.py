@@ -158,6 +158,10 @@ def _singular(sw: Sweep) -> list[SingularPosture]:
         out.extend(_change_points(sw, eng))
         # ---- limit positions of the links pinned to the frame ----------------
         out.extend(_limits(sw, eng))
+        # ---- sliders: where a slider on the frame stops and turns back (Sec. 1.10),
+        #      and a slider drive's dead centers at the ends of its travel ------------
+        out.extend(_slider_limits(sw, eng))
+        out.extend(_travel_ends(sw, eng))
     out.sort(key=lambda s: (s.drive, s.kind))
     return out
 
@@ -341,4 +345,105 @@ def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
                 "limit", u, None, lid,
                 f"limit position of link {lid} (ω{lid} = 0) at drive {_fmt(eng, u)}, "
                 f"θ{lid} = {float(wrap_degrees(np.array([ti]))[0]):.2f}°"))
+    return out
+
+
+def _slider_limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
+    """Where a slider on the frame stops and turns back (its velocity along the line is 0).
+
+    For a slider-crank driven by its crank these are the slider's two limit
+    positions, with crank and connecting rod in line (the dead-center
+    postures of Sec. 1.10); for a quick-return mechanism, the ends of the
+    ram's stroke.
+    """
+    assert eng.pc is not None
+    mech = eng.mech
+    sliders = [s for s in mech.sliders if s.on == FRAME and s.link != eng.drive.link]
+    if not sliders:
+        return []
+    if eng.pol is None:
+        eng.pol = build_polygons(mech, eng.pc)
+    dv = sw.values
+
+    def along(x: Array) -> tuple[dict[int, Array], dict[int, Array], Array]:
+        """Per slider: velocity along its line (unit drive speed) and travel; and validity."""
+        ev = eng.posture(np.atleast_1d(x))
+        evv, _ = eng.rates(ev, unit=True)
+        ok = np.broadcast_to(ev.valid & evv.valid, np.shape(x))
+        speed, travel = {}, {}
+        for s in sliders:
+            if f"v({s.point})" not in evv.values or s.point not in ev.values:
+                continue
+            u = np.subtract(s.p1, s.p0) / math.hypot(s.p1[0] - s.p0[0], s.p1[1] - s.p0[1])
+            v = np.asarray(evv[f"v({s.point})"], dtype=float)
+            o = np.asarray(evv["o_v"], dtype=float)
+            vel = v[..., :2] / v[..., 2:3] - o[..., :2] / o[..., 2:3]
+            p = np.asarray(ev[s.point], dtype=float)
+            pos = p[..., :2] / p[..., 2:3] - np.asarray(s.p0)
+            speed[s.index] = np.broadcast_to(vel @ u, np.shape(x))
+            travel[s.index] = np.broadcast_to(pos @ u, np.shape(x))
+        return speed, travel, ok
+
+    out: list[SingularPosture] = []
+    speed_all, _, ok_all = along(dv)
+    for s in sliders:
+        if s.index not in speed_all:
+            continue
+        sign = np.where(speed_all[s.index] >= 0, 1.0, -1.0)  # a sample exactly at 0 counts +
+        idx = np.flatnonzero(ok_all[:-1] & ok_all[1:] & (sign[:-1] * sign[1:] < 0))
+        if idx.size == 0:
+            continue
+        lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
+        slo = sign[idx]
+        for _ in range(48):
+            mid = 0.5 * (lo + hi)
+            sp, _t, _ok = along(mid)
+            same = np.where(sp[s.index] >= 0, 1.0, -1.0) == slo
+            lo = np.where(same, mid, lo)
+            hi = np.where(same, hi, mid)
+        x = 0.5 * (lo + hi)
+        _s, trav, _ok = along(x)
+        for xi, ti in zip(x, trav[s.index]):
+            u = _to_user(eng, float(xi))
+            out.append(SingularPosture(
+                "limit", u, None, s.link,
+                f"limit position of slider {s.link} (V_{s.point} = 0) at drive {_fmt(eng, u)}, "
+                f"{s.point} at {float(ti):.4g} {mech.length_unit} along its line"))
+    return out
+
+
+def _travel_ends(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
+    """Dead centers at the ends of a slider drive's travel.
+
+    A slider drive's default range is the travel over which the mechanism
+    assembles; where it ends, two arcs of the posture become tangent: the
+    crank and connecting rod of a slider-crank driven by its slider are in
+    line, and the slider cannot turn the crank on (Sec. 1.10).
+    """
+    assert eng.pc is not None
+    dv = sw.values
+    if eng.drive.kind != "position" or sw._cyclic or len(dv) < 2:
+        return []
+    step = float(dv[1] - dv[0])
+    ends = (float(dv[0]), float(dv[0]) + step * len(dv))
+    ok = _assembles(eng)
+    gap = 1e-6 * eng.mech.scale
+    out: list[SingularPosture] = []
+    for end, outward in ((ends[0], -gap), (ends[1], gap)):
+        if bool(ok(np.array([end + outward]))[0]):
+            continue  # it assembles beyond this end: the range was cut short by the user
+        # the end found by bisection, or within round-off of it on the assembled side
+        x = np.array([end])
+        if not bool(ok(x)[0]):
+            x = np.array([end - 1e-3 * outward])
+            if not bool(ok(x)[0]):
+                continue
+        ev = eng.posture(x)
+        for lab, sep in _separations(eng.pc.construction, ev.values).items():
+            if float(np.reshape(sep, (-1,))[0]) < 1e-3:
+                u = _to_user(eng, end)
+                out.append(SingularPosture(
+                    "dead-center", u, None, lab,
+                    f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
+                    "(an end of the travel over which it assembles)"))
     return out

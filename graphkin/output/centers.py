@@ -1,4 +1,9 @@
-"""The JSON and text report of instant centers."""
+"""The instant centers in the JSON and in the text report (``docs/formats/json.md``).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Secs. 3.12-3.14.
+"""
 
 from __future__ import annotations
 
@@ -7,18 +12,21 @@ from typing import Any
 
 import numpy as np
 
-from graphkin.kinematics.instant_centers.centers import How
-from graphkin.kinematics.instant_centers.kennedy import _is_batch, instant_centers
-from graphkin.kinematics.instant_centers.labels import _id_key, center_label
+from graphkin.kinematics.instant_centers import How, center_label, instant_centers
+from graphkin.kinematics.instant_centers.labels import _id_key
 from graphkin.kinematics.solution import Solution
+from graphkin.output.units import OutputUnits
+from graphkin.text import g6, table
 
-__all__ = ["instant_centers_json", "instant_centers_text"]
+__all__ = ["instant_centers_json", "instant_centers_text", "is_batch"]
 
 Array = np.ndarray
 
-# ---------------------------------------------------------------------------
-# output
-# ---------------------------------------------------------------------------
+
+def is_batch(sol: Solution) -> bool:
+    """Whether ``sol`` holds many postures (a sweep): the reports describe one."""
+    return bool(np.ndim(next(iter(sol.links.values())).angle) > 0)
+
 
 def _canonical(d: Array) -> list[float]:
     """A unit direction with its first nonzero component positive (either sense is valid)."""
@@ -30,8 +38,9 @@ def _canonical(d: Array) -> list[float]:
     return [dx + 0.0, dy + 0.0]
 
 
-def instant_centers_json(sol: Solution) -> dict[str, Any] | None:
-    """The ``instant_centers`` section of ``graphkin solve --json`` (``spec/output.md``).
+def instant_centers_json(sol: Solution, units: OutputUnits | None = None
+                         ) -> dict[str, Any] | None:
+    """The ``instant_centers`` section of ``graphkin solve --json`` (``docs/formats/json.md``).
 
     Keys ``"i-j"`` (lower id first); ``{"position": [x, y]}``, or
     ``{"direction": [dx, dy]}`` (a unit vector) for a center at infinity; plus
@@ -48,21 +57,12 @@ def instant_centers_json(sol: Solution) -> dict[str, Any] | None:
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
-    >>> instant_centers_json(sol)["1-2"]["position"]
+    >>> instant_centers_json(graphkin.examples.fourbar().solve())["1-2"]["position"]
     [0.0, 0.0]
     """
-    if _is_batch(sol):
+    if is_batch(sol):
         return None
+    k = 1.0 if units is None else units.k_length
     ic = instant_centers(sol)
     out: dict[str, Any] = {}
     for c in sorted(ic.centers.values(), key=lambda c: (_id_key(c.pair[0]), _id_key(c.pair[1]))):
@@ -70,7 +70,7 @@ def instant_centers_json(sol: Solution) -> dict[str, Any] | None:
         if c.point[2] == 0.0:
             entry["direction"] = _canonical(c.point[:2])
         else:
-            entry["position"] = [float(c.point[0]) + 0.0, float(c.point[1]) + 0.0]
+            entry["position"] = [float(c.point[0]) * k + 0.0, float(c.point[1]) * k + 0.0]
         entry.update({"label": c.label, "how": c.how.value, "order": c.order,
                       "source": c.source})
         if c.lines:
@@ -81,7 +81,7 @@ def instant_centers_json(sol: Solution) -> dict[str, Any] | None:
     return out
 
 
-def instant_centers_text(sol: Solution) -> str | None:
+def instant_centers_text(sol: Solution, units: OutputUnits | None = None) -> str | None:
     """A short textbook-style table of the instant centers, for the text report.
 
     ``None`` for a batch.
@@ -89,25 +89,21 @@ def instant_centers_text(sol: Solution) -> str | None:
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
-    >>> print(instant_centers_text(sol))
-      n = 2 links, N = n(n-1)/2 = 1 instant center (Eq. 3.20)
-      #  center  found by        location
-      1  I12     pin A           (0, 0) mm
+    >>> print(instant_centers_text(graphkin.examples.fourbar().solve()))
+      n = 4 links, N = n(n-1)/2 = 6 instant centers (Eq. 3.20)
+      #  center  found by  location
+      1  I12     pin A     (0, 0) in
+      2  I14     pin D     (10, 0) in
+      3  I23     pin B     (-2, 3.4641) in
+      4  I34     pin C     (14.8136, 9.89088) in
+      5  I13     Kennedy   (5.42613, -9.39833) in  on I12-I23 and I14-I34
+      6  I24     Kennedy   (-11.0627, 0) in        on I12-I14 and I23-I34
     """
-    if _is_batch(sol):
+    if is_batch(sol):
         return None
+    k = 1.0 if units is None else units.k_length
     ic = instant_centers(sol)
-    unit = sol.mechanism.length_unit
+    unit = sol.mechanism.length_unit if units is None else units.text("length")
     n, count = len(ic.links), ic.count
     lines = [f"  n = {n} links, N = n(n-1)/2 = {count} instant "
              f"center{'s' if count != 1 else ''} (Eq. 3.20)"]
@@ -117,7 +113,8 @@ def instant_centers_text(sol: Solution) -> str | None:
             dx, dy = _canonical(c.point[:2])
             where = f"at infinity ∠{round(math.degrees(math.atan2(dy, dx)), 2) + 0.0:.2f}°"
         else:
-            where = f"({float(c.point[0]) + 0.0:.6g}, {float(c.point[1]) + 0.0:.6g}) {unit}"
+            where = (f"({g6(float(c.point[0]) * k + 0.0)}, {g6(float(c.point[1]) * k + 0.0)}) "
+                     f"{unit}")
         if c.how is How.KENNEDY:
             by = "Kennedy"
             extra = "on " + " and ".join(c.lines)
@@ -127,10 +124,7 @@ def instant_centers_text(sol: Solution) -> str | None:
         else:
             by, extra = c.source, ""
         rows.append((str(c.order), c.label, by, where, extra))
-    widths = [max(len(r[k]) for r in rows) for k in range(4)]
-    for r in rows:
-        lines.append(("  " + "  ".join(x.ljust(w) for x, w in zip(r[:4], widths))
-                      + ("  " + r[4] if r[4] else "")).rstrip())
+    lines += table(rows, "  ")
     for p in ic.missing:
         lines.append(f"  {center_label(*p)}: not found")
     for note in ic.notes:

@@ -1,0 +1,146 @@
+"""The posture and its rates: the JSON object of ``docs/formats/json.md`` and the text report.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed.: results are stated as the book states them,
+``θ3 = 20.92°``, ``ω3 = 25.38 rad/s ccw``, ``V_E = 27.8 ft/s ∠165.3°``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import FRAME
+from graphkin.output.sections import SECTIONS
+from graphkin.output.units import OutputUnits
+from graphkin.text import g6, polar, sense, wrap_degrees
+
+__all__ = ["solution_to_dict", "text_report", "finite"]
+
+
+def finite(x: Any) -> Any:
+    """A JSON-safe copy: numpy to Python numbers, non-finite floats to None, -0.0 to 0.0.
+
+    Examples
+    --------
+    >>> finite({"a": np.float64("nan"), "b": [np.int64(2), -0.0]})
+    {'a': None, 'b': [2, 0.0]}
+    """
+    if isinstance(x, dict):
+        return {k: finite(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [finite(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return finite(x.tolist())
+    if isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)):
+        return int(x)
+    if isinstance(x, (float, np.floating)):
+        f = float(x)
+        if not math.isfinite(f):
+            return None
+        return f + 0.0
+    return x
+
+
+def solution_to_dict(sol: Solution, units: OutputUnits | None = None) -> dict[str, Any]:
+    """The ``graphkin solve --json`` object of ``docs/formats/json.md`` (and a few extra keys).
+
+    ``units`` (default: the file's length unit, seconds, radians per second)
+    converts every length, velocity, acceleration and angular rate, and is
+    stated in the ``units`` object.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> d = solution_to_dict(graphkin.examples.fourbar().solve())
+    >>> round(d["links"]["3"]["angle"], 2), d["units"]["velocity"]  # Example 3.1: θ3 = 20.92°
+    (20.92, 'in/s')
+    """
+    mech = sol.mechanism
+    u = units if units is not None else OutputUnits.of(mech.length_unit)
+    links: dict[str, Any] = {}
+    for lid, st in sol.links.items():
+        entry: dict[str, Any] = {"angle": wrap_degrees(float(st.angle))}
+        if st.omega is not None:
+            entry["omega"] = float(st.omega) * u.k_omega
+        if st.alpha is not None:
+            entry["alpha"] = float(st.alpha) * u.k_alpha
+        links[lid] = entry
+    points: dict[str, Any] = {}
+    for name in mech.point_names:
+        entry = {"position": (sol.position(name) * u.k_length).tolist()}
+        if sol.has_rates:
+            entry["velocity"] = (sol.velocity(name) * u.k_velocity).tolist()
+        if sol.has_accelerations:
+            entry["acceleration"] = (sol.acceleration(name) * u.k_acceleration).tolist()
+        entry["links"] = list(mech.point_links[name])
+        points[name] = entry
+    out: dict[str, Any] = {
+        "title": mech.title,
+        "units": u.json(),
+        "method": sol.method,
+        "links": links,
+        "points": points,
+    }
+    for s in SECTIONS:
+        section = s.json(sol, u)
+        if section is not None:
+            out[s.key] = section
+    if sol.branches:
+        out["branches"] = dict(sol.branches)
+    if sol.notes:
+        out["notes"] = list(sol.notes)
+    return finite(out)
+
+
+def text_report(sol: Solution, units: OutputUnits | None = None) -> str:
+    """A readable, textbook-style report of a solved posture.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> print(text_report(graphkin.examples.fourbar().solve()).splitlines()[5])
+      θ2 = 120.0000°   ω2 = 94.2478 rad/s ccw   α2 = 0 rad/s²
+    """
+    mech = sol.mechanism
+    ou = units if units is not None else OutputUnits.of(mech.length_unit)
+    u = ou.text("length")
+    lines = [mech.title or mech.source, ""]
+    how = ("by the graphic constructions" if sol.method == "construction"
+           else "by the analytic solver")
+    lines.append(f"Solved {how}.")
+    for n in sol.notes:
+        lines.append(f"  note: {n}")
+    lines.append("")
+    lines.append("Links")
+    for lid, st in sol.links.items():
+        if lid == FRAME:
+            continue
+        row = f"  θ{lid} = {wrap_degrees(float(st.angle)):.4f}°"
+        if st.omega is not None:
+            w = float(st.omega)
+            row += f"   ω{lid} = {g6(abs(w) * ou.k_omega)} {ou.text('omega')} {sense(w)}".rstrip()
+        if st.alpha is not None:
+            a = float(st.alpha)
+            row += f"   α{lid} = {g6(abs(a) * ou.k_alpha)} {ou.text('alpha')} {sense(a)}".rstrip()
+        lines.append(row)
+    lines.append("")
+    lines.append("Points")
+    for name in mech.point_names:
+        x, y = sol.position(name) * ou.k_length
+        row = f"  R_{name} = ({g6(x)}, {g6(y)}) {u}"
+        if sol.has_rates:
+            row += f"   V_{name} = {polar(sol.velocity(name) * ou.k_velocity, ou.text('velocity'))}"
+        if sol.has_accelerations:
+            row += (f"   A_{name} = "
+                    f"{polar(sol.acceleration(name) * ou.k_acceleration, ou.text('acceleration'))}")
+        lines.append(row)
+    for s in SECTIONS:
+        text = s.text(sol, ou) if s.text is not None else None
+        if text:
+            lines += ["", s.title, text]
+    return "\n".join(lines) + "\n"
