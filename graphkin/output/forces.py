@@ -1,5 +1,7 @@
-"""The force analysis (Chs. 11-12) as a section of the report: the ``forces`` JSON object
-of ``docs/formats/json.md`` (spec/forces.md) and its textbook-style text.
+"""The force analysis (Chs. 11-12) as a section of the report.
+
+The ``forces`` JSON object of ``docs/formats/json.md`` (spec/forces.md) and
+its textbook-style text.
 
 The builders live with the analysis (:mod:`graphkin.forces.report`); this
 module hands them the solution and the report's units.  Forces stay in the
@@ -16,7 +18,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from graphkin.forces.report import forces_json as _json
-from graphkin.forces.report import forces_report, forces_text as _text
+from graphkin.forces.report import forces_report
+from graphkin.forces.report import forces_text as _text
 
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
