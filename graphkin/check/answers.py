@@ -277,7 +277,7 @@ class Key:
             return _SCALAR_KIND[self.kind]
         if self.kind in _VECTOR_KIND:
             return _VECTOR_KIND[self.kind]
-        if self.kind in ("F", "T"):  # spec/forces.md
+        if self.kind in ("F", "T"):  # docs/forces.md
             return "force" if self.kind == "F" else "torque"
         return "length"
 
@@ -524,7 +524,7 @@ def _quantity(value: Any, kind: str, mech: Mechanism, key: str,
     """(internal value, sense, display unit, unit factor) of one number or string."""
     lu = mech.length_unit
     if kind in ("force", "torque"):
-        from graphkin.mechanisms.loads import parse_answer_amount
+        from graphkin.mechanisms.loading import parse_answer_amount
 
         try:
             return parse_answer_amount(value, kind, mech)

@@ -216,7 +216,7 @@ class Evaluator:
             return self.instant_center(key, a[0], a[1])
         if k == "rho":
             return Exact(self.radius(key, a[0]))
-        if k in ("F", "T"):  # spec/forces.md
+        if k in ("F", "T"):  # docs/forces.md
             return self.force(key)
         raise InputError(f"no exact value for {key.text!r}", key=key.text)  # pragma: no cover
 

@@ -2,7 +2,7 @@
 
 Each pair of links in contact is one joint, keyed ``"i-j"`` with the lower id
 first (``"i-j@P"`` when the pair shares two joints); its force is the book's
-F_ij, exerted BY link i ON link j (spec/forces.md).  Frictionless joints
+F_ij, exerted BY link i ON link j (docs/forces.md).  Frictionless joints
 (Sec. 11.5): a pin transmits a force through its center (two unknowns); a
 slider a force normal to its line, anywhere along it (two unknowns: size and
 place); a pin in a slot a force through the pin normal to the slot (one

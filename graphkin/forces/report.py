@@ -34,7 +34,7 @@ def _units(fs: ForceSolution) -> dict[str, str]:
 
 
 def forces_json(fs: ForceSolution) -> dict[str, Any]:
-    """The ``forces`` object of spec/forces.md (plus ``method``, ``shaking``, ``notes``)."""
+    """The ``forces`` object of docs/formats/json.md (plus ``method``, ``shaking``, ``notes``)."""
     joints = {}
     for j in fs.joints:
         joints[j.key] = {"force": fs.forces[j.key][:2].tolist(),

@@ -124,7 +124,7 @@ class ForceSolution:
         return total
 
     def point(self, key: str) -> np.ndarray:
-        """A point on the line of action of a joint's force (spec/forces.md).
+        """A point on the line of action of a joint's force (docs/forces.md).
 
         The pin for a pin or a pin in a slot; for a slider, where the force's
         line crosses the sliding line.

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
     from graphkin.kinematics.sweep.batch import Batch
-    from graphkin.mechanisms.loads import Inertia, Load
+    from graphkin.mechanisms.loading import Inertia, Load
     from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
@@ -222,7 +222,7 @@ class Mechanism:
     line_points: frozenset[str] = frozenset()
     """Point names the file uses to define a slider's, slot's or rolling surface's line."""
     force_unit: str = "N"
-    """``units.force`` (spec/forces.md): the unit of every force; torques in force × length."""
+    """``units.force`` (docs/forces.md): the unit of every force; torques in force × length."""
     loads: tuple[Load, ...] = ()
     """Applied forces and couples (``[[loads]]``, Ch. 11)."""
     inertia: dict[str, Inertia] = field(default_factory=dict)

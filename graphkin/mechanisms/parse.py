@@ -14,7 +14,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
-from graphkin.mechanisms.loads import force_fields
+from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
     XY,

@@ -1,6 +1,6 @@
 """The force analysis (Chs. 11-12) as a section of the report.
 
-The ``forces`` JSON object of ``docs/formats/json.md`` (spec/forces.md) and
+The ``forces`` JSON object of ``docs/formats/json.md`` (docs/forces.md) and
 its textbook-style text.
 
 The builders live with the analysis (:mod:`graphkin.forces.report`); this

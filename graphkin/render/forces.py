@@ -235,7 +235,7 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Dra
         got = forces_report(sol)
         if got is None:
             raise DiagramUnavailable("no forces diagram: the file has no [[loads]] and no "
-                                     "[inertia.N] (spec/forces.md)", diagram="forces")
+                                     "[inertia.N] (docs/forces.md)", diagram="forces")
         fs = got
     mech = fs.mechanism
     sol = fs.solution

@@ -1,4 +1,4 @@
-"""The forces spec examples (spec/forces.md) give the values of their expected.toml.
+"""The forces examples (docs/forces.md) give the values of their expected.toml.
 
 ``tests/data/forces/`` holds the project's copies of Examples 11.1 and 12.4 with
 their expected values (derived independently: see the comments in expected.toml).

@@ -1,4 +1,4 @@
-"""Loads, mass properties and gravity in a mechanism file (``spec/forces.md``).
+"""Loads, mass properties and gravity in a mechanism file (``docs/formats/mechanism.md``).
 
 ``units.force``, ``[[loads]]``, ``[inertia.N]`` and ``[gravity]`` are read here
 into plain frozen values that :class:`~graphkin.mechanisms.model.Mechanism`
@@ -34,7 +34,7 @@ STANDARD_GRAVITY = 9.80665
 """Standard gravity (m/s²): ``weight = mass × g0`` (a weight in lbf gives its mass)."""
 
 TOP_KEYS = frozenset({"loads", "inertia", "gravity"})
-"""The top-level keys of spec/forces.md (``units.force`` lives in ``[units]``)."""
+"""The top-level keys of the forces format (``units.force`` lives in ``[units]``)."""
 
 LOAD_KEYS = frozenset({"link", "point", "force", "torque"})
 INERTIA_KEYS = frozenset({"center", "mass", "weight", "moment"})
@@ -176,9 +176,10 @@ def parse_answer_amount(value: Any, kind: str, mech: Any) -> tuple[float, str | 
     Examples
     --------
     >>> import graphkin
-    >>> m = graphkin.examples.fourbar()
-    >>> parse_answer_amount("183 lbf*in cw", "torque", m)[:2]
-    (-183.0, 'cw')
+    >>> m = graphkin.examples.fourbar()      # an inch file; forces in N (the default)
+    >>> v, sense, unit, factor = parse_answer_amount("183 lbf*in cw", "torque", m)
+    >>> round(v, 2), sense, unit              # 183 lbf·in = 814.02 N·in, clockwise
+    (-814.02, 'cw', 'lbf*in')
     """
     unit = mech.force_unit if kind == "force" else f"({mech.force_unit})*({mech.length_unit})"
     shown = mech.force_unit if kind == "force" else f"{mech.force_unit}*{mech.length_unit}"
@@ -250,7 +251,7 @@ def _torque(value: Any, unit: str) -> float:
 
 def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit: str,
                  fail: Callable[[str | None, str], InputError]) -> dict[str, Any]:
-    """The Mechanism fields of spec/forces.md, read from a parsed mechanism file.
+    """The Mechanism fields of the forces format (docs/formats/mechanism.md).
 
     Parameters
     ----------
