@@ -65,7 +65,8 @@ MECHANISM: Schema = {
     "title": None,
     "units": UNITS,
     "links": {"*": {"*": None}},          # [links.<id>] <point> = [x, y]
-    "sliders": {"link": None, "on": None, "point": None, "line": None},
+    "sliders": {"link": None, "on": None, "point": None, "line": None,
+                "friction": None, "impending": None},   # Coulomb friction (forces, Sec. 11.10)
     "slots": {"link": None, "on": None, "point": None, "line": None, "circle": _CIRCLE},
     "rolling": {"link": None, "on": None, "circle": _CIRCLE, "line": None, "side": None,
                 "angle": None, "on_circle": _CIRCLE, "contact": None},

@@ -36,7 +36,8 @@ __all__ = ["Key", "Given", "Answers", "CheckTolerance", "SheetScale", "parse_key
 MAX_FILE_BYTES = 20_000_000
 
 KEY_HELP = ("keys are theta<k>, omega<k>, alpha<k>, V_<P>, A_<P>, V_<P><Q>, A_<P><Q>, "
-            "A_<P><Q>^n, A_<P><Q>^t, A_<P>^c, R_<P>, R_<P><Q>, I<i><j>, rho_<P>")
+            "A_<P><Q>^n, A_<P><Q>^t, A_<P>^c, R_<P>, R_<P><Q>, I<i><j>, rho_<P>, "
+            "F_<i><j> (force by link i on link j), T_1<k> (the drive's torque)")
 
 #: keys of an answers file that are not answers
 META_KEYS = ("tolerance", "student", "name", "title", "comment", "notes", "mechanism")
@@ -277,6 +278,8 @@ class Key:
             return _SCALAR_KIND[self.kind]
         if self.kind in _VECTOR_KIND:
             return _VECTOR_KIND[self.kind]
+        if self.kind in ("F", "T"):  # docs/forces.md
+            return "force" if self.kind == "F" else "torque"
         return "length"
 
     @property
@@ -284,7 +287,7 @@ class Key:
         """How the value compares: ``angle``, ``scalar``, ``vector``, ``point``, ``magnitude``."""
         if self.kind == "theta":
             return "angle"
-        if self.kind in _SCALAR_KIND:
+        if self.kind in _SCALAR_KIND or self.kind == "T":
             return "scalar"
         if self.kind == "I" or (self.kind == "R" and len(self.args) == 1):
             return "point"
@@ -367,6 +370,14 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
                              f"{', '.join(links)} (write I1-13 for long ids)", key=raw, file=file)
         a, b = sorted(pair, key=_id_order)
         return Key(raw, "I", (a, b))
+    m = re.fullmatch(r"([FT])_?(.+)", s)
+    if m and mech.has_forces:  # a joint force F_34 or the drive's torque T_12 (Ch. 11-12)
+        rest = m.group(2)
+        pair = _split_pair(rest, links, raw, "link ids", file)
+        if pair is None or pair[0] == pair[1]:
+            raise InputError(f"{rest!r} is not two different link ids; links are "
+                             f"{', '.join(links)} (write F_3-4 for long ids)", key=raw, file=file)
+        return Key(raw, m.group(1), pair)
     m = re.fullmatch(r"([VAR])_(.+)", s)
     if m:
         letter, rest = m.group(1), m.group(2)
@@ -487,6 +498,8 @@ def _factor(unit: str, kind: str, length_unit: str) -> float:
 
 
 def _default_unit(kind: str, length_unit: str) -> str:
+    if kind in ("force", "torque"):
+        return ""
     return {"omega": "rad/s", "alpha": "rad/s^2", "velocity": f"{length_unit}/s",
             "acceleration": f"{length_unit}/s^2", "length": length_unit, "angle": "deg"}[kind]
 
@@ -495,6 +508,13 @@ def _quantity(value: Any, kind: str, mech: Mechanism, key: str,
               file: str | None) -> tuple[float, str | None, str, float]:
     """(internal value, sense, display unit, unit factor) of one number or string."""
     lu = mech.length_unit
+    if kind in ("force", "torque"):
+        from graphkin.mechanisms.loading import parse_answer_amount
+
+        try:
+            return parse_answer_amount(value, kind, mech)
+        except ValueError as exc:
+            raise InputError(str(exc), key=key, file=file) from None
     text = _deg_text(value) if kind == "angle" else value
     try:
         v, sense = parse_quantity(text, kind, lu)

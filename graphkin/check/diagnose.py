@@ -77,7 +77,8 @@ class Mistake:
     ----------
     kind : str
         ``sense``, ``unit``, ``relative``, ``flipped``, ``normal``,
-        ``coriolis``, ``branch``, or ``combined`` (two mistakes at once).
+        ``coriolis``, ``branch``, ``inertia`` (forces), or ``combined`` (two mistakes at
+        once).
     text : str
         The mistake in words.
     code : str
@@ -223,7 +224,8 @@ class Diagnoser:
         yield from self._sense(given, exact)
         yield from self._units(given, exact, with_sense=False)
         polygon: list[tuple[Mistake, Exact]] = []
-        for item in itertools.chain(self._relative(key), self._flipped(key), self._normal(key)):
+        for item in itertools.chain(self._relative(key), self._flipped(key), self._normal(key),
+                                    self._forces(key)):
             polygon.append(item)
             yield item
         for i, (mistake, ev) in enumerate(self.variants()):
@@ -257,14 +259,32 @@ class Diagnoser:
             yield (Mistake("sense", "angle of the link measured from its other end "
                                     "(180° out)"), Exact(exact.value + 180.0))
         elif shape == "vector" and given.direction is not None:
-            if len(key.args) == 2 and key.kind in ("V", "A", "R"):
+            if key.kind == "F":
+                i, j = key.args
+                text = (f"action for reaction: F_{j}{i} given for F_{i}{j} (F_{i}{j} is the "
+                        f"force exerted BY link {i} ON link {j}; F_{j}{i} = -F_{i}{j})")
+            elif len(key.args) == 2 and key.kind in ("V", "A", "R"):
                 p, q = key.args
                 text = (f"sense reversed: {key.kind}_{q}{p} given for {key.kind}_{p}{q} "
                         f"(the difference {key.kind}_{p}{q} is drawn to {_lower(p)} from "
                         f"{_lower(q)})")
             else:
                 text = f"sense reversed: {key.text} drawn the wrong way round (180° out)"
-            yield Mistake("sense", text), exact.scaled(-1.0)
+            code = "action-for-reaction" if key.kind == "F" else "sense"
+            yield Mistake("sense", text, code), exact.scaled(-1.0)
+
+    def _forces(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
+        """Dynamic force analysis (Sec. 12.4): the inertia force not reversed, h misplaced."""
+        if key.kind not in ("F", "T") or not self.ev.forces().dynamic:
+            return
+        yield (Mistake("inertia", "the inertia force was not reversed: d'Alembert's force is "
+                                  "-m A_G, opposite to the acceleration of G (Sec. 12.4)",
+                       "inertia-not-reversed"),
+               self.ev.force(key, "not-reversed"))
+        yield (Mistake("inertia", "h is on the wrong side of G: the offset inertia force must "
+                                  "have the moment -I_G α about G, opposite to α (Eq. 12.18)",
+                       "inertia-h-side"),
+               self.ev.force(key, "h-side"))
 
     def _units(self, given: Given, exact: Exact,
                with_sense: bool) -> Iterator[tuple[Mistake, Exact]]:

@@ -126,6 +126,12 @@ class Evaluator:
                 x = st.omega if quantity == "omega" else st.alpha
                 if x is not None:
                     vals.append(abs(float(x)))
+        elif quantity in ("force", "torque"):
+            fs = self.forces()
+            if quantity == "force":
+                vals += [float(np.hypot(*w[:2])) for w in fs.forces.values()]
+            else:
+                vals += [abs(v) for _, v in fs.drives.values()]
         elif quantity in ("velocity", "acceleration") and sol.has_rates:
             if quantity == "acceleration" and not sol.has_accelerations:
                 return 1.0
@@ -199,7 +205,34 @@ class Evaluator:
             return self.instant_center(key, a[0], a[1])
         if k == "rho":
             return Exact(self.radius(key, a[0]))
+        if k in ("F", "T"):  # docs/forces.md
+            return self.force(key)
         raise InputError(f"no exact value for {key.text!r}", key=key.text)  # pragma: no cover
+
+    def forces(self, mistake: str | None = None) -> Any:
+        """The force analysis (Ch. 11-12) of this posture, or one made with a usual mistake."""
+        cache: dict[str | None, Any] = self.__dict__.setdefault("_forces", {})
+        if mistake not in cache:
+            from graphkin.forces import solve_forces
+
+            cache[mistake] = solve_forces(self.sol, mistake=mistake)
+        return cache[mistake]
+
+    def force(self, key: Key, mistake: str | None = None) -> Exact:
+        """F_ij (by link i on link j) or the drive's torque T_1k."""
+        fs = self.forces(mistake)
+        i, j = key.args
+        if key.kind == "F":
+            try:
+                return Exact(None, np.asarray(fs.force(i, j), dtype=float))
+            except KeyError:
+                raise InputError(f"links {i} and {j} share no joint", key=key.text) from None
+        if i != "1" or j not in fs.drives or fs.drives[j][0] != "torque":
+            drives = ", ".join(f"T_1{lid}" for lid, (k, _) in fs.drives.items()
+                               if k == "torque") or "none"
+            raise InputError(f"{key.text} is not a drive's torque (drives: {drives})",
+                             key=key.text)
+        return Exact(float(fs.drives[j][1]))
 
     def on_link(self, name: str, lid: str, kind: str) -> np.ndarray:
         """Velocity (``V``) or acceleration (``A``) of the point of link ``lid`` at ``name``.

@@ -10,7 +10,7 @@ from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
 DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "inflection",
-                   "bobillier", "hartmann", "cubic", "all")
+                   "bobillier", "hartmann", "cubic", "forces", "all")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:

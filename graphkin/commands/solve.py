@@ -64,4 +64,9 @@ def _all_constructions(sol: Solution) -> dict[str, Construction]:
         for lid, cx in curvature_constructions(sol).items():
             if len(cx) > 1:
                 out[f"curvature of link {lid}"] = cx
+    from graphkin.forces.report import forces_report  # docs/forces.md
+
+    fs = forces_report(sol)
+    if fs is not None and fs.construction is not None:
+        out["forces"] = fs.construction
     return out

@@ -18,7 +18,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                     "elements highlighted; previous/next buttons and arrow keys.")
     p.add_argument("file", help="mechanism file (TOML)")
     p.add_argument("--diagram", "-d", default="posture",
-                   choices=("posture", "velocity", "acceleration", "centers", "curvature"),
+                   choices=("posture", "velocity", "acceleration", "centers", "curvature",
+                            "forces"),
                    help="which construction (default: posture)")
     p.add_argument("-o", "--output", default=None, help="the HTML file to write")
     p.add_argument("--frames", default=None, metavar="DIR",
@@ -41,6 +42,8 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("nothing to write: give -o OUT.html and/or --frames DIR",
                          key="--output")
     sol = graphkin.load(args.file).solve()
+    if args.diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
+        return _forces(sol, args)
     try:
         if args.output is not None:
             out = Path(args.output)
@@ -58,6 +61,39 @@ def run(args: argparse.Namespace) -> int:
                 raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
                                  key="--frames") from None
             print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
+    except DiagramUnavailable as exc:
+        raise InputError(str(exc), key="--diagram", file=args.file) from None
+    return 0
+
+
+def _forces(sol: object, args: argparse.Namespace) -> int:
+    """The force construction, one frame per step."""
+    from pathlib import Path
+
+    from graphkin.errors import InputError
+    from graphkin.render import DiagramUnavailable
+    from graphkin.render.forces import forces_frames, forces_steps_html
+
+    try:
+        if args.output is not None:
+            out = Path(args.output)
+            try:
+                out.write_text(forces_steps_html(sol), encoding="utf-8")
+            except OSError as exc:
+                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
+                                 key="--output") from None
+            print(f"wrote {out}", file=sys.stderr)
+        if args.frames is not None:
+            d = Path(args.frames)
+            try:
+                d.mkdir(parents=True, exist_ok=True)
+                frames = forces_frames(sol)
+                for k, (_, svg) in enumerate(frames):
+                    (d / f"forces-{k:02d}.svg").write_text(svg, encoding="utf-8")
+            except OSError as exc:
+                raise InputError(f"cannot write into {d}: {exc.strerror or exc}",
+                                 key="--frames") from None
+            print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
     return 0

@@ -50,6 +50,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--units-row", action="store_true",
                    help="write each column's unit on a second header line (the column names "
                         "stay those of docs/formats/sweep-csv.md)")
+    p.add_argument("--torque", action="store_true",
+                   help="add the drive's torque (torque_2) or input force (force_4) that holds "
+                        "the loads and inertia forces of the file (docs/forces.md)")
+    p.add_argument("--joint-forces", action="store_true",
+                   help="with --torque: also the magnitude of every joint force (F_3-4)")
     p.add_argument("--singular", action="store_true",
                    help="also report dead centers, limit positions (of links pinned to the "
                         "frame and of sliders on it) and Grashof's classification on standard "
@@ -75,6 +80,10 @@ def run(args: argparse.Namespace) -> int:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=args.transmission, centers=args.centers,
                    curvature=args.curvature, progress=b.fraction)
+    if args.torque or args.joint_forces:
+        from graphkin.forces.sweep import force_columns
+
+        sw.columns.update(force_columns(sw, joints=args.joint_forces))
     units = OutputUnits.of(mech.length_unit, args.units)
     slider = sw.drive.kind != "angle"
     try:

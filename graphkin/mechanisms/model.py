@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
     from graphkin.kinematics.sweep.batch import Batch
+    from graphkin.mechanisms.loading import Inertia, Load
     from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
@@ -220,6 +221,22 @@ class Mechanism:
     source: str = "<mechanism>"
     line_points: frozenset[str] = frozenset()
     """Point names the file uses to define a slider's, slot's or rolling surface's line."""
+    force_unit: str = "N"
+    """``units.force`` (docs/forces.md): the unit of every force; torques in force × length."""
+    loads: tuple[Load, ...] = ()
+    """Applied forces and couples (``[[loads]]``, Ch. 11)."""
+    inertia: dict[str, Inertia] = field(default_factory=dict)
+    """Link id -> mass properties (``[inertia.N]``, Ch. 12)."""
+    gravity: XY | None = None
+    """The acceleration of gravity (length unit/s²) when ``[gravity]`` is given."""
+    friction: dict[int, tuple[float, str | None]] = field(default_factory=dict)
+    """Slider index -> (μ, impending motion ``"ahead"``/``"behind"`` or None: from the
+    velocity) for sliders with Coulomb friction (Sec. 11.10, an extension of forces.md)."""
+
+    @property
+    def has_forces(self) -> bool:
+        """True when the file asks for a force analysis (loads or mass properties)."""
+        return bool(self.loads) or bool(self.inertia)
 
     def __repr__(self) -> str:
         """A short summary: title, links, pins, pairs, drives (never raises).

@@ -14,6 +14,7 @@ from typing import Any
 from graphkin.errors import InputError
 from graphkin.io.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
+from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
     XY,
@@ -224,7 +225,8 @@ class _Parser:
                          slots=tuple(slots), rolling=tuple(r for r, _ in rolling),
                          drives=tuple(drives), rates=rates,
                          assembly=assembly, title=title, length_unit=self.unit,
-                         source=self.source, line_points=frozenset(self.line_names))
+                         source=self.source, line_points=frozenset(self.line_names),
+                         **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         return mech
 

@@ -57,7 +57,7 @@ SECTIONS: tuple[Section, ...] = (
     Section("curvature", "Curvature", "graphkin.output.curvature:curvature_json",
             "graphkin.output.curvature:curvature_text"),
     Section("paths", "", "graphkin.output.curvature:paths_json"),
-    # forces (Chs. 11-12): Section("forces", "Forces", "graphkin.output.forces:forces_json",
-    #                              "graphkin.output.forces:forces_text"),
+    Section("forces", "Forces", "graphkin.output.forces:forces_json",
+            "graphkin.output.forces:forces_text"),
 )
 """The sections, in the order of the JSON keys and of the text report."""

@@ -448,6 +448,10 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (Fig. 2.14), 3.4 (Fig. 3.5),
     4.3 (Fig. 4.4).
     """
+    if diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
+        from graphkin.render.forces import draw_forces
+
+        return draw_forces(obj, table=table is not False, upto=upto)
     wanted = tuple(dict.fromkeys(
         "curvature" if d in CURVATURE_PANELS else d
         for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))

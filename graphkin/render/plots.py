@@ -48,7 +48,7 @@ if TYPE_CHECKING:
 __all__ = ["ITEMS", "parse_what", "sweep_figure", "save_figure"]
 
 ITEMS = ("angle", "omega", "alpha", "velocity", "acceleration", "path", "transmission",
-         "center", "centrode")
+         "center", "centrode", "torque")
 """What can be plotted (``item`` or ``item:which``)."""
 
 _UNITS = {"angle": "°", "omega": "rad/s", "alpha": "rad/s²"}
@@ -212,6 +212,22 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
                 _clip_toggles(ax, x, [np.asarray(cols[f"{item}_{lid}"], dtype=float)
                                       for lid in _links(sw, which)])
             ax.set_ylabel(f"{_NAMES[item]}, {_UNITS[item]}")
+            ax.set_xlabel(_drive_label(sw))
+            ax.legend(loc="best", fontsize="small", frameon=False)
+        elif item == "torque":  # the drive's torque over the cycle (graphkin.forces.sweep)
+            from graphkin.forces.sweep import force_columns
+
+            fc = {k: v for k, v in cols.items() if k.startswith(("torque_", "force_"))} \
+                or force_columns(sw)
+            mech = sw.mechanism
+            for name, y in fc.items():
+                kind, _, lid = name.partition("_")
+                sym = f"T1{lid}" if kind == "torque" else f"F{lid}"
+                (line,) = ax.plot(x, np.asarray(y, dtype=float), lw=1.2, label=sym)
+                line.set_gid(f"curve-{name}")
+            unit = f"{mech.force_unit}·{mech.length_unit}" if any(
+                k.startswith("torque_") for k in fc) else mech.force_unit
+            ax.set_ylabel(f"drive torque, {unit}")
             ax.set_xlabel(_drive_label(sw))
             ax.legend(loc="best", fontsize="small", frameon=False)
         elif item in ("velocity", "acceleration"):

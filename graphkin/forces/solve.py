@@ -1,0 +1,313 @@
+"""Force analysis of a solved posture: the graphic construction, checked by the matrix method.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Ch. 11 (static force analysis), Ch. 12
+(dynamic force analysis), Sec. 12.7 (shaking force and moment).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from graphkin.errors import ConstructionError, InputError
+from graphkin.forces.analytic import applied_wrenches, solve_matrix
+from graphkin.forces.graphic import BuiltForces, NotDecomposable, Partial, build_forces
+from graphkin.forces.joints import PIN, SLIDE, Geometry, Joint, geometry, joints_of
+from graphkin.forces.ops import line_of
+from graphkin.kinematics.solution import Solution
+from graphkin.tolerance import Tolerance
+
+if TYPE_CHECKING:
+    from graphkin.construction import Construction
+
+__all__ = ["ForceSolution", "InertiaForce", "solve_forces"]
+
+
+@dataclass
+class InertiaForce:
+    """d'Alembert's inertia force of a link as one offset force (Eq. 12.18, Fig. 12.7c).
+
+    Attributes
+    ----------
+    force : ndarray
+        ``-m A_G`` (force unit).
+    point : ndarray
+        A point of its line of action: G moved by ``h`` perpendicular to the force.
+    torque : float
+        ``-I_G α`` (force unit × length unit), the moment about G of the offset force.
+    offset : float
+        ``h = I_G α / (m A_G)`` (a magnitude, length unit).
+    """
+
+    force: np.ndarray
+    point: np.ndarray
+    torque: float
+    offset: float
+
+
+@dataclass
+class ForceSolution:
+    """Every joint force and the drives' torques (or forces) at one posture.
+
+    Attributes
+    ----------
+    solution : Solution
+        The kinematic solution it stands on.
+    joints : list of Joint
+    forces : dict
+        Joint key -> wrench ``(Fx, Fy, M_origin)`` of F_lo,hi, by ``lo`` on ``hi``.
+    drives : dict
+        Drive link -> ``("torque", T)`` (ccw, about its pivot) or ``("force", F)``
+        (signed along the slider line's direction).
+    inertia : dict
+        Link -> :class:`InertiaForce` (dynamic analysis only).
+    dynamic : bool
+        True when inertia forces take part (mass properties and rates given).
+    method : str
+        ``"construction"`` (the graphic method) or ``"analytic"`` (the matrix method,
+        when no graphic order exists; ``notes`` says why).
+    built : BuiltForces or None
+        The construction, its values and partial analyses (graphic method).
+    notes : list of str
+    geometry : Geometry
+    """
+
+    solution: Solution
+    joints: list[Joint]
+    forces: dict[str, np.ndarray]
+    drives: dict[str, tuple[str, float]]
+    inertia: dict[str, InertiaForce]
+    dynamic: bool
+    method: str
+    built: BuiltForces | None
+    geometry: Geometry
+    applied: dict[str, list[tuple[str, np.ndarray]]] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def mechanism(self) -> Any:
+        """The mechanism."""
+        return self.solution.mechanism
+
+    @property
+    def construction(self) -> Construction | None:
+        """The recorded graphic construction (None for the matrix method)."""
+        return None if self.built is None else self.built.construction
+
+    @property
+    def partials(self) -> list[Partial]:
+        """The analyses of the superposition, one per loaded link (Sec. 12.5)."""
+        return [] if self.built is None else self.built.partials
+
+    def force(self, i: str | int, j: str | int) -> np.ndarray:
+        """F_ij, the force exerted by link i on link j (``force(3, 4)`` is F_34).
+
+        With two joints between the links (``"1-3@B"``, ``"1-3@D"``) their sum;
+        :attr:`forces` has each.
+        """
+        a, b = str(i), str(j)
+        total = np.zeros(2)
+        found = False
+        for jt in self.joints:  # two joints between one pair (F_13@B, F_13@D): their sum
+            if (jt.lo, jt.hi) == (a, b):
+                total = total + self.forces[jt.key][:2]
+                found = True
+            elif (jt.lo, jt.hi) == (b, a):
+                total = total - self.forces[jt.key][:2]
+                found = True
+        if not found:
+            raise KeyError(f"links {a} and {b} share no joint")
+        return total
+
+    def point(self, key: str) -> np.ndarray:
+        """A point on the line of action of a joint's force (docs/forces.md).
+
+        The pin for a pin or a pin in a slot; for a slider, where the force's
+        line crosses the sliding line.
+        """
+        jt = next(j for j in self.joints if j.key == key)
+        p = self.geometry.points[jt.point]
+        if jt.kind != SLIDE:
+            return p.copy()
+        w = self.forces[key]
+        if np.hypot(w[0], w[1]) == 0:
+            return p.copy()
+        base, u = self.geometry.base[key], self.geometry.along[key]
+        den = -w[1] * u[0] + w[0] * u[1]
+        t = (w[1] * base[0] - w[0] * base[1] - w[2]) / den
+        return base + t * u
+
+    def torque(self, link: str | int) -> float:
+        """The drive's torque (or input force) of a drive link."""
+        return self.drives[str(link)][1]
+
+    @property
+    def shaking(self) -> tuple[np.ndarray, float] | None:
+        """The shaking force Σ(-m A_G) and moment about the origin (Eqs. 12.23-12.24)."""
+        if not self.dynamic:
+            return None
+        f = np.zeros(2)
+        m = 0.0
+        for lid, inr in self.mechanism.inertia.items():
+            sol = self.solution
+            a = np.asarray(sol.acceleration(inr.center, lid))
+            g = np.asarray(sol.position(inr.center, lid))
+            fi = -inr.mass * a
+            f += fi
+            m += float(g[0] * fi[1] - g[1] * fi[0]) - inr.moment * float(sol.alpha(lid))
+        return f, m
+
+
+def _inertia(sol: Solution) -> dict[str, InertiaForce]:
+    out = {}
+    for lid, inr in sol.mechanism.inertia.items():
+        a = np.asarray(sol.acceleration(inr.center, lid), dtype=float)
+        g = np.asarray(sol.position(inr.center, lid), dtype=float)
+        f = -inr.mass * a
+        t = -inr.moment * float(sol.alpha(lid))
+        f2 = float(f @ f)
+        if f2 > 0:
+            pt = g + (t / f2) * np.array([f[1], -f[0]])
+            h = abs(t) / float(np.sqrt(f2))
+        else:
+            pt, h = g.copy(), 0.0
+        out[lid] = InertiaForce(f, pt, t, h)
+    return out
+
+
+def solve_forces(sol: Solution, tol: Tolerance | None = None,
+                 method: str = "construction", mistake: str | None = None) -> ForceSolution:
+    """Find every joint force and the drives' torques of a solved posture.
+
+    Parameters
+    ----------
+    sol : Solution
+        A kinematic solution of a mechanism with loads or mass properties (one posture).
+    tol : Tolerance, optional
+    method : {"construction", "analytic"}
+        The graphic method (falling back to the matrix method when it finds no
+        order), or the matrix method alone.
+    mistake : str, optional
+        Solve with a usual mistake (by the matrix method), to diagnose a
+        student's answer: ``"not-reversed"`` (the inertia force taken as
+        ``+m A_G``), ``"h-side"`` (h on the wrong side of G).
+
+    Returns
+    -------
+    ForceSolution
+
+    Raises
+    ------
+    InputError
+        Equilibrium cannot be held at this posture, or the mechanism is not
+        statically determinate.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.forces import solve_forces
+    """
+    mech = sol.mechanism
+    joints = joints_of(mech)
+    geo = geometry(sol, joints)
+    dynamic = bool(mech.inertia) and sol.has_accelerations
+    notes: list[str] = []
+    if mech.inertia and not dynamic:
+        notes.append("the file gives no rates: a static analysis (inertia forces need "
+                     "the accelerations)")
+    if mech.friction:
+        _tilt_for_friction(sol, joints, geo, dynamic, notes, tol)
+    applied = {lid: [("", w) for w, _ in items]
+               for lid, items in applied_wrenches(sol, dynamic).items()}
+    inertia = _inertia(sol) if dynamic else {}
+    built: BuiltForces | None = None
+    if mistake is not None:
+        method = "analytic"
+    if method == "construction":
+        try:
+            built = build_forces(sol, joints, geo, dynamic, tol)
+        except NotDecomposable as exc:
+            notes.append(f"solved by the matrix method: {exc}")
+        except ConstructionError as exc:
+            raise InputError(str(exc), key="drive", file=mech.source) from None
+    if built is not None:
+        env = built.values
+        forces = {k: np.asarray(env[lab], dtype=float) for k, lab in built.forces.items()}
+        drives: dict[str, tuple[str, float]] = {}
+        for d in mech.drives:
+            kind = "torque" if d.kind == "angle" else "force"
+            drives[d.link] = (kind, float(env[built.drives[d.link]]))
+        return ForceSolution(sol, joints, forces, drives, inertia, dynamic, "construction",
+                             built, geo, applied, notes)
+    fw, dv, _ = solve_matrix(sol, joints, geo, dynamic, mistake)
+    drives = {d.link: ("torque" if d.kind == "angle" else "force", dv[d.link])
+              for d in mech.drives}
+    return ForceSolution(sol, joints, fw, drives, inertia, dynamic, "analytic", None, geo,
+                         applied, notes)
+
+
+def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
+                       notes: list[str], tol: Tolerance | None) -> None:
+    """Tilt each rough slider's line of action by the friction angle (Sec. 11.10, Ex 11.4).
+
+    As the book recommends, the problem is first solved without friction to
+    find the sense of each normal force; the friction force opposes the
+    impending motion of the slider relative to its guide (given, or from the
+    velocity); the resultant then leans by φ = atan μ from the normal.
+    """
+    from graphkin.forces.analytic import solve_matrix
+
+    mech = sol.mechanism
+    plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    for j in joints:
+        src = j.source
+        if j.kind != SLIDE or src is None or src.index not in mech.friction:
+            continue
+        mu, impending = mech.friction[src.index]
+        n, u = geo.normal[j.key], geo.along[j.key]
+        on_block = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
+        c = float(on_block @ n)
+        if impending is None:
+            if not sol.has_rates:
+                raise InputError("say which way the slider's motion is impending: impending = "
+                                 "\"ahead\" or \"behind\" (a static file has no velocity)",
+                                 key=f"{src.key}.impending", file=mech.source)
+            p = src.point
+            v = np.asarray(sol.velocity(p, src.link)) - _velocity_in(sol, src.on,
+                                                                       sol.position(p, src.link))
+            speed = float(v @ u)
+            if abs(speed) <= 1e-12 * max(1.0, float(np.hypot(*v))):
+                raise InputError("the slider is at rest relative to its guide at this posture: "
+                                 "say impending = \"ahead\" or \"behind\"",
+                                 key=f"{src.key}.impending", file=mech.source)
+            s = 1.0 if speed > 0 else -1.0
+        else:
+            s = 1.0 if impending == "ahead" else -1.0
+        if c == 0:
+            notes.append(f"{src.key}: no normal force without friction, so no friction")
+            continue
+        d = np.sign(c) * n - mu * s * u
+        geo.normal[j.key] = d / float(np.hypot(*d))
+        notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
+                     f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
+                     f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
+
+
+def _velocity_in(sol: Solution, lid: str, world: Any) -> np.ndarray:
+    """Velocity of the point of link ``lid`` at a world position."""
+    st = sol.links[lid]
+    d = np.asarray(world) - np.asarray(st.origin)
+    c, s = np.cos(st.angle), np.sin(st.angle)
+    return np.asarray(st.velocity(np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])))
+
+
+def pin_kind(j: Joint) -> bool:
+    """True for a pin joint."""
+    return j.kind == PIN
+
+
+__all__ += ["line_of", "pin_kind"]
