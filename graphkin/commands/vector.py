@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.io.files import parse_toml, read_text
+from graphkin.files import parse_toml, read_text
 from graphkin.keys import VECTOR, check_keys, read_units
 from graphkin.kinematics.vector_equation import (
     NAMES,

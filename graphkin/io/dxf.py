@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphkin.errors import InputError
-from graphkin.io.files import check_file
+from graphkin.files import check_file
 
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution

@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.io.files import parse_toml, read_text
+from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (

@@ -40,7 +40,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from graphkin.io.files import load_toml
+from graphkin.files import load_toml
 
 __all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
 
