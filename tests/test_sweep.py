@@ -728,3 +728,45 @@ def test_swept_curvature_is_the_single_posture_construction(bench: graphkin.Mech
         assert pcv.center is not None
         np.testing.assert_allclose([cols[f"cx_{name}"][k], cols[f"cy_{name}"][k]],
                                    pcv.center, rtol=1e-7, atol=1e-7 * scale)
+
+
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mechanisms())
+def test_swept_centers_and_curvature_of_random_mechanisms(rm: RandomMechanism) -> None:
+    # the file's posture is the first of a default sweep: there the swept centers must be the
+    # single-posture Kennedy search's and the curvature columns the single-posture
+    # constructions' (pins, sliders, slots: the primary centers come from the columns)
+    from graphkin.kinematics.curvature import curvature, path_curvatures
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    mech = rm.mechanism()
+    d = mech.drives[0]
+    # an angle drive's sweep starts at the file's angle; a slider's is told to
+    span = {} if d.kind == "angle" else {"start": d.value, "stop": d.value + 0.1 * mech.scale}
+    try:
+        sw = mech.sweep(count=6, centers=True, curvature=True, **span)
+        sol = graphkin.solve(mech)
+    except graphkin.GraphkinError:
+        return
+    if not sw.valid[0] or sw.method != "construction":
+        return
+    cols = sw.columns
+    scale = mech.scale
+    for c in instant_centers(sol).centers.values():
+        if f"x_{c.label}" not in cols or c.is_ideal:
+            continue
+        x, y = c.xy
+        tol = 1e-7 * max(scale, abs(x), abs(y))
+        assert abs(cols[f"x_{c.label}"][0] - x) <= tol, c.label
+        assert abs(cols[f"y_{c.label}"][0] - y) <= tol, c.label
+    for lid, lc in curvature(sol).items():
+        big = max(scale, float(lc.inflection_diameter))
+        np.testing.assert_allclose(cols[f"inflection_diameter_{lid}"][0],
+                                   lc.inflection_diameter, rtol=1e-6, atol=1e-7 * big)
+        np.testing.assert_allclose([cols[f"gx_{lid}"][0], cols[f"gy_{lid}"][0]],
+                                   lc.acceleration_center, rtol=1e-6, atol=1e-7 * scale)
+    for name, pcv in path_curvatures(sol).items():
+        if pcv.radius is None or f"rho_{name}" not in cols:
+            continue
+        np.testing.assert_allclose(cols[f"rho_{name}"][0], pcv.radius, rtol=1e-6,
+                                   atol=1e-9 * scale)

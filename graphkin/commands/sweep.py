@@ -43,7 +43,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="add every instant center (x_I13, y_I13; dx_/dy_ for one at infinity)")
     p.add_argument("--curvature", action="store_true",
                    help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
-                        "the inflection poles and diameters of the links")
+                        "the inflection poles and diameters and the centers of acceleration Γ of "
+                        "the links (jx_k, inflection_diameter_k, gx_k, ...)")
     p.add_argument("--units", default=None, metavar="UNITS",
                    help="write lengths, velocities, accelerations and angular rates in these "
                         "units, e.g. \"ft, ft/s, ft/s^2\" (angles stay in degrees)")

@@ -29,7 +29,7 @@ _KINDS = (
     (r"vx_|vy_", "velocity"),
     (r"ax_|ay_", "acceleration"),
     (r"dx_|dy_", "direction"),
-    (r"x_|y_|jx_|jy_|cx_|cy_|rho_|inflection_diameter_", "length"),
+    (r"x_|y_|jx_|jy_|gx_|gy_|cx_|cy_|rho_|inflection_diameter_", "length"),
 )
 
 

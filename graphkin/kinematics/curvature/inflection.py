@@ -70,5 +70,6 @@ def acceleration_center(point: ArrayLike, acceleration: ArrayLike, omega: ArrayL
     """
     a = np.asarray(acceleration, dtype=float)
     w, al = np.asarray(omega, dtype=float), np.asarray(alpha, dtype=float)
-    den = (w**4 + al**2)[..., None]
-    return _xy(point) + ((w**2)[..., None] * a + al[..., None] * perp(a)) / den
+    w2 = w * w
+    den = (w2 * w2 + al * al)[..., None]
+    return _xy(point) + (w2[..., None] * a + al[..., None] * perp(a)) / den

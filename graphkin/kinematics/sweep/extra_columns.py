@@ -110,6 +110,47 @@ def _kennedy_replay(sw: Sweep, sol: Solution) -> tuple[Construction, list[str]] 
     return hit
 
 
+def _primary_from_columns(sw: Sweep) -> dict[str, Array] | None:
+    """The primary centers of pins and sliders, straight from the swept columns.
+
+    A pin is the center of every pair of links it joins; a slider's center is
+    at infinity, perpendicular to its line (Eq. 3.21): the points and ideal
+    points that :func:`~graphkin.kinematics.instant_centers.instant_centers`
+    starts from, without building the sweep's link states.  None when the
+    mechanism has slots or rolling contact (their common normals need the
+    link states).
+    """
+    from itertools import combinations
+
+    from graphkin.construction.ops import OPS
+    from graphkin.kinematics.instant_centers.labels import center_label, pair_key
+
+    mech = sw.mechanism
+    if mech.slots or mech.rolling:
+        return None
+    cols = sw.columns
+    env: dict[str, Array] = {}
+    found: set[tuple[str, str]] = set()
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        for pin in mech.pins:
+            for a, b in combinations(pin.links, 2):
+                pair = pair_key(a, b)
+                if pair in found:
+                    continue
+                found.add(pair)
+                (env[center_label(*pair)],) = OPS["point"](
+                    tol=DEFAULT_TOL, xy=(cols[f"x_{pin.name}"], cols[f"y_{pin.name}"]))
+        for s in mech.sliders:
+            pair = pair_key(s.link, s.on)
+            if pair in found:
+                continue
+            found.add(pair)
+            th = np.radians(cols[f"angle_{s.on}"]) + s.direction_angle
+            (env[center_label(*pair)],) = OPS["ideal_point"](
+                tol=DEFAULT_TOL, direction=(-np.sin(th), np.cos(th)))
+    return env
+
+
 def _center_columns(sw: Sweep) -> dict[str, Array]:
     """Every instant center over the sweep: the Kennedy search resolved once, replayed on arrays.
 
@@ -122,22 +163,33 @@ def _center_columns(sw: Sweep) -> dict[str, Array]:
         from graphkin.kinematics.instant_centers.labels import _parse_pair
     except ImportError:
         return {}
-    sol = sw.solution
-    if not sol.has_rates:
-        sol = _with_unit_rates(sw)
-    plan = _kennedy_replay(sw, sol)
+    solved: list[Solution] = []
+
+    def solution() -> Solution:
+        if not solved:
+            sol = sw.solution
+            solved.append(sol if sol.has_rates else _with_unit_rates(sw))
+        return solved[0]
+
+    eng = sw._engine
+    key = ("kennedy", float(sw.values[0]), float(sw.values[-1]), len(sw))
+    plan = eng.extras.get(key) if eng is not None else None
+    if plan is None:
+        plan = _kennedy_replay(sw, solution())
     if plan is None:
         return {}
     steps, labels = plan
     # the primary centers (pins, sliders, contacts, slot normals) on the whole arrays
-    kn = _Kennedy(sol, DEFAULT_TOL, ())
-    kn.primary()
-    env = dict(kn.env)
+    env = _primary_from_columns(sw)
+    if env is None:
+        kn = _Kennedy(solution(), DEFAULT_TOL, ())
+        kn.primary()
+        env = dict(kn.env)
     given: dict[str, Any] = {}
     for s in steps:
         if s.op == "input":
             i, j = _parse_pair(s.outputs[0])
-            given[s.outputs[0]] = _equal_velocity_point(sol, i, j, sw.mechanism.scale,
+            given[s.outputs[0]] = _equal_velocity_point(solution(), i, j, sw.mechanism.scale,
                                                         DEFAULT_TOL)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         ev = steps.evaluate(given, values=env, strict=False)
@@ -182,29 +234,26 @@ def _curvature_columns(sw: Sweep) -> dict[str, Array]:
     """Curvature of every moving point's path and every moving link's inflection circle and Γ.
 
     Read from the swept columns (positions, velocities and accelerations of
-    the named points, ω and α of the links: the polygons' results), with no
-    second pass through the link states: per link, from any point ``P`` of it,
-    the velocity pole ``I = P + k × V_P / ω`` (Sec. 3.13), the acceleration
-    of the link's point at ``I``, ``A_I = A_P + α k × R_IP - ω² R_IP`` (Eq. 4.5),
-    the inflection pole ``J = I + A_I / ω²`` (Eqs. 4.46-4.47) and the center of
-    acceleration Γ (Eqs. 4.44-4.45); per point, ``ρ = V² / A^n`` (Eq. 4.49).
+    the named points, ω and α of the links: the polygons' results), one
+    component at a time, with no second pass through the link states.  Per
+    link, from any point ``P`` of it: the velocity pole ``I = P + k × V_P / ω``
+    (Sec. 3.13); the acceleration of the link's point at ``I``,
+    ``A_I = A_P + α k × R_IP - ω² R_IP`` (Eq. 4.5); the inflection pole
+    ``J = I + A_I / ω²`` and the inflection circle's diameter ``|A_I| / ω²``
+    (Eqs. 4.46-4.47, as :func:`~graphkin.kinematics.curvature.inflection_pole`);
+    the center of acceleration ``Γ = P + (ω² A_P + α k × A_P) / (ω⁴ + α²)``
+    (Eqs. 4.44-4.45, as :func:`~graphkin.kinematics.curvature.acceleration_center`).
+    Per moving point: ``ρ = V² / A^n`` with the center on the side ``A^n``
+    points to (Eq. 4.49, as :func:`~graphkin.kinematics.curvature.path_curvature`):
+    empty where the path is straight here or the point is at rest.
     """
-    try:
-        from graphkin.kinematics.curvature import (
-            acceleration_center,
-            inflection_pole,
-            path_curvature,
-        )
-    except ImportError:
-        return {}
     mech = sw.mechanism
     if not mech.has_rates:
         return {}
     cols = sw.columns
     out: dict[str, Array] = {}
-
-    def pt(name: str, kind: str = "") -> Array:
-        return np.stack([cols[f"{kind}x_{name}"], cols[f"{kind}y_{name}"]], axis=-1)
+    invalid = ~sw.valid
+    straight_tol = DEFAULT_TOL.angle
 
     def clean(arr: Array, bad: Array) -> Array:
         arr = np.array(arr, dtype=float)
@@ -214,28 +263,33 @@ def _curvature_columns(sw: Sweep) -> dict[str, Array]:
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for lid in mech.moving:
             name = next(iter(mech.links[lid].points))
-            p, v, a = pt(name), pt(name, "v"), pt(name, "a")
+            px, py = cols[f"x_{name}"], cols[f"y_{name}"]
+            vx, vy = cols[f"vx_{name}"], cols[f"vy_{name}"]
+            ax, ay = cols[f"ax_{name}"], cols[f"ay_{name}"]
             w, al = cols[f"omega_{lid}"], cols[f"alpha_{lid}"]
-            pole = p + np.stack([-v[:, 1], v[:, 0]], axis=-1) / w[:, None]
-            r = pole - p
-            a_pole = a + al[:, None] * np.stack([-r[:, 1], r[:, 0]], axis=-1) - \
-                (w * w)[:, None] * r
-            j = inflection_pole(pole, a_pole, w)
-            dia = np.hypot(j[:, 0] - pole[:, 0], j[:, 1] - pole[:, 1])
-            gamma = acceleration_center(p, a, w, al)
-            bad = ~sw.valid | (w == 0.0)
-            out[f"jx_{lid}"], out[f"jy_{lid}"] = clean(j[:, 0], bad), clean(j[:, 1], bad)
-            out[f"inflection_diameter_{lid}"] = clean(dia, bad)
-            bad_g = ~sw.valid | ((w == 0.0) & (al == 0.0))
-            out[f"gx_{lid}"], out[f"gy_{lid}"] = clean(gamma[:, 0], bad_g), \
-                clean(gamma[:, 1], bad_g)
+            w2 = w * w
+            rx, ry = -vy / w, vx / w                      # R_IP = k × V_P / ω
+            aix = ax - w2 * rx - al * ry                   # A_I (Eq. 4.5)
+            aiy = ay - w2 * ry + al * rx
+            bad = invalid | (w == 0.0)
+            out[f"jx_{lid}"] = clean(px + rx + aix / w2, bad)
+            out[f"jy_{lid}"] = clean(py + ry + aiy / w2, bad)
+            out[f"inflection_diameter_{lid}"] = clean(np.hypot(aix, aiy) / w2, bad)
+            den = w2 * w2 + al * al
+            bad_g = invalid | ((w == 0.0) & (al == 0.0))
+            out[f"gx_{lid}"] = clean(px + (w2 * ax - al * ay) / den, bad_g)
+            out[f"gy_{lid}"] = clean(py + (w2 * ay + al * ax) / den, bad_g)
         for name in mech.point_names:
             if FRAME in mech.point_links[name]:
                 continue
-            rho, center = path_curvature(pt(name), pt(name, "v"), pt(name, "a"))
-            bad = ~sw.valid | ~np.isfinite(rho)
-            out[f"rho_{name}"] = clean(rho, bad)
-            bad_c = bad | ~np.isfinite(center).all(axis=-1)
-            out[f"cx_{name}"], out[f"cy_{name}"] = clean(center[:, 0], bad_c), \
-                clean(center[:, 1], bad_c)
+            vx, vy = cols[f"vx_{name}"], cols[f"vy_{name}"]
+            ax, ay = cols[f"ax_{name}"], cols[f"ay_{name}"]
+            v2 = vx * vx + vy * vy
+            c = vx * ay - vy * ax                          # V × A
+            k = v2 / c
+            speed = np.sqrt(v2)
+            bad = invalid | (v2 == 0.0) | (np.abs(c) <= straight_tol * speed * np.hypot(ax, ay))
+            out[f"rho_{name}"] = clean(np.abs(k) * speed, bad)
+            out[f"cx_{name}"] = clean(cols[f"x_{name}"] - k * vy, bad)
+            out[f"cy_{name}"] = clean(cols[f"y_{name}"] + k * vx, bad)
     return out

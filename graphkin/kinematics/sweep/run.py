@@ -67,7 +67,8 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         Add the radius and center of curvature of every moving point's path,
         ``rho_<P>``, ``cx_<P>``, ``cy_<P>`` (Eq. 4.49), and every moving link's
         inflection pole and inflection-circle diameter, ``jx_<k>``, ``jy_<k>``,
-        ``inflection_diameter_<k>`` (Sec. 4.15), when the file gives rates.
+        ``inflection_diameter_<k>`` (Sec. 4.15), and its center of
+        acceleration Γ, ``gx_<k>``, ``gy_<k>`` (Sec. 4.14), when the file gives rates.
     progress : callable, optional
         Called with the fraction done, for long sweeps (evaluated in blocks of
         :data:`BLOCK` postures).
