@@ -225,8 +225,15 @@ def line_through(p: ArrayLike, d: ArrayLike) -> Array:
 
 
 def parallel(line: ArrayLike, through: ArrayLike) -> Array:
-    """The line parallel to ``line`` through the point ``through`` (same direction)."""
-    line, p = _f(line), _f(through)
+    """The line parallel to ``line`` through the point ``through`` (same direction).
+
+    ``line`` and ``through`` broadcast against each other (one line, many points).
+
+    >>> parallel([0.0, 1.0, 0.0], [[0.0, 2.0, 1.0], [5.0, -1.0, 1.0]])
+    array([[ 0.,  1., -2.],
+           [ 0.,  1.,  1.]])
+    """
+    line, p = np.broadcast_arrays(_f(line), _f(through))
     with np.errstate(invalid="ignore", divide="ignore"):  # through an ideal point: no line
         c = -(line[..., 0] * p[..., 0] + line[..., 1] * p[..., 1]) / p[..., 2]
     return np.stack([line[..., 0], line[..., 1], c], axis=-1)
@@ -243,7 +250,7 @@ def perpendicular(line: ArrayLike, through: ArrayLike) -> Array:
     >>> direction(perpendicular(join(point(0, 0), point(1, 0)), point(3, 3)))
     array([0., 1.])
     """
-    line, p = _f(line), _f(through)
+    line, p = np.broadcast_arrays(_f(line), _f(through))
     a, b = line[..., 0], line[..., 1]
     with np.errstate(invalid="ignore", divide="ignore"):  # through an ideal point: no line
         c = (b * p[..., 0] - a * p[..., 1]) / p[..., 2]

@@ -208,3 +208,19 @@ def test_meet_decides_parallel_by_angle_not_by_distance():
     l3 = g.line_through(g.point(0, 1), g.vector(np.cos(1e-10), -np.sin(1e-10)))
     q = g.meet(l1, l3)
     assert q[2] == 0.0 and abs(q[0]) == pytest.approx(1.0)
+
+
+def test_parallel_and_perpendicular_broadcast_one_line_against_many_points():
+    # found by the batch property test: a design axis on the points only (a slider's line
+    # fixed in the frame, its point varied per design) -- the lines through (0, 2) and
+    # (5, -1) parallel to y = 0 are y = 2 and y = -1; the perpendiculars are x = 0 and x = 5
+    from graphkin.geometry.ops import parallel, perpendicular
+
+    pts = np.array([[0.0, 2.0, 1.0], [5.0, -1.0, 1.0]])
+    par = parallel([0.0, 1.0, 0.0], pts)
+    assert par.shape == (2, 3)
+    np.testing.assert_allclose(-par[:, 2] / par[:, 1], [2.0, -1.0])
+    per = perpendicular([0.0, 1.0, 0.0], pts)
+    assert per.shape == (2, 3)
+    np.testing.assert_allclose(per[:, 0] * pts[:, 0] + per[:, 1] * pts[:, 1] + per[:, 2], 0.0)
+    np.testing.assert_allclose(per[:, 1], 0.0)
