@@ -23,7 +23,8 @@ from graphkin.kinematics.analytic import solve_analytic
 def compare(text: str) -> graphkin.Solution:
     mech = graphkin.loads(text)
     sol = mech.solve()
-    guess = {lid: (float(s.origin[0]), float(s.origin[1]), float(s.angle))  # LinkState.angle is in radians
+    # LinkState.angle is in radians
+    guess = {lid: (float(s.origin[0]), float(s.origin[1]), float(s.angle))
              for lid, s in sol.links.items() if lid != "1"}
     exact = solve_analytic(mech, guess=guess)
     for lid, s in sol.links.items():
