@@ -50,7 +50,7 @@ def main() -> None:
     for k in args.stages:
         mech = graphkin.loads(fourbar_chain(k))
         t = best_of(mech.solve)
-        r = best_of(lambda: text_report(mech.solve()), 1) if args.report else float("nan")
+        r = best_of(lambda m=mech: text_report(m.solve()), 1) if args.report else float("nan")
         print(f"{f'chain of {k} four-bars':<28}{len(mech.links):>7}{t:>10.3f}{r:>10.3f}")
     for n in args.cranks:
         mech = graphkin.loads(driven_cranks(n))
