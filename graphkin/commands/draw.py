@@ -45,7 +45,7 @@ def run(args: argparse.Namespace) -> int:
 
     import graphkin
     from graphkin.errors import InputError
-    from graphkin.io.files import check_output
+    from graphkin.files import check_output
     from graphkin.render import DiagramUnavailable, draw, save
     from graphkin.render.svg import FORMATS
 

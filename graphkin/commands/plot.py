@@ -43,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.errors import InputError
-    from graphkin.io.files import check_output
+    from graphkin.files import check_output
     from graphkin.kinematics.sweep import sweep
     from graphkin.progress import bar
     from graphkin.render.plots import parse_what, save_figure, sweep_figure

@@ -42,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("nothing to write: give -o OUT.html and/or --frames DIR",
                          key="--output")
     if args.output is not None:
-        from graphkin.io.files import check_output
+        from graphkin.files import check_output
 
         check_output(args.output, [args.file], "--output")
     sol = graphkin.load(args.file).solve()

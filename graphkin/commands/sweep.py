@@ -66,7 +66,7 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.errors import InputError
-    from graphkin.io.files import check_output
+    from graphkin.files import check_output
     from graphkin.kinematics.sweep import grashof, sweep
     from graphkin.output import OutputUnits
     from graphkin.output.csv import column_unit, convert_columns
