@@ -135,9 +135,10 @@ def _main(argv: Sequence[str] | None) -> int:
         return 2
     where = getattr(args, "file", None)
     try:
-        # numerical warnings never reach the user: results are checked for finiteness
+        # library warnings (numpy's RuntimeWarnings, matplotlib's missing glyphs) never reach
+        # the user: results are checked for finiteness, and errors are one line each
         with warnings.catch_warnings(), np.errstate(all="ignore"):
-            warnings.simplefilter("ignore", RuntimeWarning)
+            warnings.simplefilter("ignore")
             return int(args._run(args) or 0)
     except InputError as exc:
         print(f"graphkin: {_clip(exc.one_line())}", file=sys.stderr)

@@ -24,7 +24,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["MAX_FILE_BYTES", "check_file", "read_bytes", "read_text", "parse_toml", "load_toml"]
+__all__ = ["MAX_FILE_BYTES", "check_output", "check_file", "read_bytes", "read_text",
+           "parse_toml", "load_toml"]
 
 #: The largest file graphkin reads, in bytes (20 MB).
 MAX_FILE_BYTES = 20 * 1024 * 1024
@@ -58,6 +59,31 @@ def check_file(path: str | Path, *, limit: int = MAX_FILE_BYTES) -> Path:
         raise InputError(f"file too large ({st.st_size / 1e6:.1f} MB; graphkin reads files "
                          f"up to {limit / 1024 / 1024:.0f} MB)", file=str(p))
     return p
+
+
+def check_output(out: str | Path, inputs: list[str | Path], option: str) -> None:
+    """Refuse to write ``out`` over one of the command's own input files.
+
+    ``graphkin steps F -o F`` or ``graphkin sweep F --csv F`` would destroy
+    the mechanism file; the same file under another name (a link) is caught
+    too.
+
+    Raises
+    ------
+    InputError
+        ``out`` is one of ``inputs``.
+    """
+    if str(out) == "-":
+        return
+    o = Path(out)
+    for f in inputs:
+        p = Path(f)
+        try:
+            same = o.exists() and p.exists() and os.path.samefile(o, p)
+        except (OSError, ValueError):
+            same = False
+        if same or o.resolve() == p.resolve():
+            raise InputError(f"refusing to write over the input file {p}", key=option)
 
 
 def read_bytes(path: str | Path, *, limit: int = MAX_FILE_BYTES) -> bytes:

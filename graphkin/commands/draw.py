@@ -45,9 +45,11 @@ def run(args: argparse.Namespace) -> int:
 
     import graphkin
     from graphkin.errors import InputError
+    from graphkin.files import check_output
     from graphkin.render import DiagramUnavailable, draw, save
     from graphkin.render.svg import FORMATS
 
+    check_output(args.output, [args.file], "--output")
     out = Path(args.output)
     dxf = out.suffix.lower() == ".dxf"
     if out.suffix.lower().lstrip(".") not in FORMATS and not dxf:

@@ -43,10 +43,12 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.errors import InputError
+    from graphkin.files import check_output
     from graphkin.kinematics.sweep import sweep
     from graphkin.progress import bar
     from graphkin.render.plots import parse_what, save_figure, sweep_figure
 
+    check_output(args.output, [args.file], "--output")
     items = parse_what(args.what)
     mech = graphkin.load(args.file)
     if args.count < 2:

@@ -41,6 +41,10 @@ def run(args: argparse.Namespace) -> int:
     if args.output is None and args.frames is None:
         raise InputError("nothing to write: give -o OUT.html and/or --frames DIR",
                          key="--output")
+    if args.output is not None:
+        from graphkin.files import check_output
+
+        check_output(args.output, [args.file], "--output")
     sol = graphkin.load(args.file).solve()
     if args.diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
         return _forces(sol, args)

@@ -67,11 +67,13 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.errors import InputError
+    from graphkin.files import check_output
     from graphkin.kinematics.sweep import grashof, sweep
     from graphkin.output import OutputUnits
     from graphkin.output.csv import column_unit, convert_columns
     from graphkin.progress import CountingWriter, bar
 
+    check_output(args.csv, [args.file], "--csv")
     mech = graphkin.load(args.file)
     OutputUnits.of(mech.length_unit, args.units)  # a bad --units fails before the sweep runs
     if args.count < 1:

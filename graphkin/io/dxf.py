@@ -164,7 +164,9 @@ def write_dxf(solution: Solution, diagram: str, path: str | Path,
         k = nice_scale(ext / float(mech.scale)) if ext > 0 else 1.0
         note = f"1 {lu} = {k:g} {_RATE_UNIT[diagram].format(L=lu)}"
 
-    doc = ezdxf.new("R2010", setup=True)
+    # no setup=True: its standard styles are created in an order that depends on Python's
+    # hash seed, which made two runs differ; the drawing uses the default style only
+    doc = ezdxf.new("R2010")
     doc.header["$INSUNITS"] = INSUNITS.get(lu, 0)
     if note:
         doc.header.custom_vars.append("graphkin_scale", note)
@@ -241,11 +243,20 @@ def write_dxf(solution: Solution, diagram: str, path: str | Path,
     if note:
         text(f"Scale: {note}", (float(lo[0]), float(lo[1]) - 3 * size), layer="NOTES")
     path = Path(path)
+    # byte-identical output for the same input, like every other format: ezdxf's fixed
+    # header dates ($TDCREATE, $TDUPDATE ...) and constant GUIDs instead of the clock's
+    from ezdxf.document import CONST_MARKER_STRING, CREATED_BY_EZDXF
+
+    doc.ezdxf_metadata()[CREATED_BY_EZDXF] = CONST_MARKER_STRING
+    fixed = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
     try:
         doc.saveas(path)
     except OSError as exc:
         raise InputError(f"cannot write the drawing: {exc.strerror or exc}",
                          file=str(path)) from None
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = fixed
     return path
 
 

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from graphkin.construction import Construction, Mark, Role, Term, VectorEquation
+from graphkin.errors import ConstructionError
 from graphkin.kinematics.posture import PostureConstruction, _n
 from graphkin.mechanisms.model import FRAME, Drive, Mechanism, Rolling, Slider, Slot
 
@@ -135,10 +136,39 @@ class _Poly:
 
     def run(self) -> None:
         self.frame()
+        # an event whose rates are not known yet (a point of a rolling link whose surface's
+        # link is found later) waits, and is taken up as soon as they are
+        pending: list[tuple[object, ...]] = []
         for ev in self.pc.events:
-            getattr(self, f"ev_{ev[0]}")(*ev[1:])
+            if self._take(ev):
+                pending = [e for e in pending if not self._take(e)]
+            else:
+                pending.append(ev)
+        for r in self.mech.rolling:
+            if self.surface_ready(r):
+                self.rolling_rates(r)
+            pending = [e for e in pending if not self._take(e)]
         for r in self.mech.rolling:
             self.rolling_rates(r)
+        pending = [e for e in pending if not self._take(e)]
+        if pending:
+            raise ConstructionError("the velocity polygon cannot be drawn one step at a time "
+                                    f"here (waiting: {pending[0][0]} {pending[0][1:3]})",
+                                    step=str(pending[0][0]))
+
+    def _take(self, ev: tuple[object, ...]) -> bool:
+        """Carry out one posture event's polygon steps; False when its rates are not known yet."""
+        try:
+            getattr(self, f"ev_{ev[0]}")(*ev[1:])
+        except _NotYet:
+            return False
+        return True
+
+    def surface_ready(self, r: Rolling) -> bool:
+        """True when the images of the link that carries the rolling surface can be drawn."""
+        k = r.on
+        return k == FRAME or (k in self.omega and k in self.alpha and k in self.anchor
+                              and self.anchor[k] in self.vimg and self.anchor[k] in self.aimg)
 
     # ---- rolling contact (Sec. 3.7, 4.7) -----------------------------------
     def rolling(self, key: str) -> Rolling:
@@ -239,11 +269,16 @@ class _Poly:
         self.omega[a], self.alpha[a] = f"ω{a}", f"α{a}"
 
     def ev_point(self, lid: str, name: str, anchor: str) -> None:
+        if anchor not in self.vimg or anchor not in self.aimg:
+            raise _NotYet(name)
         for r in self.mech.rolling:
-            if r.link == lid and lid not in self.omega and anchor in self.vimg:
+            if r.link == lid and (lid not in self.omega or lid not in self.alpha):
+                if not self.surface_ready(r):
+                    raise _NotYet(name)
                 self.ensure_omega(r)
-            if r.link == lid and lid not in self.alpha and anchor in self.aimg:
                 self.rolling_rates(r)
+        if lid not in self.omega or lid not in self.alpha:
+            raise _NotYet(name)
         others = [p for p in self.mech.links[lid].points
                   if p != anchor and p in self.vimg and p in self.mech.links[lid].points]
         loc = self.mech.links[lid].points
@@ -474,6 +509,10 @@ class _Poly:
         self.A("angular_rate", (p, x, self.aimg[p], ax_i), al, role=Role.RESULT,
                note=f"α{lid} = A^t/R, its sense from the image.")
         self.alpha[lid] = al
+
+
+class _NotYet(Exception):
+    """A polygon step whose rates are not known yet (it waits for them)."""
 
 
 def build_polygons(mech: Mechanism, pc: PostureConstruction) -> Polygons:

@@ -12,7 +12,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from graphkin.errors import InputError
+from graphkin.construction import Construction
+from graphkin.errors import ConstructionError, DegenerateError, InputError
 from graphkin.geometry import ops as g
 from graphkin.kinematics.polygons import Polygons, build_polygons
 from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
@@ -133,6 +134,30 @@ def _local_of(state: LinkState, world: np.ndarray) -> np.ndarray:
     return np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
 
 
+#: Below this sine of the angle between its two lines, a velocity-polygon meet is taken as
+#: a meet of parallel lines: a toggle or dead-center posture.  A posture found exactly at
+#: a toggle has its tangent arcs' meet only to about √ε of the figure's size (1.5e-8), so
+#: the lines' directions carry errors of that order; 1e-7 stays above them.
+SINGULAR_SINE = 1e-7
+
+
+def singular_step(cx: Construction, values: Mapping[str, np.ndarray]) -> str | None:
+    """The first meet of a velocity polygon whose two lines are parallel (a singular posture).
+
+    The lines are kept with unit normals, so ``|a1 b2 - a2 b1|`` is the sine of
+    their angle, dimensionless and independent of the mechanism's size.
+    """
+    for st in cx.steps:
+        if st.op != "meet" or len(st.inputs) != 2:
+            continue
+        l1, l2 = (np.asarray(values[i], dtype=float) for i in st.inputs)
+        sine = np.abs(l1[..., 0] * l2[..., 1] - l1[..., 1] * l2[..., 0])
+        if np.any(~np.isfinite(sine) | (sine < SINGULAR_SINE)):
+            return (f"step {st.index} ({st.label}): the lines {st.inputs[0]} and "
+                    f"{st.inputs[1]} are parallel")
+    return None
+
+
 def solve(mech: Mechanism, tol: Tolerance | None = None,
           branches: dict[str, str] | None = None) -> Solution:
     """Solve a mechanism at the file's posture by the book's constructions.
@@ -169,10 +194,22 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
         states = link_states(mech, pc, values)
         return Solution(mech, states, "construction", constructions, notes=list(pc.notes),
                         branches=dict(pc.branches), values={"posture": values})
-    pol = build_polygons(mech, pc)
-    vin, ain = rate_inputs(mech, pol, pc, values, tol)
-    ev = pol.velocity.evaluate(vin, values=values, tol=tol)
-    ea = pol.acceleration.evaluate(ain, values=ev.values, tol=tol)
+    try:
+        pol = build_polygons(mech, pc)
+        vin, ain = rate_inputs(mech, pol, pc, values, tol)
+        ev = pol.velocity.evaluate(vin, values=values, tol=tol)
+        singular = singular_step(pol.velocity, ev.values)
+        if singular is None:
+            ea = pol.acceleration.evaluate(ain, values=ev.values, tol=tol)
+    except (ConstructionError, DegenerateError) as exc:
+        singular = str(exc)
+    if singular is not None:
+        states = link_states(mech, pc, values)
+        note = (f"toggle or dead-center posture: the velocities and accelerations are "
+                f"undetermined here ({singular}; Sec. 3.5)")
+        return Solution(mech, states, "construction", constructions,
+                        notes=[*pc.notes, note], branches=dict(pc.branches),
+                        values={"posture": values})
     states = link_states(mech, pc, values, ev.values, ea.values, pol)
     constructions["velocity"] = pol.velocity
     constructions["acceleration"] = pol.acceleration

@@ -29,7 +29,17 @@ from graphkin.mechanisms.model import (
 )
 from graphkin.units import length_factor, parse_rate
 
-__all__ = ["load", "loads", "from_dict"]
+__all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE"]
+
+#: The largest coordinate, length or rate accepted (squares and products of such numbers,
+#: as the constructions form them, stay finite).
+MAX_MAGNITUDE = 1e100
+
+
+def _short(value: Any, limit: int = 80) -> str:
+    """``repr`` of a value cut to ``limit`` characters (a hostile value is not echoed whole)."""
+    text = value if isinstance(value, str) else repr(value)
+    return text if len(text) <= limit else text[:limit - 1] + "…"
 
 def load(path: str | Path) -> Mechanism:
     """Read a mechanism file.
@@ -78,9 +88,15 @@ class _Parser:
                 or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
                            for v in value)):
             raise self.fail(key, f"a point must be two numbers [x, y], not {value!r}")
-        x, y = float(value[0]), float(value[1])
+        try:
+            x, y = float(value[0]), float(value[1])
+        except OverflowError:  # an integer of hundreds of digits
+            raise self.fail(key, "a coordinate too large for a float (beyond 1e308)") from None
         if not (math.isfinite(x) and math.isfinite(y)):
-            raise self.fail(key, f"coordinates must be finite numbers, not {value!r}")
+            raise self.fail(key, f"coordinates must be finite numbers, not {_short(value)}")
+        if max(abs(x), abs(y)) > MAX_MAGNITUDE:
+            raise self.fail(key, f"coordinates beyond ±{MAX_MAGNITUDE:g} are not supported "
+                            "(choose a larger length unit)")
         return (x, y)
 
     def table(self, value: Any, key: str) -> Mapping[str, Any]:
@@ -121,9 +137,12 @@ class _Parser:
 
     def rate(self, value: Any, kind: str, key: str) -> float:
         try:
-            return parse_rate(value, kind, self.unit)
+            v = parse_rate(value, kind, self.unit)
         except ValueError as exc:
-            raise self.fail(key, str(exc)) from None
+            raise self.fail(key, _short(str(exc), 200)) from None
+        if abs(v) > MAX_MAGNITUDE:
+            raise self.fail(key, f"values beyond ±{MAX_MAGNITUDE:g} are not supported")
+        return v
 
     def entries(self, name: str) -> list[Mapping[str, Any]]:
         raw = self.data.get(name, [])
@@ -307,7 +326,10 @@ class _Parser:
             p0, p1 = self.line_in(on, r["line"], f"{key}.line")
             side = r.get("side")
             if side is None:
-                hint = self.data.get("assembly", {}).get(center) if on == FRAME else None
+                hints = self.table(self.data.get("assembly", {}), "assembly")
+                hint = hints.get(center) if on == FRAME else None
+                if hint is not None:
+                    hint = self.xy(hint, f"assembly.{center}")
                 if hint is None:
                     raise self.fail(f"{key}.side", "say on which side of the line the circle "
                                     "lies: side = \"left\" or \"right\" (of the line's direction)")

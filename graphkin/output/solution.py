@@ -67,16 +67,24 @@ def solution_to_dict(sol: Solution, units: OutputUnits | None = None) -> dict[st
         entry: dict[str, Any] = {"angle": wrap_degrees(float(st.angle))}
         if st.omega is not None:
             entry["omega"] = float(st.omega) * u.k_omega
+        elif mech.has_rates:  # rates given, undetermined here (a toggle; see the notes)
+            entry["omega"] = None
         if st.alpha is not None:
             entry["alpha"] = float(st.alpha) * u.k_alpha
+        elif mech.has_rates:
+            entry["alpha"] = None
         links[lid] = entry
     points: dict[str, Any] = {}
     for name in mech.point_names:
         entry = {"position": (sol.position(name) * u.k_length).tolist()}
         if sol.has_rates:
             entry["velocity"] = (sol.velocity(name) * u.k_velocity).tolist()
+        elif mech.has_rates:  # undetermined at a toggle or dead center (see the notes)
+            entry["velocity"] = None
         if sol.has_accelerations:
             entry["acceleration"] = (sol.acceleration(name) * u.k_acceleration).tolist()
+        elif mech.has_accelerations:
+            entry["acceleration"] = None
         entry["links"] = list(mech.point_links[name])
         points[name] = entry
     out: dict[str, Any] = {
