@@ -133,6 +133,15 @@ def _links(ax: Any, fs: ForceSolution, only: str | None, gid: str) -> None:
                             fontsize=SMALL_PT)
             t.set_gid(f"{gid}-label-{n}")
     if only is None:
+        span = float(mech.scale)
+        for j in fs.joints:  # the guides of the sliders (Fig. 11.8a)
+            if j.key in fs.geometry.along and j.key in fs.geometry.base:
+                b, u = fs.geometry.base[j.key], fs.geometry.along[j.key]
+                pt = fs.geometry.points[j.point]
+                t0 = float((pt - b) @ u)
+                ends = np.array([b + (t0 - span) * u, b + (t0 + span) * u])
+                (gl,) = ax.plot(ends[:, 0], ends[:, 1], color=GREY, lw=0.8, zorder=0)
+                gl.set_gid(f"{gid}-guide-{j.key}")
         for p in mech.pins:
             if "1" in p.links:
                 xy = sol.position(p.name)
@@ -276,6 +285,12 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Dra
            if n not in mech.helper_points]
     center, span = _extent(pts)
     lscale = choose_scale(span * 1.35, PANEL_IN, "in", mech.length_unit)
+    # the loads' arrows (a fixed length on paper) must fit in panel (a) too
+    tails = [at - _unit(f) * 0.55 * lscale.per_inch for lid in moving
+             for _, f, at, color, _ in _forces_on(fs, lid) if color != INK]
+    if tails:
+        center, span = _extent(pts + tails)
+        lscale = choose_scale(span * 1.35, PANEL_IN, "in", mech.length_unit)
     fmax = 0.0
     for _, _, items in polys:
         acc = np.zeros(2)
