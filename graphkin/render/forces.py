@@ -419,14 +419,20 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Dra
                      else f"{tag}: polygon of link {lid}")
             pp = _Panel(fig, pos % ncols, pos // ncols, rows, c, fscale.per_inch, title, name)
             vectors[name] = [(lab, tail, tail + v) for (lab, v, _, _), tail in zip(items, path)]
+            turn = sum(float(a[0] * b[1] - a[1] * b[0]) for a, b in zip(path, path[1:]))
             for (lab, v, color, raw), tail in zip(items, path):
                 if np.hypot(*v) == 0:
                     continue
                 color = hue(raw, color)
                 drawing[f"{name}-{lab}"] = pp.arrow(tail, tail + v, color, f"{name}-{lab}")
-                drawing.texts[f"{name}-{lab}"] = pp.text(tail + v / 2, lab,
-                                                         f"{name}-label-{lab}", color,
-                                                         size=SMALL_PT)
+                # the label beside the middle of its vector, outside the polygon (the
+                # interior is on the left of each side of a counterclockwise polygon)
+                u = _unit(v) * (1.0 if turn > 0 else -1.0)
+                t = pp.text(tail + v / 2, lab, f"{name}-label-{lab}", color, size=SMALL_PT,
+                            offset=(8 * float(u[1]), -8 * float(u[0])))
+                t.set_ha("center")
+                t.set_va("center")
+                drawing.texts[f"{name}-{lab}"] = t
             (o,) = pp.ax.plot([0], [0], marker="o", ms=3, color=INK)
             o.set_gid(f"{name}-start")
     return drawing
