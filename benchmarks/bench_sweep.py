@@ -1,20 +1,30 @@
-"""Time ``mech.sweep(count=3600)`` against a closed-form numpy four-bar (and pylinkage).
+"""graphkin's sweeps and batches against a closed-form numpy four-bar (and pylinkage).
 
 Usage::
 
-    python benchmarks/bench_sweep.py [--count 3600] [--repeat 30] [FILE]
+    python benchmarks/bench_sweep.py [--rounds 15] [--markdown] [--no-pylinkage] [FILE]
 
-All three do the same work for every posture of one turn of the crank of
-``benchmarks/bench_fourbar.toml``: positions, velocities and accelerations of every
-point (and every link's angle, ω, α).  The closed form is Freudenstein's
-equation with the loop-closure derivatives (``fourbar_closed_form.py``); it
-produces the same CSV columns.  pylinkage is timed if it is installed (its
-solver is compiled with numba when numba is installed, pure Python
-otherwise: the report says which).
+Every contestant does the same work on the four-bar of ``bench_fourbar.toml``:
+positions, velocities and accelerations of every point and every link's
+angle, ω and α, for
+
+* one design at 36, 360, 3600 and 360 000 postures of a turn of the crank
+  (``mech.sweep``), and
+* 1000 designs (coupler and rocker lengths) x 360 postures (``graphkin.batch``),
+
+against the closed form (Freudenstein's equation with the loop-closure
+derivatives, ``fourbar_closed_form.py``; it produces the same columns, one
+design or ``(designs, postures)`` arrays).  The instant-center and curvature
+columns of a 3600-posture sweep are timed against the plain sweep.
+pylinkage's fast path (``Linkage.step_fast_with_kinematics``) is timed if it
+is installed (compiled with numba when numba is installed, pure Python
+otherwise: the report says which), and skipped otherwise.
 
 Times are CPU times of this process (``time.process_time``), the best of
-``--repeat`` interleaved rounds, so that other programs on the machine
-disturb them as little as possible.  The ratios are printed; nothing is asserted.
+``--rounds`` interleaved rounds, so that the other programs on a shared
+machine disturb them as little as possible; pylinkage, much slower, is timed
+over fewer rounds.  The ratios are printed; nothing is asserted (the tests
+check the numbers, never the times).
 """
 
 from __future__ import annotations
@@ -23,7 +33,9 @@ import argparse
 import gc
 import importlib.util
 import math
+import os
 import pathlib
+import platform
 import sys
 import time
 from collections.abc import Callable
@@ -32,7 +44,9 @@ from typing import Any
 import numpy as np
 
 HERE = pathlib.Path(__file__).resolve().parent
-DEFAULT = pathlib.Path(__file__).resolve().parent / "bench_fourbar.toml"
+DEFAULT = HERE / "bench_fourbar.toml"
+COUNTS = (36, 360, 3600, 360_000)
+DESIGNS, DESIGN_POSTURES = 1000, 360
 
 
 def _closed_form_module() -> Any:
@@ -45,16 +59,31 @@ def _closed_form_module() -> Any:
     return mod
 
 
-def best_time(fn: Callable[[], Any], number: int) -> float:
-    """CPU seconds of one call: the best of one round of ``number`` calls."""
+def cpu_time(fn: Callable[[], Any], number: int) -> float:
+    """CPU seconds of one call, averaged over ``number`` calls."""
     t0 = time.process_time()
     for _ in range(number):
         fn()
     return (time.process_time() - t0) / number
 
 
-def pylinkage_fourbar(mech: Any, count: int) -> Callable[[], Any] | None:
-    """A pylinkage model of the bench four-bar, or None when pylinkage is missing."""
+def best_of(cands: dict[str, Callable[[], Any]], rounds: int, number: int) -> dict[str, float]:
+    """The best CPU time of each candidate over interleaved rounds."""
+    best = {k: math.inf for k in cands}
+    gc.collect()
+    gc.disable()
+    try:
+        for _ in range(rounds):
+            for name, fn in cands.items():
+                best[name] = min(best[name], cpu_time(fn, number))
+    finally:
+        gc.enable()
+    return best
+
+
+def pylinkage_fourbar(mech: Any, count: int, lengths: tuple[float, float] | None = None
+                      ) -> Callable[[], Any] | None:
+    """pylinkage's model of the bench four-bar (coupler and rocker lengths), or None."""
     try:
         import pylinkage as pl
     except ImportError:
@@ -65,6 +94,8 @@ def pylinkage_fourbar(mech: Any, count: int) -> Callable[[], Any] | None:
     r2 = math.dist(pts["2"]["A"], pts["2"]["B"])
     r3 = math.dist(pts["3"]["B"], pts["3"]["C"])
     r4 = math.dist(pts["4"]["D"], pts["4"]["C"])
+    if lengths is not None:
+        r3, r4 = lengths
     hint = mech.assembly["C"]
     A = pl.Ground(*a, name="A")
     D = pl.Ground(*dd, name="D")
@@ -87,12 +118,25 @@ def pylinkage_fourbar(mech: Any, count: int) -> Callable[[], Any] | None:
     return run
 
 
+def machine() -> str:
+    """One line: CPU model, cores, Python, numpy."""
+    model = platform.processor() or platform.machine()
+    try:
+        for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                model = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    return (f"{model}, {os.cpu_count()} cores, Python {platform.python_version()}, "
+            f"numpy {np.__version__}")
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("file", nargs="?", default=str(DEFAULT))
-    ap.add_argument("--count", type=int, default=3600)
-    ap.add_argument("--repeat", type=int, default=30)
-    ap.add_argument("--number", type=int, default=5)
+    ap.add_argument("--rounds", type=int, default=15)
+    ap.add_argument("--markdown", action="store_true", help="print the table as Markdown")
     ap.add_argument("--no-pylinkage", action="store_true")
     args = ap.parse_args(argv)
 
@@ -101,61 +145,88 @@ def main(argv: list[str] | None = None) -> int:
     cf = _closed_form_module()
     mech = graphkin.load(args.file)
     d = mech.drives[0]
+    w, al = d.rate, d.rate2 or 0.0
     fb = cf.fourbar_from_mechanism(mech)
-    theta = d.value + 2 * math.pi * np.arange(args.count) / args.count
-
-    t0 = time.process_time()
-    sw = mech.sweep(count=args.count)
-    cold = time.process_time() - t0
-
-    # the same numbers, at a few postures
-    ref = fb.solve(theta, d.rate, d.rate2 or 0.0)
-    worst = max(float(np.max(np.abs(sw.columns[k] - ref[k]) / (1.0 + np.abs(ref[k]))))
-                for k in ref)
-
-    def graphkin_sweep() -> Any:
-        return mech.sweep(count=args.count)
-
-    def closed_form() -> Any:
-        return fb.solve(theta, d.rate, d.rate2 or 0.0)
-
-    cands: dict[str, Callable[[], Any]] = {"graphkin": graphkin_sweep, "closed form": closed_form}
-    best = {k: math.inf for k in cands}
-    gc.collect()
-    gc.disable()
+    rows: list[tuple[str, float, float, str]] = []  # case, graphkin, closed form, pylinkage
+    pyl_ok = not args.no_pylinkage and pylinkage_fourbar(mech, 4) is not None
     try:
-        for _ in range(args.repeat):
-            for name, fn in cands.items():
-                best[name] = min(best[name], best_time(fn, args.number))
-    finally:
-        gc.enable()
+        import numba  # noqa: F401
+        pyl_how = "numba"
+    except ImportError:
+        pyl_how = "pure Python"
 
-    pyl = None if args.no_pylinkage else pylinkage_fourbar(mech, args.count)
-    pyl_time = None
-    if pyl is not None:
-        pyl()
-        pyl_time = min(best_time(pyl, 1) for _ in range(3))
+    for count in COUNTS:
+        theta = d.value + 2 * math.pi * np.arange(count) / count
+        sw = mech.sweep(count=count)
+        ref = fb.solve(theta, w, al)
+        worst = max(float(np.max(np.abs(sw.columns[k] - ref[k]) / (1.0 + np.abs(ref[k]))))
+                    for k in ref)
+        assert worst < 1e-8, worst
+        number = max(1, 20_000 // count)
+        rounds = args.rounds if count < 100_000 else max(3, args.rounds // 3)
+        best = best_of({"g": lambda c=count: mech.sweep(count=c),
+                        "c": lambda t=theta: fb.solve(t, w, al)}, rounds, number)
+        pyl = ""
+        if pyl_ok:
+            run = pylinkage_fourbar(mech, count)
+            assert run is not None
+            run()
+            pyl_rounds = 3 if count <= 3600 else 1
+            pyl = f"{min(cpu_time(run, 1) for _ in range(pyl_rounds)) * 1e3:.3g} ms"
+        rows.append((f"1 design, {count} postures", best["g"], best["c"], pyl))
 
-    g, c = best["graphkin"], best["closed form"]
-    print(f"{args.count} postures of {pathlib.Path(args.file).name}: positions, velocities and "
-          f"accelerations of every point ({len(sw.columns)} columns)")
-    print(f"  graphkin mech.sweep       {g * 1e3:9.3f} ms   (first call, building the "
-          f"constructions: {cold * 1e3:.1f} ms)")
-    print(f"  closed-form numpy         {c * 1e3:9.3f} ms")
-    print(f"  ratio graphkin/closed     {g / c:9.2f}   (goal 1.5, acceptance 2)")
-    print(f"  largest difference        {worst:9.1e}   (relative, over every column)")
-    if pyl_time is not None:
-        try:
-            import numba  # noqa: F401
-            how = "numba-compiled"
-        except ImportError:
-            how = "pure Python: numba is not installed"
-        print(f"  pylinkage ({how}) {pyl_time * 1e3:9.1f} ms   ratio pylinkage/graphkin "
-              f"{pyl_time / g:.1f}")
-    elif args.no_pylinkage:
-        print("  pylinkage                 not timed (--no-pylinkage)")
-    else:
-        print("  pylinkage                 not installed (pip install pylinkage)")
+    # a thousand designs
+    r3 = np.linspace(10.0, 14.0, DESIGNS)
+    r4 = np.linspace(9.0, 12.5, DESIGNS)
+    dims = {"links.3.C": np.stack([r3, 0 * r3], 1), "links.4.C": np.stack([r4, 0 * r4], 1)}
+    theta = d.value + 2 * math.pi * np.arange(DESIGN_POSTURES) / DESIGN_POSTURES
+    fbb = cf.fourbar_batch(mech, dims)
+    b = graphkin.batch(mech, dims, count=DESIGN_POSTURES)
+    ref = fbb.solve(theta, w, al)
+    for k, v in ref.items():
+        v = np.broadcast_to(v, b.columns[k].shape)
+        assert np.allclose(b.columns[k], v, rtol=1e-8, atol=1e-8 * (1 + np.abs(v).max())), k
+    best = best_of({"g": lambda: graphkin.batch(mech, dims, count=DESIGN_POSTURES),
+                    "c": lambda: fbb.solve(theta, w, al)}, max(3, args.rounds // 3), 1)
+    pyl = ""
+    if pyl_ok:
+        runs = [pylinkage_fourbar(mech, DESIGN_POSTURES, (float(a), float(c)))
+                for a, c in zip(r3, r4)]
+        t0 = time.process_time()
+        for run in runs:
+            assert run is not None
+            run()
+        pyl = f"{(time.process_time() - t0) * 1e3:.3g} ms"
+    rows.append((f"{DESIGNS} designs x {DESIGN_POSTURES} postures", best["g"], best["c"], pyl))
+
+    # centers and curvature over a sweep
+    extras = best_of({"plain": lambda: mech.sweep(count=3600),
+                      "centers": lambda: mech.sweep(count=3600, centers=True),
+                      "curvature": lambda: mech.sweep(count=3600, curvature=True)},
+                     args.rounds, 3)
+
+    print(f"{pathlib.Path(args.file).name}: positions, velocities and accelerations of every "
+          f"point; CPU time, best of {args.rounds} interleaved rounds")
+    print(f"machine: {machine()}")
+    pyl_head = f"pylinkage ({pyl_how})" if pyl_ok else "pylinkage (not installed)"
+    if args.markdown:
+        print(f"\n| case | graphkin | closed-form numpy | ratio | {pyl_head} |")
+        print("|---|---|---|---|---|")
+        for case, g, c, p in rows:
+            print(f"| {case} | {g * 1e3:.3g} ms | {c * 1e3:.3g} ms | {g / c:.2f} | {p} |")
+        print("\n| 3600 postures | time | ratio to the plain sweep |")
+        print("|---|---|---|")
+        for k in ("plain", "centers", "curvature"):
+            print(f"| sweep{'' if k == 'plain' else f' + {k}'} | {extras[k] * 1e3:.3g} ms | "
+                  f"{extras[k] / extras['plain']:.2f} |")
+        return 0
+    print(f"\n  {'case':32s} {'graphkin':>11s} {'closed form':>12s} {'ratio':>6s}   {pyl_head}")
+    for case, g, c, p in rows:
+        print(f"  {case:32s} {g * 1e3:8.3f} ms {c * 1e3:9.3f} ms {g / c:6.2f}   {p}")
+    print("\n  3600 postures: sweep + centers "
+          f"{extras['centers'] / extras['plain']:.2f}x, + curvature "
+          f"{extras['curvature'] / extras['plain']:.2f}x the plain sweep "
+          f"({extras['plain'] * 1e3:.3f} ms)")
     return 0
 
 

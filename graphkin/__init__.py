@@ -8,25 +8,7 @@ centers, curvature.  Importing graphkin does not import matplotlib.
 Examples
 --------
 >>> import graphkin
->>> mech = graphkin.loads('''
-... [links.1]
-... A = [0, 0]
-... D = [10, 0]
-... [links.2]
-... A = [0, 0]
-... B = [4, 0]
-... [links.3]
-... B = [0, 0]
-... C = [18, 0]
-... [links.4]
-... D = [0, 0]
-... C = [11, 0]
-... [drive]
-... link = 2
-... angle = 120
-... [assembly]
-... C = [15, 10]
-... ''')
+>>> mech = graphkin.examples.fourbar()
 >>> sol = mech.solve()
 >>> round(float(sol.angle("3")), 2)  # θ3 in degrees; Example 3.1: the book gives 20.92°
 20.92

@@ -13,11 +13,21 @@ import re
 from functools import lru_cache
 from typing import Any
 
-__all__ = ["registry", "length_factor", "parse_rate", "parse_quantity", "RateKind"]
+__all__ = ["registry", "length_factor", "parse_rate", "parse_quantity", "quantity", "split_number",
+           "check_unit", "RateKind"]
 
 RateKind = str  # "omega", "alpha", "velocity", "acceleration", "length", "angle"
 
 _SENSE = re.compile(r"\s*\b(ccw|cw)\s*$", re.IGNORECASE)
+
+# A number as written in a file: read by Python's float(), never evaluated.
+_NUMBER = re.compile(r"\s*([+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?)\s*(.*)$", re.DOTALL)
+# One unit name with an optional small exponent (^2, **-1, ², ³, ⁻¹), as pint spells them.
+_UNIT_WORD = (r"(?:[A-Za-z_°µμΩ][A-Za-z_0-9°µμΩ]*|\))"
+              r"(?:\s*(?:\^|\*\*)\s*[+-]?\d{1,2}(?:\.\d{1,3})?|[⁻¹²³]+)?")
+_UNIT = re.compile(rf"\s*\(*\s*{_UNIT_WORD}(?:\s*(?:\*|/|·|\s)\s*\(*\s*{_UNIT_WORD}|\s*\))*\s*$")
+#: Longest unit text accepted (a unit is a few words; anything longer is not a unit).
+MAX_UNIT_CHARS = 64
 
 # what each kind of rate is measured in, inside graphkin ("L" is the file's length unit)
 _BASE = {
@@ -41,10 +51,103 @@ def registry() -> Any:
     return ureg
 
 
+def check_unit(unit: str) -> str:
+    """Accept a unit expression only if pint can read it without evaluating arithmetic.
+
+    Unit names joined by ``*``, ``/``, ``·`` or spaces, each with an optional
+    exponent of at most two digits (``s^2``, ``s**-1``, ``s²``), and
+    parentheses.  Anything else (``9**9**9``, function calls, long text) is
+    refused before pint sees it, so no unit string can make pint compute for
+    ever.
+
+    Raises
+    ------
+    ValueError
+        The text is not a unit expression.
+
+    Examples
+    --------
+    >>> check_unit("rad/s^2")
+    'rad/s^2'
+    >>> check_unit("9**9**9 rad")
+    Traceback (most recent call last):
+    ...
+    ValueError: '9**9**9 rad' is not a unit
+    """
+    if (not isinstance(unit, str) or len(unit) > MAX_UNIT_CHARS or not _UNIT.match(unit)
+            or unit.count("(") != unit.count(")")):
+        raise ValueError(f"{unit!r} is not a unit")
+    return unit
+
+
+def split_number(text: str) -> tuple[float, str]:
+    """Split ``"900 rev/min"`` into the number, read by ``float``, and the unit text.
+
+    The number is never evaluated as an expression; the unit is checked by
+    :func:`check_unit` (an empty unit is allowed).
+
+    Raises
+    ------
+    ValueError
+        No number at the start, a number too large for a float, or a bad unit.
+
+    Examples
+    --------
+    >>> split_number("-1.5e3 mm/s")
+    (-1500.0, 'mm/s')
+    >>> split_number("36")
+    (36.0, '')
+    """
+    m = _NUMBER.match(text)
+    if not m:
+        raise ValueError(f"cannot read {text!r} as a number with a unit")
+    try:
+        value = float(m.group(1))
+    except (OverflowError, ValueError):
+        raise ValueError(f"cannot read {text!r} as a number with a unit") from None
+    if not math.isfinite(value):
+        raise ValueError(f"{text!r} is not a finite number")
+    unit = m.group(2).strip()
+    if unit:
+        try:
+            check_unit(unit)
+        except ValueError:
+            raise ValueError(f"cannot read {text!r} as a number with a unit") from None
+    return value, unit
+
+
+def quantity(text: str) -> Any:
+    """A pint Quantity from ``"1 in"``: the number by :func:`split_number`, pint the unit only.
+
+    Raises
+    ------
+    ValueError
+        Unreadable text or an unknown unit.
+    """
+    value, unit = split_number(text)
+    ureg = registry()
+    try:
+        return ureg.Quantity(value, unit.replace("^", "**") or "dimensionless")
+    except Exception as exc:  # pint raises several unrelated types
+        raise ValueError(f"unknown unit in {text!r}") from exc
+
+
+def _as_float(value: int | float) -> float:
+    """A file's number as a float; integers too large for a float raise ValueError."""
+    try:
+        v = float(value)
+    except OverflowError:
+        raise ValueError("a number too large (beyond 1e308)") from None
+    if not math.isfinite(v):
+        raise ValueError(f"{value!r} is not a finite number")
+    return v
+
+
 def length_factor(unit: str) -> float:
     """How many metres one ``unit`` is; raises ``ValueError`` if it is not a length."""
     ureg = registry()
     try:
+        check_unit(unit)
         q = ureg.Quantity(1.0, unit)
     except Exception as exc:  # pint raises several unrelated types
         raise ValueError(f"unknown unit {unit!r}") from exc
@@ -80,10 +183,7 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
     if isinstance(value, bool):
         raise ValueError(f"expected a number or a string with a unit, not {value!r}")
     if isinstance(value, (int, float)):
-        v = float(value)
-        if not math.isfinite(v):
-            raise ValueError(f"{value!r} is not a finite number")
-        return v, None
+        return _as_float(value), None
     if not isinstance(value, str):
         raise ValueError(f"expected a number or a string with a unit, not {value!r}")
     text = value.strip()
@@ -92,13 +192,10 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
     if m:
         sense = m.group(1).lower()
         text = text[: m.start()].strip()
-    ureg = registry()
     try:
-        q = ureg.Quantity(text.replace("^", "**"))
-    except Exception as exc:
-        raise ValueError(f"cannot read {value!r} as a quantity") from exc
-    if not hasattr(q, "dimensionality"):
-        q = ureg.Quantity(float(q))
+        q = quantity(text)
+    except ValueError:
+        raise ValueError(f"cannot read {value!r} as a quantity") from None
     target = _BASE[kind].replace("L", f"({length_unit})")
     try:
         if q.dimensionless and kind not in ("angle",):

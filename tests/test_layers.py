@@ -19,7 +19,7 @@ import graphkin
 
 PACKAGE = Path(graphkin.__file__).parent
 
-BASE = {"errors", "tolerance", "units", "text", "keys", "progress"}
+BASE = {"errors", "tolerance", "units", "text", "keys", "progress", "files"}
 """Leaf modules every layer may use."""
 
 MODEL = BASE | {"geometry", "construction", "mechanisms"}
@@ -31,6 +31,7 @@ ALLOWED: dict[str, set[str]] = {
     "text": set(),
     "keys": {"errors"},
     "progress": set(),
+    "files": {"errors"},
     "geometry": BASE,
     "construction": BASE | {"geometry"},
     "mechanisms": BASE | {"geometry"},

@@ -23,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.check.text import printable
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
 from graphkin.units import parse_quantity
@@ -331,23 +332,7 @@ def parse_key(text: str, mech: Mechanism, *, file: str | None = None) -> Key:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> parse_key("V_CB", mech)
     Key(text='V_CB', kind='V', args=('C', 'B'))
     >>> parse_key("omega3", mech).args, parse_key("I13", mech).args
@@ -599,8 +584,13 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         return g
     # vectors
     if isinstance(value, dict):
-        unknown = set(value) - {"magnitude", "direction", "angle"}
-        if unknown or "magnitude" not in value:
+        valid = ("magnitude", "direction", "angle")
+        for u in value:
+            if u not in valid:
+                raise InputError(f"unknown key{suggest(u, valid)}; a vector table has "
+                                 "magnitude and, optionally, direction", key=f"{k}.{u}",
+                                 file=file)
+        if "magnitude" not in value:
             raise InputError("a vector table has magnitude and, optionally, direction",
                              key=k, file=file)
         mag, _, g.unit, g.factor = _quantity(value["magnitude"], kind, mech, k, file)
@@ -747,7 +737,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
                 raise InputError(exc.message + suggest(k, known), key=k, file=file) from None
             given.append(parse_value(key, v, mech, file=file))
         except InputError as exc:
-            bad.append(exc)
+            bad.append(InputError(printable(exc.message), key=printable(exc.key or k),
+                                  file=exc.file))
     if not given:
         if bad:
             raise bad[0]
@@ -756,7 +747,8 @@ def answers_from_dict(data: dict[str, Any], mech: Mechanism, *,
 
 
 def _is_vector_table(v: dict[str, Any]) -> bool:
-    return "magnitude" in v
+    near = {"magnitude", "direction", "angle"}
+    return "magnitude" in v or any(difflib.get_close_matches(k, near, n=1) for k in v)
 
 
 def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
@@ -765,18 +757,7 @@ def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... units = { length = "in" }
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = "900 rev/min"
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ans = loads_answers('V_B = "31.4 ft/s at -150 deg"', mech)
     >>> g = ans.given[0]
     >>> round(g.value, 1), g.direction, g.unit

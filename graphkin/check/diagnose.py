@@ -134,20 +134,9 @@ class Diagnoser:
     --------
     >>> import graphkin
     >>> from graphkin.check.answers import loads_answers
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... omega = 3
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ev = Evaluator(graphkin.solve(mech))
-    >>> ans = loads_answers('omega2 = "3 rad/s cw"', mech)
+    >>> ans = loads_answers('omega2 = "900 rev/min cw"', mech)  # the file's ω2 is ccw
     >>> Diagnoser(ev).diagnose(ans.given[0], CheckTolerance()).kind
     'sense'
     """
@@ -208,6 +197,22 @@ class Diagnoser:
             return False
         # the variant must differ from the exact value here, or there is nothing to follow
         return not self._matches(given, exact, tol, floor, self._reference(given, exact), sheet)
+
+    def agrees(self, index: int, given: Given, tol: CheckTolerance,
+               sheet: float | None = None) -> bool:
+        """Whether whole-solution variant ``index`` gives ``given`` within tolerance too.
+
+        An answer given right that the variant would have made wrong shows the
+        student did not make that mistake (it is not carried through).
+        """
+        _, ev = self.variants()[index]
+        try:
+            cand = ev.value(given.key)
+            exact = self.ev.value(given.key)
+        except GraphkinError:
+            return True
+        floor = self.ev.floor(given.key.quantity)
+        return self._matches(given, cand, tol, floor, self._reference(given, exact), sheet)
 
     def candidates(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
         """Every mistaken value worth testing for ``given``, most likely first.
@@ -357,7 +362,8 @@ class Diagnoser:
             if lid == FRAME:
                 continue
             for q in self.mech.links[lid].points:
-                if q == p or float(np.hypot(*self._vec("A", q))) > floor:
+                if q == p or q in self.mech.helper_points \
+                        or float(np.hypot(*self._vec("A", q))) > floor:
                     continue
                 key = Key(f"A_{p}{q}", "A", (p, q))
                 for comp, name in (("n", "normal"), ("t", "tangential")):
@@ -624,9 +630,15 @@ class Diagnoser:
                     word = "left of" if side * (1 if d[1] > 0 else -1) > 0 else "right of"
                 sep = "" if len(p) == len(q) == 1 else "-"
                 return f"{label} {word} {p}{sep}{q}"
-        if label in names:
+        helpers = self.mech.helper_points
+        moved = [n for n in names if n not in helpers and float(np.hypot(
+            *(np.asarray(alt.position(n)) - np.asarray(self.sol.position(n)))))
+            > 1e-6 * float(self.mech.scale)]
+        if label in names and label not in helpers:
             return f"{label} at the other intersection"
-        return f"the other intersection at step {label}"
+        if moved:
+            return f"{', '.join(moved)} at the other intersection"
+        return "the other intersection"
 
     def _positions(self) -> np.ndarray:
         return np.array([self.sol.position(p) for p in self.mech.point_names])

@@ -299,8 +299,15 @@ def read_svg(path: str | Path) -> DrawingData:
     """
     path = Path(path)
     root = _parse_svg(path)
+    unit_scale, unit = _unit_scale(root)
+    data = _svg_data(_walk(root, path, _paper(unit_scale)), path)
+    data.unit = unit
+    return data
+
+
+def _svg_data(elements: Any, path: Path) -> DrawingData:
+    """Segments, strokes and labels of walked SVG elements (``(element, matrix, depth)``)."""
     data = DrawingData()
-    unit_scale, data.unit = _unit_scale(root)
 
     def put(mat: np.ndarray, x: float, y: float) -> tuple[float, float]:
         with np.errstate(over="ignore", invalid="ignore"):
@@ -310,7 +317,7 @@ def read_svg(path: str | Path) -> DrawingData:
                              file=str(path))
         return float(p[0]), float(p[1])
 
-    for el, mat, _ in _walk(root, path, _paper(unit_scale)):
+    for el, mat, _ in elements:
         tag = _local(el.tag)
         if tag == "line":
             a = [_number(el, k, path) for k in ("x1", "y1", "x2", "y2")]
@@ -372,9 +379,9 @@ def _graphkin_panels(root: ET.Element, path: Path) -> list[Polygon]:
         scale = None
         for el, mat, depth in _children(panel, path, pmat, pdepth):
             gid = el.get("id") or ""
-            if gid.startswith("scale-text-"):
+            if re.match(r"(?:.*-)?scale-text-", gid):       # ids may carry the panel's prefix
                 scale = "".join(el.itertext()).strip()
-            if not gid.startswith("step-") or _local(el.tag) != "g":
+            if not re.match(r"(?:.*-)?step-\d+-", gid) or _local(el.tag) != "g":
                 continue
             marks = []
             label = ""
@@ -391,7 +398,17 @@ def _graphkin_panels(root: ET.Element, path: Path) -> list[Polygon]:
                 pole = marks[0]
             else:
                 points.setdefault(label, marks[0])
-        if pole is None:
+        if pole is None or not points:
+            # the drawing's details changed: read the panel alone as any drawing is read
+            data = _svg_data(_children(panel, path, pmat, pdepth), path)
+            data.unit = unit
+            try:
+                found = find_polygons(data, str(path))
+            except InputError:
+                continue
+            for poly in found:
+                poly.scale = poly.scale or scale
+            out += [p for p in found if p.diagram == diagram]
             continue
         out.append(Polygon(diagram, pole, points, scale, unit))
     return out
@@ -417,11 +434,49 @@ def _merge_collinear(pts: list[tuple[float, float]]) -> list[tuple[float, float]
     return out
 
 
+def _to_tips(long: np.ndarray, strokes: np.ndarray, size: float, eps: float) -> np.ndarray:
+    """Run each long segment on to the tip of an arrowhead drawn beyond its end.
+
+    A shaft that stops at the base of its arrowhead (a filled triangle, a
+    separate tapered polyline) points at the image point: the tip is the end
+    of a short stroke straight ahead of the shaft (within about 8° of its
+    line, and no farther than an arrowhead's size).  An end that is already a
+    tip (short strokes leave it backwards: barbs, an arrowhead's sides) stays.
+    """
+    if not len(strokes):
+        return long
+    marks = strokes.reshape(-1, 2)
+    for seg in long:
+        for k in (0, 1):
+            p, q = seg[k], seg[1 - k]
+            d = p - q
+            n = float(np.hypot(*d))
+            if n == 0:
+                continue
+            d = d / n
+            at_p = np.hypot(*(strokes - p).transpose(2, 0, 1)) <= eps       # (n, 2)
+            touching = np.any(at_p, axis=1)
+            if np.any(touching):
+                other = np.where(at_p[touching][:, :1], strokes[touching][:, 1],
+                                 strokes[touching][:, 0])
+                if np.any((other - p) @ d < 0):
+                    continue
+            rel = marks - p
+            along = rel @ d
+            across = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
+            ok = (along > 0) & (along <= size) & (across <= 0.14 * along)
+            if np.any(ok):
+                j = int(np.argmax(np.where(ok, along, -np.inf)))
+                seg[k] = marks[j]
+    return long
+
+
 def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
     """The polygons of a drawing made in CAD or by hand: one per labelled pole.
 
     Vertices are the ends of the long segments (a segment shorter than 8 % of
-    the longest is an arrowhead or a tick); ends closer than 1 % of the
+    the longest is an arrowhead or a tick; a shaft that stops at its
+    arrowhead's base runs on to the tip); ends closer than 1 % of the
     longest segment are one vertex; the polygon is the connected set of
     segments that holds the pole, and each label names its nearest vertex.
     """
@@ -437,10 +492,19 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         raise InputError("the drawing has a coordinate that is not finite", file=path)
     lengths = np.hypot(*(arr[:, 1] - arr[:, 0]).T)
     longest = float(lengths.max())
-    keep = arr[lengths >= 0.08 * longest]
+    short = lengths < 0.08 * longest
+    marks = arr[short].reshape(-1, 2)
     eps = 0.01 * longest
+    keep = _to_tips(arr[~short].copy(), arr[short], 0.08 * longest, eps)
     # cluster the ends into vertices
     ends = keep.reshape(-1, 2)
+    # an end that an arrowhead's strokes touch, or that was run on to a tip, is an arrow's tip
+    tip = np.zeros(len(ends), dtype=bool)
+    original = arr[~short].reshape(-1, 2)
+    tip |= np.any(ends != original, axis=1)
+    if len(marks):
+        near = np.hypot(*(ends[:, None, :] - marks[None, :, :]).transpose(2, 0, 1))
+        tip |= np.any(near <= eps, axis=1)
     verts: list[np.ndarray] = []
     index = np.empty(len(ends), dtype=int)
     for i, e in enumerate(ends):
@@ -473,9 +537,14 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
 
     def nearest_end(at: tuple[float, float], root: int) -> tuple[np.ndarray, float]:
         """The segment end nearest a label, among the ends of one polygon (exact, unclustered)."""
-        mine = ends[root_of_end == root]
+        sel = root_of_end == root
+        mine, tips = ends[sel], tip[sel]
         d = np.hypot(*(mine - np.asarray(at)).T)
         k = int(np.argmin(d))
+        # a label beside an arrow's tip names the tip, though a bare line end be nearer
+        close = (d <= d[k] + 0.02 * longest) & tips
+        if np.any(close) and not tips[k]:
+            k = int(np.argmin(np.where(close, d, np.inf)))
         return mine[k], float(d[k])
 
     out: list[Polygon] = []
@@ -591,8 +660,7 @@ def _on_link(label: str, mech: Any) -> tuple[str, str] | None:
 
 def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
                   tolerance: CheckTolerance | None = None,
-                  diagnoser: Diagnoser | None = None,
-                  drawing_tolerance: bool = False) -> Report:
+                  diagnoser: Diagnoser | None = None) -> Report:
     """Check a drawn velocity or acceleration polygon against the exact one.
 
     Parameters
@@ -608,8 +676,6 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
         paper unit is known.
     diagnoser : Diagnoser, optional
         Shared between files.
-    drawing_tolerance : bool
-        Unused (kept for callers that say the drawing tolerance was given).
 
     Returns
     -------
@@ -635,13 +701,15 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
     rows: list[Row] = []
     titles: list[str] = []
     notes: list[str] = []
-    tol_used = tol
+    scales: list[SheetScale] = []
     for poly in polys:
         r, t, n, tol_used = _check_polygon(sol, poly, path_s, scale, tol, diag)
         rows += r
         titles.append(t)
         notes += n
-    rep = Report(rows, tol_used, path_s, title="; ".join(titles))
+        scales += [sc for sc in tol_used.scales if sc not in scales]
+    rep = Report(rows, dataclasses.replace(tol, scales=tuple(scales)), path_s,
+                 title="; ".join(titles))
     rep.notes += notes
     return rep
 
@@ -755,6 +823,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     checked = [i for i, r in enumerate(rows) if r.verdict != FIT]
     sub = [rows[i] for i in checked]
     follow_through(sub, [givens[i] for i in checked], ev, diag, tol)
+    ignored = [t for t in ignored if len(re.sub(r"[^0-9A-Za-z]", "", t)) <= 3]  # not titles
     if ignored:
         notes.append("labels that name no image point, ignored: "
                      + ", ".join(printable(t) for t in sorted(set(ignored))))

@@ -99,21 +99,10 @@ class Evaluator:
     --------
     >>> import graphkin
     >>> from graphkin.check.answers import parse_key
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... omega = 3
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> ev = Evaluator(graphkin.solve(mech))
-    >>> ev.value(parse_key("V_B", mech)).xy.round(6)   # ω × R = 3 k × (0, 2)
-    array([-6.,  0.])
+    >>> ev.value(parse_key("V_B", mech)).xy.round(4)   # ω2 k × R_BA, 94.25 rad/s × 4 in ∠120°
+    array([-326.4839, -188.4956])
     """
 
     def __init__(self, sol: Solution, *,
@@ -334,26 +323,22 @@ class Evaluator:
 
 
 def _optional_instant_centers(sol: Solution) -> dict[str, Any]:
-    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers`, if present."""
-    try:
-        from graphkin.output.centers import instant_centers_json
-    except ImportError:
-        return {}
-    try:
-        out = instant_centers_json(sol)
-    except (GraphkinError, ArithmeticError, ValueError, KeyError, TypeError):
-        return {}
-    return out if isinstance(out, dict) else {}
+    """``instant_centers_json(sol)`` of :mod:`graphkin.output.centers` ({} if it fails)."""
+    from graphkin.output.centers import instant_centers_json
+
+    return _section(instant_centers_json, sol)
 
 
 def _optional_paths(sol: Solution) -> dict[str, Any]:
-    """``paths_json(sol)`` of :mod:`graphkin.output.curvature`, if present."""
+    """``paths_json(sol)`` of :mod:`graphkin.output.curvature` ({} if it fails)."""
+    from graphkin.output.curvature import paths_json
+
+    return _section(paths_json, sol)
+
+
+def _section(fn: Any, sol: Solution) -> dict[str, Any]:
     try:
-        from graphkin.output.curvature import paths_json
-    except ImportError:
-        return {}
-    try:
-        out = paths_json(sol)
+        out = fn(sol)
     except (GraphkinError, ArithmeticError, ValueError, KeyError, TypeError):
         return {}
     return out if isinstance(out, dict) else {}

@@ -11,8 +11,6 @@ from __future__ import annotations
 
 import csv
 import io
-import re
-import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -20,6 +18,7 @@ from graphkin.check.answers import Answers, CheckTolerance, Given
 from graphkin.check.compare import compare, show_exact, show_given
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.check.exact import Evaluator
+from graphkin.check.text import printable, spreadsheet_safe
 from graphkin.kinematics.solution import Solution
 from graphkin.text import table
 
@@ -27,47 +26,6 @@ __all__ = ["Row", "Report", "check", "check_given", "marks_csv", "printable", "s
            "OK", "WRONG", "FIT", "FOLLOWS", "UNREADABLE"]
 
 OK, WRONG, FIT, FOLLOWS, UNREADABLE = "ok", "WRONG", "fit", "follows", "UNREADABLE"
-
-
-def printable(text: object) -> str:
-    r"""``text`` with control and direction-override characters escaped (safe on a terminal).
-
-    Examples
-    --------
-    >>> print(printable("Ann\x1b[2J"))
-    Ann\x1b[2J
-    """
-    out = []
-    for ch in str(text):
-        cat = unicodedata.category(ch)
-        if cat == "Cc" and ch not in "\n" or cat == "Cf" and ch not in "\u200d":
-            code = ord(ch)
-            out.append(f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}")
-        else:
-            out.append(ch)
-    return "".join(out)
-
-
-_PLAIN_NUMBER = re.compile(r"^[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
-
-
-def spreadsheet_safe(cell: object) -> object:
-    """A CSV cell a spreadsheet will not run as a formula (``=``, ``+``, ``-``, ``@`` first).
-
-    Numbers stay numbers; other text starting with a formula character gets a
-    leading apostrophe (OWASP's advice on CSV injection).
-
-    Examples
-    --------
-    >>> spreadsheet_safe("=HYPERLINK(1)"), spreadsheet_safe("-5.88"), spreadsheet_safe(3)
-    ("'=HYPERLINK(1)", '-5.88', 3)
-    """
-    if not isinstance(cell, str):
-        return cell
-    text = printable(cell).replace("\n", " ")
-    if text[:1] in ("=", "+", "-", "@", "\t", "\r") and not _PLAIN_NUMBER.match(text):
-        return "'" + text
-    return text
 
 
 @dataclass
@@ -221,9 +179,12 @@ class Report:
 def sheet_allowance(ev: Evaluator, given: Given, tol: CheckTolerance) -> float | None:
     """The drawing tolerance in the answer's own units, when a scale is known.
 
-    ``tol.drawing`` millimetres times the drawing's scale; for ω and α, divided
-    by the length of the link's longest side (the image side it is read from:
-    ω = V_PQ / R_PQ, Sec. 3.4).
+    ``tol.drawing`` millimetres times the drawing's scale for a vector drawn
+    from the pole.  A difference (``V_CB``) is read between two drawn points,
+    each within ``tol.drawing`` of its place, so it may be off by twice as
+    much; ω and α are such a difference divided by the length of the link's
+    longest side (the image side they are best read from: ω = V_PQ / R_PQ,
+    Sec. 3.4).
     """
     if tol.drawing is None:
         return None
@@ -234,9 +195,11 @@ def sheet_allowance(ev: Evaluator, given: Given, tol: CheckTolerance) -> float |
         pts = [ev.sol.position(n, lid) for n in ev.mech.links[lid].points
                if n not in ev.mech.helper_points]
         size = max((float(((a - b) ** 2).sum() ** 0.5) for a in pts for b in pts), default=0.0)
-        return None if per is None or size <= 0 else tol.drawing * per / size
+        return None if per is None or size <= 0 else 2.0 * tol.drawing * per / size
     if key.kind in ("V", "A", "An", "At", "Ac"):
         per = tol.per_mm("velocity" if key.kind == "V" else "acceleration")
+        if per is not None and len(key.args) == 2 and key.kind in ("V", "A"):
+            return 2.0 * tol.drawing * per
     elif key.kind in ("R", "I", "rho"):
         per = tol.per_mm("length")
     else:
@@ -271,17 +234,23 @@ def follow_through(rows: list[Row], given: list[Given], ev: Evaluator, diag: Dia
     other assembly, a normal component reversed, the input's rate in the
     wrong unit...) explains several answers.  The first of them (in the
     file's order) is wrong with the mistake named; the others are marked
-    ``follows`` (as an instructor gives follow-through credit).
+    ``follows`` (as an instructor gives follow-through credit).  A carried
+    mistake that would have spoilt an answer the student got right is not
+    the student's: such answers keep their own diagnoses.
     """
     wrong = [i for i, r in enumerate(rows) if r.verdict == WRONG]
     if len(wrong) < 2:
         return
     variants = diag.variants()
+    right = [i for i, r in enumerate(rows) if r.verdict == OK]
     explained: dict[int, list[int]] = {}
     for vi in range(len(variants)):
         hits = [i for i in wrong
                 if diag.explains(vi, given[i], tol, sheet_allowance(ev, given[i], tol))]
-        if len(hits) >= 2:
+        # a mistake the student did not make: an answer given right that it would spoil
+        if len(hits) >= 2 and all(diag.agrees(vi, given[i], tol,
+                                              sheet_allowance(ev, given[i], tol))
+                                  for i in right):
             explained[vi] = hits
     taken: set[int] = set()
     while explained:
@@ -329,19 +298,7 @@ def check(sol: Solution, answers: Answers, tolerance: CheckTolerance | None = No
 
     >>> import graphkin
     >>> from graphkin.check import loads_answers
-    >>> mech = graphkin.loads('''
-    ... units = { length = "in" }
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = "900 rev/min"
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> rep = check(mech.solve(), loads_answers('V_B = "31.4 ft/s at -150 deg"', mech))
     >>> rep.ok, rep.rows[0].exact
     (True, '31.42 ft/s at -150.00°')

@@ -118,7 +118,7 @@ def run(args: argparse.Namespace) -> int:
 
         try:
             rep = check_drawing(sol, path, scale=args.scale, tolerance=tol_for(CheckTolerance()),
-                                diagnoser=diag, drawing_tolerance="drawing" in override)
+                                diagnoser=diag)
         except InputError as exc:
             if single:
                 raise

@@ -5,10 +5,12 @@ from __future__ import annotations
 import argparse
 import sys
 
+from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int
+
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
-DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "forces",
-                   "all")
+DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "inflection",
+                   "bobillier", "hartmann", "cubic", "forces", "all")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -27,12 +29,13 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="output file: .svg, .pdf, .png, or .dxf (a CAD drawing of the posture, "
                         "velocity or acceleration construction, e.g. a started drawing to hand "
                         "out with --upto)")
-    p.add_argument("--upto", type=int, default=None, metavar="K",
+    p.add_argument("--upto", type=bounded_int(0, 100_000), default=None, metavar="K",
                    help="draw the construction only up to step K (0-based)")
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
     p.add_argument("--no-table", action="store_true", help="leave out the results table")
-    p.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (default 150)")
+    p.add_argument("--dpi", type=bounded_float(*DPI_RANGE), default=150.0,
+                   help="resolution of a PNG, 10 to 1200 (default 150)")
     return p
 
 

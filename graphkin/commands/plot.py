@@ -11,6 +11,8 @@ from __future__ import annotations
 import argparse
 import sys
 
+from graphkin.commands._args import MAX_COUNT, bounded_int, finite_float
+
 __all__ = ["add_parser", "run"]
 
 
@@ -28,11 +30,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="comma-separated items (default angle,omega,alpha)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.svg",
                    help="the drawing: .svg, .pdf or .png")
-    p.add_argument("--from", dest="start", type=float, default=None, metavar="DEG",
+    p.add_argument("--from", dest="start", type=finite_float, default=None, metavar="DEG",
                    help="first drive value (default: the file's)")
-    p.add_argument("--to", dest="stop", type=float, default=None, metavar="DEG",
+    p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",
                    help="end of the range, excluded (default: one full turn on)")
-    p.add_argument("--count", type=int, default=360, metavar="N",
+    p.add_argument("--count", type=bounded_int(2, MAX_COUNT), default=360, metavar="N",
                    help="number of postures (default 360)")
     return p
 

@@ -14,6 +14,8 @@ import argparse
 import sys
 from typing import IO, cast
 
+from graphkin.commands._args import MAX_COUNT, bounded_int, finite_float
+
 __all__ = ["add_parser", "run"]
 
 
@@ -25,12 +27,12 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                     "constructions as solve, and write one CSV row per posture. Other drives are "
                     "held at the file's values.")
     p.add_argument("file", help="mechanism file (TOML)")
-    p.add_argument("--from", dest="start", type=float, default=None, metavar="DEG",
+    p.add_argument("--from", dest="start", type=finite_float, default=None, metavar="DEG",
                    help="first drive value: degrees, or a slider's travel (default: the file's)")
-    p.add_argument("--to", dest="stop", type=float, default=None, metavar="DEG",
+    p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",
                    help="end of the range, excluded (default: one full turn on; for a slider, "
                         "the end of the travel over which the mechanism assembles)")
-    p.add_argument("--count", type=int, default=360, metavar="N",
+    p.add_argument("--count", type=bounded_int(1, MAX_COUNT), default=360, metavar="N",
                    help="number of postures (default 360)")
     p.add_argument("--csv", default="-", metavar="OUT.csv",
                    help="where to write the CSV (default: standard output)")

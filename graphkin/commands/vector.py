@@ -32,13 +32,13 @@ import argparse
 import json
 import math
 import sys
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
+from graphkin.files import parse_toml, read_text
 from graphkin.keys import VECTOR, check_keys, read_units
 from graphkin.kinematics.vector_equation import (
     NAMES,
@@ -85,13 +85,7 @@ def load(path: str | Path) -> VectorFile:
         The file cannot be read or says something unusable (naming the key).
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read the file ({exc.strerror or exc})", file=str(p)) from None
-    except UnicodeDecodeError:
-        raise InputError("the file is not UTF-8 text", file=str(p)) from None
-    return loads(text, source=str(p))
+    return loads(read_text(p), source=str(p))
 
 
 def loads(text: str, source: str = "<vector file>") -> VectorFile:
@@ -104,10 +98,7 @@ def loads(text: str, source: str = "<vector file>") -> VectorFile:
     >>> str(f.knowns["A"]), str(f.knowns["B"]), str(f.knowns["C"])
     ('3∠?', '4∠?', '5∠0°')
     """
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"TOML syntax error: {_one_line(str(exc))}", file=source) from None
+    data = parse_toml(text, source)
 
     def fail(key: str | None, message: str) -> InputError:
         return InputError(message, key=key, file=source)
@@ -150,12 +141,9 @@ def _one_line(text: str) -> str:
 
 
 def _quantity(text: str) -> Any:
-    from graphkin.units import registry
+    from graphkin.units import quantity
 
-    try:
-        return registry().Quantity(text.replace("^", "**"))
-    except Exception as exc:  # pint raises several unrelated types
-        raise ValueError(f"cannot read {text!r} as a quantity") from exc
+    return quantity(text)  # the number read by float(); pint sees only a checked unit
 
 
 def _read(value: Any) -> float | str | None:

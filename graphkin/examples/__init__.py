@@ -8,7 +8,7 @@ docstring examples use::
     >>> round(float(sol.angle(3)), 2)  # θ₃ of Example 3.1: the book gives 20.92°
     20.92
     >>> names()[:3]
-    ['cam_follower', 'coriolis_block', 'fivebar']
+    ['cam_follower', 'coriolis_block', 'crank_rocker']
     >>> text("fourbar").splitlines()[0]
     'title = "Four-bar linkage with coupler and rocker points (Uicker Examples 3.1, 4.2)"'
 
@@ -18,7 +18,7 @@ prints it, to copy and edit).
 
 References
 ----------
-Uicker, Pennock & Shigley, 5th ed.: Examples 3.1, 3.2, 3.3, 3.9, 4.4, 4.7,
+Uicker, Pennock & Shigley, 5th ed.: Examples 2.6, 3.1, 3.2, 3.3, 3.9, 4.4, 4.7,
 4.11 and 5.4.
 """
 
@@ -30,9 +30,9 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["names", "text", "load", "fourbar", "slider_crank", "inverted_slider_crank",
-           "coriolis_block", "fivebar", "cam_follower", "rapsons_slide", "rolling_wheel",
-           "planetary"]
+__all__ = ["names", "text", "load", "fourbar", "crank_rocker", "slider_crank",
+           "inverted_slider_crank", "coriolis_block", "fivebar", "cam_follower", "rapsons_slide",
+           "rolling_wheel", "planetary"]
 
 
 def _data():  # type: ignore[no-untyped-def]
@@ -69,6 +69,11 @@ def load(name: str) -> Mechanism:
 def fourbar() -> Mechanism:
     """The four-bar of Examples 3.1 and 4.2 (θ₂ = 120°, ω₂ = 900 rev/min cw)."""
     return load("fourbar")
+
+
+def crank_rocker() -> Mechanism:
+    """The crank-rocker of Example 2.6 with its coupler point P (θ₂ = 60°, ω₂ = 10 rad/s ccw)."""
+    return load("crank_rocker")
 
 
 def slider_crank() -> Mechanism:

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from graphkin.errors import InputError
+from graphkin.files import check_file
 
 if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
@@ -135,22 +136,11 @@ def write_dxf(solution: Solution, diagram: str, path: str | Path,
     Examples
     --------
     >>> import graphkin, tempfile, os
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... omega = 3
-    ... alpha = 0
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> out = os.path.join(tempfile.mkdtemp(), "v.dxf")
     >>> data = read_dxf(write_dxf(mech.solve(), "velocity", out))
     >>> sorted(t for t, _ in data.labels if len(t) < 4), data.scale
-    (['O_V', 'b'], '1 mm = 5 mm/s')
+    (['O_V', 'b', 'c', 'e', 'f'], '1 in = 50 in/s')
     """
     ezdxf = require_ezdxf()
     from ezdxf.enums import TextEntityAlignment
@@ -314,6 +304,7 @@ def read_dxf(path: str | Path) -> DrawingData:
     """
     ezdxf = require_ezdxf()
     path = Path(path)
+    check_file(path)  # a regular file of at most 20 MB
     try:
         doc = ezdxf.readfile(str(path))
     except OSError as exc:

@@ -605,72 +605,131 @@ def _n(label: str) -> str:
     return label.split("#")[0].split(":")[-1]
 
 
-def _hint_distance(b: _Builder, names: list[str]) -> float:
-    """Mean distance of the named points from their assembly hints."""
-    hints = b.mech.assembly
-    return float(np.mean([np.hypot(*(g.xy(b.env[n]) - np.asarray(hints[n]))) for n in names]))
+def _fork(b: _Builder) -> _Builder:
+    """A copy of the builder that can take one branch without touching ``b``.
+
+    Only the containers are copied (one level deep): values are arrays that
+    the steps never change in place, and steps are frozen records.
+    """
+    t = copy.copy(b)
+    t.cx = Construction(list(b.cx.steps), b.cx.title)
+    t.env = dict(b.env)
+    t.inputs = dict(b.inputs)
+    t.known = {k: dict(v) for k, v in b.known.items()}
+    t.angle = dict(b.angle)
+    t.placed = set(b.placed)
+    t.anchor = dict(b.anchor)
+    t.branches = dict(b.branches)
+    t.notes = list(b.notes)
+    t.events = list(b.events)
+    return t
 
 
-def _layout_distance(b: _Builder) -> float:
-    """How far the placed links are turned from their own drawing in the file.
+def _new_points(b: _Builder, t: _Builder) -> list[str]:
+    """Labels of the points ``t`` constructed beyond ``b`` (its new steps' outputs)."""
+    return [o for st in t.cx.steps[len(b.cx.steps):] if st.kind == "point" for o in st.outputs]
+
+
+def _hint_distance(t: _Builder, names: list[str], origin: np.ndarray) -> float:
+    """Mean distance of the named points from their assembly hints.
+
+    Both are taken relative to ``origin`` (a point of the mechanism), so that
+    a mechanism far from the origin loses no digits to its offset.
+    """
+    hints = t.mech.assembly
+    return float(np.mean([np.hypot(*((g.xy(t.env[n]) - origin)
+                                     - (np.asarray(hints[n]) - origin))) for n in names]))
+
+
+def _layout_distance(b: _Builder, t: _Builder) -> float:
+    """How far the links ``t`` placed beyond ``b`` are turned from their own drawing in the file.
 
     Each link's points are compared with where they would be if the link kept
     the orientation of its own coordinates (its x axis along the frame's).
     """
     total = 0.0
-    for lid in b.placed:
-        if lid == FRAME or lid not in b.anchor:
+    for lid in t.placed - b.placed:
+        if lid == FRAME or lid not in t.anchor:
             continue
-        anchor, aloc = b.anchor[lid]
-        pa = g.xy(b.env[anchor])
-        for name, loc in b.mech.links[lid].points.items():
-            if name in b.env:
+        anchor, aloc = t.anchor[lid]
+        pa = g.xy(t.env[anchor])
+        for name, loc in t.mech.links[lid].points.items():
+            if name in t.env:
                 drawn = pa + np.subtract(loc, aloc)
-                total += float(np.hypot(*(g.xy(b.env[name]) - drawn)))
+                total += float(np.hypot(*(g.xy(t.env[name]) - drawn)))
     return total
 
 
-def _choose(b: _Builder, group: _Group, names: list[str]) -> tuple[str, str]:
+def _differ_tolerance(b: _Builder, at: np.ndarray) -> float:
+    """When two branches' positions of a point count as different.
+
+    Relative to the mechanism's own size (not to its distance from the
+    origin), with a floor of the round-off of coordinates as large as ``at``:
+    a slider-crank scaled by 1e-12 or moved 1e9 from the origin takes the
+    branch its hints ask for.
+    """
+    eps = float(np.finfo(float).eps)
+    return max(1e-6 * b.mech.size, 1e3 * eps * float(np.max(np.abs(at), initial=0.0)))
+
+
+def _try(b: _Builder, group: _Group,
+         branch: str | None) -> tuple[_Builder | AssemblyError, list[str], str]:
+    """Construct the group on a fork of ``b`` with ``branch``, then propagate.
+
+    Returns the fork (or the error that stopped it after the group itself),
+    the group's branch names and the label of its branch step.  An error in
+    the group itself (its arcs do not meet) is raised: every branch shares it.
+    """
+    t = _fork(b)
+    names = t.do(group, branch)
+    steps = t.cx.steps[len(b.cx.steps):]
+    label = next((s.label for s in reversed(steps) if s.branch), "")
+    try:
+        t.propagate()
+    except AssemblyError as exc:
+        return exc, names, label
+    return t, names, label
+
+
+def _choose(b: _Builder, group: _Group, names: list[str],
+            trials: dict[str, _Builder | AssemblyError]) -> tuple[str, str]:
     """Pick the branch of a two-way group; returns (branch, reason).
 
-    Each branch is carried through to the finished mechanism.  The hinted
-    points whose positions differ between the branches decide (the nearer
-    wins); when no hint tells them apart, the branch that leaves the links
-    nearest their own drawing in the file is taken.  A branch that cannot be
-    assembled further on is dropped.
+    The choice is local: each branch is carried out for this group only (and
+    what follows from it at once), never through the rest of the mechanism,
+    so the work grows linearly with the number of groups.  The hinted points
+    that the branches place apart decide (the nearer wins); when no hint tells
+    them apart, the branch that leaves the new links nearest their own drawing
+    in the file is taken.  A branch that cannot be assembled is dropped.
     """
-    finished: dict[str, _Builder] = {}
-    errors: list[Exception] = []
     for name in names:
-        t = copy.deepcopy(b, {id(b.mech): b.mech})
-        try:
-            t.do(group, name)
-            try:
-                _finish(t)
-            except NotDecomposable:
-                pass
-        except AssemblyError as exc:
-            errors.append(exc)
-            continue
-        finished[name] = t
+        if name not in trials:
+            trials[name] = _try(b, group, name)[0]
+    finished = {n: t for n, t in trials.items() if isinstance(t, _Builder)}
     if not finished:
-        raise errors[0]
+        raise next(t for t in trials.values() if isinstance(t, AssemblyError))
     if len(finished) == 1:
         return next(iter(finished)), "the other branch cannot be assembled"
     first, second = finished.values()
-    scale = b.tol.length(b.mech.scale) * 1e3
-    differ = [n for n in b.mech.assembly
-              if n in first.env and n in second.env
-              and float(np.hypot(*(g.xy(first.env[n]) - g.xy(second.env[n])))) > scale]
+    new = [n for n in _new_points(b, first) if n in b.mech.assembly and n in second.env]
+    differ = []
+    origin = np.zeros(2)
+    for n in new:
+        p, q = g.xy(first.env[n]), g.xy(second.env[n])
+        if not (np.all(np.isfinite(p)) and np.all(np.isfinite(q))):
+            continue
+        origin = p
+        if float(np.hypot(*(p - q))) > _differ_tolerance(b, p):
+            differ.append(n)
     if differ:
-        best = min(finished, key=lambda n: _hint_distance(finished[n], differ))
+        best = min(finished, key=lambda n: _hint_distance(finished[n], differ, origin))
         return best, "assembly hint"
-    best = min(finished, key=lambda n: _layout_distance(finished[n]))
+    best = min(finished, key=lambda n: _layout_distance(b, finished[n]))
     return best, "no assembly hint decides it; took the branch nearest the file's drawing"
 
 
 def _finish(b: _Builder) -> None:
-    """Propagate, then construct groups, choosing each branch by the assembly hints."""
+    """Propagate, then construct groups one at a time, choosing each branch locally."""
     b.propagate()
     while b.unplaced():
         opts = b.options()
@@ -678,26 +737,29 @@ def _finish(b: _Builder) -> None:
             left = ", ".join(b.link_name(k) for k in b.unplaced())
             raise NotDecomposable(f"{left} cannot be found one group at a time", step=left)
         group = opts[0]
-        trial = copy.deepcopy(b, {id(b.mech): b.mech})
-        names = trial.do(group, None)
+        first, names, label = _try(b, group, None)
         if len(names) == 1:
-            b.do(group, names[0])
-            b.propagate()
+            if isinstance(first, AssemblyError):
+                raise first
+            b.__dict__.update(first.__dict__)
             continue
-        label = next(s for s in reversed(trial.cx.steps) if s.branch).label
+        trials: dict[str, _Builder | AssemblyError] = {names[0]: first}
         if label in b.forced:
             chosen, reason = b.forced[label], "branch asked for"
             if chosen not in names:
                 raise ConstructionError(f"step {label} has the branches {', '.join(names)}, "
                                         f"not {chosen!r}", step=label)
+            if chosen not in trials:
+                trials[chosen] = _try(b, group, chosen)[0]
         else:
-            chosen, reason = _choose(b, group, names)
-        b.do(group, chosen)
-        step = next(s for s in reversed(b.cx.steps) if s.branch)
-        b.branches[step.label] = chosen
+            chosen, reason = _choose(b, group, names, trials)
+        done = trials[chosen]
+        if isinstance(done, AssemblyError):
+            raise done
+        b.__dict__.update(done.__dict__)
+        b.branches[label] = chosen
         if reason not in ("assembly hint", "branch asked for"):
-            b.notes.append(f"{step.label}: {reason} ({chosen})")
-        b.propagate()
+            b.notes.append(f"{label}: {reason} ({chosen})")
 
 
 def build_posture(mech: Mechanism, tol: Tolerance | None = None,

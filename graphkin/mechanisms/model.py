@@ -333,6 +333,26 @@ class Mechanism:
         big = max(xs, default=0.0)
         return big if big > 0 else 1.0
 
+    @cached_property
+    def size(self) -> float:
+        """Size of the mechanism itself: its largest link, whatever its offset from the origin.
+
+        The largest distance between two points of one link (each link's own
+        coordinates), or the largest radius of a slot or rolling circle.
+        Comparisons of positions (assembly hints, branches) are made relative
+        to it, so they do not change when a mechanism is moved or scaled.
+        """
+        sizes = [0.0]
+        for link in self.links.values():
+            if len(link.points) > 1:
+                xs = [p[0] for p in link.points.values()]
+                ys = [p[1] for p in link.points.values()]
+                sizes.append(math.hypot(max(xs) - min(xs), max(ys) - min(ys)))
+        sizes += [abs(s.radius) for s in self.slots if s.radius is not None]
+        sizes += [abs(r.radius) for r in self.rolling]
+        big = max(sizes)
+        return big if big > 0 and math.isfinite(big) else self.scale
+
     def mobility(self) -> int:
         """Degrees of freedom by Kutzbach's criterion (Eq. 1.3): 3(n-1) - 2 j1 - j2."""
         m = 3 * len(self.moving)

@@ -7,12 +7,12 @@ the dotted key and the reason, so the CLI can print one line and exit 2.
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from graphkin.errors import InputError
+from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
@@ -49,21 +49,12 @@ def load(path: str | Path) -> Mechanism:
         The file cannot be read, or says something impossible (naming the key).
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise InputError(f"cannot read the file ({exc.strerror or exc})", file=str(p)) from None
-    except UnicodeDecodeError:
-        raise InputError("the file is not UTF-8 text", file=str(p)) from None
-    return loads(text, source=str(p))
+    return loads(read_text(p), source=str(p))
 
 
 def loads(text: str, source: str = "<mechanism>") -> Mechanism:
     """Parse mechanism-file text (see :func:`load`)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"TOML syntax error: {exc}", file=source) from None
+    data = parse_toml(text, source)
     return from_dict(data, source=source)
 
 

@@ -99,7 +99,7 @@ def parse_units(spec: str, length_unit: str) -> dict[str, Any]:
      ('k_omega', 9.549296585513721), ('k_velocity', 0.001), ('length', 'm'),
      ('omega', 'rev/min'), ('velocity', 'm/s')]
     """
-    from graphkin.units import registry
+    from graphkin.units import check_unit, registry
 
     ureg = registry()
     out: dict[str, Any] = {}
@@ -108,6 +108,7 @@ def parse_units(spec: str, length_unit: str) -> dict[str, Any]:
         if not item:
             continue
         try:
+            check_unit(item)  # never arithmetic for pint to evaluate
             q = ureg.Quantity(1.0, item.replace("^", "**"))
         except Exception:
             raise InputError(f"unknown unit {item!r}", key="--units") from None

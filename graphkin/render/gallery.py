@@ -35,11 +35,12 @@ import hashlib
 import json
 import math
 import re
-import tomllib
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from graphkin.files import load_toml
 
 __all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
 
@@ -75,14 +76,33 @@ class Entry:
         return ["velocity", "acceleration"] if has_rates else ["posture"]
 
 
+def _within(root: Path, p: Path) -> bool:
+    """True when ``p``, with every symlink resolved, lies inside ``root``."""
+    try:
+        p.resolve().relative_to(root.resolve())
+    except ValueError:
+        return False
+    return True
+
+
 def discover(root: str | Path) -> list[Entry]:
-    """Every mechanism file of the gallery, in folder then name order."""
+    """Every mechanism file of the gallery, in folder then name order.
+
+    Raises
+    ------
+    InputError
+        A file that is not valid TOML, or a symlink leading out of the gallery.
+    """
+    from graphkin.errors import InputError
+
     root = Path(root)
     out = []
     for folder in FOLDERS:
         for p in sorted((root / folder).glob("*.toml"), key=_natural):
-            with open(p, "rb") as fh:
-                data = tomllib.load(fh)
+            if not _within(root, p) or not p.is_file():
+                raise InputError("a link out of the gallery folder (or not a regular file); "
+                                 "the gallery reads only its own files", file=str(p))
+            data = load_toml(p)  # bounded; a malformed file is one InputError naming it
             if "links" not in data:
                 continue
             out.append(Entry(p, folder, dict(data.get("gallery", {}))))
@@ -259,6 +279,9 @@ def _readme(root: Path, entries: list[Entry], results: dict[str, dict[str, Any]]
         "The four cases of the planar vector equation (Sec. 2.8, Figs. 2.10-2.13) are vector "
         "files in [`vector/`](vector/): `graphkin vector gallery/vector/case4.toml`.",
         "",
+    ]
+    lines += _before_after(root, drawings)
+    lines += [
         "## Index",
         "",
         "| mechanism | figure | examples | section | drawings |",
@@ -306,6 +329,31 @@ def _readme(root: Path, entries: list[Entry], results: dict[str, dict[str, Any]]
     return "\n".join(lines).rstrip() + "\n"
 
 
+BEFORE_AFTER = (("curvature", "before/ex4_14_inflection_bresse_curvature.png",
+                 "curvature-ex4_14_fourbar-curvature.svg"),
+                ("instant centers", "before/ex4_14_inflection_bresse_centers.png",
+                 "curvature-ex4_14_fourbar-centers.svg"))
+"""Issue 11's before/after pair of Example 4.14: the drawing of the first release (a
+committed PNG) beside the drawing the gallery makes now."""
+
+
+def _before_after(root: Path, drawings: dict[str, list[str]]) -> list[str]:
+    made = {n for names in drawings.values() for n in names}
+    pairs = [(what, old, new) for what, old, new in BEFORE_AFTER
+             if (root / old).is_file() and new in made]
+    if not pairs:
+        return []
+    lines = ["## Before and after: Example 4.14", "",
+             "The same file drawn before the figures were reworked (left: one panel with every "
+             "construction line, literal underscores, no Kennedy circle, a center at infinity "
+             "as huge coordinates) and now (right: the curvature sheet split into the book's "
+             "figures with the cubic drawn, the Kennedy circle beside the instant centers).",
+             "", "| | before | after |", "|---|---|---|"]
+    for what, old, new in pairs:
+        lines.append(f"| {what} | ![before]({old}) | ![after](drawings/{new}) |")
+    return lines + [""]
+
+
 def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:
     import matplotlib
 
@@ -330,24 +378,48 @@ def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:
     return files, readme, manifest
 
 
+def _writable(root: Path, p: Path) -> Path:
+    """``p`` if the gallery may write it: inside the gallery, not a symlink, not a folder."""
+    from graphkin.errors import InputError
+
+    if p.is_symlink() or (p.exists() and not p.is_file()) or not _within(root, p.parent):
+        raise InputError("a link, a folder or a path out of the gallery folder; the gallery "
+                         "writes only its own files", file=str(p))
+    return p
+
+
 def build(root: str | Path) -> list[Path]:
-    """Regenerate every drawing, the manifest and the README; returns the files written."""
+    """Regenerate every drawing, the manifest and the README; returns the files written.
+
+    Only drawings the previous manifest lists (drawings this command wrote)
+    are deleted when no mechanism draws them any more; nothing is written or
+    deleted through a symlink or outside the gallery folder.
+    """
     root = Path(root)
     files, readme, manifest = _generate(root)
     out = root / "drawings"
+    if out.is_symlink():
+        _writable(root, out)
     out.mkdir(parents=True, exist_ok=True)
+    man_path = _writable(root, out / "MANIFEST.json")
+    ours: set[str] = set()
+    if man_path.is_file():
+        try:
+            ours = set(json.loads(man_path.read_text(encoding="utf-8")).get("drawings", {}))
+        except (ValueError, AttributeError):
+            ours = set()
     written = []
-    for old in sorted(out.glob("*.svg")):
-        if old.name not in files:
+    for name in sorted(ours - set(files)):
+        old = out / name
+        if "/" not in name and old.suffix == ".svg" and old.is_file() and not old.is_symlink():
             old.unlink()
     for name, data in files.items():
-        p = out / name
+        p = _writable(root, out / name)
         if not p.exists() or p.read_bytes() != data:
             p.write_bytes(data)
         written.append(p)
-    (out / "MANIFEST.json").write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n",
-                                       encoding="utf-8")
-    (root / "README.md").write_text(readme, encoding="utf-8")
+    man_path.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+    _writable(root, root / "README.md").write_text(readme, encoding="utf-8")
     return written
 
 

@@ -20,6 +20,7 @@ import math
 
 import numpy as np
 import shapely
+import shapely.ops
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
 from graphkin.mechanisms.model import FRAME, Rolling, Slider, Slot
@@ -136,6 +137,9 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         if not all(is_known(n) for n in link.points):
             continue
         pts = link_points(src, lid)
+        body = {n: q for n, q in pts.items() if n not in mech.helper_points}
+        if body:  # a slot's helper points are drawn as the slot, not as the body's corners
+            pts = body
         arr = np.array(list(pts.values()))
         g = panel.group(f"{pre}link-{lid}", 1.0 + 0.01 * mech.moving.index(lid), key=f"link {lid}")
         distinct = MultiPoint([tuple(p) for p in arr]).convex_hull
@@ -145,9 +149,13 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                                     key=f"link {lid}"))
                 _number(panel, g, lid, arr[0], pre)
             continue
+        bars = slide_bars(src, lid, k)
+        # a slide the body does not reach is joined to it by a bar (a follower's face)
+        joins = [LineString(shapely.ops.nearest_points(distinct, b)) for b in bars
+                 if distinct.distance(b) > 2 * BAR_HALF * k]
         shape = shapely.union_all([distinct.buffer(BAR_HALF * k, quad_segs=6),
-                                   *(b.buffer(BAR_HALF * k, quad_segs=6)
-                                     for b in slide_bars(src, lid, k))])
+                                   *(b.buffer(BAR_HALF * k, quad_segs=6) for b in bars),
+                                   *(j.buffer(BAR_HALF * k, quad_segs=6) for j in joins)])
         plate = distinct.geom_type == "Polygon" and distinct.area > (3 * BAR_HALF * k) ** 2
         parts = list(shape.geoms) if hasattr(shape, "geoms") else [shape]
         for j, part in enumerate(parts):
@@ -275,7 +283,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
 
     # ---- points not marked by a construction step --------------------
     for name in mech.point_names:
-        if name in drawn or not is_known(name):
+        if name in drawn or not is_known(name) or name in mech.helper_points:
             continue
         from graphkin.render.paint import _is_joint_or_named_point
 

@@ -25,8 +25,9 @@ from matplotlib.text import Text
 from graphkin.render.results import AGREE, ROUND_OFF, diff_text
 from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import TABLE_ROW, Sheet, build_sheet
-from graphkin.render.sources import DIAGRAMS, as_source, optional_modules
+from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
 from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
+from graphkin.render.text import plain
 
 __all__ = ["StepGroup", "Vector", "Drawing", "draw", "sheet_figure", "render_sheet"]
 
@@ -285,7 +286,7 @@ def render_sheet(sheet: Sheet) -> Drawing:
         drawing.own_figure = True
         drawing.sheet = sheet
         if sheet.title:
-            t = fig.text(0.5 * 0.0 + 0.12 / sheet.size[0], 1 - 0.22 / sheet.size[1], sheet.title,
+            t = fig.text(0.12 / sheet.size[0], 1 - 0.22 / sheet.size[1], plain(sheet.title),
                          ha="left", va="center", fontsize=STYLES["title"]["size"] + 1,
                          fontweight="bold")
             t.set_gid("sheet-title")
@@ -345,7 +346,7 @@ def _table(fig: Figure, sheet: Sheet) -> None:
     for r in sheet.rows:
         yy -= TABLE_ROW
         cells = (r.quantity, r.drawn, r.exact, diff_text(r.diff), r.unit)
-        row = text(0.08, yy, _row(cells, widths), "table", f"row-{r.key}")
+        row = text(0.08, yy, plain(_row(cells, widths)), "table", f"row-{r.key}")
         if r.diff is None:
             missing = True
         else:
@@ -435,25 +436,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     --------
     >>> import graphkin
     >>> from graphkin.render import draw
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... [assembly]
-    ... C = [15, 10]
-    ... ''')
+    >>> mech = graphkin.examples.fourbar()
     >>> d = draw(mech, "posture")
     >>> d["B"].get_xydata().round(4).tolist()     # B = A + 4 (cos 120°, sin 120°)
     [[-2.0, 3.4641]]
@@ -469,8 +452,10 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
         from graphkin.render.forces import draw_forces
 
         return draw_forces(obj, table=table is not False, upto=upto)
-    wanted = tuple(d for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
-                   if d in optional_modules)
+    wanted = tuple(dict.fromkeys(
+        "curvature" if d in CURVATURE_PANELS else d
+        for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
+        if d in optional_modules or d in CURVATURE_PANELS))
     src = as_source(obj, values=values, diagrams=wanted, link=link)
     if ax is None:
         sheet = build_sheet(src, diagram, upto=upto, highlight=highlight,

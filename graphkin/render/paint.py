@@ -28,7 +28,7 @@ Sec. 3.5 (images), Sec. 4.3 (Fig. 4.4), Sec. 4.5 (Fig. 4.11).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 
 import numpy as np
 
@@ -41,6 +41,7 @@ from graphkin.render.scene import (
     LabelRequest,
     Panel,
     clip_segment,
+    construction_text,
     finite_xy,
     point_text,
     safe_id,
@@ -48,6 +49,7 @@ from graphkin.render.scene import (
 )
 from graphkin.render.sources import Source, plane_of
 from graphkin.render.style import style_for_role
+from graphkin.render.text import math_escape, plain
 
 __all__ = ["StepPainter", "image_text", "vector_math", "INTERSECTIONS", "POLES"]
 
@@ -86,7 +88,7 @@ def image_text(label: str) -> str:
     while i > 0 and base[i - 1].isdigit():
         i -= 1
     letters, digits = base[:i] or base, base[i:] if i else ""
-    return letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB)
+    return plain(letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB))
 
 
 def vector_math(label: str) -> str:
@@ -98,11 +100,14 @@ def vector_math(label: str) -> str:
     ('$A^{n}_{CB}$', '$A^{c}_{A/4}$', '$V_{B}$')
     """
     base, _, rest = label.partition("_")
-    sub, _, sup = rest.partition("^")
+    sub, _, sup = rest.rpartition("^") if "^" in rest else (rest, "", "")
     sub = sub.replace("{", "").replace("}", "")
     if not sub:
-        return label
-    return f"${base}^{{{sup}}}_{{{sub}}}$" if sup else f"${base}_{{{sub}}}$"
+        return plain(label)
+    b, lo, hi = math_escape(base), math_escape(sub), math_escape(sup)
+    if b is None or lo is None or hi is None:
+        return plain(label)
+    return f"${b}^{{{hi}}}_{{{lo}}}$" if hi else f"${b}_{{{lo}}}$"
 
 
 def vector_style(label: str) -> str:
@@ -114,6 +119,33 @@ def vector_style(label: str) -> str:
     if "^t" in label:
         return "vector-t"
     return "vector-rel"
+
+
+def _unknown_terms(step: Step) -> list[str]:
+    """Names of the vectors a step finds: the unknown-magnitude terms of its equation."""
+    eq = step.equation
+    if eq is None:
+        return []
+    terms = (*eq.lhs, *eq.rhs)
+    return [t.name for t in terms if str(getattr(t.magnitude, "value", t.magnitude)) == "?"
+            and str(getattr(t.direction, "value", t.direction)) != "?"]
+
+
+def _component_names(step: Step) -> dict[str, str]:
+    """The normal and tangential components named in a step's equation: ``{"n": "A_CD^n"}``."""
+    eq = step.equation
+    out: dict[str, str] = {}
+    if eq is None:
+        return out
+    for t in (*eq.lhs, *eq.rhs):
+        for sup in ("n", "t", "c"):
+            if t.name.endswith("^" + sup):
+                out.setdefault(sup, t.name)
+    return out
+
+
+def _math_or_none(name: str | None) -> str | None:
+    return None if not name else vector_math(name)
 
 
 def _is_image(label: str) -> bool:
@@ -163,6 +195,7 @@ class StepPainter:
         self.drawn_points: set[str] = set()
         self.arrows: dict[str, dict[tuple[float, ...], Item]] = {}
         self.arrow_ends: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+        self._helper_xy: list[np.ndarray] | None = None
         self.quiet_rates = False
         """Leave angular rates off the mechanism (a sheet of every diagram lists them)."""
 
@@ -192,8 +225,14 @@ class StepPainter:
         return None if v is None else np.asarray(v, dtype=float)
 
     # ---- entry point --------------------------------------------------
-    def paint(self, upto: int | None = None, highlight: int | None = None) -> list[Group]:
-        """Paint steps ``0..upto`` (all by default); returns the groups made."""
+    def paint(self, upto: int | None = None,
+              highlight: int | Collection[int] | None = None) -> list[Group]:
+        """Paint steps ``0..upto`` (all by default); returns the groups made.
+
+        ``highlight`` is the step (or the steps) drawn in the highlight colour.
+        """
+        lit = set() if highlight is None else (
+            {highlight} if isinstance(highlight, int) else set(highlight))
         groups = []
         last = len(self.cx.steps) - 1 if upto is None else min(upto, len(self.cx.steps) - 1)
         for step in self.cx.steps[: last + 1]:
@@ -202,7 +241,7 @@ class StepPainter:
                 continue
             z = {"line": 2.0, "circle": 2.0, "vector": 3.0, "scalar": 3.5}.get(step.kind, 4.0)
             g = panel.group(self.prefix + step.step_id, z, step=step, diagram=self.diagram,
-                            highlight=(highlight is not None and step.index == highlight),
+                            highlight=step.index in lit,
                             key=step.label)
             groups.append(g)
             if step.kind == "scalar":
@@ -249,7 +288,8 @@ class StepPainter:
         seen[sig] = it
         if text:
             mid = tail + 0.5 * (tip - tail)
-            self.label(panel, g, text, mid, key or text, style="label-small", gap=0.03)
+            # at point-label size: mathtext sub- and superscripts (0.7 of it) stay above 6 pt
+            self.label(panel, g, text, mid, key or text, style="label-vector", gap=0.03)
         return it
 
     def marker(self, g: Group, xy: np.ndarray, style: str, key: str) -> Item:
@@ -262,8 +302,9 @@ class StepPainter:
         """A point beyond the panel: an arrow at the edge toward it, with its coordinates."""
         x0, y0, x1, y1 = panel.view
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        name = construction_text(label) if panel.plane == "posture" else image_text(label)
         self.ideal(panel, g, label, np.array([*(xy - c), 0.0]),
-                   text=f"{point_text(label) if panel.plane == 'posture' else image_text(label)}"
+                   text=f"{name}"
                         f" ({fmt(xy[0], 4)}, {fmt(xy[1], 4)})", center=c)
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
@@ -284,8 +325,8 @@ class StepPainter:
         tip = c + d * (t - 0.12 * panel.k)
         tail = tip - d * 0.4 * panel.k
         self.arrow(panel, g, tail, tip, "infinity", key=label)
-        self.label(panel, g, text or f"{point_text(label)} ∞", tail, label,
-                   style="label-small" if text else "label", prefer=(-d[0], -d[1]))
+        self.label(panel, g, text or f"{construction_text(label)} ∞", tail, label, style="label",
+                   prefer=(-d[0], -d[1]))
 
     # ---- points -------------------------------------------------------
     def point(self, step: Step, g: Group, panel: Panel) -> None:
@@ -313,6 +354,9 @@ class StepPainter:
                       xy: np.ndarray) -> None:
         """A point of the mechanism's plane: a pin or dot, lettered; or a construction point."""
         mech = self.src.mechanism
+        if mech is not None and label in mech.helper_points:
+            self.drawn_points.add(label)  # drawn as its line or slot, not as a point
+            return
         if mech is not None and label in mech.point_links:
             style = "pin" if len(mech.point_links[label]) >= 2 else "point"
             helper = not _is_joint_or_named_point(mech, label)
@@ -321,10 +365,27 @@ class StepPainter:
             self.label(panel, g, point_text(label), xy, label,
                        style="label-aux" if helper else "label")
             return
+        if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
+            return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
+        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
-            self.label(panel, g, point_text(label), xy, label, style="label-aux")
+            # a center or a point the construction finds: black, at point-label size
+            text = construction_text(label)
+            self.label(panel, g, text, xy, label,
+                       style="label" if found or text.startswith("$") else "label-aux")
+
+    def _on_helper(self, xy: np.ndarray, panel: Panel) -> bool:
+        """True when ``xy`` is where a helper point of the mechanism is."""
+        mech, sol = self.src.mechanism, self.src.solution
+        if mech is None or sol is None or not mech.helper_points:
+            return False
+        if self._helper_xy is None:
+            self._helper_xy = [np.asarray(sol.position(n), dtype=float)
+                               for n in sorted(mech.helper_points)]
+        tol = 1e-9 * panel.diag()
+        return any(float(np.hypot(*(xy - q))) <= tol for q in self._helper_xy)
 
     def polygon_point(self, step: Step, g: Group, panel: Panel, label: str,
                       xy: np.ndarray) -> None:
@@ -336,6 +397,9 @@ class StepPainter:
             self.label(panel, g, pole_text or point_text(label), xy, label)
             return
         image = _is_image(label)
+        mech = self.src.mechanism
+        if image and mech is not None and label[2:-1] in mech.helper_points:
+            return  # a helper point has no image (issue 11: only the line it defines)
         if image:
             self.marker(g, xy, "image-point", label)
             self.label(panel, g, image_text(label), xy, label)
@@ -362,10 +426,17 @@ class StepPainter:
             if ta is not None and w is not None and a is not None and x is not None:
                 r = x - a
                 mid = ta - float(w) ** 2 * r
-                self.arrow(panel, g, ta, mid, "vector-n", key=f"{label}:n")
-                self.arrow(panel, g, mid, xy, "vector-t", key=f"{label}:t")
+                names = _component_names(step)
+                self.arrow(panel, g, ta, mid, "vector-n", key=f"{label}:n",
+                           text=_math_or_none(names.get("n")))
+                self.arrow(panel, g, mid, xy, "vector-t", key=f"{label}:t",
+                           text=_math_or_none(names.get("t")))
         elif step.op == "meet":
-            for line in ins:
+            unknown = _unknown_terms(step)
+            for li, line in enumerate(ins):
+                name = unknown[li] if len(unknown) == len(ins) else None
+                if not accel and name is not None and "/" not in name:
+                    name = None  # a velocity polygon letters only the apparent (slip) vectors
                 thr = self.through(line)
                 if thr is None or float(np.hypot(*(thr - xy))) <= 1e-9 * panel.diag():
                     continue
@@ -375,14 +446,13 @@ class StepPainter:
                     abs_done = True
                 else:
                     self.arrow(panel, g, thr, xy, "vector-t" if accel else "vector-rel",
-                               key=f"{label}:{line}")
+                               key=f"{label}:{line}", text=_math_or_none(name))
         elif step.op in ("translate", "subtract"):
             p = self.xy(ins[0])
             if p is not None:
                 tail, tip = (p, xy) if step.op == "translate" else (xy, p)
                 st = vector_style(ins[1])
-                self.arrow(panel, g, tail, tip, st, key=ins[1],
-                           text=vector_math(ins[1]) if st in ("vector-n", "vector-c") else None)
+                self.arrow(panel, g, tail, tip, st, key=ins[1], text=vector_math(ins[1]))
         elif step.op == "add_along":
             p = self.xy(ins[0])
             if p is not None:
@@ -453,12 +523,18 @@ class StepPainter:
             center = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
             base = center - (float(n @ center) + c) * n
             p0, p1 = base - panel.diag() * d, base + panel.diag() * d
-        seg = clip_segment(p0, p1, panel.view)
+        seg = clip_segment(p0, p1, panel.inner or panel.view)
         if seg is None:
             return
         style = ("ref-line" if self.diagram != step.diagram and step.op == "join"
                  else style_for_role(step.role, "line"))
         g.items.append(Item("path", np.array(seg), style, key=label))
+        if self.diagram in _CURVATURE and label.split("*")[0] in ("N", "T"):
+            # the centrode normal and tangent, lettered at their positive ends
+            a, b = np.asarray(seg[0]), np.asarray(seg[1])
+            tip = b if float((b - a) @ d) >= 0 else a
+            self.label(panel, g, label.split("*")[0], tip - 0.15 * panel.k * d *
+                       (1 if tip is b else -1), label, style="label")
         # right-angle marks
         if step.op == "perpendicular" and through is not None:
             if foot is not None:
@@ -506,7 +582,7 @@ class StepPainter:
                         cuts.append(q)
         if not cuts:
             # no intersection cuts it: mark the later points that lie on it (a tangent's foot)
-            for s in self.cx.steps[step.index + 1:]:
+            for s in (x for x in self.cx.steps if x.index > step.index):
                 if plane_of(s.diagram) != panel.plane:
                     continue
                 for o in s.outputs:
@@ -516,7 +592,12 @@ class StepPainter:
                     if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
                         cuts.append(q)
         if not cuts or step.role == Role.RESULT:
-            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r))
+            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
+                                gid=safe_id(self.prefix + label.replace(" ", "-"))))
+            if label.split("*")[0] in ("inflection circle", "Bresse circle"):
+                top = center + np.array([0.0, r])
+                self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
+                           label, style="label-small", prefer=(0.0, 1.0))
             return
         half = min(max(6.0, math.degrees(ARC_HALF * panel.k / r)), 170.0)
         for i, q in enumerate(cuts):
@@ -619,7 +700,13 @@ class StepPainter:
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:
-    """A point worth a letter: a joint, a slider point, or a point of a moving link."""
+    """A point worth a letter: a joint, a slider point, or a point of a moving link.
+
+    A helper point (:attr:`Mechanism.helper_points`: ``S``, ``T``, ``L1``...)
+    never is: it is drawn as the line or slot it defines.
+    """
+    if label in mech.helper_points:
+        return False
     links = mech.point_links[label]
     if len(links) >= 2:
         return True
@@ -658,3 +745,5 @@ def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
 
 
 PaintFn = Callable[[Step, Group, Panel], None]
+
+_CURVATURE = ("curvature", "inflection", "bobillier", "hartmann", "cubic")

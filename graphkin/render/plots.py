@@ -38,6 +38,7 @@ import numpy as np
 
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME
+from graphkin.render.text import plain
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -178,30 +179,10 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... E = [6, -3]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
-    >>> fig = sweep_figure(mech.sweep(count=90), "omega,path:E")
+    >>> mech = graphkin.examples.crank_rocker()
+    >>> fig = sweep_figure(mech.sweep(count=90), "omega,path:P")
     >>> [a.get_gid() for a in fig.axes]
-    ['plot-omega', 'plot-path-E']
+    ['plot-omega', 'plot-path-P']
     """
     from matplotlib.figure import Figure
 
@@ -227,6 +208,9 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
                     y = _unwrapped(y)
                 (line,) = ax.plot(x, y, lw=1.2, label=f"{_NAMES[item]}{lid}")
                 line.set_gid(f"curve-{item}-{lid}")
+            if item != "angle":
+                _clip_toggles(ax, x, [np.asarray(cols[f"{item}_{lid}"], dtype=float)
+                                      for lid in _links(sw, which)])
             ax.set_ylabel(f"{_NAMES[item]}, {_UNITS[item]}")
             ax.set_xlabel(_drive_label(sw))
             ax.legend(loc="best", fontsize="small", frameon=False)
@@ -280,7 +264,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             unit = sw.mechanism.length_unit
             ax.set_xlabel(f"x, {unit}")
             ax.set_ylabel(f"y, {unit}")
-            ax.set_title(f"path of {which} (coupler curve)", fontsize="medium")
+            ax.set_title(plain(f"path of {which}{_path_kind(sw, which)}"), fontsize="medium")
         elif item == "center":
             assert which is not None
             _center_path(ax, sw, which)
@@ -307,8 +291,77 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             ax.set_ylabel("transmission angle γ, °")
             ax.set_xlabel(_drive_label(sw))
             ax.legend(loc="best", fontsize="small", frameon=False)
-    fig.suptitle(sw.mechanism.title or "sweep", fontsize="medium")
+    for ax, (item, _which) in zip(axes, items):
+        if item not in ("path", "center", "centrode"):
+            _shade_unassembled(ax, x, cols)
+    fig.suptitle(plain(sw.mechanism.title or "sweep"), fontsize="medium")
     return fig
+
+
+def _path_kind(sw: Sweep, name: str) -> str:
+    """What the path of a point is called: a slider's line, a coupler curve, a circle."""
+    mech = sw.mechanism
+    for s in mech.sliders:
+        if s.point == name:
+            return f" (slider {s.link})"
+    owners = [lid for lid in mech.point_links.get(name, []) if lid != FRAME]
+    frame = set(mech.links[FRAME].points)
+    if any(not (frame & set(mech.links[lid].points)) for lid in owners):
+        return " (coupler curve)"
+    return ""
+
+
+def _clip_toggles(ax: Any, x: np.ndarray, ys: list[np.ndarray]) -> None:
+    """Clip rate curves that run away near a toggle (Sec. 1.10) and mark where they do.
+
+    A sample farther than 20 times the median size from zero is near a
+    toggle: the axis keeps the range of the others and a dotted line marks it.
+    """
+    y = np.concatenate([v[np.isfinite(v)] for v in ys]) if ys else np.zeros(0)
+    if y.size < 5:
+        return
+    typical = float(np.median(np.abs(y)))
+    if typical == 0:
+        return
+    wild = np.zeros_like(x, dtype=bool)
+    for v in ys:
+        own = float(np.nanmedian(np.abs(v))) if np.isfinite(v).any() else 0.0
+        with np.errstate(invalid="ignore"):
+            wild |= np.abs(v) > 20 * max(own, 1e-300)
+    if not wild.any():
+        return
+    tame = np.concatenate([v[np.isfinite(v) & ~wild] for v in ys])
+    if tame.size:
+        lo, hi = float(tame.min()), float(tame.max())
+        pad = 0.15 * max(hi - lo, typical)
+        ax.set_ylim(lo - pad, hi + pad)
+    first = True
+    for sl in _segments(wild):
+        at = float(np.mean(x[sl]))
+        mark = ax.axvline(at, ls=":", lw=1.0, color="0.3",
+                          label="near a toggle (clipped)" if first else None)
+        mark.set_gid(f"toggle-{at:g}")
+        first = False
+    ax.legend(loc="best", fontsize="small", frameon=False)
+
+
+def _shade_unassembled(ax: Any, x: np.ndarray, cols: Any) -> None:
+    """Shade and name the drive angles where the linkage cannot be assembled."""
+    angles = [np.asarray(v, dtype=float) for k, v in cols.items() if k.startswith("angle_")]
+    if not angles:
+        return
+    bad = ~np.all(np.isfinite(np.vstack(angles)), axis=0)
+    first = True
+    for sl in _segments(bad):
+        i0, i1 = sl.start, sl.stop - 1
+        a = float(x[max(i0 - 1, 0)]) if i0 > 0 else float(x[i0])
+        b = float(x[min(i1 + 1, len(x) - 1)])
+        span = ax.axvspan(a, b, color="0.85", zorder=0,
+                          label="cannot be assembled" if first else None)
+        span.set_gid(f"unassembled-{a:g}")
+        first = False
+    if not first:
+        ax.legend(loc="best", fontsize="small", frameon=False)
 
 
 def _to_frame(sw: Sweep, lid: str, k: np.ndarray | int, local: np.ndarray) -> np.ndarray:

@@ -257,7 +257,9 @@ def _center_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]:
         p = np.asarray(vals[lab], dtype=float)
         e = None
         if exact is not None and exact.has_rates:
-            e = equal_velocity_point(exact, *c.pair)
+            from graphkin.kinematics.instant_centers.primary import far_as_ideal
+
+            e = far_as_ideal(equal_velocity_point(exact, *c.pair), sol.mechanism)
         rows.append(Row(f"center-{lab}", lab, unit, _homog(p, scale * 1e-6),
                         "—" if e is None else _homog(e, scale * 1e-6),
                         None if e is None else _homog_diff(p, e, scale),

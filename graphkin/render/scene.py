@@ -22,9 +22,10 @@ import numpy as np
 
 from graphkin.construction import Step
 from graphkin.render.scale import Scale
+from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text"]
+           "sub_digits", "point_text", "construction_text"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -65,7 +66,32 @@ def point_text(label: str) -> str:
     ('T', 'O₄', "C'")
     """
     base = label.split("#")[0].split(":")[-1]
-    return sub_digits(base)
+    return plain(sub_digits(base))
+
+
+def construction_text(label: str) -> str:
+    """A construction point's label with real subscripts: ``J_B`` -> ``$J_{B}$``, ``A_H3``.
+
+    Plain text when there is nothing to subscript; user letters are escaped.
+
+    Examples
+    --------
+    >>> construction_text("J_B"), construction_text("Q_Γ"), construction_text("C'")
+    ('$J_{B}$', '$Q_{Γ}$', "C'")
+    """
+    from graphkin.render.text import math_escape
+
+    base = label.split("#")[0].split(":")[-1]
+    head, sep, sub = base.partition("_")
+    if not sep or not head or not sub:
+        return point_text(label)
+    h, lo = math_escape(head), math_escape(sub.replace("_", ""))
+    if h is None or lo is None:
+        return point_text(label)
+    prime = ""
+    while lo.endswith("'"):
+        lo, prime = lo[:-1], prime + "'"
+    return f"${h}_{{{lo}}}{prime}$"
 
 
 def finite_xy(p: Any, tol: float = 1e-12) -> np.ndarray | None:
@@ -204,6 +230,8 @@ class Panel:
     pole: str | None = None
     origin: tuple[float, float] = (0.0, 0.0)
     """Where the panel sits on the sheet: its lower-left corner in inches."""
+    inner: tuple[float, float, float, float] | None = None
+    """The view less the title and scale-bar strips: where construction lines may run."""
 
     @property
     def k(self) -> float:

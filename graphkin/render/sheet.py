@@ -21,6 +21,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4, 4.3 (Figs. 2.14, 3.5, 4.4).
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -35,10 +36,12 @@ from graphkin.render.results import Row, result_rows
 from graphkin.render.scale import choose_scale, paper_unit, quantity_unit
 from graphkin.render.scene import Item, Panel, finite_xy, safe_id
 from graphkin.render.sources import (
+    CURVATURE_PANELS,
     DIAGRAMS,
     DiagramUnavailable,
     Source,
     plane_of,
+    split_curvature,
     title_of,
 )
 from graphkin.render.style import IMAGE_FILLS, STYLES
@@ -100,6 +103,9 @@ def sheet_diagrams(src: Source, diagram: str) -> list[str]:
     """The diagrams a sheet shows (``all`` expands to those available)."""
     if diagram == "all":
         return src.available()
+    if diagram in CURVATURE_PANELS:
+        src.construction("curvature")  # raises DiagramUnavailable when it cannot be drawn
+        return ["curvature"]
     if "+" in diagram:
         parts = [d.strip() for d in diagram.split("+")]
         for d in parts:
@@ -112,7 +118,7 @@ def sheet_diagrams(src: Source, diagram: str) -> list[str]:
 
 
 def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
-                highlight: int | None = None, table: bool = True,
+                highlight: int | Collection[int] | None = None, table: bool = True,
                 max_inches: float | None = None, title: str | None = None) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
@@ -124,8 +130,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         ``+`` (``"posture+velocity"``), or ``"all"``.
     upto : int, optional
         Draw the diagram's construction only up to this step (inclusive).
-    highlight : int, optional
-        The step drawn in the highlight colour (a teaching page's newest step).
+    highlight : int or collection of int, optional
+        The step (or steps) drawn in the highlight colour (a teaching page's newest act).
     table : bool
         Add the results table.
     max_inches : float, optional
@@ -139,6 +145,19 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         The diagram cannot be drawn for this source.
     """
     diagrams = sheet_diagrams(src, diagram)
+    if "curvature" in diagrams:
+        # one idea per figure, as the book draws it (Figs. 4.25-4.39)
+        subs = split_curvature(src)
+        if diagram in CURVATURE_PANELS:
+            if diagram not in subs:
+                raise DiagramUnavailable(
+                    f"no {diagram} figure for this link's curvature (the construction did not "
+                    f"use it{'; the link turns about a frame pivot' if not subs else ''}); "
+                    f"draw --diagram curvature", diagram=diagram)
+            subs = [diagram]
+        if subs:
+            i = diagrams.index("curvature")
+            diagrams[i:i + 1] = subs
     many = len(diagrams) > 1
     mech = src.mechanism
     unit = src.length_unit
@@ -177,6 +196,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         p = new_panel(d, plane_of(d), False, "")
         (length_of if p.plane == "posture" else polygon_of)[d] = p
 
+    if mech is not None and len(panels) > 1 and main not in length_of.values():
+        panels.remove(main)  # a sheet of curvature panels has no separate posture panel
+
     kinds: dict[str, str] = {}
     planes: dict[str, str] = {}
     for cx in src.constructions.values():
@@ -214,6 +236,16 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         w, h = max(float(ex), minw), max(float(ey), minh)
         p.view = (cx_ - w / 2 - MARGIN * k, cy_ - h / 2 - MARGIN * k - FOOT_H * k,
                   cx_ + w / 2 + MARGIN * k, cy_ + h / 2 + MARGIN * k + TITLE_H * k)
+        p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
+
+    # ---- the Kennedy circle beside the instant centers (Fig. 3.22b) ------
+    ic = src.extras.get("centers")
+    if "centers" in diagrams and ic is not None and hasattr(ic, "kennedy_circle") \
+            and length_of.get("centers") is not None:
+        from graphkin.render.kennedy import kennedy_panel
+
+        kp = kennedy_panel(ic, "centers-" if many else "")
+        panels.insert(panels.index(length_of["centers"]) + 1, kp)  # type: ignore[arg-type]
 
     # ---- paint ----------------------------------------------------------
     for d, painter in painters.items():
@@ -235,13 +267,17 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         poly = polygon_of.get(d)
         if poly is not None and d in painters:
             _images(src, poly, painters[d], upto if d == diagram else None)
+    for d in diagrams:
+        if d in ("cubic", "curvature") and length_of.get(d) is not None:
+            _curvature_extras(src, length_of[d], d)  # type: ignore[arg-type]
     for p in panels:
         _frame(p)
         place_labels(p)
 
     rows: list[Row] = []
     if table and mech is not None:
-        rows = result_rows(src, diagrams)
+        rows = result_rows(src, list(dict.fromkeys(
+            "curvature" if d in CURVATURE_PANELS else d for d in diagrams)))
     sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
                   (mech.title if mech is not None and mech.title else
                    (next(iter(src.constructions.values())).title if src.constructions
@@ -297,6 +333,62 @@ def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np
     return pts
 
 
+def _curvature_extras(src: Source, p: Panel, d: str) -> None:
+    """The cubic of stationary curvature as a curve and Ball's point (Figs. 4.37-4.39).
+
+    For a link turning about a frame pivot: the sentence that says why there is
+    nothing more to draw.
+    """
+    lc = src.extras.get("curvature")
+    if lc is None:
+        return
+    x0, y0, x1, y1 = p.inner or p.view
+    if d == "curvature" and set(getattr(lc, "sections", {}).values()) <= {"pivot"}:
+        cx = src.constructions.get("curvature")
+        note = cx.steps[0].note if cx is not None and len(cx.steps) else ""
+        if note:
+            # below the drawing, where the scale bar was (it moves down under the sentence)
+            vx0, vy0, vx1, vy1 = p.view
+            p.view = (vx0, vy0 - 0.5 * p.k, vx1, vy1)
+            g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
+            g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
+                                "caption", gid=f"{p.prefix}curvature-note-text",
+                                text=_wrap(note, 80), ha="left", va="top", key="curvature note"))
+        return
+    cubic = getattr(lc, "cubic", None)
+    if d != "cubic" or cubic is None:
+        return
+    g = p.group(f"{p.prefix}cubic-curve", 1.8, key="cubic of stationary curvature")
+    psi = np.linspace(0.0, np.pi, 2001)[1:-1]
+    with np.errstate(all="ignore"):
+        pts = np.asarray(cubic.point(psi), dtype=float)
+    ok = np.all(np.isfinite(pts), axis=1) & (pts[:, 0] >= x0) & (pts[:, 0] <= x1) \
+        & (pts[:, 1] >= y0) & (pts[:, 1] <= y1)
+    # a run of points inside the panel is one piece of the curve
+    start = None
+    pieces = 0
+    for i in range(len(pts) + 1):
+        if i < len(pts) and ok[i]:
+            start = i if start is None else start
+            continue
+        if start is not None and i - start >= 2:
+            g.items.append(Item("path", pts[start:i], "cubic",
+                                gid=f"{p.prefix}cubic" + (f"-{pieces}" if pieces else ""),
+                                key="cubic" if not pieces else f"cubic:{pieces}"))
+            pieces += 1
+        start = None
+    ball = getattr(lc, "ball_point", None)
+    if ball is not None and np.all(np.isfinite(ball)):
+        g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
+                            gid=f"{p.prefix}ball-point", key="Ball's point"))
+
+
+def _wrap(text: str, width: int) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width))
+
+
 def _inside(q: np.ndarray, rect: tuple[float, float, float, float] | None) -> bool:
     return rect is None or (rect[0] <= q[0] <= rect[2] and rect[1] <= q[1] <= rect[3])
 
@@ -311,7 +403,7 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
     pref = "v" if p.plane == "velocity" else "a"
     pole = p.pole
     for i, lid in enumerate(mech.moving):
-        names = list(mech.links[lid].points)
+        names = [n for n in mech.links[lid].points if n not in mech.helper_points]
         world = {}
         for n in names:
             world[n] = np.asarray(sol.position(n, lid), dtype=float)

@@ -43,7 +43,68 @@ optional_modules: dict[str, str] = {
 
 _TITLES = {"posture": "Posture", "velocity": "Velocity polygon",
            "acceleration": "Acceleration polygon", "centers": "Instant centers",
-           "curvature": "Curvature"}
+           "curvature": "Curvature",
+           "inflection": "(a) Inflection and Bresse circles",
+           "bobillier": "(b) Bobillier's construction",
+           "hartmann": "(c) Conjugate points",
+           "cubic": "(d) Cubic of stationary curvature"}
+
+CURVATURE_PANELS: dict[str, tuple[str, ...]] = {
+    "inflection": ("pivot", "accelerations", "circle", "bresse", "four_circles"),
+    "bobillier": ("bobillier", "euler_savary", "collineation_axis"),
+    "hartmann": ("hartmann", "bobillier_conjugate"),
+    "cubic": ("hain", "ball", "ball_at_j"),
+}
+"""The curvature sheet, one idea per figure as the book draws it (Figs. 4.25-4.39): panel ->
+the sections of the curvature construction it shows."""
+
+
+class StepSubset:
+    """Some steps of a construction (a panel of the curvature sheet), in their order.
+
+    It holds the panel's own steps and, for context, the steps that made the
+    points, lines and circles they use (drawn as given).
+    """
+
+    def __init__(self, cx: Construction, keep: set[int], title: str) -> None:
+        own = [s for s in cx.steps if s.index in keep]
+        used = {i for s in own for i in s.inputs}
+        self.steps = [s for s in cx.steps if s.index in keep or set(s.outputs) & used]
+        self.title = title
+
+    def __iter__(self) -> Any:
+        return iter(self.steps)
+
+    def __len__(self) -> int:
+        return len(self.steps)
+
+
+def split_curvature(src: Source) -> list[str]:
+    """Register one sub-construction per curvature panel that has steps; their names.
+
+    Returns ``[]`` when the curvature construction has no sections (a link
+    turning about a frame pivot: one panel with a sentence).
+    """
+    lc = src.extras.get("curvature")
+    cx = src.constructions.get("curvature")
+    sections: dict[str, str] = dict(getattr(lc, "sections", {}) or {})
+    if cx is None or not sections or set(sections.values()) <= {"pivot"}:
+        return []
+    out = []
+    placed: set[int] = set()
+    for name, wanted in CURVATURE_PANELS.items():
+        keep = {s.index for s in cx.steps if sections.get(s.outputs[0]) in wanted}
+        if name == "inflection":  # anything unfiled goes to the first panel
+            keep |= {s.index for s in cx.steps if s.outputs[0] not in sections}
+        keep -= placed
+        if not keep:
+            continue
+        placed |= keep
+        src.constructions[name] = StepSubset(cx, keep, title_of(name))  # type: ignore[assignment]
+        src.values[name] = src.values["curvature"]
+        src.extras[name] = lc
+        out.append(name)
+    return out
 
 
 class DiagramUnavailable(GraphkinError, LookupError):

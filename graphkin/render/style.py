@@ -75,16 +75,28 @@ STYLES: dict[str, dict[str, Any]] = {
     "label": {"size": FONT_PT},
     "label-aux": {"size": SMALL_PT, "color": GREY},
     "label-small": {"size": SMALL_PT},
+    "label-vector": {"size": FONT_PT},
     "number": {"size": FONT_PT + 1, "style": "italic"},
     "title": {"size": FONT_PT + 1, "weight": "bold"},
     "caption": {"size": SMALL_PT + 0.5},
     "table": {"size": SMALL_PT, "family": "monospace"},
     "table-head": {"size": SMALL_PT, "family": "monospace", "weight": "bold"},
     "scale-bar": {"color": INK, "lw": 0.8},
+    "cubic": {"color": INK, "lw": 1.1, "ls": (0, (8, 2))},
+    "ball": {"marker": "o", "ms": 5.5, "mfc": "none", "mec": INK, "mew": 1.0},
+    # the Kennedy circle (Fig. 3.22b)
+    "kennedy-circle": {"color": GREY, "lw": 0.6},
+    "kennedy-known": {"color": INK, "lw": 1.0},
+    "kennedy-unknown": {"color": GREY, "lw": 0.6, "ls": (0, (3, 2))},
+    "label-order": {"size": SMALL_PT, "color": INK},
 }
 
-IMAGE_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")
-"""Light fills for the images of links (one per link, in link order)."""
+IMAGE_FILLS = ("#fee6ce", "#9ecae1", "#c7e9c0", "#74c476", "#dadaeb", "#fdae6b")
+"""Light fills for the images of links (one per link, in link order).
+
+The first four print as distinct greys (luminance 0.92, 0.75, 0.86, 0.64): a
+handout photocopied in black and white still tells the images apart.
+"""
 
 RC: dict[RcKeyType, Any] = {
     "svg.fonttype": "none",

@@ -43,10 +43,12 @@ def to_bytes(fig: Any, fmt: str = "svg", dpi: float = 150.0) -> bytes:
         Resolution of a PNG.
     """
     from graphkin.render.style import rc_context
+    from graphkin.render.text import sanitize_figure
 
     if fmt not in FORMATS:
         raise GraphkinError(f"cannot write {fmt!r} drawings; valid: {', '.join(FORMATS)}")
     buf = io.BytesIO()
+    sanitize_figure(fig)  # a user string that is not valid mathtext is shown as typed
     with rc_context():
         fig.savefig(buf, format=fmt, metadata=_METADATA[fmt], dpi=dpi, facecolor="white")
     data = buf.getvalue()

@@ -20,6 +20,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from strategies import mechanisms
 
 import graphkin
 from graphkin.cli import main
@@ -275,6 +277,13 @@ def _cad(path: Path, vectors: dict[str, np.ndarray], style: str, *,
         if style == "tapered":
             host.add_lwpolyline([(*p0, 0, 0, 0), (*base, 1.2, 0, 0), (*p1, 0, 0, 0)],
                                 format="xyseb")
+        elif style == "separate-taper":  # the shaft to the arrowhead's base, the taper apart
+            host.add_line(tuple(p0), tuple(base))
+            host.add_lwpolyline([(*base, 1.2, 0, 0), (*p1, 0, 0, 0)], format="xyseb")
+        elif style == "triangle":        # a closed triangle at the tip, the shaft to its base
+            host.add_line(tuple(p0), tuple(base))
+            side = np.array([-d[1], d[0]]) * 0.6
+            host.add_lwpolyline([tuple(base + side), tuple(p1), tuple(base - side)], close=True)
         elif style == "leader":
             host.add_leader([tuple(p1), tuple(p0)])
         else:  # two short LINEs as the arrowhead, the shaft to the tip
@@ -308,7 +317,8 @@ def velocities(fourbar: Path) -> dict[str, np.ndarray]:
     return {p.lower(): np.asarray(an.velocity(p), dtype=float) for p in "BCEF"}
 
 
-@pytest.mark.parametrize("style", ["tapered", "lines", "leader", "block"])
+@pytest.mark.parametrize("style", ["tapered", "separate-taper", "triangle", "lines", "leader",
+                                   "block"])
 def test_cad_drawings_as_students_draw_them(fourbar: Path, tmp_path: Path, style: str,
                                             velocities: dict[str, np.ndarray],
                                             capsys: pytest.CaptureFixture[str]) -> None:
@@ -356,8 +366,12 @@ def test_svg_with_transforms_and_tspans(fourbar: Path, tmp_path: Path,
     parts = []
     for lab, v in velocities.items():
         x, y = v / PER_MM
-        parts.append(f'<path d="M0,0 L{x:.6f},{y:.6f}"/>'
-                     f'<path d="M{x:.6f},{y:.6f} l-1,0.5 l0.2,-1 z"/>')
+        d = np.array([x, y]) / math.hypot(x, y)
+        c1 = np.array([x, y]) - 2.5 * d + 0.7 * np.array([-d[1], d[0]])
+        c2 = c1 - 1.4 * np.array([-d[1], d[0]])
+        parts.append(f'<path d="M0,0 L{x:.6f},{y:.6f}"/>'         # an arrowhead at the tip
+                     f'<path d="M{x:.6f},{y:.6f} L{c1[0]:.6f},{c1[1]:.6f} '
+                     f'L{c2[0]:.6f},{c2[1]:.6f} z"/>')
         parts.append(f'<text transform="translate({x + 0.8:.6f},{y + 0.8:.6f}) scale(1,-1)">'
                      f'<tspan>{lab}</tspan></text>')
     parts.append('<text transform="translate(-4,1) scale(1,-1)">O<tspan baseline-shift="sub" '
@@ -449,3 +463,112 @@ def test_huge_and_special_files_exit_2(fourbar: Path, tmp_path: Path,
         code = main(["check", str(fourbar), *args])
         err = capsys.readouterr().err
         assert code == 2 and len(err.strip().splitlines()) == 1 and words in err, err
+
+
+# ---- every kind of mechanism ----------------------------------------------------------
+
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mechanisms())
+def test_exact_answers_pass_and_slips_are_named_on_random_mechanisms(rm) -> None:  # type: ignore[no-untyped-def]
+    """Answers from the analytic solver pass; ω with the sense reversed, V ×12 are named."""
+    from graphkin.check import check, loads_answers
+
+    mech = rm.mechanism()
+    if not mech.has_rates:
+        return
+    an = solve_analytic(mech)
+    lines = []
+    for lid in mech.links:
+        if lid != "1":
+            lines.append(f"omega{lid} = {float(an.omega(lid)):.9g}")
+    pts = [p for p in mech.point_names if p not in mech.helper_points]
+    for p in pts:
+        v = np.asarray(an.velocity(p), dtype=float)
+        if math.hypot(*v) > 0:
+            lines.append(f"V_{p} = {_vec(v, f'{mech.length_unit}/s', 1.0)}")
+    rep = check(mech.solve(), loads_answers("\n".join(lines), mech))
+    assert rep.ok, rep.text()
+    # the first moving link's ω with its sense reversed (|ω| ≥ 3 % of the fastest, by the
+    # strategy's construction), and the fastest point's velocity 12 times too large
+    lid = next(k for k in mech.links if k != "1")
+    fastest = max(pts, key=lambda p: math.hypot(*an.velocity(p)))
+    text = (f"omega{lid} = {-float(an.omega(lid)):.9g}\n"
+            f"V_{fastest} = {_vec(12 * np.asarray(an.velocity(fastest)), 'x', 1.0)}")
+    text = text.replace('x at', f'{mech.length_unit}/s at')
+    rows = {r.key: r for r in check(mech.solve(), loads_answers(text, mech)).rows}
+    assert rows[f"omega{lid}"].verdict == "WRONG"
+    assert rows[f"omega{lid}"].code in ("sense", "follows:V_" + fastest)
+    assert rows[f"V_{fastest}"].code in ("unit:12", "follows:omega" + lid), rows
+
+
+def test_a_nearly_stationary_coupler_is_judged_on_the_paper() -> None:
+    """ω3 near zero, read off image points each within 0.5 mm of their place on the sheet.
+
+    ω3 = (R_CB × V_CB) / |R_CB|² (V_CB = ω3 k × R_CB, Eq. 3.4); the image points b, c of
+    a polygon about 100 mm across are each moved 0.5 mm (0.5 % of its size) in a random
+    direction.  Relative to ω3 that is a large error, on the paper it is drawing accuracy.
+    """
+    from graphkin.check import check, loads_answers
+
+    # a near-parallelogram: AB = 4, DC = 4.2, BC = 10.2, AD = 10 (a coupler nearly translating)
+    mech = graphkin.loads("""
+units = { length = "in" }
+[links.1]
+A = [0, 0]
+D = [10, 0]
+[links.2]
+A = [0, 0]
+B = [4, 0]
+[links.3]
+B = [0, 0]
+C = [10.2, 0]
+[links.4]
+D = [0, 0]
+C = [4.2, 0]
+[drive]
+link = 2
+angle = 60
+omega = 10
+alpha = 0
+[assembly]
+C = [12.1, 3.6]
+""")
+    an = solve_analytic(mech)
+    w3 = abs(float(an.omega("3")))
+    assert 0 < w3 < 0.05 * 10.0
+    size = max(math.hypot(*an.velocity(p)) for p in mech.point_names)
+    per = size / 100.0                           # in/s per mm: the polygon is 100 mm across
+    r_cb = np.asarray(an.position("C")) - np.asarray(an.position("B"))
+    rng = np.random.default_rng(4)
+    sol = mech.solve()
+    strict = 0
+    for _ in range(20):
+        dv = [0.5 * per * np.array([math.cos(t), math.sin(t)])
+              for t in rng.uniform(0, 2 * math.pi, 2)]
+        v_cb = (np.asarray(an.velocity("C")) + dv[0]) - (np.asarray(an.velocity("B")) + dv[1])
+        w = float(r_cb[0] * v_cb[1] - r_cb[1] * v_cb[0]) / float(r_cb @ r_cb)
+        text = (f'tolerance = {{ drawing = "0.5 mm", scale = "1 mm = {per:.9g} in/s" }}\n'
+                f"omega3 = {w:.9g}\n")
+        (row,) = check(sol, loads_answers(text, mech)).rows
+        assert row.verdict == "ok", row
+        (plain,) = check(sol, loads_answers(f"omega3 = {w:.9g}", mech)).rows
+        strict += plain.verdict == "WRONG"
+    assert strict >= 10          # by 2 % of the value alone most readings would fail
+
+
+def test_no_follow_through_from_a_mistake_an_answer_given_right_rules_out(
+        fourbar: Path) -> None:
+    """V_E and V_F both 12 times too large, ω3 right: two slips of units, not ω2 × 12.
+
+    ω2 taken 12 times too large would make ω3 12 times too large as well (the polygon
+    is linear in ω2, Sec. 3.4); ω3 is right, so each velocity keeps its own diagnosis.
+    """
+    from graphkin.check import check, loads_answers
+
+    mech = graphkin.load(fourbar)
+    an = solve_analytic(mech)
+    text = (f"omega3 = {float(an.omega('3')):.6g}\n"
+            f"V_E = {_vec(an.velocity('E'), 'ft/s', 1.0)}\n"
+            f"V_F = {_vec(an.velocity('F'), 'ft/s', 1.0)}\n")
+    rows = {r.key: r for r in check(mech.solve(), loads_answers(text, mech)).rows}
+    assert [rows[k].code for k in ("omega3", "V_E", "V_F")] == ["", "unit:12", "unit:12"]

@@ -77,3 +77,19 @@ def test_draw_then_check_is_exact(examples: Path, tmp_path: Path, name: str, dia
     text = capsys.readouterr().out
     assert f"{checked} of {checked} within tolerance" in text
     assert "WRONG" not in text and "ignored" not in text
+
+
+@pytest.mark.parametrize("name", ["ex3_1_fourbar", "ex3_3_inverted_slider"])
+def test_the_whole_sheet_is_read_panel_by_panel(examples: Path, tmp_path: Path, name: str,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    """``draw`` without ``-d``: every panel on one sheet; only the two polygons are read."""
+    src = examples / f"{name}.toml"
+    out = tmp_path / "sheet.svg"
+    assert main(["draw", str(src), "-o", str(out)]) == 0
+    polys = read_polygons(out)
+    assert sorted(p.diagram for p in polys) == ["acceleration", "velocity"]
+    assert all(p.scale for p in polys)            # each panel's own scale, not a fit
+    capsys.readouterr()
+    assert main(["check", str(src), "--drawing", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "not turned" in text and "WRONG" not in text

@@ -41,6 +41,7 @@ from graphkin.errors import (
 )
 from graphkin.kinematics.analytic import solve_analytic, solve_analytic_many
 from graphkin.kinematics.instant_centers import (
+    FAR_AS_INFINITY,
     How,
     KnownCenter,
     KnownLine,
@@ -163,6 +164,14 @@ def check_all_centers(sol: Solution, rel: float = REL) -> int:
         cond = (vs / size) / max(float(np.linalg.norm(q)), 1e-300)
         if cond > 1e6:
             continue  # (nearly) no relative motion: every point has equal velocities
+        far = FAR_AS_INFINITY * sol.mechanism.scale
+        if bool(c.is_ideal) and q[2] != 0 and float(np.hypot(*q[:2])) * size > 0.5 * far * abs(
+                float(q[2])):
+            # farther than FAR_AS_INFINITY sizes: recorded at infinity, in the same direction
+            u = q[:2] / np.linalg.norm(q[:2]) * np.sign(q[2])
+            assert abs(cross(u, c.point[:2])) <= rel * cond + DEFAULT_TOL.angle, c.label
+            compared += 1
+            continue
         # (+ the angle tolerance: a meet whose w is below it is put at infinity)
         assert_same_center(c.point, q, size, c.label, rel * cond + DEFAULT_TOL.angle)
         compared += 1

@@ -71,3 +71,56 @@ def test_committed_gallery_has_enough_figures():
     drawings = GALLERY / "drawings"
     for e in entries:
         assert list(drawings.glob(f"{e.stem}-*.svg")), e.stem
+
+
+def test_build_deletes_only_its_own_drawings(small_gallery, tmp_path):
+    root = tmp_path / "g"
+    shutil.copytree(small_gallery, root)
+    mine = root / "drawings" / "my-own-figure.svg"
+    mine.write_text("<svg/>", encoding="utf-8")
+    # a drawing graphkin wrote earlier, whose mechanism file is gone, is removed
+    (root / "drawings" / "fig2_24_open-posture.svg").rename(root / "drawings" / "old-posture.svg")
+    man = root / "drawings" / "MANIFEST.json"
+    data = json.loads(man.read_text())
+    data["drawings"]["old-posture.svg"] = data["drawings"].pop("fig2_24_open-posture.svg")
+    man.write_text(json.dumps(data))
+    build(root)
+    assert mine.read_text(encoding="utf-8") == "<svg/>"
+    assert not (root / "drawings" / "old-posture.svg").exists()
+
+
+def test_build_never_follows_a_symlink_out_of_its_folder(small_gallery, tmp_path):
+    from graphkin.errors import InputError
+
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    victim = outside / "fig2_24_open-posture.svg"
+    victim.write_text("keep me", encoding="utf-8")
+    root = tmp_path / "g"
+    shutil.copytree(small_gallery, root)
+    shutil.rmtree(root / "drawings")
+    (root / "drawings").symlink_to(outside, target_is_directory=True)
+    with pytest.raises(InputError, match="out of the gallery"):
+        build(root)
+    assert victim.read_text(encoding="utf-8") == "keep me"
+    # a drawing that is a link to a file outside is not written through either
+    (root / "drawings").unlink()
+    (root / "drawings").mkdir()
+    (root / "drawings" / "fig2_24_open-posture.svg").symlink_to(victim)
+    with pytest.raises(InputError, match="link"):
+        build(root)
+    assert victim.read_text(encoding="utf-8") == "keep me"
+    # a mechanism file linked from outside is not read
+    (root / "drawings" / "fig2_24_open-posture.svg").unlink()
+    (root / "mechanisms" / "x.toml").symlink_to(EXAMPLES / "ex3_1_fourbar.toml")
+    with pytest.raises(InputError, match="out of the gallery"):
+        discover(root)
+
+
+def test_a_malformed_file_in_the_gallery_is_one_line(small_gallery, tmp_path, capsys):
+    root = tmp_path / "g"
+    shutil.copytree(small_gallery, root)
+    (root / "mechanisms" / "bad.toml").write_text("[links.1\nA = [0, 0]\n", encoding="utf-8")
+    assert main(["gallery", "--dir", str(root), "--check"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "bad.toml" in err[0] and "TOML" in err[0]

@@ -91,7 +91,7 @@ def _shape(*xs: Any) -> tuple[int, ...]:
     for x in xs:
         if type(x) is _ND:
             t = x.shape
-            if t != s:
+            if t != s and t:
                 s = t if not s else np.broadcast_shapes(s, t)
     return s
 

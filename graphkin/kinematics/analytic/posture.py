@@ -101,28 +101,8 @@ def solve_analytic(mech: Mechanism, *, guess: Guess | Solution | None = None,
     --------
     Example 3.1 of the textbook: crank 4 in at 120°, 900 rev/min.
 
-    >>> from graphkin.mechanisms import loads
-    >>> mech = loads('''
-    ... units = { length = "in" }
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = "900 rev/min"
-    ... [assembly]
-    ... C = [15, 10]
-    ... ''')
+    >>> import graphkin
+    >>> mech = graphkin.examples.fourbar()
     >>> sol = solve_analytic(mech)
     >>> import math
     >>> round(math.degrees(float(sol.angle_rad("3"))), 4), round(float(sol.omega("4")), 3)

@@ -142,8 +142,7 @@ array([-2., -3.])
 
 from __future__ import annotations
 
-from typing import Any
-
+from graphkin.kinematics._moved import moved_to
 from graphkin.kinematics.curvature.bresse import bresse_pole
 from graphkin.kinematics.curvature.centrodes import centrode_radii
 from graphkin.kinematics.curvature.conjugates import known_conjugates
@@ -175,17 +174,6 @@ __all__ = ["Cubic", "LinkCurvature", "PathCurvature", "euler_savary", "inflectio
            "curvature_text"]
 
 
-_REPORTS = ("curvature_json", "paths_json", "curvature_text")
-
-
-def __getattr__(name: str) -> Any:
-    """The report functions, which live in :mod:`graphkin.output.curvature` (the output layer).
-
-    Imported on first use, so that loading the kinematics does not load the
-    output layer above it; the old import path keeps working.
-    """
-    if name in _REPORTS:
-        import importlib
-
-        return getattr(importlib.import_module("graphkin.output.curvature"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+# the reports moved to the output layer (graphkin.output); the old import path still works
+__getattr__ = moved_to("graphkin.output.curvature",
+                       ("curvature_json", "paths_json", "curvature_text"), __name__)

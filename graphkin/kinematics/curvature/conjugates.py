@@ -51,31 +51,13 @@ def known_conjugates(mech: Mechanism, link: str) -> dict[str, tuple[Array, str]]
 
     Examples
     --------
-    A slider-crank: the rod's pin A turns about O2, its pin B slides on the x axis.
+    The offset slider-crank of Example 3.2: the rod's pin B turns about the crank's pivot A (its
+    center of curvature), its pin C slides on a horizontal line (the center at infinity).
 
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... O2 = [0, 0]
-    ... [links.2]
-    ... O2 = [0, 0]
-    ... A = [2, 0]
-    ... [links.3]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [links.4]
-    ... B = [0, 0]
-    ... [[sliders]]
-    ... link = 4
-    ... on = 1
-    ... point = "B"
-    ... line = [[0, 0], [1, 0]]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''')
-    >>> {n: h.tolist() for n, (h, why) in known_conjugates(mech, "3").items()}
-    {'A': [0.0, 0.0, 1.0], 'B': [0.0, 1.0, 0.0]}
+    >>> mech = graphkin.examples.slider_crank()
+    >>> {n: (h + 0.0).tolist() for n, (h, why) in known_conjugates(mech, "3").items()}
+    {'B': [0.0, 0.0, 1.0], 'C': [0.0, 1.0, 0.0]}
     """
     out: dict[str, tuple[Array, str]] = {}
     frame = mech.links[FRAME].points

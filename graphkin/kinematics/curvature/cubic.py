@@ -8,8 +8,10 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphkin.construction import Role
 from graphkin.errors import ConstructionError
 from graphkin.kinematics.curvature._vec import _cross, _dot, _xy
+from graphkin.kinematics.curvature.construction import _CurvatureBase
 from graphkin.kinematics.solution import perp
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
@@ -176,3 +178,60 @@ class Cubic:
         im = 0.0 if math.isinf(self.M) else 1.0 / self.M
         in_ = 0.0 if math.isinf(self.N) else 1.0 / self.N
         return (x * x + y * y) * (x * im - y * in_) - x * y
+
+
+class _HainSteps(_CurvatureBase):
+    """The steps of Hain's construction of the cubic and of Ball's point (Fig. 4.38)."""
+
+    def hain(self, a: str, b: str) -> None:
+        """Fig. 4.38: the auxiliary line G of Hain's construction."""
+        lab = self.lab
+        i = self.I_label or "I"
+        corners = []
+        for n in (a, b):
+            self.given(n, self.pos(self.local[n]), f"{n}: a point of link {self.lid}.")
+            ray = self.line(i, n, f"Draw the line I{n}.")
+            pp = self.add("perpendicular", (ray, n), lab(f"⊥I{n}@{n}"),
+                          f"Through {n} draw a line perpendicular to I{n}.")
+            xn = self.add("meet", (pp, lab("N")), lab(f"{n}_N"),
+                          f"It intersects the centrode normal at {n}_N.")
+            xt = self.add("meet", (pp, lab("T")), lab(f"{n}_T"),
+                          f"It intersects the centrode tangent at {n}_T.")
+            corners.append(self.add("parallelogram", (i, xn, xt), lab(f"{n}_G"),
+                                    f"Complete the rectangle I{n}_N{n}_G{n}_T."))
+        gl = self.add("join", tuple(corners), lab("G"),
+                      f"{a}_G and {b}_G define the auxiliary line G: for every point S of the "
+                      "cubic of stationary curvature, S_G lies on G.")
+        self.add("meet", (gl, lab("N")), lab("G_N"),
+                 "G meets the centrode normal at G_N: IG_N = M, the diameter of the circle "
+                 "(centered on N) that osculates the branch of the cubic tangent to T.",
+                 Role.RESULT)
+        self.add("meet", (gl, lab("T")), lab("G_T"),
+                 "G meets the centrode tangent at G_T: IG_T = -N, the diameter of the circle "
+                 "(centered on T) that osculates the branch of the cubic tangent to N.",
+                 Role.RESULT)
+
+    def ball(self) -> None:
+        lab = self.lab
+        i, j = self.I_label or "I", self.J_label or "J"
+        tj = self.add("parallel", (lab("T"), j), lab("T@J"),
+                      "Draw the tangent to the inflection circle at J (parallel to T): the "
+                      "S_G of every point of the inflection circle lies on it.")
+        ug = self.add("meet", (lab("G"), tj), lab("U_G"), "It meets G at U_G.")
+        un = self.add("parallel", (lab("N"), ug), lab("U_G∥N"),
+                      "Through U_G draw a ray parallel to N.")
+        ut = self.add("meet", (un, lab("T")), lab("U_T"),
+                      "It locates U_T on the centrode tangent (U_N is J).")
+        tl = self.line(ut, j, "Connect U_T with U_N = J.")
+        pl = self.add("perpendicular", (tl, i), lab("⊥U_TJ@I"),
+                      "Through I draw a perpendicular to this line.")
+        self.add("meet", (pl, tl), lab("U"),
+                 "Its foot is Ball's point U: the point of the cubic of stationary curvature "
+                 "on the inflection circle, whose path is nearly straight for a long way.",
+                 Role.RESULT)
+
+    def ball_at_j(self) -> None:
+        self.add("copy_point", (self.J_label or "J",), self.lab("U"),
+                 "N is infinite: the cubic contains the centrode normal, so it meets the "
+                 "inflection circle at J, and Ball's point U is the inflection pole "
+                 "(Example 4.16).", Role.RESULT)

@@ -14,7 +14,8 @@ from graphkin.construction import Construction
 from graphkin.errors import ConstructionError, GraphkinError
 from graphkin.geometry import ops as g
 from graphkin.kinematics.curvature._vec import _dot, _sin_angle, _unit
-from graphkin.kinematics.curvature.bresse import bresse_pole
+from graphkin.kinematics.curvature.bobillier import _BobillierSteps
+from graphkin.kinematics.curvature.bresse import _BresseSteps, bresse_pole
 from graphkin.kinematics.curvature.centrodes import centrode_radii
 from graphkin.kinematics.curvature.conjugates import _frame_pins
 from graphkin.kinematics.curvature.construction import (
@@ -23,11 +24,18 @@ from graphkin.kinematics.curvature.construction import (
     _RAY_FROM_N,
     _RAYS,
     _USABLE,
-    _Curvature,
+    _CurvatureBase,
 )
-from graphkin.kinematics.curvature.cubic import Cubic, ball_point, stationary_curvature_cubic
+from graphkin.kinematics.curvature.cubic import (
+    Cubic,
+    _HainSteps,
+    ball_point,
+    stationary_curvature_cubic,
+)
 from graphkin.kinematics.curvature.euler_savary import euler_savary
+from graphkin.kinematics.curvature.hartmann import _HartmannSteps
 from graphkin.kinematics.curvature.inflection import pole_velocity
+from graphkin.kinematics.curvature.inflection_circle import _InflectionCircleSteps
 from graphkin.kinematics.curvature.paths import PathCurvature, path_curvature
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME
@@ -37,6 +45,11 @@ __all__ = ["LinkCurvature", "link_curvature", "curvature", "curvature_constructi
            "path_curvatures"]
 
 Array = np.ndarray
+
+
+class _Curvature(_InflectionCircleSteps, _BobillierSteps, _HartmannSteps, _BresseSteps,
+                 _HainSteps, _CurvatureBase):
+    """The sections of Secs. 4.12-4.17 for one link, each idea's steps from its own module."""
 
 
 @dataclass
@@ -120,6 +133,8 @@ class LinkCurvature:
     construction: Construction | None
     values: dict[str, Array] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    sections: dict[str, str] = field(default_factory=dict)
+    """Step output label -> the section that drew it (``circle``, ``hartmann``, ``hain``...)."""
 
 
 def _is_batch(sol: Solution) -> bool:
@@ -359,7 +374,8 @@ def link_curvature(sol: Solution, link: str, *, tol: Tolerance | None = None,
         bresse_pole=e_pole, bresse_diameter=bd, conjugates=conj, conjugate_methods=conj_how,
         known={n: why for n, (_, why) in b.known.items()}, cubic=cubic, ball_point=ball,
         moving_centrode=mc, fixed_centrode=fc, method=b.method,
-        construction=b.cx if len(b.cx) else None, values=dict(b.env), notes=b.notes)
+        construction=b.cx if len(b.cx) else None, values=dict(b.env), notes=b.notes,
+        sections=dict(b.sections))
 
 # ---------------------------------------------------------------------------
 # every link, every path

@@ -57,27 +57,7 @@ Examples
 The four-bar of Examples 3.1 and 3.13:
 
 >>> import graphkin
->>> sol = graphkin.loads('''
-... units = { length = "in" }
-... [links.1]
-... A = [0, 0]
-... D = [10, 0]
-... [links.2]
-... A = [0, 0]
-... B = [4, 0]
-... [links.3]
-... B = [0, 0]
-... C = [18, 0]
-... [links.4]
-... D = [0, 0]
-... C = [11, 0]
-... [drive]
-... link = 2
-... angle = 120
-... omega = "900 rev/min"
-... [assembly]
-... C = [15, 10]
-... ''').solve()
+>>> sol = graphkin.examples.fourbar().solve()
 >>> ic = instant_centers(sol)
 >>> ic.order
 ['I12', 'I14', 'I23', 'I34', 'I13', 'I24']
@@ -91,8 +71,7 @@ I13 lies on the line I12-I23 and on the line I14-I34 (Kennedy).
 
 from __future__ import annotations
 
-from typing import Any
-
+from graphkin.kinematics._moved import moved_to
 from graphkin.kinematics.instant_centers.centers import (
     Center,
     How,
@@ -100,7 +79,11 @@ from graphkin.kinematics.instant_centers.centers import (
     KnownCenter,
     KnownLine,
 )
-from graphkin.kinematics.instant_centers.kennedy import instant_center, instant_centers
+from graphkin.kinematics.instant_centers.kennedy import (
+    FAR_AS_INFINITY,
+    instant_center,
+    instant_centers,
+)
 from graphkin.kinematics.instant_centers.labels import center_label, pair_key, sort_links
 from graphkin.kinematics.instant_centers.line_of_centers import (
     LineOfCentersVelocity,
@@ -115,20 +98,10 @@ from graphkin.kinematics.instant_centers.ratios import (
 __all__ = ["How", "Center", "InstantCenters", "KnownCenter", "KnownLine", "LineOfCentersVelocity",
            "center_label", "pair_key", "sort_links", "instant_centers", "instant_center",
            "angular_velocity_ratio", "kinematic_coefficient", "mechanical_advantage",
-           "line_of_centers_velocity", "instant_centers_json", "instant_centers_text"]
+           "line_of_centers_velocity", "instant_centers_json", "instant_centers_text",
+           "FAR_AS_INFINITY"]
 
 
-_REPORTS = ("instant_centers_json", "instant_centers_text")
-
-
-def __getattr__(name: str) -> Any:
-    """The report functions, which live in :mod:`graphkin.output.centers` (the output layer).
-
-    Imported on first use, so that loading the kinematics does not load the
-    output layer above it; the old import path keeps working.
-    """
-    if name in _REPORTS:
-        import importlib
-
-        return getattr(importlib.import_module("graphkin.output.centers"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+# the reports moved to the output layer (graphkin.output); the old import path still works
+__getattr__ = moved_to("graphkin.output.centers", ("instant_centers_json", "instant_centers_text"),
+                       __name__)

@@ -1,19 +1,16 @@
-"""Primary centers by inspection and the rest by the Aronhold-Kennedy theorem (Secs. 3.12-3.14)."""
+"""The secondary centers by the Aronhold-Kennedy theorem, and the search (Secs. 3.12-3.14)."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from itertools import combinations
-from typing import Any, Literal
 
 import numpy as np
 
-from graphkin.construction import Construction, Role
-from graphkin.construction.ops import OPS
+from graphkin.construction import Role
 from graphkin.errors import GraphkinError, InputError
 from graphkin.geometry import ops as g
 from graphkin.kinematics.instant_centers.centers import (
-    Center,
     How,
     InstantCenters,
     KnownCenter,
@@ -27,11 +24,12 @@ from graphkin.kinematics.instant_centers.labels import (
     pair_key,
     sort_links,
 )
+from graphkin.kinematics.instant_centers.primary import FAR_AS_INFINITY, _PrimaryCenters
 from graphkin.kinematics.solution import Solution
-from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.mechanisms.model import FRAME
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
-__all__ = ["instant_centers", "instant_center"]
+__all__ = ["instant_centers", "instant_center", "FAR_AS_INFINITY"]
 
 Pair = tuple[str, str]
 
@@ -51,200 +49,8 @@ def _is_batch(sol: Solution) -> bool:
     return np.ndim(sol.links[FRAME].angle) > 0
 
 
-class _Kennedy:
-    """Finds the centers one at a time and records each step."""
-
-    def __init__(self, sol: Solution, tol: Tolerance, contacts: Sequence[object]) -> None:
-        self.sol = sol
-        self.mech: Mechanism = sol.mechanism
-        self.tol = tol
-        self.links = sort_links(self.mech.links)
-        self.cx = Construction(title=f"Instant centers: {self.mech.title}".rstrip(": "))
-        self.env: dict[str, Array] = {}
-        self.centers: dict[Pair, Center] = {}
-        self.normals: dict[Pair, list[tuple[str, str]]] = {}  # pair -> [(line label, source)]
-        self.failed: set[Pair] = set()
-        self.notes: list[str] = []
-        self.contacts = list(contacts)
-        self.several = len(self.mech.drives) > 1 or self.mech.mobility() > 1
-        self._unit: Solution | Literal[False] | None = None  # False: tried, none
-        shape = np.shape(sol.links[FRAME].angle)
-        # a batch's postures that could not be assembled are NaN throughout: ignored
-        self.valid = np.broadcast_to(np.asarray(sol.valid, dtype=bool), shape)
-
-    # ---- recording ----------------------------------------------------
-    def add(self, op_name: str, inputs: tuple[str, ...], output: str, *,
-            role: Role = Role.AUXILIARY, note: str = "", **params: Any) -> Array:
-        step = self.cx.add(op_name, inputs, (output,), role=role, note=note, diagram="centers",
-                           **params)
-        args = [self.env[i] for i in inputs]
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            (out,) = OPS[op_name](*args, tol=self.tol, **step.params)
-        self.env[output] = np.asarray(out, dtype=float)
-        return self.env[output]
-
-    def found(self, pair: Pair, how: How, source: str, note: str, *, lines: tuple[str, ...] = (),
-              triangles: tuple[tuple[str, str, str], ...] = (), speed: bool = False) -> None:
-        lab = center_label(*pair)
-        self.centers[pair] = Center(pair, lab, self.env[lab], how, source, len(self.centers) + 1,
-                                    lines, triangles, speed, note)
-
-    def fresh(self, label: str) -> str:
-        if label not in self.env:
-            return label
-        k = 2
-        while f"{label}#{k}" in self.env:
-            k += 1
-        return f"{label}#{k}"
-
-    # ---- primary centers and lines --------------------------------------
-    def primary(self) -> None:
-        sol, mech = self.sol, self.mech
-        found: dict[Pair, tuple[str, Any, str, str]] = {}
-        for pin in mech.pins:
-            p = sol.position(pin.name)
-            for a, b in combinations(pin.links, 2):
-                pair = pair_key(a, b)
-                if pair in found:
-                    continue
-                lab = center_label(*pair)
-                found[pair] = ("point", (_as_float(p[..., 0]), _as_float(p[..., 1])),
-                               f"pin {pin.name}",
-                               f"{lab} is the pin {pin.name}: a point common to links "
-                               f"{pair[0]} and {pair[1]} (primary, by inspection).")
-        for s in mech.sliders:
-            pair = pair_key(s.link, s.on)
-            if pair in found:
-                continue
-            lab = center_label(*pair)
-            th = np.asarray(sol.links[s.on].angle, dtype=float) + s.direction_angle
-            n = np.stack([-np.sin(th), np.cos(th)], axis=-1)
-            found[pair] = ("ideal_point", (_as_float(n[..., 0]), _as_float(n[..., 1])),
-                           f"slider {s.link} on {s.on}",
-                           f"{lab} is at infinity, perpendicular to the line on which {s.link} "
-                           f"slides on {s.on}: the two links do not turn relative to each other "
-                           "(primary, Eq. 3.21).")
-        for r in getattr(mech, "rolling", ()):
-            pair = pair_key(r.link, r.on)
-            if pair in found:
-                continue
-            lab = center_label(*pair)
-            found[pair] = ("rolling", r, f"rolling contact of {r.link} on {r.on}",
-                           f"{lab} is the point of rolling contact of {r.link} on {r.on}: the "
-                           "foot of the perpendicular from the center of the circle to the line "
-                           "it rolls on; no slip, so the velocities are equal there (primary, "
-                           "Fig. 3.25).")
-        for c in self.contacts:
-            if not isinstance(c, KnownCenter):
-                continue
-            pair = pair_key(*c.links)
-            if pair in found:
-                continue
-            lab = center_label(*pair)
-            found[pair] = ("point", (_as_float(c.point[0]), _as_float(c.point[1])), c.source,
-                           f"{lab} is the point of {c.source} of links {pair[0]} and {pair[1]}: "
-                           "no slip, so their velocities are equal there (primary).")
-        for pair in sorted(found, key=lambda p: (_id_key(p[0]), _id_key(p[1]))):
-            kind, arg, source, note = found[pair]
-            lab = center_label(*pair)
-            if kind == "point":
-                self.add("point", (), lab, role=Role.GIVEN, note=note, xy=arg)
-            elif kind == "rolling":
-                self.rolling_contact(arg, lab, note)
-            else:
-                self.add("ideal_point", (), lab, role=Role.GIVEN, note=note, direction=arg)
-            self.found(pair, How.PRIMARY, source, note)
-        self.slot_normals()
-
-    def rolling_contact(self, r: Any, lab: str, note: str) -> None:
-        """The contact point of a rolling circle (a primary center).
-
-        On a line it is the foot of the perpendicular from the circle's center;
-        on a circle, the point of the line of centers at the circle's radius.
-        """
-        sol = self.sol
-        on = sol.links[r.on]
-        center = self.fresh(r.center)
-        c = sol.position(r.center, r.link)
-        self.add("point", (), center, role=Role.GIVEN,
-                 note=f"The center {r.center} of the rolling circle of link {r.link}.",
-                 xy=(_as_float(c[..., 0]), _as_float(c[..., 1])))
-        stem = r.key
-        if not r.on_line:
-            # circles touch on their line of centers, R from the center of on's circle
-            o = on.position(r.on_center)
-            self.add("point", (), f"{stem}:O", role=Role.GIVEN,
-                     note=f"The center of link {r.on}'s circle.",
-                     xy=(_as_float(o[..., 0]), _as_float(o[..., 1])))
-            self.add("along_ray", (f"{stem}:O", center), lab, role=Role.GIVEN, note=note,
-                     distance=r.on_radius)
-            return
-        for k, loc in enumerate((r.p0, r.p1)):
-            q = on.position(loc)
-            self.add("point", (), f"{stem}:L{k}", role=Role.GIVEN,
-                     xy=(_as_float(q[..., 0]), _as_float(q[..., 1])))
-        self.add("join", (f"{stem}:L0", f"{stem}:L1"), f"{stem}:line",
-                 note=f"The line of link {r.on} on which link {r.link} rolls.")
-        self.add("perpendicular", (f"{stem}:line", center), f"{stem}:normal",
-                 note=f"The common normal: through {r.center}, perpendicular to the line.")
-        self.add("meet", (f"{stem}:line", f"{stem}:normal"), lab, role=Role.GIVEN, note=note)
-
-    def slot_normals(self) -> None:
-        sol = self.sol
-        for s in self.mech.slots:
-            pair = pair_key(s.link, s.on)
-            if pair in self.centers:
-                continue
-            lab = center_label(*pair)
-            pin = self.fresh(s.point)
-            p = sol.position(s.point, s.link)
-            self.add("point", (), pin, role=Role.GIVEN,
-                     note=f"The pin {s.point} of link {s.link} in the slot of link {s.on}.",
-                     xy=(_as_float(p[..., 0]), _as_float(p[..., 1])))
-            on = sol.links[s.on]
-            stem = f"slots[{s.index}]"
-            normal = self.fresh(f"n({s.point}):{lab}")
-            if s.is_line:
-                assert s.p0 is not None and s.p1 is not None
-                q0, q1 = on.position(s.p0), on.position(s.p1)
-                self.add("point", (), f"{stem}:L0", role=Role.GIVEN,
-                         xy=(_as_float(q0[..., 0]), _as_float(q0[..., 1])))
-                self.add("point", (), f"{stem}:L1", role=Role.GIVEN,
-                         xy=(_as_float(q1[..., 0]), _as_float(q1[..., 1])))
-                self.add("join", (f"{stem}:L0", f"{stem}:L1"), f"{stem}:line",
-                         note=f"The slot of link {s.on}: the path of {s.point} on it.")
-                self.add("perpendicular", (f"{stem}:line", pin), normal,
-                         note=f"{lab} lies on the common normal at {s.point}: the perpendicular "
-                              "to the slot through the pin (direct contact, Sec. 3.14).")
-            else:
-                assert s.center is not None
-                k = on.position(s.center)
-                self.add("point", (), f"{stem}:center", role=Role.GIVEN,
-                         note=f"The center of the circular slot of link {s.on}.",
-                         xy=(_as_float(k[..., 0]), _as_float(k[..., 1])))
-                self.add("join", (f"{stem}:center", pin), normal,
-                         note=f"{lab} lies on the common normal at {s.point}: the line through "
-                              "the pin and the center of the circular slot (direct contact, "
-                              "Sec. 3.14).")
-            self.normals.setdefault(pair, []).append(
-                (normal, f"common normal at {s.point} (slot of link {s.on})"))
-        for c in self.contacts:
-            if not isinstance(c, KnownLine):
-                continue
-            pair = pair_key(*c.links)
-            if pair in self.centers:
-                continue
-            lab = center_label(*pair)
-            through = self.fresh(f"contact:{lab}")
-            self.add("point", (), through, role=Role.GIVEN, note=f"The point of {c.source}.",
-                     xy=(_as_float(c.through[0]), _as_float(c.through[1])))
-            d = self.fresh(f"normal∞:{lab}")
-            self.add("ideal_point", (), d, role=Role.GIVEN,
-                     direction=(_as_float(c.direction[0]), _as_float(c.direction[1])))
-            normal = self.fresh(f"n:{lab}")
-            self.add("join", (through, d), normal,
-                     note=f"{lab} lies on the common normal at the {c.source} (Sec. 3.14).")
-            self.normals.setdefault(pair, []).append((normal, f"common normal ({c.source})"))
+class _Kennedy(_PrimaryCenters):
+    """Finds the centers one at a time and records each step: the search of Kennedy's theorem."""
 
     # ---- Kennedy --------------------------------------------------------
     def triangles(self, pair: Pair) -> list[str]:
@@ -317,8 +123,58 @@ class _Kennedy:
         """True when ``a`` has an answer at every posture that could be assembled."""
         return self.every(np.all(np.isfinite(a), axis=-1))
 
+    def best_meet(self, opts: list[tuple[str, str, Array, float]],
+                  enough: float) -> tuple[float, int, int] | None:
+        """The best-conditioned pair of lines among ``opts`` (every pair at once).
+
+        Returns ``(quality, index, index)`` of the first pair (in the order of
+        :func:`itertools.combinations`) of the highest quality that is at
+        least ``enough`` and meets at every posture, or None.
+        """
+        m = len(opts)
+        if m < 2:
+            return None
+        shape = np.broadcast_shapes(*(np.shape(o[2]) for o in opts))
+        lines = np.stack([np.broadcast_to(np.asarray(o[2], dtype=float), shape) for o in opts])
+        ia, ib = np.triu_indices(m, 1)
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            pts = g.meet(lines[ia], lines[ib], self.tol)
+            hats = self.line_hat(lines)
+            sines = np.linalg.norm(np.cross(hats[ia], hats[ib]), axis=-1)
+        n = len(ia)
+        valid = np.broadcast_to(self.valid, pts.shape[1:-1])
+        meets = np.all(np.isfinite(pts), axis=-1)
+        ok = np.all(np.where(valid, meets, True).reshape(n, -1), axis=1)
+        sines = np.where(np.isfinite(sines), sines, 0.0)
+        if valid.any():
+            qline = np.min(np.where(valid, sines, np.inf).reshape(n, -1), axis=1)
+        else:
+            qline = np.zeros(n)
+        q = np.array([o[3] for o in opts])
+        qual = np.minimum(np.minimum(q[ia], q[ib]), qline)
+        cand = ok & (qual >= enough)
+        if not cand.any():
+            return None
+        k = int(np.argmax(np.where(cand, qual, -np.inf)))
+        return float(qual[k]), int(ia[k]), int(ib[k])
+
     def try_pair(self, pair: Pair, enough: float) -> bool:
-        """Find ``Iij`` by Kennedy's theorem if two lines of centers meet well enough."""
+        """Find ``Iij`` by Kennedy's theorem if two lines of centers meet well enough.
+
+        A pair that failed is not tried again until a center of one of its
+        two links is found (only that changes its lines of centers).
+        """
+        stamp = self.__dict__.setdefault("_stamp", {})
+        failed = self.__dict__.setdefault("_failed_at", {})
+        now = (stamp.get(pair[0], 0), stamp.get(pair[1], 0))
+        if failed.get((pair, enough)) == now:
+            return False
+        if self._try_pair(pair, enough):
+            return True
+        failed[(pair, enough)] = now
+        return False
+
+    def _try_pair(self, pair: Pair, enough: float) -> bool:
         i, j = pair
         lab = center_label(*pair)
         tris = self.triangles(pair)
@@ -346,15 +202,7 @@ class _Kennedy:
                 line = g.join(p, q, self.tol)
             if self.ok(line):
                 opts.append(("tri", k, line, self.quality(self.point_hat(p), self.point_hat(q))))
-        best: tuple[float, int, int] | None = None
-        for (ia, a), (ib, b) in combinations(enumerate(opts), 2):
-            with np.errstate(invalid="ignore", divide="ignore"):
-                pt = g.meet(a[2], b[2], self.tol)
-            if not self.ok(pt):
-                continue
-            qual = min(a[3], b[3], self.quality(self.line_hat(a[2]), self.line_hat(b[2])))
-            if qual >= enough and (best is None or qual > best[0]):
-                best = (qual, ia, ib)
+        best = self.best_meet(opts, enough)
         if best is not None:
             a, b = opts[best[1]], opts[best[2]]
             la, lb = self.make_line(pair, a), self.make_line(pair, b)
@@ -557,37 +405,16 @@ def instant_centers(sol: Solution, *, tol: Tolerance | None = None,
 
     Examples
     --------
-    The inverted slider-crank of Fig. 3.26: the block 3 slides on the rod 4,
+    The inverted slider-crank of Example 3.3: the block 3 slides on the rod 4,
     so I34 is at infinity, perpendicular to the rod.
 
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... E = [0, 0]
-    ... D = [14, 0]
-    ... [links.2]
-    ... E = [0, 0]
-    ... A = [3, 0]
-    ... [links.3]
-    ... A = [0, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... L1 = [0, 0]
-    ... L2 = [1, 0]
-    ... [[sliders]]
-    ... link = 3
-    ... on = 4
-    ... point = "A"
-    ... line = ["L1", "L2"]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... ''').solve()
+    >>> sol = graphkin.examples.inverted_slider_crank().solve()
     >>> ic = instant_centers(sol)
     >>> ic["I34"].how.value, bool(ic["I34"].is_ideal)
     ('primary', True)
-    >>> [round(float(v), 4) + 0.0 for v in ic["I13"].xy]  # on x = 0 and ⊥ DA through D
-    [0.0, -65.3333]
+    >>> [round(float(v), 4) for v in ic["I13"].xy]  # on EA (30°) and ⊥ the slide through D
+    [15.1508, 8.7473]
     """
     mech = sol.mechanism
     for c in contacts:
@@ -606,16 +433,7 @@ def instant_center(sol: Solution | InstantCenters, i: object, j: object) -> Arra
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
+    >>> sol = graphkin.examples.fourbar().solve()
     >>> instant_center(sol, 2, 1)
     array([0., 0., 1.])
     """

@@ -87,26 +87,7 @@ def line_of_centers_velocity(sol: Solution | InstantCenters, point: str | ArrayL
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [18, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = 10
-    ... [assembly]
-    ... C = [15, 10]
-    ... ''').solve()
+    >>> sol = graphkin.examples.fourbar().solve()
     >>> r = line_of_centers_velocity(sol, "C", 4, given=2)
     >>> r.common, bool(np.allclose(r.velocity, sol.velocity("C")))
     ('I24', True)

@@ -93,18 +93,11 @@ def angular_velocity_ratio(sol: Solution | InstantCenters, i: object, j: object,
 
     >>> import graphkin
     >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [4, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [4, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [2, 0]
+    ... [links]
+    ... 1 = { A = [0, 0], D = [4, 0] }
+    ... 2 = { A = [0, 0], B = [2, 0] }
+    ... 3 = { B = [0, 0], C = [4, 0] }
+    ... 4 = { D = [0, 0], C = [2, 0] }
     ... [drive]
     ... link = 2
     ... angle = 60
@@ -215,18 +208,9 @@ def kinematic_coefficient(sol: Solution | InstantCenters, output: object,
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
-    >>> float(kinematic_coefficient(sol, 2))
-    1.0
+    >>> sol = graphkin.examples.fourbar().solve()
+    >>> round(float(kinematic_coefficient(sol, 4)), 4)  # ω4/ω2 = 49.50/94.25 rad/s (Example 3.1)
+    0.5252
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism
@@ -296,18 +280,9 @@ def mechanical_advantage(sol: Solution | InstantCenters, output: object,
     Examples
     --------
     >>> import graphkin
-    >>> sol = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [5, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 30
-    ... ''').solve()
-    >>> float(mechanical_advantage(sol, 2))
-    1.0
+    >>> sol = graphkin.examples.fourbar().solve()
+    >>> round(float(mechanical_advantage(sol, 4)), 4)  # ω2/ω4 = 1/0.5252
+    1.9039
     """
     ic = _centers(sol)
     mech = ic.solution.mechanism

@@ -453,7 +453,8 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
     coordinates, arc radii, frame pivots) get a leading axis of designs, and
     the compiled replay runs on ``(designs, postures)`` arrays.  The derived
     constants are checked against constructions built from scratch for the
-    first and last design.
+    first and last design (the first time a mechanism's set of varied points
+    is batched).
 
     References
     ----------
@@ -491,7 +492,11 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
     rated = eng.combined is not None
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     designs = _with_designs(eng, cx, arrays)
-    _check(eng, cx, designs, arrays, m)
+    checked = ("batch-checked", frozenset(arrays))
+    if checked not in eng.extras:
+        # once per mechanism and set of varied points: the derivation does not depend on values
+        _check(eng, cx, designs, arrays, m)
+        eng.extras[checked] = True
     a, b, _ = _drive_range(eng, start, stop)
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
     dv = np.radians(user) if eng.drive.kind == "angle" else user

@@ -59,27 +59,9 @@ def fourbar(mech: Mechanism) -> FourBar:
     Examples
     --------
     >>> import graphkin
-    >>> fb = fourbar(graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 45
-    ... [assembly]
-    ... C = [9, 11]
-    ... '''))
+    >>> fb = fourbar(graphkin.examples.crank_rocker())
     >>> fb.pins, fb.lengths
-    (('A', 'B', 'C', 'D'), {'1': 10.0, '2': 4.0, '3': 12.0, '4': 11.0})
+    (('A', 'B', 'C', 'D'), {'1': 200.0, '2': 100.0, '3': 250.0, '4': 300.0})
     """
     def fail(why: str) -> InputError:
         return InputError(f"not a four-bar linkage: {why}", file=mech.source)
@@ -258,23 +240,13 @@ def transmission_angle(obj: Solution | Sweep | Mechanism) -> Array:
 
     >>> import graphkin
     >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [180, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [60, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [210, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [120, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 60
-    ... [assembly]
-    ... C = [150, 110]
+    ... drive = { link = 2, angle = 60 }
+    ... assembly = { C = [150, 110] }
+    ... [links]
+    ... 1 = { A = [0, 0], D = [180, 0] }
+    ... 2 = { A = [0, 0], B = [60, 0] }
+    ... 3 = { B = [0, 0], C = [210, 0] }
+    ... 4 = { D = [0, 0], C = [120, 0] }
     ... ''')
     >>> round(float(transmission_angle(mech)), 2)
     48.65

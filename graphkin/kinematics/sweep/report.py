@@ -67,29 +67,10 @@ class Sweep:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 120
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
+    >>> mech = graphkin.examples.crank_rocker()
     >>> sw = mech.sweep(count=8)
     >>> sw.columns["drive"]
-    array([120., 165., 210., 255., 300., 345., 390., 435.])
+    array([ 60., 105., 150., 195., 240., 285., 330., 375.])
     >>> bool(sw.valid.all()), list(sw.columns)[:5]
     (True, ['drive', 'angle_1', 'omega_1', 'alpha_1', 'angle_2'])
     """
@@ -104,8 +85,23 @@ class Sweep:
     notes: list[str] = field(default_factory=list)
     branches: dict[str, str] = field(default_factory=dict)
     _engine: _Engine | None = field(default=None, repr=False, compare=False)
-    _blocks: list[_Block] = field(default_factory=list, repr=False, compare=False)
+    _parts: list[_Block] = field(default_factory=list, repr=False, compare=False)
     _cyclic: bool = field(default=False, repr=False, compare=False)
+    _released: bool = field(default=False, repr=False, compare=False)
+
+    @property
+    def _blocks(self) -> list[_Block]:
+        """The evaluated blocks; a long sweep let their values go and replays them here."""
+        if self._released:
+            eng = self._engine
+            assert eng is not None
+            for i, b in enumerate(self._parts):
+                if b.ev is None and b.analytic is None:
+                    again = eng.solve(b.dv)
+                    again.user = b.user
+                    self._parts[i] = again
+            self._released = False
+        return self._parts
 
     def __len__(self) -> int:
         return len(self.values)

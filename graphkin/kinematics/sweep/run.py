@@ -29,8 +29,10 @@ from graphkin.tolerance import DEFAULT_TOL, Tolerance
 Array = np.ndarray
 
 
-#: Sweeps longer than this are evaluated in blocks (so a progress callback can be told).
-BLOCK = 100_000
+#: Sweeps longer than this are evaluated in blocks of this many postures: few enough that a
+#: block's arrays stay in the processor's cache, many enough that the fixed cost of a replay
+#: does not count (a progress callback is told after each block).
+BLOCK = 8_192
 
 
 def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
@@ -104,31 +106,12 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     of its crank at 10 rad/s:
 
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... D = [10, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [4, 0]
-    ... [links.3]
-    ... B = [0, 0]
-    ... C = [12, 0]
-    ... [links.4]
-    ... D = [0, 0]
-    ... C = [11, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 0
-    ... omega = 10
-    ... [assembly]
-    ... C = [9, 11]
-    ... ''')
-    >>> sw = sweep(mech, count=3600)
+    >>> mech = graphkin.examples.crank_rocker()
+    >>> sw = sweep(mech, count=3600, start=0)
     >>> sw.columns["omega_3"].shape
     (3600,)
-    >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((6² + 11² - 12²)/(2·6·11))
-    95.6519
+    >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
+    128.6822
     """
     if int(count) != count or count < 1:
         raise InputError(f"the number of postures must be a whole number of at least 1, not "
@@ -140,30 +123,36 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
     dv = np.radians(user) if eng.drive.kind == "angle" else user
     blocks: list[_Block] = []
+    released = False
     if count <= BLOCK:
         blk = eng.solve(dv)
         blk.user = user
         blocks.append(blk)
         cols = _columns(eng, blk)
+        valid, assembled = _valid_of(blk), _assembled_of(blk)
     else:
-        # blocks small enough for the cache, written straight into the columns
+        # blocks small enough to stay in the cache, written straight into the columns; the
+        # constructions' values are let go after each block (and replayed if asked for again:
+        # Sweep.solution, singular postures, extra columns), so the next block reuses the memory
         cols = {}
+        valid = np.empty(count, dtype=bool)
+        assembled = np.empty(count, dtype=bool)
         for i in range(0, count, BLOCK):
             blk = eng.solve(dv[i:i + BLOCK])
             blk.user = user[i:i + BLOCK]
-            blocks.append(blk)
             part = _columns(eng, blk)
             if not cols:
                 cols = {k: np.empty(count) for k in part}
             for k, v in part.items():
                 cols[k][i:i + BLOCK] = v
+            valid[i:i + BLOCK] = _valid_of(blk)
+            assembled[i:i + BLOCK] = _assembled_of(blk)
+            if blk.analytic is None:
+                blk = _Block(blk.dv, None, None, None, user=blk.user)
+                released = True
+            blocks.append(blk)
             if progress is not None:
                 progress(min(1.0, (i + BLOCK) / count))
-    if len(blocks) == 1:
-        valid, assembled = _valid_of(blocks[0]), _assembled_of(blocks[0])
-    else:
-        valid = np.concatenate([_valid_of(blk) for blk in blocks])
-        assembled = np.concatenate([_assembled_of(blk) for blk in blocks])
     notes: list[str] = []
     if eng.built_at is not None:
         notes.append(f"the file's drive cannot be assembled; the constructions were laid out "
@@ -174,7 +163,8 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     if not valid.all():
         _blank(cols, assembled, valid)
     sw = Sweep(mech, eng.drive, dv, cols, valid, assembled, eng.method, notes,
-               dict(eng.pc.branches) if eng.pc is not None else {}, eng, blocks, cyclic)
+               dict(eng.pc.branches) if eng.pc is not None else {}, eng, blocks, cyclic,
+               released)
     if transmission:
         sw.columns.update(_transmission_columns(sw))
     if centers:

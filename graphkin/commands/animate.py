@@ -1,0 +1,83 @@
+"""``graphkin animate FILE -o cycle.html``: the whole cycle in motion, as one web page."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+__all__ = ["add_parser", "run"]
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = sub.add_parser(
+        "animate", help="write a self-contained HTML page of the mechanism turning through "
+                        "its cycle, with its velocity and acceleration polygons",
+        description="Sweep the mechanism through its cycle (as `graphkin sweep`) and write one "
+                    "HTML file (no network needed) where it turns, with its velocity and "
+                    "acceleration polygons redrawn to scale at every posture: play/pause, a "
+                    "drive slider, step ±1, speed; ω, α and a chosen point's velocity and "
+                    "acceleration; ranges that cannot be assembled and limit postures marked.")
+    p.add_argument("file", help="mechanism file (TOML)")
+    p.add_argument("-o", "--output", default=None, help="the HTML file to write")
+    p.add_argument("--count", type=int, default=360, help="number of postures (default 360)")
+    p.add_argument("--from", dest="start", type=float, default=None, metavar="DRIVE",
+                   help="first drive value: degrees, or a slider's travel (default: the "
+                        "file's drive)")
+    p.add_argument("--to", dest="stop", type=float, default=None, metavar="DRIVE",
+                   help="last drive value, excluded (default: one full turn on)")
+    p.add_argument("--centers", action="store_true", help="also draw the instant centers")
+    p.add_argument("--inflection", action="store_true",
+                   help="also draw each moving link's inflection circle (needs rates)")
+    p.add_argument("--frames", default=None, metavar="DIR",
+                   help="also write one SVG per posture into DIR (for slides)")
+    p.add_argument("--gif", default=None, metavar="FILE",
+                   help="also write the cycle as an animated GIF")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    from pathlib import Path
+
+    import graphkin
+    from graphkin.errors import InputError
+    from graphkin.render.animate import animate_html
+
+    if args.count < 2 or args.count > 20000:
+        raise InputError(f"the number of postures must be 2 to 20000, not {args.count}",
+                         key="--count")
+    if args.output is None and args.frames is None and args.gif is None:
+        raise InputError("nothing to write: give -o OUT.html, --frames DIR and/or --gif FILE",
+                         key="--output")
+    mech = graphkin.load(args.file)
+    if args.output is not None:
+        text = animate_html(mech, count=args.count, start=args.start, stop=args.stop,
+                            centers=args.centers, inflection=args.inflection)
+        out = Path(args.output)
+        try:
+            out.write_text(text, encoding="utf-8")
+        except OSError as exc:
+            raise InputError(f"cannot write {out}: {exc.strerror or exc}",
+                             key="--output") from None
+        print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
+    if args.frames is not None or args.gif is not None:
+        from graphkin.render.cycle_frames import write_cycle_frames, write_cycle_gif
+
+        if args.frames is not None:
+            try:
+                paths = write_cycle_frames(mech, args.frames, count=args.count,
+                                           start=args.start, stop=args.stop)
+            except OSError as exc:
+                raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
+                                 key="--frames") from None
+            print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
+        if args.gif is not None:
+            try:
+                write_cycle_gif(mech, args.gif, count=args.count, start=args.start,
+                                stop=args.stop)
+            except OSError as exc:
+                raise InputError(f"cannot write {args.gif}: {exc.strerror or exc}",
+                                 key="--gif") from None
+            print(f"wrote {args.gif}", file=sys.stderr)
+    return 0

@@ -1,0 +1,782 @@
+"""The whole cycle in motion: one self-contained HTML page drawn from a sweep.
+
+``graphkin animate FILE -o cycle.html`` sweeps the mechanism through its cycle
+(:meth:`graphkin.mechanisms.model.Mechanism.sweep`: the same constructions as
+one posture, evaluated on arrays) and writes one HTML page where the
+mechanism turns, with its velocity and acceleration polygons redrawn at every
+posture to scale (and, on request, the instant centers and the inflection
+circle).  Play/pause, a slider for the drive, step ±1, speed; the current ω,
+α and a chosen point's velocity and acceleration printed beside the drawing;
+the ranges where the linkage cannot be assembled and the limit and
+dead-center postures marked on the slider (and skipped while playing).
+
+The page is light: the postures are data (JSON of coordinates, each series
+stored as integers of a stated quantum), drawn by a small inline script into
+SVG — not one picture per frame.  No network is needed.
+
+The polygons are drawn from the pole: the image of each named point is the
+tip of its absolute velocity (acceleration) vector, and the image of each
+link joins the images of its points — similar to the link (Sec. 3.4, 4.4).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (velocity polygons and images),
+Sec. 4.4 (acceleration polygons), Sec. 3.13 (instant centers), Sec. 4.15
+(the inflection circle), Sec. 1.10 (limit and dead-center postures).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from typing import Any
+
+import numpy as np
+
+from graphkin.errors import InputError
+from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
+from graphkin.render.scale import choose_scale, paper_unit
+
+__all__ = ["cycle_data", "animate_html", "QUANTUM"]
+
+QUANTUM = 2e-5
+"""Each series is stored as integers of this fraction of its largest size."""
+
+_LINK_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")
+
+
+def _series(a: Any, q: float) -> list[int | None]:
+    """A float array as integers of the quantum ``q`` (None where not defined)."""
+    arr = np.asarray(a, dtype=float)
+    out: list[int | None] = []
+    ints = np.where(np.isfinite(arr), np.round(np.nan_to_num(arr) / q), 0).astype(np.int64)
+    for ok, v in zip(np.isfinite(arr).tolist(), ints.tolist()):
+        out.append(int(v) if ok else None)
+    return out
+
+
+def _quantum(*arrays: Any) -> float:
+    """The quantum of a group of series: QUANTUM of their largest finite size."""
+    big = 0.0
+    for a in arrays:
+        arr = np.abs(np.asarray(a, dtype=float))
+        arr = arr[np.isfinite(arr)]
+        if arr.size:
+            big = max(big, float(arr.max()))
+    q = QUANTUM * (big if big > 0 else 1.0)
+    return float(f"{q:.3g}")
+
+
+def _hull_order(local: dict[str, tuple[float, float]]) -> list[str]:
+    """The points of a rigid link in order around it (convex hull of its own coordinates)."""
+    names = list(local)
+    if len(names) <= 2:
+        return names
+    pts = np.array([local[n] for n in names], dtype=float)
+    c = pts.mean(axis=0)
+    ang = np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0])
+    order = [names[i] for i in np.argsort(ang)]
+    # keep only the hull (drop points inside), by the monotone chain
+    P = sorted(names, key=lambda n: (local[n][0], local[n][1]))
+
+    def cross(o: str, a: str, b: str) -> float:
+        (ox, oy), (ax, ay), (bx, by) = local[o], local[a], local[b]
+        return (ax - ox) * (by - oy) - (ay - oy) * (bx - ox)
+
+    lower: list[str] = []
+    for p in P:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    upper: list[str] = []
+    for p in reversed(P):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    hull = lower[:-1] + upper[:-1]
+    return hull if len(hull) >= 3 else order
+
+
+def _rounded_view(lo: np.ndarray, hi: np.ndarray, pad: float) -> list[float]:
+    span = np.maximum(hi - lo, 1e-12)
+    m = pad * float(max(span))
+    return [float(lo[0] - m), float(lo[1] - m), float(hi[0] + m), float(hi[1] + m)]
+
+
+def _robust_box(xs: list[np.ndarray], ys: list[np.ndarray],
+                keep: float = 98.0) -> tuple[np.ndarray, np.ndarray]:
+    """A box holding the points at most postures (outliers near a toggle are clipped)."""
+    x = np.concatenate([np.ravel(a) for a in xs]) if xs else np.zeros(1)
+    y = np.concatenate([np.ravel(a) for a in ys]) if ys else np.zeros(1)
+    ok = np.isfinite(x) & np.isfinite(y)
+    if not ok.any():
+        return np.zeros(2) - 1, np.zeros(2) + 1
+    x, y = x[ok], y[ok]
+    lo = np.array([np.percentile(x, 100 - keep), np.percentile(y, 100 - keep)])
+    hi = np.array([np.percentile(x, keep), np.percentile(y, keep)])
+    return lo, hi
+
+
+def _polygon_box(X: list[Any], Y: list[Any], keep: float = 90.0) -> tuple[np.ndarray,
+                                                                          np.ndarray]:
+    """A box that holds the polygon (and its pole) at most postures.
+
+    Per posture the polygon's extremes are taken; the box is their ``keep``
+    percentile, so that the huge polygons near a toggle posture do not shrink
+    the others to nothing (they are clipped instead).
+    """
+    x = np.vstack([np.asarray(a, dtype=float) for a in X] + [np.zeros(len(X[0]))])
+    y = np.vstack([np.asarray(a, dtype=float) for a in Y] + [np.zeros(len(Y[0]))])
+    ok = np.isfinite(x).all(axis=0) & np.isfinite(y).all(axis=0)
+    if not ok.any():
+        return np.array([-1.0, -1.0]), np.array([1.0, 1.0])
+    x, y = x[:, ok], y[:, ok]
+    lo = np.array([np.percentile(x.min(axis=0), 100 - keep),
+                   np.percentile(y.min(axis=0), 100 - keep)])
+    hi = np.array([np.percentile(x.max(axis=0), keep), np.percentile(y.max(axis=0), keep)])
+    return np.minimum(lo, 0.0), np.maximum(hi, 0.0)
+
+
+def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
+               stop: float | None = None, centers: bool = False,
+               inflection: bool = False) -> dict[str, Any]:
+    """The postures of a cycle as plain data for the animation page (from one sweep).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    count : int
+        Number of postures.
+    start, stop : float, optional
+        The drive range (degrees, or a slider's travel), as for ``graphkin sweep``.
+    centers : bool
+        Add every instant center.
+    inflection : bool
+        Add each moving link's inflection circle (needs rates).
+
+    Returns
+    -------
+    dict
+        JSON-able: the drive values, which postures assemble, the special
+        postures, the links' shapes, and per named point its position,
+        velocity and acceleration as integer series with their quantum.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> d = cycle_data(graphkin.examples.fourbar(), count=12)
+    >>> d["n"], sorted(d["points"])[:3], d["rates"]
+    (12, ['A', 'B', 'C'], True)
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 3.4, 4.4.
+    """
+    sw = mech.sweep(count=count, start=start, stop=stop, centers=centers or inflection,
+                    curvature=inflection and mech.has_rates)
+    cols = sw.columns
+    sol = sw.solution
+    rated = mech.has_rates and "vx_" + next(iter(mech.point_links)) in cols
+    helpers = mech.helper_points
+    names = [n for n in mech.point_links if n not in helpers and f"x_{n}" in cols]
+    n = len(sw.values)
+    xs = [cols[f"x_{p}"] for p in names]
+    ys = [cols[f"y_{p}"] for p in names]
+    qL = _quantum(*xs, *ys)
+    data: dict[str, Any] = {
+        "title": mech.title or "mechanism", "unit": mech.length_unit, "n": n,
+        "rates": bool(rated), "q": {"L": qL},
+    }
+    d = sw.drive
+    if d.kind == "angle":
+        data["drive"] = {"label": f"θ{d.link}", "unit": "°",
+                         "values": [round(float(v), 6) for v in sw.drive_values]}
+    else:
+        data["drive"] = {"label": f"s{d.link}", "unit": mech.length_unit,
+                         "values": [round(float(v), 6) for v in sw.drive_values]}
+    held = [f"θ{x.link}" if x.kind == "angle" else f"s{x.link}" for x in mech.drives[1:]]
+    data["held"] = (f"{data['drive']['label']} is swept; {', '.join(held)} held at the file's "
+                    "value (its rate applies throughout)") if held else ""
+    data["valid"] = "".join("1" if v else "0" for v in np.asarray(sw.assembled).tolist())
+    data["rated_valid"] = "".join("1" if v else "0" for v in np.asarray(sw.valid).tolist())
+    events = []
+    vals = np.asarray(sw.drive_values, dtype=float)
+    for sp in sw.singular:
+        i = int(np.argmin(np.abs(vals - sp.drive)))
+        ev: dict[str, Any] = {"kind": sp.kind, "drive": round(float(sp.drive), 4), "i": i,
+                              "note": sp.note}
+        if sp.end is not None:
+            ev["end"] = round(float(sp.end), 4)
+            ev["j"] = int(np.argmin(np.abs(vals - sp.end)))
+        events.append(ev)
+    data["events"] = events
+    pts: dict[str, Any] = {}
+    for p in names:
+        pts[p] = {"x": _series(cols[f"x_{p}"], qL), "y": _series(cols[f"y_{p}"], qL)}
+    links = []
+    pins = [p for p in names if len(mech.point_links[p]) >= 2]
+    slider_links = {s.link for s in mech.sliders}
+    for i, lid in enumerate(mech.moving):
+        local = {p: mech.links[lid].points[p] for p in mech.links[lid].points if p in names}
+        order = _hull_order(local)
+        shape = "plate" if len(order) >= 3 else ("bar" if len(order) == 2 else "point")
+        if lid in slider_links and len(order) <= 1:
+            shape = "block"
+        links.append({"id": lid, "points": order, "all": list(local), "shape": shape,
+                      "fill": _LINK_FILLS[i % len(_LINK_FILLS)]})
+    data["links"] = links
+    data["pins"] = pins
+    data["frame"] = [p for p in mech.links[FRAME].points if p in names]
+    # guides (slider lines and slots), blocks and wheels, in world coordinates per posture
+    extent_pts = [np.asarray(a, dtype=float) for a in (*xs, *ys)]
+    big = max((float(np.nanmax(np.abs(a))) for a in extent_pts if np.isfinite(a).any()),
+              default=1.0)
+    guides = []
+    # the equivalent slot of a rolling wheel's center (Example 4.7) is no part: not drawn
+    lined: list[Slider | Slot] = [*mech.sliders,
+                                  *(sl for sl in mech.slots if not sl.key.startswith("rolling"))]
+    for gl in lined:
+        st = sol.links[gl.on]
+        if gl.p0 is not None and gl.p1 is not None and getattr(gl, "center", None) is None:
+            p0: np.ndarray = np.asarray(gl.p0, dtype=float)
+            p1: np.ndarray = np.asarray(gl.p1, dtype=float)
+            u = (p1 - p0) / max(float(np.hypot(*(p1 - p0))), 1e-300)
+            a = st.position(p0 - 3 * big * u)
+            b = st.position(p0 + 3 * big * u)
+            g: dict[str, Any] = {"kind": "line", "x0": _series(a[..., 0], qL),
+                                 "y0": _series(a[..., 1], qL), "x1": _series(b[..., 0], qL),
+                                 "y1": _series(b[..., 1], qL), "point": gl.point,
+                                 "block": gl.link in slider_links and gl.key == "sliders"}
+            guides.append(g)
+        elif isinstance(gl, Slot) and gl.center is not None and gl.radius is not None:
+            c = st.position(np.asarray(gl.center, dtype=float))
+            guides.append({"kind": "circle", "cx": _series(c[..., 0], qL),
+                           "cy": _series(c[..., 1], qL), "r": round(float(gl.radius) / qL),
+                           "point": gl.point, "block": False})
+    for rl in mech.rolling:
+        if rl.on_line and rl.p0 is not None and rl.p1 is not None:
+            st = sol.links[rl.on]
+            p0 = np.asarray(rl.p0, dtype=float)
+            p1 = np.asarray(rl.p1, dtype=float)
+            u = (p1 - p0) / max(float(np.hypot(*(p1 - p0))), 1e-300)
+            a, b = st.position(p0 - 3 * big * u), st.position(p0 + 3 * big * u)
+            guides.append({"kind": "line", "x0": _series(a[..., 0], qL),
+                           "y0": _series(a[..., 1], qL), "x1": _series(b[..., 0], qL),
+                           "y1": _series(b[..., 1], qL), "point": rl.center, "block": False,
+                           "surface": True})
+    data["guides"] = guides
+    data["wheels"] = [{"point": w.center, "r": round(float(w.radius) / qL)}
+                      for w in mech.rolling if w.center in names]
+    # block angle: the slider turns with its guide
+    blocks = []
+    for sl in mech.sliders:
+        if sl.point in names:
+            st = sol.links[sl.on]
+            q0, q1 = np.asarray(sl.p0, dtype=float), np.asarray(sl.p1, dtype=float)
+            ang = np.asarray(st.angle, dtype=float) + math.atan2(q1[1] - q0[1], q1[0] - q0[0])
+            blocks.append({"point": sl.point, "link": sl.link,
+                           "angle": _series(np.degrees(ang), 1e-3)})
+    data["blocks"] = blocks
+    lo, hi = _robust_box(xs, ys, keep=100.0)
+    data["view"] = _rounded_view(lo, hi, 0.12)
+    if rated:
+        vx = [cols[f"vx_{p}"] for p in names]
+        vy = [cols[f"vy_{p}"] for p in names]
+        ax = [cols[f"ax_{p}"] for p in names]
+        ay = [cols[f"ay_{p}"] for p in names]
+        qV, qA = _quantum(*vx, *vy), _quantum(*ax, *ay)
+        data["q"].update({"V": qV, "A": qA})
+        for p in names:
+            pts[p].update({"vx": _series(cols[f"vx_{p}"], qV), "vy": _series(cols[f"vy_{p}"], qV),
+                           "ax": _series(cols[f"ax_{p}"], qA), "ay": _series(cols[f"ay_{p}"], qA)})
+        paper = paper_unit(mech.length_unit)
+        for key, X, Y, unit in (("velocity", vx, vy, f"{mech.length_unit}/s"),
+                                ("acceleration", ax, ay, f"{mech.length_unit}/s²")):
+            lo, hi = _polygon_box(X, Y)
+            view = _rounded_view(lo, hi, 0.1)
+            extent = max(view[2] - view[0], view[3] - view[1])
+            sc = choose_scale(extent, 3.0, paper, unit)
+            data[key] = {"view": view, "scale": {"value": sc.value, "unit": sc.unit,
+                                                 "factor": sc.factor, "text": sc.text,
+                                                 "bar": sc.value * sc.factor}}
+        data["omega"] = {lid: _series(cols[f"omega_{lid}"], 1e-6) for lid in mech.moving}
+        data["alpha"] = {lid: _series(cols[f"alpha_{lid}"], 1e-5) for lid in mech.moving}
+    data["points"] = pts
+    if centers or inflection:
+        cen = {}
+        for col in cols:
+            if col.startswith("x_I") and f"y_{col[2:]}" in cols:
+                cen[col[2:]] = {"x": _series(cols[col], qL),
+                                "y": _series(cols[f"y_{col[2:]}"], qL)}
+        data["centers"] = cen if centers else {}
+        if inflection:
+            circles = {}
+            for lid in mech.moving:
+                jx, jy = cols.get(f"jx_{lid}"), cols.get(f"jy_{lid}")
+                ic = f"I1{lid}" if f"x_I1{lid}" in cols else f"I{lid}1"
+                if jx is None or jy is None or f"x_{ic}" not in cols:
+                    continue
+                px, py = cols[f"x_{ic}"], cols[f"y_{ic}"]
+                cx, cy = (px + jx) / 2, (py + jy) / 2
+                r = np.hypot(jx - px, jy - py) / 2
+                r = np.where(r > 50 * (data["view"][2] - data["view"][0]), np.nan, r)
+                circles[lid] = {"cx": _series(cx, qL), "cy": _series(cy, qL),
+                                "r": _series(r, qL), "jx": _series(jx, qL),
+                                "jy": _series(jy, qL)}
+            data["inflection"] = circles
+    return data
+
+
+_CSS = """
+* { box-sizing: border-box; }
+body { margin: 0; font: 15px/1.4 "DejaVu Sans", Verdana, sans-serif; color: #111;
+       background: #fafafa; }
+header { padding: 6px 14px; background: #fff; border-bottom: 1px solid #ddd; }
+header h1 { font-size: 16px; margin: 0; }
+header .held { margin: 2px 0 0; font-size: 13px; color: #555; }
+.controls { display: flex; flex-wrap: wrap; align-items: center; gap: 8px; padding: 6px 14px;
+            background: #fff; border-bottom: 1px solid #ddd; }
+.controls button, .controls select { font: inherit; padding: 2px 10px; }
+#slider-wrap { position: relative; flex: 1 1 320px; min-width: 240px; height: 34px; }
+#drive { width: 100%; margin: 0; position: absolute; top: 0; }
+#marks { position: absolute; left: 0; right: 0; top: 22px; height: 10px; }
+#marks .bad { position: absolute; height: 8px; background: #c62828; opacity: 0.7; }
+#marks .tick { position: absolute; width: 2px; height: 10px; background: #1565c0; }
+#drive-text { min-width: 9em; font-variant-numeric: tabular-nums; }
+#status { color: #c62828; min-width: 12em; }
+main { display: grid; grid-template-columns: 1.3fr 1fr 1fr 230px; gap: 8px; padding: 8px;
+       align-items: start; }
+figure { margin: 0; background: #fff; border: 1px solid #ddd; border-radius: 4px;
+         display: flex; flex-direction: column; min-width: 0; }
+figcaption { font-weight: bold; font-size: 14px; padding: 4px 8px; }
+figure svg { width: 100%; height: auto; max-height: calc(100vh - 150px); }
+#values { font-size: 14px; background: #fff; border: 1px solid #ddd; border-radius: 4px;
+          padding: 6px 10px; font-variant-numeric: tabular-nums; }
+#values table { border-collapse: collapse; width: 100%; }
+#values td { padding: 1px 4px; }
+#values td.v { text-align: right; }
+.scale { font-size: 12px; color: #444; padding: 2px 8px 6px; }
+@media (max-width: 1000px) { main { grid-template-columns: 1fr 1fr; } }
+"""
+
+_JS = r"""
+(function () {
+  var D = JSON.parse(document.getElementById('cycle-data').textContent);
+  var NS = 'http://www.w3.org/2000/svg';
+  var errors = [];
+  window.addEventListener('error', function (e) { errors.push(String(e.message)); });
+  var n = D.n, cur = 0, playing = false, speed = 1, acc = 0, last = null;
+  var slider = document.getElementById('drive');
+  var valid = D.valid, rvalid = D.rated_valid;
+  function val(s, q, i) { var v = s[i]; return v === null || v === undefined ? NaN : v * q; }
+  function P(name, i) {
+    var p = D.points[name];
+    return [val(p.x, D.q.L, i), val(p.y, D.q.L, i)];
+  }
+  function img(name, i, kind) {
+    var p = D.points[name];
+    if (kind === 'velocity') return [val(p.vx, D.q.V, i), val(p.vy, D.q.V, i)];
+    return [val(p.ax, D.q.A, i), val(p.ay, D.q.A, i)];
+  }
+  function ok(xy) { return isFinite(xy[0]) && isFinite(xy[1]); }
+  function el(parent, tag, attrs, text) {
+    var e = document.createElementNS(NS, tag);
+    for (var k in attrs) { e.setAttribute(k, attrs[k]); }
+    if (text !== undefined) e.textContent = text;
+    parent.appendChild(e);
+    return e;
+  }
+  function setup(svg, view) {
+    var w = view[2] - view[0], h = view[3] - view[1];
+    svg.setAttribute('viewBox', view[0] + ' ' + (-view[3]) + ' ' + w + ' ' + h);
+    return Math.max(w, h);
+  }
+  var mechSvg = document.getElementById('mechanism');
+  var S = setup(mechSvg, D.view);
+  var polys = {};
+  ['velocity', 'acceleration'].forEach(function (k) {
+    var svg = document.getElementById(k);
+    if (svg && D[k]) polys[k] = {svg: svg, size: setup(svg, D[k].view)};
+  });
+  var layer = {}, kind0 = 'velocity';
+  var fit = document.getElementById('fit');
+  function clear(svg) { while (svg.lastChild) svg.removeChild(svg.lastChild); }
+  function line(g, a, b, cls, w) {
+    if (!ok(a) || !ok(b)) return null;
+    return el(g, 'line', {x1: a[0], y1: -a[1], x2: b[0], y2: -b[1], 'class': cls,
+                          'stroke-width': w});
+  }
+  function label(g, xy, text, size, cls, dx, dy) {
+    if (!ok(xy)) return;
+    el(g, 'text', {x: xy[0] + (dx || size * 0.35), y: -xy[1] - (dy || size * 0.35),
+                   'font-size': size, 'class': cls || 'lbl'}, text);
+  }
+  function arrow(g, a, b, w, color, cls) {
+    if (!ok(a) || !ok(b)) return;
+    var dx = b[0] - a[0], dy = b[1] - a[1], L = Math.sqrt(dx * dx + dy * dy);
+    if (!(L > 0)) return;
+    var h = Math.min(w * 7, L * 0.4), ux = dx / L, uy = dy / L;
+    var bx = b[0] - ux * h, by = b[1] - uy * h;
+    el(g, 'line', {x1: a[0], y1: -a[1], x2: bx, y2: -by, stroke: color,
+                   'stroke-width': w, 'class': cls || 'vec'});
+    var px = -uy * h * 0.35, py = ux * h * 0.35;
+    el(g, 'polygon', {points: b[0] + ',' + (-b[1]) + ' ' + (bx + px) + ',' + (-(by + py)) +
+                      ' ' + (bx - px) + ',' + (-(by - py)), fill: color});
+  }
+  function drawMechanism(i) {
+    clear(mechSvg);
+    var w = S / 300, fs = S / 28;
+    var g = el(mechSvg, 'g', {id: 'mech-layer'});
+    D.guides.forEach(function (gd) {
+      if (gd.kind === 'line') {
+        line(g, [val(gd.x0, D.q.L, i), val(gd.y0, D.q.L, i)],
+             [val(gd.x1, D.q.L, i), val(gd.y1, D.q.L, i)], 'guide', w * (gd.surface ? 1.5 : 1));
+      } else {
+        var c = [val(gd.cx, D.q.L, i), val(gd.cy, D.q.L, i)];
+        if (ok(c)) el(g, 'circle', {cx: c[0], cy: -c[1], r: gd.r * D.q.L, 'class': 'guide',
+                                    fill: 'none', 'stroke-width': w});
+      }
+    });
+    D.frame.forEach(function (p) {
+      var xy = P(p, i); if (!ok(xy)) return;
+      var s = fs * 0.6;
+      el(g, 'polygon', {points: xy[0] + ',' + (-xy[1]) + ' ' + (xy[0] - s * 0.6) + ',' +
+                        (-xy[1] + s) + ' ' + (xy[0] + s * 0.6) + ',' + (-xy[1] + s),
+                        fill: '#fff', stroke: '#111', 'stroke-width': w});
+      el(g, 'line', {x1: xy[0] - s, y1: -xy[1] + s, x2: xy[0] + s, y2: -xy[1] + s,
+                     stroke: '#111', 'stroke-width': w * 1.5});
+    });
+    D.wheels.forEach(function (wh) {
+      var c = P(wh.point, i); if (!ok(c)) return;
+      el(g, 'circle', {cx: c[0], cy: -c[1], r: wh.r * D.q.L, fill: '#eef3fa', stroke: '#111',
+                       'stroke-width': w});
+    });
+    D.links.forEach(function (lk) {
+      var xy = lk.points.map(function (p) { return P(p, i); });
+      if (!xy.every(ok)) return;
+      if (lk.shape === 'plate') {
+        el(g, 'polygon', {points: xy.map(function (q) { return q[0] + ',' + (-q[1]); }).join(' '),
+                          fill: lk.fill, stroke: '#111', 'stroke-width': w * 1.5,
+                          'stroke-linejoin': 'round', 'data-link': lk.id});
+      } else if (lk.shape === 'bar') {
+        el(g, 'line', {x1: xy[0][0], y1: -xy[0][1], x2: xy[1][0], y2: -xy[1][1],
+                       stroke: '#111', 'stroke-width': w * 6, 'stroke-linecap': 'round',
+                       'data-link': lk.id});
+        el(g, 'line', {x1: xy[0][0], y1: -xy[0][1], x2: xy[1][0], y2: -xy[1][1],
+                       stroke: lk.fill, 'stroke-width': w * 4, 'stroke-linecap': 'round'});
+      }
+    });
+    D.blocks.forEach(function (b) {
+      var c = P(b.point, i); if (!ok(c)) return;
+      var a = val(b.angle, 1e-3, i), s = fs * 0.9;
+      el(g, 'rect', {x: c[0] - s, y: -c[1] - s * 0.6, width: 2 * s, height: 1.2 * s,
+                     fill: '#fff', stroke: '#111', 'stroke-width': w * 1.5,
+                     transform: 'rotate(' + (-a) + ' ' + c[0] + ' ' + (-c[1]) + ')'});
+    });
+    Object.keys(D.points).forEach(function (p) {
+      var xy = P(p, i); if (!ok(xy)) return;
+      var pin = D.pins.indexOf(p) >= 0;
+      el(g, 'circle', {cx: xy[0], cy: -xy[1], r: pin ? fs * 0.22 : fs * 0.14,
+                       fill: pin ? '#fff' : '#111', stroke: '#111', 'stroke-width': w,
+                       'data-point': p});
+      label(g, xy, p, fs, 'lbl');
+    });
+    if (D.centers && document.getElementById('show-centers') &&
+        document.getElementById('show-centers').checked) {
+      Object.keys(D.centers).forEach(function (c) {
+        var xy = [val(D.centers[c].x, D.q.L, i), val(D.centers[c].y, D.q.L, i)];
+        if (!ok(xy)) return;
+        el(g, 'circle', {cx: xy[0], cy: -xy[1], r: fs * 0.15, fill: '#1565c0',
+                         'data-center': c});
+        label(g, xy, c, fs * 0.55, 'ic', fs * 0.2, -fs * 0.6);
+      });
+    }
+    if (D.inflection && document.getElementById('show-inflection') &&
+        document.getElementById('show-inflection').checked) {
+      Object.keys(D.inflection).forEach(function (k) {
+        var ci = D.inflection[k];
+        var c = [val(ci.cx, D.q.L, i), val(ci.cy, D.q.L, i)], r = val(ci.r, D.q.L, i);
+        if (!ok(c) || !isFinite(r)) return;
+        el(g, 'circle', {cx: c[0], cy: -c[1], r: r, fill: 'none', stroke: '#2e7d32',
+                         'stroke-width': w, 'stroke-dasharray': (w * 6) + ' ' + (w * 4),
+                         'data-inflection': k});
+        var j = [val(ci.jx, D.q.L, i), val(ci.jy, D.q.L, i)];
+        label(g, j, 'J' + k, fs * 0.7, 'inf');
+      });
+    }
+  }
+  function drawPolygon(kind, i) {
+    var pg = polys[kind]; if (!pg) return;
+    var svg = pg.svg; clear(svg);
+    var S2 = pg.size, w = S2 / 300, fs = S2 / 22;
+    var g = el(svg, 'g', {id: kind + '-layer'});
+    var prime = kind === 'acceleration' ? '′' : '';
+    var pole = [0, 0];
+    D.links.forEach(function (lk) {
+      var pts = lk.points.map(function (p) { return img(p, i, kind); });
+      if (pts.length < 2 || !pts.every(ok)) return;
+      if (pts.length >= 3) {
+        el(g, 'polygon', {points: pts.map(function (q) { return q[0] + ',' + (-q[1]); }).join(' '),
+                          fill: lk.fill, 'fill-opacity': 0.6, stroke: '#555',
+                          'stroke-width': w, 'data-image': lk.id});
+      } else {
+        line(g, pts[0], pts[1], 'rel', w * 1.5).setAttribute('data-image', lk.id);
+      }
+    });
+    Object.keys(D.points).forEach(function (p) {
+      var q = img(p, i, kind); if (!ok(q)) return;
+      if (D.frame.indexOf(p) < 0) arrow(g, pole, q, w * 1.6, '#111');
+      el(g, 'circle', {cx: q[0], cy: -q[1], r: fs * 0.12, fill: '#111', 'data-point': p,
+                       'class': 'image'});
+      if (D.frame.indexOf(p) < 0) label(g, q, p.toLowerCase() + prime, fs, 'lbl');
+    });
+    el(g, 'circle', {cx: 0, cy: 0, r: fs * 0.18, fill: '#c62828'});
+    var t = el(g, 'text', {x: -fs * 1.4, y: fs * 0.1, 'font-size': fs * 0.8, 'class': 'lbl'}, 'O');
+    el(t, 'tspan', {'font-size': fs * 0.55, dy: fs * 0.2}, kind === 'velocity' ? 'V' : 'A');
+    var sc = D[kind].scale, v = D[kind].view;
+    if (fit && fit.checked) {
+      var xs = [0], ys = [0];
+      Object.keys(D.points).forEach(function (p) {
+        var q = img(p, i, kind); if (ok(q)) { xs.push(q[0]); ys.push(q[1]); }
+      });
+      var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
+      var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
+      var span = Math.max(x1 - x0, y1 - y0, 1e-12), m = span * 0.12;
+      v = [x0 - m, y0 - m - span * 0.1, x0 + span + m, y0 + span + m];
+      pg.size = setup(svg, v);
+      kind0 = kind; sc = nice(span / 4);
+    } else {
+      pg.size = setup(svg, D[kind].view);
+    }
+    var y = v[1] + (v[3] - v[1]) * 0.04, x = v[0] + (v[2] - v[0]) * 0.05;
+    el(g, 'line', {x1: x, y1: -y, x2: x + sc.bar, y2: -y, stroke: '#111', 'stroke-width': w * 1.5,
+                   'class': 'scalebar'});
+    label(g, [x + sc.bar, y], sc.value + ' ' + sc.unit, fs * 0.75, 'lbl', fs * 0.3, -fs * 0.2);
+    var cap = document.getElementById(kind + '-scale');
+    if (cap) cap.textContent = 'drawn to scale: bar = ' + sc.value + ' ' + sc.unit;
+  }
+  function nice(x) {
+    var base = D[kind0].scale;
+    var f = base.factor, k = Math.pow(10, Math.floor(Math.log10(x / f)));
+    var steps = [1, 2, 2.5, 5, 10], v = 10 * k;
+    for (var s = 0; s < steps.length; s++) {
+      if (steps[s] * k >= x / f) { v = steps[s] * k; break; }
+    }
+    v = Number(v.toPrecision(3));
+    return {value: v, unit: base.unit, factor: f, bar: v * f};
+  }
+  function fmt(x, d) {
+    if (!isFinite(x)) return '—';
+    var a = Math.abs(x);
+    if (a !== 0 && (a >= 1e6 || a < 1e-3)) return x.toExponential(3);
+    var dec = Math.max(0, (d || 4) - 1 - Math.floor(Math.log10(a || 1)));
+    return x.toFixed(Math.min(dec, 6));
+  }
+  function angle(v) {
+    var d = Math.atan2(v[1], v[0]) * 180 / Math.PI;
+    return '∠' + d.toFixed(1) + '°';
+  }
+  var choose = document.getElementById('point');
+  function values(i) {
+    var out = [];
+    var dv = D.drive.values[i];
+    document.getElementById('drive-text').textContent =
+      D.drive.label + ' = ' + fmt(dv, 5) + (D.drive.unit === '°' ? '°' : ' ' + D.drive.unit);
+    var good = valid.charAt(i) === '1';
+    document.getElementById('status').textContent = good ? '' : 'cannot be assembled here';
+    if (D.rates) {
+      Object.keys(D.omega).forEach(function (k) {
+        var w = val(D.omega[k], 1e-6, i), a = val(D.alpha[k], 1e-5, i);
+        out.push('<tr><td>ω' + k + '</td><td class="v">' + fmt(w) + '</td><td>rad/s</td></tr>');
+        out.push('<tr><td>α' + k + '</td><td class="v">' + fmt(a) + '</td><td>rad/s²</td></tr>');
+      });
+      var p = choose.value;
+      if (p && D.points[p]) {
+        var vv = img(p, i, 'velocity'), aa = img(p, i, 'acceleration');
+        var vm = Math.sqrt(vv[0] * vv[0] + vv[1] * vv[1]);
+        var am = Math.sqrt(aa[0] * aa[0] + aa[1] * aa[1]);
+        out.push('<tr><td>V<sub>' + p + '</sub></td><td class="v">' + fmt(vm) + '</td><td>' +
+                 D.unit + '/s ' + (vm > 0 ? angle(vv) : '') + '</td></tr>');
+        out.push('<tr><td>A<sub>' + p + '</sub></td><td class="v">' + fmt(am) + '</td><td>' +
+                 D.unit + '/s² ' + (am > 0 ? angle(aa) : '') + '</td></tr>');
+      }
+    }
+    var xy = choose.value ? P(choose.value, i) : [NaN, NaN];
+    out.push('<tr><td>' + (choose.value || '') + '</td><td class="v">(' + fmt(xy[0]) + ', ' +
+             fmt(xy[1]) + ')</td><td>' + D.unit + '</td></tr>');
+    document.getElementById('value-rows').innerHTML = out.join('');
+  }
+  function show(i) {
+    i = ((i % n) + n) % n;
+    cur = i;
+    slider.value = i;
+    drawMechanism(i);
+    if (D.rates) { drawPolygon('velocity', i); drawPolygon('acceleration', i); }
+    values(i);
+    document.body.setAttribute('data-posture', String(i));
+  }
+  function stepBy(d) {
+    var i = cur;
+    for (var k = 0; k < n; k++) {
+      i = ((i + d) % n + n) % n;
+      if (valid.charAt(i) === '1') break;
+    }
+    show(i);
+  }
+  // slider marks: ranges that cannot be assembled, and limit / dead-center postures
+  var marks = document.getElementById('marks');
+  function pct(i) { return (100 * i / Math.max(n - 1, 1)) + '%'; }
+  for (var i0 = 0; i0 < n; i0++) {
+    if (valid.charAt(i0) === '0') {
+      var j0 = i0; while (j0 + 1 < n && valid.charAt(j0 + 1) === '0') j0++;
+      var bad = document.createElement('div'); bad.className = 'bad';
+      bad.style.left = pct(i0); bad.style.width = (100 * (j0 - i0 + 1) / Math.max(n - 1, 1)) + '%';
+      bad.title = 'cannot be assembled'; marks.appendChild(bad); i0 = j0;
+    }
+  }
+  D.events.forEach(function (e) {
+    if (e.kind === 'cannot-assemble') return;
+    var t = document.createElement('div'); t.className = 'tick'; t.style.left = pct(e.i);
+    t.title = e.note; marks.appendChild(t);
+  });
+  slider.max = n - 1;
+  slider.addEventListener('input', function () { show(Number(slider.value)); });
+  document.getElementById('prev').addEventListener('click', function () { stepBy(-1); });
+  document.getElementById('next').addEventListener('click', function () { stepBy(1); });
+  var play = document.getElementById('play');
+  function setPlaying(p) { playing = p; play.textContent = p ? '❚❚ Pause' : '▶ Play'; last = null; }
+  play.addEventListener('click', function () { setPlaying(!playing); });
+  document.getElementById('speed').addEventListener('change', function (e) {
+    speed = Number(e.target.value);
+  });
+  choose.addEventListener('change', function () { values(cur); });
+  ['show-centers', 'show-inflection', 'fit'].forEach(function (id) {
+    var c = document.getElementById(id);
+    if (c) c.addEventListener('change', function () { show(cur); });
+  });
+  document.addEventListener('keydown', function (e) {
+    if (e.target === choose) return;
+    if (e.key === ' ') { setPlaying(!playing); e.preventDefault(); }
+    else if (e.key === 'ArrowRight') { stepBy(1); e.preventDefault(); }
+    else if (e.key === 'ArrowLeft') { stepBy(-1); e.preventDefault(); }
+  });
+  var perSecond = Math.max(n / 6, 1);
+  function tick(t) {
+    if (playing) {
+      if (last !== null) {
+        acc += (t - last) / 1000 * perSecond * speed;
+        var k = Math.floor(acc);
+        if (k >= 1) { acc -= k; for (var s = 0; s < Math.min(k, n); s++) stepBy(1); }
+      }
+      last = t;
+    }
+    requestAnimationFrame(tick);
+  }
+  requestAnimationFrame(tick);
+  var first = D.rates ? rvalid.indexOf('1') : -1;
+  if (first < 0) first = valid.indexOf('1');
+  show(first < 0 ? 0 : first);
+  window.graphkinCycle = {show: show, step: stepBy, current: function () { return cur; },
+                          count: n, errors: errors, play: function () { setPlaying(true); },
+                          pause: function () { setPlaying(false); },
+                          playing: function () { return playing; }};
+})();
+"""
+
+
+def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = None,
+                 stop: float | None = None, centers: bool = False,
+                 inflection: bool = False) -> str:
+    """The cycle of a mechanism as one self-contained HTML page (no network).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    count : int
+        Number of postures (360 by default: one per degree of a crank).
+    start, stop : float, optional
+        The drive range (as ``graphkin sweep --from/--to``).
+    centers : bool
+        Offer the instant centers (a checkbox on the page).
+    inflection : bool
+        Offer each moving link's inflection circle (needs rates).
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    InputError
+        ``inflection`` without rates.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 3.4, 4.4, 3.13, 4.15.
+    """
+    if inflection and not mech.has_rates:
+        raise InputError("the inflection circle needs rates (add omega to [drive])",
+                         key="--inflection", file=mech.source)
+    data = cycle_data(mech, count=count, start=start, stop=stop, centers=centers,
+                      inflection=inflection)
+    title = html.escape(data["title"])
+    blob = json.dumps(data, separators=(",", ":"), ensure_ascii=False).replace("</", "<\\/")
+    options = "".join(f'<option value="{html.escape(p)}">{html.escape(p)}</option>'
+                      for p in _default_order(mech, data))
+    toggles = ""
+    if centers:
+        toggles += ('<label><input type="checkbox" id="show-centers" checked> '
+                    "instant centers</label>")
+    if inflection:
+        toggles += ('<label><input type="checkbox" id="show-inflection" checked> '
+                    "inflection circles</label>")
+    polygons = ""
+    if data["rates"]:
+        for key, cap in (("velocity", "Velocity polygon"),
+                         ("acceleration", "Acceleration polygon")):
+            polygons += (f'<figure><figcaption>{cap}</figcaption>'
+                         f'<svg id="{key}" xmlns="http://www.w3.org/2000/svg"></svg>'
+                         f'<div class="scale" id="{key}-scale">drawn to scale: bar = '
+                         f"{html.escape(data[key]['scale']['value'].__format__('g'))} "
+                         f"{html.escape(data[key]['scale']['unit'])}</div></figure>")
+    return (
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+        '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
+        f"<title>{title}: the cycle</title>\n<style>{_CSS}"
+        ".lbl{fill:#111;font-family:'DejaVu Sans',sans-serif}"
+        ".ic{fill:#1565c0}.inf{fill:#2e7d32}.guide{stroke:#777;stroke-dasharray:none}"
+        ".rel{stroke:#555}</style>\n</head>\n<body>\n"
+        f"<header><h1>{title}: the whole cycle</h1>"
+        + (f'<p class="held">{html.escape(data["held"])}</p>' if data["held"] else "")
+        + "</header>\n"
+        '<div class="controls"><button id="play" type="button">▶ Play</button>'
+        '<button id="prev" type="button" title="one posture back">◀ −1</button>'
+        '<button id="next" type="button" title="one posture on">+1 ▶</button>'
+        '<label>speed <select id="speed"><option value="0.25">¼×</option>'
+        '<option value="0.5">½×</option><option value="1" selected>1×</option>'
+        '<option value="2">2×</option><option value="4">4×</option></select></label>'
+        '<span id="drive-text"></span>'
+        '<div id="slider-wrap"><input type="range" id="drive" min="0" max="0" value="0" '
+        'aria-label="drive"><div id="marks"></div></div>'
+        f'<span id="status"></span>{toggles}'
+        + ('<label title="redraw each polygon at a round scale that fits it">'
+           '<input type="checkbox" id="fit"> fit polygons</label>' if data["rates"] else "")
+        + "</div>\n"
+        '<main><figure><figcaption>Mechanism</figcaption>'
+        '<svg id="mechanism" xmlns="http://www.w3.org/2000/svg"></svg></figure>'
+        f'{polygons}<div id="values"><label>point <select id="point">{options}</select>'
+        '</label><table><tbody id="value-rows"></tbody></table>'
+        '<p style="font-size:12px;color:#555">Red on the slider: cannot be assembled '
+        "(skipped while playing); blue ticks: limit and dead-center postures "
+        "(Sec. 1.10). Space plays, ← → step.</p></div></main>\n"
+        f'<script type="application/json" id="cycle-data">{blob}</script>\n'
+        f"<script>{_JS}</script>\n</body>\n</html>\n")
+
+
+def _default_order(mech: Mechanism, data: dict[str, Any]) -> list[str]:
+    """The points offered for the values panel: coupler points first."""
+    pts = list(data["points"])
+    frame = set(mech.links[FRAME].points)
+    moving = [p for p in pts if p not in frame]
+    return list(reversed(moving)) + [p for p in pts if p in frame]

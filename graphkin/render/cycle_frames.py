@@ -1,0 +1,184 @@
+"""The cycle as pictures for slides: one SVG or PNG per posture, or an animated GIF.
+
+The same data as the animation page (:func:`graphkin.render.animate.cycle_data`,
+from one sweep) drawn with matplotlib: the mechanism, and its velocity and
+acceleration polygons to the fixed scale of the page.  The GIF is written by
+matplotlib's Pillow writer (Pillow is a dependency of matplotlib).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.4, 4.4.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from graphkin.errors import InputError
+from graphkin.mechanisms.model import Mechanism
+from graphkin.render.animate import cycle_data
+from graphkin.render.style import rc_context
+
+__all__ = ["write_cycle_frames", "write_cycle_gif"]
+
+
+def _val(series: list[int | None], q: float, i: int) -> float:
+    v = series[i]
+    return float("nan") if v is None else v * q
+
+
+class _Drawer:
+    """Draws one posture of the cycle's data into a matplotlib figure."""
+
+    def __init__(self, data: dict[str, Any]) -> None:
+        from matplotlib.figure import Figure
+
+        self.d = data
+        rated = bool(data["rates"])
+        n = 3 if rated else 1
+        self.fig = Figure(figsize=(4.2 * n, 4.0), dpi=100)
+        self.axes = [self.fig.add_subplot(1, n, k + 1) for k in range(n)]
+        self.kinds = ["mechanism"] + (["velocity", "acceleration"] if rated else [])
+
+    def point(self, name: str, i: int, kind: str) -> np.ndarray:
+        p, q = self.d["points"][name], self.d["q"]
+        if kind == "mechanism":
+            return np.array([_val(p["x"], q["L"], i), _val(p["y"], q["L"], i)])
+        k = "v" if kind == "velocity" else "a"
+        qq = q["V"] if kind == "velocity" else q["A"]
+        return np.array([_val(p[k + "x"], qq, i), _val(p[k + "y"], qq, i)])
+
+    def draw(self, i: int) -> Any:
+        d = self.d
+        for ax, kind in zip(self.axes, self.kinds):
+            ax.clear()
+            view = d["view"] if kind == "mechanism" else d[kind]["view"]
+            ax.set_xlim(view[0], view[2])
+            ax.set_ylim(view[1], view[3])
+            ax.set_aspect("equal")
+            ax.set_xticks([])
+            ax.set_yticks([])
+            title = {"mechanism": "Mechanism", "velocity": "Velocity polygon",
+                     "acceleration": "Acceleration polygon"}[kind]
+            if kind != "mechanism":
+                sc = d[kind]["scale"]
+                title += f"  (bar: {sc['value']:g} {sc['unit']})"
+                x0, y0 = view[0] + 0.05 * (view[2] - view[0]), view[1] + 0.05 * (view[3] - view[1])
+                ax.plot([x0, x0 + sc["bar"]], [y0, y0], color="k", lw=1.5)
+            ax.set_title(title, fontsize=10)
+            for lk in d["links"]:
+                pts = [self.point(p, i, kind) for p in lk["points"]]
+                if len(pts) < 2 or not all(np.isfinite(q).all() for q in pts):
+                    continue
+                arr = np.array(pts + ([pts[0]] if len(pts) >= 3 else []))
+                if kind == "mechanism":
+                    if len(pts) >= 3:
+                        ax.fill(arr[:, 0], arr[:, 1], color=lk["fill"], alpha=0.9, lw=0)
+                    ax.plot(arr[:, 0], arr[:, 1], color="k", lw=2 if len(pts) == 2 else 1.2)
+                else:
+                    if len(pts) >= 3:
+                        ax.fill(arr[:, 0], arr[:, 1], color=lk["fill"], alpha=0.5, lw=0)
+                    ax.plot(arr[:, 0], arr[:, 1], color="#555", lw=0.8)
+            for name in d["points"]:
+                q = self.point(name, i, kind)
+                if not np.isfinite(q).all():
+                    continue
+                if kind == "mechanism":
+                    ax.plot(*q, "o", ms=4, mfc="w" if name in d["pins"] else "k", mec="k")
+                    ax.annotate(name, (q[0], q[1]), xytext=(4, 4), textcoords="offset points",
+                                fontsize=9)
+                elif name not in d["frame"]:
+                    ax.annotate("", (q[0], q[1]), (0, 0),
+                                arrowprops={"arrowstyle": "-|>", "lw": 1.2})
+                    ax.annotate(name.lower() + ("′" if kind == "acceleration" else ""),
+                                (q[0], q[1]),
+                                xytext=(4, 4), textcoords="offset points", fontsize=9)
+            if kind != "mechanism":
+                ax.plot(0, 0, "o", color="#c62828", ms=4)
+        unit = "°" if d["drive"]["unit"] == "°" else " " + d["drive"]["unit"]
+        state = "" if d["valid"][i] == "1" else "  (cannot be assembled)"
+        self.fig.suptitle(f"{d['title']}: {d['drive']['label']} = "
+                          f"{d['drive']['values'][i]:.2f}{unit}{state}", fontsize=10)
+        return self.fig
+
+
+def write_cycle_frames(mech: Mechanism, directory: str | Path, *, count: int = 360,
+                       start: float | None = None, stop: float | None = None,
+                       fmt: str = "svg") -> list[Path]:
+    """Write one picture per posture of the cycle (``cycle-000.svg``, ...).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    directory : str or Path
+    count : int
+    start, stop : float, optional
+        The drive range, as for ``graphkin sweep``.
+    fmt : str
+        ``svg`` or ``png``.
+
+    Returns
+    -------
+    list of Path
+
+    Raises
+    ------
+    InputError
+        An unknown format.
+    """
+    if fmt not in ("svg", "png"):
+        raise InputError(f"frames are svg or png, not {fmt!r}", key="--frames")
+    data = cycle_data(mech, count=count, start=start, stop=stop)
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    width = max(3, len(str(data["n"] - 1)))
+    paths = []
+    with rc_context():  # real text in the SVG, deterministic ids
+        drawer = _Drawer(data)
+        for i in range(data["n"]):
+            p = out / f"cycle-{i:0{width}d}.{fmt}"
+            drawer.draw(i).savefig(p, format=fmt,
+                                   metadata={"Date": None} if fmt == "svg" else None)
+            paths.append(p)
+    return paths
+
+
+def write_cycle_gif(mech: Mechanism, path: str | Path, *, count: int = 120,
+                    start: float | None = None, stop: float | None = None,
+                    fps: int = 20) -> Path:
+    """Write the cycle as an animated GIF (postures that cannot be assembled are skipped).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    path : str or Path
+    count : int
+        Number of postures (frames).
+    start, stop : float, optional
+    fps : int
+        Frames per second.
+
+    Returns
+    -------
+    Path
+    """
+    from matplotlib.animation import PillowWriter
+
+    data = cycle_data(mech, count=count, start=start, stop=stop)
+    writer = PillowWriter(fps=fps)
+    p = Path(path)
+    with rc_context():
+        drawer = _Drawer(data)
+        _gif(drawer, writer, p, data)
+    return p
+
+
+def _gif(drawer: _Drawer, writer: Any, p: Path, data: dict[str, Any]) -> None:
+    with writer.saving(drawer.fig, str(p), dpi=80):
+        for i in range(data["n"]):
+            if data["valid"][i] == "1":
+                drawer.draw(i)
+                writer.grab_frame()

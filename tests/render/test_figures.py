@@ -1,0 +1,97 @@
+"""Required elements of the figures, read back from the SVG by group id (issue 11)."""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+from spec_data import EXAMPLES
+
+from graphkin.render.style import FONT_PT
+
+NAMES = sorted(p.stem for p in EXAMPLES.glob("ex*.toml") if p.stem != "expected")
+
+
+def _ids(svg: bytes) -> set[str]:
+    return {el.get("id") for el in ET.fromstring(svg).iter() if el.get("id")}
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_centers_figure_has_the_kennedy_circle(gk, name):
+    sol = gk.solved(name)
+    ids = _ids(gk.svg(name, "centers"))
+    n = len(sol.mechanism.links)
+    assert "kennedy-circle" in ids and "panel-kennedy" in ids
+    assert all(f"kennedy-link-{lid}" in ids for lid in sol.mechanism.links)
+    # one chord per pair of links: N = n(n-1)/2 (Eq. 3.20)
+    chords = {i for i in ids if re.fullmatch(r"kennedy-I\d+(-\d+)?", i)}
+    assert len(chords) == n * (n - 1) // 2
+    d = gk.drawn(name, "centers")
+    ic = d.sheet.painters["centers"].src.extras["centers"]
+    for c in ic.centers.values():
+        assert f"kennedy-order-{c.label}" in ids
+        assert d.texts[f"order {c.label}"].get_text() == str(c.order)
+
+
+@pytest.mark.parametrize("name", ["ex3_1_fourbar", "ex5_4_fivebar"])
+def test_instant_center_letters_are_black_at_point_label_size(gk, name):
+    d = gk.drawn(name, "centers")
+    ic = d.sheet.painters["centers"].src.extras["centers"]
+    for c in ic.centers.values():
+        t = d.texts.get(c.label)
+        if t is None:
+            continue  # a center at infinity is an arrow marked ∞
+        assert t.get_fontsize() == FONT_PT
+        assert t.get_color() in ("k", "#000000", "black")
+
+
+def test_a_center_at_infinity_is_printed_as_a_direction(gk):
+    # Example 4.7 at its posture: the follower's face is vertical, so the common normal
+    # through B and the line I12-I13 are parallel: I23 is at infinity along x.
+    d = gk.drawn("ex4_7_cam_follower", "centers")
+    row = {r.key: r for r in d.sheet.rows}["center-I23"]
+    assert row.drawn.startswith("∞ along (1, 0)") and row.exact.startswith("∞ along (1, 0)")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert "I₂₃ ∞" in texts
+
+
+@pytest.mark.parametrize("name", ["ex4_14_inflection_bresse", "ex4_16_cubic"])
+def test_curvature_sheet_is_split_into_the_books_figures(gk, name):
+    # Figs. 4.33-4.35 (a), 4.29 (b), 4.25/4.30 (c), 4.37-4.39 (d): one idea per panel
+    ids = _ids(gk.svg(name, "curvature"))
+    for panel in ("inflection", "bobillier", "hartmann", "cubic"):
+        assert f"panel-{panel}" in ids, panel
+    for gid in ("inflection-inflection-circle", "inflection-Bresse-circle", "cubic-cubic",
+                "cubic-ball-point", "inflection-label-N", "inflection-label-T"):
+        assert gid in ids, gid
+    d = gk.drawn(name, "curvature")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert "inflection circle" in texts and "Bresse circle" in texts
+    # no literal underscores: J_B, A_N, G_T are real subscripts
+    assert not [t for t in texts if "_" in t and not t.startswith("$")], texts
+
+
+def test_each_curvature_figure_alone(gk):
+    from graphkin.render import draw
+
+    sol = gk.solved("ex4_14_inflection_bresse")
+    for panel in ("inflection", "bobillier", "hartmann", "cubic"):
+        d = draw(sol, panel)
+        assert [p.name for p in d.sheet.panels] == [panel]
+
+
+def test_a_link_about_a_frame_pivot_gets_a_sentence(gk):
+    d = gk.drawn("ex4_7_cam_follower", "curvature")
+    assert "turns about the frame pivot" in d.texts["curvature note"].get_text()
+
+
+def test_image_fills_stay_distinct_in_greyscale():
+    from graphkin.render.style import IMAGE_FILLS
+
+    def grey(h: str) -> float:  # ITU-R BT.601 luma, as a photocopier sees it
+        r, g, b = (int(h[i:i + 2], 16) / 255 for i in (1, 3, 5))
+        return 0.299 * r + 0.587 * g + 0.114 * b
+
+    lum = [grey(h) for h in IMAGE_FILLS[:4]]
+    assert min(abs(a - b) for i, a in enumerate(lum) for b in lum[i + 1:]) >= 0.06
