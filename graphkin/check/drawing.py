@@ -548,8 +548,10 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         return mine[k], float(d[k])
 
     out: list[Polygon] = []
+    bare = _bare_pole_kind(data)
     for text, at in data.labels:
-        kind = _pole_kind(text)
+        kind = _pole_kind(text) or (bare if re.sub(r"[^A-Za-z]", "", text) in ("O", "o")
+                                    else None)
         if not kind:
             continue
         vi, _ = nearest(at)
@@ -575,6 +577,20 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         poly.points = {t2: xy for t2, (_, xy) in best.items()}
         out.append(poly)
     return out
+
+
+def _bare_pole_kind(data: DrawingData) -> str | None:
+    """The polygon a pole labelled just ``O`` belongs to, told by the sheet's scale.
+
+    Only when no label says ``O_V`` or ``O_A`` and the stated scale's right
+    side is a velocity or an acceleration.
+    """
+    if any(_pole_kind(t) for t, _ in data.labels) or not data.scale:
+        return None
+    try:
+        return read_scale(data.scale, "mm", kinds=("velocity", "acceleration")).quantity
+    except InputError:
+        return None
 
 
 def read_polygons(path: str | Path) -> list[Polygon]:

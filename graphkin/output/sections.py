@@ -38,10 +38,9 @@ class Section:
         """The section's JSON object, or None when it does not apply to ``sol``."""
         return _load(self.json_fn)(sol, units)
 
-    @property
-    def text(self) -> Callable[[Solution, OutputUnits], str | None] | None:
-        """The function that writes the section's text, or None when it has none."""
-        return None if self.text_fn is None else _load(self.text_fn)
+    def text(self, sol: Solution, units: OutputUnits) -> str | None:
+        """The section's part of the text report, or None (no text, or not for ``sol``)."""
+        return None if self.text_fn is None else _load(self.text_fn)(sol, units)
 
 
 def _load(name: str) -> Callable[..., Any]:

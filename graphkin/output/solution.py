@@ -140,7 +140,7 @@ def text_report(sol: Solution, units: OutputUnits | None = None) -> str:
                     f"{polar(sol.acceleration(name) * ou.k_acceleration, ou.text('acceleration'))}")
         lines.append(row)
     for s in SECTIONS:
-        text = s.text(sol, ou) if s.text is not None else None
+        text = s.text(sol, ou)
         if text:
             lines += ["", s.title, text]
     return "\n".join(lines) + "\n"

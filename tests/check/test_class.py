@@ -256,7 +256,7 @@ PER_MM = 10.0  # in/s per mm of paper: "1 mm = 10 in/s"
 
 
 def _cad(path: Path, vectors: dict[str, np.ndarray], style: str, *,
-         closing: tuple[str, str] | None = ("b", "c")) -> Path:
+         closing: tuple[str, str] | None = ("b", "c"), pole_label: str = r"O\S^V;") -> Path:
     """A velocity polygon drawn in CAD the way students draw it (mm, 1 mm = 10 in/s)."""
     import ezdxf
 
@@ -297,7 +297,7 @@ def _cad(path: Path, vectors: dict[str, np.ndarray], style: str, *,
     if closing:
         a, b = (tips[k] - origin for k in closing)
         host.add_line(tuple(a), tuple(b))
-    host.add_mtext(r"O\S^V;", dxfattribs={"char_height": 2.5}).set_location(
+    host.add_mtext(pole_label, dxfattribs={"char_height": 2.5}).set_location(
         tuple(pole - origin + np.array([-4.0, 0.8])))
     if style == "block":
         msp.add_blockref("POLYGON", tuple(pole))
@@ -572,3 +572,13 @@ def test_no_follow_through_from_a_mistake_an_answer_given_right_rules_out(
             f"V_F = {_vec(an.velocity('F'), 'ft/s', 1.0)}\n")
     rows = {r.key: r for r in check(mech.solve(), loads_answers(text, mech)).rows}
     assert [rows[k].code for k in ("omega3", "V_E", "V_F")] == ["", "unit:12", "unit:12"]
+
+
+def test_a_pole_labelled_just_o_is_read_from_the_scale(fourbar: Path, tmp_path: Path,
+                                                        velocities: dict[str, np.ndarray],
+                                                        capsys: pytest.CaptureFixture[str]
+                                                        ) -> None:
+    # "Scale: 1 mm = 10 in/s" is a velocity scale, so the pole O is O_V
+    dxf = _cad(tmp_path / "v.dxf", velocities, "lines", pole_label="O")
+    assert main(["check", str(fourbar), "--drawing", str(dxf)]) == 0
+    assert "velocity polygon" in capsys.readouterr().out
