@@ -133,6 +133,15 @@ def _links(ax: Any, fs: ForceSolution, only: str | None, gid: str) -> None:
                             fontsize=SMALL_PT)
             t.set_gid(f"{gid}-label-{n}")
     if only is None:
+        span = float(mech.scale)
+        for j in fs.joints:  # the guides of the sliders (Fig. 11.8a)
+            if j.key in fs.geometry.along and j.key in fs.geometry.base:
+                b, u = fs.geometry.base[j.key], fs.geometry.along[j.key]
+                pt = fs.geometry.points[j.point]
+                t0 = float((pt - b) @ u)
+                ends = np.array([b + (t0 - span) * u, b + (t0 + span) * u])
+                (gl,) = ax.plot(ends[:, 0], ends[:, 1], color=GREY, lw=0.8, zorder=0)
+                gl.set_gid(f"{gid}-guide-{j.key}")
         for p in mech.pins:
             if "1" in p.links:
                 xy = sol.position(p.name)
@@ -276,6 +285,12 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Dra
            if n not in mech.helper_points]
     center, span = _extent(pts)
     lscale = choose_scale(span * 1.35, PANEL_IN, "in", mech.length_unit)
+    # the loads' arrows (a fixed length on paper) must fit in panel (a) too
+    tails = [at - _unit(f) * 0.55 * lscale.per_inch for lid in moving
+             for _, f, at, color, _ in _forces_on(fs, lid) if color != INK]
+    if tails:
+        center, span = _extent(pts + tails)
+        lscale = choose_scale(span * 1.35, PANEL_IN, "in", mech.length_unit)
     fmax = 0.0
     for _, _, items in polys:
         acc = np.zeros(2)
@@ -404,14 +419,20 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None) -> Dra
                      else f"{tag}: polygon of link {lid}")
             pp = _Panel(fig, pos % ncols, pos // ncols, rows, c, fscale.per_inch, title, name)
             vectors[name] = [(lab, tail, tail + v) for (lab, v, _, _), tail in zip(items, path)]
+            turn = sum(float(a[0] * b[1] - a[1] * b[0]) for a, b in zip(path, path[1:]))
             for (lab, v, color, raw), tail in zip(items, path):
                 if np.hypot(*v) == 0:
                     continue
                 color = hue(raw, color)
                 drawing[f"{name}-{lab}"] = pp.arrow(tail, tail + v, color, f"{name}-{lab}")
-                drawing.texts[f"{name}-{lab}"] = pp.text(tail + v / 2, lab,
-                                                         f"{name}-label-{lab}", color,
-                                                         size=SMALL_PT)
+                # the label beside the middle of its vector, outside the polygon (the
+                # interior is on the left of each side of a counterclockwise polygon)
+                u = _unit(v) * (1.0 if turn > 0 else -1.0)
+                t = pp.text(tail + v / 2, lab, f"{name}-label-{lab}", color, size=SMALL_PT,
+                            offset=(8 * float(u[1]), -8 * float(u[0])))
+                t.set_ha("center")
+                t.set_va("center")
+                drawing.texts[f"{name}-{lab}"] = t
             (o,) = pp.ax.plot([0], [0], marker="o", ms=3, color=INK)
             o.set_gid(f"{name}-start")
     return drawing
