@@ -307,7 +307,7 @@ class _Teller:
             return f"{label} = —", given
         sense = "" if abs(v) < 1e-12 * (1 + abs(v)) else (" ccw" if v > 0 else " cw")
         s = f"{fmt(_round(abs(v)), 4)} {'rad/s' if kind == 'w' else 'rad/s²'}{sense}"
-        return (f"{_sub(label)} = {s}" if given else f"{_sub(label)} = ⟦{s}⟧"), given
+        return (f"{label} = {s}" if given else f"{label} = ⟦{s}⟧"), given
 
     def vec(self, label: str) -> np.ndarray | None:
         """A vector of the plane: the image minus the pole, or a vector value."""
@@ -1083,10 +1083,6 @@ def _deg_line(d: np.ndarray) -> str:
     """The angle of a line (not a vector) in [0°, 180°): ``20.9°``."""
     a = math.degrees(math.atan2(float(d[1]), float(d[0]))) % 180.0
     return f"{0.0 if a > 179.95 else a:.1f}° from the x axis"
-
-
-def _sub(label: str) -> str:
-    return label
 
 
 def _wtext(rate: str) -> str:

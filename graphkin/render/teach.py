@@ -1,16 +1,21 @@
 """The teaching page: one self-contained HTML file that walks through a construction step by step.
 
-For every step the page shows the vector equation it solves with the book's
-✓/? marks over each vector, the one sentence that says what the draftsman
-does, and the drawing up to that step with the new elements in colour.
-Previous/next buttons and the arrow keys move through the steps.  The page
-needs no network: the drawings are inline SVG, the script and style inline.
+The construction's steps are told as the book works its examples
+(:mod:`graphkin.render.narrate`): each step of the page has a title in words,
+the vector equation with the ✓/? marks over each vector (its left side
+included), what is drawn and why, the numbers, the book's section, and the
+drawing up to that step with the step's own elements in colour.
+Previous/next buttons and the arrow keys move through the steps; the
+numbers to be found hide behind a "Show answers" toggle; printing gives every
+step; without JavaScript every step is shown.  The page needs no network: the
+drawings are inline SVG, the script and style inline.
 
 Each frame's SVG ids are prefixed (``f07-step-07-C``) so that the frames can
-live in one document; the frame itself is a ``<section data-step="7">``.
-Opening the page with ``#selftest`` runs a small self-test: it presses
-"next" through every step and the left arrow back, and writes what it saw
-into ``<pre id="selftest-result">`` (used by the tests, in a headless browser).
+live in one document; a page step is a ``<section data-step="k">`` whose
+``data-steps`` lists the construction steps it covers.  ``window.graphkinSteps``
+(``show(k)``, ``count``, ``current()``) lets a browser test drive the page;
+opening it with ``#selftest`` presses "next" through every step and the left
+arrow back, and writes what it saw into ``<pre id="selftest-result">``.
 
 References
 ----------
