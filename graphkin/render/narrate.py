@@ -41,8 +41,8 @@ from graphkin.construction import Construction, Mark, Step, Term
 from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
 from graphkin.render.scale import Scale, fmt
 
-__all__ = ["PageStep", "narrate", "plain", "answer_html", "vector_html", "point_name",
-           "image_letter", "PREPARATORY"]
+__all__ = ["PageStep", "narrate", "helper_steps", "plain", "answer_html", "vector_html",
+           "point_name", "image_letter", "PREPARATORY"]
 
 K, U = Mark.KNOWN, Mark.UNKNOWN
 
@@ -1110,6 +1110,21 @@ def _side_words(side: tuple[Term, ...]) -> str:
 
 def _path_words(line: str) -> str:
     return "the slot" if line.startswith("slots") else "the slide"
+
+
+def helper_steps(src: Any, diagram: str) -> set[int]:
+    """Indices of the steps that only place the images of helper points (left off the page).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.render.sources import as_source
+    >>> src = as_source(graphkin.examples.coriolis_block().solve())
+    >>> [src.constructions["velocity"][i].label for i in sorted(helper_steps(src, "velocity"))]
+    ['v(X)']
+    """
+    t = _Teller(src, diagram, None)
+    return {s.index for s in t.cx.steps if t.helper(s)}
 
 
 def narrate(src: Any, diagram: str, scale: Scale | None = None) -> list[PageStep]:

@@ -29,11 +29,12 @@ import html
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from graphkin.construction import Construction, Step, Term, VectorEquation
-from graphkin.render.narrate import PageStep, answer_html, narrate, vector_html
+from graphkin.render.narrate import PageStep, answer_html, helper_steps, narrate, vector_html
 from graphkin.render.sources import DIAGRAMS, DiagramUnavailable, as_source, optional_modules
 
 __all__ = ["steps_html", "step_frames", "write_frames", "equation_html", "page_frames",
@@ -200,10 +201,18 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
     from graphkin.render.sheet import build_sheet
     from graphkin.render.svg import to_svg
 
+    # the steps of helper points are drawn no more than told: a source without them
+    skip = helper_steps(src, diagram)
+    kept = [s for s in src.constructions[diagram].steps if s.index not in skip]
+    if skip:
+        src = replace(src, constructions={**src.constructions,
+                                          diagram: Construction(kept,
+                                                                src.constructions[diagram].title)})
     out = []
     with _classroom_type():
         for ps in steps:
-            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
+            upto = sum(1 for s in kept if s.index <= ps.main) - 1  # a position among the kept
+            sheet = build_sheet(src, diagram, upto=upto, highlight=set(ps.steps),
                                 table=False, max_inches=max_inches, title="")
             d = render_sheet(sheet)
             assert d.figure is not None
