@@ -138,6 +138,32 @@ def _polygon_box(X: list[Any], Y: list[Any], keep: float = 90.0) -> tuple[np.nda
     return np.minimum(lo, 0.0), np.maximum(hi, 0.0)
 
 
+def _coincident(mech: Mechanism, sol: Any, cols: dict[str, Any], names: list[str],
+                qV: float, qA: float) -> list[dict[str, Any]]:
+    """Images of the point of a moving guide that coincides with its slider's point.
+
+    For a point P sliding on link k (which turns), the image of P_k joins the
+    image of P by the apparent velocity V_P/k (along the slide, Eq. 3.6), and
+    in the acceleration polygon by the Coriolis and apparent components (Eq. 4.17).
+    """
+    out = []
+    guided: list[Slider | Slot] = [*mech.sliders, *mech.slots]
+    for sl in guided:
+        if sl.on == FRAME or sl.point not in names or sl.key.startswith("rolling"):
+            continue
+        st = sol.links[sl.on]
+        pw = np.stack([cols[f"x_{sl.point}"], cols[f"y_{sl.point}"]], axis=-1)
+        d = pw - st.origin
+        c, s = np.cos(st.angle), np.sin(st.angle)
+        local = np.stack([c * d[..., 0] + s * d[..., 1], -s * d[..., 0] + c * d[..., 1]],
+                         axis=-1)
+        v, a = st.velocity(local), st.acceleration(local)
+        out.append({"point": sl.point, "on": sl.on,
+                    "vx": _series(v[..., 0], qV), "vy": _series(v[..., 1], qV),
+                    "ax": _series(a[..., 0], qA), "ay": _series(a[..., 1], qA)})
+    return out
+
+
 def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
                stop: float | None = None, centers: bool = False,
                inflection: bool = False) -> dict[str, Any]:
@@ -247,7 +273,10 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
             g: dict[str, Any] = {"kind": "line", "x0": _series(a[..., 0], qL),
                                  "y0": _series(a[..., 1], qL), "x1": _series(b[..., 0], qL),
                                  "y1": _series(b[..., 1], qL), "point": gl.point,
-                                 "block": gl.link in slider_links and gl.key == "sliders"}
+                                 "block": gl.link in slider_links and gl.key == "sliders",
+                                 # the guide's own points: its arm is drawn to the slide
+                                 "arms": [] if gl.on == FRAME else
+                                 [n for n in mech.links[gl.on].points if n in names]}
             guides.append(g)
         elif isinstance(gl, Slot) and gl.center is not None and gl.radius is not None:
             c = st.position(np.asarray(gl.center, dtype=float))
@@ -300,6 +329,7 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
             data[key] = {"view": view, "scale": {"value": sc.value, "unit": sc.unit,
                                                  "factor": sc.factor, "text": sc.text,
                                                  "bar": sc.value * sc.factor}}
+        data["coincident"] = _coincident(mech, sol, cols, names, qV, qA)
         data["omega"] = {lid: _series(cols[f"omega_{lid}"], 1e-6) for lid in mech.moving}
         data["alpha"] = {lid: _series(cols[f"alpha_{lid}"], 1e-5) for lid in mech.moving}
     data["points"] = pts
@@ -430,8 +460,17 @@ _JS = r"""
     var g = el(mechSvg, 'g', {id: 'mech-layer'});
     D.guides.forEach(function (gd) {
       if (gd.kind === 'line') {
-        line(g, [val(gd.x0, D.q.L, i), val(gd.y0, D.q.L, i)],
-             [val(gd.x1, D.q.L, i), val(gd.y1, D.q.L, i)], 'guide', w * (gd.surface ? 1.5 : 1));
+        var a0 = [val(gd.x0, D.q.L, i), val(gd.y0, D.q.L, i)];
+        var a1 = [val(gd.x1, D.q.L, i), val(gd.y1, D.q.L, i)];
+        line(g, a0, a1, 'guide', w * (gd.surface ? 1.5 : 1));
+        (gd.arms || []).forEach(function (p) {
+          var q = P(p, i); if (!ok(q) || !ok(a0) || !ok(a1)) return;
+          var ux = a1[0] - a0[0], uy = a1[1] - a0[1], L2 = ux * ux + uy * uy;
+          var t = ((q[0] - a0[0]) * ux + (q[1] - a0[1]) * uy) / L2;
+          var f = [a0[0] + t * ux, a0[1] + t * uy];
+          el(g, 'line', {x1: q[0], y1: -q[1], x2: f[0], y2: -f[1], stroke: '#111',
+                         'stroke-width': w * 4, 'stroke-linecap': 'round', 'data-arm': p});
+        });
       } else {
         var c = [val(gd.cx, D.q.L, i), val(gd.cy, D.q.L, i)];
         if (ok(c)) el(g, 'circle', {cx: c[0], cy: -c[1], r: gd.r * D.q.L, 'class': 'guide',
@@ -530,6 +569,19 @@ _JS = r"""
       el(g, 'circle', {cx: q[0], cy: -q[1], r: fs * 0.12, fill: '#111', 'data-point': p,
                        'class': 'image'});
       if (D.frame.indexOf(p) < 0) label(g, q, p.toLowerCase() + prime, fs, 'lbl');
+    });
+    (D.coincident || []).forEach(function (cp) {
+      var q = kind === 'velocity' ? [val(cp.vx, D.q.V, i), val(cp.vy, D.q.V, i)]
+                                  : [val(cp.ax, D.q.A, i), val(cp.ay, D.q.A, i)];
+      var tip = img(cp.point, i, kind);
+      if (!ok(q) || !ok(tip)) return;
+      arrow(g, pole, q, w * 1.0, '#777');
+      el(g, 'line', {x1: q[0], y1: -q[1], x2: tip[0], y2: -tip[1], stroke: '#1565c0',
+                     'stroke-width': w * 1.4, 'stroke-dasharray': (w * 5) + ' ' + (w * 3),
+                     'data-apparent': cp.point});
+      el(g, 'circle', {cx: q[0], cy: -q[1], r: fs * 0.1, fill: '#1565c0',
+                       'data-coincident': cp.point + '@' + cp.on});
+      label(g, q, cp.point.toLowerCase() + prime + cp.on, fs * 0.8, 'lbl');
     });
     el(g, 'circle', {cx: 0, cy: 0, r: fs * 0.18, fill: '#c62828'});
     var t = el(g, 'text', {x: -fs * 1.4, y: fs * 0.1, 'font-size': fs * 0.8, 'class': 'lbl'}, 'O');

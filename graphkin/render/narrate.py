@@ -41,8 +41,8 @@ from graphkin.construction import Construction, Mark, Step, Term
 from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
 from graphkin.render.scale import Scale, fmt
 
-__all__ = ["PageStep", "narrate", "plain", "answer_html", "vector_html", "point_name",
-           "image_letter", "PREPARATORY"]
+__all__ = ["PageStep", "narrate", "helper_steps", "plain", "answer_html", "vector_html",
+           "point_name", "image_letter", "PREPARATORY"]
 
 K, U = Mark.KNOWN, Mark.UNKNOWN
 
@@ -307,7 +307,7 @@ class _Teller:
             return f"{label} = —", given
         sense = "" if abs(v) < 1e-12 * (1 + abs(v)) else (" ccw" if v > 0 else " cw")
         s = f"{fmt(_round(abs(v)), 4)} {'rad/s' if kind == 'w' else 'rad/s²'}{sense}"
-        return (f"{_sub(label)} = {s}" if given else f"{_sub(label)} = ⟦{s}⟧"), given
+        return (f"{label} = {s}" if given else f"{label} = ⟦{s}⟧"), given
 
     def vec(self, label: str) -> np.ndarray | None:
         """A vector of the plane: the image minus the pole, or a vector value."""
@@ -1085,10 +1085,6 @@ def _deg_line(d: np.ndarray) -> str:
     return f"{0.0 if a > 179.95 else a:.1f}° from the x axis"
 
 
-def _sub(label: str) -> str:
-    return label
-
-
 def _wtext(rate: str) -> str:
     """``ω2 = 94.2 rad/s ccw`` -> ``94.2 rad/s`` (answer marks kept)."""
     value = rate.split(" = ", 1)[1] if " = " in rate else rate
@@ -1114,6 +1110,21 @@ def _side_words(side: tuple[Term, ...]) -> str:
 
 def _path_words(line: str) -> str:
     return "the slot" if line.startswith("slots") else "the slide"
+
+
+def helper_steps(src: Any, diagram: str) -> set[int]:
+    """Indices of the steps that only place the images of helper points (left off the page).
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.render.sources import as_source
+    >>> src = as_source(graphkin.examples.coriolis_block().solve())
+    >>> [src.constructions["velocity"][i].label for i in sorted(helper_steps(src, "velocity"))]
+    ['v(X)']
+    """
+    t = _Teller(src, diagram, None)
+    return {s.index for s in t.cx.steps if t.helper(s)}
 
 
 def narrate(src: Any, diagram: str, scale: Scale | None = None) -> list[PageStep]:

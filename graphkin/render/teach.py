@@ -1,16 +1,21 @@
 """The teaching page: one self-contained HTML file that walks through a construction step by step.
 
-For every step the page shows the vector equation it solves with the book's
-✓/? marks over each vector, the one sentence that says what the draftsman
-does, and the drawing up to that step with the new elements in colour.
-Previous/next buttons and the arrow keys move through the steps.  The page
-needs no network: the drawings are inline SVG, the script and style inline.
+The construction's steps are told as the book works its examples
+(:mod:`graphkin.render.narrate`): each step of the page has a title in words,
+the vector equation with the ✓/? marks over each vector (its left side
+included), what is drawn and why, the numbers, the book's section, and the
+drawing up to that step with the step's own elements in colour.
+Previous/next buttons and the arrow keys move through the steps; the
+numbers to be found hide behind a "Show answers" toggle; printing gives every
+step; without JavaScript every step is shown.  The page needs no network: the
+drawings are inline SVG, the script and style inline.
 
 Each frame's SVG ids are prefixed (``f07-step-07-C``) so that the frames can
-live in one document; the frame itself is a ``<section data-step="7">``.
-Opening the page with ``#selftest`` runs a small self-test: it presses
-"next" through every step and the left arrow back, and writes what it saw
-into ``<pre id="selftest-result">`` (used by the tests, in a headless browser).
+live in one document; a page step is a ``<section data-step="k">`` whose
+``data-steps`` lists the construction steps it covers.  ``window.graphkinSteps``
+(``show(k)``, ``count``, ``current()``) lets a browser test drive the page;
+opening it with ``#selftest`` presses "next" through every step and the left
+arrow back, and writes what it saw into ``<pre id="selftest-result">``.
 
 References
 ----------
@@ -24,11 +29,12 @@ import html
 import re
 from collections.abc import Iterator
 from contextlib import contextmanager
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from graphkin.construction import Construction, Step, Term, VectorEquation
-from graphkin.render.narrate import PageStep, answer_html, narrate, vector_html
+from graphkin.render.narrate import PageStep, answer_html, helper_steps, narrate, vector_html
 from graphkin.render.sources import DIAGRAMS, DiagramUnavailable, as_source, optional_modules
 
 __all__ = ["steps_html", "step_frames", "write_frames", "equation_html", "page_frames",
@@ -195,10 +201,18 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
     from graphkin.render.sheet import build_sheet
     from graphkin.render.svg import to_svg
 
+    # the steps of helper points are drawn no more than told: a source without them
+    skip = helper_steps(src, diagram)
+    kept = [s for s in src.constructions[diagram].steps if s.index not in skip]
+    if skip:
+        src = replace(src, constructions={**src.constructions,
+                                          diagram: Construction(kept,
+                                                                src.constructions[diagram].title)})
     out = []
     with _classroom_type():
         for ps in steps:
-            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
+            upto = sum(1 for s in kept if s.index <= ps.main) - 1  # a position among the kept
+            sheet = build_sheet(src, diagram, upto=upto, highlight=set(ps.steps),
                                 table=False, max_inches=max_inches, title="")
             d = render_sheet(sheet)
             assert d.figure is not None

@@ -183,6 +183,10 @@ def test_cli_steps_writes_the_page(tmp_path, gk):
                  "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
     assert "Coriolis component" in text
+    # the helper point X (it only defines the slide) is neither told nor drawn
+    cx = gk.solved("ex4_4_coriolis_block").constructions["acceleration"]
+    (ax,) = [s for s in cx if s.outputs == ("a(X)",)]
+    assert ax.step_id not in text and "x′" not in text
 
 
 def test_posture_steps_are_told_with_the_arcs_lengths(gk):
