@@ -249,7 +249,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
 
     # ---- paint ----------------------------------------------------------
     for d, painter in painters.items():
-        painter.paint(upto if d == diagram else None, highlight if d == diagram else None)
+        own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
+        painter.paint(upto if own else None, highlight if own else None)
     for p in panels:
         if not p.mechanism:
             continue

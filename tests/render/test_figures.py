@@ -95,3 +95,11 @@ def test_image_fills_stay_distinct_in_greyscale():
 
     lum = [grey(h) for h in IMAGE_FILLS[:4]]
     assert min(abs(a - b) for i, a in enumerate(lum) for b in lum[i + 1:]) >= 0.06
+
+
+def test_upto_stops_every_curvature_figure_at_the_same_step(gk):
+    from graphkin.render import draw
+
+    d = draw(gk.solved("ex4_14_inflection_bresse"), "curvature", upto=20)
+    numbers = [int(g.split("step-")[1][:2]) for g in d.groups if "step-" in g]
+    assert numbers and max(numbers) == 20
