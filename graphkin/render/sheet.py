@@ -279,6 +279,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     if table and mech is not None:
         rows = result_rows(src, list(dict.fromkeys(
             "curvature" if d in CURVATURE_PANELS else d for d in diagrams)))
+        if upto is not None:
+            rows = _reached(src, diagram, upto, rows)
     sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
                   (mech.title if mech is not None and mech.title else
                    (next(iter(src.constructions.values())).title if src.constructions
@@ -332,6 +334,35 @@ def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np
                             if _inside(q, rect):
                                 pts.append(q)
     return pts
+
+
+def _reached(src: Source, diagram: str, upto: int, rows: list[Row]) -> list[Row]:
+    """The rows of a started drawing: only the answers its steps ``0..upto`` have reached.
+
+    A construction handed out half done must not print the rest of the answers
+    in its table.
+    """
+    base = "curvature" if diagram in CURVATURE_PANELS else diagram
+    cx = src.constructions.get(base)
+    if cx is None:
+        return rows
+    made = {o for s in cx.steps if s.index <= upto for o in s.outputs}
+    later = {o for s in cx.steps if s.index > upto for o in s.outputs}
+
+    def label_of(key: str) -> str:
+        for prefix, fmt in (("theta", "θ{}"), ("omega", "ω{}"), ("alpha", "α{}")):
+            if key.startswith(prefix):
+                return fmt.format(key[len(prefix):])
+        if key.startswith(("V_", "A_")):
+            return f"{'v' if key[0] == 'V' else 'a'}({key[2:]})"
+        if key.startswith("R_"):
+            return key[2:]
+        if key.startswith("center-"):
+            return key[len("center-"):]
+        return key
+
+    # a row of this diagram is kept once its value is made; rows of other diagrams stay
+    return [r for r in rows if label_of(r.key) in made or label_of(r.key) not in later]
 
 
 def _curvature_extras(src: Source, p: Panel, d: str) -> None:

@@ -103,3 +103,15 @@ def test_upto_stops_every_curvature_figure_at_the_same_step(gk):
     d = draw(gk.solved("ex4_14_inflection_bresse"), "curvature", upto=20)
     numbers = [int(g.split("step-")[1][:2]) for g in d.groups if "step-" in g]
     assert numbers and max(numbers) == 20
+
+
+def test_a_started_drawing_does_not_print_the_answers_it_has_not_reached(gk):
+    from graphkin.render import draw
+
+    sol = gk.solved("ex3_1_fourbar")
+    cx = sol.constructions["velocity"]
+    first = next(s.index for s in cx.steps if "v(B)" in s.outputs)
+    keys = {r.key for r in draw(sol, "velocity", upto=first).sheet.rows}
+    assert "V_B" in keys and "V_C" not in keys and "omega3" not in keys
+    full = {r.key for r in draw(sol, "velocity").sheet.rows}
+    assert {"V_C", "omega3"} <= full
