@@ -33,6 +33,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="draw the construction only up to step K (0-based)")
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
+    p.add_argument("--sheet", choices=("a4", "letter"), default=None,
+                   help="a handout page of that paper (portrait or landscape) at round scales, "
+                        "with a title block and a compact results table")
     p.add_argument("--no-table", action="store_true", help="leave out the results table")
     p.add_argument("--dpi", type=bounded_float(*DPI_RANGE), default=150.0,
                    help="resolution of a PNG, 10 to 1200 (default 150)")
@@ -70,7 +73,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"wrote {out}", file=sys.stderr)
         return 0
     try:
-        d = draw(sol, args.diagram, upto=args.upto, table=not args.no_table, link=args.link)
+        d = draw(sol, args.diagram, upto=args.upto, table=not args.no_table, link=args.link,
+                 sheet=args.sheet)
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
     assert d.figure is not None

@@ -132,6 +132,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                        axis=0)
 
     # ---- moving links ------------------------------------------------
+    rods: set[str] = set()
     for lid in mech.moving:
         link = mech.links[lid]
         if not all(is_known(n) for n in link.points):
@@ -144,6 +145,18 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         g = panel.group(f"{pre}link-{lid}", 1.0 + 0.01 * mech.moving.index(lid), key=f"link {lid}")
         distinct = MultiPoint([tuple(p) for p in arr]).convex_hull
         if distinct.geom_type == "Point":
+            rod = [sl for sl in mech.sliders if sl.link == lid and sl.on == FRAME]
+            lw = _line_world(src, rod[0]) if rod else None
+            pinned = any(len(mech.point_links[n]) > 1 for n in pts)
+            if lw is not None and pinned:
+                # a rod sliding in frame guides, carrying a pin (Rapson's slide, Fig. 4.23)
+                u = lw[1]
+                bar = LineString([tuple(arr[0] - 1.3 * k * u), tuple(arr[0] + 1.3 * k * u)])
+                g.items.append(Item("polygon", _ring(bar.buffer(BAR_HALF * k, quad_segs=6)),
+                                    "link", key=f"link {lid}"))
+                _number(panel, g, lid, arr[0] + 0.9 * k * u, pre, gap=BAR_HALF + 0.03)
+                rods.add(lid)
+                continue
             if not any(s.link == lid for s in mech.sliders):
                 g.items.append(Item("circle", arr[:1], "link", radius=2.2 * BAR_HALF * k,
                                     key=f"link {lid}"))
@@ -251,8 +264,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                 numbered_frame = True
         g = panel.group(f"{pre}slider-{sl.link}", 2.5, key=f"link {sl.link}")
         g.items.append(Item("polygon", _rect(p, u, hl, hh), "block", key=f"link {sl.link}"))
-        if len(mech.links[sl.link].points) <= 1 or sl.link not in [x for x in mech.moving
-                                                                    if _has_outline(src, x)]:
+        if sl.link not in rods and (len(mech.links[sl.link].points) <= 1 or sl.link not in [
+                x for x in mech.moving if _has_outline(src, x)]):
             _number(panel, g, sl.link, p, pre, gap=BLOCK[1] + 0.05)
 
     # ---- frame bearings at fixed pivots ------------------------------

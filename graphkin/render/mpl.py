@@ -285,8 +285,12 @@ def render_sheet(sheet: Sheet) -> Drawing:
         drawing.figure = fig
         drawing.own_figure = True
         drawing.sheet = sheet
+        if sheet.paper:
+            _title_block(fig, sheet)
         if sheet.title:
-            t = fig.text(0.12 / sheet.size[0], 1 - 0.22 / sheet.size[1], plain(sheet.title),
+            left, top = sheet.title_offset or (0.0, sheet.size[1])
+            t = fig.text((left + 0.12) / sheet.size[0], (top - 0.22) / sheet.size[1],
+                         plain(sheet.title),
                          ha="left", va="center", fontsize=STYLES["title"]["size"] + 1,
                          fontweight="bold")
             t.set_gid("sheet-title")
@@ -297,6 +301,32 @@ def render_sheet(sheet: Sheet) -> Drawing:
         if sheet.rows:
             _table(fig, sheet)
     return drawing
+
+
+def _title_block(fig: Figure, sheet: Sheet) -> None:
+    """A handout's title block, bottom right: the mechanism, the diagram and the scales."""
+    from graphkin.render.sheet import PAGE_MARGIN, TITLE_BLOCK
+
+    W, H = sheet.size
+    bw, bh = TITLE_BLOCK
+    x0, y0 = sheet.block_origin or (W - PAGE_MARGIN - bw, PAGE_MARGIN)
+    ax = fig.add_axes((x0 / W, y0 / H, bw / W, bh / H))
+    ax.set_axis_off()
+    ax.set_xlim(0, bw)
+    ax.set_ylim(0, bh)
+    ax.set_gid("title-block")
+    frame = patches.Rectangle((0.01, 0.01), bw - 0.02, bh - 0.02, fill=False, lw=0.8, ec="k")
+    ax.add_patch(frame)
+    scales = "; ".join(dict.fromkeys(p.scale.text for p in sheet.panels if p.scale is not None))
+    title = sheet.title if len(sheet.title) <= 70 else sheet.title[:67] + "..."
+    import textwrap
+
+    lines = [(plain(title), "bold"), (f"Diagram: {sheet.diagram}", "normal")]
+    lines += [(plain(t), "normal") for t in textwrap.wrap(f"Scales: {scales}", 80)[:2]]
+    for i, (text, weight) in enumerate(lines):
+        t = ax.text(0.08, bh - 0.13 - 0.155 * i, text, fontsize=6.5, fontweight=weight,
+                    ha="left", va="center")
+        t.set_gid(f"title-block-{i}")
 
 
 def sheet_figure(obj: Any, diagram: str = "all", **kw: Any) -> Figure:
@@ -332,28 +362,43 @@ def _table(fig: Figure, sheet: Sheet) -> None:
 
     top = h - 0.15
     widths = _column_widths(sheet)
-    texts.append(text(0.08, top, "Results: read off the construction, and the analytic "
-                      "solution", "table-head", "results-title"))
+    texts.append(text(0.08, top, "Results read off the construction" if sheet.paper else
+                      "Results: read off the construction, and the analytic solution",
+                      "table-head", "results-title"))
     yy = top - TABLE_ROW * 1.2
-    texts.append(text(0.08, yy, _row(("quantity", "drawn", "analytic", "rel. diff.", "unit"),
-                                     widths), "table-head", "results-head"))
+    compact = sheet.paper is not None  # a handout: the drawn values, no comparison
+    head = ("quantity", "drawn", "unit") if compact else ("quantity", "drawn", "analytic",
+                                                          "rel. diff.", "unit")
+    if compact:
+        widths = (widths[0], widths[1], widths[4])
+    ncol = max(sheet.table_columns, 1)
+    per = -(-len(sheet.rows) // ncol)
+    colw = (w - 0.08) / ncol
+    y_head = yy
+    for c in range(ncol):
+        texts.append(text(0.08 + c * colw, y_head, _row(head, widths), "table-head",
+                          "results-head" if c == 0 else f"results-head-{c}"))
     rule = Line2D([0.08, w - 0.08], [yy - TABLE_ROW / 2] * 2, color="k", lw=0.5)
     rule.set_transform(ax.transData)
     rule.set_figure(fig)
     texts.append(rule)
     worst = 0.0
     missing = False
-    for r in sheet.rows:
+    for k, r in enumerate(sheet.rows):
+        xx = 0.08 + (k // per) * colw
+        if k % per == 0:
+            yy = y_head
         yy -= TABLE_ROW
-        cells = (r.quantity, r.drawn, r.exact, diff_text(r.diff), r.unit)
-        row = text(0.08, yy, plain(_row(cells, widths)), "table", f"row-{r.key}")
+        cells = (r.quantity, r.drawn, r.unit) if compact else (
+            r.quantity, r.drawn, r.exact, diff_text(r.diff), r.unit)
+        row = text(xx, yy, plain(_row(cells, widths)), "table", f"row-{r.key}")
         if r.diff is None:
             missing = True
         else:
             worst = max(worst, r.diff)
         row.axes = ax
         texts.append(row)
-    yy -= TABLE_ROW * 1.3
+    yy = y_head - TABLE_ROW * per - TABLE_ROW * 1.3
     if missing and all(not r.exact.strip("—") for r in sheet.rows):
         foot = "The analytic solver gave no answer here."
     else:
@@ -362,7 +407,8 @@ def _table(fig: Figure, sheet: Sheet) -> None:
                 f"Largest relative difference {worst:.1e}: the drawing agrees with the "
                 "analytic solution." if worst < AGREE else
                 f"Largest relative difference {worst:.1e}.")
-    texts.append(text(0.08, yy, foot, "table", "results-agreement"))
+    if not compact:
+        texts.append(text(0.08, yy, foot, "table", "results-agreement"))
     sg = StepGroup("results-table", texts, 3.0)
     for a in texts:
         a.axes = ax
@@ -389,7 +435,7 @@ def _row(cells: tuple[str, ...], widths: tuple[int, ...]) -> str:
 def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int | None = None,
          *, highlight: int | None = None, table: bool | None = None,
          values: dict[str, Any] | None = None, max_inches: float | None = None,
-         link: str | None = None) -> Drawing:
+         link: str | None = None, sheet: str | None = None) -> Drawing:
     """Draw a diagram of a mechanism, a solution or a construction.
 
     Parameters
@@ -419,6 +465,9 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     link : str, optional
         The link whose curvature construction is drawn (default: the first
         coupler that turns).
+    sheet : str, optional
+        ``a4`` or ``letter``: a handout page of that paper at round scales,
+        with a title block and a compact results table.
 
     Returns
     -------
@@ -457,10 +506,16 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
         for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
         if d in optional_modules or d in CURVATURE_PANELS))
     src = as_source(obj, values=values, diagrams=wanted, link=link)
+    if ax is None and sheet is not None:
+        from graphkin.render.sheet import build_paper_sheet
+
+        return render_sheet(build_paper_sheet(src, diagram, sheet, upto=upto,
+                                              highlight=highlight,
+                                              table=True if table is None else table))
     if ax is None:
-        sheet = build_sheet(src, diagram, upto=upto, highlight=highlight,
-                            table=True if table is None else table, max_inches=max_inches)
-        return render_sheet(sheet)
+        laid = build_sheet(src, diagram, upto=upto, highlight=highlight,
+                           table=True if table is None else table, max_inches=max_inches)
+        return render_sheet(laid)
     fig = ax.figure
     bb = ax.get_position()  # relative to the (sub)figure that holds the axes
     if isinstance(fig, Figure):
@@ -468,15 +523,15 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     else:  # a subfigure
         fw, fh = fig.bbox.width / fig.dpi, fig.bbox.height / fig.dpi
     room = max(min(bb.width * fw, bb.height * fh) - 1.0, 0.8)
-    sheet = build_sheet(src, diagram, upto=upto, highlight=highlight, table=False,
-                        max_inches=max_inches or room, title="")
-    name = diagram if diagram in [p.name for p in sheet.panels] else sheet.panels[0].name
+    into = build_sheet(src, diagram, upto=upto, highlight=highlight, table=False,
+                       max_inches=max_inches or room, title="")
+    name = diagram if diagram in [p.name for p in into.panels] else into.panels[0].name
     if diagram == "all":
-        name = sheet.panels[0].name
-    panel = sheet.panel(name)
+        name = into.panels[0].name
+    panel = into.panel(name)
     drawing = Drawing()
     drawing.figure = fig if isinstance(fig, Figure) else fig.figure
-    drawing.sheet = sheet
+    drawing.sheet = into
     with rc_context():
         _setup_axes(ax, panel)
         ax.set_aspect("equal", adjustable="datalim")

@@ -234,8 +234,9 @@ class StepPainter:
         lit = set() if highlight is None else (
             {highlight} if isinstance(highlight, int) else set(highlight))
         groups = []
-        last = len(self.cx.steps) - 1 if upto is None else min(upto, len(self.cx.steps) - 1)
-        for step in self.cx.steps[: last + 1]:
+        for step in self.cx.steps:
+            if upto is not None and step.index > upto:  # (a panel's steps keep their numbers)
+                break
             panel = self.panel_for(step)
             if panel is None:
                 continue

@@ -90,6 +90,18 @@ class Sheet:
     painters: dict[str, StepPainter] = field(default_factory=dict)
     table_origin: tuple[float, float] = (0.0, 0.0)
     table_size: tuple[float, float] = (0.0, 0.0)
+    paper: str | None = None
+    """``a4`` or ``letter`` for a handout page (``--sheet``), else None."""
+    last_row: tuple[float, float] = (0.0, 0.0)
+    """Width used by the last row of panels and its height, in inches."""
+    table_columns: int = 1
+    """Columns of the results table (a handout page folds a long table in two)."""
+    title_offset: tuple[float, float] | None = None
+    block_origin: tuple[float, float] | None = None
+    """Lower-left corner of a handout's title block (None: the page's bottom right)."""
+    """Where a handout page's content starts (left, top), in inches."""
+    width_cap: float = 11.5
+    """The widest a row of panels may be, in inches."""
 
     def panel(self, name: str) -> Panel:
         """The panel called ``name``."""
@@ -119,7 +131,8 @@ def sheet_diagrams(src: Source, diagram: str) -> list[str]:
 
 def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                 highlight: int | Collection[int] | None = None, table: bool = True,
-                max_inches: float | None = None, title: str | None = None) -> Sheet:
+                max_inches: float | None = None, title: str | None = None,
+                paper: str | None = None, width_cap: float = 11.5) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
     Parameters
@@ -161,7 +174,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     many = len(diagrams) > 1
     mech = src.mechanism
     unit = src.length_unit
-    paper = paper_unit(unit)
+    paper_u = paper_unit(unit)
     panels: list[Panel] = []
     length_of: dict[str, Panel | None] = {}
     polygon_of: dict[str, Panel | None] = {}
@@ -229,13 +242,15 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         if not many and p.name in ("centers", "curvature") and max_inches is None:
             room = 6.5
         extent = max(float(ex), float(ey), 1e-12)
-        p.scale = choose_scale(extent, room, paper, p.unit)
+        p.scale = choose_scale(extent, room, paper_u, p.unit)
         k = p.k
-        minw, minh = 1.6 * k, 0.9 * k
+        # a handout page packs its panels closer (smaller clearances, no minimum width)
+        margin = 0.25 if paper else MARGIN
+        minw, minh = (1.0 * k, 0.6 * k) if paper else (1.6 * k, 0.9 * k)
         cx_, cy_ = (lo + hi) / 2
         w, h = max(float(ex), minw), max(float(ey), minh)
-        p.view = (cx_ - w / 2 - MARGIN * k, cy_ - h / 2 - MARGIN * k - FOOT_H * k,
-                  cx_ + w / 2 + MARGIN * k, cy_ + h / 2 + MARGIN * k + TITLE_H * k)
+        p.view = (cx_ - w / 2 - margin * k, cy_ - h / 2 - margin * k - FOOT_H * k,
+                  cx_ + w / 2 + margin * k, cy_ + h / 2 + margin * k + TITLE_H * k)
         p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
 
     # ---- the Kennedy circle beside the instant centers (Fig. 3.22b) ------
@@ -249,7 +264,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
 
     # ---- paint ----------------------------------------------------------
     for d, painter in painters.items():
-        painter.paint(upto if d == diagram else None, highlight if d == diagram else None)
+        own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
+        painter.paint(upto if own else None, highlight if own else None)
     for p in panels:
         if not p.mechanism:
             continue
@@ -278,11 +294,14 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     if table and mech is not None:
         rows = result_rows(src, list(dict.fromkeys(
             "curvature" if d in CURVATURE_PANELS else d for d in diagrams)))
+        if upto is not None:
+            rows = _reached(src, diagram, upto, rows)
     sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
                   (mech.title if mech is not None and mech.title else
                    (next(iter(src.constructions.values())).title if src.constructions
                     else "")),
                   diagram, rows, {d: pp.prefix for d, pp in painters.items()}, painters)
+    sheet.paper, sheet.width_cap = paper, width_cap
     _layout(sheet)
     return sheet
 
@@ -331,6 +350,35 @@ def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np
                             if _inside(q, rect):
                                 pts.append(q)
     return pts
+
+
+def _reached(src: Source, diagram: str, upto: int, rows: list[Row]) -> list[Row]:
+    """The rows of a started drawing: only the answers its steps ``0..upto`` have reached.
+
+    A construction handed out half done must not print the rest of the answers
+    in its table.
+    """
+    base = "curvature" if diagram in CURVATURE_PANELS else diagram
+    cx = src.constructions.get(base)
+    if cx is None:
+        return rows
+    made = {o for s in cx.steps if s.index <= upto for o in s.outputs}
+    later = {o for s in cx.steps if s.index > upto for o in s.outputs}
+
+    def label_of(key: str) -> str:
+        for prefix, fmt in (("theta", "θ{}"), ("omega", "ω{}"), ("alpha", "α{}")):
+            if key.startswith(prefix):
+                return fmt.format(key[len(prefix):])
+        if key.startswith(("V_", "A_")):
+            return f"{'v' if key[0] == 'V' else 'a'}({key[2:]})"
+        if key.startswith("R_"):
+            return key[2:]
+        if key.startswith("center-"):
+            return key[len("center-"):]
+        return key
+
+    # a row of this diagram is kept once its value is made; rows of other diagrams stay
+    return [r for r in rows if label_of(r.key) in made or label_of(r.key) not in later]
 
 
 def _curvature_extras(src: Source, p: Panel, d: str) -> None:
@@ -459,7 +507,9 @@ def _frame(p: Panel) -> None:
         h = t if f != 0.5 else t * 0.6
         g.items.append(Item("path", np.array([[bx + f * length, by - h],
                                               [bx + f * length, by + h]]), "scale-bar"))
-    g.items.append(Item("text", np.array([[bx + length + 0.08 * k, by]]), "caption",
+    beside = p.size[0] >= 0.15 + s.paper_inches + 0.1 + text_size(s.text, 7.5, "caption")[0]
+    at = [bx + length + 0.08 * k, by] if beside else [bx, by - 0.1 * k]  # under a narrow bar
+    g.items.append(Item("text", np.array([at]), "caption",
                         gid=f"{p.prefix}scale-text-{p.name}", text=s.text, ha="left"))
 
 
@@ -478,9 +528,14 @@ def _layout(sheet: Sheet) -> None:
         for row in sheet.rows:
             chars = [max(a, b) for a, b in zip(chars, (len(row.quantity), len(row.drawn),
                                                        len(row.exact), 10, len(row.unit)))]
-        width = max((sum(chars) + 8) * TABLE_CHAR, 86 * TABLE_CHAR) + 0.2
-        boxes.append((width, TABLE_ROW * (len(sheet.rows) + 3) + 0.25))
-    width_cap = max(11.5, max(w for w, _ in boxes))
+        if sheet.paper:  # a handout's table: quantity, drawn value, unit
+            chars = [chars[0], chars[1], 0, 0, chars[4]]
+        width = max((sum(chars) + 8) * TABLE_CHAR, (40 if sheet.paper else 86) * TABLE_CHAR) \
+            + 0.2
+        sheet.table_columns = 2 if sheet.paper and len(sheet.rows) > 16 else 1
+        per = -(-len(sheet.rows) // sheet.table_columns)
+        boxes.append((width * sheet.table_columns, TABLE_ROW * (per + 3) + 0.25))
+    width_cap = max(sheet.width_cap, max(w for w, _ in boxes))
     rows: list[list[int]] = [[]]
     used = 0.0
     for i, (w, _) in enumerate(boxes):
@@ -491,7 +546,7 @@ def _layout(sheet: Sheet) -> None:
         rows[-1].append(i)
     heights = [max(boxes[i][1] for i in r) for r in rows]
     W = max(sum(boxes[i][0] for i in r) + GAP * (len(r) - 1) for r in rows) + 2 * GAP
-    if sheet.title:
+    if sheet.title and not sheet.paper:  # (a handout's title block repeats a long title)
         W = max(W, text_size(sheet.title, STYLES["title"]["size"] + 1)[0] * 1.1 + 2 * GAP)
     H = sum(heights) + GAP * (len(rows) + 1) + (SHEET_TITLE_H if sheet.title else 0.0)
     y = H - (SHEET_TITLE_H if sheet.title else 0.0) - GAP
@@ -502,9 +557,61 @@ def _layout(sheet: Sheet) -> None:
             positions[i] = (x, y - boxes[i][1])
             x += boxes[i][0] + GAP
         y -= h + GAP
+        sheet.last_row = (x, h + GAP)
     for p, pos in zip(sheet.panels, positions):
         p.origin = pos
     if sheet.rows:
         sheet.table_origin = positions[-1]
         sheet.table_size = boxes[-1]
     sheet.size = (float(W), float(H))
+
+
+PAPERS = {"a4": (8.27, 11.69), "letter": (8.5, 11.0)}
+"""Paper sizes in inches (portrait)."""
+PAGE_MARGIN = 0.4
+"""Clearance around a handout page's content, in inches."""
+TITLE_BLOCK = (3.4, 0.75)
+"""Width and height of a handout's title block, in inches."""
+
+
+def build_paper_sheet(src: Source, diagram: str, paper: str, **kw: object) -> Sheet:
+    """A sheet on one page of ``paper`` (``a4`` or ``letter``) at round scales.
+
+    The panels are laid out at the largest round scales that let the whole
+    sheet, its results table and a title block fit the page, portrait or
+    landscape, whichever allows the larger drawing.
+
+    Raises
+    ------
+    DiagramUnavailable
+        The diagram cannot be drawn; or ``paper`` is not a known size.
+    """
+    if paper not in PAPERS:
+        raise DiagramUnavailable(f"unknown paper {paper!r}; valid: {', '.join(PAPERS)}",
+                                 diagram=diagram)
+    pw, ph = PAPERS[paper]
+    last: Sheet | None = None
+    for big in (5.0, 4.2, 3.5, 2.9, 2.4, 2.0, 1.7, 1.4, 1.2, 1.0):
+        for w, h in ((pw, ph), (ph, pw)):
+            sheet = build_sheet(src, diagram, max_inches=big, paper=paper,
+                                width_cap=w - 2 * PAGE_MARGIN, **kw)  # type: ignore[arg-type]
+            last = sheet
+            sw, sh = sheet.size
+            # the title block goes under the sheet, or beside its last row when there is room
+            beside = sheet.last_row[0] + TITLE_BLOCK[0] <= w - 2 * PAGE_MARGIN \
+                and sheet.last_row[1] >= TITLE_BLOCK[1]
+            if sw <= w - 2 * PAGE_MARGIN and sh + (0.0 if beside else TITLE_BLOCK[1]) \
+                    <= h - 2 * PAGE_MARGIN:
+                dx = (w - sw) / 2
+                dy = h - PAGE_MARGIN - sh
+                for p in sheet.panels:
+                    p.origin = (p.origin[0] + dx, p.origin[1] + dy)
+                if sheet.rows:
+                    sheet.table_origin = (sheet.table_origin[0] + dx, sheet.table_origin[1] + dy)
+                sheet.title_offset = (dx, h - PAGE_MARGIN)
+                if beside:  # the block's corner: bottom right of the content
+                    sheet.block_origin = (dx + sw - TITLE_BLOCK[0] - GAP, dy + GAP)
+                sheet.size = (w, h)
+                return sheet
+    assert last is not None
+    return last
