@@ -144,7 +144,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         arr = np.array(list(pts.values()))
         g = panel.group(f"{pre}link-{lid}", 1.0 + 0.01 * mech.moving.index(lid), key=f"link {lid}")
         distinct = MultiPoint([tuple(p) for p in arr]).convex_hull
-        if distinct.geom_type == "Point":
+        bars = slide_bars(src, lid, k)
+        if distinct.geom_type == "Point" and not bars:
             rod = [sl for sl in mech.sliders if sl.link == lid and sl.on == FRAME]
             lw = _line_world(src, rod[0]) if rod else None
             pinned = any(len(mech.point_links[n]) > 1 for n in pts)
@@ -162,8 +163,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                                     key=f"link {lid}"))
                 _number(panel, g, lid, arr[0], pre)
             continue
-        bars = slide_bars(src, lid, k)
-        # a slide the body does not reach is joined to it by a bar (a follower's face)
+        # a slide the body does not reach (a follower's face; a rod whose only other
+        # point defines its slide, Example 4.4) is joined to it by a bar (a follower's face)
         joins = [LineString(shapely.ops.nearest_points(distinct, b)) for b in bars
                  if distinct.distance(b) > 2 * BAR_HALF * k]
         shape = shapely.union_all([distinct.buffer(BAR_HALF * k, quad_segs=6),
@@ -182,7 +183,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             panel.labels.append(LabelRequest(lid, anchor, "number", f"{pre}number-{lid}", g,
                                              key=f"link {lid}", gap=0.0, center=True))
         else:
-            line = LineString([tuple(p) for p in arr]).convex_hull
+            line = (LineString([tuple(p) for p in arr]).convex_hull if len(arr) > 1
+                    else shapely.union_all([distinct, *bars]).convex_hull)
             c = np.asarray(line.centroid.coords[0])
             _number(panel, g, lid, c, pre, gap=BAR_HALF + 0.03)
 

@@ -173,8 +173,9 @@ def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None)
                 rows.append(Row(f"{'omega' if d == 'velocity' else 'alpha'}{lid}",
                                 sym + sub_digits("x" + lid)[1:], qunit, _rate(w, tiny),
                                 "—" if e is None else _rate(e, tiny),
-                                None if e is None else _rel(np.float64(w), np.float64(e),
-                                                            tiny * 1e6),
+                                # both print as 0: any difference is round-off, shown as 0
+                                None if e is None else 0.0 if max(abs(w), abs(e)) <= tiny
+                                else _rel(np.float64(w), np.float64(e), tiny * 1e6),
                                 (w,), () if e is None else (e,)))
             o = finite_xy(vals[pole]) if pole in vals else None
             sizes = [float(np.hypot(*(finite_xy(vals[f"{img}({n})"]) - o))) for n in names

@@ -198,3 +198,21 @@ def test_library_uses_no_pyplot_and_graphkin_does_not_import_matplotlib(gk):
         "assert 'matplotlib.pyplot' not in sys.modules\n"
     )
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_a_rod_whose_other_point_only_defines_its_slide_is_drawn_along_the_slide(gk):
+    # Example 4.4: rod 2 turns about O2 and carries the slide of block 3 (A at 500 mm along
+    # it); its only other point, X, defines the slide and is no body corner.  The rod must
+    # still be drawn, from its pivot out past the block: its outline reaches at least |O2A|
+    from matplotlib.patches import Polygon as MplPolygon
+
+    sol = gk.solved("ex4_4_coriolis_block")
+    d = draw(sol, "posture", table=False)
+    rod = d.groups["link-2"]
+    polys = [a for a in rod.get_children() if isinstance(a, MplPolygon)]
+    assert polys, "rod 2 is drawn as a body"
+    xy = np.vstack([p.get_xy() for p in polys])
+    o2 = np.asarray(sol.position("O2"), dtype=float)
+    a = np.asarray(sol.position("A", "3"), dtype=float)
+    reach = np.max(np.hypot(*(xy - o2).T))
+    assert reach >= 0.95 * float(np.hypot(*(a - o2)))
