@@ -42,6 +42,7 @@ def run(args: argparse.Namespace) -> int:
 
     import graphkin
     from graphkin.errors import InputError
+    from graphkin.progress import bar
     from graphkin.render.animate import animate_html
 
     if args.count < 2 or args.count > 20000:
@@ -51,33 +52,39 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("nothing to write: give -o OUT.html, --frames DIR and/or --gif FILE",
                          key="--output")
     mech = graphkin.load(args.file)
-    if args.output is not None:
-        text = animate_html(mech, count=args.count, start=args.start, stop=args.stop,
-                            centers=args.centers, inflection=args.inflection)
-        out = Path(args.output)
-        try:
-            out.write_text(text, encoding="utf-8")
-        except OSError as exc:
-            raise InputError(f"cannot write {out}: {exc.strerror or exc}",
-                             key="--output") from None
-        print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
-    if args.frames is not None or args.gif is not None:
-        from graphkin.render.cycle_frames import write_cycle_frames, write_cycle_gif
+    # one step per thing written (the page, the frames, the GIF); drawn on a terminal only
+    jobs = sum(x is not None for x in (args.output, args.frames, args.gif))
+    with bar("animate", total=jobs, unit="file") as progress:
+        if args.output is not None:
+            text = animate_html(mech, count=args.count, start=args.start, stop=args.stop,
+                                centers=args.centers, inflection=args.inflection)
+            out = Path(args.output)
+            try:
+                out.write_text(text, encoding="utf-8")
+            except OSError as exc:
+                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
+                                 key="--output") from None
+            print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
+            progress.update(1)
+        if args.frames is not None or args.gif is not None:
+            from graphkin.render.cycle_frames import write_cycle_frames, write_cycle_gif
 
-        if args.frames is not None:
-            try:
-                paths = write_cycle_frames(mech, args.frames, count=args.count,
-                                           start=args.start, stop=args.stop)
-            except OSError as exc:
-                raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
-                                 key="--frames") from None
-            print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
-        if args.gif is not None:
-            try:
-                write_cycle_gif(mech, args.gif, count=args.count, start=args.start,
-                                stop=args.stop)
-            except OSError as exc:
-                raise InputError(f"cannot write {args.gif}: {exc.strerror or exc}",
-                                 key="--gif") from None
-            print(f"wrote {args.gif}", file=sys.stderr)
+            if args.frames is not None:
+                try:
+                    paths = write_cycle_frames(mech, args.frames, count=args.count,
+                                               start=args.start, stop=args.stop)
+                except OSError as exc:
+                    raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
+                                     key="--frames") from None
+                print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
+                progress.update(1)
+            if args.gif is not None:
+                try:
+                    write_cycle_gif(mech, args.gif, count=args.count, start=args.start,
+                                    stop=args.stop)
+                except OSError as exc:
+                    raise InputError(f"cannot write {args.gif}: {exc.strerror or exc}",
+                                     key="--gif") from None
+                print(f"wrote {args.gif}", file=sys.stderr)
+                progress.update(1)
     return 0
