@@ -145,16 +145,34 @@ def sense(w: float) -> str:
     return "ccw" if w > 0 else ("cw" if w < 0 else "")
 
 
-def polar(v: Any, unit: str) -> str:
-    """A vector as the book writes it: magnitude, unit and direction, ``27.8 ft/s ∠165.30°``.
+def clean(x: float, tiny: float = 0.0) -> float:
+    """``x``, or 0 when it is round-off: no larger than ``tiny`` (and never ``-0``).
+
+    Reports print what the arithmetic left of a zero (``1.77e-10 mm/s²`` for a
+    slider that does not accelerate) as 0, so that they say what is meant and
+    are the same on every machine.
 
     Examples
     --------
-    >>> polar([0.0, -2.0], "in/s"), polar([0.0, 0.0], "in/s")
-    ('2 in/s ∠-90.00°', '0 in/s')
+    >>> clean(1.8e-10, 1e-6), clean(-0.0), clean(2.5, 1e-6)
+    (0.0, 0.0, 2.5)
+    """
+    x = float(x)
+    return 0.0 if abs(x) <= tiny else x
+
+
+def polar(v: Any, unit: str, tiny: float = 0.0) -> str:
+    """A vector as the book writes it: magnitude, unit and direction, ``27.8 ft/s ∠165.30°``.
+
+    A magnitude no larger than ``tiny`` (round-off) is printed as 0.
+
+    Examples
+    --------
+    >>> polar([0.0, -2.0], "in/s"), polar([0.0, 0.0], "in/s"), polar([1e-10, 0], "in/s", 1e-6)
+    ('2 in/s ∠-90.00°', '0 in/s', '0 in/s')
     """
     mag = float(np.hypot(float(v[0]), float(v[1])))
-    if mag == 0:
+    if mag <= tiny:
         return f"0 {unit}"
     return f"{g6(mag)} {unit} ∠{wrap_degrees(math.atan2(float(v[1]), float(v[0]))):.2f}°"
 

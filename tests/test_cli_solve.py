@@ -47,3 +47,13 @@ def test_steps_list_every_construction_with_marked_equations(capsys):
     # the velocity image of C: a case-3 meet with two unknown magnitudes
     (vc,) = [s for s in cons["velocity"] if s["label"] == "v(C)"]
     assert vc["op"] == "meet" and vc["equation"]["text"].count("?") == 2
+
+
+def test_text_report_prints_round_off_as_zero(capsys):
+    # Example 3.2 is driven by its slider C at a constant speed (the file gives
+    # acceleration = 0), so A_C = 0 exactly; the construction leaves ~1e-10 mm/s² of
+    # round-off, which must print as 0 (and so the same on every machine)
+    assert main(["solve", str(EXAMPLES / "ex3_2_slider_driven.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "A_C = 0 mm/s²" in out
+    assert "e-1" not in out  # no 1e-10-sized leftovers anywhere in the report

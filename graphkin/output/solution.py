@@ -17,7 +17,7 @@ from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME
 from graphkin.output.sections import SECTIONS
 from graphkin.output.units import OutputUnits
-from graphkin.text import g6, polar, sense, wrap_degrees
+from graphkin.text import clean, g6, polar, sense, wrap_degrees
 
 __all__ = ["solution_to_dict", "text_report", "finite"]
 
@@ -124,28 +124,44 @@ def text_report(sol: Solution, units: OutputUnits | None = None) -> str:
     for n in sol.notes:
         lines.append(f"  note: {n}")
     lines.append("")
+    # what is left of a zero is round-off: below 1e-9 of the largest value of its kind
+    # (1e-12 of the mechanism's size for positions) it prints as 0 on every machine
+    moving = [st for lid, st in sol.links.items() if lid != FRAME]
+    names = mech.point_names
+
+    def _floor(values: list[float]) -> float:
+        return 1e-9 * max([0.0, *(abs(v) for v in values if math.isfinite(v))])
+
+    tw = _floor([float(st.omega) for st in moving if st.omega is not None])
+    ta = _floor([float(st.alpha) for st in moving if st.alpha is not None])
+    tv = (_floor([float(np.hypot(*sol.velocity(n))) for n in names]) * ou.k_velocity
+          if sol.has_rates else 0.0)
+    tacc = (_floor([float(np.hypot(*sol.acceleration(n))) for n in names]) * ou.k_acceleration
+            if sol.has_accelerations else 0.0)
+    tl = 1e-12 * mech.scale * ou.k_length
     lines.append("Links")
     for lid, st in sol.links.items():
         if lid == FRAME:
             continue
-        row = f"  θ{lid} = {wrap_degrees(float(st.angle)):.4f}°"
+        row = f"  θ{lid} = {clean(round(wrap_degrees(float(st.angle)), 4)):.4f}°"
         if st.omega is not None:
-            w = float(st.omega)
+            w = clean(float(st.omega), tw)
             row += f"   ω{lid} = {g6(abs(w) * ou.k_omega)} {ou.text('omega')} {sense(w)}".rstrip()
         if st.alpha is not None:
-            a = float(st.alpha)
+            a = clean(float(st.alpha), ta)
             row += f"   α{lid} = {g6(abs(a) * ou.k_alpha)} {ou.text('alpha')} {sense(a)}".rstrip()
         lines.append(row)
     lines.append("")
     lines.append("Points")
-    for name in mech.point_names:
+    for name in names:
         x, y = sol.position(name) * ou.k_length
-        row = f"  R_{name} = ({g6(x)}, {g6(y)}) {u}"
+        row = f"  R_{name} = ({g6(clean(x, tl))}, {g6(clean(y, tl))}) {u}"
         if sol.has_rates:
-            row += f"   V_{name} = {polar(sol.velocity(name) * ou.k_velocity, ou.text('velocity'))}"
+            v = sol.velocity(name) * ou.k_velocity
+            row += f"   V_{name} = {polar(v, ou.text('velocity'), tv)}"
         if sol.has_accelerations:
-            row += (f"   A_{name} = "
-                    f"{polar(sol.acceleration(name) * ou.k_acceleration, ou.text('acceleration'))}")
+            acc = sol.acceleration(name) * ou.k_acceleration
+            row += f"   A_{name} = {polar(acc, ou.text('acceleration'), tacc)}"
         lines.append(row)
     for s in SECTIONS:
         text = s.text(sol, ou)
