@@ -103,3 +103,24 @@ def test_sweep_units_row_and_conversion(capsys):
                 assert float(g) == pytest.approx(float(w) / 12, rel=1e-12, abs=1e-12)
             else:
                 assert g == w
+
+
+def test_sweep_torque_follows_the_length_unit(tmp_path):
+    # Example 11.1: T12 = 184.98 lbf*in cw at the file's posture (forces.md's example); a
+    # torque is force x length, so in a foot report it is the same number / 12 in lbf*ft
+    from pathlib import Path
+
+    data = Path(__file__).resolve().parent / "data" / "forces" / "ex11_1_static_fourbar.toml"
+    rows = {}
+    for units in (None, "ft"):
+        out = tmp_path / f"{units}.csv"
+        args = ["sweep", str(data), "--count", "4", "--torque", "--csv", str(out), "--units-row"]
+        if units:
+            args += ["--units", units]
+        assert main(args) == 0
+        rows[units] = list(csv.reader(out.open(encoding="utf-8")))
+    head, unit_row, first = rows[None][0], rows[None][1], rows[None][2]
+    k = head.index("torque_2")
+    assert unit_row[k] == "lbf*in" and rows["ft"][1][k] == "lbf*ft"
+    assert float(first[k]) == pytest.approx(-184.98, abs=0.01)
+    assert float(rows["ft"][2][k]) == pytest.approx(float(first[k]) / 12, rel=1e-12)

@@ -94,8 +94,8 @@ def run(args: argparse.Namespace) -> int:
     except KeyError as exc:
         raise InputError(f"no unit is known for the column {exc.args[0]!r}",
                          key="--units") from None
-    units_row = ([column_unit(n, units, slider) for n in sw.columns] if args.units_row
-                 else None)
+    units_row = ([column_unit(n, units, slider, mech.force_unit) for n in sw.columns]
+                 if args.units_row else None)
     with bar("write CSV", total=args.count + 1, unit="row") as b:
         if args.csv == "-":
             sw.to_csv(cast(IO[str], CountingWriter(sys.stdout, b)), columns=columns,

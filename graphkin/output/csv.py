@@ -30,6 +30,8 @@ _KINDS = (
     (r"ax_|ay_", "acceleration"),
     (r"dx_|dy_", "direction"),
     (r"x_|y_|jx_|jy_|gx_|gy_|cx_|cy_|rho_|inflection_diameter_", "length"),
+    (r"torque_", "torque"),
+    (r"force_|F_", "force"),
 )
 
 
@@ -42,20 +44,30 @@ def _kind(name: str, slider_drive: bool) -> str | None:
     return None
 
 
-def column_unit(name: str, units: OutputUnits, slider_drive: bool = False) -> str:
+def column_unit(name: str, units: OutputUnits, slider_drive: bool = False,
+                force_unit: str = "N") -> str:
     """The unit of a sweep column: ``deg``, a length, velocity, ... or ``""`` (a direction).
+
+    Forces (``torque_2``, ``force_4``, ``F_3-4``: ``graphkin sweep --torque``) stay
+    in the file's force unit; a torque is that force times the report's length.
 
     Examples
     --------
     >>> u = OutputUnits.of("in")
     >>> [column_unit(n, u) for n in ("drive", "omega_3", "vx_E", "ax_E", "x_I13", "dx_I24")]
     ['deg', 'rad/s', 'in/s', 'in/s^2', 'in', '']
+    >>> column_unit("torque_2", OutputUnits.of("in", "ft"), force_unit="lbf")
+    'lbf*ft'
     """
     kind = _kind(name, slider_drive)
     if kind == "angle":
         return "deg"
     if kind is None or kind == "direction":
         return ""
+    if kind == "force":
+        return force_unit
+    if kind == "torque":
+        return f"{force_unit}*{units.length}"
     return str(getattr(units, kind))
 
 
@@ -80,6 +92,8 @@ def convert_columns(columns: dict[str, np.ndarray], units: OutputUnits,
         kind = _kind(name, slider_drive)
         if kind is None:
             raise KeyError(name)
-        k = 1.0 if kind in ("angle", "direction") else float(getattr(units, f"k_{kind}"))
+        # forces stay in the file's force unit; a torque (force x length) follows the length
+        k = (1.0 if kind in ("angle", "direction", "force") else float(units.k_length)
+             if kind == "torque" else float(getattr(units, f"k_{kind}")))
         out[name] = col if k == 1.0 else col * k
     return out
