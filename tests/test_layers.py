@@ -187,3 +187,30 @@ def test_importing_below_render_does_not_load_matplotlib(module):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "False"
+
+
+MAX_LINES = 800
+"""The house's size limit (issue 18): no module in graphkin/ over about 800 lines."""
+
+
+def _long_modules(root: Path, limit: int = MAX_LINES) -> list[str]:
+    out = []
+    for path in sorted(root.rglob("*.py")):
+        n = len(path.read_text(encoding="utf-8").splitlines())
+        if n > limit:
+            out.append(f"{path.relative_to(root.parent)} ({n} lines)")
+    return out
+
+
+def test_no_module_over_800_lines():
+    long = _long_modules(PACKAGE)
+    assert not long, ("split by idea (docs/architecture.md): " + ", ".join(long))
+
+
+def test_the_size_check_sees_a_long_module(tmp_path):
+    """The size check is not vacuous: a file of 801 lines is found, one of 800 is not."""
+    pkg = tmp_path / "pkg"
+    pkg.mkdir()
+    (pkg / "long.py").write_text("x = 1\n" * (MAX_LINES + 1), encoding="utf-8")
+    (pkg / "ok.py").write_text("x = 1\n" * MAX_LINES, encoding="utf-8")
+    assert _long_modules(pkg) == [f"pkg/long.py ({MAX_LINES + 1} lines)"]

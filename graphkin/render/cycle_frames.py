@@ -1,6 +1,6 @@
 """The cycle as pictures for slides: one SVG or PNG per posture, or an animated GIF.
 
-The same data as the animation page (:func:`graphkin.render.animate.cycle_data`,
+The same data as the animation page (:func:`graphkin.render.cycle_data.cycle_data`,
 from one sweep) drawn with matplotlib: the mechanism, and its velocity and
 acceleration polygons to the fixed scale of the page.  The GIF is written by
 matplotlib's Pillow writer (Pillow is a dependency of matplotlib).
@@ -19,7 +19,7 @@ import numpy as np
 
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
-from graphkin.render.animate import cycle_data
+from graphkin.render.cycle_data import cycle_data
 from graphkin.render.style import rc_context
 
 __all__ = ["write_cycle_frames", "write_cycle_gif"]
