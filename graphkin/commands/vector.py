@@ -1,271 +1,32 @@
 """``graphkin vector FILE [--json] [--steps]``: solve ``C = A + B`` from a small TOML file.
 
-The file states what is known of each vector; a part that is left out (or
-written ``"?"``, the book's mark) is unknown, and exactly two parts must be::
-
-    title = "Case 4 (Fig. 2.13)"   # optional
-    units = "in"                   # optional: the unit of every magnitude
-                                   # (also units = { length = "in" })
-    branch = "left"                # optional: keep one branch (case 2: behind/ahead,
-                                   #           case 4: left/right)
-    [A]
-    magnitude = 3                  # a number in `units`, or a string "76.2 mm"
-    [B]
-    magnitude = 4
-    [C]
-    magnitude = 5
-    angle = 0                      # degrees, or a string with a unit: "0.5 rad"
-
-Every mistake in the file becomes an :class:`~graphkin.errors.InputError`
-naming the file and the key, which the CLI prints as one line (exit status 2).
+The file (its keys: :mod:`graphkin.kinematics.vector_file`) is read by
+:func:`~graphkin.kinematics.vector_file.load`, the equation solved by
+:func:`graphkin.kinematics.vector_equation.solve_vector_equation` and the
+report written by :mod:`graphkin.output.vector`; this module parses the
+arguments and prints.  Every mistake in the file becomes an
+:class:`~graphkin.errors.InputError` naming the file and the key, which the
+CLI prints as one line (exit status 2).
 
 References
 ----------
 Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.,
-Sec. 2.8 and Table 2.2 (the four cases); results are written ``R∠θ`` as in
-Sec. 2.10, Example 2.3.
+Sec. 2.8 and Table 2.2 (the four cases).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
-from collections.abc import Mapping
-from dataclasses import dataclass
-from pathlib import Path
-from typing import Any
 
 from graphkin.errors import InputError
-from graphkin.files import parse_toml, read_text
-from graphkin.keys import VECTOR, check_keys, read_units
-from graphkin.kinematics.vector_equation import (
-    NAMES,
-    Polar,
-    VectorEquationResult,
-    solve_vector_equation,
-)
-from graphkin.text import table
+from graphkin.kinematics.vector_equation import NAMES, solve_vector_equation
+from graphkin.kinematics.vector_file import VectorFile, load, loads
+from graphkin.output.vector import vector_json as to_dict
+from graphkin.output.vector import vector_text as text_report
 
 __all__ = ["add_parser", "run", "VectorFile", "load", "loads", "text_report", "to_dict"]
-
-
-@dataclass(frozen=True)
-class VectorFile:
-    """The contents of a vector file.
-
-    Attributes
-    ----------
-    knowns : dict
-        ``"A"``, ``"B"``, ``"C"`` -> :class:`~graphkin.kinematics.vector_equation.Polar`
-        (angles in radians, magnitudes in ``units``).
-    units : str or None
-        The unit of the magnitudes, as written.
-    branch : str or None
-        The branch to keep, as written.
-    title : str
-    source : str
-        The file name (for messages).
-    """
-
-    knowns: Mapping[str, Polar]
-    units: str | None = None
-    branch: str | None = None
-    title: str = ""
-    source: str = "<vector file>"
-
-
-def load(path: str | Path) -> VectorFile:
-    """Read a vector file.
-
-    Raises
-    ------
-    InputError
-        The file cannot be read or says something unusable (naming the key).
-    """
-    p = Path(path)
-    return loads(read_text(p), source=str(p))
-
-
-def loads(text: str, source: str = "<vector file>") -> VectorFile:
-    r"""Parse the text of a vector file (see :func:`load`).
-
-    Examples
-    --------
-    >>> f = loads('units = "in"\n[A]\nmagnitude = 3\n[B]\nmagnitude = "101.6 mm"\n'
-    ...           '[C]\nmagnitude = 5\nangle = 0\n')
-    >>> str(f.knowns["A"]), str(f.knowns["B"]), str(f.knowns["C"])
-    ('3∠?', '4∠?', '5∠0°')
-    """
-    data = parse_toml(text, source)
-
-    def fail(key: str | None, message: str) -> InputError:
-        return InputError(message, key=key, file=source)
-
-    check_keys(data, VECTOR, source)
-    title = data.get("title", "")
-    if not isinstance(title, str):
-        raise fail("title", f"expected a string, not {title!r}")
-    units = None
-    if "units" in data:
-        units = read_units(data["units"], "units", source, VECTOR["units"]).get("length")
-    if units is not None:
-        try:
-            _quantity(f"1 {units}")
-        except ValueError:
-            raise fail("units", f"unknown unit {units!r}") from None
-    branch = data.get("branch")
-    if branch is not None and not isinstance(branch, str):
-        raise fail("branch", f"expected a branch name such as \"left\", not {branch!r}")
-    knowns = {}
-    for name in NAMES:
-        table = data.get(name, {})
-        if not isinstance(table, Mapping):
-            raise fail(name, f"expected a table [{name}] with magnitude and angle, "
-                             f"not {table!r}")
-        try:
-            m = _magnitude(table.get("magnitude"), units)
-        except ValueError as exc:
-            raise fail(f"{name}.magnitude", str(exc)) from None
-        try:
-            a = _angle(table.get("angle"))
-        except ValueError as exc:
-            raise fail(f"{name}.angle", str(exc)) from None
-        knowns[name] = Polar(m, a)
-    return VectorFile(knowns, units, branch, title, source)
-
-
-def _one_line(text: str) -> str:
-    return " ".join(text.split())
-
-
-def _quantity(text: str) -> Any:
-    from graphkin.units import quantity
-
-    return quantity(text)  # the number read by float(); pint sees only a checked unit
-
-
-def _read(value: Any) -> float | str | None:
-    """A number, ``None`` for unknown (absent or ``"?"``), or a quantity string to convert."""
-    if isinstance(value, bool):
-        raise ValueError(f"expected a number, not {value!r}")
-    if isinstance(value, (int, float)):
-        if not math.isfinite(value):
-            raise ValueError(f"expected a finite number, not {value!r}")
-        return float(value)
-    if value is None or (isinstance(value, str) and value.strip() == "?"):
-        return None
-    if not isinstance(value, str):
-        raise ValueError(f"expected a number, a string with a unit, or \"?\", not {value!r}")
-    return value
-
-
-def _convert(text: str, unit: str, what: str) -> float:
-    q = _quantity(text)
-    if getattr(q, "unitless", True):
-        raise ValueError(f"{text!r} has no unit; {what}")
-    try:
-        out = float(q.to(unit).magnitude)
-    except Exception:
-        raise ValueError(f"cannot convert {text!r} to {unit}") from None
-    if not math.isfinite(out):
-        raise ValueError(f"{text!r} is not finite")
-    return out
-
-
-def _magnitude(value: Any, units: str | None) -> float | None:
-    x = _read(value)
-    if not isinstance(x, str):
-        return x
-    if units is None:
-        if getattr(_quantity(x), "unitless", True):
-            raise ValueError(f"expected a number, not {x!r}")
-        raise ValueError(f"{x!r} has a unit, so the file needs `units = ...` "
-                         "(the unit of every magnitude)")
-    return _convert(x, units, "write a plain number in the file's units")
-
-
-def _angle(value: Any) -> float | None:
-    x = _read(value)
-    if x is None:
-        return None
-    if not isinstance(x, str):
-        return math.radians(x)
-    return _convert(x, "radian", "write a plain number of degrees, or a unit as in \"0.5 rad\"")
-
-
-def _degrees(rad: float) -> float:
-    d = math.degrees(rad)
-    return d + 0.0
-
-
-def _polar_text(p: Polar, units: str | None) -> str:
-    assert p.magnitude is not None and p.angle is not None
-    unit = f" {units}" if units else ""
-    return f"{p.magnitude:.6g}{unit} ∠{_degrees(p.angle):.6g}°"
-
-
-def text_report(vf: VectorFile, result: VectorEquationResult, steps: bool = False) -> str:
-    r"""The textbook-style report: the case, the marked equation, every solution.
-
-    Examples
-    --------
-    >>> vf = loads('[A]\nmagnitude = 3\n[B]\nmagnitude = 4\n[C]\nmagnitude = 5\nangle = 0')
-    >>> r = solve_vector_equation(*vf.knowns.values())
-    >>> print(text_report(vf, r))  # doctest: +NORMALIZE_WHITESPACE
-    case 4 of Table 2.2 (Fig. 2.13, two arcs): unknowns θ_A and θ_B
-    C(✓✓) = A(✓?) + B(✓?)
-    solution 1 (left):   A = 3 ∠53.1301°    B = 4 ∠-36.8699°   C = 5 ∠0°
-    solution 2 (right):  A = 3 ∠-53.1301°   B = 4 ∠36.8699°    C = 5 ∠0°
-    <BLANKLINE>
-    """
-    lines = []
-    if vf.title:
-        lines.append(vf.title)
-    case = result.case
-    lines.append(f"case {int(case)} of Table 2.2 ({case.figure}, {case.method}): "
-                 f"unknowns {' and '.join(result.unknowns)}")
-    lines.append(str(result.equation))
-    rows = []
-    for k, branch in enumerate(result.branches):
-        head = f"solution {k + 1}" + (f" ({branch}):" if branch else ":")
-        cells = [f"{n} = {_polar_text(p, vf.units)}" for n, p in zip(NAMES, result.polar(k))]
-        rows.append([head, *cells])
-    lines += table(rows)
-    if steps:
-        lines.append("")
-        lines.append(result.construction.table())
-    return "\n".join(lines) + "\n"
-
-
-def to_dict(vf: VectorFile, result: VectorEquationResult, steps: bool = False) -> dict[str, Any]:
-    """The report as plain data (what ``--json`` prints)."""
-
-    def polar(p: Polar) -> dict[str, Any]:
-        return {"magnitude": p.magnitude,
-                "angle_deg": None if p.angle is None else _degrees(p.angle)}
-
-    solutions = []
-    for k, branch in enumerate(result.branches):
-        entry: dict[str, Any] = {"branch": branch}
-        for n, p, v in zip(NAMES, result.polar(k), result.solutions[k]):
-            entry[n] = {**polar(p), "x": v.x, "y": v.y}
-        solutions.append(entry)
-    data: dict[str, Any] = {
-        "file": vf.source,
-        "title": vf.title,
-        "units": vf.units,
-        "case": int(result.case),
-        "unknowns": list(result.unknowns),
-        "figure": result.case.figure,
-        "equation": result.equation.to_dict(),
-        "knowns": {n: polar(vf.knowns[n]) for n in NAMES},
-        "solutions": solutions,
-    }
-    if steps:
-        data["steps"] = result.construction.to_dict()
-    return data
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:

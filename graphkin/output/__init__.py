@@ -11,7 +11,8 @@ One layer builds every report from the result objects, with one formatter
 - :mod:`graphkin.output.sections`: the list of sections beyond the posture
   (where a new kind of result, such as forces, is added);
 - :mod:`graphkin.output.units`: the units of the report (``--units``);
-- :mod:`graphkin.output.csv`: the units of a sweep's CSV columns.
+- :mod:`graphkin.output.csv`: the units of a sweep's CSV columns;
+- :mod:`graphkin.output.vector`: the report of ``graphkin vector`` (``C = A + B``).
 
 References
 ----------
