@@ -19,8 +19,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("file", help="mechanism file (TOML)")
     p.add_argument("--diagram", "-d", default="posture",
                    choices=("posture", "velocity", "acceleration", "centers", "curvature",
-                            "forces"),
-                   help="which construction (default: posture)")
+                            "inflection", "bobillier", "hartmann", "cubic", "forces"),
+                   help="which construction (default: posture); inflection, bobillier, "
+                        "hartmann and cubic walk through one figure of the curvature sheet "
+                        "(as draw -d does: the inflection and Bresse circles, Bobillier's "
+                        "construction, conjugate points, the cubic of stationary curvature)")
     p.add_argument("-o", "--output", default=None, help="the HTML file to write")
     p.add_argument("--frames", default=None, metavar="DIR",
                    help="also write one numbered SVG per step into DIR")

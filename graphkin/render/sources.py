@@ -63,11 +63,13 @@ class StepSubset:
     """Some steps of a construction (a panel of the curvature sheet), in their order.
 
     It holds the panel's own steps and, for context, the steps that made the
-    points, lines and circles they use (drawn as given).
+    points, lines and circles they use (drawn as given); ``own`` is the set of
+    the indices of its own steps.
     """
 
     def __init__(self, cx: Construction, keep: set[int], title: str) -> None:
         own = [s for s in cx.steps if s.index in keep]
+        self.own = frozenset(s.index for s in own)
         used = {i for s in own for i in s.inputs}
         self.steps = [s for s in cx.steps if s.index in keep or set(s.outputs) & used]
         self.title = title

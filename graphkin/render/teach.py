@@ -35,10 +35,22 @@ from typing import Any
 
 from graphkin.construction import Construction, Step, Term, VectorEquation
 from graphkin.render.narrate import PageStep, answer_html, helper_steps, narrate, vector_html
-from graphkin.render.sources import DIAGRAMS, DiagramUnavailable, as_source, optional_modules
+from graphkin.render.sources import (
+    CURVATURE_PANELS,
+    DIAGRAMS,
+    DiagramUnavailable,
+    as_source,
+    optional_modules,
+    split_curvature,
+)
+
+PANEL_NAMES = {"inflection": "inflection and Bresse circles",
+               "bobillier": "inflection circle by Bobillier's construction",
+               "hartmann": "conjugate points", "cubic": "cubic of stationary curvature"}
+"""The curvature figures as a page's title names them."""
 
 __all__ = ["steps_html", "step_frames", "write_frames", "equation_html", "page_frames",
-           "sides_html", "FRAME_INCHES"]
+           "sides_html", "FRAME_INCHES", "PAGE_DIAGRAMS"]
 
 _ID = re.compile(r'(\bid=")([^"]+)(")')
 _URL = re.compile(r"url\(#([^)]+)\)")
@@ -97,10 +109,17 @@ def equation_html(eq: VectorEquation) -> str:
             f"{side(eq.rhs)}{case}</div>")
 
 
+PAGE_DIAGRAMS = (*DIAGRAMS, *CURVATURE_PANELS)
+"""What a teaching page can walk through: a diagram, or one figure of the curvature sheet
+(``inflection``, ``bobillier``, ``hartmann``, ``cubic``; Figs. 4.25-4.39)."""
+
+
 def _construction(obj: Any, diagram: str, link: str | None) -> tuple[Any, Construction]:
+    if diagram in CURVATURE_PANELS:
+        return _panel(obj, diagram, link)
     if diagram not in DIAGRAMS:
-        raise DiagramUnavailable(f"a teaching page shows one diagram; valid: {', '.join(DIAGRAMS)}",
-                                 diagram=diagram)
+        raise DiagramUnavailable("a teaching page shows one diagram; valid: "
+                                 f"{', '.join(PAGE_DIAGRAMS)}", diagram=diagram)
     wanted = (diagram,) if diagram in optional_modules else ()
     src = as_source(obj, diagrams=wanted, link=link)
     cx = src.construction(diagram)
@@ -108,6 +127,22 @@ def _construction(obj: Any, diagram: str, link: str | None) -> tuple[Any, Constr
         raise DiagramUnavailable(f"no {diagram} construction to walk through (the mechanism "
                                  "was solved analytically)", diagram=diagram)
     return src, cx
+
+
+def _panel(obj: Any, diagram: str, link: str | None) -> tuple[Any, Construction]:
+    """One figure of the curvature sheet: its source and its steps (a ``StepSubset``)."""
+    src = as_source(obj, diagrams=("curvature",), link=link)
+    cx = src.construction("curvature")  # raises DiagramUnavailable when there is none
+    if cx is None or not len(cx):
+        raise DiagramUnavailable("no curvature construction to walk through (the mechanism "
+                                 "was solved analytically)", diagram=diagram)
+    subs = split_curvature(src)
+    if diagram not in subs:
+        why = "; the link turns about a frame pivot" if not subs else ""
+        raise DiagramUnavailable(f"no {diagram} figure for this link's curvature (the "
+                                 f"construction did not use it{why}); steps --diagram curvature",
+                                 diagram=diagram)
+    return src, src.constructions[diagram]
 
 
 def step_frames(obj: Any, diagram: str = "posture", *, link: str | None = None,
@@ -203,16 +238,16 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
 
     # the steps of helper points are drawn no more than told: a source without them
     skip = helper_steps(src, diagram)
-    kept = [s for s in src.constructions[diagram].steps if s.index not in skip]
     if skip:
+        kept = [s for s in src.constructions[diagram].steps if s.index not in skip]
         src = replace(src, constructions={**src.constructions,
                                           diagram: Construction(kept,
                                                                 src.constructions[diagram].title)})
     out = []
     with _classroom_type():
         for ps in steps:
-            upto = sum(1 for s in kept if s.index <= ps.main) - 1  # a position among the kept
-            sheet = build_sheet(src, diagram, upto=upto, highlight=set(ps.steps),
+            # the painter draws the steps numbered up to ps.main (steps keep their numbers)
+            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
                                 table=False, max_inches=max_inches, title="")
             d = render_sheet(sheet)
             assert d.figure is not None
@@ -452,7 +487,11 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     ----------
     obj : Mechanism, Solution or Construction
     diagram : str
-        ``posture``, ``velocity``, ``acceleration``, ``centers`` or ``curvature``.
+        ``posture``, ``velocity``, ``acceleration``, ``centers`` or ``curvature``;
+        or one figure of the curvature sheet, ``inflection`` (the inflection and
+        Bresse circles, Γ), ``bobillier`` (the inflection circle by Bobillier's
+        theorem), ``hartmann`` (conjugate points) or ``cubic`` (the cubic of
+        stationary curvature and Ball's point).
     link : str, optional
         The link of a curvature construction.
     title : str, optional
@@ -471,7 +510,7 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
 
     References
     ----------
-    Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4-3.7, 4.3-4.7.
+    Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, 3.4-3.7, 4.3-4.7, 4.12-4.17.
     """
     src, cx = _construction(obj, diagram, link)
     scale = _scale_of(src, diagram, max_inches)
@@ -489,7 +528,7 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     answers = {lab for ps in told for lab in ps.answers}
     what = {"velocity": "velocity polygon", "acceleration": "acceleration polygon",
             "posture": "posture", "centers": "instant centers",
-            "curvature": "curvature"}.get(diagram, diagram)
+            "curvature": "curvature", **PANEL_NAMES}.get(diagram, diagram)
     body = "\n".join(parts)
     return (
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -514,7 +553,7 @@ def _results_html(src: Any, diagram: str) -> str:
 
     if src.solution is None:
         return ""
-    rows = result_rows(src, [diagram])
+    rows = result_rows(src, ["curvature" if diagram in CURVATURE_PANELS else diagram])
     if not rows:
         return ""
     def ans(text: str) -> str:

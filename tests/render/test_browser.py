@@ -20,7 +20,9 @@ from graphkin.render.teach import steps_html
 INTERNAL = re.compile(r"\S:\S|[>⊥∥@\[\]]|\b[va]\(|\bdds?\d|\bo_[va]\b")
 
 PAGES = [("ex3_1_fourbar", "acceleration"), ("ex4_4_coriolis_block", "acceleration"),
-         ("ex3_3_inverted_slider", "velocity"), ("ex3_2_slider_driven", "velocity")]
+         ("ex3_3_inverted_slider", "velocity"), ("ex3_2_slider_driven", "velocity"),
+         # one figure of the curvature sheet (Sec. 4.13, Fig. 4.30; Sec. 4.17, Fig. 4.38)
+         ("ex3_1_fourbar", "hartmann"), ("ex3_1_fourbar", "cubic")]
 
 
 @pytest.fixture(scope="module")

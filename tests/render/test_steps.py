@@ -225,3 +225,103 @@ def test_posture_centers_and_curvature_steps_have_titles_in_words(gk, name):
         for ps in narrate(src, diagram):
             title = plain(ps.title)
             assert title and not INTERNAL.search(title), (diagram, title)
+
+
+# ---- the figures of the curvature sheet, one page each (Secs. 4.12-4.17) ---------------
+
+PANELS = ("inflection", "bobillier", "hartmann", "cubic")
+
+
+@pytest.fixture(scope="module")
+def fourbar_panels(gk):
+    """Example 3.1's coupler: each figure's page, its narration and its steps."""
+    from graphkin.render.teach import _construction
+
+    out = {}
+    for panel in PANELS:
+        src, cx = _construction(gk.solved("ex3_1_fourbar"), panel, None)
+        told = narrate(src, panel, _scale_of(src, panel, FRAME_INCHES))
+        out[panel] = (cx, told, steps_html(gk.solved("ex3_1_fourbar"), panel))
+    return out
+
+
+@pytest.mark.parametrize("panel", PANELS)
+def test_a_curvature_figure_is_walked_step_by_step(fourbar_panels, panel):
+    cx, told, page = fourbar_panels[panel]
+    own = cx.own
+    given = [s.index for s in cx.steps if s.index not in own]
+    # every step of the figure is told once, in order; what earlier figures made comes first
+    covered = [i for ps in told for i in ps.steps]
+    assert sorted(covered) == sorted(s.index for s in cx.steps)
+    assert len(covered) == len(set(covered))
+    if given:
+        assert list(told[0].steps) == given
+        assert plain(told[0].title).startswith("Given from the figures before")
+    for ps in told:
+        title = plain(ps.title)
+        assert re.match(r"[A-Z]", title) and not INTERNAL.search(title), title
+        assert ps.text, title  # what is drawn and why, for every step
+        assert ps.refs.startswith("Sec. 4.1"), ps.refs
+    # one section a step (and the results), each drawing the figure up to its step,
+    # with its own steps in the drawing and none of the figure's later steps
+    sections = re.findall(r'<section class="step[^"]*"[^>]*>', page)
+    assert len(sections) == len(told) + 1
+    for k, ps in enumerate(told):
+        drawn = set(re.findall(rf'id="f{k:02d}-(step-[^"]+?)"', page))
+        for s in cx.steps:
+            if s.index in ps.steps and s.kind in ("point", "line", "circle"):
+                assert s.step_id in drawn, (k, s.step_id)
+            if s.index > ps.main:
+                assert s.step_id not in drawn, (k, s.step_id)
+
+
+def test_the_figures_open_with_what_they_are_for(fourbar_panels):
+    """Each figure says first what it constructs, in the book's words (Secs. 4.13, 4.17)."""
+    assert "Bobillier's theorem" in fourbar_panels["bobillier"][1][0].text
+    assert "Ball's point" in fourbar_panels["cubic"][1][0].text
+    assert "instantaneous center of acceleration" in fourbar_panels["inflection"][1][0].text
+    hart = fourbar_panels["hartmann"][1]
+    assert plain(hart[0].title) == ("Given from the figures before: I, J, the inflection "
+                                    "circle, the centrode normal N")
+
+
+def test_the_radius_of_curvature_read_off_is_the_analytic_one(gk, fourbar_panels):
+    """ρ_E = R_EE′ on the conjugate-points page equals |V_E|³/|V_E × A_E| (Sec. 4.16),
+    with V_E and A_E from the independent analytic solver."""
+    _, told, _ = fourbar_panels["hartmann"]
+    (line,) = [n for ps in told for n in ps.numbers if "ρ_E" in n]
+    rho = _numbers(line.split("=")[-1])[0]
+    exact = gk.exact("ex3_1_fourbar")
+    v = np.asarray(exact.velocity("E"), dtype=float)[:2]
+    a = np.asarray(exact.acceleration("E"), dtype=float)[:2]
+    expected = np.linalg.norm(v) ** 3 / abs(v[0] * a[1] - v[1] * a[0])
+    assert rho == pytest.approx(expected, rel=1e-3)
+
+
+def test_cli_steps_walks_a_curvature_figure(tmp_path, capsys):
+    out = tmp_path / "cubic.html"
+    assert main(["steps", str(EXAMPLES / "ex3_1_fourbar.toml"), "-d", "cubic",
+                 "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert "Ball" in text and "cubic of stationary curvature" in text
+    capsys.readouterr()
+    # a figure the link's curvature does not use: one line naming the key, exit 2
+    assert main(["steps", str(EXAMPLES / "ex3_3_inverted_slider.toml"), "-d", "bobillier",
+                 "-o", str(tmp_path / "b.html")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--diagram" in err[0] and "bobillier" in err[0]
+
+
+def test_the_last_frame_draws_every_step_told(gk):
+    """Leaving out a helper point's steps leaves the others' numbers: the last frame of
+    Example 4.4's acceleration page draws every step that is not a helper's."""
+    from graphkin.render.narrate import helper_steps
+
+    sol = gk.solved("ex4_4_coriolis_block")
+    page = steps_html(sol, "acceleration")
+    last = len(re.findall(r"<svg[\s>]", page)) - 1
+    skip = helper_steps(as_source(sol), "acceleration")
+    assert skip
+    for s in sol.constructions["acceleration"]:
+        if s.index not in skip:
+            assert f'id="f{last:02d}-{s.step_id}"' in page, s.step_id

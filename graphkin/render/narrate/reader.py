@@ -21,6 +21,7 @@ import numpy as np
 
 from graphkin.construction import Construction, Step, Term
 from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
+from graphkin.render.narrate.curvature import PANEL_INTRO, curvature_numbers, given_step, why
 from graphkin.render.narrate.words import (
     _OP_WORDS,
     _PLURAL,
@@ -54,6 +55,12 @@ class _Reader:
             for i in s.inputs:
                 self.consumers.setdefault(i, []).append(s)
         self.accel = diagram == "acceleration"
+        # a figure of the curvature sheet: its own steps (the others were made before it)
+        own = getattr(self.cx, "own", None)
+        self.own: frozenset[int] | None = own if isinstance(own, frozenset) else None
+        #: output label -> the section of the curvature construction that made it
+        self.sections: dict[str, str] = dict(getattr(src.extras.get(diagram), "sections", None)
+                                             or {})
         unit = src.length_unit
         # numbers are written in the unit the polygon's scale is written in (in/s as ft/s)
         self.f = scale.factor if scale is not None and plane(diagram) != "posture" else 1.0
@@ -186,8 +193,9 @@ class _Reader:
         pending: list[Step] = []
         start: list[Step] = []
         polygon = self.diagram in ("velocity", "acceleration")
+        given = [s for s in self.cx.steps if self.own is not None and s.index not in self.own]
         for s in self.cx.steps:
-            if self.helper(s):
+            if self.helper(s) or s in given:
                 continue
             if s.op in ("point", "scalar", "input") and s.role.value == "given" and not out \
                     and not pending and (polygon or s.op != "input"):
@@ -208,7 +216,7 @@ class _Reader:
                 out[-1].extend(pending)
             else:
                 out.append(pending)
-        return out
+        return [given, *out] if given else out
 
     def downstream(self, label: str) -> tuple[Step, int] | None:
         """The step with an equation that ``label`` leads to, and through which input."""
@@ -297,11 +305,16 @@ class _Reader:
             ps.steps = tuple(s.index for s in group)
             ps.main = group[-1].index
             out.append(ps)
+        if self.own is not None and out and out[0].steps[0] in self.own:
+            # a figure that starts from nothing given: what it is for, before its first step
+            out[0].text = f"{PANEL_INTRO.get(self.diagram, '')} {out[0].text}".strip()
         return out
 
     def tell_group(self, group: list[Step]) -> PageStep:
         polygon = self.diagram in ("velocity", "acceleration")
         lead = group[-1]
+        if self.own is not None and group[0].index not in self.own:
+            return given_step(group, self.diagram)
         if not polygon:
             if self.diagram == "posture" and lead.op in ("rigid", "intersect_circles"):
                 ps = self.tell_generic(group)
@@ -346,9 +359,16 @@ class _Reader:
         numbers = []
         for s in group:
             numbers.extend(self.posture_numbers(s))
+            if self.own is not None or self.diagram == "curvature":
+                numbers.extend(curvature_numbers(s, lambda lab: self.xy(lab, "posture"),
+                                                 self.unit_file))
         text = " ".join(notes)
         if notes and text.startswith(title):
             text = text[len(title):].lstrip(".;: ")
+        if not text and self.sections:
+            text = why(lead, self.sections.get(lead.outputs[0]) if lead.outputs else None)
+        if text[:1].islower():  # the rest of a note after its title: a sentence of its own
+            text = text[0].upper() + text[1:]
         return PageStep(title, sides, None if lead.equation is None else lead.equation.case,
                         text=text, numbers=numbers, refs=_REFS.get(self.diagram, ""),
                         vector=sides is not None)

@@ -72,6 +72,9 @@ def _sym_html(text: str) -> str:
 
     esc = re.sub(r"\b([VAR])(?:\^([ntcr]))?_([A-Za-z0-9]+(?:/\d+)?)(?:\^([ntcr]))?", vec, esc)
     esc = re.sub(r"\bO_([VA])\b", r"<i>O</i><sub>\1</sub>", esc)
+    # the other points with subscripts (J_B, C_N, Q_Γ, U_T; Figs. 4.29, 4.33, 4.38)
+    # (written together as the book writes a rectangle: IC_NC_GC_T is I C_N C_G C_T)
+    esc = re.sub(r"(?<![a-z0-9_])([A-Z])_([A-Z]\d?|Γ)", r"\1<sub>\2</sub>", esc)
     return re.sub(r"([ωα])(\d+)", r"\1<sub>\2</sub>", esc)
 
 
@@ -198,7 +201,12 @@ _OP_WORDS = {
 }
 
 _REFS = {"posture": "Sec. 2.8, Fig. 2.14", "centers": "Sec. 3.13-3.14",
-         "curvature": "Sec. 4.12-4.15"}
+         "curvature": "Sec. 4.12-4.15",
+         # the figures of the curvature sheet
+         "inflection": "Sec. 4.12, 4.14-4.15, Figs. 4.29c, 4.33, 4.34",
+         "bobillier": "Sec. 4.13, Figs. 4.28, 4.29",
+         "hartmann": "Sec. 4.12-4.13, Figs. 4.25, 4.30",
+         "cubic": "Sec. 4.17, Fig. 4.38"}
 
 
 def plane(diagram: str) -> str:
