@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from spec_data import EXAMPLES  # the shared spec examples (pythonpath = tests)
+from spec_data import EXAMPLES, inline  # the shared spec examples (pythonpath = tests)
 from strategies import RandomMechanism, fourbars, mechanisms
 
 from graphkin.errors import AssemblyError, ConstructionError
@@ -341,24 +341,7 @@ def test_example_2_5_both_branches() -> None:
 # (d) mechanisms that cannot be assembled, and singular postures
 # ---------------------------------------------------------------------------
 
-FOURBAR = """
-[links.1]
-O2 = [0, 0]
-O4 = [10, 0]
-[links.2]
-O2 = [0, 0]
-A = [{crank}, 0]
-[links.3]
-A = [0, 0]
-B = [{coupler}, 0]
-[links.4]
-O4 = [0, 0]
-B = [{rocker}, 0]
-[drive]
-link = 2
-angle = {angle}
-omega = 1
-"""
+FOURBAR = inline("analytic-fourbar.toml")
 
 
 def test_unassemblable_fourbar_raises_assembly_error() -> None:
@@ -698,34 +681,7 @@ def test_planet_on_a_fixed_sun_or_ring(path: Path, big: float, kappa: float) -> 
 # An eccentric disk 2 (circle center E, R = 30, 10 from its pivot A) drives a
 # roller 4 (r = 10) pinned at P to the rocker 3 (pivot B, |BP| = 50): the circle it
 # rolls on is moving, and nothing but the equivalent slot |EP| = 40 holds the centers.
-CAM = """
-title = "Roller on an eccentric disk"
-units = { length = "mm" }
-[links.1]
-A = [0, 0]
-B = [60, 50]
-[links.2]
-A = [0, 0]
-E = [10, 0]
-[links.3]
-B = [0, 0]
-P = [50, 0]
-[links.4]
-P = [0, 0]
-[[rolling]]
-link = 4
-on = 2
-circle = { center = "P", radius = 10 }
-on_circle = { center = "E", radius = 30 }
-contact = "outside"
-[drive]
-link = 2
-angle = 30
-omega = "-7 rad/s"
-alpha = "40 rad/s^2"
-[assembly]
-P = [10, 45]
-"""
+CAM = inline("analytic-cam.toml")
 
 
 def test_roller_on_a_moving_circle_has_no_slip() -> None:

@@ -10,34 +10,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from spec_data import EXAMPLES
+from spec_data import EXAMPLES, inline
 
 import graphkin
 from graphkin.errors import InputError
 from graphkin.render.plots import parse_what, save_figure, sweep_figure
 
-FOURBAR = """
-title = "crank-rocker"
-[links.1]
-A = [0, 0]
-D = [10, 0]
-[links.2]
-A = [0, 0]
-B = [4, 0]
-[links.3]
-B = [0, 0]
-C = [12, 0]
-E = [6, -3]
-[links.4]
-D = [0, 0]
-C = [11, 0]
-[drive]
-link = 2
-angle = 120
-omega = 10
-[assembly]
-C = [9, 11]
-"""
+FOURBAR = inline("plot-fourbar.toml")
 
 NON_GRASHOF = FOURBAR.replace("B = [4, 0]", "B = [6, 0]").replace("C = [12, 0]", "C = [5, 0]") \
     .replace("C = [11, 0]", "C = [7, 0]").replace("C = [9, 11]", "C = [8, 6]") \

@@ -12,37 +12,14 @@ import math
 from pathlib import Path
 
 import pytest
+from spec_data import inline
 
 import graphkin
 from graphkin.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
 
-INLINE = """
-units = { length = "in" }
-[links.1]
-A = [0, 0]
-S = [0, 0]
-T = [1, 0]
-[links.2]
-A = [0, 0]
-B = [2, 0]
-[links.3]
-B = [0, 0]
-C = [8, 0]
-[links.4]
-C = [0, 0]
-[[sliders]]
-link = 4
-on = 1
-point = "C"
-line = ["S", "T"]
-[drive]
-link = 2
-angle = 60
-[assembly]
-C = [9, 0]
-"""
+INLINE = inline("singular_sliders-inline.toml")
 
 
 def _of(sw, kind):

@@ -1,24 +1,30 @@
-"""``graphkin animate FILE -o cycle.html``: the whole cycle in motion, as one web page."""
+"""``graphkin animate FILE -o cycle.html``: the whole cycle in motion, as one web page.
+
+Sweep the mechanism through its cycle (as `graphkin sweep`) and write one HTML file (no
+network needed) where it turns, with its velocity and acceleration polygons redrawn to
+scale at every posture: play/pause, a drive slider, step ±1, speed; ω, α and a chosen
+point's velocity and acceleration; ranges that cannot be assembled and limit postures
+marked.
+"""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
+from graphkin.commands._args import about, command, write_text, writing
+
 __all__ = ["add_parser", "run"]
+
+
+HELP = ("write a self-contained HTML page of the mechanism turning through "
+        "its cycle, with its velocity and acceleration polygons")
+DESCRIPTION = about(__doc__)
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "animate", help="write a self-contained HTML page of the mechanism turning through "
-                        "its cycle, with its velocity and acceleration polygons",
-        description="Sweep the mechanism through its cycle (as `graphkin sweep`) and write one "
-                    "HTML file (no network needed) where it turns, with its velocity and "
-                    "acceleration polygons redrawn to scale at every posture: play/pause, a "
-                    "drive slider, step ±1, speed; ω, α and a chosen point's velocity and "
-                    "acceleration; ranges that cannot be assembled and limit postures marked.")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "animate", help=HELP, description=DESCRIPTION)
     p.add_argument("-o", "--output", default=None, help="the HTML file to write")
     p.add_argument("--count", type=int, default=360, help="number of postures (default 360)")
     p.add_argument("--from", dest="start", type=float, default=None, metavar="DRIVE",
@@ -38,8 +44,6 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
-    from pathlib import Path
-
     import graphkin
     from graphkin.errors import InputError
     from graphkin.progress import bar
@@ -58,33 +62,22 @@ def run(args: argparse.Namespace) -> int:
         if args.output is not None:
             text = animate_html(mech, count=args.count, start=args.start, stop=args.stop,
                                 centers=args.centers, inflection=args.inflection)
-            out = Path(args.output)
-            try:
-                out.write_text(text, encoding="utf-8")
-            except OSError as exc:
-                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
-                                 key="--output") from None
+            out = write_text(args.output, text, "--output")
             print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
             progress.update(1)
         if args.frames is not None or args.gif is not None:
             from graphkin.render.cycle_frames import write_cycle_frames, write_cycle_gif
 
             if args.frames is not None:
-                try:
+                with writing(f"into {args.frames}", "--frames"):
                     paths = write_cycle_frames(mech, args.frames, count=args.count,
                                                start=args.start, stop=args.stop)
-                except OSError as exc:
-                    raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
-                                     key="--frames") from None
                 print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
                 progress.update(1)
             if args.gif is not None:
-                try:
+                with writing(args.gif, "--gif"):
                     write_cycle_gif(mech, args.gif, count=args.count, start=args.start,
                                     stop=args.stop)
-                except OSError as exc:
-                    raise InputError(f"cannot write {args.gif}: {exc.strerror or exc}",
-                                     key="--gif") from None
                 print(f"wrote {args.gif}", file=sys.stderr)
                 progress.update(1)
     return 0

@@ -1,5 +1,10 @@
 """``graphkin check FILE ANSWERS... [--drawing D] [--csv OUT]``: mark hand solutions.
 
+Compare the values measured on a hand drawing (an answers file, see the README) or a
+velocity/acceleration polygon drawn in CAD (DXF or SVG with labelled vertices) with the
+exact constructions; name the likely mistake under each wrong answer. Several answers
+files mark a stack of students.
+
 Exit status 0 when every answer is within tolerance, 1 when any is not, 2
 when a file cannot be read (``docs/formats/answers.md``).
 """
@@ -12,21 +17,32 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
+from graphkin.commands._args import about, command
+
 if TYPE_CHECKING:
     from graphkin.check import Report
 
 __all__ = ["add_parser", "run"]
 
+_TOLERANCES = (
+    ("--relative", "FRACTION", 'relative tolerance of magnitudes, e.g. 0.02 or "2%%" (overrides '
+     "the answers files)"),
+    ("--angle", "DEG", "angle tolerance of directions and link angles, degrees (overrides the "
+     "answers files)"),
+    ("--drawing-tolerance", "LENGTH", 'drawing accuracy as a length on the sheet, e.g. "0.5 mm": '
+     "a vector whose end is that close on the paper is right (needs the drawing's scale: the "
+     "answers file's tolerance.scale, or the drawing's own)"),
+)
+"""The options that override an answers file's tolerances: flag, metavar, help."""
+
+
+HELP = "check measured answers or a drawn polygon against the exact solution"
+DESCRIPTION = about(__doc__)
+
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "check", help="check measured answers or a drawn polygon against the exact solution",
-        description="Compare the values measured on a hand drawing (an answers file, see the "
-                    "README) or a velocity/acceleration polygon drawn in CAD (DXF or SVG with "
-                    "labelled vertices) with the exact constructions; name the likely mistake "
-                    "under each wrong answer. Several answers files mark a stack of students.")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "check", help=HELP, description=DESCRIPTION)
     p.add_argument("answers", nargs="*", help="answers file(s) (TOML)")
     p.add_argument("--drawing", action="append", default=[], metavar="DXF_OR_SVG",
                    help="a velocity or acceleration polygon drawn with labelled vertices "
@@ -34,16 +50,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--scale", metavar="SCALE",
                    help='drawing scale, e.g. "1 in = 20 ft/s" (default: the scale noted in the '
                         "drawing, else fitted to the input crank's image)")
-    p.add_argument("--relative", metavar="FRACTION",
-                   help='relative tolerance of magnitudes, e.g. 0.02 or "2%%" (overrides the '
-                        "answers files)")
-    p.add_argument("--angle", metavar="DEG",
-                   help="angle tolerance of directions and link angles, degrees (overrides the "
-                        "answers files)")
-    p.add_argument("--drawing-tolerance", metavar="LENGTH",
-                   help='drawing accuracy as a length on the sheet, e.g. "0.5 mm": a vector '
-                        "whose end is that close on the paper is right (needs the drawing's "
-                        "scale: the answers file's tolerance.scale, or the drawing's own)")
+    for flag, metavar, what in _TOLERANCES:
+        p.add_argument(flag, metavar=metavar, help=what)
     p.add_argument("--csv", metavar="OUT",
                    help="write one row of marks per answers file (counts, a summary, and per "
                         "answer the given and exact values, the error, the verdict and a "

@@ -1,5 +1,9 @@
 """``graphkin example list`` / ``graphkin example NAME``: the textbook mechanisms shipped inside.
 
+Print one of the mechanism files shipped with graphkin (Examples 3.1, 3.2, 3.3, 3.9,
+4.4, 4.7, 4.11, 5.4 of the textbook, and a planetary train), to save and edit: graphkin
+example fourbar > fourbar.toml. 'graphkin example list' names them.
+
 Something to start from right after ``pip install graphkin``, with no
 checkout::
 
@@ -17,17 +21,18 @@ from __future__ import annotations
 import argparse
 import sys
 
+from graphkin.commands._args import about, command
+
 __all__ = ["add_parser", "run"]
+
+
+HELP = "list the shipped textbook mechanisms, or print one to start from"
+DESCRIPTION = about(__doc__)
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "example", help="list the shipped textbook mechanisms, or print one to start from",
-        description="Print one of the mechanism files shipped with graphkin (Examples 3.1, "
-                    "3.2, 3.3, 3.9, 4.4, 4.7, 4.11, 5.4 of the textbook, and a planetary "
-                    "train), to save and edit: graphkin example fourbar > fourbar.toml. "
-                    "'graphkin example list' names them.")
+    p = command(sub, "example", help=HELP, description=DESCRIPTION, file=None)
     p.add_argument("name", metavar="NAME", help="an example's name, or 'list'")
     p.add_argument("-o", "--output", metavar="FILE.toml", default=None,
                    help="write the file here instead of standard output")

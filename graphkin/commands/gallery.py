@@ -1,24 +1,29 @@
-"""``graphkin gallery [--check] [--dir gallery]``: rebuild or check the textbook-figure gallery."""
+"""``graphkin gallery [--check] [--dir gallery]``: rebuild or check the textbook-figure gallery.
+
+Solve and draw every mechanism file of the gallery (gallery/mechanisms, gallery/centers,
+gallery/curvature), write the drawings into gallery/drawings and the index
+gallery/README.md with the book's numbers beside graphkin's. With --check, write nothing
+and exit 1 when a committed drawing or the index is out of date.
+"""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
+from graphkin.commands._args import about
+
 __all__ = ["add_parser", "run"]
+
+
+DESCRIPTION = about(__doc__)
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
     # a maintainer's tool (it works on a checkout's gallery/ folder): no help= keeps it
     # out of `graphkin --help`, and it still runs for CI and the gallery's maintainers
-    p = sub.add_parser(
-        "gallery",
-        description="Solve and draw every mechanism file of the gallery (gallery/mechanisms, "
-                    "gallery/centers, gallery/curvature), write the drawings into "
-                    "gallery/drawings and the index gallery/README.md with the book's "
-                    "numbers beside graphkin's. With --check, write nothing and exit 1 when "
-                    "a committed drawing or the index is out of date.")
+    p = sub.add_parser("gallery", description=DESCRIPTION)
     p.add_argument("--dir", default="gallery", help="the gallery folder (default: gallery)")
     p.add_argument("--check", action="store_true",
                    help="exit 1 when a committed drawing is out of date; write nothing")

@@ -1,22 +1,28 @@
-"""``graphkin steps FILE --diagram D -o OUT.html``: the construction step by step, as a web page."""
+"""``graphkin steps FILE --diagram D -o OUT.html``: the construction step by step, as a web page.
+
+Write one HTML file (no network needed) that walks through the construction of a
+diagram: for each step the vector equation with its ✓/? marks, one sentence, and the
+drawing up to that step with the new elements highlighted; previous/next buttons and
+arrow keys.
+"""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
+from graphkin.commands._args import about, command, write_text, writing
+
 __all__ = ["add_parser", "run"]
+
+
+HELP = "write a self-contained HTML page walking through a construction"
+DESCRIPTION = about(__doc__)
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "steps", help="write a self-contained HTML page walking through a construction",
-        description="Write one HTML file (no network needed) that walks through the "
-                    "construction of a diagram: for each step the vector equation with its "
-                    "✓/? marks, one sentence, and the drawing up to that step with the new "
-                    "elements highlighted; previous/next buttons and arrow keys.")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "steps", help=HELP, description=DESCRIPTION)
     p.add_argument("--diagram", "-d", default="posture",
                    choices=("posture", "velocity", "acceleration", "centers", "curvature",
                             "inflection", "bobillier", "hartmann", "cubic", "forces"),
@@ -34,8 +40,6 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
-    from pathlib import Path
-
     import graphkin
     from graphkin.errors import InputError
     from graphkin.render import DiagramUnavailable
@@ -53,20 +57,12 @@ def run(args: argparse.Namespace) -> int:
         return _forces(sol, args)
     try:
         if args.output is not None:
-            out = Path(args.output)
-            text = steps_html(sol, args.diagram, link=args.link)
-            try:
-                out.write_text(text, encoding="utf-8")
-            except OSError as exc:
-                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
-                                 key="--output") from None
+            out = write_text(args.output, steps_html(sol, args.diagram, link=args.link),
+                             "--output")
             print(f"wrote {out}", file=sys.stderr)
         if args.frames is not None:
-            try:
+            with writing(f"into {args.frames}", "--frames"):
                 paths = write_frames(sol, args.diagram, args.frames, link=args.link)
-            except OSError as exc:
-                raise InputError(f"cannot write into {args.frames}: {exc.strerror or exc}",
-                                 key="--frames") from None
             print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
@@ -83,23 +79,15 @@ def _forces(sol: object, args: argparse.Namespace) -> int:
 
     try:
         if args.output is not None:
-            out = Path(args.output)
-            try:
-                out.write_text(forces_steps_html(sol), encoding="utf-8")
-            except OSError as exc:
-                raise InputError(f"cannot write {out}: {exc.strerror or exc}",
-                                 key="--output") from None
+            out = write_text(args.output, forces_steps_html(sol), "--output")
             print(f"wrote {out}", file=sys.stderr)
         if args.frames is not None:
             d = Path(args.frames)
-            try:
+            with writing(f"into {d}", "--frames"):
                 d.mkdir(parents=True, exist_ok=True)
                 frames = forces_frames(sol)
                 for k, (_, svg) in enumerate(frames):
                     (d / f"forces-{k:02d}.svg").write_text(svg, encoding="utf-8")
-            except OSError as exc:
-                raise InputError(f"cannot write into {d}: {exc.strerror or exc}",
-                                 key="--frames") from None
             print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None

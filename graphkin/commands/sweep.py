@@ -1,5 +1,8 @@
 """``graphkin sweep FILE [--from DEG] [--to DEG] [--count N] --csv OUT.csv``: whole cycles.
 
+Solve a mechanism at many values of its (first) drive at once, by the same constructions
+as solve, and write one CSV row per posture. Other drives are held at the file's values.
+
 The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
 velocity and acceleration; empty cells where the mechanism cannot be
@@ -14,19 +17,18 @@ import argparse
 import sys
 from typing import IO, cast
 
-from graphkin.commands._args import MAX_COUNT, bounded_int, finite_float
+from graphkin.commands._args import MAX_COUNT, about, bounded_int, command, finite_float
 
 __all__ = ["add_parser", "run"]
 
 
+HELP = "solve a mechanism over a whole cycle of its drive and write a CSV"
+DESCRIPTION = about(__doc__)
+
+
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "sweep", help="solve a mechanism over a whole cycle of its drive and write a CSV",
-        description="Solve a mechanism at many values of its (first) drive at once, by the same "
-                    "constructions as solve, and write one CSV row per posture. Other drives are "
-                    "held at the file's values.")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "sweep", help=HELP, description=DESCRIPTION)
     p.add_argument("--from", dest="start", type=finite_float, default=None, metavar="DEG",
                    help="first drive value: degrees, or a slider's travel (default: the file's)")
     p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",

@@ -1,5 +1,8 @@
 """``graphkin vector FILE [--json] [--steps]``: solve ``C = A + B`` from a small TOML file.
 
+Solve C = A + B for its two unknowns by the graphic construction of Sec. 2.8 (Table 2.2,
+cases 1-4).
+
 The file (its keys: :mod:`graphkin.kinematics.vector_file`) is read by
 :func:`~graphkin.kinematics.vector_file.load`, the equation solved by
 :func:`graphkin.kinematics.vector_equation.solve_vector_equation` and the
@@ -20,6 +23,7 @@ import argparse
 import json
 import sys
 
+from graphkin.commands._args import about, command
 from graphkin.errors import InputError
 from graphkin.kinematics.vector_equation import NAMES, solve_vector_equation
 from graphkin.kinematics.vector_file import VectorFile, load, loads
@@ -29,12 +33,14 @@ from graphkin.output.vector import vector_text as text_report
 __all__ = ["add_parser", "run", "VectorFile", "load", "loads", "text_report", "to_dict"]
 
 
+HELP = "solve the planar vector equation C = A + B"
+DESCRIPTION = about(__doc__)
+
+
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser("vector", help="solve the planar vector equation C = A + B",
-                       description="Solve C = A + B for its two unknowns by the graphic "
-                                   "construction of Sec. 2.8 (Table 2.2, cases 1-4).")
-    p.add_argument("file", help="vector file (TOML: [A], [B], [C] with magnitude and angle)")
+    p = command(sub, "vector", help=HELP, description=DESCRIPTION,
+                file="vector file (TOML: [A], [B], [C] with magnitude and angle)")
     p.add_argument("--json", action="store_true", help="print the result as JSON")
     p.add_argument("--steps", action="store_true",
                    help="also list every construction step with its marked equation")

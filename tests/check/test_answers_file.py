@@ -6,35 +6,14 @@ import math
 from pathlib import Path
 
 import pytest
+from spec_data import inline
 
 import graphkin
 from graphkin.check import loads_answers, parse_key
 from graphkin.cli import main
 from graphkin.errors import InputError
 
-FOURBAR = """
-units = { length = "in" }
-[links.1]
-A = [0, 0]
-D = [10, 0]
-[links.2]
-A = [0, 0]
-B = [4, 0]
-[links.3]
-B = [0, 0]
-C = [18, 0]
-E = [10, -4]
-[links.4]
-D = [0, 0]
-C = [11, 0]
-[drive]
-link = 2
-angle = 120
-omega = "900 rev/min"
-alpha = 0
-[assembly]
-C = [15, 10]
-"""
+FOURBAR = inline("answers_file-fourbar.toml")
 
 
 @pytest.fixture

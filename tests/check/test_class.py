@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
+from spec_data import inline
 from strategies import mechanisms
 
 import graphkin
@@ -511,28 +512,7 @@ def test_a_nearly_stationary_coupler_is_judged_on_the_paper() -> None:
     from graphkin.check import check, loads_answers
 
     # a near-parallelogram: AB = 4, DC = 4.2, BC = 10.2, AD = 10 (a coupler nearly translating)
-    mech = graphkin.loads("""
-units = { length = "in" }
-[links.1]
-A = [0, 0]
-D = [10, 0]
-[links.2]
-A = [0, 0]
-B = [4, 0]
-[links.3]
-B = [0, 0]
-C = [10.2, 0]
-[links.4]
-D = [0, 0]
-C = [4.2, 0]
-[drive]
-link = 2
-angle = 60
-omega = 10
-alpha = 0
-[assembly]
-C = [12.1, 3.6]
-""")
+    mech = graphkin.loads(inline("class-near_parallelogram.toml"))
     an = solve_analytic(mech)
     w3 = abs(float(an.omega("3")))
     assert 0 < w3 < 0.05 * 10.0

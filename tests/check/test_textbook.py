@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from spec_data import inline
 
 import graphkin
 from graphkin.check import check, loads_answers
@@ -48,18 +49,7 @@ def _only_row(mech_path: Path, text: str):
 
 # ---- the book's graphic answers ----------------------------------------------------
 
-BOOK = """
-omega3 = "25.6 rad/s ccw"
-omega4 = "49.64 rad/s ccw"
-V_CB = "38.4 ft/s"
-V_C = "45.5 ft/s"
-V_E = "27.6 ft/s at 165.3 deg"
-V_F = "31.8 ft/s at 130.9 deg"
-alpha3 = "113 rad/s^2 ccw"
-alpha4 = "1822 rad/s^2 cw"
-A_E = "2580 ft/s^2"
-A_F = "1960 ft/s^2"
-"""
+BOOK = inline("textbook-book.toml")
 
 
 def test_book_answers_pass_at_default_tolerance(fourbar: Path) -> None:
@@ -207,29 +197,7 @@ def test_coriolis_wrong_sense_example_4_4(examples: Path) -> None:
     assert row.mistake.kind == "coriolis" and "left out" in row.mistake.text
 
 
-SLOTTED = """
-title = "A crank pin B driving a slotted arm 2 (the slot through O2)"
-units = { length = "in" }
-[links.1]
-O2 = [0, 0]
-O3 = [0, 4]
-[links.2]
-O2 = [0, 0]
-S = [10, 0]
-[links.3]
-O3 = [0, 0]
-B = [3, 0]
-[[slots]]
-link = 3
-on = 2
-point = "B"
-line = [[0, 0], [1, 0]]
-[drive]
-link = 3
-angle = 0
-omega = 10
-alpha = 0
-"""
+SLOTTED = inline("textbook-slotted.toml")
 
 
 @pytest.mark.parametrize(("given", "kind", "words"), [

@@ -26,6 +26,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from hypothesis import HealthCheck, assume, example, given, settings
+from spec_data import inline
 from strategies import RandomMechanism, fourbars, mechanisms, slider_cranks
 
 import graphkin
@@ -792,38 +793,7 @@ def test_link_that_does_not_turn_is_left_out(examples):
         link_curvature(sol, "2")
 
 
-TRAMMEL = """
-title = "elliptic trammel: both ends of the coupler on frame lines"
-[links.1]
-O = [0, 0]
-X = [1, 0]
-Y = [0, 1]
-[links.2]
-A = [0, 0]
-[links.3]
-A = [0, 0]
-B = [5, 0]
-P = [8, 0]
-[links.4]
-B = [0, 0]
-[[sliders]]
-link = 2
-on = 1
-point = "A"
-line = ["O", "X"]
-[[sliders]]
-link = 4
-on = 1
-point = "B"
-line = ["O", "Y"]
-[drive]
-link = 2
-position = 3
-velocity = 2
-acceleration = 1
-[assembly]
-B = [0, 4]
-"""
+TRAMMEL = inline("curvature-trammel.toml")
 
 
 def test_elliptic_trammel_cardan_circle():

@@ -5,71 +5,15 @@ from __future__ import annotations
 import textwrap
 
 import pytest
+from spec_data import inline
 
 from graphkin.cli import main
 
-FOURBAR = """
-units = { length = "in" }
-[links.1]
-A = [0, 0]
-D = [10, 0]
-[links.2]
-A = [0, 0]
-B = [4, 0]
-[links.3]
-B = [0, 0]
-C = [18, 0]
-[links.4]
-D = [0, 0]
-C = [11, 0]
-[drive]
-link = 2
-angle = 120
-[assembly]
-C = [15, 10]
-"""
+FOURBAR = inline("parse_errors-fourbar.toml")
 
-SLIDER = """
-[links.1]
-A = [0, 0]
-S = [0, -20]
-T = [100, -20]
-[links.2]
-A = [0, 0]
-B = [50, 0]
-[links.3]
-B = [0, 0]
-C = [140, 0]
-[links.4]
-C = [0, 0]
-[[sliders]]
-link = 4
-on = 1
-point = "C"
-line = ["S", "T"]
-[drive]
-link = 2
-angle = 45
-"""
+SLIDER = inline("parse_errors-slider.toml")
 
-SLOT = """
-[links.1]
-A = [0, 0]
-D = [5, 0]
-[links.2]
-A = [0, 0]
-B = [3, 0]
-[links.3]
-D = [0, 0]
-[[slots]]
-link = 2
-on = 3
-point = "B"
-circle = { center = [0, 0], radius = 0 }
-[drive]
-link = 2
-angle = 45
-"""
+SLOT = inline("parse_errors-slot.toml")
 
 CASES = [
     ("syntax", "[links.1\nA = [0, 0]", None, "TOML syntax"),

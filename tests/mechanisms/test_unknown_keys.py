@@ -13,7 +13,7 @@ import tomllib
 from pathlib import Path
 
 import pytest
-from spec_data import EXAMPLES
+from spec_data import EXAMPLES, inline
 
 import graphkin
 from graphkin.cli import main
@@ -22,30 +22,7 @@ from graphkin.keys import MECHANISM, VECTOR, check_keys
 
 ROOT = Path(__file__).resolve().parents[2]
 
-FOURBAR = textwrap.dedent("""
-    title = "Four-bar linkage (Example 3.1)"
-    units = { length = "in" }
-    [links.1]
-    A = [0, 0]
-    D = [10, 0]
-    [links.2]
-    A = [0, 0]
-    B = [4, 0]
-    [links.3]
-    B = [0, 0]
-    C = [18, 0]
-    E = [10, -4]
-    [links.4]
-    D = [0, 0]
-    C = [11, 0]
-    [drive]
-    link = 2
-    angle = 120
-    omega = "900 rev/min cw"
-    alpha = 0
-    [assembly]
-    C = [15, 10]
-""")
+FOURBAR = inline("unknown_keys-fourbar.toml")
 
 FORCES = FOURBAR.replace('units = { length = "in" }', 'units = { length = "in", force = "lbf" }') \
     + textwrap.dedent("""
