@@ -77,6 +77,18 @@ def _term_html(t: Term) -> str:
             f"{html.escape(marks)}</span><span class=\"vec\">{vector_html(t.name)}</span></span>")
 
 
+def _side_html(terms: tuple[Term, ...]) -> str:
+    """One side of a vector equation in HTML, each term with its sign and ✓/? marks."""
+    parts = []
+    for i, t in enumerate(terms):
+        if i == 0:
+            op = "−&nbsp;" if t.sign < 0 else ""
+        else:
+            op = '<span class="op">−</span>' if t.sign < 0 else '<span class="op">+</span>'
+        parts.append(op + _term_html(t))
+    return "".join(parts)
+
+
 def equation_html(eq: VectorEquation) -> str:
     """A vector equation in HTML, each vector with its two marks above it (✓ known, ? unknown).
 
@@ -93,20 +105,9 @@ def equation_html(eq: VectorEquation) -> str:
     ----------
     Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (Eq. 2.16).
     """
-
-    def side(terms: tuple[Term, ...]) -> str:
-        parts = []
-        for i, t in enumerate(terms):
-            if i == 0:
-                op = "−&nbsp;" if t.sign < 0 else ""
-            else:
-                op = '<span class="op">−</span>' if t.sign < 0 else '<span class="op">+</span>'
-            parts.append(op + _term_html(t))
-        return "".join(parts)
-
     case = f' <span class="case">(case {eq.case})</span>' if eq.case else ""
-    return (f'<div class="equation">{side(eq.lhs)}<span class="op">=</span>'
-            f"{side(eq.rhs)}{case}</div>")
+    return (f'<div class="equation">{_side_html(eq.lhs)}<span class="op">=</span>'
+            f"{_side_html(eq.rhs)}{case}</div>")
 
 
 PAGE_DIAGRAMS = (*DIAGRAMS, *CURVATURE_PANELS)
@@ -271,16 +272,7 @@ def sides_html(steps: PageStep) -> str:
         if steps.formula:
             return f'<div class="equation formula">{answer_html(steps.formula)}</div>'
         return ""
-    parts = []
-    for side in steps.sides:
-        out = []
-        for i, t in enumerate(side):
-            if i == 0:
-                op = "−&nbsp;" if t.sign < 0 else ""
-            else:
-                op = '<span class="op">−</span>' if t.sign < 0 else '<span class="op">+</span>'
-            out.append(op + _term_html(t))
-        parts.append("".join(out))
+    parts = [_side_html(side) for side in steps.sides]
     case = f' <span class="case">(case {steps.case})</span>' if steps.case else ""
     return ('<div class="equation">' + '<span class="op">=</span>'.join(parts) + case + "</div>")
 

@@ -20,6 +20,8 @@ curvature, Hain's construction and Ball's point, Fig. 4.38).
 from __future__ import annotations
 
 import re
+import tomllib
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -98,90 +100,15 @@ def curvature_numbers(step: Step, xy: Any, unit: str) -> list[str]:
     return out
 
 
-_WHY: list[tuple[str, str, str, str]] = [
-    # (section, operation, pattern of the output's label, why: {o} output, {a} {b} inputs)
-    ("euler_savary", "join", r"[^']+", "The line through the two points of the link; the line "
-     "through their conjugates is drawn next, and the two lines meet at Q (Fig. 4.29a)."),
-    ("euler_savary", "join", r".*'.*'", "The line through the conjugate points, the centers of "
-     "curvature of their paths (Fig. 4.29a)."),
-    ("euler_savary", "meet", r"Q", "The straight line drawn through I and Q is the collineation "
-     "axis; it belongs to the two rays (Fig. 4.29a)."),
-    ("euler_savary", "parallel", r"I∥.*", "Fig. 4.29b: the point W where this line meets the "
-     "line of the two points starts the search for two more points of the inflection circle."),
-    ("euler_savary", "meet", r"W", "Through W a line parallel to the collineation axis is drawn "
-     "next (Fig. 4.29b)."),
-    ("euler_savary", "parallel", r"W∥.*", "This line intersects the two rays at two additional "
-     "points of the inflection circle (Fig. 4.29b)."),
-    ("euler_savary", "meet", r"J_.+", "{o} lies on the inflection circle: its conjugate point "
-     "is at infinity, and its path has an inflection (Fig. 4.29b)."),
-    ("euler_savary", "perpendicular", r"⊥.*", "A triangle inscribed in a semicircle is a right "
-     "triangle having the diameter as its hypotenuse: the perpendicular erected at {b} passes "
-     "through the inflection pole J, the end of the diameter IJ (Fig. 4.29c)."),
-    ("accelerations", "join", r".*", "The velocity of the point, from the velocity polygon; "
-     "the velocity pole lies on the perpendicular to it through the point (Sec. 3.13)."),
-    ("accelerations", "perpendicular", r".*", "Every point of the link moves perpendicular to "
-     "its line to the velocity pole I, so I lies on this perpendicular (Sec. 3.13)."),
-    ("accelerations", "meet", r".*", "The velocity pole is the point of the link with no "
-     "velocity at this instant: the instant center of the link and the frame (Sec. 4.12)."),
-    ("accelerations", "*", r"A_.*", "The absolute acceleration of the point, from the "
-     "acceleration polygon; it locates the inflection circle (the points with no normal "
-     "acceleration, Sec. 4.15)."),
-    ("collineation_axis", "join", r"[^']+", "The line through the two pins; the line through "
-     "their frame pivots, their conjugate points, meets it at Q (Fig. 4.31)."),
-    ("collineation_axis", "join", r".*'.*'", "The line through the frame pivots, the "
-     "conjugate points of the pins: it meets the line of the pins at Q (Fig. 4.31)."),
-    ("circle", "join", r"N", "The centrode normal is normal to both centrodes at the velocity "
-     "pole; the diameter IJ of the inflection circle lies on it (Sec. 4.12)."),
-    ("four_circles", "point", r"A_.*", "The absolute acceleration of the point, laid off from it "
-     "(Fig. 4.33)."),
-    ("four_circles", "point", r".*", "Fig. 4.33 starts from two points of the link and their "
-     "absolute accelerations; any two points will do."),
-    ("four_circles", "join", r".*", "We extend the two accelerations until they intersect "
-     "(Fig. 4.33)."),
-    ("four_circles", "meet", r".*", "Then we construct a circle through the two points and "
-     "{o} (Fig. 4.33)."),
-    ("four_circles", "circumcircle", r".*", "The four-circle method draws two circles through "
-     "{c}; their second intersection is Γ (Fig. 4.33)."),
-    ("bobillier_conjugate", "point", r".*", "The point whose conjugate, the center of curvature "
-     "of its path, is wanted (Fig. 4.30)."),
-    ("bobillier_conjugate", "join", r"I.*", "This ray serves as one of the two rays that locate "
-     "the collineation axis; the centrode normal, with J and its conjugate J′ at infinity, is "
-     "the other (Fig. 4.30)."),
-    ("bobillier_conjugate", "second_on_circle", r".*", "The point of intersection of the ray "
-     "{b} with the inflection circle (Fig. 4.30)."),
-    ("bobillier_conjugate", "join", r"J_.*", "For the ray through {a} and the centrode normal, "
-     "the collineation axis is a line through I parallel to this line (Fig. 4.29c)."),
-    ("bobillier_conjugate", "join", r"J[^_].*", "The point Q is located by the intersection of "
-     "a line through J and {b} with the collineation axis (Fig. 4.30)."),
-    ("bobillier_conjugate", "meet", r".*", "A line through {o} and J′ at infinity (parallel to "
-     "the centrode normal) intersects the ray at the conjugate point (Fig. 4.30)."),
-    ("hartmann", "point", r".*", "The point whose conjugate, the center of curvature of its "
-     "path, is wanted (Fig. 4.25)."),
-    ("hartmann", "join", r"I.*", "The conjugate point lies on this line through the velocity "
-     "pole (Fig. 4.25)."),
-    ("hartmann", "perpendicular", r"v∥.*", "It cuts off u, the component of the pole velocity v "
-     "parallel to the velocity of the point (Fig. 4.25)."),
-    ("hartmann", "meet", r"u_.*", "u is the component of the pole velocity parallel to the "
-     "velocity of the point, perpendicular to the line to I (Fig. 4.25)."),
-    ("hartmann", "join", r".*", "The intersection of the line through I and a line connecting "
-     "the termini of the two velocities gives the conjugate point (Fig. 4.25)."),
-    ("hain", "join", r"I.*", "{b} lies on the cubic of stationary curvature: its path has "
-     "stationary curvature (Fig. 4.38)."),
-    ("hain", "perpendicular", r".*", "This line intersects the centrode normal and the centrode "
-     "tangent at two corners of a rectangle on I (Fig. 4.38)."),
-    ("hain", "meet", r".*_[NT]", "A corner of the rectangle on I (Fig. 4.38)."),
-    ("hain", "parallelogram", r".*", "The fourth corner {o} of the rectangle is a point of the "
-     "auxiliary line G (Fig. 4.38)."),
-    ("ball", "meet", r"U_G", "U_G is the corner on G of the rectangle of Ball's point U, whose "
-     "corner on the centrode normal is J (Fig. 4.38)."),
-    ("ball", "parallel", r"U_G∥.*", "The rectangle's side from U_G to the centrode tangent."),
-    ("ball", "meet", r"U_T", "U_T and U_N = J are where the line through U perpendicular to IU "
-     "meets T and N."),
-    ("ball", "join", r".*", "U lies on this line, and IU is perpendicular to it (Fig. 4.38)."),
-    ("ball", "perpendicular", r".*", "Its foot on the line U_TJ is Ball's point U."),
-]
-"""Why a step of a curvature figure is drawn, for the steps whose note says only what
-(the book's words, Secs. 4.12-4.17); the first match of section, operation and label wins."""
+def _why_table() -> list[tuple[str, str, str, str]]:
+    """The table of ``why.toml``: (section, operation, label pattern, text)."""
+    with open(Path(__file__).with_name("why.toml"), "rb") as fh:
+        rows = tomllib.load(fh)["why"]
+    return [(r["section"], r["op"], r["label"], r["text"]) for r in rows]
+
+
+_WHY = _why_table()
+"""Why a step of a curvature figure is drawn (``why.toml``, the book's words, Secs. 4.12-4.17)."""
 
 
 def why(step: Step, section: str | None) -> str:

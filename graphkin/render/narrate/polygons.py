@@ -322,30 +322,25 @@ class _Teller(_Reader):
         r = self.dist(a, b)
         val = self.scalar(lab)
         t, _ = self.rate(lab)
+        # the relative vector read off (A^t_BA or V_BA) and what it gives (α or ω), Eq. 4.7 / 3.3
+        rel, kind, read = ((f"A^t_{B}{A}", "A", "the tangential component, read off")
+                           if self.accel else (f"V_{B}{A}", "V", "read off the polygon"))
+        sym, size = lab[:1], abs(val) * r
+        formula = f"{sym}{k} = {rel}/R_{Bn}{A}"
+        numbers = [f"{rel} = {self.q(size, kind)} ({read}).",
+                   f"{sym}{k} = ({self.q(size, kind)})/({self.length(a, b)}) = "
+                   f"{t.split(' = ', 1)[1]}."]
+        turns = f"its sense is the sense in which {rel}, drawn at {B}, turns {B} about {A}."
         if self.accel:
-            at = abs(val) * r
-            formula = f"α{k} = A^t_{B}{A}/R_{Bn}{A}"
-            numbers = [f"A^t_{B}{A} = {self.q(at, 'A')} (the tangential component, read off).",
-                       f"α{k} = ({self.q(at, 'A')})/({self.length(a, b)}) = "
-                       f"{t.split(' = ', 1)[1]}."]
-            text = (f"The tangential component A^t_{B}{A} = α{k} × R_{Bn}{A} gives α{k}; its "
-                    f"sense is the sense in which A^t_{B}{A}, drawn at {B}, turns {B} about {A}.")
-            title = f"Angular acceleration of link {k}: {formula}"
-            refs = "Sec. 4.3, Eq. 4.7"
+            text = f"The tangential component {rel} = {sym}{k} × R_{Bn}{A} gives {sym}{k}; {turns}"
+            title, refs = f"Angular acceleration of link {k}: {formula}", "Sec. 4.3, Eq. 4.7"
         else:
-            v = abs(val) * r
-            formula = f"ω{k} = V_{B}{A}/R_{Bn}{A}"
-            numbers = [f"V_{B}{A} = {self.q(v, 'V')} (read off the polygon).",
-                       f"ω{k} = ({self.q(v, 'V')})/({self.length(a, b)}) = "
-                       f"{t.split(' = ', 1)[1]}."]
-            text = (f"V_{B}{A} = ω{k} × R_{Bn}{A}: its size divided by the length {A}{B} gives "
-                    f"ω{k}; its sense is the sense in which V_{B}{A}, drawn at {B}, turns {B} "
-                    f"about {A}.")
+            text = (f"{rel} = {sym}{k} × R_{Bn}{A}: its size divided by the length {A}{B} gives "
+                    f"{sym}{k}; {turns}")
             if "rolling" in a or "rolling" in b:
                 text = (f"No slip: the wheel's contact point has the velocity of the surface "
                         f"it rolls on, so the wheel turns about it for now. {text}")
-            title = f"Angular velocity of link {k}: {formula}"
-            refs = "Sec. 3.3, Eq. 3.3"
+            title, refs = f"Angular velocity of link {k}: {formula}", "Sec. 3.3, Eq. 3.3"
         return PageStep(title, None, None, formula=formula, text=text, numbers=numbers,
                         refs=refs, vector=True, answers=[lab])
 

@@ -367,7 +367,7 @@ class _Reader:
             text = text[len(title):].lstrip(".;: ")
         if not text and self.sections:
             text = why(lead, self.sections.get(lead.outputs[0]) if lead.outputs else None)
-        if text[:1].islower():  # the rest of a note after its title: a sentence of its own
+        if self.sections and "a" <= text[:1] <= "z":  # a curvature note's rest, a sentence
             text = text[0].upper() + text[1:]
         return PageStep(title, sides, None if lead.equation is None else lead.equation.case,
                         text=text, numbers=numbers, refs=_REFS.get(self.diagram, ""),

@@ -181,14 +181,8 @@ class PageStep:
         if not self.sides:
             return self.formula
 
-        def side(ts: tuple[Term, ...]) -> str:
-            out = ""
-            for i, t in enumerate(ts):
-                op = ("−" if t.sign < 0 else "") if i == 0 else (" − " if t.sign < 0 else " + ")
-                out += op + str(t)
-            return out
-
-        return " = ".join(side(s) for s in self.sides)
+        return " = ".join("".join(_sign(i, t.sign) + str(t) for i, t in enumerate(side))
+                          for side in self.sides)
 
 
 _PLURAL = {"velocity": "velocities", "acceleration": "accelerations"}
@@ -259,12 +253,15 @@ def _pretty(name: str) -> str:
     return name
 
 
+def _sign(i: int, sign: int) -> str:
+    """The sign before the ``i``-th term of a side: ``−`` first, then `` − `` or `` + ``."""
+    if i == 0:
+        return "−" if sign < 0 else ""
+    return " − " if sign < 0 else " + "
+
+
 def _side_words(side: tuple[Term, ...]) -> str:
-    out = ""
-    for i, t in enumerate(side):
-        op = ("−" if t.sign < 0 else "") if i == 0 else (" − " if t.sign < 0 else " + ")
-        out += op + _pretty(t.name)
-    return out
+    return "".join(_sign(i, t.sign) + _pretty(t.name) for i, t in enumerate(side))
 
 
 def _path_words(line: str) -> str:
