@@ -10,8 +10,11 @@ text), so that the same file is not written out again in each test module.
 
 from __future__ import annotations
 
+import functools
+import math
 import tomllib
 from pathlib import Path
+from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "tests" / "data" / "spec"
@@ -30,3 +33,33 @@ def _expected() -> dict:
 
 
 EXPECTED = _expected()
+
+
+def lookup(obj: Any, path: str) -> Any:
+    """The value at a dotted ``path`` of a solution's JSON (``|`` at the end: its magnitude)."""
+    mag = path.endswith("|")
+    for part in path.rstrip("|").split("."):
+        obj = obj[part]
+    return math.hypot(*obj) if mag else obj
+
+
+def assert_expected(got: Any, want: tuple[Any, float], key: str) -> None:
+    """``got`` is the expected value within its tolerance (angles modulo 360°)."""
+    value, tol = want
+    if isinstance(value, list):
+        assert got is not None and len(got) == len(value)
+        for g, w in zip(got, value):
+            assert abs(g - w) <= tol, (got, value)
+    elif key.endswith("angle"):
+        assert abs((got - value + 180) % 360 - 180) <= tol
+    else:
+        assert abs(got - value) <= tol
+
+
+@functools.cache
+def solved_json(path: Path) -> dict:
+    """The JSON of a mechanism file solved (once per session)."""
+    import graphkin
+    from graphkin.output import solution_to_dict
+
+    return solution_to_dict(graphkin.load(path).solve())

@@ -134,8 +134,7 @@ class Diagnoser:
     --------
     >>> import graphkin
     >>> from graphkin.check.answers import loads_answers
-    >>> mech = graphkin.examples.fourbar()
-    >>> ev = Evaluator(graphkin.solve(mech))
+    >>> ev = Evaluator(graphkin.solve(mech := graphkin.examples.fourbar()))
     >>> ans = loads_answers('omega2 = "900 rev/min cw"', mech)  # the file's ω2 is ccw
     >>> Diagnoser(ev).diagnose(ans.given[0], CheckTolerance()).kind
     'sense'
@@ -186,12 +185,10 @@ class Diagnoser:
         Follow-through marking: an answer that is wrong only because an earlier
         answer's mistake was carried through the rest of the construction.
         """
-        mistake, ev = self.variants()[index]
-        try:
-            cand = ev.value(given.key)
-            exact = self.ev.value(given.key)
-        except GraphkinError:
+        both = self._variant_and_exact(index, given)
+        if both is None:
             return False
+        cand, exact = both
         floor = self.ev.floor(given.key.quantity)
         if not self._matches(given, cand, tol, floor, self._reference(given, exact), sheet):
             return False
@@ -205,14 +202,19 @@ class Diagnoser:
         An answer given right that the variant would have made wrong shows the
         student did not make that mistake (it is not carried through).
         """
-        _, ev = self.variants()[index]
-        try:
-            cand = ev.value(given.key)
-            exact = self.ev.value(given.key)
-        except GraphkinError:
+        both = self._variant_and_exact(index, given)
+        if both is None:
             return True
+        cand, exact = both
         floor = self.ev.floor(given.key.quantity)
         return self._matches(given, cand, tol, floor, self._reference(given, exact), sheet)
+
+    def _variant_and_exact(self, index: int, given: Given) -> tuple[Exact, Exact] | None:
+        """The value of ``given``'s key in variant ``index`` and the exact one (None: neither)."""
+        try:
+            return self.variants()[index][1].value(given.key), self.ev.value(given.key)
+        except GraphkinError:
+            return None
 
     def candidates(self, given: Given, exact: Exact) -> Iterator[tuple[Mistake, Exact]]:
         """Every mistaken value worth testing for ``given``, most likely first.
@@ -345,14 +347,7 @@ class Diagnoser:
                                "absolute-for-difference"),
                        Exact(None, self._vec(k, p)))
                 if k == "A":
-                    for comp, name in (("n", "normal"), ("t", "tangential")):
-                        try:
-                            c = self.ev.component(key, p, q, comp)
-                        except GraphkinError:
-                            break
-                        yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
-                                                   f"given for A_{p}{q}", "component-for-whole"),
-                               Exact(None, c))
+                    yield from self._components(key, p, q, f"A_{p}{q}", stop=True)
         except (GraphkinError, ValueError):
             return
 
@@ -365,15 +360,21 @@ class Diagnoser:
                 if q == p or q in self.mech.helper_points \
                         or float(np.hypot(*self._vec("A", q))) > floor:
                     continue
-                key = Key(f"A_{p}{q}", "A", (p, q))
-                for comp, name in (("n", "normal"), ("t", "tangential")):
-                    try:
-                        c = self.ev.component(key, p, q, comp)
-                    except GraphkinError:
-                        continue
-                    yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} "
-                                               f"given for A_{p}", "component-for-whole"),
-                           Exact(None, c))
+                yield from self._components(Key(f"A_{p}{q}", "A", (p, q)), p, q, f"A_{p}",
+                                            stop=False)
+
+    def _components(self, key: Key, p: str, q: str, whole: str,
+                    stop: bool) -> Iterator[tuple[Mistake, Exact]]:
+        """A^n_PQ, then A^t_PQ, each given for ``whole`` (``stop``: none after one fails)."""
+        for comp, name in (("n", "normal"), ("t", "tangential")):
+            try:
+                c = self.ev.component(key, p, q, comp)
+            except GraphkinError:
+                if stop:
+                    return
+                continue
+            yield (Mistake("relative", f"only the {name} component A_{p}{q}^{comp} given for "
+                                       f"{whole}", "component-for-whole"), Exact(None, c))
 
     def _flipped(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
         """The image triangle of the link drawn mirror-wise."""

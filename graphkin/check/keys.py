@@ -203,18 +203,9 @@ def point_on_link(text: str, mech: Mechanism) -> tuple[str, str] | None:
     Examples
     --------
     >>> import graphkin
-    >>> mech = graphkin.loads('''
-    ... [links.1]
-    ... A = [0, 0]
-    ... [links.2]
-    ... A = [0, 0]
-    ... B = [2, 0]
-    ... [drive]
-    ... link = 2
-    ... angle = 90
-    ... ''')
-    >>> point_on_link("B1", mech), point_on_link("B3", mech)
-    (('B', '1'), None)
+    >>> mech = graphkin.examples.fourbar()   # links 1 to 4
+    >>> point_on_link("B4", mech), point_on_link("B5", mech)
+    (('B', '4'), None)
     """
     text = text.replace("@", "")
     for i in range(len(text) - 1, 0, -1):

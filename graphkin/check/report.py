@@ -61,6 +61,7 @@ class Row:
     note: str = ""
     rule: str = ""
     follows: str = ""
+    """For ``follows``: the key of the earlier answer whose mistake this is."""
 
     @property
     def ok(self) -> bool:

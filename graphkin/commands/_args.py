@@ -17,7 +17,7 @@ from pathlib import Path
 from graphkin.errors import InputError
 
 __all__ = ["finite_float", "bounded_float", "bounded_int", "MAX_COUNT", "DPI_RANGE", "command",
-           "writing", "write_text", "about"]
+           "writing", "write_text", "about", "page_options"]
 
 #: The most postures a sweep or plot computes at once (memory grows with it).
 MAX_COUNT = 1_000_000
@@ -111,3 +111,10 @@ def write_text(path: str | Path, text: str, key: str) -> Path:
     with writing(str(out), key):
         out.write_text(text, encoding="utf-8")
     return out
+
+
+def page_options(p: argparse.ArgumentParser, frames: str) -> None:
+    """``-o OUT.html`` (the page) and ``--frames DIR`` (one SVG per ``frames``) of a web page."""
+    p.add_argument("-o", "--output", default=None, help="the HTML file to write")
+    p.add_argument("--frames", default=None, metavar="DIR",
+                   help=f"also write one {frames} into DIR")

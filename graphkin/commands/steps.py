@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphkin.commands._args import about, command, write_text, writing
+from graphkin.commands._args import about, command, page_options, write_text, writing
 
 __all__ = ["add_parser", "run"]
 
@@ -30,9 +30,7 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "hartmann and cubic walk through one figure of the curvature sheet "
                         "(as draw -d does: the inflection and Bresse circles, Bobillier's "
                         "construction, conjugate points, the cubic of stationary curvature)")
-    p.add_argument("-o", "--output", default=None, help="the HTML file to write")
-    p.add_argument("--frames", default=None, metavar="DIR",
-                   help="also write one numbered SVG per step into DIR")
+    page_options(p, "numbered SVG per step")
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
     return p

@@ -22,6 +22,16 @@ from graphkin.commands._args import MAX_COUNT, about, bounded_int, command, fini
 __all__ = ["add_parser", "run"]
 
 
+_COLUMNS = {
+    "--transmission": "add the transmission angle at every pin found by two arcs "
+                      "(transmission_<P>, degrees)",
+    "--centers": "add every instant center (x_I13, y_I13; dx_/dy_ for one at infinity)",
+    "--curvature": "add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
+                   "the inflection poles and diameters and the centers of acceleration Γ of "
+                   "the links (jx_k, inflection_diameter_k, gx_k, ...)",
+}
+"""The optional columns of the CSV: flag, help."""
+
 HELP = "solve a mechanism over a whole cycle of its drive and write a CSV"
 DESCRIPTION = about(__doc__)
 
@@ -38,15 +48,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="number of postures (default 360)")
     p.add_argument("--csv", default="-", metavar="OUT.csv",
                    help="where to write the CSV (default: standard output)")
-    p.add_argument("--transmission", action="store_true",
-                   help="add the transmission angle at every pin found by two arcs "
-                        "(transmission_<P>, degrees)")
-    p.add_argument("--centers", action="store_true",
-                   help="add every instant center (x_I13, y_I13; dx_/dy_ for one at infinity)")
-    p.add_argument("--curvature", action="store_true",
-                   help="add radii and centers of curvature of the paths (rho_P, cx_P, cy_P) and "
-                        "the inflection poles and diameters and the centers of acceleration Γ of "
-                        "the links (jx_k, inflection_diameter_k, gx_k, ...)")
+    for flag, what in _COLUMNS.items():
+        p.add_argument(flag, action="store_true", help=what)
     p.add_argument("--units", default=None, metavar="UNITS",
                    help="write lengths, velocities, accelerations and angular rates in these "
                         "units, e.g. \"ft, ft/s, ft/s^2\" (angles stay in degrees)")

@@ -41,9 +41,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
     p = command(sub, "vector", help=HELP, description=DESCRIPTION,
                 file="vector file (TOML: [A], [B], [C] with magnitude and angle)")
-    p.add_argument("--json", action="store_true", help="print the result as JSON")
-    p.add_argument("--steps", action="store_true",
-                   help="also list every construction step with its marked equation")
+    for flag, what in (("--json", "print the result as JSON"),
+                       ("--steps", "also list every construction step with its marked equation")):
+        p.add_argument(flag, action="store_true", help=what)
     return p
 
 

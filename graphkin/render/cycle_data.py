@@ -158,10 +158,9 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     Parameters
     ----------
     mech : Mechanism
-    count : int
-        Number of postures.
-    start, stop : float, optional
-        The drive range (degrees, or a slider's travel), as for ``graphkin sweep``.
+    count, start, stop
+        The postures: ``count`` values of the drive from ``start`` to ``stop``
+        (degrees, or a slider's travel), as for ``graphkin sweep``.
     centers : bool
         Add every instant center.
     inflection : bool

@@ -498,7 +498,8 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     Raises
     ------
     DiagramUnavailable
-        The diagram has no construction for this object.
+        The diagram has no construction for this object (or, for a figure of the
+        curvature sheet, this link's curvature does not use it).
 
     References
     ----------

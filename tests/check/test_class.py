@@ -35,6 +35,12 @@ def _perp(v: np.ndarray) -> np.ndarray:
     return np.array([-v[1], v[0]])
 
 
+def _carried(first: str, code: str, *rest: str) -> dict[str, tuple[str, str]]:
+    """The expected marks of a mistake carried through: ``first`` WRONG (``code``), the rest
+    following from it."""
+    return {first: ("WRONG", code), **{k: ("follows", f"follows:{first}") for k in rest}}
+
+
 def _vec(v: np.ndarray, unit: str = "ft/s", f: float = FT) -> str:
     v = np.asarray(v, dtype=float) / f
     return f'"{math.hypot(*v):.5g} {unit} at {math.degrees(math.atan2(v[1], v[0])):.3f} deg"'
@@ -124,8 +130,7 @@ def _class(mech_path: Path, tmp: Path) -> dict[str, tuple[Path, dict[str, tuple[
                              f"omega3 = {float(fast.omega('3')):.5g}",
                              f"V_E = {_vec(fast.velocity('E'))}",
                              f"A_C = {_vec(fast.acceleration('C'), 'ft/s^2')}", ""]),
-        {"V_B": ("WRONG", "unit:60/2π"), "omega3": ("follows", "follows:V_B"),
-         "V_E": ("follows", "follows:V_B"), "A_C": ("follows", "follows:V_B")})
+        _carried("V_B", "unit:60/2π", "omega3", "V_E", "A_C"))
     # the other assembly: C mirrored about BD (the crossed four-bar, Sec. 2.5)
     b, dd = np.asarray(an.position("B")), np.asarray(an.position("D"))
     c = np.asarray(an.position("C"))
@@ -140,15 +145,13 @@ def _class(mech_path: Path, tmp: Path) -> dict[str, tuple[Path, dict[str, tuple[
                              f"theta4 = {float(crossed.angle('4')):.3f}",
                              f"omega3 = {float(crossed.omega('3')):.5g}",
                              f"omega4 = {float(crossed.omega('4')):.5g}", ""]),
-        {"theta3": ("WRONG", "branch"), "theta4": ("follows", "follows:theta3"),
-         "omega3": ("follows", "follows:theta3"), "omega4": ("follows", "follows:theta3")})
+        _carried("theta3", "branch", "theta4", "omega3", "omega4"))
     # A_CB^n drawn away from B, carried through the polygon and the image of E
     rn = _reversed_normal(an)
     put("normal", "\n".join([f"alpha3 = {rn['alpha3']:.5g}", f"alpha4 = {rn['alpha4']:.5g}",
                              f"A_C = {_vec(rn['A_C'], 'ft/s^2')}",  # type: ignore[arg-type]
                              f"A_E = {_vec(rn['A_E'], 'ft/s^2')}", ""]),  # type: ignore[arg-type]
-        {"alpha3": ("WRONG", "normal-reversed"), "alpha4": ("follows", "follows:alpha3"),
-         "A_C": ("follows", "follows:alpha3"), "A_E": ("follows", "follows:alpha3")})
+        _carried("alpha3", "normal-reversed", "alpha4", "A_C", "A_E"))
     # a plain positive number for α4, which is clockwise
     a4 = float(an.alpha("4"))
     assert a4 < 0

@@ -7,11 +7,11 @@ their expected values (derived independently: see the comments in expected.toml)
 from __future__ import annotations
 
 import json
-import math
 import tomllib
 from pathlib import Path
 
 import pytest
+from spec_data import assert_expected, lookup, solved_json
 
 import graphkin
 from graphkin.cli import main
@@ -21,41 +21,18 @@ DATA = Path(__file__).resolve().parent.parent / "data" / "forces"
 with open(DATA / "expected.toml", "rb") as _fh:
     EXPECTED = tomllib.load(_fh)
 CASES = [(f, k, v) for f, checks in EXPECTED.items() for k, v in checks.items()]
-_SOLVED: dict[str, dict] = {}
-
-
-def _lookup(obj, path):
-    mag = path.endswith("|")
-    for part in path.rstrip("|").split("."):
-        obj = obj[part]
-    return math.hypot(*obj) if mag else obj
-
-
-def _solved(fname: str) -> dict:
-    if fname not in _SOLVED:
-        _SOLVED[fname] = solution_to_dict(graphkin.load(DATA / fname).solve())
-    return _SOLVED[fname]
 
 
 @pytest.mark.parametrize("fname,key,want", CASES, ids=[f"{f}:{k}" for f, k, _ in CASES])
 def test_forces_spec_value(fname, key, want):
-    value, tol = want
-    got = _lookup(_solved(fname), key)
-    if isinstance(value, list):
-        assert got is not None and len(got) == len(value)
-        for g, w in zip(got, value):
-            assert abs(g - w) <= tol, (got, value)
-    elif key.endswith("angle"):
-        assert abs((got - value + 180) % 360 - 180) <= tol
-    else:
-        assert abs(got - value) <= tol
+    assert_expected(lookup(solved_json(DATA / fname), key), want, key)
 
 
 def test_forces_units_and_absence(capsys):
     """``forces.units`` names force and torque units; no forces object without loads."""
-    data = _solved("ex11_1_static_fourbar.toml")
+    data = solved_json(DATA / "ex11_1_static_fourbar.toml")
     assert data["forces"]["units"] == {"force": "lbf", "torque": "lbf*in"}
-    data = _solved("ex12_4_dynamic_fourbar.toml")
+    data = solved_json(DATA / "ex12_4_dynamic_fourbar.toml")
     assert data["forces"]["units"] == {"force": "N", "torque": "N*mm"}
     plain = solution_to_dict(graphkin.examples.fourbar().solve())
     assert "forces" not in plain

@@ -739,16 +739,7 @@ def test_json_contract():
 
 
 def test_no_rates_and_batch_give_none():
-    sol = graphkin.loads("""
-        [links.1]
-        A = [0, 0]
-        [links.2]
-        A = [0, 0]
-        B = [5, 0]
-        [drive]
-        link = 2
-        angle = 30
-    """).solve()
+    sol = graphkin.loads(inline("curvature-crank_without_rates.toml")).solve()
     assert curvature_json(sol) is None and paths_json(sol) is None
     assert curvature_text(sol) is None
     with pytest.raises(GraphkinError):

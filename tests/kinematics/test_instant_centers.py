@@ -279,12 +279,16 @@ def test_random_every_center_is_an_equal_velocity_point(rm: RandomMechanism) -> 
     assert check_all_centers(rm.mechanism().solve()) >= 1
 
 
+
+def _centers_of(rm: RandomMechanism):  # type: ignore[no-untyped-def]
+    """A random mechanism solved, its instant centers, and its size."""
+    sol = rm.mechanism().solve()
+    return sol, instant_centers(sol), size_of(sol)
+
 @HYP
 @given(mechanisms())
 def test_random_kennedy_collinear_and_replay(rm: RandomMechanism) -> None:
-    sol = rm.mechanism().solve()
-    ic = instant_centers(sol)
-    size = size_of(sol)
+    sol, ic, size = _centers_of(rm)
     ev = ic.construction.evaluate()
     for c in ic:
         np.testing.assert_allclose(ev[c.label], c.point, rtol=1e-12, atol=1e-12 * size)
@@ -341,9 +345,7 @@ def test_random_posture_only(rm: RandomMechanism) -> None:
 @HYP
 @given(mechanisms())
 def test_random_angular_velocity_ratio(rm: RandomMechanism) -> None:
-    sol = rm.mechanism().solve()
-    ic = instant_centers(sol)
-    size = size_of(sol)
+    sol, ic, size = _centers_of(rm)
     wscale = velocity_scale(sol, size) / size
     for i, j in combinations(sol.mechanism.moving, 2):
         wi, wj = float(sol.omega(i)), float(sol.omega(j))

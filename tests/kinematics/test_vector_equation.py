@@ -188,12 +188,17 @@ def test_every_case_agrees_with_the_closed_forms(case, data):
         assert abs(complex(*(s.A + s.B - s.C))) <= REL * scale
 
 
-@given(triangles, st.sampled_from(UNKNOWNS[4]))
-def test_case_4_left_is_left_of_the_known_vector(AB, hidden):
+
+def _solved_case(AB, hidden, case: int):
+    """The knowns of triangle ``AB`` with ``hidden`` unknown (well conditioned), solved."""
     A, B = AB
     k = _knowns(A, B, hidden)
-    assume(_well_conditioned(k, 4))
-    r = solve_vector_equation(k["A"], k["B"], k["C"])
+    assume(_well_conditioned(k, case))
+    return k, solve_vector_equation(k["A"], k["B"], k["C"])
+
+@given(triangles, st.sampled_from(UNKNOWNS[4]))
+def test_case_4_left_is_left_of_the_known_vector(AB, hidden):
+    k, r = _solved_case(AB, hidden, 4)
     assert r.branches == ("left", "right")
     (z,) = [n for n in "ABC" if k[n].is_known]
     # the free vertex seen from the known vector's origin: left = positive cross product
@@ -206,10 +211,7 @@ def test_case_4_left_is_left_of_the_known_vector(AB, hidden):
 
 @given(triangles, st.sampled_from(UNKNOWNS[2]))
 def test_case_2_behind_comes_first_along_the_known_direction(AB, hidden):
-    A, B = AB
-    k = _knowns(A, B, hidden)
-    assume(_well_conditioned(k, 2))
-    r = solve_vector_equation(k["A"], k["B"], k["C"])
+    k, r = _solved_case(AB, hidden, 2)
     assert r.branches == ("behind", "ahead")
     (line,) = [n for n in "ABC" if k[n].magnitude is None]
     u = Vector.polar(1, k[line].angle)  # type: ignore[arg-type]

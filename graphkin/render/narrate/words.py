@@ -28,7 +28,7 @@ PREPARATORY = ("join", "normal_component", "coriolis", "rolling_normal", "appare
 to lay off): narrated together with the step that uses them."""
 
 _ANSWER = re.compile(r"⟦(.*?)⟧")
-_SUBS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+_SUBS = {ord(d): ord("₀") + int(d) for d in "0123456789"}  # digits as subscripts
 
 
 def plain(text: str) -> str:
