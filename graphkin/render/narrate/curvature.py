@@ -81,7 +81,7 @@ def curvature_numbers(step: Step, xy: Any, unit: str) -> list[str]:
     """ρ of a point's path, where a step finds its center of curvature (``E'`` of ``E``).
 
     ``xy(label)`` is the point's position (or None); the radius of curvature is
-    the distance from the point to its conjugate, ρ = R_EE′ (Sec. 4.12).
+    the distance from the point to its conjugate, ρ = |EE′| (Sec. 4.12).
     """
     out: list[str] = []
     if step.role.value == "given":
@@ -95,7 +95,7 @@ def curvature_numbers(step: Step, xy: Any, unit: str) -> list[str]:
         if p is None or q is None:
             continue
         rho = float(np.hypot(*(np.asarray(q) - np.asarray(p))))
-        out.append(f"The radius of curvature of the path of {base}: ρ_{base} = R_{base}{base}′ "
+        out.append(f"The radius of curvature of the path of {base}: ρ_{base} = |{base}{base}′| "
                    f"= ⟦{fmt(_round(rho), 4)} {unit}⟧.")
     return out
 

@@ -75,6 +75,7 @@ def _sym_html(text: str) -> str:
     # the other points with subscripts (J_B, C_N, Q_Γ, U_T; Figs. 4.29, 4.33, 4.38)
     # (written together as the book writes a rectangle: IC_NC_GC_T is I C_N C_G C_T)
     esc = re.sub(r"(?<![a-z0-9_])([A-Z])_([A-Z]\d?|Γ)", r"\1<sub>\2</sub>", esc)
+    esc = re.sub(r"ρ_([A-Z]\d?)", r"ρ<sub>\1</sub>", esc)  # a path's radius of curvature
     return re.sub(r"([ωα])(\d+)", r"\1<sub>\2</sub>", esc)
 
 
