@@ -16,7 +16,7 @@ import numpy as np
 from graphkin.errors import ConstructionError, InputError
 from graphkin.forces.analytic import applied_wrenches, solve_matrix
 from graphkin.forces.graphic import BuiltForces, NotDecomposable, Partial, build_forces
-from graphkin.forces.joints import PIN, SLIDE, Geometry, Joint, geometry, joints_of
+from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint, geometry, joints_of
 from graphkin.forces.ops import line_of
 from graphkin.kinematics.solution import Solution
 from graphkin.tolerance import Tolerance
@@ -252,7 +252,11 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
 
 def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
                        notes: list[str], tol: Tolerance | None) -> None:
-    """Tilt each rough slider's line of action by the friction angle (Sec. 11.10, Ex 11.4).
+    """Tilt each rough slider's (or pin in a slot's) force by the friction angle (Sec. 11.10).
+
+    Ex 11.4 (a block on the ground), Ex 11.5 (a follower in two sliding bearings,
+    each a pin of the frame in the follower's straight slot: its force, through the
+    pin, leans from the slot's normal).
 
     As the book recommends, the problem is first solved without friction to
     find the sense of each normal force; the friction force opposes the
@@ -265,9 +269,13 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
     for j in joints:
         src = j.source
-        if j.kind != SLIDE or src is None or src.index not in mech.friction:
+        if j.kind not in (SLIDE, SLOT) or src is None or src.key not in mech.friction:
             continue
-        mu, impending = mech.friction[src.index]
+        mu, impending = mech.friction[src.key]
+        if j.key not in geo.along:
+            raise InputError("friction is modelled along a straight line: a pin in a "
+                             "circular slot cannot have friction = ...",
+                             key=f"{src.key}.friction", file=mech.source)
         n, u = geo.normal[j.key], geo.along[j.key]
         on_block = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
         c = float(on_block @ n)
