@@ -19,6 +19,7 @@ from graphkin.forces.graphic import BuiltForces, NotDecomposable, Partial, build
 from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint, geometry, joints_of
 from graphkin.forces.ops import line_of
 from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import Slider, Slot
 from graphkin.tolerance import Tolerance
 
 if TYPE_CHECKING:
@@ -269,7 +270,8 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
     for j in joints:
         src = j.source
-        if j.kind not in (SLIDE, SLOT) or src is None or src.key not in mech.friction:
+        if j.kind not in (SLIDE, SLOT) or not isinstance(src, (Slider, Slot)) \
+                or src.key not in mech.friction:
             continue
         mu, impending = mech.friction[src.key]
         if j.key not in geo.along:

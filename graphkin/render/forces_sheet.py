@@ -436,8 +436,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     polys = _polygons(fs)
     fmax = 0.0
     for _, _, items in polys:
-        path = np.cumsum([np.zeros(2)] + [v for _, v, _, _ in items], axis=0)
-        fmax = max(fmax, float(max(path.max(axis=0) - path.min(axis=0))))
+        run = np.cumsum([np.zeros(2)] + [v for _, v, _, _ in items], axis=0)
+        fmax = max(fmax, float(max(run.max(axis=0) - run.min(axis=0))))
     fscale = choose_scale(max(fmax, 1e-300), big * 0.8, pu, mech.force_unit)
     fk = fscale.per_inch
     for lid, tag, items in polys:

@@ -65,8 +65,8 @@ def wheels(draw: st.DrawFn) -> dict[str, Any]:
     loads = []
     for link, pt in (("4", "H"), ("3", "M")):
         if draw(st.booleans()):
-            loads.append({"link": int(link), "point": pt,
-                          "force": f"{draw(st.floats(1, 100))} N at {draw(st.floats(-180, 180))} deg"})
+            size, angle = draw(st.floats(1, 100)), draw(st.floats(-180, 180))
+            loads.append({"link": int(link), "point": pt, "force": f"{size} N at {angle} deg"})
     if draw(st.booleans()):
         loads.append({"link": 4, "torque": draw(st.floats(-2000, 2000))})
     if not loads or draw(st.booleans()):
