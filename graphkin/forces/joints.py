@@ -115,17 +115,22 @@ def joints_of(mech: Mechanism) -> list[Joint]:
     contact, a pin-like joint at ``P_ij`` (the pitch point); the rolling
     pair's equivalent slot (a kinematic device) carries no force.
 
+    Gear teeth (``pressure_angle`` in ``[[rolling]]``, Sec. 11.11, Fig.
+    11.14): one unknown, the force through the pitch point along the pressure
+    line (:func:`graphkin.forces.solve.solve_forces` tilts it).
+
     Raises
     ------
     InputError
-        Gears on two fixed centers (their force lies along the pressure line,
-        Fig. 11.14: not modelled yet).
+        Gears on two fixed centers without a pressure angle (two unknown
+        components there would leave the pair statically indeterminate).
     """
     raw: list[tuple[str, str, str, str, Slider | Slot | Rolling | None]] = []
     for r in mech.rolling:
-        if r.fixed_centers:
-            raise InputError("force analysis of gears on two fixed centers needs the "
-                             "pressure line (Sec. 11.11), not supported yet", key=r.key,
+        if r.fixed_centers and r.key not in mech.pressure:
+            raise InputError("gears on two fixed centers transmit their force along the "
+                             "pressure line (Sec. 11.11, Fig. 11.14): give pressure_angle "
+                             "(degrees, e.g. 20)", key=f"{r.key}.pressure_angle",
                              file=mech.source)
     for p in mech.pins:
         hub = FRAME if FRAME in p.links else p.links[0]
@@ -137,8 +142,8 @@ def joints_of(mech: Mechanism) -> list[Joint]:
     for t in mech.slots:
         if not t.key.endswith(":slot"):  # a rolling pair's equivalent slot carries no force
             raw.append((t.link, t.on, SLOT, t.point, t))
-    for r in mech.rolling:
-        raw.append((r.link, r.on, PIN, contact_name(r), r))
+    for r in mech.rolling:  # gear teeth: one unknown along the pressure line
+        raw.append((r.link, r.on, SLOT if r.key in mech.pressure else PIN, contact_name(r), r))
     pairs: dict[tuple[str, str], int] = {}
     for a, b, *_ in raw:
         lo, hi = sorted((a, b), key=id_order)
@@ -186,6 +191,10 @@ def geometry(sol: Solution, joints: list[Joint]) -> Geometry:
         src = j.source
         if isinstance(src, Rolling):
             points[j.point] = contact_point(sol, src)
+            if j.kind == SLOT:  # gear teeth: first along the common tangent (solve.py tilts)
+                c = np.asarray(sol.position(src.center, src.link), dtype=float)
+                e = (c - points[j.point]) / float(np.hypot(*(c - points[j.point])))
+                normal[j.key] = np.array([-e[1], e[0]])
             continue
         if src is None:
             continue

@@ -288,6 +288,11 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                 if isinstance(item, Mapping) and ("friction" in item or "impending" in item):
                     raise fail(f"{table}[{i}].friction", "friction acts in a force analysis: "
                                "the file has no [[loads]] and no [inertia.N]")
+        raw = data.get("rolling", [])
+        for i, item in enumerate(raw if isinstance(raw, list) else [raw]):
+            if isinstance(item, Mapping) and "pressure_angle" in item:
+                raise fail(f"rolling[{i}].pressure_angle", "the pressure angle acts in a force "
+                           "analysis: the file has no [[loads]] and no [inertia.N]")
         return out
     if "loads" not in data and "inertia" not in data:
         raise fail("gravity", "gravity acts on the links with [inertia.N] (mass and "
@@ -409,6 +414,19 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
         friction[key] = (float(mu), imp)
     if friction:
         out["friction"] = friction
+    pressure: dict[str, float] = {}
+    raw_r = data.get("rolling", [])
+    for i, item in enumerate(raw_r if isinstance(raw_r, list) else [raw_r]):
+        if not isinstance(item, Mapping) or "pressure_angle" not in item:
+            continue
+        phi = item["pressure_angle"]
+        if isinstance(phi, bool) or not isinstance(phi, (int, float)) or not \
+                (math.isfinite(float(phi)) and 0 <= float(phi) < 45):
+            raise fail(f"rolling[{i}].pressure_angle", "the pressure angle of the gear teeth "
+                       f"is a number of degrees, 0 <= φ < 45 (20 is usual), not {phi!r}")
+        pressure[f"rolling[{i}]"] = math.radians(float(phi))
+    if pressure:
+        out["pressure"] = pressure
 
     if "gravity" in data:
         g = data["gravity"]

@@ -233,6 +233,9 @@ class Mechanism:
     """Slider or slot key (``sliders[0]``, ``slots[1]``) -> (μ, impending motion
     ``"ahead"``/``"behind"`` or None: from the velocity) for sliders and pins in slots
     with Coulomb friction (Sec. 11.10, an extension of forces.md)."""
+    pressure: dict[str, float] = field(default_factory=dict)
+    """Rolling pair key (``rolling[0]``) -> pressure angle φ (rad) of gear teeth: the contact
+    force acts along the pressure line (Sec. 11.11, Fig. 11.14; an extension of forces.md)."""
 
     @property
     def has_forces(self) -> bool:

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -42,6 +42,7 @@ from graphkin.render.sheet import (
     _frame,
     _layout,
 )
+from graphkin.render.text import math_escape
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
@@ -56,6 +57,8 @@ DRIVE = "#2e7d32"
 """Colour of the drive's torque or force."""
 JOINT = "#000000"
 """Colour of a joint force."""
+GREY_INK = "#5a5a5a"
+"""Colour of a rough joint force's normal and friction components."""
 ARROW_IN = 0.55
 """Length of a force's arrow on a free body, in inches of paper."""
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -71,6 +74,11 @@ class Force:
     at: np.ndarray
     color: str
     raw: tuple[str, ...] = ()
+    along: np.ndarray | None = None
+    """A rough joint's sliding direction: the force is drawn with its normal and friction
+    components (Sec. 11.9, Fig. 11.11b)."""
+    parts: tuple[str, str] = ("", "")
+    """The components' labels (``F₁₄ⁿ``, ``F₁₄ᵗ`` as mathtext)."""
 
 
 @dataclass
@@ -174,15 +182,24 @@ def forces_on(fs: ForceSolution, lid: str) -> list[Force]:
         if lid in (j.lo, j.hi):
             w = fs.forces[j.key][:2]
             n = force_name(j.label(lid))
-            out.append(Force(n, n, w if lid == j.hi else -w, fs.point(j.key), JOINT,
-                             (j.label(lid), j.label(j.other(lid)))))
+            jf = Force(n, n, w if lid == j.hi else -w, fs.point(j.key), JOINT,
+                       (j.label(lid), j.label(j.other(lid))))
+            src = j.source
+            if src is not None and getattr(src, "key", None) in mech.friction \
+                    and j.key in fs.geometry.along:
+                by, at = j.other(lid), j.key.partition("@")[2]
+                tail = f" at {at}" if at else ""
+                jf.along = fs.geometry.along[j.key]
+                jf.parts = (f"$F^{{n}}_{{{by}{lid}}}${tail}", f"$F^{{t}}_{{{by}{lid}}}${tail}")
+            out.append(jf)
     for d in mech.drives:
         if d.link == lid and d.kind == "position" and d.slider is not None:
             key = next(j.key for j in fs.joints if j.source is d.slider)
             u = fs.geometry.along[key]
             n = f"F_{d.slider.point}"
-            out.append(Force(n, f"F{d.slider.point}" if len(d.slider.point) > 1 else
-                             f"F_{d.slider.point}", fs.drives[lid][1] * u,
+            esc = math_escape(d.slider.point)
+            out.append(Force(n, f"$F_{{{esc}}}$" if esc is not None else n,
+                             fs.drives[lid][1] * u,
                              fs.geometry.points[d.slider.point], DRIVE,
                              (f"F_{d.slider.point}·u",)))
     return out
@@ -204,7 +221,7 @@ def _link_items(fs: ForceSolution, p: Panel, lid: str, prefix: str,
     elif len(pts) == 2:
         g.items.append(Item("path", pts, "link", overrides={"color": "#000000", "lw": 2.0}))
     for j in fs.joints:
-        if lid in (j.lo, j.hi) and j.kind != "pin":
+        if lid in (j.lo, j.hi) and j.kind != "pin" and not j.point.startswith("P_"):
             q = fs.geometry.points[j.point]
             g.items.append(Item("marker", np.array([q]), "pin",
                                 overrides={"marker": "s", "ms": 9.0}))
@@ -237,7 +254,7 @@ def _results(fs: ForceSolution) -> list[Row]:
     rows: list[Row] = []
 
     def polar(v: np.ndarray) -> str:
-        ang = round(math.degrees(math.atan2(v[1], v[0])), 2)
+        ang = round(math.degrees(math.atan2(v[1], v[0])), 2) + 0.0  # no "-0.00°"
         return f"{fmt(float(np.hypot(*v)), 4)} ∠ {180.0 if ang == -180.0 else ang:.2f}°"
 
     for j in fs.joints:
@@ -254,7 +271,10 @@ def _results(fs: ForceSolution) -> list[Row]:
             rows.append(Row(f"T_1{lid}", f"T1{lid}".translate(_SUB), f"{fu}·{lu}",
                             fmt(val, 5), "—" if e2 is None else fmt(e2, 5), diff))
         else:
-            rows.append(Row(f"F_drive_{lid}", f"input force on {lid}", fu, fmt(val, 5),
+            d = next(d for d in mech.drives if d.link == lid)
+            what_ = f"F_{d.slider.point} (input, on {lid})" if d.slider is not None else \
+                f"input force on {lid}"
+            rows.append(Row(f"F_drive_{lid}", what_, fu, fmt(val, 5),
                             "—" if e2 is None else fmt(e2, 5), diff))
     return rows
 
@@ -353,6 +373,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     loads = [f for lid in moving for f in on[lid] if f.color != JOINT]
     # ---- the length scale: the mechanism, and its loads' arrows (fixed on paper)
     pts = mechanism_extent(src) or [np.zeros(2)]
+    for r in mech.rolling:
+        pts += _circle_extent(fs, r, r.on)
     lo, hi = _extent(pts)
     lscale = choose_scale(float(max(hi - lo)) or 1.0, big, pu, mech.length_unit)
     for _ in range(2):
@@ -369,6 +391,11 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                 mech.length_unit, lo, hi, lscale, paper is not None)
     panels.append(pm)
     paint_mechanism(src, pm, None, set())
+    for r in mech.rolling:  # the other gear's pitch circle (the painter draws the rolling one)
+        if r.on_center is not None and r.on_radius is not None:
+            c = np.asarray(sol.links[r.on].position(r.on_center), dtype=float)
+            pm.group(f"forces-mechanism-pitch-{r.on}", 0.95).items.append(
+                Item("circle", np.array([c]), "result-arc", radius=r.on_radius))
     for f in loads:
         g = pm.group(f"forces-mechanism-{f.name}", 3.0, key=f"load-{f.name}")
         u = _unit(f.vector)
@@ -376,6 +403,9 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                f"forces-mechanism-{f.name}")
         _request(pm, g, f.text, f.at - u * ARROW_IN * k * 0.6,
                  f"forces-mechanism-label-{f.name}", f.color, colors, np.array([-u[1], u[0]]))
+    for lid in moving:
+        for name, text, tq, at in couples_on(fs, lid):
+            _couple(pm, f"forces-mechanism-{name}", at, tq, text, LOAD, k, colors)
     # ---- (b...) the free bodies, to the same length scale
     for lid in moving:
         names = [n for n in mech.links[lid].points if n not in mech.helper_points]
@@ -392,11 +422,20 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
             content.append(x)
         if lid in fs.inertia:
             content.append(np.asarray(sol.position(mech.inertia[lid].center, lid)))
+        for r in mech.rolling:
+            if lid in (r.link, r.on):
+                content += [fs.geometry.points[j.point] for j in fs.joints
+                            if j.point.startswith("P_") and j.point in fs.geometry.points
+                            and lid in (j.lo, j.hi)]
+                content += _circle_extent(fs, r, lid)
         clo, chi = _extent(content)
         p = _panel(f"fbd-{lid}", f"({next(letters)}) free body of link {lid}",
                    mech.length_unit, clo, chi, lscale, paper is not None)
         panels.append(p)
         _link_items(fs, p, lid, f"fbd-{lid}", colors)
+        _pitch_circles(fs, p, lid, p.group(f"fbd-{lid}-circles", 0.95))
+        for name, text, tq, at in couples_on(fs, lid):
+            _couple(p, f"fbd-{lid}-{name}", at, tq, text, LOAD, k, colors)
         if known is not None and f"l_{lid}" in known and fs.built is not None:
             ln = fs.built.values[f"l_{lid}"]  # a two-force member's line (Sec. 11.6)
             g = p.group(f"fbd-{lid}-two-force-line", 0.9, highlight=hot((f"l_{lid}",)))
@@ -407,9 +446,27 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
             if float(np.hypot(*f.vector)) == 0 or not seen(f.raw):
                 continue
             u = _unit(f.vector)
+            gl = p.group(f"fbd-{lid}-{f.name}-line", 2.0, highlight=hot(f.raw))
+            _line_of_action(p, gl, f.at, u)  # under every arrow
             g = p.group(f"fbd-{lid}-{f.name}", 3.0, highlight=hot(f.raw))
-            _line_of_action(p, g, f.at, u)
             tail = f.at - u * ARROW_IN * k
+            if f.along is not None:  # a rough joint: normal and friction components
+                size = float(np.hypot(*f.vector))
+                ft = float(f.vector @ f.along) * f.along
+                for comp, text, tag in ((f.vector - ft, f.parts[0], "n"),
+                                        (ft, f.parts[1], "t")):
+                    if float(np.hypot(*comp)) < 1e-9 * size:
+                        continue
+                    gc = p.group(f"fbd-{lid}-{f.name}-{tag}", 2.9, highlight=hot(f.raw))
+                    t0 = f.at - comp / size * ARROW_IN * k
+                    gc.items.append(Item("arrow", np.array([t0, f.at]), "vector-n",
+                                         gid=f"fbd-{lid}-{f.name}-{tag}",
+                                         key=f"fbd-{lid}-{f.name}-{tag}", head=0.07 * k,
+                                         width=0.025 * k,
+                                         overrides={"color": GREY_INK, "lw": 0.9}))
+                    cu = _unit(comp)
+                    _request(p, gc, text, (t0 + f.at) / 2, f"fbd-{lid}-label-{f.name}-{tag}",
+                             GREY_INK, colors, np.array([-cu[1], cu[0]]))
             _arrow(g, tail, f.at, k, f.color, f"fbd-{lid}-{f.name}", f"fbd-{lid}-{f.name}")
             _request(p, g, f.text, (tail + f.at) / 2, f"fbd-{lid}-label-{f.name}", f.color,
                      colors, np.array([-u[1], u[0]]))
@@ -489,28 +546,88 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     if paper is None:  # room under the title for the line that states both scales
         sheet.size = (sheet.size[0], sheet.size[1] + SCALES_H)
     out.sheet = sheet
-    out.scales = f"lengths {lscale.text};  forces {fscale.text}"
+    out.scales = f"lengths {lscale.text}" + (f";  forces {fscale.text}" if polys else "")
     return out
 
 
 def _torque(fs: ForceSolution, p: Panel, lid: str, o: np.ndarray, k: float,
             colors: dict[str, str], hot: bool) -> None:
     """The drive's torque T₁₂ as an arc with an arrowhead about the pivot (Ex 11.1 step 7)."""
-    tq = fs.drives[lid][1]
+    _couple(p, f"fbd-{lid}-torque", o, fs.drives[lid][1], f"T1{lid}".translate(_SUB), DRIVE,
+            k, colors, hot)
+
+
+def _couple(p: Panel, gid: str, o: np.ndarray, tq: float, text: str, color: str, k: float,
+            colors: dict[str, str], hot: bool = False) -> None:
+    """A couple as an arc with an arrowhead about ``o``, labelled with its name and sense."""
     r = 0.22 * k
-    g = p.group(f"fbd-{lid}-torque", 3.3, highlight=hot, key=f"fbd-{lid}-torque")
+    g = p.group(gid, 3.3, highlight=hot, key=gid)
     g.items.append(Item("arc", np.array([o]), "rate", radius=r, theta1=30.0, theta2=300.0,
-                        gid=f"fbd-{lid}-torque-arc", overrides={"color": DRIVE, "lw": 1.2}))
+                        gid=f"{gid}-arc", overrides={"color": color, "lw": 1.2}))
     tip = 300.0 if tq >= 0 else 30.0
     a = math.radians(tip)
     e = o + r * np.array([math.cos(a), math.sin(a)])
     tang = np.array([-math.sin(a), math.cos(a)]) * (1.0 if tq >= 0 else -1.0)
-    _arrow(g, e - tang * 0.09 * k, e, k, DRIVE, f"fbd-{lid}-torque-head",
-           f"fbd-{lid}-torque-head")
+    _arrow(g, e - tang * 0.09 * k, e, k, color, f"{gid}-head", f"{gid}-head")
     sense = "ccw" if tq > 0 else "cw" if tq < 0 else ""
     at = o + r * np.array([math.cos(math.radians(165)), math.sin(math.radians(165))])
-    _request(p, g, f"T1{lid}".translate(_SUB) + f" {sense}", at, f"fbd-{lid}-torque-label",
-             DRIVE, colors, np.array([-1.0, 0.5]))
+    _request(p, g, f"{text} {sense}", at, f"{gid}-label", color, colors,
+             np.array([-1.0, 0.5]))
+
+
+def couples_on(fs: ForceSolution, lid: str) -> list[tuple[str, str, float, np.ndarray]]:
+    """The applied couples of a link: (gid name, printed name, torque, where to draw it)."""
+    from graphkin.forces.graphic import applied_labels
+    from graphkin.render.forces import force_name
+
+    sol, mech = fs.solution, fs.mechanism
+    names = [n for n in mech.links[lid].points if n not in mech.helper_points]
+    pts = [np.asarray(sol.position(n, lid)) for n in names]
+    out = []
+    for label, kind, src in applied_labels(mech, fs.dynamic).get(lid, []):
+        if kind == "couple" and src.torque:
+            at = np.mean(pts, axis=0) if len(pts) > 2 else (pts[0] if pts else np.zeros(2))
+            for r in mech.rolling:  # a gear: about its center
+                if r.link == lid:
+                    at = np.asarray(sol.position(r.center, lid))
+            out.append((label, force_name(label), float(src.torque), at))
+    return out
+
+
+def _circle_extent(fs: ForceSolution, r: Any, lid: str) -> list[np.ndarray]:
+    """The corners of the box around a rolling pair's circle on link ``lid`` (if any)."""
+    sol = fs.solution
+    if r.link == lid:
+        c, rad = np.asarray(sol.position(r.center, lid)), float(r.radius)
+    elif r.on == lid and r.on_center is not None and r.on_radius is not None:
+        c = np.asarray(sol.links[lid].position(r.on_center), dtype=float)
+        rad = float(r.on_radius)
+    else:
+        return []
+    return [c - rad, c + rad]
+
+
+def _pitch_circles(fs: ForceSolution, p: Panel, lid: str, g: Group) -> list[np.ndarray]:
+    """A rolling link's circle (a gear's pitch circle, a wheel) and each point of contact."""
+    sol, mech = fs.solution, fs.mechanism
+    out: list[np.ndarray] = []
+    for r in mech.rolling:
+        if r.link == lid:
+            c = np.asarray(sol.position(r.center, lid))
+            g.items.append(Item("circle", np.array([c]), "result-arc", radius=r.radius))
+            out += [c - r.radius, c + r.radius]
+        elif r.on == lid and r.on_center is not None and r.on_radius is not None:
+            c = np.asarray(sol.links[lid].position(r.on_center), dtype=float)
+            g.items.append(Item("circle", np.array([c]), "result-arc", radius=r.on_radius))
+            out += [c - r.on_radius, c + r.on_radius]
+    for j in fs.joints:
+        if lid in (j.lo, j.hi) and j.point.startswith("P_") and j.point in fs.geometry.points:
+            q = fs.geometry.points[j.point]
+            g.items.append(Item("marker", np.array([q]), "point"))
+            p.labels.append(LabelRequest("P", q, "label-small", f"{g.gid}-label-P", g,
+                                         key=f"{g.gid}-label-P"))
+            out.append(q)
+    return out
 
 
 def paper_forces_sheet(fs: ForceSolution, paper: str, *, upto: int | None = None,

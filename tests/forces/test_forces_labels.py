@@ -3,14 +3,16 @@
 The same measurement as ``tests/render/test_labels.py`` (text boxes from
 matplotlib's font metrics against each other and against every drawn segment
 of another group, :func:`graphkin.render.labels.collisions`), for the forces
-drawing of every forces example (tests/data/forces) and every Chapter 11-12
-gallery file, on a free sheet and on an A4 handout page.
+drawing of every forces example (tests/data/forces), every Chapter 11-12
+gallery file and the rolling-contact files of tests/forces/data, on a free
+sheet and on an A4 handout page.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import graphkin
@@ -19,7 +21,8 @@ from graphkin.render.labels import collisions
 
 ROOT = Path(__file__).resolve().parents[2]
 FILES = sorted((ROOT / "tests" / "data" / "forces").glob("ex1*.toml")) + sorted(
-    (ROOT / "gallery" / "mechanisms").glob("ex1[12]_*.toml"))
+    (ROOT / "gallery" / "mechanisms").glob("ex1[12]_*.toml")) + sorted(
+    (ROOT / "tests" / "forces" / "data").glob("*.toml"))
 
 
 @pytest.mark.parametrize("sheet", [None, "a4"])
@@ -47,3 +50,24 @@ def test_collisions_sees_a_force_label_moved_onto_a_line():
     t = d.texts["fbd-4-label-F₃₄"]
     t.set_position(tuple((arrow.tail + arrow.tip) / 2))
     assert collisions(d)
+
+
+def test_rough_joint_components_are_lettered():
+    """Ex 11.4: the ground's force on the block with its normal and friction components."""
+    d = draw(graphkin.load(ROOT / "gallery" / "mechanisms" / "ex11_4_slider_crank_friction.toml")
+             .solve(), "forces")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert {"$F^{n}_{14}$", "$F^{t}_{14}$", "F₁₄"} <= texts
+    # the components add up to the force (a parallelogram with one corner at its point)
+    f, n, t = (d[f"fbd-4-F₁₄{s}"] for s in ("", "-n", "-t"))
+    np.testing.assert_allclose(f.tip, n.tip)
+    np.testing.assert_allclose((n.tip - n.tail) + (t.tip - t.tail), f.tip - f.tail, atol=1e-9)
+
+
+def test_gears_draw_pitch_circles_and_the_pitch_point():
+    d = draw(graphkin.load(ROOT / "tests" / "forces" / "data" / "spur_gears.toml").solve(),
+             "forces")
+    texts = {k: t.get_text() for k, t in d.texts.items()}
+    assert texts["fbd-3-label-F₂₃"] == "F₂₃" and texts["fbd-2-circles-label-P"] == "P"
+    assert texts["fbd-3-M_3-label"] == "M₃ cw"
+    assert "forces" not in d.texts["force-scale"].get_text()  # no polygon, no force scale
