@@ -97,8 +97,8 @@ def label_text(name: str) -> str:
 
     Examples
     --------
-    >>> label_text("F₃₄"), label_text("−m₃A_G₃")
-    ('F₃₄', '$-m_{3}A_{G_{3}}$')
+    >>> label_text("F₃₄"), label_text("−m₃A_G₃"), label_text("F_A")
+    ('F₃₄', '$-m_{3}A_{G_{3}}$', '$F_{A}$')
     """
     if name.startswith("−m") and "A_" in name:
         back = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
@@ -109,6 +109,10 @@ def label_text(name: str) -> str:
         tail = g[len(head):]
         gtxt = f"{head}_{{{tail}}}" if tail else head
         return f"$-m_{{{link}}}A_{{{gtxt}}}$"
+    if name.startswith("F_") and not any(ch.isdigit() for ch in name[2:]):
+        esc = math_escape(name[2:])  # the input force at a named point: F_A
+        if esc:
+            return f"$F_{{{esc}}}$"
     return name
 
 
@@ -522,6 +526,9 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                      np.array([u[1], -u[0]]))
         g = p.group(f"{name}-start", 3.5)
         g.items.append(Item("marker", np.array([path[0]]), "point", key=f"{name}-start"))
+    legend = _legend(fs, on)
+    if legend is not None:
+        panels.append(legend)
     # ---- frame, labels, table, layout
     for p in panels:
         _frame(p)
@@ -548,6 +555,39 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     out.sheet = sheet
     out.scales = f"lengths {lscale.text}" + (f";  forces {fscale.text}" if polys else "")
     return out
+
+
+def _legend(fs: ForceSolution, on: dict[str, list[Force]]) -> Panel | None:
+    """The key to the drawing's colours and line styles (only what the drawing uses)."""
+    colours = {f.color for fl in on.values() for f in fl}
+    rows: list[tuple[str, str, str]] = [("joint force $F_{ij}$, by i on j", JOINT, "vector-abs")]
+    if LOAD in colours or fs.mechanism.loads:
+        rows.append(("given load", LOAD, "vector-abs"))
+    if INERTIA in colours:
+        rows.append(("inertia force $-mA_{G}$, offset h", INERTIA, "vector-abs"))
+    rows.append(("drive (torque or force)", DRIVE, "vector-abs"))
+    if any(f.along is not None for fl in on.values() for f in fl):
+        rows.append(("normal and friction components", GREY_INK, "vector-n"))
+    rows.append(("line of action", "#7a7a7a", "datum"))
+    h = 0.22 * len(rows) + 0.45
+    p = Panel("legend", "posture", "Key", "in")
+    p.view = (0.0, 0.0, 2.45, h)
+    p.bbox = p.view
+    g = p.group("legend", 3.0, key="legend")
+    for i, (text, color, style) in enumerate(rows):
+        y = h - 0.45 - 0.22 * i
+        if style == "datum":
+            g.items.append(Item("path", np.array([[0.12, y], [0.52, y]]), "datum",
+                                overrides={"color": color, "lw": 0.5, "ls": (0, (4, 3))}))
+        else:
+            g.items.append(Item("arrow", np.array([[0.12, y], [0.52, y]]), style,
+                                head=0.08, width=0.03,
+                                overrides={"color": color, "lw": 1.2 if style == "vector-abs"
+                                           else 0.9}))
+        g.items.append(Item("text", np.array([[0.62, y]]), "label-small",
+                            gid=f"legend-{i}", text=text, ha="left",
+                            overrides={"color": color}))
+    return p
 
 
 def _torque(fs: ForceSolution, p: Panel, lid: str, o: np.ndarray, k: float,

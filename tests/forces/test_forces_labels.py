@@ -71,3 +71,17 @@ def test_gears_draw_pitch_circles_and_the_pitch_point():
     assert texts["fbd-3-label-F₂₃"] == "F₂₃" and texts["fbd-2-circles-label-P"] == "P"
     assert texts["fbd-3-M_3-label"] == "M₃ cw"
     assert "forces" not in d.texts["force-scale"].get_text()  # no polygon, no force scale
+
+
+def test_key_names_what_the_drawing_uses():
+    """Ex 12.3: a key to the colours, with the inertia force; the input force F_A lettered."""
+    d = draw(graphkin.load(ROOT / "gallery" / "mechanisms" / "ex12_3_elliptic_trammel.toml")
+             .solve(), "forces")
+    texts = {t.get_text() for t in d.texts.values()}
+    assert "$F_{A}$" in texts and "F_A" not in texts
+    d2 = draw(graphkin.load(FILES[0]).solve(), "forces")  # Ex 11.1: static, no inertia
+    from graphkin.render import to_svg
+
+    svg, svg2 = to_svg(d.figure), to_svg(d2.figure)
+    assert "legend-0" in svg and "inertia force" in svg
+    assert "legend-0" in svg2 and "inertia force" not in svg2
