@@ -67,9 +67,11 @@ MECHANISM: Schema = {
     "links": {"*": {"*": None}},          # [links.<id>] <point> = [x, y]
     "sliders": {"link": None, "on": None, "point": None, "line": None,
                 "friction": None, "impending": None},   # Coulomb friction (forces, Sec. 11.10)
-    "slots": {"link": None, "on": None, "point": None, "line": None, "circle": _CIRCLE},
+    "slots": {"link": None, "on": None, "point": None, "line": None, "circle": _CIRCLE,
+              "friction": None, "impending": None},     # Coulomb friction (forces, Ex 11.5)
     "rolling": {"link": None, "on": None, "circle": _CIRCLE, "line": None, "side": None,
-                "angle": None, "on_circle": _CIRCLE, "contact": None},
+                "angle": None, "on_circle": _CIRCLE, "contact": None,
+                "pressure_angle": None},   # gear teeth (forces, Sec. 11.11)
     "drive": {"link": None, "angle": None, "position": None, "omega": None, "alpha": None,
               "velocity": None, "acceleration": None},
     "rates": {"link": None, "omega": None, "alpha": None, "velocity": None,

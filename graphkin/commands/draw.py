@@ -19,7 +19,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
         "draw", help="draw a diagram to scale (SVG, PDF or PNG)",
         description="Draw the mechanism and its construction to a stated scale: the posture, "
                     "the velocity or acceleration polygon beside the mechanism, the instant "
-                    "centers, the curvature construction, or all of them on one sheet, with "
+                    "centers, the curvature construction, the free bodies and force polygons "
+                    "(-d forces, Fig. 11.5), or all of them on one sheet, with "
                     "a results table comparing the drawing with the analytic solution. The "
                     "output's suffix chooses the format (.svg, .pdf, .png).")
     p.add_argument("file", help="mechanism file (TOML)")

@@ -237,9 +237,12 @@ class _Builder:
         for j in self.joints:
             if j.kind == SLOT:
                 lab = f"l_{j.key}"
-                self.emit("force_line", (j.point, f"n_{j.key}"), (lab,),
-                          f"the pin {j.point} in the slot: its force acts through {j.point} "
-                          "normal to the slot")
+                why = (f"the gear teeth at the pitch point {j.point}: their force acts along "
+                       "the pressure line (Sec. 11.11, Fig. 11.14)"
+                       if j.source is not None and j.source.key.startswith("rolling") else
+                       f"the pin {j.point} in the slot: its force acts through {j.point} "
+                       "normal to the slot")
+                self.emit("force_line", (j.point, f"n_{j.key}"), (lab,), why)
                 self.slot_lines[j.key] = lab
         loaded = [lid for lid in mech.moving if comps.get(lid)]
         partials = []

@@ -22,13 +22,40 @@ import numpy as np
 
 from graphkin.errors import InputError
 from graphkin.kinematics.solution import Solution, perp
-from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
+from graphkin.mechanisms.model import FRAME, Mechanism, Rolling, Slider, Slot
 
-__all__ = ["Joint", "joints_of", "id_order", "Geometry", "geometry"]
+__all__ = ["Joint", "joints_of", "id_order", "Geometry", "geometry", "contact_name",
+           "contact_point"]
 
 PIN, SLIDE, SLOT = "pin", "slide", "slot"
 UNKNOWNS = {PIN: 2, SLIDE: 2, SLOT: 1}
 """Scalar unknowns a frictionless joint's force has."""
+
+
+def contact_name(r: Rolling) -> str:
+    """The name of a rolling pair's point of contact: ``P_24`` (the pitch point)."""
+    lo, hi = sorted((r.link, r.on), key=id_order)
+    return f"P_{lo}{hi}"
+
+
+def contact_point(sol: Solution, r: Rolling) -> np.ndarray:
+    """The world point of contact of a rolling pair at a solved posture.
+
+    On a line: the foot of the rolling circle's center on the line; on a
+    circle: on the line of centers, the other circle's radius from its center.
+    """
+    c = np.asarray(sol.position(r.center, r.link), dtype=float)
+    guide = sol.links[r.on]
+    if r.on_line:
+        assert r.p0 is not None and r.p1 is not None
+        b = np.asarray(guide.position(r.p0), dtype=float)
+        d = np.asarray(guide._r(np.subtract(r.p1, r.p0)), dtype=float)
+        u = d / float(np.hypot(*d))
+        return b + float((c - b) @ u) * u
+    assert r.on_center is not None and r.on_radius is not None
+    o = np.asarray(guide.position(r.on_center), dtype=float)
+    e = (c - o) / float(np.hypot(*(c - o)))
+    return o + r.on_radius * e
 
 
 def id_order(lid: str) -> tuple[int, int, str]:
@@ -59,7 +86,7 @@ class Joint:
     hi: str
     kind: str
     point: str
-    source: Slider | Slot | None = None
+    source: Slider | Slot | Rolling | None = None
 
     def other(self, lid: str) -> str:
         """The link on the other side of the joint from ``lid``."""
@@ -83,16 +110,28 @@ def joints_of(mech: Mechanism) -> list[Joint]:
     A pin shared by k links is k − 1 joints between its first link and each
     other one.
 
+    Rolling without slip (Sec. 11.11): the friction holds, so the contact
+    transmits a force with two unknown components through the point of
+    contact, a pin-like joint at ``P_ij`` (the pitch point); the rolling
+    pair's equivalent slot (a kinematic device) carries no force.
+
+    Gear teeth (``pressure_angle`` in ``[[rolling]]``, Sec. 11.11, Fig.
+    11.14): one unknown, the force through the pitch point along the pressure
+    line (:func:`graphkin.forces.solve.solve_forces` tilts it).
+
     Raises
     ------
     InputError
-        Rolling contact (its tangential force is not yet modelled).
+        Gears on two fixed centers without a pressure angle (two unknown
+        components there would leave the pair statically indeterminate).
     """
-    if mech.rolling:
-        r = mech.rolling[0]
-        raise InputError("force analysis of rolling contact is not supported yet "
-                         "(remove the loads or the rolling pair)", key=r.key, file=mech.source)
-    raw: list[tuple[str, str, str, str, Slider | Slot | None]] = []
+    raw: list[tuple[str, str, str, str, Slider | Slot | Rolling | None]] = []
+    for r in mech.rolling:
+        if r.fixed_centers and r.key not in mech.pressure:
+            raise InputError("gears on two fixed centers transmit their force along the "
+                             "pressure line (Sec. 11.11, Fig. 11.14): give pressure_angle "
+                             "(degrees, e.g. 20)", key=f"{r.key}.pressure_angle",
+                             file=mech.source)
     for p in mech.pins:
         hub = FRAME if FRAME in p.links else p.links[0]
         for other in p.links:
@@ -101,7 +140,10 @@ def joints_of(mech: Mechanism) -> list[Joint]:
     for s in mech.sliders:
         raw.append((s.link, s.on, SLIDE, s.point, s))
     for t in mech.slots:
-        raw.append((t.link, t.on, SLOT, t.point, t))
+        if not t.key.endswith(":slot"):  # a rolling pair's equivalent slot carries no force
+            raw.append((t.link, t.on, SLOT, t.point, t))
+    for r in mech.rolling:  # gear teeth: one unknown along the pressure line
+        raw.append((r.link, r.on, SLOT if r.key in mech.pressure else PIN, contact_name(r), r))
     pairs: dict[tuple[str, str], int] = {}
     for a, b, *_ in raw:
         lo, hi = sorted((a, b), key=id_order)
@@ -147,6 +189,13 @@ def geometry(sol: Solution, joints: list[Joint]) -> Geometry:
     base: dict[str, np.ndarray] = {}
     for j in joints:
         src = j.source
+        if isinstance(src, Rolling):
+            points[j.point] = contact_point(sol, src)
+            if j.kind == SLOT:  # gear teeth: first along the common tangent (solve.py tilts)
+                c = np.asarray(sol.position(src.center, src.link), dtype=float)
+                e = (c - points[j.point]) / float(np.hypot(*(c - points[j.point])))
+                normal[j.key] = np.array([-e[1], e[0]])
+            continue
         if src is None:
             continue
         guide = sol.links[src.on]

@@ -16,9 +16,10 @@ import numpy as np
 from graphkin.errors import ConstructionError, InputError
 from graphkin.forces.analytic import applied_wrenches, solve_matrix
 from graphkin.forces.graphic import BuiltForces, NotDecomposable, Partial, build_forces
-from graphkin.forces.joints import PIN, SLIDE, Geometry, Joint, geometry, joints_of
+from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint, geometry, joints_of
 from graphkin.forces.ops import line_of
 from graphkin.kinematics.solution import Solution
+from graphkin.mechanisms.model import Rolling, Slider, Slot
 from graphkin.tolerance import Tolerance
 
 if TYPE_CHECKING:
@@ -219,6 +220,8 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
     if mech.inertia and not dynamic:
         notes.append("the file gives no rates: a static analysis (inertia forces need "
                      "the accelerations)")
+    if mech.pressure:
+        _tilt_for_pressure(sol, joints, geo, dynamic, notes)
     if mech.friction:
         _tilt_for_friction(sol, joints, geo, dynamic, notes, tol)
     applied = {lid: [("", w) for w, _ in items]
@@ -252,7 +255,11 @@ def solve_forces(sol: Solution, tol: Tolerance | None = None,
 
 def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
                        notes: list[str], tol: Tolerance | None) -> None:
-    """Tilt each rough slider's line of action by the friction angle (Sec. 11.10, Ex 11.4).
+    """Tilt each rough slider's (or pin in a slot's) force by the friction angle (Sec. 11.10).
+
+    Ex 11.4 (a block on the ground), Ex 11.5 (a follower in two sliding bearings,
+    each a pin of the frame in the follower's straight slot: its force, through the
+    pin, leans from the slot's normal).
 
     As the book recommends, the problem is first solved without friction to
     find the sense of each normal force; the friction force opposes the
@@ -265,9 +272,14 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
     for j in joints:
         src = j.source
-        if j.kind != SLIDE or src is None or src.index not in mech.friction:
+        if j.kind not in (SLIDE, SLOT) or not isinstance(src, (Slider, Slot)) \
+                or src.key not in mech.friction:
             continue
-        mu, impending = mech.friction[src.index]
+        mu, impending = mech.friction[src.key]
+        if j.key not in geo.along:
+            raise InputError("friction is modelled along a straight line: a pin in a "
+                             "circular slot cannot have friction = ...",
+                             key=f"{src.key}.friction", file=mech.source)
         n, u = geo.normal[j.key], geo.along[j.key]
         on_block = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
         c = float(on_block @ n)
@@ -295,6 +307,41 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
         notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
                      f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
                      f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
+
+
+def _tilt_for_pressure(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
+                       notes: list[str]) -> None:
+    """Tilt each gear pair's force from the common tangent onto the pressure line (Sec. 11.11).
+
+    Solved first with the force along the common tangent at the pitch point
+    (the transmitted force F^t alone) to find its sense; the teeth then also
+    push the gears apart, F^r = F^t tan φ from the pitch point toward each
+    gear's center (Fig. 11.14b), so the force on the rolling gear leans by φ
+    toward its center.
+    """
+    from graphkin.forces.analytic import solve_matrix
+
+    mech = sol.mechanism
+    plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    for j in joints:
+        src = j.source
+        if j.kind != SLOT or not isinstance(src, Rolling):
+            continue
+        phi = mech.pressure[src.key]
+        p = geo.points[j.point]
+        c = np.asarray(sol.position(src.center, src.link), dtype=float)
+        e = (c - p) / float(np.hypot(*(c - p)))       # radial: toward the gear's center
+        t = np.array([-e[1], e[0]])
+        on_gear = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
+        s = float(on_gear @ t)
+        if s == 0:
+            notes.append(f"{src.key}: no transmitted force, so no radial force")
+            continue
+        d = np.sign(s) * t + np.tan(phi) * e
+        geo.normal[j.key] = d / float(np.hypot(*d))
+        notes.append(f"{src.key}: gear teeth, the force on link {src.link} along the pressure "
+                     f"line at φ = {np.degrees(phi):g}° from the common tangent at "
+                     f"{j.point} (Sec. 11.11, Fig. 11.14)")
 
 
 def _velocity_in(sol: Solution, lid: str, world: Any) -> np.ndarray:

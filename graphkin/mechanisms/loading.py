@@ -282,11 +282,17 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                    "lbf)") from None
     out: dict[str, Any] = {"force_unit": force_unit}
     if not any(k in data for k in TOP_KEYS):
-        raw = data.get("sliders", [])
+        for table in ("sliders", "slots"):
+            raw = data.get(table, [])
+            for i, item in enumerate(raw if isinstance(raw, list) else [raw]):
+                if isinstance(item, Mapping) and ("friction" in item or "impending" in item):
+                    raise fail(f"{table}[{i}].friction", "friction acts in a force analysis: "
+                               "the file has no [[loads]] and no [inertia.N]")
+        raw = data.get("rolling", [])
         for i, item in enumerate(raw if isinstance(raw, list) else [raw]):
-            if isinstance(item, Mapping) and ("friction" in item or "impending" in item):
-                raise fail(f"sliders[{i}].friction", "friction acts in a force analysis: "
-                           "the file has no [[loads]] and no [inertia.N]")
+            if isinstance(item, Mapping) and "pressure_angle" in item:
+                raise fail(f"rolling[{i}].pressure_angle", "the pressure angle acts in a force "
+                           "analysis: the file has no [[loads]] and no [inertia.N]")
         return out
     if "loads" not in data and "inertia" not in data:
         raise fail("gravity", "gravity acts on the links with [inertia.N] (mass and "
@@ -392,14 +398,9 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
         inertia[lid] = Inertia(lid, center, mass, moment)
     out["inertia"] = inertia
 
-    friction: dict[int, tuple[float, str | None]] = {}
-    raw_sl = data.get("sliders", [])
-    if isinstance(raw_sl, Mapping):
-        raw_sl = [raw_sl]
-    for i, item in enumerate(raw_sl if isinstance(raw_sl, list) else []):
-        if not isinstance(item, Mapping) or "friction" not in item and "impending" not in item:
-            continue
-        key = f"sliders[{i}]"
+    friction: dict[str, tuple[float, str | None]] = {}
+    for table, i, item in _rough(data):
+        key = f"{table}[{i}]"
         mu = item.get("friction")
         if isinstance(mu, bool) or not isinstance(mu, (int, float)) or not \
                 (math.isfinite(float(mu)) and float(mu) >= 0):
@@ -407,12 +408,25 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                        f"not {mu!r}")
         imp = item.get("impending")
         if imp is not None and imp not in ("ahead", "behind"):
-            raise fail(f"{key}.impending", "the impending motion of the slider along its "
-                       "line is \"ahead\" (toward the line's second point) or \"behind\", "
-                       f"not {imp!r}")
-        friction[i] = (float(mu), imp)
+            raise fail(f"{key}.impending", "the impending motion of the slider (or of the pin "
+                       "in the slot) along its line is \"ahead\" (toward the line's second "
+                       f"point) or \"behind\", not {imp!r}")
+        friction[key] = (float(mu), imp)
     if friction:
         out["friction"] = friction
+    pressure: dict[str, float] = {}
+    raw_r = data.get("rolling", [])
+    for i, item in enumerate(raw_r if isinstance(raw_r, list) else [raw_r]):
+        if not isinstance(item, Mapping) or "pressure_angle" not in item:
+            continue
+        phi = item["pressure_angle"]
+        if isinstance(phi, bool) or not isinstance(phi, (int, float)) or not \
+                (math.isfinite(float(phi)) and 0 <= float(phi) < 45):
+            raise fail(f"rolling[{i}].pressure_angle", "the pressure angle of the gear teeth "
+                       f"is a number of degrees, 0 <= φ < 45 (20 is usual), not {phi!r}")
+        pressure[f"rolling[{i}]"] = math.radians(float(phi))
+    if pressure:
+        out["pressure"] = pressure
 
     if "gravity" in data:
         g = data["gravity"]
@@ -430,4 +444,17 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
         if not inertia:
             raise fail("gravity", "gravity acts on the links with [inertia.N] (mass and "
                        "center); none has one")
+    return out
+
+
+def _rough(data: Mapping[str, Any]) -> list[tuple[str, int, Mapping[str, Any]]]:
+    """The ``[[sliders]]`` and ``[[slots]]`` entries that give friction (Sec. 11.10)."""
+    out = []
+    for table in ("sliders", "slots"):
+        raw = data.get(table, [])
+        if isinstance(raw, Mapping):
+            raw = [raw]
+        for i, item in enumerate(raw if isinstance(raw, list) else []):
+            if isinstance(item, Mapping) and ("friction" in item or "impending" in item):
+                out.append((table, i, item))
     return out

@@ -229,9 +229,13 @@ class Mechanism:
     """Link id -> mass properties (``[inertia.N]``, Ch. 12)."""
     gravity: XY | None = None
     """The acceleration of gravity (length unit/s²) when ``[gravity]`` is given."""
-    friction: dict[int, tuple[float, str | None]] = field(default_factory=dict)
-    """Slider index -> (μ, impending motion ``"ahead"``/``"behind"`` or None: from the
-    velocity) for sliders with Coulomb friction (Sec. 11.10, an extension of forces.md)."""
+    friction: dict[str, tuple[float, str | None]] = field(default_factory=dict)
+    """Slider or slot key (``sliders[0]``, ``slots[1]``) -> (μ, impending motion
+    ``"ahead"``/``"behind"`` or None: from the velocity) for sliders and pins in slots
+    with Coulomb friction (Sec. 11.10, an extension of forces.md)."""
+    pressure: dict[str, float] = field(default_factory=dict)
+    """Rolling pair key (``rolling[0]``) -> pressure angle φ (rad) of gear teeth: the contact
+    force acts along the pressure line (Sec. 11.11, Fig. 11.14; an extension of forces.md)."""
 
     @property
     def has_forces(self) -> bool:

@@ -500,7 +500,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
     if diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
         from graphkin.render.forces import draw_forces
 
-        return draw_forces(obj, table=table is not False, upto=upto)
+        return draw_forces(obj, table=table is not False, upto=upto, sheet=sheet)
     wanted = tuple(dict.fromkeys(
         "curvature" if d in CURVATURE_PANELS else d
         for d in (DIAGRAMS if diagram == "all" else diagram.split("+"))
