@@ -314,7 +314,7 @@ class StepPainter:
         d = _unit(np.asarray(p[:2], dtype=float))
         if d is None:
             return
-        x0, y0, x1, y1 = panel.view
+        x0, y0, x1, y1 = panel.inner or panel.view  # clear of the title and the scale bar
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
         ts = []
         for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
