@@ -31,12 +31,12 @@ Sec. 4.17 (Figs. 4.33-4.35, the inflection and Bresse circles).
 
 from __future__ import annotations
 
+import math
 import textwrap
 from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphkin.render.labels import text_size
 from graphkin.render.results import (
     Row,
     compact_cells,
@@ -48,7 +48,7 @@ from graphkin.render.scene import Panel
 from graphkin.render.sheet import GAP, Sheet, build_sheet
 from graphkin.render.sources import CURVATURE_PANELS, DiagramUnavailable, Source
 from graphkin.render.style import STYLES
-from graphkin.render.table import Table, folds_for, table_size
+from graphkin.render.table import Table, folds_for, measure, table_size
 
 __all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "LEGEND",
            "MIN_BIG"]
@@ -203,7 +203,7 @@ def _legend_size(entries: list[LegendEntry], cols: int) -> tuple[float, float]:
     if not entries:
         return 0.0, 0.0
     per = -(-len(entries) // cols)
-    widths = [HANDLE_W + 0.08 + text_size(e.text, LEGEND_PT, "caption")[0] for e in entries]
+    widths = [HANDLE_W + 0.08 + measure(e.text, LEGEND_PT, "caption")[0] for e in entries]
     colw = [max(widths[c * per:(c + 1) * per], default=0.0) for c in range(cols)]
     return sum(colw) + 0.12 * (cols - 1) + 0.16, per * LINE_H + 0.12
 
@@ -225,10 +225,10 @@ def title_block(sheet: Sheet, src: Source) -> list[tuple[str, str]]:
 
     def wrap(text: str, weight: str, most: int) -> None:
         style = "title" if weight == "bold" else "caption"
-        chars = max(int(len(text) * width / max(text_size(text, BLOCK_PT, style)[0],
+        chars = max(int(len(text) * width / max(measure(text, BLOCK_PT, style)[0],
                                                 1e-9)), 12)
         got = textwrap.wrap(text, chars) or [""]
-        while chars > 12 and any(text_size(g, BLOCK_PT, style)[0] > width for g in got):
+        while chars > 12 and any(measure(g, BLOCK_PT, style)[0] > width for g in got):
             chars -= 2
             got = textwrap.wrap(text, chars)
         if len(got) > most:
@@ -379,13 +379,40 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
     if found is None:  # the smallest panels, everything dropped: the best there is
         found = (BIGS[-1], (pw, ph), drops[-1])
     big, size, drop = found
+    grow = _grow(src, diagram, paper, rows, unit, size, big, drop)
     sheet = build_sheet(src, diagram, upto=upto, highlight=highlight, paper=paper,
-                        table=False, max_inches=big, drop=drop)
+                        table=False, max_inches=big, drop=drop, grow=grow)
     page = _arrange(sheet, src, rows, unit, size, paper, force=True)
     assert page is not None
     page.dropped = drop
     sheet.rows = rows
     return sheet
+
+
+def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
+          size: tuple[float, float], big: float, drop: tuple[str, ...]) -> dict[str, float]:
+    """Draw each panel one scale larger where the page still has room (smallest panels first).
+
+    Returns panel name -> the factor on its room that gives the next larger
+    scale of the 1-2-5 series.
+    """
+    grow: dict[str, float] = {}
+    base = build_sheet(src, diagram, paper=paper, dry=True, table=False, max_inches=big,
+                       drop=drop)
+    order = sorted((p for p in base.panels if p.scale is not None),
+                   key=lambda p: p.size[0] * p.size[1])
+    for p in order:
+        assert p.scale is not None
+        v = p.scale.value
+        mant = v / 10 ** math.floor(math.log10(v) + 1e-9)
+        step = 2.5 if abs(mant - 5.0) < 1e-6 else 2.0  # 5 -> 2, 2 -> 1, 1 -> 0.5
+        trial = dict(grow)
+        trial[p.name] = step * (1 + 1e-6)
+        sheet = build_sheet(src, diagram, paper=paper, dry=True, table=False, max_inches=big,
+                            drop=drop, grow=trial)
+        if _arrange(sheet, src, rows, unit, size, paper) is not None:
+            grow = trial
+    return grow
 
 
 def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,
@@ -462,7 +489,7 @@ def _legend(fig: Any, sheet: Sheet, page: Page) -> None:
     entries = page.legend
     cols = page.legend_cols
     per = -(-len(entries) // cols)
-    widths = [HANDLE_W + 0.08 + text_size(e.text, LEGEND_PT, "caption")[0] for e in entries]
+    widths = [HANDLE_W + 0.08 + measure(e.text, LEGEND_PT, "caption")[0] for e in entries]
     colw = [max(widths[c * per:(c + 1) * per], default=0.0) for c in range(cols)]
     h = page.legend_box[3]
     for k, e in enumerate(entries):

@@ -303,8 +303,8 @@ def render_sheet(sheet: Sheet) -> Drawing:
             from graphkin.render.results import full_table
             from graphkin.render.table import add_table, table_size
 
-            t = full_table(sheet.rows)
-            add_table(fig, t, sheet.table_origin, table_size(t), sheet.size)
+            tab = full_table(sheet.rows)
+            add_table(fig, tab, sheet.table_origin, table_size(tab), sheet.size)
     return drawing
 
 

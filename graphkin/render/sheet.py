@@ -132,7 +132,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                 highlight: int | Collection[int] | None = None, table: bool = True,
                 max_inches: float | None = None, title: str | None = None,
                 paper: str | None = None, width_cap: float = 11.5, dry: bool = False,
-                drop: Collection[str] = ()) -> Sheet:
+                drop: Collection[str] = (), grow: dict[str, float] | None = None) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
     Parameters
@@ -161,6 +161,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     drop : collection of str
         Panels left off (``kennedy``, ``curvature``): a handout page that
         does not fit otherwise.
+    grow : dict, optional
+        Panel name -> a factor on its room (a handout page draws a panel a
+        scale larger where the page has room).
 
     Raises
     ------
@@ -256,6 +259,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         room = big if p.plane == "posture" else big * 0.85
         if not many and p.name in ("centers", "curvature") and max_inches is None:
             room = 6.5
+        room *= (grow or {}).get(p.name, 1.0)
         extent = max(float(ex), float(ey), 1e-12)
         p.scale = choose_scale(extent, room, paper_u, p.unit,
                                SERIES_125 if paper else NICE)
@@ -307,6 +311,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         if d in ("cubic", "curvature") and length_of.get(d) is not None:
             _curvature_extras(src, length_of[d], d)  # type: ignore[arg-type]
     for p in panels:
+        if p.mechanism:
+            _hold_anchors(p)
         _frame(p)
         if not dry:
             place_labels(p)
@@ -455,6 +461,31 @@ def _curvature_extras(src: Source, p: Panel, d: str) -> None:
     if ball is not None and np.all(np.isfinite(ball)):
         g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
                             gid=f"{p.prefix}ball-point", key="Ball's point"))
+
+
+def _hold_anchors(p: Panel, reach: float = 1.0, clear: float = 0.3) -> None:
+    """Widen a panel's view to hold every label's anchor up to ``reach`` inches beyond it.
+
+    A link's number sits beside the link (a slider's beside its block, past
+    the end of the guide the extent counted); an anchor outside the view would
+    push its label onto another link.
+    """
+    x0, y0, x1, y1 = p.view
+    k = p.k
+    lo = np.array([x0, y0 + FOOT_H * k])
+    hi = np.array([x1, y1 - TITLE_H * k])
+    for r in p.labels:
+        a = finite_xy(np.array([*np.asarray(r.anchor, dtype=float)[:2], 1.0]))
+        if a is None:
+            continue
+        out = np.maximum(lo - a, 0.0) + np.maximum(a - hi, 0.0)
+        if np.all(out <= reach * k):
+            lo = np.minimum(lo, a - np.where(a < lo, clear * k, 0.0))
+            hi = np.maximum(hi, a + np.where(a > hi, clear * k, 0.0))
+    if (lo[0], lo[1] - FOOT_H * k, hi[0], hi[1] + TITLE_H * k) != (x0, y0, x1, y1):
+        p.view = (float(lo[0]), float(lo[1] - FOOT_H * k), float(hi[0]),
+                  float(hi[1] + TITLE_H * k))
+        p.inner = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
 
 
 def _wrap_to(text: str, inches: float, size: float) -> str:
