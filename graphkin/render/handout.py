@@ -271,8 +271,8 @@ def _pack(sizes: list[tuple[float, float]], width: float,
     spare = height - sum(heights) - GAP * (len(rows) - 1)
     if spare < 0:
         return None
-    gap_y = GAP + spare / (len(rows) + 1) if len(rows) > 1 else GAP
-    top = height - (spare / (len(rows) + 1) if len(rows) > 1 else 0.0)
+    gap_y = GAP + spare / (len(rows) + 1)  # the spare height shared out around the rows
+    top = height - spare / (len(rows) + 1)
     out: list[tuple[float, float]] = [(0.0, 0.0)] * len(sizes)
     y = top
     for r, h in zip(rows, heights):
@@ -361,25 +361,31 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
     drops: list[tuple[str, ...]] = [()]
     if diagram == "all":
         drops += [("kennedy",), ("kennedy", "curvature")]
-    found: tuple[float, tuple[float, float], tuple[str, ...]] | None = None
+    found: tuple[float, list[tuple[float, float]], tuple[str, ...]] | None = None
     for drop in drops:
         for big in BIGS:
             if big < MIN_BIG and drop != drops[-1]:
                 break
-            for w, h in ((pw, ph), (ph, pw)):
-                trial = build_sheet(src, diagram, paper=paper, dry=True, table=False,
-                                    max_inches=big, drop=drop)
-                if _arrange(trial, src, rows, unit, (w, h), paper) is not None:
-                    found = (big, (w, h), drop)
-                    break
-            if found:
+            trial = build_sheet(src, diagram, paper=paper, dry=True, table=False,
+                                max_inches=big, drop=drop)
+            sizes = [(w, h) for w, h in ((pw, ph), (ph, pw))
+                     if _arrange(trial, src, rows, unit, (w, h), paper) is not None]
+            if sizes:
+                found = (big, sizes, drop)
                 break
         if found:
             break
     if found is None:  # the smallest panels, everything dropped: the best there is
-        found = (BIGS[-1], (pw, ph), drops[-1])
-    big, size, drop = found
-    grow = _grow(src, diagram, paper, rows, unit, size, big, drop)
+        found = (BIGS[-1], [(pw, ph)], drops[-1])
+    big, sizes, drop = found
+    # portrait or landscape: the one whose panels grow the larger (portrait on a tie)
+    best: tuple[float, tuple[float, float], dict[str, float]] | None = None
+    for size in sizes:
+        grow, area = _grow(src, diagram, paper, rows, unit, size, big, drop)
+        if best is None or area > best[0] * 1.05:
+            best = (area, size, grow)
+    assert best is not None
+    _, size, grow = best
     sheet = build_sheet(src, diagram, upto=upto, highlight=highlight, paper=paper,
                         table=False, max_inches=big, drop=drop, grow=grow)
     page = _arrange(sheet, src, rows, unit, size, paper, force=True)
@@ -390,15 +396,17 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
 
 
 def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
-          size: tuple[float, float], big: float, drop: tuple[str, ...]) -> dict[str, float]:
+          size: tuple[float, float], big: float,
+          drop: tuple[str, ...]) -> tuple[dict[str, float], float]:
     """Draw each panel one scale larger where the page still has room (smallest panels first).
 
     Returns panel name -> the factor on its room that gives the next larger
-    scale of the 1-2-5 series.
+    scale of the 1-2-5 series, and the panels' total area then (square inches).
     """
     grow: dict[str, float] = {}
     base = build_sheet(src, diagram, paper=paper, dry=True, table=False, max_inches=big,
                        drop=drop)
+    area = sum(p.size[0] * p.size[1] for p in base.panels)
     order = sorted((p for p in base.panels if p.scale is not None),
                    key=lambda p: p.size[0] * p.size[1])
     for p in order:
@@ -412,7 +420,8 @@ def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
                             drop=drop, grow=trial)
         if _arrange(sheet, src, rows, unit, size, paper) is not None:
             grow = trial
-    return grow
+            area = sum(q.size[0] * q.size[1] for q in sheet.panels)
+    return grow, area
 
 
 def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,

@@ -228,7 +228,13 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
     return out
 
 
-def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
+def _add_group(ax: Axes, g: Group, drawing: Drawing,
+               inner: patches.Patch | None = None) -> StepGroup:
+    """Add a group's artists; lines and shapes are clipped to ``inner`` (when given).
+
+    ``inner`` is the panel less its title and scale-bar strips: a construction
+    line or a large circle stops short of the panel's title.
+    """
     children: list[Artist] = []
     for it in g.items:
         arts = _artists(it, g.highlight)
@@ -236,7 +242,7 @@ def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
             a.set_transform(ax.transData)
             a.set_figure(ax.figure)
             a.axes = ax
-            a.set_clip_path(ax.patch)
+            a.set_clip_path(inner if inner is not None and it.kind != "text" else ax.patch)
             children.append(a)
         if it.key is not None and arts:
             main = arts[0]
@@ -293,8 +299,14 @@ def render_sheet(sheet: Sheet) -> Drawing:
             t.set_gid("sheet-title")
         for p in sheet.panels:
             ax = _panel_axes(fig, sheet, p)
+            inner = None
+            if p.inner is not None:
+                x0, y0, x1, y1 = p.inner
+                inner = patches.Rectangle((x0, y0), x1 - x0, y1 - y0, transform=ax.transData)
             for g in p.groups:
-                _add_group(ax, g, drawing)
+                frame = g.gid.startswith(f"{p.prefix}title-") \
+                    or g.gid.startswith(f"{p.prefix}scale-")
+                _add_group(ax, g, drawing, None if frame else inner)
         if sheet.page is not None:
             from graphkin.render.handout import render_page
 
