@@ -215,3 +215,18 @@ def test_no_label_collides_on_the_all_sheet(gk, name):
         if (t.get_gid() or "").startswith(("row-", "results")):
             assert ab is not None and box.x0 >= ab.x0 - 1 and box.x1 <= ab.x1 + 1 \
                 and box.y0 >= ab.y0 - 1 and box.y1 <= ab.y1 + 1, t.get_text()  # in its table
+
+
+def test_cli_writes_a_letter_page(tmp_path, capsys):
+    from graphkin.cli import main
+
+    out = tmp_path / "p.svg"
+    # Example 2.5 (no rates): the posture and the instant centers on one Letter page
+    assert main(["draw", str(EXAMPLES / "ex2_5_open.toml"), "--sheet", "letter",
+                 "-o", str(out)]) == 0
+    root = ET.parse(out).getroot()
+    size = sorted(float(root.get(k, "0").removesuffix("pt")) / 72 for k in ("width", "height"))
+    assert size == pytest.approx([8.5, 11.0], abs=0.01)
+    with pytest.raises(SystemExit) as exc:  # argparse: one line naming the bad choice
+        main(["draw", str(EXAMPLES / "ex2_5_open.toml"), "--sheet", "a3", "-o", str(out)])
+    assert exc.value.code == 2 and "a3" in capsys.readouterr().err
