@@ -177,9 +177,14 @@ def shown_rows(sheet: Sheet, rows: list[Row]) -> list[Row]:
 def results_table(sheet: Sheet, rows: list[Row], file_unit: str) -> Table:
     """The compact results table of a handout page (no analytic column, no differences)."""
     units = _units(sheet, file_unit)
-    cells = [compact_cells(r, units) for r in rows]
-    return Table(("quantity", "value", "direction", "unit"), cells, [r.key for r in rows],
-                 ("left", "right", "left", "left"), title="Results read off the construction")
+    cells: list[tuple[str, ...]] = [compact_cells(r, units) for r in rows]
+    head: tuple[str, ...] = ("quantity", "value", "direction", "unit")
+    align: tuple[str, ...] = ("left", "right", "left", "left")
+    if all(not c[2] for c in cells):  # no vector and no rate: no direction column
+        cells = [(c[0], c[1], c[3]) for c in cells]
+        head, align = ("quantity", "value", "unit"), ("left", "right", "left")
+    return Table(head, cells, [r.key for r in rows], align,
+                 title="Results read off the construction")
 
 
 def legend_entries(sheet: Sheet) -> list[LegendEntry]:
