@@ -309,7 +309,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             _images(src, poly, painters[d], upto if d == diagram else None)
     for d in diagrams:
         if d in ("cubic", "curvature") and length_of.get(d) is not None:
-            _curvature_extras(src, length_of[d], d)  # type: ignore[arg-type]
+            own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
+            _curvature_extras(src, length_of[d], d,  # type: ignore[arg-type]
+                              upto if own else None)
     for p in panels:
         if p.mechanism:
             _hold_anchors(p)
@@ -408,11 +410,13 @@ def _reached(src: Source, diagram: str, upto: int, rows: list[Row]) -> list[Row]
     return [r for r in rows if label_of(r.key) in made or label_of(r.key) not in later]
 
 
-def _curvature_extras(src: Source, p: Panel, d: str) -> None:
+def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) -> None:
     """The cubic of stationary curvature as a curve and Ball's point (Figs. 4.37-4.39).
 
     For a link turning about a frame pivot: the sentence that says why there is
-    nothing more to draw.
+    nothing more to draw.  A started drawing (``upto``) shows the cubic only
+    once its panel's last step is drawn, and Ball's point once the step that
+    finds it (U) is: the curve and the point are answers.
     """
     lc = src.extras.get("curvature")
     if lc is None:
@@ -438,7 +442,15 @@ def _curvature_extras(src: Source, p: Panel, d: str) -> None:
     cubic = getattr(lc, "cubic", None)
     if d != "cubic" or cubic is None:
         return
+    steps = list(getattr(src.constructions.get(d), "steps", []))
+    last = max((s.index for s in steps), default=-1)
+    found_u = min((s.index for s in steps if "U" in s.outputs), default=last)
+    if upto is not None and upto < last:
+        cubic = None  # not yet: the curve is drawn with the panel's last step
     g = p.group(f"{p.prefix}cubic-curve", 1.8, key="cubic of stationary curvature")
+    if cubic is None:
+        _ball(lc, g, p, upto is None or upto >= found_u)
+        return
     psi = np.linspace(0.0, np.pi, 2001)[1:-1]
     with np.errstate(all="ignore"):
         pts = np.asarray(cubic.point(psi), dtype=float)
@@ -457,8 +469,13 @@ def _curvature_extras(src: Source, p: Panel, d: str) -> None:
                                 key="cubic" if not pieces else f"cubic:{pieces}"))
             pieces += 1
         start = None
+    _ball(lc, g, p, upto is None or upto >= found_u)
+
+
+def _ball(lc: Any, g: Any, p: Panel, reached: bool) -> None:
+    """Ball's point U as a ring (Fig. 4.39), once the construction has found it."""
     ball = getattr(lc, "ball_point", None)
-    if ball is not None and np.all(np.isfinite(ball)):
+    if reached and ball is not None and np.all(np.isfinite(ball)):
         g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
                             gid=f"{p.prefix}ball-point", key="Ball's point"))
 

@@ -232,3 +232,21 @@ def test_cli_writes_a_letter_page(tmp_path, capsys):
     with pytest.raises(SystemExit) as exc:  # argparse: one line naming the bad choice
         main(["draw", str(EXAMPLES / "ex2_5_open.toml"), "--sheet", "a3", "-o", str(out)])
     assert exc.value.code == 2 and "a3" in capsys.readouterr().err
+
+
+def test_a_started_cubic_figure_does_not_draw_the_cubic(gk):
+    # the cubic of stationary curvature and Ball's point U are answers (Figs. 4.37-4.39):
+    # a drawing stopped before Hain's construction finds U shows neither
+    sol = gk.solved("ex4_14_inflection_bresse")
+    full = draw(sol, "cubic")
+    steps = full.sheet.painters["cubic"].cx.steps
+    u = next(s.index for s in steps if "U" in s.outputs)
+
+    def answers(d):
+        return {a.get_gid() for a in d.figure.findobj(lambda a: bool(a.get_gid()))} \
+            & {"cubic", "ball-point"}
+
+    assert answers(full) == {"cubic", "ball-point"}
+    assert answers(draw(sol, "cubic", upto=steps[1].index)) == set()
+    assert answers(draw(sol, "cubic", upto=u - 1)) == set()
+    assert answers(draw(sol, "cubic", upto=u)) == {"cubic", "ball-point"}
