@@ -35,8 +35,10 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
     p.add_argument("--sheet", choices=("a4", "letter"), default=None,
-                   help="a handout page of that paper (portrait or landscape) at round scales, "
-                        "with a title block and a compact results table")
+                   help="one page of that paper (portrait or landscape) to hand out: round "
+                        "1-2-5 scales, a compact results table in the scale bars' units (no "
+                        "analytic column), a line-style legend and a title block; -d all "
+                        "shows curvature figure (a) only (-d curvature for all four)")
     p.add_argument("--no-table", action="store_true", help="leave out the results table")
     p.add_argument("--dpi", type=bounded_float(*DPI_RANGE), default=150.0,
                    help="resolution of a PNG, 10 to 1200 (default 150)")

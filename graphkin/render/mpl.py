@@ -22,9 +22,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from graphkin.render.results import AGREE, ROUND_OFF, diff_text
 from graphkin.render.scene import Group, Item, Panel
-from graphkin.render.sheet import TABLE_ROW, Sheet, build_sheet
+from graphkin.render.sheet import Sheet, build_sheet
 from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
 from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
 from graphkin.render.text import plain
@@ -229,7 +228,13 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
     return out
 
 
-def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
+def _add_group(ax: Axes, g: Group, drawing: Drawing,
+               inner: patches.Patch | None = None) -> StepGroup:
+    """Add a group's artists; lines and shapes are clipped to ``inner`` (when given).
+
+    ``inner`` is the panel less its title and scale-bar strips: a construction
+    line or a large circle stops short of the panel's title.
+    """
     children: list[Artist] = []
     for it in g.items:
         arts = _artists(it, g.highlight)
@@ -237,7 +242,7 @@ def _add_group(ax: Axes, g: Group, drawing: Drawing) -> StepGroup:
             a.set_transform(ax.transData)
             a.set_figure(ax.figure)
             a.axes = ax
-            a.set_clip_path(ax.patch)
+            a.set_clip_path(inner if inner is not None and it.kind != "text" else ax.patch)
             children.append(a)
         if it.key is not None and arts:
             main = arts[0]
@@ -278,16 +283,14 @@ def _setup_axes(ax: Axes, p: Panel) -> None:
 
 
 def render_sheet(sheet: Sheet) -> Drawing:
-    """Make the figure of a laid-out sheet."""
+    """Make the figure of a laid-out sheet (a handout page draws its band too)."""
     with rc_context():
         fig = Figure(figsize=sheet.size)
         drawing = Drawing()
         drawing.figure = fig
         drawing.own_figure = True
         drawing.sheet = sheet
-        if sheet.paper:
-            _title_block(fig, sheet)
-        if sheet.title:
+        if sheet.title and sheet.page is None:  # a handout's title is in its title block
             left, top = sheet.title_offset or (0.0, sheet.size[1])
             t = fig.text((left + 0.12) / sheet.size[0], (top - 0.22) / sheet.size[1],
                          plain(sheet.title),
@@ -296,37 +299,25 @@ def render_sheet(sheet: Sheet) -> Drawing:
             t.set_gid("sheet-title")
         for p in sheet.panels:
             ax = _panel_axes(fig, sheet, p)
+            inner = None
+            if p.inner is not None:
+                x0, y0, x1, y1 = p.inner
+                inner = patches.Rectangle((x0, y0), x1 - x0, y1 - y0, transform=ax.transData)
             for g in p.groups:
-                _add_group(ax, g, drawing)
-        if sheet.rows:
-            _table(fig, sheet)
+                frame = g.gid.startswith(f"{p.prefix}title-") \
+                    or g.gid.startswith(f"{p.prefix}scale-")
+                _add_group(ax, g, drawing, None if frame else inner)
+        if sheet.page is not None:
+            from graphkin.render.handout import render_page
+
+            render_page(fig, sheet)
+        elif sheet.rows:
+            from graphkin.render.results import full_table
+            from graphkin.render.table import add_table, table_size
+
+            tab = full_table(sheet.rows)
+            add_table(fig, tab, sheet.table_origin, table_size(tab), sheet.size)
     return drawing
-
-
-def _title_block(fig: Figure, sheet: Sheet) -> None:
-    """A handout's title block, bottom right: the mechanism, the diagram and the scales."""
-    from graphkin.render.sheet import PAGE_MARGIN, TITLE_BLOCK
-
-    W, H = sheet.size
-    bw, bh = TITLE_BLOCK
-    x0, y0 = sheet.block_origin or (W - PAGE_MARGIN - bw, PAGE_MARGIN)
-    ax = fig.add_axes((x0 / W, y0 / H, bw / W, bh / H))
-    ax.set_axis_off()
-    ax.set_xlim(0, bw)
-    ax.set_ylim(0, bh)
-    ax.set_gid("title-block")
-    frame = patches.Rectangle((0.01, 0.01), bw - 0.02, bh - 0.02, fill=False, lw=0.8, ec="k")
-    ax.add_patch(frame)
-    scales = "; ".join(dict.fromkeys(p.scale.text for p in sheet.panels if p.scale is not None))
-    title = sheet.title if len(sheet.title) <= 70 else sheet.title[:67] + "..."
-    import textwrap
-
-    lines = [(plain(title), "bold"), (f"Diagram: {sheet.diagram}", "normal")]
-    lines += [(plain(t), "normal") for t in textwrap.wrap(f"Scales: {scales}", 80)[:2]]
-    for i, (text, weight) in enumerate(lines):
-        t = ax.text(0.08, bh - 0.13 - 0.155 * i, text, fontsize=6.5, fontweight=weight,
-                    ha="left", va="center")
-        t.set_gid(f"title-block-{i}")
 
 
 def sheet_figure(obj: Any, diagram: str = "all", **kw: Any) -> Figure:
@@ -334,102 +325,6 @@ def sheet_figure(obj: Any, diagram: str = "all", **kw: Any) -> Figure:
     d = draw(obj, diagram, **kw)
     assert d.figure is not None
     return d.figure
-
-
-def _table(fig: Figure, sheet: Sheet) -> None:
-    """The results table: drawn value, analytic value and their relative difference."""
-    W, H = sheet.size
-    x, y = sheet.table_origin
-    w, h = sheet.table_size
-    ax = fig.add_axes((x / W, y / H, w / W, h / H))
-    ax.set_axis_off()
-    ax.set_xlim(0, w)
-    ax.set_ylim(0, h)
-    ax.set_gid("results")
-    texts: list[Artist] = []
-
-    def text(xx: float, yy: float, s: str, style: str, gid: str | None = None,
-             ha: str = "left") -> Text:
-        st = STYLES[style]
-        t = Text(xx, yy, s, fontsize=st["size"], family=st.get("family", "sans-serif"),
-                 fontweight=st.get("weight", "normal"), ha=ha, va="center",
-                 color=st.get("color", "k"))
-        t.set_transform(ax.transData)
-        t.set_figure(fig)
-        if gid:
-            t.set_gid(gid)
-        return t
-
-    top = h - 0.15
-    widths = _column_widths(sheet)
-    texts.append(text(0.08, top, "Results read off the construction" if sheet.paper else
-                      "Results: read off the construction, and the analytic solution",
-                      "table-head", "results-title"))
-    yy = top - TABLE_ROW * 1.2
-    compact = sheet.paper is not None  # a handout: the drawn values, no comparison
-    head = ("quantity", "drawn", "unit") if compact else ("quantity", "drawn", "analytic",
-                                                          "rel. diff.", "unit")
-    if compact:
-        widths = (widths[0], widths[1], widths[4])
-    ncol = max(sheet.table_columns, 1)
-    per = -(-len(sheet.rows) // ncol)
-    colw = (w - 0.08) / ncol
-    y_head = yy
-    for c in range(ncol):
-        texts.append(text(0.08 + c * colw, y_head, _row(head, widths), "table-head",
-                          "results-head" if c == 0 else f"results-head-{c}"))
-    rule = Line2D([0.08, w - 0.08], [yy - TABLE_ROW / 2] * 2, color="k", lw=0.5)
-    rule.set_transform(ax.transData)
-    rule.set_figure(fig)
-    texts.append(rule)
-    worst = 0.0
-    missing = False
-    for k, r in enumerate(sheet.rows):
-        xx = 0.08 + (k // per) * colw
-        if k % per == 0:
-            yy = y_head
-        yy -= TABLE_ROW
-        cells = (r.quantity, r.drawn, r.unit) if compact else (
-            r.quantity, r.drawn, r.exact, diff_text(r.diff), r.unit)
-        row = text(xx, yy, plain(_row(cells, widths)), "table", f"row-{r.key}")
-        if r.diff is None:
-            missing = True
-        else:
-            worst = max(worst, r.diff)
-        row.axes = ax
-        texts.append(row)
-    yy = y_head - TABLE_ROW * per - TABLE_ROW * 1.3
-    if missing and all(not r.exact.strip("—") for r in sheet.rows):
-        foot = "The analytic solver gave no answer here."
-    else:
-        foot = ("The drawing agrees with the analytic solution to round-off "
-                f"(relative differences below {ROUND_OFF:.0e})." if worst < ROUND_OFF else
-                f"Largest relative difference {worst:.1e}: the drawing agrees with the "
-                "analytic solution." if worst < AGREE else
-                f"Largest relative difference {worst:.1e}.")
-    if not compact:
-        texts.append(text(0.08, yy, foot, "table", "results-agreement"))
-    sg = StepGroup("results-table", texts, 3.0)
-    for a in texts:
-        a.axes = ax
-    ax.add_artist(sg)
-
-
-
-
-def _column_widths(sheet: Sheet) -> tuple[int, ...]:
-    heads = ("quantity", "drawn", "analytic", "rel. diff.", "unit")
-    cols = [[h] for h in heads]
-    for r in sheet.rows:
-        for c, v in zip(cols, (r.quantity, r.drawn, r.exact, "1.0e-16", r.unit)):
-            c.append(v)
-    return tuple(max(len(v) for v in c) for c in cols)
-
-
-def _row(cells: tuple[str, ...], widths: tuple[int, ...]) -> str:
-    """A table row in a monospace font: padded columns, two spaces apart."""
-    row = "  ".join(c.ljust(w) for c, w in zip(cells, widths)).rstrip()
-    return row.replace(" ", "\u00a0")  # SVG viewers collapse ordinary spaces
 
 
 def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int | None = None,
@@ -507,7 +402,7 @@ def draw(obj: Any, diagram: str = "posture", ax: Axes | None = None, upto: int |
         if d in optional_modules or d in CURVATURE_PANELS))
     src = as_source(obj, values=values, diagrams=wanted, link=link)
     if ax is None and sheet is not None:
-        from graphkin.render.sheet import build_paper_sheet
+        from graphkin.render.handout import build_paper_sheet
 
         return render_sheet(build_paper_sheet(src, diagram, sheet, upto=upto,
                                               highlight=highlight,

@@ -314,7 +314,7 @@ class StepPainter:
         d = _unit(np.asarray(p[:2], dtype=float))
         if d is None:
             return
-        x0, y0, x1, y1 = panel.view
+        x0, y0, x1, y1 = panel.inner or panel.view  # clear of the title and the scale bar
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
         ts = []
         for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
@@ -597,6 +597,10 @@ class StepPainter:
                                 gid=safe_id(self.prefix + label.replace(" ", "-"))))
             if label.split("*")[0] in ("inflection circle", "Bresse circle"):
                 top = center + np.array([0.0, r])
+                x0, y0, x1, y1 = panel.inner or panel.view
+                mid = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) - center
+                if not (x0 <= top[0] <= x1 and y0 <= top[1] <= y1) and np.hypot(*mid) > 0:
+                    top = center + r * mid / np.hypot(*mid)  # a huge circle: its visible part
                 self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
                            label, style="label-small", prefer=(0.0, 1.0))
             return

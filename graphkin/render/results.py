@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -26,6 +27,7 @@ from graphkin.render.paint import _is_joint_or_named_point
 from graphkin.render.scale import fmt, fmt_angle
 from graphkin.render.scene import finite_xy, sub_digits
 from graphkin.render.sources import Source
+from graphkin.render.table import Table
 
 __all__ = ["Row", "result_rows", "analytic_solution", "AGREE", "ROUND_OFF", "diff_text"]
 
@@ -366,3 +368,135 @@ def _polar(v: np.ndarray, tiny: float = 0.0) -> str:
     if m <= tiny:
         return "0"
     return f"{fmt(m, 6)} {fmt_angle(math.atan2(v[1], v[0]))}"
+
+
+ROW_DIAGRAM = (("theta", "posture"), ("R_", "posture"), ("omega", "velocity"),
+               ("V_", "velocity"), ("alpha", "acceleration"), ("A_", "acceleration"),
+               ("center-", "centers"), ("curvature-", "curvature"))
+"""Row key prefix -> the diagram the row's value is read off."""
+
+
+def row_diagram(key: str) -> str:
+    """The diagram a row belongs to (``V_B`` -> ``velocity``).
+
+    >>> row_diagram("V_B"), row_diagram("center-I13"), row_diagram("theta3")
+    ('velocity', 'centers', 'posture')
+    """
+    for prefix, d in ROW_DIAGRAM:
+        if key.startswith(prefix):
+            return d
+    return ""
+
+
+def scale_factor(file_unit: str, shown: str) -> float:
+    """File units -> the unit a scale bar is written in (``in/s`` -> ``ft/s``: 1/12), by pint.
+
+    >>> round(scale_factor("in/s", "ft/s"), 12), scale_factor("mm/s²", "m/s²")
+    (0.083333333333, 0.001)
+    """
+    if file_unit == shown:
+        return 1.0
+    from graphkin.units import registry
+
+    ureg = registry()
+
+    def q(u: str) -> Any:
+        return ureg.Quantity(1.0, u.replace("²", "**2").replace("^2", "**2"))
+
+    return float(q(file_unit).to(q(shown).units).magnitude)
+
+
+def _short(x: float) -> str:
+    """A value read off a drawing: four significant figures (``31.42``, ``1819``, ``10.00``)."""
+    if x == 0 or not math.isfinite(x):
+        return fmt(x)
+    r = float(f"{x:.4g}")  # 9.99995 rounds to 10.00, not 10.000
+    return fmt(r, 4, trim=False) if abs(r) >= 1e-3 else fmt(r, 3)
+
+
+def _dir(rad: float) -> str:
+    d = math.degrees(rad) % 360.0
+    if d > 180.0:
+        d -= 360.0
+    return f"∠{0.0 if abs(d) < 0.05 else d:.1f}°"
+
+
+def quantity_text(row: Row) -> str:
+    """A row's quantity as a table prints it, subscripts as subscripts (``V_B`` -> ``$V_{B}$``)."""
+    from graphkin.render.text import math_escape, plain
+
+    for prefix, letter in (("V_", "V"), ("A_", "A"), ("R_", "R")):
+        if row.key.startswith(prefix):
+            esc = math_escape(row.key[len(prefix):])
+            if esc:
+                return f"${letter}_{{{esc}}}$"
+    if row.key.startswith("center-") and row.quantity[:1] == "I" and row.quantity[1:].isdigit():
+        return "I" + row.quantity[1:].translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+    return plain(row.quantity)
+
+
+def compact_cells(row: Row, units: dict[str, tuple[str, float]],
+                  tiny: float = 0.0) -> tuple[str, str, str, str]:
+    """A handout's row: quantity, value, direction or sense, unit, in the scale bar's units.
+
+    Parameters
+    ----------
+    row : Row
+    units : dict
+        Diagram (``velocity``) -> (the unit its scale bar is written in, the
+        factor from the file's unit to it).  A diagram not listed keeps the
+        row's own unit.
+    tiny : float
+        Magnitudes at or below this (in the row's file units) print as 0.
+    """
+    unit, k = units.get(row_diagram(row.key), (row.unit, 1.0))
+    v = row.drawn_value
+    q = quantity_text(row)
+    if row.key.startswith("theta") and v:
+        deg = math.degrees(math.remainder(v[0], 2 * math.pi))
+        return q, f"{0.0 if abs(deg) < 0.005 else deg:.2f}", "", "deg"
+    if row.key.startswith(("omega", "alpha")) and v:
+        w = v[0]
+        if abs(w) <= tiny:
+            return q, "0", "", row.unit
+        return q, _short(abs(w)), "ccw" if w > 0 else "cw", row.unit
+    if row.key.startswith(("V_", "A_")) and len(v) >= 2:
+        m = math.hypot(v[0], v[1])
+        if m <= tiny:
+            return q, "0", "", unit
+        return q, _short(m * k), _dir(math.atan2(v[1], v[0])), unit
+    if len(v) == 3 and abs(v[2]) <= 1e-12 * max(abs(v[0]), abs(v[1]), 1e-300):
+        return q, "∞", _homog(np.asarray(v))[2:], ""
+    if len(v) >= 2:
+        xy = np.asarray(v[:2], dtype=float) / (v[2] if len(v) == 3 else 1.0)
+        x, y = (0.0 if abs(c) <= tiny else float(c) * k for c in xy)
+        return q, f"({_short(x)}, {_short(y)})", "", unit
+    if len(v) == 1:
+        return q, _short(v[0] * k), "", unit
+    return q, row.drawn, "", row.unit
+
+
+def full_table(rows: list[Row]) -> Table:
+    """A drawing sheet's results table: drawn value, analytic value, relative difference.
+
+    The footnote says how well the drawing agrees with the analytic solution.
+    """
+    from graphkin.render.text import plain
+
+    worst = max((r.diff for r in rows if r.diff is not None), default=0.0)
+    if all(r.diff is None for r in rows) and all(not r.exact.strip("—") for r in rows):
+        foot = "The analytic solver gave no answer here."
+    elif worst < ROUND_OFF:
+        foot = ("The drawing agrees with the analytic solution to round-off "
+                f"(relative differences below {ROUND_OFF:.0e}).")
+    elif worst < AGREE:
+        foot = (f"Largest relative difference {worst:.1e}: the drawing agrees with the "
+                "analytic solution.")
+    else:
+        foot = f"Largest relative difference {worst:.1e}."
+    cells = [(quantity_text(r), plain(r.drawn), plain(r.exact), diff_text(r.diff), r.unit)
+             for r in rows]
+    return Table(("quantity", "drawn", "analytic", "rel. diff.", "unit"), cells,
+                 [r.key for r in rows], ("left", "right", "right", "right", "left"),
+                 title="Results: read off the construction, and the analytic solution",
+                 foot=foot)

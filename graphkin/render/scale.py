@@ -18,11 +18,14 @@ from dataclasses import dataclass
 
 from graphkin.text import fmt, fmt_angle
 
-__all__ = ["NICE", "nice_ceil", "paper_unit", "Scale", "choose_scale", "quantity_unit", "fmt",
-           "fmt_angle", "CM"]
+__all__ = ["NICE", "SERIES_125", "nice_ceil", "paper_unit", "Scale", "choose_scale",
+           "quantity_unit", "fmt", "fmt_angle", "CM"]
 
 NICE = (1.0, 2.0, 2.5, 5.0)
 """The round numbers of a draftsman's scale (times a power of ten)."""
+
+SERIES_125 = (1.0, 2.0, 5.0)
+"""The 1-2-5 series a handout page uses (``1 cm = 50 mm/s``, ``1 in = 20 ft/s``)."""
 
 CM = 1 / 2.54
 """One centimetre in inches."""
@@ -34,13 +37,17 @@ _BIGGER = {"mm": ("m", 1000.0, 1000.0), "cm": ("m", 100.0, 100.0),
            "in": ("ft", 12.0, 120.0), "inch": ("ft", 12.0, 120.0)}
 
 
-def nice_ceil(x: float) -> float:
+def nice_ceil(x: float, series: tuple[float, ...] = NICE) -> float:
     """The smallest round number (1, 2, 2.5, 5 × 10^k) not below ``x``.
+
+    ``series`` gives the mantissas (:data:`SERIES_125` for a handout page).
 
     Examples
     --------
     >>> nice_ceil(3.2), nice_ceil(0.021), nice_ceil(250), nice_ceil(1)
     (5.0, 0.025, 250.0, 1.0)
+    >>> nice_ceil(0.021, SERIES_125), nice_ceil(250, SERIES_125)
+    (0.05, 500.0)
 
     References
     ----------
@@ -50,7 +57,7 @@ def nice_ceil(x: float) -> float:
         return 1.0
     k = math.floor(math.log10(x))
     for _ in range(3):
-        for n in NICE:
+        for n in series:
             v = n * 10.0**k
             if v >= x * (1 - 1e-12):
                 return float(f"{v:.12g}")
@@ -123,7 +130,8 @@ class Scale:
         return f"1 {self.paper} = {fmt(self.value, 4)} {self.unit}"
 
 
-def choose_scale(extent: float, max_inches: float, paper: str, unit: str) -> Scale:
+def choose_scale(extent: float, max_inches: float, paper: str, unit: str,
+                 series: tuple[float, ...] = NICE) -> Scale:
     """The round scale that fits ``extent`` data units into ``max_inches`` of paper.
 
     Parameters
@@ -137,6 +145,8 @@ def choose_scale(extent: float, max_inches: float, paper: str, unit: str) -> Sca
     unit : str
         The data unit (``"in/s"``); a larger unit is used for the text when the
         numbers grow big (mm/s written as m/s, in/s as ft/s).
+    series : tuple of float
+        The round mantissas (:data:`NICE`, or :data:`SERIES_125` on a handout).
 
     Returns
     -------
@@ -151,10 +161,10 @@ def choose_scale(extent: float, max_inches: float, paper: str, unit: str) -> Sca
     paper_in = 1.0 if paper == "in" else CM
     need = max(extent, 1e-300) / max_inches * paper_in  # data units per paper unit
     factor, shown = 1.0, unit
-    value = nice_ceil(need)
+    value = nice_ceil(need, series)
     if big is not None and value >= big[2]:
         shown = big[0] + ("/" + rest if rest else "")
         factor = big[1]
-        value = nice_ceil(need / factor)
+        value = nice_ceil(need / factor, series)
     return Scale(per_inch=value * factor / paper_in, paper=paper, value=value, unit=shown,
                  factor=factor)

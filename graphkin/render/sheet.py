@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Collection
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from shapely.geometry import MultiPoint
@@ -33,7 +34,7 @@ from graphkin.render.labels import place_labels, text_size
 from graphkin.render.mechanism import mechanism_extent, paint_mechanism
 from graphkin.render.paint import POLES, StepPainter
 from graphkin.render.results import Row, result_rows
-from graphkin.render.scale import choose_scale, paper_unit, quantity_unit
+from graphkin.render.scale import NICE, SERIES_125, choose_scale, paper_unit, quantity_unit
 from graphkin.render.scene import Item, Panel, finite_xy, safe_id
 from graphkin.render.sources import (
     CURVATURE_PANELS,
@@ -46,7 +47,7 @@ from graphkin.render.sources import (
 )
 from graphkin.render.style import IMAGE_FILLS, STYLES
 
-__all__ = ["Sheet", "build_sheet", "MARGIN", "TITLE_H", "FOOT_H"]
+__all__ = ["Sheet", "build_sheet", "MARGIN", "TITLE_H", "FOOT_H", "GAP"]
 
 MARGIN = 0.45
 """Clearance around a panel's content, in inches."""
@@ -94,14 +95,12 @@ class Sheet:
     """``a4`` or ``letter`` for a handout page (``--sheet``), else None."""
     last_row: tuple[float, float] = (0.0, 0.0)
     """Width used by the last row of panels and its height, in inches."""
-    table_columns: int = 1
-    """Columns of the results table (a handout page folds a long table in two)."""
     title_offset: tuple[float, float] | None = None
-    block_origin: tuple[float, float] | None = None
-    """Lower-left corner of a handout's title block (None: the page's bottom right)."""
-    """Where a handout page's content starts (left, top), in inches."""
+    """Where the sheet's title starts (left, top), in inches (None: the top left)."""
     width_cap: float = 11.5
     """The widest a row of panels may be, in inches."""
+    page: Any = None
+    """A handout page's band (:class:`graphkin.render.handout.Page`), else None."""
 
     def panel(self, name: str) -> Panel:
         """The panel called ``name``."""
@@ -132,7 +131,8 @@ def sheet_diagrams(src: Source, diagram: str) -> list[str]:
 def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                 highlight: int | Collection[int] | None = None, table: bool = True,
                 max_inches: float | None = None, title: str | None = None,
-                paper: str | None = None, width_cap: float = 11.5) -> Sheet:
+                paper: str | None = None, width_cap: float = 11.5, dry: bool = False,
+                drop: Collection[str] = (), grow: dict[str, float] | None = None) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
     Parameters
@@ -151,6 +151,19 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         The largest side of a panel.
     title : str, optional
         The sheet's title (default: the mechanism's title).
+    paper : str, optional
+        ``a4`` or ``letter``: a handout page (:mod:`graphkin.render.handout`):
+        scales from the 1-2-5 series, tighter clearances, and ``all`` shows
+        only the first curvature figure, (a) the inflection circle.
+    dry : bool
+        Lay the panels out and paint them but place no labels (the handout
+        page tries many scales; only the one it keeps gets its labels).
+    drop : collection of str
+        Panels left off (``kennedy``, ``curvature``): a handout page that
+        does not fit otherwise.
+    grow : dict, optional
+        Panel name -> a factor on its room (a handout page draws a panel a
+        scale larger where the page has room).
 
     Raises
     ------
@@ -158,6 +171,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         The diagram cannot be drawn for this source.
     """
     diagrams = sheet_diagrams(src, diagram)
+    if "curvature" in drop and diagram == "all" and "curvature" in diagrams \
+            and len(diagrams) > 1:
+        diagrams.remove("curvature")
     if "curvature" in diagrams:
         # one idea per figure, as the book draws it (Figs. 4.25-4.39)
         subs = split_curvature(src)
@@ -168,6 +184,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                     f"use it{'; the link turns about a frame pivot' if not subs else ''}); "
                     f"draw --diagram curvature", diagram=diagram)
             subs = [diagram]
+        if paper and diagram == "all":
+            subs = subs[:1]  # a handout's `all` page: (a) only; -d curvature has them all
         if subs:
             i = diagrams.index("curvature")
             diagrams[i:i + 1] = subs
@@ -241,12 +259,17 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         room = big if p.plane == "posture" else big * 0.85
         if not many and p.name in ("centers", "curvature") and max_inches is None:
             room = 6.5
+        room *= (grow or {}).get(p.name, 1.0)
         extent = max(float(ex), float(ey), 1e-12)
-        p.scale = choose_scale(extent, room, paper_u, p.unit)
+        p.scale = choose_scale(extent, room, paper_u, p.unit,
+                               SERIES_125 if paper else NICE)
         k = p.k
         # a handout page packs its panels closer (smaller clearances, no minimum width)
         margin = 0.25 if paper else MARGIN
         minw, minh = (1.0 * k, 0.6 * k) if paper else (1.6 * k, 0.9 * k)
+        # the panel is at least as wide as its whole title
+        minw = max(minw, (text_size(p.title, STYLES["title"]["size"], "title")[0] + 0.25
+                          - 2 * margin) * k)
         cx_, cy_ = (lo + hi) / 2
         w, h = max(float(ex), minw), max(float(ey), minh)
         p.view = (cx_ - w / 2 - margin * k, cy_ - h / 2 - margin * k - FOOT_H * k,
@@ -256,6 +279,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     # ---- the Kennedy circle beside the instant centers (Fig. 3.22b) ------
     ic = src.extras.get("centers")
     if "centers" in diagrams and ic is not None and hasattr(ic, "kennedy_circle") \
+            and "kennedy" not in drop \
             and length_of.get("centers") is not None:
         from graphkin.render.kennedy import kennedy_panel
 
@@ -285,10 +309,15 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             _images(src, poly, painters[d], upto if d == diagram else None)
     for d in diagrams:
         if d in ("cubic", "curvature") and length_of.get(d) is not None:
-            _curvature_extras(src, length_of[d], d)  # type: ignore[arg-type]
+            own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
+            _curvature_extras(src, length_of[d], d,  # type: ignore[arg-type]
+                              upto if own else None)
     for p in panels:
+        if p.mechanism:
+            _hold_anchors(p)
         _frame(p)
-        place_labels(p)
+        if not dry:
+            place_labels(p)
 
     rows: list[Row] = []
     if table and mech is not None:
@@ -381,11 +410,13 @@ def _reached(src: Source, diagram: str, upto: int, rows: list[Row]) -> list[Row]
     return [r for r in rows if label_of(r.key) in made or label_of(r.key) not in later]
 
 
-def _curvature_extras(src: Source, p: Panel, d: str) -> None:
+def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) -> None:
     """The cubic of stationary curvature as a curve and Ball's point (Figs. 4.37-4.39).
 
     For a link turning about a frame pivot: the sentence that says why there is
-    nothing more to draw.
+    nothing more to draw.  A started drawing (``upto``) shows the cubic only
+    once its panel's last step is drawn, and Ball's point once the step that
+    finds it (U) is: the curve and the point are answers.
     """
     lc = src.extras.get("curvature")
     if lc is None:
@@ -395,18 +426,31 @@ def _curvature_extras(src: Source, p: Panel, d: str) -> None:
         cx = src.constructions.get("curvature")
         note = cx.steps[0].note if cx is not None and len(cx.steps) else ""
         if note:
-            # below the drawing, where the scale bar was (it moves down under the sentence)
+            # below the drawing, where the scale bar was (it moves down under the sentence),
+            # wrapped to the panel's width (at least 3 in: a narrow panel grows)
             vx0, vy0, vx1, vy1 = p.view
-            p.view = (vx0, vy0 - 0.5 * p.k, vx1, vy1)
+            room = max(p.size[0] - 0.3, 3.0)
+            text = _wrap_to(note, room, STYLES["caption"]["size"])
+            depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
+            grow = max(room + 0.3 - p.size[0], 0.0) * p.k
+            p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
             g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
             g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
                                 "caption", gid=f"{p.prefix}curvature-note-text",
-                                text=_wrap(note, 80), ha="left", va="top", key="curvature note"))
+                                text=text, ha="left", va="top", key="curvature note"))
         return
     cubic = getattr(lc, "cubic", None)
     if d != "cubic" or cubic is None:
         return
+    steps = list(getattr(src.constructions.get(d), "steps", []))
+    last = max((s.index for s in steps), default=-1)
+    found_u = min((s.index for s in steps if "U" in s.outputs), default=last)
+    if upto is not None and upto < last:
+        cubic = None  # not yet: the curve is drawn with the panel's last step
     g = p.group(f"{p.prefix}cubic-curve", 1.8, key="cubic of stationary curvature")
+    if cubic is None:
+        _ball(lc, g, p, upto is None or upto >= found_u)
+        return
     psi = np.linspace(0.0, np.pi, 2001)[1:-1]
     with np.errstate(all="ignore"):
         pts = np.asarray(cubic.point(psi), dtype=float)
@@ -425,16 +469,52 @@ def _curvature_extras(src: Source, p: Panel, d: str) -> None:
                                 key="cubic" if not pieces else f"cubic:{pieces}"))
             pieces += 1
         start = None
+    _ball(lc, g, p, upto is None or upto >= found_u)
+
+
+def _ball(lc: Any, g: Any, p: Panel, reached: bool) -> None:
+    """Ball's point U as a ring (Fig. 4.39), once the construction has found it."""
     ball = getattr(lc, "ball_point", None)
-    if ball is not None and np.all(np.isfinite(ball)):
+    if reached and ball is not None and np.all(np.isfinite(ball)):
         g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
                             gid=f"{p.prefix}ball-point", key="Ball's point"))
 
 
-def _wrap(text: str, width: int) -> str:
+def _hold_anchors(p: Panel, reach: float = 1.0, clear: float = 0.3) -> None:
+    """Widen a panel's view to hold every label's anchor up to ``reach`` inches beyond it.
+
+    A link's number sits beside the link (a slider's beside its block, past
+    the end of the guide the extent counted); an anchor outside the view would
+    push its label onto another link.
+    """
+    x0, y0, x1, y1 = p.view
+    k = p.k
+    lo = np.array([x0, y0 + FOOT_H * k])
+    hi = np.array([x1, y1 - TITLE_H * k])
+    for r in p.labels:
+        a = finite_xy(np.array([*np.asarray(r.anchor, dtype=float)[:2], 1.0]))
+        if a is None:
+            continue
+        out = np.maximum(lo - a, 0.0) + np.maximum(a - hi, 0.0)
+        if np.all(out <= reach * k):
+            lo = np.minimum(lo, a - np.where(a < lo, clear * k, 0.0))
+            hi = np.maximum(hi, a + np.where(a > hi, clear * k, 0.0))
+    if (lo[0], lo[1] - FOOT_H * k, hi[0], hi[1] + TITLE_H * k) != (x0, y0, x1, y1):
+        p.view = (float(lo[0]), float(lo[1] - FOOT_H * k), float(hi[0]),
+                  float(hi[1] + TITLE_H * k))
+        p.inner = (float(lo[0]), float(lo[1]), float(hi[0]), float(hi[1]))
+
+
+def _wrap_to(text: str, inches: float, size: float) -> str:
+    """``text`` in lines no wider than ``inches`` at ``size`` points (font metrics)."""
     import textwrap
 
-    return "\n".join(textwrap.wrap(text, width))
+    chars = 100
+    lines = textwrap.wrap(text, chars)
+    while chars > 10 and any(text_size(ln, size, "caption")[0] > inches for ln in lines):
+        chars -= 3
+        lines = textwrap.wrap(text, chars)
+    return "\n".join(lines)
 
 
 def _inside(q: np.ndarray, rect: tuple[float, float, float, float] | None) -> bool:
@@ -450,7 +530,8 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
     made = {o for s in steps for o in s.outputs}
     pref = "v" if p.plane == "velocity" else "a"
     pole = p.pole
-    for i, lid in enumerate(mech.moving):
+    shaded = 0  # fills go by image, not by link: the first images differ most in grey
+    for lid in mech.moving:
         names = [n for n in mech.links[lid].points if n not in mech.helper_points]
         world = {}
         for n in names:
@@ -484,7 +565,8 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
             continue
         g = p.group(f"{p.prefix}image-{safe_id(lid)}", 1.5, key=f"image {lid}")
         g.items.append(Item("polygon", np.array(pts), "image", key=f"image {lid}",
-                            overrides={"fc": IMAGE_FILLS[i % len(IMAGE_FILLS)]}))
+                            overrides={"fc": IMAGE_FILLS[shaded % len(IMAGE_FILLS)]}))
+        shaded += 1
 
 
 def _frame(p: Panel) -> None:
@@ -513,28 +595,15 @@ def _frame(p: Panel) -> None:
                         gid=f"{p.prefix}scale-text-{p.name}", text=s.text, ha="left"))
 
 
-TABLE_ROW = 0.155
-"""Height of a results-table row, in inches."""
-TABLE_CHAR = 0.0585
-"""Width of one character of the table's monospace font, in inches."""
-
-
 def _layout(sheet: Sheet) -> None:
     """Place the panels in rows (shelves) and the table under them; set the sheet size."""
     sizes = [p.size for p in sheet.panels]
     boxes: list[tuple[float, float]] = list(sizes)
     if sheet.rows:
-        chars = [8, 5, 8, 10, 4]  # the headings
-        for row in sheet.rows:
-            chars = [max(a, b) for a, b in zip(chars, (len(row.quantity), len(row.drawn),
-                                                       len(row.exact), 10, len(row.unit)))]
-        if sheet.paper:  # a handout's table: quantity, drawn value, unit
-            chars = [chars[0], chars[1], 0, 0, chars[4]]
-        width = max((sum(chars) + 8) * TABLE_CHAR, (40 if sheet.paper else 86) * TABLE_CHAR) \
-            + 0.2
-        sheet.table_columns = 2 if sheet.paper and len(sheet.rows) > 16 else 1
-        per = -(-len(sheet.rows) // sheet.table_columns)
-        boxes.append((width * sheet.table_columns, TABLE_ROW * (per + 3) + 0.25))
+        from graphkin.render.results import full_table
+        from graphkin.render.table import table_size
+
+        boxes.append(table_size(full_table(sheet.rows)))
     width_cap = max(sheet.width_cap, max(w for w, _ in boxes))
     rows: list[list[int]] = [[]]
     used = 0.0
@@ -546,7 +615,7 @@ def _layout(sheet: Sheet) -> None:
         rows[-1].append(i)
     heights = [max(boxes[i][1] for i in r) for r in rows]
     W = max(sum(boxes[i][0] for i in r) + GAP * (len(r) - 1) for r in rows) + 2 * GAP
-    if sheet.title and not sheet.paper:  # (a handout's title block repeats a long title)
+    if sheet.title:
         W = max(W, text_size(sheet.title, STYLES["title"]["size"] + 1)[0] * 1.1 + 2 * GAP)
     H = sum(heights) + GAP * (len(rows) + 1) + (SHEET_TITLE_H if sheet.title else 0.0)
     y = H - (SHEET_TITLE_H if sheet.title else 0.0) - GAP
@@ -564,54 +633,3 @@ def _layout(sheet: Sheet) -> None:
         sheet.table_origin = positions[-1]
         sheet.table_size = boxes[-1]
     sheet.size = (float(W), float(H))
-
-
-PAPERS = {"a4": (8.27, 11.69), "letter": (8.5, 11.0)}
-"""Paper sizes in inches (portrait)."""
-PAGE_MARGIN = 0.4
-"""Clearance around a handout page's content, in inches."""
-TITLE_BLOCK = (3.4, 0.75)
-"""Width and height of a handout's title block, in inches."""
-
-
-def build_paper_sheet(src: Source, diagram: str, paper: str, **kw: object) -> Sheet:
-    """A sheet on one page of ``paper`` (``a4`` or ``letter``) at round scales.
-
-    The panels are laid out at the largest round scales that let the whole
-    sheet, its results table and a title block fit the page, portrait or
-    landscape, whichever allows the larger drawing.
-
-    Raises
-    ------
-    DiagramUnavailable
-        The diagram cannot be drawn; or ``paper`` is not a known size.
-    """
-    if paper not in PAPERS:
-        raise DiagramUnavailable(f"unknown paper {paper!r}; valid: {', '.join(PAPERS)}",
-                                 diagram=diagram)
-    pw, ph = PAPERS[paper]
-    last: Sheet | None = None
-    for big in (5.0, 4.2, 3.5, 2.9, 2.4, 2.0, 1.7, 1.4, 1.2, 1.0):
-        for w, h in ((pw, ph), (ph, pw)):
-            sheet = build_sheet(src, diagram, max_inches=big, paper=paper,
-                                width_cap=w - 2 * PAGE_MARGIN, **kw)  # type: ignore[arg-type]
-            last = sheet
-            sw, sh = sheet.size
-            # the title block goes under the sheet, or beside its last row when there is room
-            beside = sheet.last_row[0] + TITLE_BLOCK[0] <= w - 2 * PAGE_MARGIN \
-                and sheet.last_row[1] >= TITLE_BLOCK[1]
-            if sw <= w - 2 * PAGE_MARGIN and sh + (0.0 if beside else TITLE_BLOCK[1]) \
-                    <= h - 2 * PAGE_MARGIN:
-                dx = (w - sw) / 2
-                dy = h - PAGE_MARGIN - sh
-                for p in sheet.panels:
-                    p.origin = (p.origin[0] + dx, p.origin[1] + dy)
-                if sheet.rows:
-                    sheet.table_origin = (sheet.table_origin[0] + dx, sheet.table_origin[1] + dy)
-                sheet.title_offset = (dx, h - PAGE_MARGIN)
-                if beside:  # the block's corner: bottom right of the content
-                    sheet.block_origin = (dx + sw - TITLE_BLOCK[0] - GAP, dy + GAP)
-                sheet.size = (w, h)
-                return sheet
-    assert last is not None
-    return last
