@@ -31,12 +31,10 @@ from graphkin.render.labels import place_labels
 from graphkin.render.results import Row
 from graphkin.render.scale import Scale, choose_scale, fmt, paper_unit
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, clip_segment
+from graphkin.render.handout import PAGE_MARGIN, PAPERS
 from graphkin.render.sheet import (
     FOOT_H,
     GAP,
-    PAGE_MARGIN,
-    PAPERS,
-    TITLE_BLOCK,
     TITLE_H,
     Sheet,
     _frame,
@@ -713,6 +711,9 @@ def paper_forces_sheet(fs: ForceSolution, paper: str, *, upto: int | None = None
     assert last is not None
     return last
 
+
+TITLE_BLOCK = (3.4, 0.75)
+"""Width and height of the room kept for a title block, in inches."""
 
 SCALES_H = 0.22
 """Height of the line under the sheet's title that states both scales, in inches."""
