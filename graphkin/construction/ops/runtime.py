@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -106,6 +107,16 @@ def _vmin(x: Any) -> float:
     if type(x) is not _ND or x.ndim == 0:
         return float(x)
     return float(np.fmin.reduce(x, axis=None))
+
+
+def _all_finite(a: Any) -> bool:
+    """True when every entry is finite (a sum first: finite sums need no second look)."""
+    a = np.asarray(a)
+    if a.dtype.kind not in "fc":
+        return True
+    if math.isfinite(np.add.reduce(a, axis=None)):
+        return True
+    return bool(np.isfinite(a).all())
 
 
 def _absmax(a: Any) -> float:

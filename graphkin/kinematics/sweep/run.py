@@ -17,6 +17,7 @@ from graphkin.errors import InputError
 from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
 from graphkin.kinematics.sweep.drive_range import _drive_range
 from graphkin.kinematics.sweep.engine import _Block, _engine
+from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.kinematics.sweep.extra_columns import (
     _center_columns,
     _curvature_columns,
@@ -125,7 +126,14 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     dv = np.radians(user) if eng.drive.kind == "angle" else user
     blocks: list[_Block] = []
     released = False
-    if count <= BLOCK:
+    fast = fast_columns(eng, dv, user) if count <= BLOCK else None
+    if fast is not None:
+        # every posture clean: the constructions' values are replayed only if asked for
+        cols = fast
+        valid, assembled = np.ones(count, dtype=bool), np.ones(count, dtype=bool)
+        blocks.append(_Block(dv, None, None, None, user=user))
+        released = True
+    elif count <= BLOCK:
         blk = eng.solve(dv)
         blk.user = user
         blocks.append(blk)
@@ -139,15 +147,24 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         valid = np.empty(count, dtype=bool)
         assembled = np.empty(count, dtype=bool)
         for i in range(0, count, BLOCK):
-            blk = eng.solve(dv[i:i + BLOCK])
-            blk.user = user[i:i + BLOCK]
-            part = _columns(eng, blk)
+            part = fast_columns(eng, dv[i:i + BLOCK], user[i:i + BLOCK])
+            if part is not None:
+                blk = _Block(dv[i:i + BLOCK], None, None, None, user=user[i:i + BLOCK])
+            else:
+                blk = eng.solve(dv[i:i + BLOCK])
+                blk.user = user[i:i + BLOCK]
+                part = _columns(eng, blk)
             if not cols:
                 cols = {k: np.empty(count) for k in part}
             for k, v in part.items():
                 cols[k][i:i + BLOCK] = v
-            valid[i:i + BLOCK] = _valid_of(blk)
-            assembled[i:i + BLOCK] = _assembled_of(blk)
+            if blk.ev is None and blk.analytic is None:  # written out: every posture clean
+                valid[i:i + BLOCK] = True
+                assembled[i:i + BLOCK] = True
+                released = True
+            else:
+                valid[i:i + BLOCK] = _valid_of(blk)
+                assembled[i:i + BLOCK] = _assembled_of(blk)
             if blk.analytic is None:
                 blk = _Block(blk.dv, None, None, None, user=blk.user)
                 released = True
