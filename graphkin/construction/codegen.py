@@ -85,7 +85,9 @@ def template(name: str) -> Callable[[Template], Template]:
 
 
 def _num(expr: str) -> float | None:
-    """The value of a literal expression, else None."""
+    """The value of a literal expression (``1.5``, ``(-1.5)``: see :func:`lit`), else None."""
+    if not (expr[:1].isdigit() or (expr[:2] == "(-" and expr[2:3].isdigit())):
+        return None
     try:
         return float(expr.strip("()"))
     except ValueError:
@@ -177,6 +179,7 @@ class Gen:
 
     # ---- names ---------------------------------------------------------
     def tmp(self, hint: str = "t") -> str:
+        """A fresh local name."""
         self.n += 1
         return f"_{hint}{self.n}"
 
@@ -194,6 +197,7 @@ class Gen:
         return self.bind(a)
 
     def emit(self, line: str) -> None:
+        """Write one line of the function's body."""
         self.lines.append("    " + line)
 
     def let(self, expr: str, hint: str = "t") -> str:
@@ -255,27 +259,32 @@ class Gen:
         return self.let(f"{a} * {b}")
 
     def neg(self, a: str) -> str:
+        """``-a`` as a name (a literal is negated now)."""
         x = _num(a)
         return lit(-x) if x is not None else self.let(f"-{a}")
 
     @staticmethod
     def is_zero(a: str) -> bool:
+        """True for the literal zero."""
         return _num(a) == 0.0
 
     # ---- inputs --------------------------------------------------------
     def val(self, label: str) -> _Val:
+        """How ``label`` is held (it must be made or given before)."""
         v = self.vals.get(label)
         if v is None:
             raise Unsupported(f"{label!r} is read before it is made or given")
         return v
 
     def pt(self, label: str) -> tuple[str, str]:
+        """A point's x and y rows (``w == 1``); NeedGeneric for a general function's point."""
         v = self.val(label)
         if v.form == "point":
             return v.ex[0], v.ex[1]
         raise NeedGeneric(label)
 
     def rows(self, label: str) -> tuple[str, ...]:
+        """The rows of a line, circle or vector; a point as ``x, y, w``."""
         v = self.val(label)
         if v.form == "point":
             return (v.ex[0], v.ex[1], "1.0")
@@ -288,6 +297,7 @@ class Gen:
         raise NeedGeneric(label)
 
     def scalar(self, label: str) -> str:
+        """A scalar (an angle, a rate)."""
         v = self.val(label)
         if v.form != "scalar":
             raise NeedGeneric(label)
@@ -336,12 +346,15 @@ class Gen:
         return v
 
     def put_point(self, label: str, x: str, y: str) -> None:
+        """Define a point by its Cartesian rows."""
         self._new(label, "point", (self.let(x, "x"), self.let(y, "y")), "point")
 
     def put_rows(self, label: str, kind: str, *rows: str) -> None:
+        """Define a line or circle (three rows) or a vector (two)."""
         self._new(label, "rows", tuple(self.let(r, "r") for r in rows), kind)
 
     def put_scalar(self, label: str, expr: str, trig: Any = None) -> None:
+        """Define a scalar; ``trig`` gives its cosine and sine (or writes them when asked)."""
         self._new(label, "scalar", (self.let(expr, "a"),), "scalar", trig=trig)
 
     def put_const(self, label: str, value: Any, kind: str) -> None:
@@ -361,6 +374,7 @@ class Gen:
 
     # ---- a step through its general function -------------------------------
     def generic(self, step: Step) -> None:
+        """Call the step's general function on homogeneous values; check what it returns."""
         fn = self.bind(functools.partial(OPS[step.op], tol=self.tol, **step.params), "op")
         args = ", ".join(self.homog(i) for i in step.inputs)
         outs = [self.tmp("o") for _ in step.outputs]

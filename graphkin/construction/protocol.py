@@ -12,7 +12,6 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8.
 from __future__ import annotations
 
 import json
-import math
 import operator
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
@@ -25,8 +24,8 @@ from graphkin.construction.ops.runtime import (
     KERNELS,
     ORIGINATING,
     CompileInfo,
-    _all_finite,
     Runtime,
+    _all_finite,
     generic_kernel,
 )
 from graphkin.construction.step import Role, Step, VectorEquation

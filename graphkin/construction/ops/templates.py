@@ -17,10 +17,14 @@ polygon, Coriolis component).
 
 from __future__ import annotations
 
+import functools
+from typing import Any
+
 import numpy as np
 
-from graphkin.construction.codegen import Gen, lit, template
+from graphkin.construction.codegen import Gen, _num, lit, template
 from graphkin.construction.step import Step
+from graphkin.tolerance import Tolerance
 
 
 def _pair(gen: Gen, v: object) -> tuple[str, str]:
@@ -78,7 +82,7 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     dx = gen.let(gen.sub(x2, x1), "dx")
     dy = gen.let(gen.sub(y2, y1), "dy")
     dd = gen.let(gen.add(gen.mul(dx, dx), gen.mul(dy, dy)), "dd")
-    k1, k2 = _value(r1), _value(r2)
+    k1, k2 = _num(r1), _num(r2)
     rr = lit(k1 * k1 - k2 * k2) if k1 is not None and k2 is not None \
         else f"({r1} * {r1} - {r2} * {r2})"
     # along and across the line of centers, in units of its length d:
@@ -92,7 +96,12 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     else:
         lim = (f"(2.0 * ({lit(tol.length_abs)} + {lit(tol.length_rel)} * "
                f"max(float(_max(_abs({r1}), None)), float(_max(_abs({r2}), None))))) ** 2")
-    gen.bail_unless(f"_min({q2}, None) >= 0.0 and _min({dd}, None) > {lim}")
+    gen.bail_unless(f"_min({dd}, None) > {lim}")
+    # tangency (a dead center): a tiny negative h² from a length error counts as zero, as
+    # the kernel rounds it; arcs that do not meet are not clean
+    fix = gen.bind(functools.partial(_tangent_cc, tol=tol), "tangent")
+    q2 = gen.let(f"{q2} if _min({q2}, None) >= 0.0 else {fix}({q2}, {dd}, {r1}, {r2})", "q")
+    gen.bail_unless(f"_min({q2}, None) >= 0.0")
     q = gen.let(f"_sqrt({q2})", "h")
     # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
     pdx, pdy, qdx, qdy = gen.mul(p, dx), gen.mul(p, dy), gen.mul(q, dx), gen.mul(q, dy)
@@ -103,12 +112,18 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     gen.put_point(step.outputs[0], gen.add(x, x1), gen.add(y, y1))
 
 
-def _value(e: str) -> float | None:
-    """The number a literal stands for (None for a name)."""
-    try:
-        return float(e.strip("()"))
-    except ValueError:
-        return None
+def _tangent_cc(q2: Any, dd: Any, r1: Any, r2: Any, *, tol: Tolerance) -> Any:
+    """(h/d)² of two arcs with a round-off below the length tolerance taken as a tangency."""
+    dist = np.sqrt(dd)
+    scale = np.maximum(np.maximum(r1, r2), dist)
+    eps = tol.length_abs + tol.length_rel * np.abs(scale)
+    return np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
+
+
+def _tangent_lc(h2: Any, s: Any, r: Any, *, tol: Tolerance) -> Any:
+    """h² of a line and an arc with a round-off below the length tolerance taken as zero."""
+    eps = tol.length_abs + tol.length_rel * np.abs(np.maximum(r, np.abs(s)))
+    return np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
 
 
 @template("intersect_line_circle")
@@ -118,6 +133,8 @@ def _intersect_line_circle(gen: Gen, step: Step) -> None:
     cx, cy, r = gen.rows(c)
     s = gen.let(gen.add(gen.add(gen.mul(l0, cx), gen.mul(l1, cy)), l2), "s")
     h2 = gen.let(gen.sub(gen.mul(r, r), gen.mul(s, s)), "h")
+    fix = gen.bind(functools.partial(_tangent_lc, tol=gen.tol), "tangent")
+    h2 = gen.let(f"{h2} if _min({h2}, None) >= 0.0 else {fix}({h2}, {s}, {r})", "h")
     gen.bail_unless(f"_min({h2}, None) >= 0.0")
     h = gen.let(f"_sqrt({h2})", "h")
     # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)

@@ -31,7 +31,12 @@ def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple
         return a, b, math.isclose(abs(b - a), 360.0, rel_tol=1e-12)
     if start is not None and stop is not None:
         return float(start), float(stop), False
-    lo, hi = _travel(eng)
+    # the search depends only on the mechanism: found once, for every later sweep of it
+    key = ("travel", d.value)
+    travel = eng.extras.get(key)
+    if travel is None:
+        travel = eng.extras[key] = _travel(eng)
+    lo, hi = travel
     return (lo if start is None else float(start)), (hi if stop is None else float(stop)), False
 
 

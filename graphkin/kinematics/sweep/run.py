@@ -17,12 +17,12 @@ from graphkin.errors import InputError
 from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
 from graphkin.kinematics.sweep.drive_range import _drive_range
 from graphkin.kinematics.sweep.engine import _Block, _engine
-from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.kinematics.sweep.extra_columns import (
     _center_columns,
     _curvature_columns,
     _transmission_columns,
 )
+from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.kinematics.sweep.report import Sweep
 from graphkin.mechanisms.model import Mechanism
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
@@ -126,7 +126,10 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     dv = np.radians(user) if eng.drive.kind == "angle" else user
     blocks: list[_Block] = []
     released = False
-    fast = fast_columns(eng, dv, user) if count <= BLOCK else None
+    # the transmission angles read the replayed constructions: then there is no gain in
+    # writing the columns out first
+    written = not transmission
+    fast = fast_columns(eng, dv, user) if count <= BLOCK and written else None
     if fast is not None:
         # every posture clean: the constructions' values are replayed only if asked for
         cols = fast
@@ -147,7 +150,7 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         valid = np.empty(count, dtype=bool)
         assembled = np.empty(count, dtype=bool)
         for i in range(0, count, BLOCK):
-            part = fast_columns(eng, dv[i:i + BLOCK], user[i:i + BLOCK])
+            part = fast_columns(eng, dv[i:i + BLOCK], user[i:i + BLOCK]) if written else None
             if part is not None:
                 blk = _Block(dv[i:i + BLOCK], None, None, None, user=user[i:i + BLOCK])
             else:
