@@ -119,6 +119,20 @@ def _all_finite(a: Any) -> bool:
     return bool(np.isfinite(a).all())
 
 
+def tangent_cc(q2: Any, dd: Any, r1: Any, r2: Any, *, tol: Tolerance) -> Any:
+    """(h/d)² of two arcs with a round-off below the length tolerance taken as a tangency."""
+    dist = np.sqrt(dd)
+    scale = np.maximum(np.maximum(r1, r2), dist)
+    eps = tol.length_abs + tol.length_rel * np.abs(scale)
+    return np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
+
+
+def tangent_lc(h2: Any, s: Any, r: Any, *, tol: Tolerance) -> Any:
+    """h² of a line and an arc with a round-off below the length tolerance taken as zero."""
+    eps = tol.length_abs + tol.length_rel * np.abs(np.maximum(r, np.abs(s)))
+    return np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
+
+
 def _absmax(a: Any) -> float:
     """Largest absolute entry (NaN ignored)."""
     if type(a) is not _ND or a.ndim == 0:

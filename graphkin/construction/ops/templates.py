@@ -18,13 +18,12 @@ polygon, Coriolis component).
 from __future__ import annotations
 
 import functools
-from typing import Any
 
 import numpy as np
 
 from graphkin.construction.codegen import Gen, _num, lit, template
+from graphkin.construction.ops.runtime import tangent_cc, tangent_lc
 from graphkin.construction.step import Step
-from graphkin.tolerance import Tolerance
 
 
 def _pair(gen: Gen, v: object) -> tuple[str, str]:
@@ -99,31 +98,21 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     gen.bail_unless(f"_min({dd}, None) > {lim}")
     # tangency (a dead center): a tiny negative h² from a length error counts as zero, as
     # the kernel rounds it; arcs that do not meet are not clean
-    fix = gen.bind(functools.partial(_tangent_cc, tol=tol), "tangent")
+    fix = gen.bind(functools.partial(tangent_cc, tol=tol), "tangent")
     q2 = gen.let(f"{q2} if _min({q2}, None) >= 0.0 else {fix}({q2}, {dd}, {r1}, {r2})", "q")
     gen.bail_unless(f"_min({q2}, None) >= 0.0")
     q = gen.let(f"_sqrt({q2})", "h")
     # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
-    pdx, pdy, qdx, qdy = gen.mul(p, dx), gen.mul(p, dy), gen.mul(q, dx), gen.mul(q, dy)
-    if step.params["branch"] == "left":
-        x, y = gen.sub(pdx, qdy), gen.add(pdy, qdx)
-    else:
-        x, y = gen.add(pdx, qdy), gen.sub(pdy, qdx)
+    x, y = _turned(gen, p, q, dx, dy, step.params["branch"] == "left")
     gen.put_point(step.outputs[0], gen.add(x, x1), gen.add(y, y1))
 
 
-def _tangent_cc(q2: Any, dd: Any, r1: Any, r2: Any, *, tol: Tolerance) -> Any:
-    """(h/d)² of two arcs with a round-off below the length tolerance taken as a tangency."""
-    dist = np.sqrt(dd)
-    scale = np.maximum(np.maximum(r1, r2), dist)
-    eps = tol.length_abs + tol.length_rel * np.abs(scale)
-    return np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
-
-
-def _tangent_lc(h2: Any, s: Any, r: Any, *, tol: Tolerance) -> Any:
-    """h² of a line and an arc with a round-off below the length tolerance taken as zero."""
-    eps = tol.length_abs + tol.length_rel * np.abs(np.maximum(r, np.abs(s)))
-    return np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
+def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool) -> tuple[str, str]:
+    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it."""
+    pux, puy, qux, quy = gen.mul(p, ux), gen.mul(p, uy), gen.mul(q, ux), gen.mul(q, uy)
+    if left:
+        return gen.sub(pux, quy), gen.add(puy, qux)
+    return gen.add(pux, quy), gen.sub(puy, qux)
 
 
 @template("intersect_line_circle")
@@ -133,16 +122,12 @@ def _intersect_line_circle(gen: Gen, step: Step) -> None:
     cx, cy, r = gen.rows(c)
     s = gen.let(gen.add(gen.add(gen.mul(l0, cx), gen.mul(l1, cy)), l2), "s")
     h2 = gen.let(gen.sub(gen.mul(r, r), gen.mul(s, s)), "h")
-    fix = gen.bind(functools.partial(_tangent_lc, tol=gen.tol), "tangent")
+    fix = gen.bind(functools.partial(tangent_lc, tol=gen.tol), "tangent")
     h2 = gen.let(f"{h2} if _min({h2}, None) >= 0.0 else {fix}({h2}, {s}, {r})", "h")
     gen.bail_unless(f"_min({h2}, None) >= 0.0")
     h = gen.let(f"_sqrt({h2})", "h")
     # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
-    sl0, sl1, hl0, hl1 = gen.mul(s, l0), gen.mul(s, l1), gen.mul(h, l0), gen.mul(h, l1)
-    if step.params["branch"] == "behind":
-        x, y = gen.add(sl0, hl1), gen.sub(sl1, hl0)
-    else:
-        x, y = gen.sub(sl0, hl1), gen.add(sl1, hl0)
+    x, y = _turned(gen, s, h, l0, l1, step.params["branch"] != "behind")
     gen.put_point(step.outputs[0], gen.sub(cx, x), gen.sub(cy, y))
 
 
@@ -211,22 +196,22 @@ def _join(gen: Gen, step: Step) -> None:
     gen.put_rows(step.outputs[0], "line", *(_div(gen, r, n) for r in (a, b, c)))
 
 
-@template("perpendicular")
-def _perpendicular(gen: Gen, step: Step) -> None:
-    line, p = step.inputs
-    a, b, _ = gen.rows(line)
-    px, py, pw = gen.rows(p)
-    c = gen.sub(gen.mul(b, px), gen.mul(a, py))
-    gen.put_rows(step.outputs[0], "line", gen.neg(b), a, _div(gen, c, pw))
+def _line_through(turned: bool) -> None:
+    """The template of the line through a point with the normal ``(a, b)`` or ``(-b, a)``."""
+
+    def tpl(gen: Gen, step: Step) -> None:
+        line, p = step.inputs
+        a, b, _ = gen.rows(line)
+        px, py, pw = gen.rows(p)
+        n0, n1 = (gen.neg(b), a) if turned else (a, b)
+        c = gen.neg(gen.add(gen.mul(n0, px), gen.mul(n1, py)))
+        gen.put_rows(step.outputs[0], "line", n0, n1, _div(gen, c, pw))
+
+    template("perpendicular" if turned else "parallel")(tpl)
 
 
-@template("parallel")
-def _parallel(gen: Gen, step: Step) -> None:
-    line, p = step.inputs
-    a, b, _ = gen.rows(line)
-    px, py, pw = gen.rows(p)
-    c = gen.neg(gen.add(gen.mul(a, px), gen.mul(b, py)))
-    gen.put_rows(step.outputs[0], "line", a, b, _div(gen, c, pw))
+_line_through(True)
+_line_through(False)
 
 
 @template("meet")
@@ -332,22 +317,20 @@ def _angular_rate(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], _div(gen, gen.sub(gen.mul(r0, v1), gen.mul(r1, v0)), den))
 
 
-@template("normal_component")
-def _normal_component(gen: Gen, step: Step) -> None:
-    r0, r1, v0, v1, den = _differences(gen, step)
-    k = gen.let(gen.neg(_div(gen, gen.add(gen.mul(v0, v0), gen.mul(v1, v1)), den)), "k")
-    gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
+def _normal(sign: float) -> None:
+    """``sign |V|²/|R|² R``: ``normal_component`` (-1, Eq. 4.7), ``apparent_normal`` (+1)."""
+
+    def tpl(gen: Gen, step: Step) -> None:
+        r0, r1, v0, v1, den = _differences(gen, step)
+        k = _div(gen, gen.add(gen.mul(v0, v0), gen.mul(v1, v1)), den)
+        k = gen.let(gen.neg(k) if sign < 0 else k, "k")
+        gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
+
+    template("normal_component" if sign < 0 else "apparent_normal")(tpl)
 
 
-@template("apparent_normal")
-def _apparent_normal(gen: Gen, step: Step) -> None:
-    s, center, i_s, i_sk = step.inputs
-    r0, r1 = _diff(gen, s, center)
-    v0, v1 = _diff(gen, i_sk, i_s)
-    den = gen.let(gen.add(gen.mul(r0, r0), gen.mul(r1, r1)), "dd")
-    _positive(gen, den)
-    k = gen.let(_div(gen, gen.add(gen.mul(v0, v0), gen.mul(v1, v1)), den), "k")
-    gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
+_normal(-1.0)
+_normal(1.0)
 
 
 @template("coriolis")
@@ -359,8 +342,11 @@ def _coriolis(gen: Gen, step: Step) -> None:
     gen.put_rows(step.outputs[0], "vector", gen.mul(gen.neg(w2), v1), gen.mul(w2, v0))
 
 
-def _along(gen: Gen, step: Step, base: str, p0: str, p1: str, s: str) -> None:
-    ax, ay = gen.pt(base)
+def _along(gen: Gen, step: Step) -> None:
+    # add_along (p, p0, p1, s) and along_line (p0, p1, s): from the first input, a signed
+    # distance s along the direction p0 → p1
+    p, (p0, p1, s) = step.inputs[0], step.inputs[-3:]
+    ax, ay = gen.pt(p)
     d0, d1 = _diff(gen, p0, p1)
     dd = gen.let(gen.add(gen.mul(d0, d0), gen.mul(d1, d1)), "dd")
     _positive(gen, dd)
@@ -368,13 +354,6 @@ def _along(gen: Gen, step: Step, base: str, p0: str, p1: str, s: str) -> None:
     gen.put_point(step.outputs[0], gen.add(ax, gen.mul(d0, k)), gen.add(ay, gen.mul(d1, k)))
 
 
-@template("add_along")
-def _add_along(gen: Gen, step: Step) -> None:
-    p, p0, p1, s = step.inputs
-    _along(gen, step, p, p0, p1, s)
+template("add_along")(_along)
 
-
-@template("along_line")
-def _along_line(gen: Gen, step: Step) -> None:
-    p0, p1, s = step.inputs
-    _along(gen, step, p0, p0, p1, s)
+template("along_line")(_along)

@@ -13,9 +13,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from graphkin.errors import InputError
 from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
-from graphkin.kinematics.sweep.drive_range import _drive_range
+from graphkin.kinematics.sweep.drive_range import _count, _drive_values
 from graphkin.kinematics.sweep.engine import _Block, _engine
 from graphkin.kinematics.sweep.extra_columns import (
     _center_columns,
@@ -115,15 +114,10 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
     128.6822
     """
-    if int(count) != count or count < 1:
-        raise InputError(f"the number of postures must be a whole number of at least 1, not "
-                         f"{count!r}", key="count", file=mech.source)
-    count = int(count)
+    count = _count(count, mech)
     tol = tol or DEFAULT_TOL
     eng = _engine(mech, tol)
-    a, b, cyclic = _drive_range(eng, start, stop)
-    user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    user, dv, cyclic = _drive_values(eng, count, start, stop)
     blocks: list[_Block] = []
     released = False
     # the transmission angles read the replayed constructions: then there is no gain in
