@@ -44,6 +44,7 @@ import functools
 import re
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from types import CodeType
 from typing import Any
 
 import numpy as np
@@ -524,7 +525,11 @@ def generate(steps: Sequence[Step], *, varying: Sequence[str],
     ret = f"return ({', '.join(outs)},)"
     body = "\n".join(_release(gen.lines, ret))
     src = f"def {_ident(name)}({', '.join(params)}):\n{body}\n    {ret}\n"
-    code = compile(src, f"<graphkin: {name}>", "exec")
+    code = _CODE.get(src)
+    if code is None:
+        if len(_CODE) >= 64:
+            _CODE.clear()
+        code = _CODE[src] = compile(src, f"<graphkin: {name}>", "exec")
     ns = gen.ns
     exec(code, ns)
     fn = ns[_ident(name)]
@@ -560,6 +565,10 @@ def _release(lines: list[str], ret: str) -> list[str]:
         if k in dead:
             out.append(f"    del {', '.join(sorted(dead[k]))}")
     return out
+
+
+_CODE: dict[str, CodeType] = {}
+"""Compiled sources (the same constructions with other constants of the same shapes)."""
 
 
 def _request(gen: Gen, v: _Val, lab: str, part: str) -> str:

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.construction.codegen import Generated, Unsupported, generate
-from graphkin.kinematics.sweep.columns import _full, _recipe
+from graphkin.kinematics.sweep.columns import _recipe
 from graphkin.kinematics.sweep.engine import _Engine
 from graphkin.text import wrap_degrees
 
@@ -48,8 +48,9 @@ class _Fast:
     unclean: int = 0
 
 
-def _build(eng: _Engine) -> _Fast | None:
-    """The engine's constructions written out, with the column layout; None if they cannot be."""
+def _layout(eng: _Engine) -> tuple[tuple[tuple[str, int], ...],
+                                  tuple[tuple[str, str], ...]] | None:
+    """Where each column comes from, and what the generated function returns; or None."""
     if eng.method != "construction" or eng.pc is None:
         return None
     if eng.pol is not None and eng.combined is None:
@@ -57,10 +58,6 @@ def _build(eng: _Engine) -> _Fast | None:
     recipe = _recipe(eng)
     if recipe is None:
         return None
-    cx = eng.combined if eng.combined is not None else eng.pc.construction
-    constants: dict[str, Any] = dict(eng.held)
-    if eng.combined is not None:
-        constants.update(eng.rate_given)
     layout: list[tuple[str, int]] = []
     requests: list[tuple[str, str]] = []
     for name, kind, _phase, label, comp in recipe:
@@ -69,12 +66,46 @@ def _build(eng: _Engine) -> _Fast | None:
             continue
         layout.append((name, _ANGLE if kind == "angle" else _VALUE))
         requests.append((label, ("x", "y")[comp] if kind == "row" else "value"))
+    return tuple(layout), tuple(requests)
+
+
+def _constants(eng: _Engine) -> dict[str, Any]:
+    """The inputs that stay fixed over a sweep: the held drives and the given rates."""
+    constants: dict[str, Any] = dict(eng.held)
+    if eng.combined is not None:
+        constants.update(eng.rate_given)
+    return constants
+
+
+def _build(eng: _Engine) -> _Fast | None:
+    """The engine's constructions written out, with the column layout; None if they cannot be."""
+    plan = _layout(eng)
+    if plan is None:
+        return None
+    layout, requests = plan
+    cx = eng.combined if eng.combined is not None else eng.pc.construction  # type: ignore[union-attr]
     try:
-        gen = generate(cx.steps, varying=[eng.label], constants=constants, requests=requests,
-                       tol=eng.tol, name=f"sweep_{cx.title or 'mechanism'}")
+        gen = generate(cx.steps, varying=[eng.label], constants=_constants(eng),
+                       requests=requests, tol=eng.tol, name=f"sweep_{cx.title or 'mechanism'}")
     except Unsupported:
         return None
-    return _Fast(gen, tuple(layout))
+    return _Fast(gen, layout)
+
+
+def _fill(out: tuple[Any, ...], layout: tuple[tuple[str, int], ...], shape: tuple[int, ...],
+          cols: dict[str, Array]) -> dict[str, Array]:
+    """The columns (arrays of ``shape``) from what the generated function returned."""
+    zero = np.zeros(shape)
+    values = iter(out)
+    for name, kind in layout:
+        if kind == _ZERO:
+            cols[name] = zero
+            continue
+        v = next(values)
+        if type(v) is not np.ndarray or v.shape != shape:
+            v = np.array(np.broadcast_to(v, shape), dtype=float)
+        cols[name] = wrap_degrees(v) if kind == _ANGLE else v
+    return cols
 
 
 def fast_columns(eng: _Engine, dv: Array, user: Array) -> dict[str, Array] | None:
@@ -95,16 +126,4 @@ def fast_columns(eng: _Engine, dv: Array, user: Array) -> dict[str, Array] | Non
             eng.fast = None
         return None
     fast.clean += 1
-    n = len(dv)
-    zero = np.zeros(n)
-    cols: dict[str, Array] = {"drive": user}
-    values = iter(out)
-    for name, kind in fast.layout:
-        if kind == _ZERO:
-            cols[name] = zero
-            continue
-        v = next(values)
-        if type(v) is not np.ndarray or v.shape != (n,):
-            v = _full(v, n)
-        cols[name] = wrap_degrees(v) if kind == _ANGLE else v
-    return cols
+    return _fill(out, fast.layout, (len(dv),), {"drive": user})
