@@ -71,10 +71,6 @@ Template = Callable[["Gen", Step], None]
 TEMPLATES: dict[str, Template] = {}
 """Operation -> the function that writes its arithmetic (see :class:`Gen`)."""
 
-CHECKED: set[str] = set()
-"""Operations whose templates check their own outputs (they can fail for finite inputs)."""
-
-
 def template(name: str) -> Callable[[Template], Template]:
     """Register the template of operation ``name``."""
 
@@ -176,7 +172,6 @@ class Gen:
         self.n = 0
         self.cse: dict[tuple[Any, ...], tuple[_Val, ...]] = {}
         self.memo: dict[str, str] = {}
-        self._step: Step | None = None
 
     # ---- names ---------------------------------------------------------
     def tmp(self, hint: str = "t") -> str:
@@ -477,7 +472,6 @@ def generate(steps: Sequence[Step], *, varying: Sequence[str],
     for step, needed in zip(steps, need):
         if not needed:
             continue
-        gen._step = step
         if step.op == "input":
             if step.outputs[0] not in made:
                 raise Unsupported(f"the input {step.outputs[0]!r} is not given")

@@ -97,6 +97,7 @@ def _fill(out: tuple[Any, ...], layout: tuple[tuple[str, int], ...], shape: tupl
     """The columns (arrays of ``shape``) from what the generated function returned."""
     zero = np.zeros(shape)
     values = iter(out)
+    seen: set[int] = set()
     for name, kind in layout:
         if kind == _ZERO:
             cols[name] = zero
@@ -104,6 +105,9 @@ def _fill(out: tuple[Any, ...], layout: tuple[tuple[str, int], ...], shape: tupl
         v = next(values)
         if type(v) is not np.ndarray or v.shape != shape:
             v = np.array(np.broadcast_to(v, shape), dtype=float)
+        elif id(v) in seen:
+            v = v.copy()  # two columns with the same values are still two arrays
+        seen.add(id(v))
         cols[name] = wrap_degrees(v) if kind == _ANGLE else v
     return cols
 
