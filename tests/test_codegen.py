@@ -24,7 +24,12 @@ import graphkin
 from graphkin.construction import Construction
 from graphkin.construction.codegen import TEMPLATES, Unsupported, generate
 from graphkin.kinematics.posture import NotDecomposable
-from graphkin.kinematics.sweep.columns import _columns, _columns_of_solution
+from graphkin.kinematics.sweep.columns import (
+    _assembled_of,
+    _columns,
+    _columns_of_solution,
+    _valid_of,
+)
 from graphkin.kinematics.sweep.engine import _Engine
 from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.tolerance import DEFAULT_TOL
@@ -83,9 +88,11 @@ def test_generated_function_equals_the_replay(rm: RandomMechanism, span: float) 
                    requests=[(lab, "value") for lab in labels])
     dv = _drive_values(mech, span)
     got = gen.values(dv)
-    assert got is not None, rm.kind
     ref = cx.replay({**consts, eng.label: dv}, strict=False)
-    assert bool(np.all(ref.valid))
+    if not bool(np.all(ref.valid)):  # a limit of the travel close by: not clean, replayed
+        assert got is None
+        return
+    assert got is not None, rm.kind
     assert set(got) == set(labels)
     _same(got, ref.values)
 
@@ -105,6 +112,9 @@ def test_generated_sweep_equals_the_analytic_solver(rm: RandomMechanism, span: f
     dv = _drive_values(mech, span, 9)
     user = np.degrees(dv) if eng.drive.kind == "angle" else dv
     cols = fast_columns(eng, dv, user)
+    if not bool(np.all(_valid_of(eng.solve(dv)))):
+        assert cols is None  # a limit of the travel close by: not clean, replayed
+        return
     assert cols is not None, rm.kind
     full = np.array([[dv_i if i == 0 else d.value for i, d in enumerate(mech.drives)]
                      for dv_i in dv])
@@ -140,8 +150,6 @@ def test_sweep_columns_equal_the_replayed_columns(rm: RandomMechanism, span: flo
     blk = eng.solve(sw.values)
     blk.user = sw.columns["drive"]
     ref = _columns(eng, blk)
-    from graphkin.kinematics.sweep.columns import _assembled_of, _valid_of
-
     np.testing.assert_array_equal(sw.valid, _valid_of(blk))
     np.testing.assert_array_equal(sw.assembled, _assembled_of(blk))
     assert list(sw.columns) == list(ref)

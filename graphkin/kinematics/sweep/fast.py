@@ -104,7 +104,15 @@ def _fill(out: tuple[Any, ...], layout: tuple[tuple[str, int], ...], shape: tupl
             continue
         v = next(values)
         if type(v) is not np.ndarray or v.shape != shape:
-            v = np.array(np.broadcast_to(v, shape), dtype=float)
+            if np.ndim(v) == 0:  # a constant (a frame point, a given rate)
+                if v == 0.0:
+                    cols[name] = zero
+                    continue
+                c = np.empty(shape)
+                c.fill(v)
+                v = c
+            else:
+                v = np.array(np.broadcast_to(v, shape), dtype=float)
         elif id(v) in seen:
             v = v.copy()  # two columns with the same values are still two arrays
         seen.add(id(v))
