@@ -157,7 +157,8 @@ class Gen:
     :meth:`scalar` and :meth:`cs` (an angle's cosine and sine), write code with
     :meth:`let` and :meth:`bail_unless`, and define their outputs with
     :meth:`put_point`, :meth:`put_rows` and :meth:`put_scalar`.  A template
-    that cannot use an input raises :class:`NeedGeneric` before writing.
+    that cannot use an input's form raises :class:`NeedGeneric` (what it wrote
+    is taken back, and the step is called through its general function).
     """
 
     def __init__(self, tol: Tolerance) -> None:

@@ -572,5 +572,8 @@ def _flatten(ev: Evaluation, mc: int, n: int) -> Evaluation:
         elif a.ndim == 2:
             out[k] = np.broadcast_to(a, (mc, n)).reshape(mc * n)
         else:
-            out[k] = np.broadcast_to(a, (mc, n, a.shape[-1])).reshape(mc * n, a.shape[-1])
+            # component-major, as the kernels store a point (x, y and w rows each contiguous),
+            # so that this and the columns read from it are views, not copies
+            c = a.shape[-1]
+            out[k] = np.moveaxis(np.broadcast_to(a, (mc, n, c)), -1, 0).reshape(c, mc * n).T
     return Evaluation(out, ev.valid, None, ev.unit)
