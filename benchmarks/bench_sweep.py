@@ -15,7 +15,10 @@ angle, ω and α, for
 against the closed form (Freudenstein's equation with the loop-closure
 derivatives, ``fourbar_closed_form.py``; it produces the same columns, one
 design or ``(designs, postures)`` arrays).  The instant-center and curvature
-columns of a 3600-posture sweep are timed against the plain sweep.
+columns of a 3600-posture sweep are timed against the plain sweep, and a
+36-posture sweep whose constructions are written out as one function
+(``graphkin/construction/codegen.py``) against the same sweep replayed step
+by step.
 pylinkage's fast path (``Linkage.step_fast_with_kinematics``) is timed if it
 is installed (compiled with numba when numba is installed, pure Python
 otherwise: the report says which), and skipped otherwise.
@@ -205,6 +208,23 @@ def main(argv: list[str] | None = None) -> int:
                       "curvature": lambda: mech.sweep(count=3600, curvature=True)},
                      args.rounds, 3)
 
+    # the same 36-posture sweep with its constructions replayed step by step (the generated
+    # function switched off): what writing them out saves
+    from graphkin.kinematics.sweep.engine import _engine
+    from graphkin.tolerance import DEFAULT_TOL
+
+    eng = _engine(mech, DEFAULT_TOL)
+
+    def replayed() -> Any:
+        saved, eng.fast = eng.fast, None
+        try:
+            return mech.sweep(count=36)
+        finally:
+            eng.fast = saved
+
+    small = best_of({"written": lambda: mech.sweep(count=36), "replayed": replayed},
+                    args.rounds, 200)
+
     print(f"{pathlib.Path(args.file).name}: positions, velocities and accelerations of every "
           f"point; CPU time, best of {args.rounds} interleaved rounds")
     print(f"machine: {machine()}")
@@ -219,6 +239,10 @@ def main(argv: list[str] | None = None) -> int:
         for k in ("plain", "centers", "curvature"):
             print(f"| sweep{'' if k == 'plain' else f' + {k}'} | {extras[k] * 1e3:.3g} ms | "
                   f"{extras[k] / extras['plain']:.2f} |")
+        print("\n| 36 postures | time |\n|---|---|")
+        print(f"| constructions written out (one generated function) | "
+              f"{small['written'] * 1e3:.3g} ms |")
+        print(f"| constructions replayed step by step | {small['replayed'] * 1e3:.3g} ms |")
         return 0
     print(f"\n  {'case':32s} {'graphkin':>11s} {'closed form':>12s} {'ratio':>6s}   {pyl_head}")
     for case, g, c, p in rows:
@@ -227,6 +251,8 @@ def main(argv: list[str] | None = None) -> int:
           f"{extras['centers'] / extras['plain']:.2f}x, + curvature "
           f"{extras['curvature'] / extras['plain']:.2f}x the plain sweep "
           f"({extras['plain'] * 1e3:.3f} ms)")
+    print(f"  36 postures: constructions written out {small['written'] * 1e3:.3f} ms, replayed "
+          f"step by step {small['replayed'] * 1e3:.3f} ms")
     return 0
 
 

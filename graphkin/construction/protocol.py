@@ -12,7 +12,6 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8.
 from __future__ import annotations
 
 import json
-import math
 import operator
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
@@ -26,6 +25,7 @@ from graphkin.construction.ops.runtime import (
     ORIGINATING,
     CompileInfo,
     Runtime,
+    _all_finite,
     generic_kernel,
 )
 from graphkin.construction.step import Role, Step, VectorEquation
@@ -344,16 +344,6 @@ def _mark(valid: np.ndarray | None, failed_at: np.ndarray | None, bad: np.ndarra
     failed_at = np.where(bad & valid, index, failed_at)
     valid = valid & ~bad
     return valid, failed_at
-
-
-def _all_finite(a: Any) -> bool:
-    """True when every entry is finite (a sum first: finite sums need no second look)."""
-    a = np.asarray(a)
-    if a.dtype.kind not in "fc":
-        return True
-    if math.isfinite(np.add.reduce(a, axis=None)):
-        return True
-    return bool(np.isfinite(a).all())
 
 
 class _Plan:

@@ -17,6 +17,8 @@ from graphkin.construction.ops.runtime import (
     _vmin,
     _zero,
     kernel,
+    tangent_cc,
+    tangent_lc,
 )
 from graphkin.geometry import ops as g
 from graphkin.tolerance import Tolerance
@@ -79,6 +81,16 @@ def _k_circle(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
+def _turned_into(x: Any, y: Any, p: Any, q: Any, ux: Any, uy: Any, left: bool) -> None:
+    """``(x, y) = p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it."""
+    if left:
+        np.subtract(p * ux, q * uy, out=x)
+        np.add(p * uy, q * ux, out=y)
+    else:
+        np.add(p * ux, q * uy, out=x)
+        np.subtract(p * uy, q * ux, out=y)
+
+
 @kernel("intersect_circles", originating=True)
 def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     c1, c2 = step.inputs
@@ -103,10 +115,7 @@ def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
         if not _vmin(q2) >= 0.0:
             clean = False
             # tangency: a tiny negative h² from a length error below eps counts as zero
-            dist = np.sqrt(dd)
-            scale = np.maximum(np.maximum(r1, r2), dist)
-            eps = la + lr * np.abs(scale)
-            q2 = np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
+            q2 = tangent_cc(q2, dd, r1, r2, tol=tol)
         q = np.sqrt(q2)
         if not _vmin(dd) > (2.0 * (la + lr * max(_absmax(r1), _absmax(r2)))) ** 2:
             clean = False
@@ -116,12 +125,7 @@ def _k_cc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
             q = np.where(dist <= la + lr * np.abs(scale), np.nan, q)
         x, y = rt.new_point(out, _shape(dx, x1, x2))
         # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
-        if left:
-            np.subtract(p * dx, q * dy, out=x)
-            np.add(p * dy, q * dx, out=y)
-        else:
-            np.add(p * dx, q * dy, out=x)
-            np.subtract(p * dy, q * dx, out=y)
+        _turned_into(x, y, p, q, dx, dy, left)
         np.add(x, x1, out=x)
         np.add(y, y1, out=y)
         # finite inputs, every arc pair meets, no concentric pair: every entry is finite
@@ -136,7 +140,6 @@ def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     (out,) = step.outputs
     behind = step.params["branch"] == "behind"
     kr = info.radius.get(c)
-    la, lr = tol.length_abs, tol.length_rel
 
     def run(rt: Runtime) -> bool:
         l0, l1, l2 = rt.rows(line)
@@ -147,17 +150,11 @@ def _k_lc(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
         clean = True
         if not _vmin(h2) >= 0.0:
             clean = False
-            eps = la + lr * np.abs(np.maximum(r, np.abs(s)))
-            h2 = np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
+            h2 = tangent_lc(h2, s, r, tol=tol)
         h = np.sqrt(h2)
         x, y = rt.new_point(out, _shape(s, cx, cy))
         # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
-        if behind:
-            np.add(s * l0, h * l1, out=x)
-            np.subtract(s * l1, h * l0, out=y)
-        else:
-            np.subtract(s * l0, h * l1, out=x)
-            np.add(s * l1, h * l0, out=y)
+        _turned_into(x, y, s, h, l0, l1, not behind)
         np.subtract(cx, x, out=x)
         np.subtract(cy, y, out=y)
         return clean
@@ -260,43 +257,42 @@ def _k_join(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
-@kernel("perpendicular")
-def _k_perpendicular(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    line, p = step.inputs
-    (out,) = step.outputs
+def _line_through(turned: bool) -> KernelFactory:
+    """Kernel factory of the line through a point along or across another line.
 
-    def run(rt: Runtime) -> None:
-        a, b, _ = rt.rows(line)
-        px, py, pw = rt.rows(p)
-        unit = rt.is_unit(p)
-        o0, o1, o2, _ = rt.new_rows(out, 3, _shape(a, px))
-        np.negative(b, out=o0)
-        o1[...] = a
-        np.subtract(b * px, a * py, out=o2)
-        if not unit:
-            np.divide(o2, pw, out=o2)
+    The new line's normal is the given line's ``(a, b)`` (``parallel``) or
+    that normal turned a quarter turn, ``(-b, a)`` (``perpendicular``).
+    """
 
-    return run
+    def factory(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+        line, p = step.inputs
+        (out,) = step.outputs
+
+        def run(rt: Runtime) -> None:
+            a, b, _ = rt.rows(line)
+            px, py, pw = rt.rows(p)
+            unit = rt.is_unit(p)
+            o0, o1, o2, _ = rt.new_rows(out, 3, _shape(a, px))
+            if turned:
+                np.negative(b, out=o0)
+                o1[...] = a
+            else:
+                o0[...] = a
+                o1[...] = b
+            # through P: n · P + c = 0
+            np.add(o0 * px, o1 * py, out=o2)
+            np.negative(o2, out=o2)
+            if not unit:
+                np.divide(o2, pw, out=o2)
+
+        return run
+
+    return factory
 
 
-@kernel("parallel")
-def _k_parallel(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    line, p = step.inputs
-    (out,) = step.outputs
+kernel("perpendicular")(_line_through(True))
 
-    def run(rt: Runtime) -> None:
-        a, b, _ = rt.rows(line)
-        px, py, pw = rt.rows(p)
-        unit = rt.is_unit(p)
-        o0, o1, o2, _ = rt.new_rows(out, 3, _shape(a, px))
-        o0[...] = a
-        o1[...] = b
-        np.add(a * px, b * py, out=o2)
-        np.negative(o2, out=o2)
-        if not unit:
-            np.divide(o2, pw, out=o2)
-
-    return run
+kernel("parallel")(_line_through(False))
 
 
 @kernel("meet", originating=True)
@@ -485,43 +481,37 @@ def _k_angular_rate(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
-@kernel("normal_component", originating=True)
-def _k_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    p, c, ip, ic = step.inputs
-    (out,) = step.outputs
+def _normal(sign: float) -> KernelFactory:
+    """Kernel factory of ``sign |V|²/|R|² R`` with ``R = C - P``, ``V`` the images' difference.
 
-    def run(rt: Runtime) -> bool:
-        r0, r1, v0, v1 = _differences(rt, p, c, ip, ic)
-        den = r0 * r0 + r1 * r1
-        k = -((v0 * v0 + v1 * v1) / den)
-        o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
-        np.multiply(k, r0, out=o0)
-        np.multiply(k, r1, out=o1)
-        return _vmin(den) > 0.0
+    ``normal_component`` (``-1``: ``A^n`` toward the center, Eq. 4.7) and
+    ``apparent_normal`` (``+1``, Eq. 4.15), inputs ``(P, C, image of P, image of C)``.
+    """
 
-    return run
+    def factory(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+        p, c, ip, ic = step.inputs
+        (out,) = step.outputs
+
+        def run(rt: Runtime) -> bool:
+            r0, r1, v0, v1 = _differences(rt, p, c, ip, ic)
+            den = r0 * r0 + r1 * r1
+            k = (v0 * v0 + v1 * v1) / den
+            if sign < 0:
+                k = -k
+            o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
+            np.multiply(k, r0, out=o0)
+            np.multiply(k, r1, out=o1)
+            # finite inputs and two distinct points: finite
+            return _vmin(den) > 0.0
+
+        return run
+
+    return factory
 
 
-@kernel("apparent_normal", originating=True)
-def _k_apparent_normal(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    s, center, i_s, i_sk = step.inputs
-    (out,) = step.outputs
+kernel("normal_component", originating=True)(_normal(-1.0))
 
-    def run(rt: Runtime) -> None:
-        sx, sy = rt.P(s)
-        cx, cy = rt.P(center)
-        ax, ay = rt.P(i_s)
-        bx, by = rt.P(i_sk)
-        r0 = cx - sx
-        r1 = cy - sy
-        v0 = ax - bx
-        v1 = ay - by
-        k = (v0 * v0 + v1 * v1) / (r0 * r0 + r1 * r1)
-        o0, o1, _ = rt.new_rows(out, 2, _shape(k, r0))
-        np.multiply(k, r0, out=o0)
-        np.multiply(k, r1, out=o1)
-
-    return run
+kernel("apparent_normal", originating=True)(_normal(1.0))
 
 
 @kernel("coriolis")
@@ -543,9 +533,13 @@ def _k_coriolis(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
-@kernel("add_along", originating=True)
-def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    p, p0, p1, s = step.inputs
+def _k_along(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
+    """A point a signed distance ``s`` along the direction ``p0 → p1``.
+
+    ``add_along`` (inputs ``p, p0, p1, s``) lays it off from ``p``, ``along_line``
+    (inputs ``p0, p1, s``) from ``p0``: from the first input either way.
+    """
+    p, (p0, p1, s) = step.inputs[0], step.inputs[-3:]
     (out,) = step.outputs
 
     def run(rt: Runtime) -> None:
@@ -564,21 +558,6 @@ def _k_add_along(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
     return run
 
 
-@kernel("along_line", originating=True)
-def _k_along_line(step: Any, tol: Tolerance, info: CompileInfo) -> Kernel:
-    p0, p1, s = step.inputs
-    (out,) = step.outputs
+kernel("add_along", originating=True)(_k_along)
 
-    def run(rt: Runtime) -> None:
-        x0, y0 = rt.P(p0)
-        x1, y1 = rt.P(p1)
-        d0 = x1 - x0
-        d1 = y1 - y0
-        k = rt.arr(s) / np.sqrt(d0 * d0 + d1 * d1)
-        x, y = rt.new_point(out, _shape(x0, d0, k))
-        np.multiply(d0, k, out=x)
-        np.add(x0, x, out=x)
-        np.multiply(d1, k, out=y)
-        np.add(y0, y, out=y)
-
-    return run
+kernel("along_line", originating=True)(_k_along)

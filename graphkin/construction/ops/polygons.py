@@ -60,9 +60,15 @@ def _angular_rate(a: Array, b: Array, img_a: Array, img_b: Array, *,
 def _normal_component(p: Array, c: Array, img_p: Array, img_c: Array, *,
                       tol: Tolerance) -> tuple[Array]:
     """``A_CP^n = −(V_CP²/R_CP) R̂_CP``: toward P, of length V²/R (Eq. 4.7)."""
+    r, k = _squared_ratio(p, c, img_p, img_c)
+    return (-k[..., None] * r,)
+
+
+def _squared_ratio(p: Array, c: Array, img_p: Array, img_c: Array) -> tuple[Array, Array]:
+    """``R = C - P`` and ``|V|² / |R|²`` with ``V`` the image difference ``c − p``."""
     r = g.xy(c) - g.xy(p)
     v = g.xy(img_c) - g.xy(img_p)
-    return (-(g.dot2(v, v) / g.dot2(r, r))[..., None] * r,)
+    return r, g.dot2(v, v) / g.dot2(r, r)
 
 
 @op("coriolis", kind="vector")
@@ -77,9 +83,8 @@ def _coriolis(omega: Array, img_p: Array, img_pk: Array, *, tol: Tolerance) -> t
 def _apparent_normal(s: Array, center: Array, img_s: Array, img_sk: Array, *,
                      tol: Tolerance) -> tuple[Array]:
     """Apparent normal component ``V_rel²/ρ`` toward the path's center of curvature (Eq. 4.15)."""
-    r = g.xy(center) - g.xy(s)
-    v = g.xy(img_s) - g.xy(img_sk)
-    return ((g.dot2(v, v) / g.dot2(r, r))[..., None] * r,)
+    r, k = _squared_ratio(s, center, img_sk, img_s)
+    return (k[..., None] * r,)
 
 
 @op("rolling_normal", kind="vector")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -106,6 +107,30 @@ def _vmin(x: Any) -> float:
     if type(x) is not _ND or x.ndim == 0:
         return float(x)
     return float(np.fmin.reduce(x, axis=None))
+
+
+def _all_finite(a: Any) -> bool:
+    """True when every entry is finite (a sum first: finite sums need no second look)."""
+    a = np.asarray(a)
+    if a.dtype.kind not in "fc":
+        return True
+    if math.isfinite(np.add.reduce(a, axis=None)):
+        return True
+    return bool(np.isfinite(a).all())
+
+
+def tangent_cc(q2: Any, dd: Any, r1: Any, r2: Any, *, tol: Tolerance) -> Any:
+    """(h/d)² of two arcs with a round-off below the length tolerance taken as a tangency."""
+    dist = np.sqrt(dd)
+    scale = np.maximum(np.maximum(r1, r2), dist)
+    eps = tol.length_abs + tol.length_rel * np.abs(scale)
+    return np.where((q2 < 0) & (q2 * dd > -2 * eps * scale), 0.0, q2)
+
+
+def tangent_lc(h2: Any, s: Any, r: Any, *, tol: Tolerance) -> Any:
+    """h² of a line and an arc with a round-off below the length tolerance taken as zero."""
+    eps = tol.length_abs + tol.length_rel * np.abs(np.maximum(r, np.abs(s)))
+    return np.where((h2 < 0) & (h2 > -2 * eps * np.maximum(r, 1e-300)), 0.0, h2)
 
 
 def _absmax(a: Any) -> float:

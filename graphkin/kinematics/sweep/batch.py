@@ -45,7 +45,7 @@ import numpy as np
 from graphkin.construction import Construction, Evaluation
 from graphkin.errors import AssemblyError, GraphkinError, InputError
 from graphkin.kinematics.sweep.columns import _columns
-from graphkin.kinematics.sweep.drive_range import _drive_range
+from graphkin.kinematics.sweep.drive_range import _count, _drive_values
 from graphkin.kinematics.sweep.engine import _Block, _dyads, _Engine, _engine
 from graphkin.kinematics.sweep.extra_columns import _angle_at
 from graphkin.kinematics.sweep.four_bar import Grashof, fourbar, grashof
@@ -476,10 +476,7 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
     >>> b.assembled.sum(axis=1)  # 4 + 18 > 10 + 11: the longer couplers cannot follow the crank
     array([8, 6, 6])
     """
-    if int(count) != count or count < 1:
-        raise InputError(f"the number of postures must be a whole number of at least 1, not "
-                         f"{count!r}", key="count", file=mech.source)
-    count = int(count)
+    count = _count(count, mech)
     tol = tol or DEFAULT_TOL
     arrays, m = _dimension_arrays(mech, dimensions)
     eng = _engine(mech, tol)
@@ -497,9 +494,7 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
         # once per mechanism and set of varied points: the derivation does not depend on values
         _check(eng, cx, designs, arrays, m)
         eng.extras[checked] = True
-    a, b, _ = _drive_range(eng, start, stop)
-    user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    user, dv, _ = _drive_values(eng, count, start, stop)
     given0: dict[str, Any] = dict(eng.held)
     if rated:
         given0.update(eng.rate_given)
@@ -577,5 +572,8 @@ def _flatten(ev: Evaluation, mc: int, n: int) -> Evaluation:
         elif a.ndim == 2:
             out[k] = np.broadcast_to(a, (mc, n)).reshape(mc * n)
         else:
-            out[k] = np.broadcast_to(a, (mc, n, a.shape[-1])).reshape(mc * n, a.shape[-1])
+            # component-major, as the kernels store a point (x, y and w rows each contiguous),
+            # so that this and the columns read from it are views, not copies
+            c = a.shape[-1]
+            out[k] = np.moveaxis(np.broadcast_to(a, (mc, n, c)), -1, 0).reshape(c, mc * n).T
     return Evaluation(out, ev.valid, None, ev.unit)

@@ -13,11 +13,35 @@ from collections.abc import Callable
 
 import numpy as np
 
-from graphkin.errors import AssemblyError
+from graphkin.errors import AssemblyError, InputError
 from graphkin.kinematics.sweep.columns import _assembled_of
 from graphkin.kinematics.sweep.engine import _Engine
+from graphkin.mechanisms.model import Mechanism
 
 Array = np.ndarray
+
+
+def _count(count: object, mech: Mechanism) -> int:
+    """The number of postures asked for, as an int (a one-line error otherwise)."""
+    try:
+        ok = int(count) == count and int(count) >= 1  # type: ignore[call-overload]
+    except (TypeError, ValueError):
+        ok = False
+    if not ok:
+        raise InputError(f"the number of postures must be a whole number of at least 1, not "
+                         f"{count!r}", key="count", file=mech.source)
+    return int(count)  # type: ignore[call-overload]
+
+
+def _drive_values(eng: _Engine, count: int, start: float | None,
+                  stop: float | None) -> tuple[Array, Array, bool]:
+    """The drive values as written (degrees or travel), in internal units, and one turn or not.
+
+    ``start + (stop - start) k / count``, ``k = 0 .. count - 1``.
+    """
+    a, b, cyclic = _drive_range(eng, start, stop)
+    user = a + (b - a) * (np.arange(count, dtype=float) / count)
+    return user, (np.radians(user) if eng.drive.kind == "angle" else user), cyclic
 
 
 def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple[float, float,
@@ -31,7 +55,12 @@ def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple
         return a, b, math.isclose(abs(b - a), 360.0, rel_tol=1e-12)
     if start is not None and stop is not None:
         return float(start), float(stop), False
-    lo, hi = _travel(eng)
+    # the search depends only on the mechanism: found once, for every later sweep of it
+    key = ("travel", d.value)
+    travel = eng.extras.get(key)
+    if travel is None:
+        travel = eng.extras[key] = _travel(eng)
+    lo, hi = travel
     return (lo if start is None else float(start)), (hi if stop is None else float(stop)), False
 
 

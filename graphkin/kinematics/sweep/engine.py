@@ -46,6 +46,9 @@ class _Engine:
         self.const_rows: dict[tuple[str, int], float] = {}
         #: what later sweeps reuse (the resolved Kennedy search, ...), keyed by what it depends on
         self.extras: dict[Any, Any] = {}
+        #: the constructions written out as one function (:mod:`.fast`): False until built,
+        #: None when they cannot be
+        self.fast: Any = False
         if mech.rolling:
             # away from the file's drive a roller's angle follows its travel (the no-slip
             # condition integrated), which no ruler-and-compass step gives

@@ -195,19 +195,25 @@ def _center_columns(sw: Sweep) -> dict[str, Array]:
         ev = steps.evaluate(given, values=env, strict=False)
     out: dict[str, Array] = {}
     n = len(sw)
+    everywhere = bool(sw.assembled.all())
     for name in labels:
         if name not in ev.values:
             continue
         p = np.asarray(ev.values[name], dtype=float)
         p = np.broadcast_to(p, (n, 3)) if p.ndim == 1 else p
-        ideal = p[:, 2] == 0.0
-        with np.errstate(invalid="ignore", divide="ignore"):
-            xy = g.xy(p)
-        x, y = xy[:, 0].copy(), xy[:, 1].copy()
-        x[~sw.assembled] = np.nan
-        y[~sw.assembled] = np.nan
+        if name in ev.unit:  # stored with w = 1: its rows are its coordinates, none ideal
+            x, y = p[:, 0].copy(), p[:, 1].copy()
+            ideal = None
+        else:
+            ideal = p[:, 2] == 0.0
+            with np.errstate(invalid="ignore", divide="ignore"):
+                xy = g.xy(p)
+            x, y = xy[:, 0].copy(), xy[:, 1].copy()
+        if not everywhere:
+            x[~sw.assembled] = np.nan
+            y[~sw.assembled] = np.nan
         out[f"x_{name}"], out[f"y_{name}"] = x, y
-        if ideal.any():
+        if ideal is not None and ideal.any():
             d = np.where(ideal[:, None], p[:, :2], np.nan)
             out[f"dx_{name}"], out[f"dy_{name}"] = d[:, 0].copy(), d[:, 1].copy()
     return out

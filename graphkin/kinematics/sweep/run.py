@@ -13,15 +13,15 @@ from collections.abc import Callable
 
 import numpy as np
 
-from graphkin.errors import InputError
 from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
-from graphkin.kinematics.sweep.drive_range import _drive_range
+from graphkin.kinematics.sweep.drive_range import _count, _drive_values
 from graphkin.kinematics.sweep.engine import _Block, _engine
 from graphkin.kinematics.sweep.extra_columns import (
     _center_columns,
     _curvature_columns,
     _transmission_columns,
 )
+from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.kinematics.sweep.report import Sweep
 from graphkin.mechanisms.model import Mechanism
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
@@ -114,18 +114,23 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
     128.6822
     """
-    if int(count) != count or count < 1:
-        raise InputError(f"the number of postures must be a whole number of at least 1, not "
-                         f"{count!r}", key="count", file=mech.source)
-    count = int(count)
+    count = _count(count, mech)
     tol = tol or DEFAULT_TOL
     eng = _engine(mech, tol)
-    a, b, cyclic = _drive_range(eng, start, stop)
-    user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    user, dv, cyclic = _drive_values(eng, count, start, stop)
     blocks: list[_Block] = []
     released = False
-    if count <= BLOCK:
+    # the transmission angles read the replayed constructions: then there is no gain in
+    # writing the columns out first
+    written = not transmission
+    fast = fast_columns(eng, dv, user) if count <= BLOCK and written else None
+    if fast is not None:
+        # every posture clean: the constructions' values are replayed only if asked for
+        cols = fast
+        valid, assembled = np.ones(count, dtype=bool), np.ones(count, dtype=bool)
+        blocks.append(_Block(dv, None, None, None, user=user))
+        released = True
+    elif count <= BLOCK:
         blk = eng.solve(dv)
         blk.user = user
         blocks.append(blk)
@@ -139,15 +144,24 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         valid = np.empty(count, dtype=bool)
         assembled = np.empty(count, dtype=bool)
         for i in range(0, count, BLOCK):
-            blk = eng.solve(dv[i:i + BLOCK])
-            blk.user = user[i:i + BLOCK]
-            part = _columns(eng, blk)
+            part = fast_columns(eng, dv[i:i + BLOCK], user[i:i + BLOCK]) if written else None
+            if part is not None:
+                blk = _Block(dv[i:i + BLOCK], None, None, None, user=user[i:i + BLOCK])
+            else:
+                blk = eng.solve(dv[i:i + BLOCK])
+                blk.user = user[i:i + BLOCK]
+                part = _columns(eng, blk)
             if not cols:
                 cols = {k: np.empty(count) for k in part}
             for k, v in part.items():
                 cols[k][i:i + BLOCK] = v
-            valid[i:i + BLOCK] = _valid_of(blk)
-            assembled[i:i + BLOCK] = _assembled_of(blk)
+            if blk.ev is None and blk.analytic is None:  # written out: every posture clean
+                valid[i:i + BLOCK] = True
+                assembled[i:i + BLOCK] = True
+                released = True
+            else:
+                valid[i:i + BLOCK] = _valid_of(blk)
+                assembled[i:i + BLOCK] = _assembled_of(blk)
             if blk.analytic is None:
                 blk = _Block(blk.dv, None, None, None, user=blk.user)
                 released = True

@@ -9,6 +9,7 @@ Sec. 1.10 (toggle and dead-center postures).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -298,6 +299,24 @@ def _change_points(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     return out
 
 
+def _sign_changes(dv: Array, sign: Array, ok: Array,
+                  sign_at: Callable[[Array], Array]) -> Array:
+    """Drive values where ``sign`` changes between two valid samples, refined by bisection.
+
+    ``sign_at(x)`` is the sign at other drive values (48 halvings: to round-off).
+    """
+    idx = np.flatnonzero(ok[:-1] & ok[1:] & (sign[:-1] * sign[1:] < 0))
+    lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
+    slo = sign[idx]
+    if idx.size:
+        for _ in range(48):
+            mid = 0.5 * (lo + hi)
+            same = sign_at(mid) == slo
+            lo = np.where(same, mid, lo)
+            hi = np.where(same, hi, mid)
+    return 0.5 * (lo + hi)
+
+
 def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     """Where a link pinned to the frame stops and turns back (``ω = 0``)."""
     assert eng.pc is not None
@@ -324,19 +343,13 @@ def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     w_all, ok_all = omegas(dv)
     for lid in cands:
         w = w_all[lid]
-        s = np.sign(w)
-        idx = np.flatnonzero(ok_all[:-1] & ok_all[1:] & (s[:-1] * s[1:] < 0))
-        if idx.size == 0:
+
+        def sign_w(mid: Array, lid: str = lid) -> Array:
+            return np.sign(omegas(mid)[0][lid])
+
+        x = _sign_changes(dv, np.sign(w), ok_all, sign_w)
+        if x.size == 0:
             continue
-        lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
-        slo = s[idx]
-        for _ in range(48):
-            mid = 0.5 * (lo + hi)
-            wm, _ok = omegas(mid)
-            same = np.sign(wm[lid]) == slo
-            lo = np.where(same, mid, lo)
-            hi = np.where(same, hi, mid)
-        x = 0.5 * (lo + hi)
         ev = eng.posture(x)
         th = np.broadcast_to(np.asarray(ev.values[eng.pc.angles[lid]]), x.shape)
         for xi, ti in zip(x, th):
@@ -389,19 +402,13 @@ def _slider_limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     for s in sliders:
         if s.index not in speed_all:
             continue
-        sign = np.where(speed_all[s.index] >= 0, 1.0, -1.0)  # a sample exactly at 0 counts +
-        idx = np.flatnonzero(ok_all[:-1] & ok_all[1:] & (sign[:-1] * sign[1:] < 0))
-        if idx.size == 0:
+
+        def sign_v(mid: Array, k: int = s.index) -> Array:
+            return np.where(along(mid)[0][k] >= 0, 1.0, -1.0)  # a sample exactly at 0 counts +
+
+        x = _sign_changes(dv, np.where(speed_all[s.index] >= 0, 1.0, -1.0), ok_all, sign_v)
+        if x.size == 0:
             continue
-        lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
-        slo = sign[idx]
-        for _ in range(48):
-            mid = 0.5 * (lo + hi)
-            sp, _t, _ok = along(mid)
-            same = np.where(sp[s.index] >= 0, 1.0, -1.0) == slo
-            lo = np.where(same, mid, lo)
-            hi = np.where(same, hi, mid)
-        x = 0.5 * (lo + hi)
         _s, trav, _ok = along(x)
         for xi, ti in zip(x, trav[s.index]):
             u = _to_user(eng, float(xi))

@@ -1,0 +1,359 @@
+"""The templates of :mod:`graphkin.construction.codegen`: each operation's arithmetic, as source.
+
+Each template writes what the operation's compiled kernel
+(:mod:`graphkin.construction.ops.kernels`) computes, on the rows of its
+inputs, and where the kernel would take its exact, slower branch (arcs that
+barely meet, coincident points, nearly parallel lines, a vanishing length)
+it writes a check that returns ``None`` instead, so that the construction is
+replayed.  The generated function therefore computes the kernels' numbers,
+in the clean case only.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (cases 1-4 of Table 2.2),
+Secs. 3.4-3.6 (velocity polygon and images), Secs. 4.2-4.6 (acceleration
+polygon, Coriolis component).
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from graphkin.construction.codegen import Gen, _num, lit, template
+from graphkin.construction.ops.runtime import tangent_cc, tangent_lc
+from graphkin.construction.step import Step
+
+
+def _pair(gen: Gen, v: object) -> tuple[str, str]:
+    """The two components of a constant pair (numbers, or arrays for a batch of designs)."""
+    a = np.asarray(v, dtype=float)
+    return gen.num(a[..., 0]), gen.num(a[..., 1])
+
+
+def _diff(gen: Gen, a: str, b: str) -> tuple[str, str]:
+    """``R_BA``: the components of B - A, as names (a constant zero of A is not subtracted)."""
+    ax, ay = gen.pt(a)
+    bx, by = gen.pt(b)
+    return gen.let(gen.sub(bx, ax), "dx"), gen.let(gen.sub(by, ay), "dy")
+
+
+def _div(gen: Gen, a: str, b: str) -> str:
+    """``a / b`` (b a name or a nonzero literal; a literal one drops out)."""
+    if b == "1.0":
+        return a
+    if gen.is_zero(a):
+        return "0.0"
+    return f"({a} / {b})"
+
+
+def _positive(gen: Gen, expr: str) -> None:
+    """Return None (replay) unless every entry of ``expr`` is > 0 (NaN fails)."""
+    gen.bail_unless(f"_min({expr}, None) > 0.0")
+
+
+@template("rigid")
+def _rigid(gen: Gen, step: Step) -> None:
+    p, th = step.inputs
+    ax, ay = gen.pt(p)
+    d0, d1 = _pair(gen, np.subtract(step.params["local_q"], step.params["local_p"]))
+    c, s = gen.cs(th, float(step.params.get("offset", 0.0)))
+    # Q = P + R(θ) d: the rotation (c d0 - s d1, s d0 + c d1); a zero component drops out
+    x = gen.sub(gen.mul(c, d0), gen.mul(s, d1))
+    y = gen.add(gen.mul(s, d0), gen.mul(c, d1))
+    gen.put_point(step.outputs[0], gen.add(x, ax), gen.add(y, ay))
+
+
+@template("circle")
+def _circle(gen: Gen, step: Step) -> None:
+    # an arc is its center and radius: nothing to compute
+    x, y = gen.pt(step.inputs[0])
+    gen.put_rows(step.outputs[0], "circle", x, y, gen.num(step.params["radius"]))
+
+
+@template("intersect_circles")
+def _intersect_circles(gen: Gen, step: Step) -> None:
+    c1, c2 = step.inputs
+    x1, y1, r1 = gen.rows(c1)
+    x2, y2, r2 = gen.rows(c2)
+    tol = gen.tol
+    dx = gen.let(gen.sub(x2, x1), "dx")
+    dy = gen.let(gen.sub(y2, y1), "dy")
+    dd = gen.let(gen.add(gen.mul(dx, dx), gen.mul(dy, dy)), "dd")
+    k1, k2 = _num(r1), _num(r2)
+    rr = lit(k1 * k1 - k2 * k2) if k1 is not None and k2 is not None \
+        else f"({r1} * {r1} - {r2} * {r2})"
+    # along and across the line of centers, in units of its length d:
+    # a/d = (d² + r1² - r2²) / 2d², (h/d)² = r1²/d² - (a/d)²
+    p = gen.let(f"({dd} + {rr}) / (2.0 * {dd})", "p")
+    r1sq = lit(k1 * k1) if k1 is not None else f"({r1} * {r1})"
+    q2 = gen.let(f"{r1sq} / {dd} - {p} * {p}", "q")
+    # the kernel's clean case: no tangency to round, no concentric arcs
+    if k1 is not None and k2 is not None:
+        lim = lit((2.0 * (tol.length_abs + tol.length_rel * max(abs(k1), abs(k2)))) ** 2)
+    else:
+        lim = (f"(2.0 * ({lit(tol.length_abs)} + {lit(tol.length_rel)} * "
+               f"max(float(_max(_abs({r1}), None)), float(_max(_abs({r2}), None))))) ** 2")
+    gen.bail_unless(f"_min({dd}, None) > {lim}")
+    # tangency (a dead center): a tiny negative h² from a length error counts as zero, as
+    # the kernel rounds it; arcs that do not meet are not clean
+    fix = gen.bind(functools.partial(tangent_cc, tol=tol), "tangent")
+    q2 = gen.let(f"{q2} if _min({q2}, None) >= 0.0 else {fix}({q2}, {dd}, {r1}, {r2})", "q")
+    gen.bail_unless(f"_min({q2}, None) >= 0.0")
+    q = gen.let(f"_sqrt({q2})", "h")
+    # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
+    x, y = _turned(gen, p, q, dx, dy, step.params["branch"] == "left")
+    gen.put_point(step.outputs[0], gen.add(x, x1), gen.add(y, y1))
+
+
+def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool) -> tuple[str, str]:
+    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it."""
+    pux, puy, qux, quy = gen.mul(p, ux), gen.mul(p, uy), gen.mul(q, ux), gen.mul(q, uy)
+    if left:
+        return gen.sub(pux, quy), gen.add(puy, qux)
+    return gen.add(pux, quy), gen.sub(puy, qux)
+
+
+@template("intersect_line_circle")
+def _intersect_line_circle(gen: Gen, step: Step) -> None:
+    line, c = step.inputs
+    l0, l1, l2 = gen.rows(line)
+    cx, cy, r = gen.rows(c)
+    s = gen.let(gen.add(gen.add(gen.mul(l0, cx), gen.mul(l1, cy)), l2), "s")
+    h2 = gen.let(gen.sub(gen.mul(r, r), gen.mul(s, s)), "h")
+    fix = gen.bind(functools.partial(tangent_lc, tol=gen.tol), "tangent")
+    h2 = gen.let(f"{h2} if _min({h2}, None) >= 0.0 else {fix}({h2}, {s}, {r})", "h")
+    gen.bail_unless(f"_min({h2}, None) >= 0.0")
+    h = gen.let(f"_sqrt({h2})", "h")
+    # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
+    x, y = _turned(gen, s, h, l0, l1, step.params["branch"] != "behind")
+    gen.put_point(step.outputs[0], gen.sub(cx, x), gen.sub(cy, y))
+
+
+@template("link_angle")
+def _link_angle(gen: Gen, step: Step) -> None:
+    a, b = step.inputs
+    dl = np.subtract(step.params["local_b"], step.params["local_a"])
+    phi = np.arctan2(dl[..., 1], dl[..., 0])
+    dx, dy = _diff(gen, a, b)
+    t = f"_atan2({dy}, {dx})"
+    ph = gen.num(phi)
+    value = gen.sub(t, ph)
+
+    def trig() -> tuple[str, str]:
+        # the direction AB gives the cosine and sine of the line's angle (written when a
+        # later step first asks for them)
+        n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
+        _positive(gen, n)
+        c, s = gen.let(f"{dx} / {n}", "c"), gen.let(f"{dy} / {n}", "s")
+        if gen.is_zero(ph):
+            return c, s
+        cp, sp = gen.num(np.cos(phi)), gen.num(np.sin(phi))
+        return (gen.let(gen.add(gen.mul(c, cp), gen.mul(s, sp)), "c"),
+                gen.let(gen.sub(gen.mul(s, cp), gen.mul(c, sp)), "s"))
+
+    gen.put_scalar(step.outputs[0], value, trig)
+
+
+@template("angle_along")
+def _angle_along(gen: Gen, step: Step) -> None:
+    t_, s_ = step.inputs
+    tx, ty = gen.pt(t_)
+    sx, sy = gen.pt(s_)
+    sign = lit(step.params["sign"])
+    phi = lit(step.params["local_angle"])
+    dy, dx = gen.mul(gen.sub(sy, ty), sign), gen.mul(gen.sub(sx, tx), sign)
+    gen.put_scalar(step.outputs[0], gen.sub(f"_atan2({dy}, {dx})", phi))
+
+
+@template("add_angle")
+def _add_angle(gen: Gen, step: Step) -> None:
+    t = gen.scalar(step.inputs[0])
+    gen.put_scalar(step.outputs[0], gen.add(t, gen.num(step.params["offset"])))
+
+
+@template("join")
+def _join(gen: Gen, step: Step) -> None:
+    p, q = step.inputs
+    px, py = gen.pt(p)
+    qx, qy = gen.pt(q)
+    tol = gen.tol
+    # the cross product (px, py, 1) × (qx, qy, 1), normalized
+    a = gen.let(gen.sub(py, qy), "a")
+    b = gen.let(gen.sub(qx, px), "b")
+    c = gen.let(gen.sub(gen.mul(px, qy), gen.mul(py, qx)), "c")
+    n = gen.let(f"_sqrt({gen.add(gen.mul(a, a), gen.mul(b, b))})", "n")
+    # the kernel's clean case (no two coincident points): n (1 - rel) > abs + rel 2 |far|
+    far = gen.val(p) if gen.val(p).const is not None else gen.val(q)
+    if far.const is not None:
+        big = lit(float(np.max(np.abs(np.asarray(far.const)[..., :2]))))
+    else:
+        fx, fy = far.ex[0], far.ex[1]
+        big = f"max(float(_max(_abs({fx}), None)), float(_max(_abs({fy}), None)))"
+    gen.bail_unless(f"_min({n}, None) * {lit(1.0 - tol.length_rel)} > "
+                    f"{lit(tol.length_abs)} + {lit(2.0 * tol.length_rel)} * {big}")
+    gen.put_rows(step.outputs[0], "line", *(_div(gen, r, n) for r in (a, b, c)))
+
+
+def _line_through(turned: bool) -> None:
+    """The template of the line through a point with the normal ``(a, b)`` or ``(-b, a)``."""
+
+    def tpl(gen: Gen, step: Step) -> None:
+        line, p = step.inputs
+        a, b, _ = gen.rows(line)
+        px, py, pw = gen.rows(p)
+        n0, n1 = (gen.neg(b), a) if turned else (a, b)
+        c = gen.neg(gen.add(gen.mul(n0, px), gen.mul(n1, py)))
+        gen.put_rows(step.outputs[0], "line", n0, n1, _div(gen, c, pw))
+
+    template("perpendicular" if turned else "parallel")(tpl)
+
+
+_line_through(True)
+_line_through(False)
+
+
+@template("meet")
+def _meet(gen: Gen, step: Step) -> None:
+    a1, b1, c1 = gen.rows(step.inputs[0])
+    a2, b2, c2 = gen.rows(step.inputs[1])
+    pw = gen.let(gen.sub(gen.mul(a1, b2), gen.mul(b1, a2)), "w")
+    px = gen.let(gen.sub(gen.mul(b1, c2), gen.mul(c1, b2)), "x")
+    py = gen.let(gen.sub(gen.mul(c1, a2), gen.mul(a1, c2)), "y")
+    n2 = gen.add(gen.mul(px, px), gen.mul(py, py))
+    # the kernel's clean case: nowhere parallel, coincident or NaN
+    gate = lit((gen.tol.angle * (1.0 + 1e-6)) ** 2)
+    gen.bail_unless(f"({pw} * {pw} > {gate} * _maximum({n2}, 1.0)).all()")
+    gen.put_point(step.outputs[0], _div(gen, px, pw), _div(gen, py, pw))
+
+
+def _point_and_vector(sign: str) -> None:
+    def tpl(gen: Gen, step: Step) -> None:
+        ax, ay = gen.pt(step.inputs[0])
+        vx, vy, *_ = gen.rows(step.inputs[1])
+        op = gen.add if sign == "+" else gen.sub
+        gen.put_point(step.outputs[0], op(ax, vx), op(ay, vy))
+
+    template("translate" if sign == "+" else "subtract")(tpl)
+
+
+_point_and_vector("+")
+_point_and_vector("-")
+
+
+@template("vector")
+def _vector(gen: Gen, step: Step) -> None:
+    px, py = gen.pt(step.inputs[0])
+    qx, qy = gen.pt(step.inputs[1])
+    gen.put_rows(step.outputs[0], "vector", gen.sub(qx, px), gen.sub(qy, py))
+
+
+@template("scale_vector")
+def _scale_vector(gen: Gen, step: Step) -> None:
+    vx, vy, *_ = gen.rows(step.inputs[0])
+    k = gen.scalar(step.inputs[1])
+    f = gen.num(step.params.get("factor", 1.0))
+    k = gen.let(gen.mul(k, f), "k")
+    gen.put_rows(step.outputs[0], "vector", gen.mul(vx, k), gen.mul(vy, k))
+
+
+@template("similar")
+def _similar(gen: Gen, step: Step) -> None:
+    la = np.asarray(step.params["local_a"], dtype=float)
+    lb = np.asarray(step.params["local_b"], dtype=float)
+    lp = np.asarray(step.params["local_p"], dtype=float)
+    zr, zp = lb - la, lp - la
+    den = zr[..., 0] ** 2 + zr[..., 1] ** 2
+    if la.shape[-1:] != (2,) or lb.shape[-1:] != (2,) or lp.shape[-1:] != (2,) or \
+            not np.all(den != 0.0):
+        gen.generic(step)
+        return
+    # p = a + (b - a) q with the complex ratio q = (P - A) / (B - A) of the link
+    qr = gen.num((zp[..., 0] * zr[..., 0] + zp[..., 1] * zr[..., 1]) / den)
+    qi = gen.num((zp[..., 1] * zr[..., 0] - zp[..., 0] * zr[..., 1]) / den)
+    a, b = step.inputs
+    ax, ay = gen.pt(a)
+    d0, d1 = _diff(gen, a, b)
+    gen.put_point(step.outputs[0], gen.add(gen.sub(gen.mul(d0, qr), gen.mul(d1, qi)), ax),
+                  gen.add(gen.add(gen.mul(d0, qi), gen.mul(d1, qr)), ay))
+
+
+@template("velocity_difference")
+def _velocity_difference(gen: Gen, step: Step) -> None:
+    img, omega, a, x_ = step.inputs
+    ix, iy = gen.pt(img)
+    rx, ry = _diff(gen, a, x_)
+    w = gen.scalar(omega)
+    # V_X = V_A + ω k × R_XA
+    gen.put_point(step.outputs[0], gen.sub(ix, gen.mul(w, ry)), gen.add(iy, gen.mul(w, rx)))
+
+
+@template("acceleration_difference")
+def _acceleration_difference(gen: Gen, step: Step) -> None:
+    img, omega, alpha, a, x_ = step.inputs
+    ix, iy = gen.pt(img)
+    rx, ry = _diff(gen, a, x_)
+    w, al = gen.scalar(omega), gen.scalar(alpha)
+    w2 = gen.let(gen.mul(w, w), "w")
+    # A_X = A_A + α k × R_XA - ω² R_XA
+    gen.put_point(step.outputs[0], gen.sub(ix, gen.add(gen.mul(al, ry), gen.mul(w2, rx))),
+                  gen.add(iy, gen.sub(gen.mul(al, rx), gen.mul(w2, ry))))
+
+
+def _differences(gen: Gen, step: Step) -> tuple[str, str, str, str, str]:
+    """``R_BA``, the image difference ``b − a`` and ``|R_BA|²`` (checked > 0)."""
+    a, b, ia, ib = step.inputs
+    r0, r1 = _diff(gen, a, b)
+    v0, v1 = _diff(gen, ia, ib)
+    den = gen.let(gen.add(gen.mul(r0, r0), gen.mul(r1, r1)), "dd")
+    _positive(gen, den)
+    return r0, r1, v0, v1, den
+
+
+@template("angular_rate")
+def _angular_rate(gen: Gen, step: Step) -> None:
+    r0, r1, v0, v1, den = _differences(gen, step)
+    gen.put_scalar(step.outputs[0], _div(gen, gen.sub(gen.mul(r0, v1), gen.mul(r1, v0)), den))
+
+
+def _normal(sign: float) -> None:
+    """``sign |V|²/|R|² R``: ``normal_component`` (-1, Eq. 4.7), ``apparent_normal`` (+1)."""
+
+    def tpl(gen: Gen, step: Step) -> None:
+        r0, r1, v0, v1, den = _differences(gen, step)
+        k = _div(gen, gen.add(gen.mul(v0, v0), gen.mul(v1, v1)), den)
+        k = gen.let(gen.neg(k) if sign < 0 else k, "k")
+        gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
+
+    template("normal_component" if sign < 0 else "apparent_normal")(tpl)
+
+
+_normal(-1.0)
+_normal(1.0)
+
+
+@template("coriolis")
+def _coriolis(gen: Gen, step: Step) -> None:
+    omega, ip, ipk = step.inputs
+    w2 = gen.let(gen.mul("2.0", gen.scalar(omega)), "w")
+    v0, v1 = _diff(gen, ipk, ip)
+    # 2 ω k × V_rel
+    gen.put_rows(step.outputs[0], "vector", gen.mul(gen.neg(w2), v1), gen.mul(w2, v0))
+
+
+def _along(gen: Gen, step: Step) -> None:
+    # add_along (p, p0, p1, s) and along_line (p0, p1, s): from the first input, a signed
+    # distance s along the direction p0 → p1
+    p, (p0, p1, s) = step.inputs[0], step.inputs[-3:]
+    ax, ay = gen.pt(p)
+    d0, d1 = _diff(gen, p0, p1)
+    dd = gen.let(gen.add(gen.mul(d0, d0), gen.mul(d1, d1)), "dd")
+    _positive(gen, dd)
+    k = gen.let(f"{gen.scalar(s)} / _sqrt({dd})", "k")
+    gen.put_point(step.outputs[0], gen.add(ax, gen.mul(d0, k)), gen.add(ay, gen.mul(d1, k)))
+
+
+template("add_along")(_along)
+
+template("along_line")(_along)
