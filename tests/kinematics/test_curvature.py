@@ -152,10 +152,16 @@ def check_link(sol: Solution, lid: str):
     i0 = zero_velocity_point(st)
     np.testing.assert_allclose(k.velocity_pole, i0, rtol=0, atol=1e-8 * scale)
     g0 = zero_acceleration_point(st)
-    np.testing.assert_allclose(k.acceleration_center, g0, rtol=0, atol=1e-8 * scale)
+    # Γ can lie far away (ω⁴ + α² small against the accelerations): its round-off is then
+    # relative to its own distance, not to the figure's size
+    # and a link turning slowly against the rest of the mechanism (a [rates] target that barely
+    # moves) amplifies it by |V|max / (|ω| size)
+    amp = speeds(sol)[0] / max(abs(float(st.omega)) * size, 1e-300)
+    gscale = scale + float(np.hypot(*g0)) * (1.0 + amp)
+    np.testing.assert_allclose(k.acceleration_center, g0, rtol=0, atol=1e-8 * gscale)
     if "Γ (four circles)" in k.values:
         gg = k.values["Γ (four circles)"]
-        np.testing.assert_allclose(gg[:2] / gg[2], g0, rtol=0, atol=1e-7 * scale)
+        np.testing.assert_allclose(gg[:2] / gg[2], g0, rtol=0, atol=1e-7 * gscale)
     # J = I + A_I/ω², with A_I the acceleration of the body point at I (Eqs. 4.46-4.47)
     ai = st.acceleration(local_of(st, i0))
     np.testing.assert_allclose(k.inflection_pole, i0 + ai / float(st.omega) ** 2, rtol=0,
