@@ -36,7 +36,14 @@ from graphkin.construction import Construction, Mark, Role, Step, Term, VectorEq
 from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
-from graphkin.mechanisms.model import FRAME, XY, Mechanism, Slider, Slot
+from graphkin.kinematics.posture_drives import (
+    coordinate_groups,
+    do_coordinate,
+    finish_pairs,
+    propagate_drives,
+    start_drive,
+)
+from graphkin.mechanisms.model import FRAME, XY, Drive, Mechanism, Slider, Slot
 from graphkin.tolerance import Tolerance
 
 __all__ = ["PostureConstruction", "build_posture", "NotDecomposable"]
@@ -96,6 +103,7 @@ class _Group:
     pin: str = ""
     links: tuple[str, str] = ("", "")
     path: Slider | Slot | None = None
+    drive: Drive | None = None
 
 
 class _Builder:
@@ -176,6 +184,8 @@ class _Builder:
                      note=f"Locate the fixed point {name} of the frame.")
         self.place(FRAME)
         for d in self.mech.drives:
+            if start_drive(self, d):
+                continue
             if d.kind == "angle":
                 lab = f"θ{d.link}"
                 self.inputs[lab] = d.value
@@ -193,6 +203,7 @@ class _Builder:
                          note=f"The input: the slider {d.link} has travelled {d.value:.6g} along "
                               "its line.")
                 self.events.append(("input", d))
+        finish_pairs(self)
 
     def place(self, lid: str) -> None:
         """Lay off every point of a link from one known point and its angle (case 1)."""
@@ -290,6 +301,7 @@ class _Builder:
                     self.angle[b] = f"θ{b}"
                     self.events.append(("same_angle", b, a))
                     changed = True
+            changed = propagate_drives(self) or changed
             for d in self.mech.drives:
                 ds = d.slider
                 if d.kind == "position" and ds is not None and ds.on in self.placed \
@@ -422,6 +434,7 @@ class _Builder:
             if (slot.on not in self.placed and slot.link in self.placed
                     and self.one_point(slot.on)):
                 out.append(_Group("slot_through", path=slot))
+        out += [_Group("coordinate", pin=lid, drive=d) for d, lid in coordinate_groups(self)]
         for sl in mech.sliders:
             # the rod of an inverted slider-crank: the block has one known point, no angle
             if (sl.on not in self.placed and sl.link not in self.placed
@@ -476,6 +489,9 @@ class _Builder:
                 raise AssemblyError(f"cannot assemble: the paths of {name} are parallel",
                                     step=name)
             return [""]
+        if kind == "coordinate":
+            assert group.drive is not None
+            return do_coordinate(self, group.drive, group.pin, branch)
         path = group.path
         assert path is not None
         if kind == "pin_in_slot":
