@@ -218,7 +218,7 @@ class Drive:
 
     @property
     def rate_labels(self) -> tuple[str, str]:
-        """Names of the input's rates: (``ω2``, ``α2``), (``ω3/2``, ``α3/2``), (``vx_C``, ``ax_C``)."""
+        """Names of the input's rates: ``ω2, α2``; ``ω3/2, α3/2``; ``vx_C, ax_C``."""
         if self.kind == "angle":
             return f"ω{self.link}", f"α{self.link}"
         if self.kind == "relative":

@@ -492,7 +492,7 @@ class _Parser:
                                 "point, with vx, vy, ax, ay")
         if "x" not in d and "y" not in d:
             raise self.fail(key, f"a drive of point {name} gives its x and/or y")
-        out = []
+        out: list[Drive] = []
         for axis in ("x", "y"):
             for rate_key in (f"v{axis}", f"a{axis}"):
                 if rate_key in d and axis not in d:

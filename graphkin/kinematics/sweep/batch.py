@@ -499,7 +499,7 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
         eng.extras[checked] = True
     a, b, _ = _drive_range(eng, start, stop)
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    dv = np.radians(user) if eng.drive.is_angle else user
     given0: dict[str, Any] = dict(eng.held)
     if rated:
         given0.update(eng.rate_given)

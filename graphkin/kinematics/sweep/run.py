@@ -122,7 +122,7 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     eng = _engine(mech, tol)
     a, b, cyclic = _drive_range(eng, start, stop)
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    dv = np.radians(user) if eng.drive.kind == "angle" else user
+    dv = np.radians(user) if eng.drive.is_angle else user
     blocks: list[_Block] = []
     released = False
     if count <= BLOCK:
