@@ -241,7 +241,7 @@ class _Kennedy(_PrimaryCenters):
             with np.errstate(invalid="ignore", divide="ignore"):
                 lines = g.join(P, Q, self.tol)
                 cr = np.linalg.norm(np.cross(self.point_hat(P), self.point_hat(Q)), axis=-1)
-            good = self.every_of(np.all(np.isfinite(lines), axis=-1))
+            usable = self.every_of(np.all(np.isfinite(lines), axis=-1))
             cr = np.where(np.isfinite(cr), cr, 0.0)
             valid = np.broadcast_to(self.valid, cr.shape[1:])
             quality = (np.min(np.where(valid, cr, np.inf).reshape(len(tris), -1), axis=1)
@@ -255,7 +255,7 @@ class _Kennedy(_PrimaryCenters):
             if both_ideal[n]:
                 parallel_to.append(k)
                 continue
-            if good[n]:
+            if usable[n]:
                 opts.append(("tri", k, lines[n], float(quality[n])))
         if len(opts) > _MOST_LINES:
             # a large mechanism: the best-conditioned lines of centers are enough to choose
