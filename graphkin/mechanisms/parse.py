@@ -35,6 +35,11 @@ __all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE"]
 #: as the constructions form them, stay finite).
 MAX_MAGNITUDE = 1e100
 
+#: The largest ratio of the longest to the shortest length of a mechanism (the distances
+#: between the points of each link): tolerances are 1e-9 of the size, so beyond this the
+#: shortest link would be lost in them.
+MAX_RANGE = 1e7
+
 
 #: Characters the constructions use in their labels (graphkin.kinematics.posture and
 #: polygons): ``#`` construction points, ``:`` a path's points, ``@`` coincident points,
@@ -269,6 +274,7 @@ class _Parser:
                          source=self.source, line_points=frozenset(self.line_names),
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
+        self.check_range(mech)
         return mech
 
     def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:
@@ -542,6 +548,45 @@ class _Parser:
                                                ("omega", "alpha", "velocity", "acceleration")):
             raise self.fail("rates", "rates are given twice: in [drive] and in [rates]")
         return Rates(lid, kind, rate, rate2)
+
+    def check_range(self, mech: Mechanism) -> None:
+        """Refuse a mechanism whose lengths span more than :data:`MAX_RANGE` (one line).
+
+        Lengths are compared to a tolerance relative to the mechanism's size
+        (1e-9 of it): when one link reaches 1e14 while another is 4 long, the
+        short one is below that tolerance and every construction, and the
+        analytic solver's Jacobian, would see it as a point.  The message names
+        the farthest point and the shortest distance instead of calling the
+        posture singular.
+        """
+        far: tuple[float, str, str, str] = (0.0, "", "", "")
+        short: tuple[float, str, str, str] = (math.inf, "", "", "")
+        for lid, link in mech.links.items():
+            pts = [(n, p) for n, p in link.points.items() if n not in mech.helper_points]
+            if len(pts) < 2:
+                continue
+            # the point of the link farthest from its first point, and the nearest pair
+            n0, p0 = pts[0]
+            for n, p in pts[1:]:
+                d = math.hypot(p[0] - p0[0], p[1] - p0[1])
+                if d > far[0]:
+                    far = (d, lid, n, n0)
+            for a in range(len(pts)):
+                for b in range(a + 1, len(pts)):
+                    (na, pa), (nb, pb) = pts[a], pts[b]
+                    d = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+                    if 0.0 < d < short[0]:
+                        short = (d, lid, na, nb)
+                if len(pts) > 60:  # a long list of points: its first point's distances
+                    break
+        if short[0] == math.inf or far[0] <= MAX_RANGE * short[0]:
+            return
+        d, lid, n, n0 = far
+        raise self.fail(f"links.{lid}.{n}", f"point {n} of link {lid} lies {d:.3g} from {n0}, "
+                        f"{d / short[0]:.2g} times the shortest length of the mechanism "
+                        f"({short[2]}{short[3]} of link {short[1]}, {short[0]:.3g}): lengths are "
+                        "compared to 1e-9 of the mechanism's size, so a range beyond "
+                        f"{MAX_RANGE:.0e} cannot be solved; bring {n} nearer".replace("e+0", "e"))
 
     def check_mobility(self, mech: Mechanism) -> None:
         m = mech.mobility()
