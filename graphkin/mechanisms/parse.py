@@ -561,8 +561,17 @@ class _Parser:
         """
         far: tuple[float, str, str, str] = (0.0, "", "", "")
         short: tuple[float, str, str, str] = (math.inf, "", "", "")
-        for lid, link in mech.links.items():
-            pts = [(n, p) for n, p in link.points.items() if n not in mech.helper_points]
+        shapes = {lid: [(n, p) for n, p in link.points.items() if n not in mech.helper_points]
+                  for lid, link in mech.links.items()}
+        extents = sorted(math.hypot(max(p[0] for _, p in pts) - min(p[0] for _, p in pts),
+                                    max(p[1] for _, p in pts) - min(p[1] for _, p in pts))
+                         for pts in shapes.values() if len(pts) > 1)
+        if not extents:
+            return
+        # points nearer than the tolerance of a typical link are one point to the solver
+        # (two pivots at 1e-282 from each other): not a length
+        floor = 1e-9 * extents[len(extents) // 2]
+        for lid, pts in shapes.items():
             if len(pts) < 2:
                 continue
             # the point of the link farthest from its first point, and the nearest pair
@@ -575,7 +584,7 @@ class _Parser:
                 for b in range(a + 1, len(pts)):
                     (na, pa), (nb, pb) = pts[a], pts[b]
                     d = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
-                    if 0.0 < d < short[0]:
+                    if floor < d < short[0]:
                         short = (d, lid, na, nb)
                 if len(pts) > 60:  # a long list of points: its first point's distances
                     break
