@@ -38,7 +38,7 @@ MAX_MAGNITUDE = 1e100
 #: The largest ratio of the longest to the shortest length of a mechanism (the distances
 #: between the points of each link): tolerances are 1e-9 of the size, so beyond this the
 #: shortest link would be lost in them.
-MAX_RANGE = 1e7
+MAX_RANGE = 1e9
 
 
 #: Characters the constructions use in their labels (graphkin.kinematics.posture and

@@ -27,7 +27,7 @@ def _fourbar(far: float, where: str = "3", offset: float = 0.0) -> dict:
 
 
 @settings(max_examples=30, deadline=None)
-@given(exponent=st.floats(8.5, 15), where=st.sampled_from(["2", "3", "4"]))
+@given(exponent=st.floats(10, 15), where=st.sampled_from(["2", "3", "4"]))
 def test_a_point_far_beyond_the_range_is_named(exponent, where):
     far = 10.0 ** exponent
     with pytest.raises(graphkin.InputError) as exc:
