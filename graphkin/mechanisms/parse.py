@@ -275,6 +275,12 @@ class _Parser:
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)
+        for d in mech.drives:
+            if mech.has_forces and d.kind in ("relative", "x", "y"):
+                what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
+                raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
+                                "as the drive is not supported yet (drive the link by its "
+                                "angle or a slider by its position)")
         return mech
 
     def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:

@@ -396,6 +396,10 @@ _PANTO = (EXAMPLES / "p5_13_pantograph.toml").read_text()
      "drive[1].x", "driven twice"),
     (_PANTO.replace("x = 350\n", ""), "drive[0].vx", "does not give"),
     (_PANTO.replace('point = "C"', 'point = "C"\nlink = 2'), "drive[0].link", "no point"),
+    (_ROBOT + '\n[[loads]]\nlink = 3\npoint = "P"\nforce = "10 N at 270 deg"\n', "drive[1]",
+     "not supported yet"),
+    (_PANTO + '\n[[loads]]\nlink = 4\npoint = "P"\nforce = "10 N at 270 deg"\n', "drive[0]",
+     "not supported yet"),
 ])
 def test_contradictory_drives_are_one_line(tmp_path, text, key, words):
     f = tmp_path / "m.toml"
