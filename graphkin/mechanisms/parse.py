@@ -275,6 +275,9 @@ class _Parser:
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)
+        if rates is not None and len(mech.drives) != 1:
+            raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
+                            "drive with both x and y is two)")
         for d in mech.drives:
             if mech.has_forces and d.kind in ("relative", "x", "y"):
                 what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
