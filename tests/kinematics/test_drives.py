@@ -400,6 +400,8 @@ _PANTO = (EXAMPLES / "p5_13_pantograph.toml").read_text()
      "not supported yet"),
     (_PANTO + '\n[[loads]]\nlink = 4\npoint = "P"\nforce = "10 N at 270 deg"\n', "drive[0]",
      "not supported yet"),
+    (_PANTO.replace("vx = 100\n", "").replace("vy = 0\n", "").replace("ax = 0\n", "")
+     .replace("ay = 0\n", "") + "\n[rates]\nlink = 2\nomega = 1\n", "rates", "single input"),
 ])
 def test_contradictory_drives_are_one_line(tmp_path, text, key, words):
     f = tmp_path / "m.toml"
