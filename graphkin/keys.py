@@ -73,7 +73,12 @@ MECHANISM: Schema = {
                 "angle": None, "on_circle": _CIRCLE, "contact": None,
                 "pressure_angle": None},   # gear teeth (forces, Sec. 11.11)
     "drive": {"link": None, "angle": None, "position": None, "omega": None, "alpha": None,
-              "velocity": None, "acceleration": None},
+              "velocity": None, "acceleration": None,
+              # a joint angle between two moving links (Problems 5.7-5.11)
+              "relative_to": None,
+              # a point's coordinates in the frame (Problem 5.13)
+              "point": None, "x": None, "y": None, "vx": None, "vy": None, "ax": None,
+              "ay": None},
     "rates": {"link": None, "omega": None, "alpha": None, "velocity": None,
               "acceleration": None},
     "assembly": {"*": None},              # <point> = [x, y]

@@ -143,8 +143,16 @@ def _as_float(value: int | float) -> float:
     return v
 
 
+#: Metres per unit of the commonest length units, as pint gives them (bit for bit; a test
+#: checks): a file in one of these does not wait half a second for pint's registry to load.
+_COMMON_LENGTHS = {"mm": 0.001, "cm": 0.01, "m": 1.0, "km": 1000.0, "in": 0.0254,
+                   "inch": 0.0254, "ft": 0.30479999999999996, "yd": 0.9144}
+
+
 def length_factor(unit: str) -> float:
     """How many metres one ``unit`` is; raises ``ValueError`` if it is not a length."""
+    if unit in _COMMON_LENGTHS:
+        return _COMMON_LENGTHS[unit]
     ureg = registry()
     try:
         check_unit(unit)

@@ -44,7 +44,11 @@ def run(args: argparse.Namespace) -> int:
         data = solution_to_dict(sol, units)
         if args.steps:
             data["constructions"] = {k: c.to_dict() for k, c in constructions.items()}
-        json.dump(data, sys.stdout, ensure_ascii=False, indent=1, allow_nan=False)
+        # a mechanism of hundreds of links has hundreds of thousands of instant centers:
+        # written without indentation (json's fast encoder), the same JSON
+        big = len(data.get("instant_centers") or ()) > 20000
+        sys.stdout.write(json.dumps(data, ensure_ascii=False, indent=None if big else 1,
+                                    allow_nan=False))
         sys.stdout.write("\n")
         return 0
     sys.stdout.write(text_report(sol, units))

@@ -93,7 +93,7 @@ def run(args: argparse.Namespace) -> int:
 
         sw.columns.update(force_columns(sw, joints=args.joint_forces))
     units = OutputUnits.of(mech.length_unit, args.units)
-    slider = sw.drive.kind != "angle"
+    slider = not sw.drive.is_angle
     try:
         columns = convert_columns(sw.columns, units, slider) if args.units else None
     except KeyError as exc:

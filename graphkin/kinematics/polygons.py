@@ -232,7 +232,15 @@ class _Poly:
 
     def ev_input(self, d: Drive) -> None:
         lid, kind, idx = d.link, d.kind, d.index
-        if kind == "angle":
+        if kind in ("relative", "x", "y"):
+            w, al = d.rate_labels
+            what = (f"the joint's speed {w}" if kind == "relative"
+                    else f"the rate of {d.label}")
+            self.V("input", (), w, name=w, role=Role.GIVEN, note=f"The input: {what}.")
+            self.A("input", (), al, name=al, role=Role.GIVEN,
+                   note=f"The input: {'its acceleration' if kind == 'relative' else 'its'} "
+                        f"{al}.")
+        elif kind == "angle":
             w, al = f"ω{lid}", f"α{lid}"
             self.V("input", (), w, name=w, role=Role.GIVEN, note=f"The input speed ω{lid}.")
             self.A("input", (), al, name=al, role=Role.GIVEN,
@@ -245,6 +253,59 @@ class _Poly:
             self.A("input", (), al, name=al, role=Role.GIVEN,
                    note=f"The input: the slider {lid}'s acceleration along its line.")
         self.rate_inputs[idx] = (w, al)
+
+    # ---- joint-angle and coordinate drives (P5.7-5.13) ----------------------
+    def ev_relative_angle(self, d: Drive, forward: bool) -> None:
+        """``ω3 = ω2 + ω3/2`` and ``α3 = α2 + α3/2`` (or back from link 3 to link 2)."""
+        i, j = d.link, d.relative_to
+        assert j is not None
+        known, new, sign = (j, i, 1.0) if forward else (i, j, -1.0)
+        if known not in self.omega or known not in self.alpha:
+            raise _NotYet(new)
+        w, al = self.rate_inputs[d.index]
+        op = "+" if forward else "−"
+        self.omega[new] = self.V("add_angles", (self.omega[known], w), f"ω{new}", sign=sign,
+                                 role=Role.RESULT,
+                                 note=f"The joint turns link {new} with link {known}: "
+                                      f"ω{new} = ω{known} {op} {w}.")
+        self.alpha[new] = self.A("add_angles", (self.alpha[known], al), f"α{new}", sign=sign,
+                                 role=Role.RESULT,
+                                 note=f"In plane motion the angular accelerations add too: "
+                                      f"α{new} = α{known} {op} {al}.")
+
+    def ev_point_drive(self, x: Drive, y: Drive) -> None:
+        """The images of a point whose coordinates are given: its rates laid off from the poles."""
+        p = x.point
+        assert p is not None
+        (vx, ax), (vy, ay) = self.rate_inputs[x.index], self.rate_inputs[y.index]
+        eq = VectorEquation((Term(f"V_{p}", U, U),), (Term(vx, K, K), Term(vy, K, K)), case=1)
+        self.vimg[p] = self.V("point_xy", (vx, vy), vimg(p), role=Role.RESULT, equation=eq,
+                              note=f"From O_V lay off the given components ({vx}, {vy}) of "
+                                   f"V_{p}: the image of {p}.")
+        eq = VectorEquation((Term(f"A_{p}", U, U),), (Term(ax, K, K), Term(ay, K, K)), case=1)
+        self.aimg[p] = self.A("point_xy", (ax, ay), aimg(p), role=Role.RESULT, equation=eq,
+                              note=f"From O_A lay off the given components ({ax}, {ay}) of "
+                                   f"A_{p}: its acceleration image.")
+
+    def ev_coordinate(self, d: Drive, lid: str, p: str) -> None:
+        """A point with one given coordinate on a link turning about P (case 3 in the polygons)."""
+        x = d.point
+        assert x is not None
+        w, al = self.rate_inputs[d.index]
+        lv1, la1, tv1, ta1 = self.motion_lines(("rot", lid, p), x)
+        lv2 = self.V("coordinate_line", (w,), f"{d.kind}={w}:v", axis=d.kind,
+                     note=f"Draw the line {d.kind} = {w} in the polygon: the given component of "
+                          f"V_{x} puts its image on it.")
+        self.vimg[x] = self.V("meet", (lv1, lv2), vimg(x), role=Role.RESULT,
+                              equation=VectorEquation(tv1, (Term(w, K, K),
+                                                            Term(f"V_{x}", U, K)), case=3),
+                              note=f"They meet at the image of {x} (case 3).")
+        la2 = self.A("coordinate_line", (al,), f"{d.kind}={al}:a", axis=d.kind,
+                     note=f"Draw the line {d.kind} = {al}: the given component of A_{x}.")
+        self.aimg[x] = self.A("meet", (la1, la2), aimg(x), role=Role.RESULT,
+                              equation=VectorEquation(ta1, (Term(al, K, K),
+                                                            Term(f"A_{x}", U, K)), case=3),
+                              note=f"They meet at the acceleration image of {x} (case 3).")
 
     def ev_placed(self, lid: str, anchor: str) -> None:
         self.anchor[lid] = anchor

@@ -36,7 +36,8 @@ from graphkin.construction import Construction, Mark, Role, Step, Term, VectorEq
 from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
-from graphkin.mechanisms.model import FRAME, XY, Mechanism, Slider, Slot
+from graphkin.kinematics import posture_drives as pd
+from graphkin.mechanisms.model import FRAME, XY, Drive, Mechanism, Slider, Slot
 from graphkin.tolerance import Tolerance
 
 __all__ = ["PostureConstruction", "build_posture", "NotDecomposable"]
@@ -89,13 +90,15 @@ class _Group:
     (a link turning about a known point with its pin in a known slot),
     ``slot_through`` (a link turning about a known point whose slot or line
     passes through a known point) or ``inverted`` (the rod of an inverted
-    slider-crank and its block).
+    slider-crank and its block) or ``coordinate`` (a point with one driven
+    coordinate; ``pin`` names its link).
     """
 
     kind: str
     pin: str = ""
     links: tuple[str, str] = ("", "")
     path: Slider | Slot | None = None
+    drive: Drive | None = None
 
 
 class _Builder:
@@ -176,6 +179,8 @@ class _Builder:
                      note=f"Locate the fixed point {name} of the frame.")
         self.place(FRAME)
         for d in self.mech.drives:
+            if pd.start_drive(self, d):
+                continue
             if d.kind == "angle":
                 lab = f"θ{d.link}"
                 self.inputs[lab] = d.value
@@ -193,6 +198,7 @@ class _Builder:
                          note=f"The input: the slider {d.link} has travelled {d.value:.6g} along "
                               "its line.")
                 self.events.append(("input", d))
+        pd.finish_pairs(self)
 
     def place(self, lid: str) -> None:
         """Lay off every point of a link from one known point and its angle (case 1)."""
@@ -290,6 +296,7 @@ class _Builder:
                     self.angle[b] = f"θ{b}"
                     self.events.append(("same_angle", b, a))
                     changed = True
+            changed = pd.propagate_drives(self) or changed
             for d in self.mech.drives:
                 ds = d.slider
                 if d.kind == "position" and ds is not None and ds.on in self.placed \
@@ -422,6 +429,7 @@ class _Builder:
             if (slot.on not in self.placed and slot.link in self.placed
                     and self.one_point(slot.on)):
                 out.append(_Group("slot_through", path=slot))
+        out += [_Group("coordinate", pin=lid, drive=d) for d, lid in pd.coordinate_groups(self)]
         for sl in mech.sliders:
             # the rod of an inverted slider-crank: the block has one known point, no angle
             if (sl.on not in self.placed and sl.link not in self.placed
@@ -476,6 +484,9 @@ class _Builder:
                 raise AssemblyError(f"cannot assemble: the paths of {name} are parallel",
                                     step=name)
             return [""]
+        if kind == "coordinate":
+            assert group.drive is not None
+            return pd.do_coordinate(self, group.drive, group.pin, branch)
         path = group.path
         assert path is not None
         if kind == "pin_in_slot":

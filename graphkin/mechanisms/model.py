@@ -170,10 +170,22 @@ class Rolling:
 class Drive:
     """An input that fixes the posture.
 
-    ``kind`` is ``"angle"`` (the absolute angle of a link pinned to the frame,
-    rad) or ``"position"`` (the travel of a slider's point along its line from
-    the line's first point).  ``rate`` and ``rate2`` are ω, α (rad/s, rad/s²)
-    or velocity and acceleration along the line; ``None`` when not given.
+    ``kind`` is one of
+
+    * ``"angle"``: the absolute angle of a link pinned to the frame (rad);
+    * ``"position"``: the travel of a slider's point along its line from the
+      line's first point;
+    * ``"relative"``: the angle θ_{i/j} = θ_i − θ_j of link ``link`` relative
+      to link ``relative_to`` (a robot's joint angle, Problems 5.7-5.11; rad);
+    * ``"x"`` or ``"y"``: a coordinate of the point ``point`` in the frame
+      (the pantograph's x_C, y_C of Problem 5.13); ``link`` is a moving link
+      that carries it.
+
+    ``rate`` and ``rate2`` are ω, α (rad/s, rad/s²) of the angle, or the
+    first and second derivatives of the travel or coordinate; ``None`` when
+    not given.  ``index`` is the drive's place in :attr:`Mechanism.drives`;
+    ``key`` the file's key (one ``[[drive]]`` with both ``x`` and ``y`` gives
+    two drives with the same key).
     """
 
     index: int
@@ -185,6 +197,41 @@ class Drive:
     pivot: str | None = None
     slider: Slider | None = None
     key: str = "drive"
+    relative_to: str | None = None
+    point: str | None = None
+
+    @property
+    def is_angle(self) -> bool:
+        """True for an angle (absolute or relative): values in rad, shown in degrees."""
+        return self.kind in ("angle", "relative")
+
+    @property
+    def label(self) -> str:
+        """The book's name of the input: ``θ2``, ``s4``, ``θ3/2``, ``x_C``, ``y_C``."""
+        if self.kind == "angle":
+            return f"θ{self.link}"
+        if self.kind == "relative":
+            return f"θ{self.link}/{self.relative_to}"
+        if self.kind in ("x", "y"):
+            return f"{self.kind}_{self.point}"
+        return f"s{self.link}"
+
+    @property
+    def rate_labels(self) -> tuple[str, str]:
+        """Names of the input's rates: ``ω2, α2``; ``ω3/2, α3/2``; ``vx_C, ax_C``."""
+        if self.kind == "angle":
+            return f"ω{self.link}", f"α{self.link}"
+        if self.kind == "relative":
+            return f"ω{self.link}/{self.relative_to}", f"α{self.link}/{self.relative_to}"
+        if self.kind in ("x", "y"):
+            return f"v{self.kind}_{self.point}", f"a{self.kind}_{self.point}"
+        return f"ds{self.link}", f"dds{self.link}"
+
+    def describe(self, unit: str = "") -> str:
+        """The drive in words with its value: ``θ3/2 = -15°``, ``x_C = 300 mm``."""
+        if self.is_angle:
+            return f"{self.label} = {math.degrees(self.value):.6g}°"
+        return f"{self.label} = {self.value:.6g}{' ' + unit if unit else ''}"
 
 
 @dataclass(frozen=True, slots=True)
@@ -259,6 +306,9 @@ class Mechanism:
                 if items:
                     parts.append(f"{len(items)} {what}{'s' if len(items) > 1 else ''}")
             for d in self.drives:
+                if d.kind in ("relative", "x", "y"):
+                    parts.append(f"drive {d.describe(self.length_unit)}")
+                    continue
                 at = (f"{math.degrees(d.value):.6g}°" if d.kind == "angle"
                       else f"{d.value:.6g} {self.length_unit}")
                 parts.append(f"drive link {d.link} at {at}")

@@ -35,6 +35,17 @@ __all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE"]
 #: as the constructions form them, stay finite).
 MAX_MAGNITUDE = 1e100
 
+#: The largest ratio of the longest to the shortest length of a mechanism (the distances
+#: between the points of each link): tolerances are 1e-9 of the size, so beyond this the
+#: shortest link would be lost in them.
+MAX_RANGE = 1e9
+
+
+#: Characters the constructions use in their labels (graphkin.kinematics.posture and
+#: polygons): ``#`` construction points, ``:`` a path's points, ``@`` coincident points,
+#: ``(``/``)`` images and loci, ``>`` posture lines.  A point name cannot contain them.
+RESERVED_CHARACTERS = "#:@()>"
+
 
 def _short(value: Any, limit: int = 80) -> str:
     """``repr`` of a value cut to ``limit`` characters (a hostile value is not echoed whole)."""
@@ -98,6 +109,20 @@ class _Parser:
             raise self.fail(key, f"coordinates beyond ±{MAX_MAGNITUDE:g} are not supported "
                             "(choose a larger length unit)")
         return (x, y)
+
+    def point_name(self, name: str, key: str) -> None:
+        """Refuse a point name that a construction label could be confused with.
+
+        The constructions name their own points from the file's: ``C#3`` (a
+        construction point), ``sliders[0]:L0`` (a line's point), ``C@4`` (the
+        point of link 4 at C), ``v(C)`` (an image), ``k_C(B)`` (a locus) and
+        ``R_CB:B>C`` (a posture line); a point name holding one of those
+        characters could clash with them.
+        """
+        bad = sorted({c for c in name if c in RESERVED_CHARACTERS})
+        if bad:
+            raise self.fail(key, f"a point name cannot contain {' or '.join(map(repr, bad))} "
+                            "(the constructions use it in their own labels)")
 
     def table(self, value: Any, key: str) -> Mapping[str, Any]:
         if not isinstance(value, Mapping):
@@ -173,6 +198,8 @@ class _Parser:
         for lid, pts in links_raw.items():
             key = f"links.{lid}"
             pts = self.table(pts, key)
+            for n in pts:
+                self.point_name(str(n), f"{key}.{n}")
             points = {str(n): self.xy(v, f"{key}.{n}") for n, v in pts.items()}
             self.links[str(lid)] = Link(str(lid), points)
         if FRAME not in self.links:
@@ -247,6 +274,16 @@ class _Parser:
                          source=self.source, line_points=frozenset(self.line_names),
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
+        self.check_range(mech)
+        if rates is not None and len(mech.drives) != 1:
+            raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
+                            "drive with both x and y is two)")
+        for d in mech.drives:
+            if mech.has_forces and d.kind in ("relative", "x", "y"):
+                what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
+                raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
+                                "as the drive is not supported yet (drive the link by its "
+                                "angle or a slider by its position)")
         return mech
 
     def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:
@@ -356,14 +393,24 @@ class _Parser:
         if not isinstance(items, list) or not items:
             raise self.fail("drive", "expected [drive] or [[drive]] tables")
         multi = not isinstance(raw, Mapping)
-        out = []
-        seen = set()
+        out: list[Drive] = []
+        seen: set[str] = set()
         for i, d in enumerate(items):
             key = f"drive[{i}]" if multi else "drive"
             d = self.table(d, key)
+            if "point" in d:
+                out += self.point_drive(d, key, len(out), seen)
+                continue
+            for bad in ("x", "y", "vx", "vy", "ax", "ay"):
+                if bad in d:
+                    raise self.fail(f"{key}.{bad}", "a coordinate drive names its point: "
+                                    "point = \"C\"")
             lid = self.link_id(d.get("link"), f"{key}.link")
             if lid == FRAME:
                 raise self.fail(f"{key}.link", "the frame cannot be driven")
+            if "relative_to" in d:
+                out.append(self.relative_drive(d, key, lid, len(out), seen))
+                continue
             if lid in seen:
                 raise self.fail(f"{key}.link", f"link {lid} is driven twice")
             seen.add(lid)
@@ -374,14 +421,17 @@ class _Parser:
                 pivot = next((p.name for p in pins if lid in p.links and FRAME in p.links), None)
                 if pivot is None:
                     raise self.fail(f"{key}.link", f"link {lid} is not pinned to the frame, "
-                                    "so its angle cannot drive it (drive a slider by position)")
+                                    "so its absolute angle cannot drive it (drive a slider by "
+                                    "position, or give the angle relative_to the link it is "
+                                    "pinned to)")
                 value = math.radians(self.rate(d["angle"], "angle", f"{key}.angle"))
                 rate = self.rate(d["omega"], "omega", f"{key}.omega") if "omega" in d else None
                 rate2 = self.rate(d["alpha"], "alpha", f"{key}.alpha") if "alpha" in d else None
                 for bad in ("velocity", "acceleration"):
                     if bad in d:
                         raise self.fail(f"{key}.{bad}", "a revolute drive takes omega and alpha")
-                out.append(Drive(i, lid, "angle", value, rate, rate2, pivot=pivot, key=key))
+                out.append(Drive(len(out), lid, "angle", value, rate, rate2, pivot=pivot,
+                                 key=key))
             else:
                 slider = next((s for s in sliders if s.link == lid), None)
                 if slider is None:
@@ -396,10 +446,86 @@ class _Parser:
                     if bad in d:
                         raise self.fail(f"{key}.{bad}",
                                         "a slider drive takes velocity and acceleration")
-                out.append(Drive(i, lid, "position", value, rate, rate2, slider=slider, key=key))
+                out.append(Drive(len(out), lid, "position", value, rate, rate2, slider=slider,
+                                 key=key))
         has = [d.rate is not None for d in out]
         if any(has) and not all(has):
             raise self.fail("drive", "give the rate of every drive or of none")
+        return out
+
+    def relative_drive(self, d: Mapping[str, Any], key: str, lid: str, index: int,
+                       seen: set[str]) -> Drive:
+        """``link = 3, relative_to = 2, angle = -15``: the joint angle θ3/2 = θ3 − θ2 (P5.7)."""
+        rel = self.link_id(d.get("relative_to"), f"{key}.relative_to")
+        if rel == FRAME:
+            raise self.fail(f"{key}.relative_to", "an angle relative to the frame is the "
+                            "absolute angle: leave out relative_to")
+        if rel == lid:
+            raise self.fail(f"{key}.relative_to", f"link {lid} cannot be driven relative to "
+                            "itself")
+        for bad in ("position", "velocity", "acceleration"):
+            if bad in d:
+                raise self.fail(f"{key}.{bad}", "a relative drive gives the angle between two "
+                                "links: angle, omega and alpha")
+        if "angle" not in d:
+            raise self.fail(f"{key}.angle", f"a drive relative to link {rel} needs its angle "
+                            f"θ{lid}/{rel}")
+        pair = f"{lid}/{rel}"
+        if pair in seen or f"{rel}/{lid}" in seen:
+            raise self.fail(f"{key}.relative_to", f"the angle between links {lid} and {rel} is "
+                            "driven twice")
+        seen.add(pair)
+        value = math.radians(self.rate(d["angle"], "angle", f"{key}.angle"))
+        rate = self.rate(d["omega"], "omega", f"{key}.omega") if "omega" in d else None
+        rate2 = self.rate(d["alpha"], "alpha", f"{key}.alpha") if "alpha" in d else None
+        return Drive(index, lid, "relative", value, rate, rate2, key=key, relative_to=rel)
+
+    def point_drive(self, d: Mapping[str, Any], key: str, index: int,
+                    seen: set[str]) -> list[Drive]:
+        """``point = "C", x = 300, y = 100``: a point's coordinates in the frame (P5.13)."""
+        name = d["point"]
+        if not isinstance(name, str):
+            raise self.fail(f"{key}.point", f"a point is named by a string, not {name!r}")
+        owners = [lid for lid, lk in self.links.items() if name in lk.points]
+        if not owners:
+            raise self.fail(f"{key}.point", f"no link has a point {_short(name)!r}")
+        moving = [lid for lid in owners if lid != FRAME]
+        if FRAME in owners or not moving:
+            raise self.fail(f"{key}.point", f"point {name} is fixed in the frame: its "
+                            "coordinates cannot drive the mechanism")
+        if "link" in d:
+            lid = self.link_id(d.get("link"), f"{key}.link")
+            if lid not in moving:
+                raise self.fail(f"{key}.link", f"link {lid} has no point {name!r} "
+                                f"(it is on link {', '.join(moving)})")
+        else:
+            lid = moving[0]
+        for bad in ("angle", "position", "omega", "alpha", "velocity", "acceleration",
+                    "relative_to"):
+            if bad in d:
+                raise self.fail(f"{key}.{bad}", "a coordinate drive gives x and/or y of its "
+                                "point, with vx, vy, ax, ay")
+        if "x" not in d and "y" not in d:
+            raise self.fail(key, f"a drive of point {name} gives its x and/or y")
+        out: list[Drive] = []
+        for axis in ("x", "y"):
+            for rate_key in (f"v{axis}", f"a{axis}"):
+                if rate_key in d and axis not in d:
+                    raise self.fail(f"{key}.{rate_key}", f"{rate_key} is the rate of {axis}, "
+                                    f"which this drive does not give")
+            if axis not in d:
+                continue
+            what = f"{axis}_{name}"
+            if what in seen:
+                raise self.fail(f"{key}.{axis}", f"{axis} of point {name} is driven twice")
+            seen.add(what)
+            value = self.rate(d[axis], "length", f"{key}.{axis}")
+            rate = self.rate(d[f"v{axis}"], "velocity", f"{key}.v{axis}") \
+                if f"v{axis}" in d else None
+            rate2 = self.rate(d[f"a{axis}"], "acceleration", f"{key}.a{axis}") \
+                if f"a{axis}" in d else None
+            out.append(Drive(index + len(out), lid, axis, value, rate, rate2, key=key,
+                             point=name))
         return out
 
     def rates_table(self, sliders: list[Slider]) -> Rates | None:
@@ -431,6 +557,54 @@ class _Parser:
                                                ("omega", "alpha", "velocity", "acceleration")):
             raise self.fail("rates", "rates are given twice: in [drive] and in [rates]")
         return Rates(lid, kind, rate, rate2)
+
+    def check_range(self, mech: Mechanism) -> None:
+        """Refuse a mechanism whose lengths span more than :data:`MAX_RANGE` (one line).
+
+        Lengths are compared to a tolerance relative to the mechanism's size
+        (1e-9 of it): when one link reaches 1e14 while another is 4 long, the
+        short one is below that tolerance and every construction, and the
+        analytic solver's Jacobian, would see it as a point.  The message names
+        the farthest point and the shortest distance instead of calling the
+        posture singular.
+        """
+        far: tuple[float, str, str, str] = (0.0, "", "", "")
+        short: tuple[float, str, str, str] = (math.inf, "", "", "")
+        shapes = {lid: [(n, p) for n, p in link.points.items() if n not in mech.helper_points]
+                  for lid, link in mech.links.items()}
+        extents = sorted(math.hypot(max(p[0] for _, p in pts) - min(p[0] for _, p in pts),
+                                    max(p[1] for _, p in pts) - min(p[1] for _, p in pts))
+                         for pts in shapes.values() if len(pts) > 1)
+        if not extents:
+            return
+        # points nearer than the tolerance of a typical link are one point to the solver
+        # (two pivots at 1e-282 from each other): not a length
+        floor = 1e-9 * extents[len(extents) // 2]
+        for lid, pts in shapes.items():
+            if len(pts) < 2:
+                continue
+            # the point of the link farthest from its first point, and the nearest pair
+            n0, p0 = pts[0]
+            for n, p in pts[1:]:
+                d = math.hypot(p[0] - p0[0], p[1] - p0[1])
+                if d > far[0]:
+                    far = (d, lid, n, n0)
+            for a in range(len(pts)):
+                for b in range(a + 1, len(pts)):
+                    (na, pa), (nb, pb) = pts[a], pts[b]
+                    d = math.hypot(pa[0] - pb[0], pa[1] - pb[1])
+                    if floor < d < short[0]:
+                        short = (d, lid, na, nb)
+                if len(pts) > 60:  # a long list of points: its first point's distances
+                    break
+        if short[0] == math.inf or far[0] <= MAX_RANGE * short[0]:
+            return
+        d, lid, n, n0 = far
+        raise self.fail(f"links.{lid}.{n}", f"point {n} of link {lid} lies {d:.3g} from {n0}, "
+                        f"{d / short[0]:.2g} times the shortest length of the mechanism "
+                        f"({short[2]}{short[3]} of link {short[1]}, {short[0]:.3g}): lengths are "
+                        "compared to 1e-9 of the mechanism's size, so a range beyond "
+                        f"{MAX_RANGE:.0e} cannot be solved; bring {n} nearer".replace("e+0", "e"))
 
     def check_mobility(self, mech: Mechanism) -> None:
         m = mech.mobility()

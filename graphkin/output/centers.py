@@ -63,6 +63,8 @@ def instant_centers_json(sol: Solution, units: OutputUnits | None = None
     if is_batch(sol):
         return None
     k = 1.0 if units is None else units.k_length
+    if _large(sol):
+        return _direct_json(sol, k)
     ic = instant_centers(sol)
     out: dict[str, Any] = {}
     for c in sorted(ic.centers.values(), key=lambda c: (_id_key(c.pair[0]), _id_key(c.pair[1]))):
@@ -102,8 +104,10 @@ def instant_centers_text(sol: Solution, units: OutputUnits | None = None) -> str
     if is_batch(sol):
         return None
     k = 1.0 if units is None else units.k_length
-    ic = instant_centers(sol)
     unit = sol.mechanism.length_unit if units is None else units.text("length")
+    if _large(sol):
+        return _direct_text(sol, k, unit)
+    ic = instant_centers(sol)
     n, count = len(ic.links), ic.count
     lines = [f"  n = {n} links, N = n(n-1)/2 = {count} instant "
              f"center{'s' if count != 1 else ''} (Eq. 3.20)"]
@@ -128,5 +132,62 @@ def instant_centers_text(sol: Solution, units: OutputUnits | None = None) -> str
     for p in ic.missing:
         lines.append(f"  {center_label(*p)}: not found")
     for note in ic.notes:
+        lines.append(f"  note: {note}")
+    return "\n".join(lines)
+
+
+# ---- a large mechanism: every center at once (graphkin.kinematics.instant_centers.direct) ----
+
+def _large(sol: Solution) -> bool:
+    """More centers than the step-by-step Kennedy search is meant for."""
+    from graphkin.kinematics.instant_centers.direct import DIRECT_ABOVE
+
+    n = len(sol.mechanism.links)
+    return n * (n - 1) // 2 > DIRECT_ABOVE
+
+
+def _direct_json(sol: Solution, k: float) -> dict[str, Any]:
+    """Every pair found at once: ``position`` or ``direction``, and ``how``."""
+    from graphkin.kinematics.instant_centers.direct import direct_centers
+
+    dc = direct_centers(sol)
+    out: dict[str, Any] = {}
+    ia, ib = dc.pairs
+    pts = dc.points
+    finite = np.all(np.isfinite(pts), axis=1)
+    primary, by_velocities = How.PRIMARY.value, How.VELOCITIES.value
+    xs, ys, ws = (pts[:, 0] * k + 0.0).tolist(), (pts[:, 1] * k + 0.0).tolist(), \
+        pts[:, 2].tolist()
+    la, lb = ia.tolist(), ib.tolist()
+    links = dc.links
+    for m in np.flatnonzero(finite).tolist():
+        i, j = links[la[m]], links[lb[m]]
+        entry: dict[str, Any] = (
+            {"position": [xs[m], ys[m]]} if ws[m] != 0.0
+            else {"direction": _canonical(pts[m, :2])})
+        entry["how"] = primary if m in dc.primary else by_velocities
+        out[f"{i}-{j}"] = entry
+    return out
+
+
+def _direct_text(sol: Solution, k: float, unit: str) -> str:
+    """The count, the centers at the pins, and where the others are listed."""
+    from graphkin.kinematics.instant_centers.direct import direct_centers
+
+    dc = direct_centers(sol)
+    n, count = len(dc.links), dc.count
+    lines = [f"  n = {n} links, N = n(n-1)/2 = {count} instant centers (Eq. 3.20)"]
+    rows = [("center", "found by", "location")]
+    ia, ib = dc.pairs
+    for m, pin in dc.primary.items():
+        x, y = float(dc.points[m, 0]) * k + 0.0, float(dc.points[m, 1]) * k + 0.0
+        rows.append((center_label(dc.links[ia[m]], dc.links[ib[m]]), f"pin {pin}",
+                     f"({g6(x)}, {g6(y)}) {unit}"))
+    lines += table(rows, "  ")
+    known = int(np.sum(np.all(np.isfinite(dc.points), axis=1)))
+    lines.append(f"  the other {known - len(dc.primary)} centers are found at once from the "
+                 "velocities (the points of equal velocity, Sec. 3.12) and listed by "
+                 "graphkin solve --json; too many to list here")
+    for note in dc.notes:
         lines.append(f"  note: {note}")
     return "\n".join(lines)

@@ -51,6 +51,8 @@ def _load(name: str) -> Callable[..., Any]:
 
 
 SECTIONS: tuple[Section, ...] = (
+    Section("joint_angles", "Joint angles", "graphkin.output.joints:joint_angles_json",
+            "graphkin.output.joints:joint_angles_text"),
     Section("instant_centers", "Instant centers", "graphkin.output.centers:instant_centers_json",
             "graphkin.output.centers:instant_centers_text"),
     Section("curvature", "Curvature", "graphkin.output.curvature:curvature_json",

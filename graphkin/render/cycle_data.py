@@ -200,13 +200,13 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
         "rates": bool(rated), "q": {"L": qL},
     }
     d = sw.drive
-    if d.kind == "angle":
-        data["drive"] = {"label": f"θ{d.link}", "unit": "°",
+    if d.is_angle:
+        data["drive"] = {"label": d.label, "unit": "°",
                          "values": [round(float(v), 6) for v in sw.drive_values]}
     else:
-        data["drive"] = {"label": f"s{d.link}", "unit": mech.length_unit,
+        data["drive"] = {"label": d.label, "unit": mech.length_unit,
                          "values": [round(float(v), 6) for v in sw.drive_values]}
-    held = [f"θ{x.link}" if x.kind == "angle" else f"s{x.link}" for x in mech.drives[1:]]
+    held = [x.label for x in mech.drives[1:]]
     data["held"] = (f"{data['drive']['label']} is swept; {', '.join(held)} held at the file's "
                     "value (its rate applies throughout)") if held else ""
     data["valid"] = "".join("1" if v else "0" for v in np.asarray(sw.assembled).tolist())

@@ -641,6 +641,9 @@ class StepPainter:
             return
         value = float(v)
         sym, lid = label[:1], label[1:]
+        if sym == "θ" and step.op == "input" and "/" in lid:
+            self.joint_arc(g, panel, lid, value, label)
+            return
         if sym in ("ω", "α"):
             rates = [abs(float(self.values[f"{sym}{x}"])) for x in mech.links
                      if f"{sym}{x}" in self.values
@@ -702,6 +705,36 @@ class StepPainter:
         self.label(panel, g, f"θ{sub_digits('x' + lid)[1:]} = {fmt(math.degrees(theta), 5)}°",
                    mid, label, style="label-small", gap=0.04,
                    prefer=(math.cos(t / 2), math.sin(t / 2)))
+
+
+    def joint_arc(self, g: Group, panel: Panel, pair: str, theta: float, label: str) -> None:
+        """A joint angle θi/j (a robot's elbow, P5.7): an arc at their pin from link j's axis."""
+        mech, sol = self.src.mechanism, self.src.solution
+        assert mech is not None and sol is not None
+        i, _, j = pair.partition("/")
+        pin = next((p.name for p in mech.pins if i in p.links and j in p.links), None)
+        if pin is None or j not in sol.links:
+            return
+        pivot = np.asarray(sol.position(pin), dtype=float)
+        base = float(sol.links[j].angle)
+        k = panel.k
+        r = 0.32 * k
+        d = np.array([math.cos(base), math.sin(base)])
+        g.items.append(Item("path", np.array([pivot, pivot + 0.5 * k * d]), "datum",
+                            key=f"{label}:datum"))
+        t = math.remainder(theta, 2 * math.pi)
+        ts = base + np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3), 2) + 1)
+        pts = pivot + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
+        g.items.append(Item("path", pts, "angle-arc", key=label))
+        if len(pts) >= 3:
+            head = min(0.07 * k, 0.5 * r * abs(t))
+            g.items.append(Item("arrow", np.array([pts[-3], pts[-1]]), "angle-arc",
+                                key=f"{label}:head", head=head, width=head * 0.35))
+        mid = base + t / 2
+        at = pivot + (r + 0.02 * k) * np.array([math.cos(mid), math.sin(mid)])
+        text = f"θ{sub_digits('x' + i)[1:]}/{sub_digits('x' + j)[1:]} = {fmt(math.degrees(t), 5)}°"
+        self.label(panel, g, text, at, label, style="label-small", gap=0.04,
+                   prefer=(math.cos(mid), math.sin(mid)))
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:

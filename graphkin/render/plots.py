@@ -92,9 +92,9 @@ def parse_what(text: str | Sequence[str]) -> list[tuple[str, str | None]]:
 
 def _drive_label(sw: Sweep) -> str:
     d = sw.drive
-    if d.kind == "angle":
-        return f"θ{d.link} (drive), °"
-    return f"s{d.link} (drive), {sw.mechanism.length_unit}"
+    if d.is_angle:
+        return f"{d.label} (drive), °"
+    return f"{d.label} (drive), {sw.mechanism.length_unit}"
 
 
 def _segments(valid: np.ndarray) -> list[slice]:
@@ -526,7 +526,7 @@ def _curvature_marks(ax: Any, sw: Sweep, name: str, k: int) -> None:
 
     mech, d = sw.mechanism, sw.mechanism.drives[0]
     at = float(cols["drive"][k])
-    moved = dataclasses.replace(d, value=np.radians(at) if d.kind == "angle" else at)
+    moved = dataclasses.replace(d, value=np.radians(at) if d.is_angle else at)
     try:
         sol = dataclasses.replace(mech, drives=(moved, *mech.drives[1:])).solve()
         ball = link_curvature(sol, lid).ball_point

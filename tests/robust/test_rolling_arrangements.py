@@ -149,3 +149,107 @@ def test_random_planets_on_driven_suns(order: str, extra: bool, sun: float, plan
                                        angle: float, w_arm: float, w_sun: float,
                                        a_arm: float) -> None:
     compare(planet(order, extra, sun, planet_r, "outside", angle, w_arm, w_sun, a_arm))
+
+
+@settings(max_examples=25, deadline=None)
+@given(extra=st.booleans(), ring=st.floats(30, 80), fraction=st.floats(0.1, 0.8),
+       angle=st.floats(0, 360), w_arm=st.floats(-20, 20), w_ring=st.floats(-20, 20),
+       a_arm=st.floats(-20, 20))
+def test_random_planets_inside_driven_rings(extra: bool, ring: float, fraction: float,
+                                            angle: float, w_arm: float, w_ring: float,
+                                            a_arm: float) -> None:
+    # a circle rolling inside a circle (contact = "inside", the planet in a ring gear); the
+    # format states it with the smaller circle as the rolling one only (radius < on's)
+    compare(planet("planet on sun", extra, ring, fraction * ring, "inside", angle, w_arm,
+                   w_ring, a_arm))
+
+
+def test_planet_inside_a_ring_by_hand() -> None:
+    # ring radius 60 (link 4, at rest), planet radius 20 on an arm of 40 (ω2 = 10):
+    # V_P = 40·10 = 400; the contact point of the planet is at rest (it touches the resting
+    # ring 20 beyond P, away from O): 400 = ω3 · (−20)·(−1)... with R_PC = −20 along the arm,
+    # V_P = ω3 k × R_PC gives ω3 = −400/20 = −20 rad/s (cw), the classic −ω_arm(R−r)/r
+    sol = compare(planet("planet on sun", False, 60.0, 20.0, "inside", 0.0, 10.0, 0.0, 0.0))
+    assert math.isclose(float(sol.links["3"].omega), -20.0)
+
+
+def _floating(order: str, shape: str, extra: bool, wx: float, wy: float, radius: float,
+              phi: float, big: float, omega: float, alpha: float, arm: float) -> str:
+    """A four-bar (links 2-4) whose coupler 3 carries a surface; wheel 5 on the arm 6.
+
+    The wheel turns about W, the end of the arm 6 pivoted to the frame at O6; neither
+    the wheel nor the coupler is pinned to the frame.  Every point is written in
+    world coordinates of the posture drawn (each link's own axes along the frame's), so the
+    drawing is assembled at θ2 = 0 (the direction of link 2's own x axis) and the wheel at
+    its angle 0.  W, the wheel's center, is a point of the arm; the coupler's surface is
+    a line at distance `radius` from W (shape "line"), or a circle of radius `big` touching
+    the wheel from outside (shape "circle": link and on in either order).
+    """
+    a, b = (-2.0, 3.4641016), (14.8135832, 9.8908751)  # Example 3.1 at θ2 = 120°
+    d = (10.0, 0.0)
+    w = (d[0] + wx, d[1] + wy)
+    o6 = (w[0] + 5 * math.cos(math.radians(arm)), w[1] + 5 * math.sin(math.radians(arm)))
+    ux, uy = math.cos(math.radians(phi)), math.sin(math.radians(phi))
+    q = "\nQ{} = [{}, {}]"
+    if shape == "line":
+        l0 = (w[0] - uy * radius - 40 * ux, w[1] + ux * radius - 40 * uy)  # W on the right
+        l1 = (l0[0] + 80 * ux, l0[1] + 80 * uy)
+        surface = f"L0 = [{l0[0]}, {l0[1]}]\nL1 = [{l1[0]}, {l1[1]}]"
+        roll = (f'link = 5\non = 3\ncircle = {{ center = "W", radius = {radius} }}\n'
+                'line = ["L0", "L1"]\nside = "right"')
+    else:
+        c = (w[0] + (radius + big) * ux, w[1] + (radius + big) * uy)
+        surface = f"K = [{c[0]}, {c[1]}]"
+        if order == "wheel on coupler":
+            roll = (f'link = 5\non = 3\ncircle = {{ center = "W", radius = {radius} }}\n'
+                    f'on_circle = {{ center = "K", radius = {big} }}\ncontact = "outside"')
+        else:
+            roll = (f'link = 3\non = 5\ncircle = {{ center = "K", radius = {big} }}\n'
+                    f'on_circle = {{ center = "W", radius = {radius} }}\ncontact = "outside"')
+    return f"""
+[links.1]
+O2 = [0, 0]
+D = [{d[0]}, {d[1]}]
+O6 = [{o6[0]}, {o6[1]}]
+[links.2]
+O2 = [0, 0]
+A = [{a[0]}, {a[1]}]{q.format(2, a[0] / 2, a[1] / 2 + 1) if extra else ''}
+[links.3]
+A = [{a[0]}, {a[1]}]
+B = [{b[0]}, {b[1]}]
+{surface}{q.format(3, 5, 9) if extra else ''}
+[links.4]
+D = [{d[0]}, {d[1]}]
+B = [{b[0]}, {b[1]}]{q.format(4, 12, 3) if extra else ''}
+[links.6]
+O6 = [{o6[0]}, {o6[1]}]
+W = [{w[0]}, {w[1]}]{q.format(6, o6[0] + 1, o6[1]) if extra else ''}
+[links.5]
+W = [{w[0]}, {w[1]}]{q.format(5, w[0] + radius / 2, w[1]) if extra else ''}
+[[rolling]]
+{roll}
+[drive]
+link = 2
+angle = 0
+omega = {omega}
+alpha = {alpha}
+[assembly]
+B = [{b[0]}, {b[1]}]
+"""
+
+
+@settings(max_examples=30, deadline=None)
+@given(order=st.sampled_from(["wheel on coupler", "coupler on wheel"]),
+       shape=st.sampled_from(["line", "circle"]), extra=st.booleans(),
+       wx=st.floats(-3, 8), wy=st.floats(1, 9), radius=st.floats(1, 4),
+       phi=st.floats(0, 360), big=st.floats(2, 12), omega=st.floats(-20, 20),
+       alpha=st.floats(-20, 20), arm=st.floats(0, 360))
+def test_random_floating_rolling_contacts(order: str, shape: str, extra: bool, wx: float,
+                                          wy: float, radius: float, phi: float, big: float,
+                                          omega: float, alpha: float, arm: float) -> None:
+    text = _floating(order, shape, extra, wx, wy, radius, phi, big, omega, alpha, arm)
+    try:
+        compare(text)
+    except graphkin.GraphkinError as exc:
+        # the contact normal through a pivot of the wheel's motion: ω5 undetermined there
+        assert "singular" in str(exc) or "coincide" in str(exc), exc

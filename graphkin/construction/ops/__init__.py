@@ -14,7 +14,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (cases 1-4), 3.4-3.5 and 4.2-4.3
 from __future__ import annotations
 
 # the operations and kernels register themselves on import
-from graphkin.construction.ops import compass, kernels, points, polygons  # noqa: F401
+from graphkin.construction.ops import compass, drives, kernels, points, polygons  # noqa: F401
 from graphkin.construction.ops.registry import OPS, OUTPUT_KIND, op
 
 # the compiled kernels' machinery, importable from here as before the split

@@ -359,6 +359,9 @@ def _assembly_error(eqs: _System, values: np.ndarray, q: np.ndarray) -> Assembly
 
 
 def _drive_text(d: Drive, v: float) -> str:
+    if d.kind in ("relative", "x", "y"):
+        return d.describe() if v == d.value else f"{d.label} = " + (
+            f"{math.degrees(v):.6g}°" if d.is_angle else f"{v:.6g}")
     if d.kind == "angle":
         return f"link {d.link} angle {math.degrees(v):.6g}°"
     return f"link {d.link} position {v:.6g}"

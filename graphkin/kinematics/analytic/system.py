@@ -107,6 +107,17 @@ class _System:
         k = self.index[d.link]
         if d.kind == "angle":
             return _Angle(k, _F, 0.0, f"{d.key} (angle of link {d.link})")
+        if d.kind == "relative":
+            assert d.relative_to is not None
+            return _Angle(k, self.index[d.relative_to], 0.0,
+                          f"{d.key} (angle of link {d.link} relative to link {d.relative_to})")
+        if d.kind in ("x", "y"):
+            # f = v·(P − O): the coordinate of the point, with v the frame's x or y axis
+            assert d.point is not None
+            p = self.mech.links[d.link].points[d.point]
+            axis = (1.0, 0.0) if d.kind == "x" else (0.0, 1.0)
+            return _OnLine(k, p, _F, (0.0, 0.0), axis,
+                           f"{d.key} ({d.kind} of point {d.point})")
         sl = d.slider
         assert sl is not None
         u, _ = _unit(sl.p0, sl.p1)

@@ -177,12 +177,17 @@ def _section_name(fn: Any) -> str:
 
 def _figure_size(sol: Solution) -> float:
     """The size of the drawing: the largest distance between two named points."""
+    got = sol.__dict__.get("_figure_size")  # the same for every link: found once
+    if got is not None:
+        return float(got)
     pts = np.array([sol.position(n) for n in sol.mechanism.point_names], dtype=float)
     if len(pts) < 2:
         return float(sol.mechanism.scale)
     ext = pts.max(axis=0) - pts.min(axis=0)
     size = float(np.hypot(*ext))
-    return size if size > 0.0 else float(sol.mechanism.scale)
+    size = size if size > 0.0 else float(sol.mechanism.scale)
+    sol.__dict__["_figure_size"] = size
+    return size
 
 
 class _CurvatureBase(_Build):

@@ -150,8 +150,13 @@ def _turning(sol: Solution, lid: str, tol: Tolerance) -> bool:
     if w == 0.0:
         return False
     mech = sol.mechanism
-    speeds = [float(np.hypot(*sol.velocity(n))) for n in mech.point_names]
-    ref = max(speeds + [abs(float(s.omega or 0.0)) * mech.scale for s in sol.links.values()])
+    # the largest speed of the posture: the same for every link, so found once per solution
+    ref = sol.__dict__.get("_largest_speed")
+    if ref is None:
+        speeds = [float(np.hypot(*sol.velocity(n))) for n in mech.point_names]
+        ref = max(speeds + [abs(float(s.omega or 0.0)) * mech.scale
+                            for s in sol.links.values()])
+        sol.__dict__["_largest_speed"] = ref
     return w * mech.scale > tol.angle * max(ref, 1e-300)
 
 

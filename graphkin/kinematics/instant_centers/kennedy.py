@@ -41,6 +41,11 @@ Array = np.ndarray
 _WELL_CONDITIONED = 1e-6
 
 
+#: At most this many lines of centers are offered to :meth:`_Kennedy.best_meet` for one
+#: center (the best-conditioned ones): a mechanism of up to 10 links never has more.
+_MOST_LINES = 8
+
+
 def _perp(v: Array) -> Array:
     return np.stack([-v[..., 1], v[..., 0]], axis=-1)
 
@@ -54,9 +59,26 @@ class _Kennedy(_PrimaryCenters):
 
     # ---- Kennedy --------------------------------------------------------
     def triangles(self, pair: Pair) -> list[str]:
+        """The links k (in order) whose centers with both links of ``pair`` are known."""
+        adj = self.adjacency()
         i, j = pair
-        return [k for k in self.links if k not in pair
-                and pair_key(i, k) in self.centers and pair_key(j, k) in self.centers]
+        common = adj[i] & adj[j]
+        if not common:
+            return []
+        order = self.__dict__.setdefault("_order", {k: n for n, k in enumerate(self.links)})
+        return sorted(common - {i, j}, key=order.__getitem__)
+
+    def adjacency(self) -> dict[str, set[str]]:
+        """Link -> the links whose center with it is known (kept up to date as centers come)."""
+        adj: dict[str, set[str]] = self.__dict__.setdefault(
+            "_adjacency", {k: set() for k in self.links})
+        seen = self.__dict__.get("_adjacency_seen", 0)
+        if seen != len(self.centers):
+            for a, b in list(self.centers)[seen:]:
+                adj[a].add(b)
+                adj[b].add(a)
+            self.__dict__["_adjacency_seen"] = len(self.centers)
+        return adj
 
     def every(self, flags: Array) -> bool:
         """True when ``flags`` holds at every posture that could be assembled."""
@@ -74,6 +96,13 @@ class _Kennedy(_PrimaryCenters):
 
     def tri_line(self, pair: Pair, k: str) -> tuple[str, str, str]:
         """The two centers of triangle (i, j, k) that carry Iij, lower label first."""
+        cache = self.__dict__.setdefault("_tri_lines", {})
+        got = cache.get((pair, k))
+        if got is None:
+            got = cache[(pair, k)] = self._tri_line(pair, k)
+        return got  # type: ignore[no-any-return]
+
+    def _tri_line(self, pair: Pair, k: str) -> tuple[str, str, str]:
         a, b = sorted([pair_key(pair[0], k), pair_key(pair[1], k)],
                       key=lambda p: (_id_key(p[0]), _id_key(p[1])))
         la, lb = center_label(*a), center_label(*b)
@@ -161,12 +190,12 @@ class _Kennedy(_PrimaryCenters):
     def try_pair(self, pair: Pair, enough: float) -> bool:
         """Find ``Iij`` by Kennedy's theorem if two lines of centers meet well enough.
 
-        A pair that failed is not tried again until a center of one of its
-        two links is found (only that changes its lines of centers).
+        A pair that failed is not tried again until it has a new triangle (a
+        link k whose centers with both links are known): only that changes
+        its lines of centers.
         """
-        stamp = self.__dict__.setdefault("_stamp", {})
         failed = self.__dict__.setdefault("_failed_at", {})
-        now = (stamp.get(pair[0], 0), stamp.get(pair[1], 0))
+        now = len(self.triangles(pair))
         if failed.get((pair, enough)) == now:
             return False
         if self._try_pair(pair, enough):
@@ -174,34 +203,65 @@ class _Kennedy(_PrimaryCenters):
         failed[(pair, enough)] = now
         return False
 
+    def every_of(self, flags: Array) -> Array:
+        """:meth:`every` of each row of ``flags`` (shape ``(m, *postures)``) at once."""
+        m = flags.shape[0]
+        valid = np.broadcast_to(self.valid, flags.shape[1:])
+        return np.all(np.where(valid, flags, True).reshape(m, -1), axis=1)
+
     def _try_pair(self, pair: Pair, enough: float) -> bool:
         i, j = pair
         lab = center_label(*pair)
         tris = self.triangles(pair)
-        for k in tris:
-            la, lb, _ = self.tri_line(pair, k)
-            if self.same(self.env[la], self.env[lb]):
-                note = (f"{lab} coincides with {la} and {lb}: where links {i}, {j} and {k} all "
-                        "have the same velocity (Kennedy).")
-                self.add("same_point", (la, lb), lab, role=Role.RESULT, note=note)
-                self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la, lb),
-                           triangles=(_triangle(i, j, k),))
-                return True
+        # the lines of centers of every triangle at once: one numpy call for all of them
+        # (the centers are joined, compared and rated row by row, as one at a time would)
+        names = [self.tri_line(pair, k) for k in tris]
+        if tris:
+            P, Q = (_stack([self.env[t[c]] for t in names]) for c in (0, 1))
+            if P.shape[1:] != Q.shape[1:]:
+                shape = np.broadcast_shapes(P.shape[1:], Q.shape[1:])
+                P = np.broadcast_to(P, (len(names), *shape))
+                Q = np.broadcast_to(Q, (len(names), *shape))
+            pi, qi = g.is_ideal(P), g.is_ideal(Q)
+            both_ideal = self.every_of(pi) & self.every_of(qi)
+            finite = self.every_of(~pi) & self.every_of(~qi)
+            with np.errstate(invalid="ignore"):
+                same_ideal = self.every_of(np.abs(g.cross2(P, Q)) <= self.tol.angle)
+                same_finite = self.every_of(g.distance(P, Q) <= self.tol.length(self.mech.scale))
+            same = np.where(both_ideal, same_ideal, finite & same_finite)
+            for n, k in enumerate(tris):
+                if same[n]:
+                    la, lb, _ = names[n]
+                    note = (f"{lab} coincides with {la} and {lb}: where links {i}, {j} and {k} "
+                            "all have the same velocity (Kennedy).")
+                    self.add("same_point", (la, lb), lab, role=Role.RESULT, note=note)
+                    self.found(pair, How.KENNEDY, "Kennedy", note, lines=(la, lb),
+                               triangles=(_triangle(i, j, k),))
+                    return True
+            with np.errstate(invalid="ignore", divide="ignore"):
+                lines = g.join(P, Q, self.tol)
+                cr = np.linalg.norm(np.cross(self.point_hat(P), self.point_hat(Q)), axis=-1)
+            usable = self.every_of(np.all(np.isfinite(lines), axis=-1))
+            cr = np.where(np.isfinite(cr), cr, 0.0)
+            valid = np.broadcast_to(self.valid, cr.shape[1:])
+            quality = (np.min(np.where(valid, cr, np.inf).reshape(len(tris), -1), axis=1)
+                       if valid.any() else np.zeros(len(tris)))
         # (kind, ref, line, quality of the line)
         opts: list[tuple[str, str, Array, float]] = []
         for name, _src in self.normals.get(pair, []):
             opts.append(("normal", name, self.env[name], 1.0))
         parallel_to: list[str] = []
-        for k in tris:
-            la, lb, name = self.tri_line(pair, k)
-            p, q = self.env[la], self.env[lb]
-            if self.every(g.is_ideal(p)) and self.every(g.is_ideal(q)):
+        for n, k in enumerate(tris):
+            if both_ideal[n]:
                 parallel_to.append(k)
                 continue
-            with np.errstate(invalid="ignore", divide="ignore"):
-                line = g.join(p, q, self.tol)
-            if self.ok(line):
-                opts.append(("tri", k, line, self.quality(self.point_hat(p), self.point_hat(q))))
+            if usable[n]:
+                opts.append(("tri", k, lines[n], float(quality[n])))
+        if len(opts) > _MOST_LINES:
+            # a large mechanism: the best-conditioned lines of centers are enough to choose
+            # from (every pair of them is tried, so the work would grow with their square)
+            keep = sorted(range(len(opts)), key=lambda n: -opts[n][3])[:_MOST_LINES]
+            opts = [opts[n] for n in sorted(keep)]
         best = self.best_meet(opts, enough)
         if best is not None:
             a, b = opts[best[1]], opts[best[2]]
@@ -327,6 +387,16 @@ class _Kennedy(_PrimaryCenters):
                                   "here, or their lines of centers coincide)")
         return InstantCenters(self.sol, self.links, self.centers, self.cx, self.env, missing,
                               self.notes)
+
+
+def _stack(arrays: list[Array]) -> Array:
+    """Points (or lines) of one shape stacked on a new first axis; else broadcast first."""
+    arrs = [np.asarray(a, dtype=float) for a in arrays]
+    shape = arrs[0].shape
+    if all(a.shape == shape for a in arrs):
+        return np.array(arrs)
+    shape = np.broadcast_shapes(*(a.shape for a in arrs))
+    return np.stack([np.broadcast_to(a, shape) for a in arrs])
 
 
 def _world_origin_velocity(sol: Solution, lid: str) -> tuple[Array, Array]:

@@ -87,7 +87,7 @@ def _columns(eng: _Engine, blk: _Block) -> dict[str, Array]:
     n = len(dv)
     cols: dict[str, Array] = {}
     cols["drive"] = blk.user if blk.user is not None else (
-        np.degrees(dv) if eng.drive.kind == "angle" else np.array(dv, dtype=float))
+        np.degrees(dv) if eng.drive.is_angle else np.array(dv, dtype=float))
     if blk.analytic is not None:
         return _columns_of_solution(mech, blk.analytic, cols, n, mech.has_rates)
     if eng.recipe is False:

@@ -41,14 +41,14 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
     """
     a, b, cyclic = _drive_range(eng, start, stop)
     user = a + (b - a) * (np.arange(count, dtype=float) / count)
-    return user, (np.radians(user) if eng.drive.kind == "angle" else user), cyclic
+    return user, (np.radians(user) if eng.drive.is_angle else user), cyclic
 
 
 def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple[float, float,
                                                                                  bool]:
     """Start and stop as the user writes them (degrees or travel), and whether it is one turn."""
     d = eng.drive
-    if d.kind == "angle":
+    if d.is_angle:
         # the file's angle as written (degrees), free of the round trip through radians
         a = round(math.degrees(d.value), 10) if start is None else float(start)
         b = a + 360.0 if stop is None else float(stop)

@@ -63,7 +63,7 @@ class _Engine:
             self.reason = str(exc)
             return
         d = self.drive
-        self.label = f"θ{d.link}" if d.kind == "angle" else f"s{d.link}"
+        self.label = d.label
         if self.label not in self.pc.inputs:  # pragma: no cover - the builder names them so
             raise GraphkinError(f"the posture construction has no input {self.label!r}")
         self.held = {k: v for k, v in self.pc.inputs.items() if k != self.label}
@@ -94,7 +94,7 @@ class _Engine:
             return build_posture(mech, tol)
         except AssemblyError:
             d = self.drive
-            if d.kind != "angle":
+            if not d.is_angle:
                 raise
             for k in range(1, 360):
                 moved = dataclasses.replace(d, value=d.value + math.radians(k))

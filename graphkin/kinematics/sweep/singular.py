@@ -66,13 +66,13 @@ class SingularPosture:
 
 
 def _fmt(eng: _Engine, v: float) -> str:
-    if eng.drive.kind == "angle":
+    if eng.drive.is_angle:
         return f"{v:.2f}°"
     return f"{v:.4g}"
 
 
 def _to_user(eng: _Engine, x: float) -> float:
-    return math.degrees(x) if eng.drive.kind == "angle" else float(x)
+    return math.degrees(x) if eng.drive.is_angle else float(x)
 
 
 def _runs(mask: Array) -> list[tuple[int, int]]:

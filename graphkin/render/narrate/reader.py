@@ -70,10 +70,7 @@ class _Reader:
         self.given_rates = set()
         if self.mech is not None:
             for d in self.mech.drives:
-                if d.kind == "angle":
-                    self.given_rates |= {f"ω{d.link}", f"α{d.link}"}
-                else:
-                    self.given_rates |= {f"ds{d.link}", f"dds{d.link}"}
+                self.given_rates |= set(d.rate_labels)
         self.given_rates |= {"ω1", "α1"}
 
     # ---- values ---------------------------------------------------------

@@ -1,0 +1,46 @@
+"""Operations for the inputs that are not a link's own angle or travel (Sec. 5.4, P5.7, P5.13).
+
+* ``add_angles``: the angle of a link laid off from another link's angle by
+  a joint angle, ``θ3 = θ2 + θ3/2`` (a robot's joint motor, Problems
+  5.7-5.11); the same sum holds for the rates, ``ω3 = ω2 + ω3/2`` and
+  ``α3 = α2 + α3/2``, in plane motion.
+* ``point_xy``: a point at given coordinates (the pantograph's tracing
+  point, Problem 5.13), or its velocity or acceleration image from the
+  given components, laid off from the pole.
+* ``coordinate_line``: the line ``x = s`` (or ``y = s``) on which a point
+  with one given coordinate lies; in a polygon, the line on which the
+  image of that point lies when one component of its velocity or
+  acceleration is given.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from graphkin.construction.ops.registry import op
+from graphkin.geometry import ops as g
+from graphkin.tolerance import Tolerance
+
+Array = np.ndarray
+
+
+@op("add_angles", kind="scalar")
+def _add_angles(a: Array, b: Array, *, tol: Tolerance, sign: float = 1.0) -> tuple[Array]:
+    """``a + sign·b``: an angle (or angular rate) laid off from another by a joint's own."""
+    return (np.asarray(a, dtype=float) + sign * np.asarray(b, dtype=float),)
+
+
+@op("point_xy")
+def _point_xy(x: Array, y: Array, *, tol: Tolerance) -> tuple[Array]:
+    """The point (x, y): a point at given coordinates, or an image from given components."""
+    return (g.point(x, y),)
+
+
+@op("coordinate_line", kind="line")
+def _coordinate_line(s: Array, *, tol: Tolerance, axis: str) -> tuple[Array]:
+    """The line ``x = s`` (directed +y) or ``y = s`` (directed +x)."""
+    s = np.asarray(s, dtype=float)
+    zero = np.zeros_like(s)
+    if axis == "x":
+        return (g.line_through(g.point(s, zero), np.array([0.0, 1.0])),)
+    return (g.line_through(g.point(zero, s), np.array([1.0, 0.0])),)

@@ -1,0 +1,156 @@
+"""Posture steps of the drives that are not a pinned link's angle or a slider's travel.
+
+* A joint angle between two moving links, ``θ3/2 = θ3 − θ2`` (the motor in a
+  robot's elbow, Problems 5.7-5.11): as soon as one of the two links has its
+  angle, the other's is laid off from it, ``θ3 = θ2 + θ3/2``; the link is then
+  placed from any known point of it (case 1).
+* A point's coordinates in the frame (the pantograph's tracing point,
+  Problem 5.13): with ``x`` and ``y`` both given the point is located at
+  once and the links that carry it have a known point; with one coordinate
+  the point lies on the line ``x = x_P`` (or ``y = y_P``), which an arc about
+  a known point of its link cuts (case 2, as a pin in a slot of the frame).
+
+These are free functions on the posture builder
+(:class:`graphkin.kinematics.posture._Builder`), kept apart so the builder's
+module stays small.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (cases 1 and 2), Sec. 5.4 and
+Problems 5.7-5.13.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from graphkin.construction import Mark, Role, Term, VectorEquation
+from graphkin.mechanisms.model import Drive
+
+if TYPE_CHECKING:
+    from graphkin.kinematics.posture import _Builder
+
+__all__ = ["start_drive", "finish_pairs", "propagate_drives", "coordinate_groups", "do_coordinate",
+           "coordinate_line_label"]
+
+K, U = Mark.KNOWN, Mark.UNKNOWN
+
+
+def coordinate_line_label(d: Drive) -> str:
+    """Label of the line ``x = x_P`` (or ``y = y_P``) of a one-coordinate drive."""
+    return f"l_{d.kind}({d.point})"
+
+
+def _partner(b: _Builder, d: Drive) -> Drive | None:
+    """The other coordinate drive of the same point, if any."""
+    return next((e for e in b.mech.drives if e is not d and e.point == d.point
+                 and e.kind in ("x", "y")), None)
+
+
+def start_drive(b: _Builder, d: Drive) -> bool:
+    """Record the input of a relative or coordinate drive; False for the other kinds."""
+    if d.kind not in ("relative", "x", "y"):
+        return False
+    lab = d.label
+    b.inputs[lab] = d.value
+    b.env[lab] = np.asarray(d.value)
+    if d.kind == "relative":
+        note = (f"The input: link {d.link} stands at θ{d.link}/{d.relative_to} = "
+                f"{math.degrees(d.value):.6g}° to link {d.relative_to} (a joint angle).")
+    else:
+        note = (f"The input: point {d.point} has {d.kind}_{d.point} = {d.value:.6g} "
+                f"{b.mech.length_unit}.")
+    b.add("input", (), (lab,), name=lab, role=Role.GIVEN, note=note)
+    b.events.append(("input", d))
+    if d.kind == "relative":
+        return True
+    if _partner(b, d) is not None:
+        return True  # located with its other coordinate (finish_pairs)
+    line = coordinate_line_label(d)
+    b.add("coordinate_line", (lab,), (line,), axis=d.kind,
+          note=f"Draw the line {d.kind} = {d.label}: {d.point} lies on it.")
+    return True
+
+
+def finish_pairs(b: _Builder) -> None:
+    """Place the points whose x and y are both driven (after every input is recorded)."""
+    for d in b.mech.drives:
+        if d.kind != "x" or d.point in b.env:
+            continue
+        other = _partner(b, d)
+        if other is None:
+            continue
+        assert d.point is not None
+        eq = VectorEquation((Term(f"R_{d.point}", U, U),),
+                            (Term(f"x_{d.point}", K, K), Term(f"y_{d.point}", K, K)), case=1)
+        b.add("point_xy", (d.label, other.label), (d.point,), role=Role.RESULT, equation=eq,
+              note=f"Locate {d.point} at its given coordinates ({d.label}, {other.label}).")
+        b.events.append(("point_drive", d, other))
+
+
+def propagate_drives(b: _Builder) -> bool:
+    """Lay off the angle of a link from the other link of a joint drive; True if any."""
+    changed = False
+    for d in b.mech.drives:
+        if d.kind != "relative":
+            continue
+        i, j = d.link, d.relative_to
+        assert j is not None
+        if j in b.angle and i not in b.angle:
+            b.add("add_angles", (b.angle[j], d.label), (f"θ{i}",), sign=1.0, role=Role.RESULT,
+                  equation=VectorEquation((Term(f"θ{i}", U, U),),
+                                          (Term(f"θ{j}"), Term(d.label, K, K)), case=1),
+                  note=f"Lay off the joint angle from link {j}: θ{i} = θ{j} + {d.label}.")
+            b.angle[i] = f"θ{i}"
+            b.events.append(("relative_angle", d, True))
+            changed = True
+        elif i in b.angle and j not in b.angle:
+            b.add("add_angles", (b.angle[i], d.label), (f"θ{j}",), sign=-1.0, role=Role.RESULT,
+                  equation=VectorEquation((Term(f"θ{j}", U, U),),
+                                          (Term(f"θ{i}"), Term(d.label, K, K, -1)), case=1),
+                  note=f"Lay off the joint angle back from link {i}: θ{j} = θ{i} − {d.label}.")
+            b.angle[j] = f"θ{j}"
+            b.events.append(("relative_angle", d, False))
+            changed = True
+    return changed
+
+
+def coordinate_groups(b: _Builder) -> list[tuple[Drive, str]]:
+    """(drive, link) for each point with one driven coordinate that can be found now.
+
+    The point's link turns about its one known point: an arc meets the line.
+    """
+    out = []
+    for d in b.mech.drives:
+        if d.kind not in ("x", "y") or _partner(b, d) is not None or d.point in b.env:
+            continue
+        assert d.point is not None
+        for lid in b.mech.point_links.get(d.point, []):
+            if lid not in b.placed and b.one_point(lid):
+                out.append((d, lid))
+                break
+    return out
+
+
+def do_coordinate(b: _Builder, d: Drive, lid: str, branch: str | None) -> list[str]:
+    """Place the point of a one-coordinate drive: an arc about its link's known point (case 2)."""
+    x = d.point
+    assert x is not None
+    (p, ploc), = b.distinct_known(lid)
+    sloc = b.mech.links[lid].points[x]
+    r = math.hypot(sloc[0] - ploc[0], sloc[1] - ploc[1])
+    n = p.split("#")[0].split(":")[-1]
+    k = f"k_{x}({n})"
+    b.events.append(("coordinate", d, lid, p))
+    if k not in b.env:
+        b.add("circle", (p,), (k,), radius=r,
+              note=f"About {n} draw an arc of radius {n}{x} = {r:.6g}.")
+    names = ["behind", "ahead"]
+    b.add("intersect_line_circle", (coordinate_line_label(d), k), (x,),
+          branch=branch or names[0], role=Role.RESULT,
+          equation=VectorEquation((Term(f"R_{x}", U, K),), (Term(f"R_{x}{n}", K, U),), case=2),
+          note=f"The arc cuts the line {d.kind} = {d.label} at {x} (case 2).")
+    return names
