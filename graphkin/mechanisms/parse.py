@@ -219,10 +219,7 @@ class _Parser:
         sliders = []
         for i, s in enumerate(self.entries("sliders")):
             key = f"sliders[{i}]"
-            link = self.link_id(s.get("link"), f"{key}.link")
-            on = self.link_id(s.get("on"), f"{key}.on")
-            if link == on:
-                raise self.fail(f"{key}.on", "a link cannot slide on itself")
+            link, on = self.pair(s, key, "a link cannot slide on itself")
             point = self.point_of(link, s.get("point"), f"{key}.point")
             if "line" not in s:
                 raise self.fail(f"{key}.line", "a slider needs its line")
@@ -232,10 +229,7 @@ class _Parser:
         slots = []
         for i, s in enumerate(self.entries("slots")):
             key = f"slots[{i}]"
-            link = self.link_id(s.get("link"), f"{key}.link")
-            on = self.link_id(s.get("on"), f"{key}.on")
-            if link == on:
-                raise self.fail(f"{key}.on", "a slot and its pin must be on different links")
+            link, on = self.pair(s, key, "a slot and its pin must be on different links")
             point = self.point_of(link, s.get("point"), f"{key}.point")
             if ("line" in s) == ("circle" in s):
                 raise self.fail(key, "a slot has either a line or a circle")
@@ -286,15 +280,20 @@ class _Parser:
                                 "angle or a slider by its position)")
         return mech
 
+    def pair(self, entry: Mapping[str, Any], key: str, same: str) -> tuple[str, str]:
+        """The two links of a slider, slot or rolling contact (``link`` on ``on``), distinct."""
+        link = self.link_id(entry.get("link"), f"{key}.link")
+        on = self.link_id(entry.get("on"), f"{key}.on")
+        if link == on:
+            raise self.fail(f"{key}.on", same)
+        return link, on
+
     def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:
         """Rolling contacts, each with the equivalent slot of its circle's center."""
         out: list[tuple[Rolling, Slot | None]] = []
         for i, r in enumerate(self.entries("rolling")):
             key = f"rolling[{i}]"
-            link = self.link_id(r.get("link"), f"{key}.link")
-            on = self.link_id(r.get("on"), f"{key}.on")
-            if link == on:
-                raise self.fail(f"{key}.on", "a link cannot roll on itself")
+            link, on = self.pair(r, key, "a link cannot roll on itself")
             if link == FRAME:
                 raise self.fail(f"{key}.link", "the rolling circle must be on a moving link "
                                 "(a line rolling on a fixed circle is not supported yet)")

@@ -248,16 +248,22 @@ def _compare_with_analytic(mech, sol, size):
                                    atol=1e-7 * (v + w * size + 1))
 
 
-@SETTINGS
-@given(robot_pairs())
-def test_random_robot_pairs_relative_drive(case):
-    data, pts, angles = case
+def _constructed_through(data, pts):
+    """Solve by construction and check the posture passes through the generating points."""
     mech = graphkin.from_dict(data)
     sol = mech.solve()
     assert sol.method == "construction", sol.notes
     size = mech.scale
     for name, xy in pts.items():
         np.testing.assert_allclose(sol.position(name), xy, atol=1e-9 * size)
+    return mech, sol, size
+
+
+@SETTINGS
+@given(robot_pairs())
+def test_random_robot_pairs_relative_drive(case):
+    data, pts, angles = case
+    mech, sol, size = _constructed_through(data, pts)
     for lid, th in angles.items():
         assert _close_angle((_th(sol, lid)), th, 1e-8)
     # ω3 = ω2 + ω3/2 and α3 = α2 + α3/2 in plane motion, whichever way the file gives it
@@ -325,12 +331,7 @@ def traced_chains(draw):
 @given(traced_chains())
 def test_random_traced_chains_coordinate_drive(case):
     data, pts, which = case
-    mech = graphkin.from_dict(data)
-    sol = mech.solve()
-    assert sol.method == "construction", sol.notes
-    size = mech.scale
-    for name, xy in pts.items():
-        np.testing.assert_allclose(sol.position(name), xy, atol=1e-9 * size)
+    mech, sol, size = _constructed_through(data, pts)
     # the given components of V_C and A_C are laid off as given
     drive = next(d for d in data["drive"] if "point" in d)
     for k, axis in enumerate("xy"):

@@ -11,8 +11,30 @@ import numpy as np
 from graphkin.kinematics.analytic.constraints import _F, _OnLine, _Poses, _wrap
 
 
+class _RollingRow:
+    """The row of a rolling contact: the roller's angle at the posture, its rate otherwise.
+
+    With ``ref`` None the row fixes the roller's angle (a posture); else its
+    rate equation (:meth:`rate_eval`) equals ``ref``.
+    """
+
+    link: int
+    angle: float
+    ref: float | None
+
+    def rate_eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        raise NotImplementedError
+
+    def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
+        if self.ref is None:
+            if J is not None and self.link != _F:
+                J[row, 3 * self.link + 2] += 1.0
+            return [st.th[self.link] - self.angle]
+        return [self.rate_eval(st, J, row)[0] - self.ref]
+
+
 @dataclass(frozen=True)
-class _Rolling:
+class _Rolling(_RollingRow):
     """No slip between a circle of link ``l`` and a line of link ``o`` (one angle row).
 
     Derivation.  Let ``u = R_o u_loc`` be the line's unit direction, ``n =
@@ -86,19 +108,12 @@ class _Rolling:
             J[row] += (self.sigma / self.radius) * tmp[0]
         return [self.value(st)]
 
-    def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
-        if self.ref is None:
-            if J is not None and self.link != _F:
-                J[row, 3 * self.link + 2] += 1.0
-            return [st.th[self.link] - self.angle]
-        return [self.rate_eval(st, J, row)[0] - self.ref]
-
     def gamma(self, st: _Poses, qd: Sequence[float]) -> list[float]:
         return [self.sigma / self.radius * self.travel.gamma(st, qd)[0]]
 
 
 @dataclass
-class _RollingCircle:
+class _RollingCircle(_RollingRow):
     """No slip between a circle of link ``l`` and a circle of link ``o`` (one angle row).
 
     Derivation.  Let ``P`` be the rolling circle's center (radius ``r``),
@@ -198,13 +213,6 @@ class _RollingCircle:
                 # -1 - k ∂φ/∂θ_o, with ∂φ/∂θ_o = -∂ψ/∂d·perp(R_o c_o) - 1
                 J[row, 3 * self.on + 2] += -1.0 + k * (gx * -cy + gy * cx) + k
         return [self.value(st)]
-
-    def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
-        if self.ref is None:
-            if J is not None and self.link != _F:
-                J[row, 3 * self.link + 2] += 1.0
-            return [st.th[self.link] - self.angle]
-        return [self.rate_eval(st, J, row)[0] - self.ref]
 
     def gamma(self, st: _Poses, qd: Sequence[float]) -> list[float]:
         # γ = -k γ_ψ, γ_ψ = (d × d̈_γ)/|d|² - 2 (d × ḋ)(d·ḋ)/|d|⁴
