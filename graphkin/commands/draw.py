@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int
+from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int, command
 
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
@@ -13,17 +13,18 @@ DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature"
                    "bobillier", "hartmann", "cubic", "forces", "all")
 
 
+HELP = "draw a diagram to scale (SVG, PDF or PNG)"
+DESCRIPTION = ("Draw the mechanism and its construction to a stated scale: the posture, "
+               "the velocity or acceleration polygon beside the mechanism, the instant "
+               "centers, the curvature construction, the free bodies and force polygons "
+               "(-d forces, Fig. 11.5), or all of them on one sheet, with "
+               "a results table comparing the drawing with the analytic solution. The "
+               "output's suffix chooses the format (.svg, .pdf, .png).")
+
+
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "draw", help="draw a diagram to scale (SVG, PDF or PNG)",
-        description="Draw the mechanism and its construction to a stated scale: the posture, "
-                    "the velocity or acceleration polygon beside the mechanism, the instant "
-                    "centers, the curvature construction, the free bodies and force polygons "
-                    "(-d forces, Fig. 11.5), or all of them on one sheet, with "
-                    "a results table comparing the drawing with the analytic solution. The "
-                    "output's suffix chooses the format (.svg, .pdf, .png).")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "draw", help=HELP, description=DESCRIPTION)
     p.add_argument("--diagram", "-d", default="all", choices=DIAGRAM_CHOICES,
                    help="which diagram (default: all)")
     p.add_argument("-o", "--output", required=True,

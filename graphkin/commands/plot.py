@@ -11,21 +11,21 @@ from __future__ import annotations
 import argparse
 import sys
 
-from graphkin.commands._args import MAX_COUNT, bounded_int, finite_float
+from graphkin.commands._args import MAX_COUNT, bounded_int, command, finite_float
 
 __all__ = ["add_parser", "run"]
+
+HELP = "plot angles, rates, coupler curves or transmission angles over a sweep"
+DESCRIPTION = ("Sweep the drive (as graphkin sweep) and plot curves over it: angle, omega, "
+               "alpha (omega:4 for one link), velocity:P, acceleration:P, path:P (coupler "
+               "curve, with its osculating circle and Ball's point), center:I24 (the path "
+               "of an instant center), centrode:3 (fixed and moving centrodes), "
+               "transmission.")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
-    p = sub.add_parser(
-        "plot", help="plot angles, rates, coupler curves or transmission angles over a sweep",
-        description="Sweep the drive (as graphkin sweep) and plot curves over it: angle, omega, "
-                    "alpha (omega:4 for one link), velocity:P, acceleration:P, path:P (coupler "
-                    "curve, with its osculating circle and Ball's point), center:I24 (the path "
-                    "of an instant center), centrode:3 (fixed and moving centrodes), "
-                    "transmission.")
-    p.add_argument("file", help="mechanism file (TOML)")
+    p = command(sub, "plot", help=HELP, description=DESCRIPTION)
     p.add_argument("--what", default="angle,omega,alpha", metavar="ITEMS",
                    help="comma-separated items (default angle,omega,alpha)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.svg",

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any
 
-__all__ = ["Role", "Side", "Along", "Mark", "Term", "VectorEquation", "Step"]
+__all__ = ["Role", "Side", "Along", "Mark", "Term", "VectorEquation", "Step", "fresh_label"]
 
 
 class Role(StrEnum):
@@ -197,3 +197,21 @@ class Step:
             "kind": self.kind, "note": self.note,
             "equation": None if self.equation is None else self.equation.to_dict(),
         }
+
+
+def fresh_label(label: str, taken: Any) -> str:
+    """``label``, or ``label#2``, ``label#3``... the first not in ``taken``.
+
+    A construction that draws the same element twice (the same line of
+    centers found again, a force drawn for a second load) keeps both, the
+    later ones numbered; ``#`` is never part of a point's name.
+
+    >>> fresh_label("I13", {"I13": 0, "I13#2": 0})
+    'I13#3'
+    """
+    if label not in taken:
+        return label
+    k = 2
+    while f"{label}#{k}" in taken:
+        k += 1
+    return f"{label}#{k}"

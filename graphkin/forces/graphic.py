@@ -47,7 +47,7 @@ import numpy as np
 import graphkin.forces.ops  # noqa: F401  (registers the force operations)
 from graphkin.construction import Construction
 from graphkin.construction.ops import OPS
-from graphkin.construction.step import Mark, Role, Term, VectorEquation
+from graphkin.construction.step import Mark, Role, Term, VectorEquation, fresh_label
 from graphkin.errors import ConstructionError, GraphkinError
 from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint
 from graphkin.forces.ops import line_of, moment_about
@@ -170,12 +170,7 @@ class _Builder:
             self.env[name] = v
 
     def fresh(self, label: str) -> str:
-        if label not in self.env:
-            return label
-        k = 2
-        while f"{label}#{k}" in self.env:
-            k += 1
-        return f"{label}#{k}"
+        return fresh_label(label, self.env)
 
     # ---- geometry tests (generic decisions, made once) --------------------
     def on_line(self, point: str, line: str) -> bool:

@@ -10,6 +10,7 @@ import numpy as np
 
 from graphkin.construction import Construction, Role
 from graphkin.construction.ops import OPS
+from graphkin.construction.step import fresh_label
 from graphkin.kinematics.instant_centers.centers import (
     Center,
     How,
@@ -119,12 +120,7 @@ class _Recorder:
             stamp[lid] = stamp.get(lid, 0) + 1
 
     def fresh(self, label: str) -> str:
-        if label not in self.env:
-            return label
-        k = 2
-        while f"{label}#{k}" in self.env:
-            k += 1
-        return f"{label}#{k}"
+        return fresh_label(label, self.env)
 
 
 class _PrimaryCenters(_Recorder):
