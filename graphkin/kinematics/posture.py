@@ -466,17 +466,16 @@ class _Builder:
             eq = VectorEquation((Term(va, *mark[ka]),), (Term(vb, *mark[kb]),),
                                 case={("circle", "circle"): 4, ("line", "line"): 3}.get(
                                     (ka, kb), 2))
-            if ka == "circle" and kb == "circle":
-                names = ["left", "right"]
-                self.add("intersect_circles", (la, lb), (name,), branch=branch or names[0],
-                         role=Role.RESULT, equation=eq,
-                         note=f"The arcs meet at {name} (case 4).")
-                return names
-            if ka == "circle" and kb == "line":
-                names = ["behind", "ahead"]
-                self.add("intersect_line_circle", (lb, la), (name,), branch=branch or names[0],
-                         role=Role.RESULT, equation=eq,
-                         note=f"The arc cuts the line at {name} (case 2).")
+            two_way = {  # Table 2.2: (operation, its inputs, its branches, the words)
+                ("circle", "circle"): ("intersect_circles", (la, lb), ["left", "right"],
+                                       f"The arcs meet at {name} (case 4)."),
+                ("circle", "line"): ("intersect_line_circle", (lb, la), ["behind", "ahead"],
+                                     f"The arc cuts the line at {name} (case 2)."),
+            }.get((ka, kb))
+            if two_way is not None:
+                op, inputs, names, note = two_way
+                self.add(op, inputs, (name,), branch=branch or names[0], role=Role.RESULT,
+                         equation=eq, note=note)
                 return names
             self.add("meet", (la, lb), (name,), role=Role.RESULT, equation=eq,
                      note=f"The two lines meet at {name} (case 3).")
