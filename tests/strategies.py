@@ -32,7 +32,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from hypothesis import assume
+from hypothesis import HealthCheck, assume, settings
 from hypothesis import strategies as st
 
 __all__ = [
@@ -762,3 +762,13 @@ def mechanisms(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
     return st.one_of(fourbars(with_rates), slider_cranks(with_rates),
                      inverted_slider_cranks(with_rates), slotted(with_rates),
                      double_sliders(with_rates), six_bars(with_rates), five_bars(with_rates))
+
+
+def examples(n: int) -> settings:
+    """Settings of a property test over random mechanisms: ``n`` examples, no deadline.
+
+    Drawing a mechanism that assembles takes several tries, so the slow-data
+    and filter health checks are off.
+    """
+    return settings(max_examples=n, deadline=None,
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])

@@ -17,18 +17,17 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 from spec_data import EXAMPLES, inline  # the shared spec examples (pythonpath = tests)
-from strategies import RandomMechanism, fourbars, mechanisms
+from strategies import RandomMechanism, examples, fourbars, mechanisms
 
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.kinematics.analytic import solve_analytic, solve_analytic_many
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms import Mechanism, from_dict, load, loads
 
-HYP = settings(max_examples=50, deadline=None,
-               suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+HYP = examples(50)
 
 # Newton's method converges quadratically: the posture is exact to rounding.
 POSTURE_REL = 1e-9

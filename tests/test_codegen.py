@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
-from strategies import RandomMechanism, mechanisms
+from strategies import RandomMechanism, examples, mechanisms
 
 import graphkin
 from graphkin.construction import Construction
@@ -72,8 +72,7 @@ def _drive_values(mech: graphkin.Mechanism, span: float, n: int = 23) -> np.ndar
     return d.value + span * scale * np.linspace(-1.0, 1.0, n)
 
 
-@settings(max_examples=60, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@examples(60)
 @given(rm=mechanisms(), span=st.floats(1e-4, 0.02))
 def test_generated_function_equals_the_replay(rm: RandomMechanism, span: float) -> None:
     # near the file's posture (transmission angles 25-155°: clean) the generated function
@@ -97,8 +96,7 @@ def test_generated_function_equals_the_replay(rm: RandomMechanism, span: float) 
     _same(got, ref.values)
 
 
-@settings(max_examples=40, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@examples(40)
 @given(rm=mechanisms(), span=st.floats(1e-3, 0.02))
 def test_generated_sweep_equals_the_analytic_solver(rm: RandomMechanism, span: float) -> None:
     # the columns of a sweep written out by the generator against Newton on the loop
@@ -130,8 +128,7 @@ def test_generated_sweep_equals_the_analytic_solver(rm: RandomMechanism, span: f
         np.testing.assert_allclose(v, r, rtol=1e-7, atol=1e-7 * scale, err_msg=k)
 
 
-@settings(max_examples=40, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@examples(40)
 @given(rm=mechanisms(), span=st.floats(0.001, 3.0))
 def test_sweep_columns_equal_the_replayed_columns(rm: RandomMechanism, span: float) -> None:
     # a whole sweep, near its posture or far enough to leave the range where it assembles:

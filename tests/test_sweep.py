@@ -25,7 +25,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from spec_data import BENCH
-from strategies import RandomMechanism, mechanisms
+from strategies import RandomMechanism, examples, mechanisms
 
 import graphkin
 from graphkin.construction import Construction
@@ -348,8 +348,7 @@ def test_compiled_evaluation_equals_the_replay(examples: Path, name: str) -> Non
                          pol.acceleration.replay(ain, values=bv.values, strict=False))
 
 
-@settings(max_examples=40, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@examples(40)
 @given(rm=mechanisms(), span=st.floats(0.05, 3.0))
 def test_random_mechanisms_compiled_equals_replay(rm: RandomMechanism, span: float) -> None:
     # random four-bars, slider-cranks, inverted slider-cranks, slots, double sliders,

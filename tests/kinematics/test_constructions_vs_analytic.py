@@ -9,9 +9,10 @@ accelerations against the analytic solver's constraint-Jacobian linear solves
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from strategies import (
     double_sliders,
+    examples,
     five_bars,
     fourbars,
     inverted_slider_cranks,
@@ -24,8 +25,7 @@ import graphkin
 from graphkin.kinematics.analytic import solve_analytic
 
 REL = 1e-9
-SETTINGS = settings(max_examples=40, deadline=None,
-                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+SETTINGS = examples(40)
 
 
 def _check(rm, *, expect_construction=True):

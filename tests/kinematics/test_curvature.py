@@ -25,9 +25,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, example, given, settings
+from hypothesis import assume, example, given
 from spec_data import inline
-from strategies import RandomMechanism, fourbars, mechanisms, slider_cranks
+from strategies import RandomMechanism, examples, fourbars, mechanisms, slider_cranks
 
 import graphkin
 from graphkin.errors import GraphkinError
@@ -45,10 +45,8 @@ from graphkin.mechanisms import from_dict
 from graphkin.output import solution_to_dict
 
 GALLERY = Path(__file__).resolve().parents[2] / "gallery" / "curvature"
-HYP = settings(max_examples=40, deadline=None,
-               suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
-FD = settings(max_examples=15, deadline=None,
-              suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+HYP = examples(40)
+FD = examples(15)
 REL = 1e-9
 
 

@@ -13,16 +13,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import assume, given
 from hypothesis import strategies as st
+from strategies import examples
 
 import graphkin
 from graphkin.kinematics.analytic import solve_analytic
 from graphkin.kinematics.solve import superposition
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-SETTINGS = settings(max_examples=40, deadline=None,
-                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+SETTINGS = examples(40)
 
 
 def _e(t: float) -> np.ndarray:

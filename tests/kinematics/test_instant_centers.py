@@ -26,9 +26,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from spec_data import EXPECTED
-from strategies import RandomMechanism, five_bars, fourbars, mechanisms, slider_cranks
+from strategies import RandomMechanism, examples, five_bars, fourbars, mechanisms, slider_cranks
 
 from graphkin.cli import main
 from graphkin.construction import Role
@@ -63,8 +63,7 @@ from graphkin.output import solution_to_dict
 from graphkin.tolerance import DEFAULT_TOL
 
 GALLERY = Path(__file__).resolve().parents[2] / "gallery" / "centers"
-HYP = settings(max_examples=60, deadline=None,
-               suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+HYP = examples(60)
 
 # The centers are meets of lines through exact pins: rounding only.  Compared
 # as points of the projective plane (unit homogeneous vectors with the
