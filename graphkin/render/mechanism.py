@@ -75,6 +75,22 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
         reach = 1.6 * BLOCK[0] * k
         lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
         bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
+    # a moving link's straight face that a roller rolls on (a follower's face, Fig. 4.20):
+    # along its line, past the contact point by the roller's radius
+    for r in mech.rolling:
+        if r.on != lid or r.on == FRAME or r.link == lid:
+            continue
+        lw = _line_world(src, r)
+        if lw is None:
+            continue
+        p0, u = lw
+        st = sol.links[lid]
+        assert r.p0 is not None and r.p1 is not None
+        ts = [float(u @ (np.asarray(st.position(e), dtype=float) - p0)) for e in (r.p0, r.p1)]
+        tq = float(u @ (np.asarray(sol.position(r.center, r.link), dtype=float) - p0))
+        reach = max(r.radius, 1.6 * BLOCK[0] * k)
+        lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
+        bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
     return bars
 
 

@@ -53,3 +53,21 @@ def test_a_file_without_bodies_draws_none():
     svg = to_bytes(draw(graphkin.load(ROOT / "tests/data/spec/ex4_7_cam_follower.toml").solve(),
                         "posture").figure)
     assert b'id="body-' not in svg
+
+
+def test_a_follower_face_a_roller_rolls_on_is_drawn_to_the_contact():
+    # Example 4.8 (Fig. 4.20a): the follower 3 is its pivot D and a flat face x = -1.4 in
+    # (link 3's coordinates) that the roller of radius 1.5 in touches; its face points are
+    # no corners of a body, but the face itself is drawn, out to the roller.
+    from shapely.geometry import Point, Polygon
+
+    from graphkin.render.mechanism import BAR_HALF
+
+    svg = to_bytes(draw(graphkin.load(ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml")
+                        .solve(), "posture").figure)
+    roller = _paths(svg, "roller-4")
+    lo, hi = roller.min(axis=0), roller.max(axis=0)
+    centre, radius = Point(*((lo + hi) / 2)), float((hi - lo)[0] / 2)
+    follower = Polygon(_paths(svg, "link-3"))
+    # the bar's centre line is the face: its edge is half a bar width (72 px/in) nearer
+    assert follower.distance(centre) == pytest.approx(radius - BAR_HALF * 72, abs=1.0)
