@@ -300,13 +300,54 @@ class StepPainter:
         return it
 
     def off_sheet(self, panel: Panel, g: Group, label: str, xy: np.ndarray) -> None:
-        """A point beyond the panel: an arrow at the edge toward it, with its coordinates."""
+        """A finite point beyond the panel: an arrow toward it, named, with its distance.
+
+        As a book figure does when a point does not fit (the far Γ of
+        Fig. 4.35): the arrow points from the velocity pole (P, or I in the
+        cubic of Figs. 4.37-4.39) when the panel shows it, else from the
+        nearest point of the mechanism in the panel, and reads
+        "Γ_T, 254 in from P" -- never raw coordinates.
+        """
         x0, y0, x1, y1 = panel.view
-        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
         name = construction_text(label) if panel.plane == "posture" else image_text(label)
-        self.ideal(panel, g, label, np.array([*(xy - c), 0.0]),
-                   text=f"{name}"
-                        f" ({fmt(xy[0], 4)}, {fmt(xy[1], 4)})", center=c)
+        ref_name, ref = self.reference_for(panel, label, xy)
+        dist = float(np.hypot(*(xy - ref)))
+        unit = f" {panel.unit}" if panel.unit else ""
+        who = construction_text(ref_name) if panel.plane == "posture" else image_text(ref_name)
+        text = f"{name}, {fmt(dist, 3)}{unit} from {who}" if ref_name else \
+            f"{name}, {fmt(dist, 3)}{unit} off the figure"
+        self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref)
+
+    def reference_for(self, panel: Panel, label: str, xy: np.ndarray
+                      ) -> tuple[str, np.ndarray]:
+        """The point an off-panel point's distance is given from: P, else the nearest pin.
+
+        Returns ``("", centre of the panel)`` when no named point is in the panel.
+        """
+        x0, y0, x1, y1 = panel.view
+
+        def inside(q: np.ndarray) -> bool:
+            return bool(x0 <= q[0] <= x1 and y0 <= q[1] <= y1)
+
+        if panel.plane == "posture":
+            for name in ("P", "I"):  # the velocity pole: P (Sec. 4.14), I (Figs. 4.37-4.39)
+                pole = self.xy(name) if label != name else None
+                if pole is not None and inside(pole):
+                    return name, pole
+            mech = self.src.mechanism
+            sol = self.src.solution
+            if mech is not None and sol is not None:
+                best: tuple[float, str, np.ndarray] | None = None
+                for n in mech.point_names:
+                    if n in mech.helper_points:
+                        continue
+                    q = np.asarray(sol.position(n), dtype=float)
+                    d = float(np.hypot(*(xy - q)))
+                    if inside(q) and (best is None or d < best[0]):
+                        best = (d, n, q)
+                if best is not None:
+                    return best[1], best[2]
+        return "", np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
               center: np.ndarray | None = None) -> None:

@@ -135,3 +135,39 @@ def test_handout_sheet_is_one_page_at_round_scales(gk, paper, size, diagram):
     head = [t.get_text() for t in d.figure.findobj(lambda a: getattr(a, "get_gid", None)
                                                    and a.get_gid() == "results-head")]
     assert head and "diff" not in head[0]
+
+
+CURVATURE_DIAGRAMS = ["inflection", "bobillier", "hartmann", "cubic"]
+
+
+@pytest.mark.parametrize("name", ["ex3_1_fourbar", "ex4_14_inflection_bresse", "ex4_16_cubic"])
+@pytest.mark.parametrize("diagram", CURVATURE_DIAGRAMS)
+def test_a_far_point_is_named_with_its_distance_never_its_coordinates(gk, name, diagram):
+    # A point beyond the panel is an arrow toward it labelled with its name and its distance
+    # from the pole ("Γ_T, 254 in from P"), as the book would; never "G_T (-189.9, -167.5)".
+    parser = ET.XMLParser(target=ET.TreeBuilder(insert_comments=True))
+    root = ET.fromstring(gk.svg(name, diagram), parser=parser)
+    seen = 0
+    coords = re.compile(r"\(\s*-?[\d.]+(e[-+]?\d+)?\s*,\s*-?[\d.]+(e[-+]?\d+)?\s*\)")
+    for el in root.iter():
+        gid = el.get("id") or ""
+        if not gid.startswith("label-"):
+            continue
+        text = " ".join(c.text or "" for c in el.iter(ET.Comment))
+        seen += bool(text.strip())
+        assert not coords.search(text), (gid, text)
+    assert seen >= 1  # the labels' texts were read
+
+
+def test_the_far_point_of_the_cubic_gives_its_distance_from_the_pole(gk):
+    # Example 3.1's cubic panel (Hain's construction, Fig. 4.38): G_T lies beyond the panel.
+    # The label's distance must be |G_T - I| computed here from the construction's own values.
+    d = gk.drawn("ex3_1_fourbar", "cubic")
+    painter = d.sheet.painters["cubic"]
+    g_t, pole = painter.xy("G_T"), painter.xy("I")
+    text = d.texts["G_T"].get_text() if "G_T" in d.texts else next(
+        t.get_text() for t in d.texts.values() if "G_{T}" in t.get_text())
+    dist = float(np.hypot(*(g_t - pole)))
+    m = re.search(r", ([\d.]+) in from I", text)
+    assert m is not None, text
+    assert float(m.group(1)) == pytest.approx(dist, rel=5e-3)
