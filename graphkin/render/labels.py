@@ -432,4 +432,8 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
             for j in tree.query(ba, predicate="intersects"):
                 if owners[int(j)] != grp_a:
                     out.append(("line", ga, owners[int(j)]))
+        for gf, bf in fixed:  # no construction line runs across a panel's title
+            for j in tree.query(bf, predicate="intersects"):
+                if "title" in gf and "title" not in owners[int(j)]:
+                    out.append(("line", gf, owners[int(j)]))
     return out

@@ -43,6 +43,7 @@ from graphkin.render.scene import (
     clip_segment,
     construction_text,
     finite_xy,
+    inside_spans,
     point_text,
     safe_id,
     sub_digits,
@@ -308,7 +309,6 @@ class StepPainter:
         nearest point of the mechanism in the panel, and reads
         "Γ_T, 254 in from P" -- never raw coordinates.
         """
-        x0, y0, x1, y1 = panel.view
         name = construction_text(label) if panel.plane == "posture" else image_text(label)
         ref_name, ref = self.reference_for(panel, label, xy)
         dist = float(np.hypot(*(xy - ref)))
@@ -324,7 +324,7 @@ class StepPainter:
 
         Returns ``("", centre of the panel)`` when no named point is in the panel.
         """
-        x0, y0, x1, y1 = panel.view
+        x0, y0, x1, y1 = panel.inner or panel.view
 
         def inside(q: np.ndarray) -> bool:
             return bool(x0 <= q[0] <= x1 and y0 <= q[1] <= y1)
@@ -355,7 +355,7 @@ class StepPainter:
         d = _unit(np.asarray(p[:2], dtype=float))
         if d is None:
             return
-        x0, y0, x1, y1 = panel.view
+        x0, y0, x1, y1 = panel.inner or panel.view  # clear of the title and scale strips
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
         ts = []
         for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
@@ -382,7 +382,7 @@ class StepPainter:
                 if np.all(np.isfinite(p)):
                     self.ideal(panel, g, label, p)
                 continue
-            x0, y0, x1, y1 = panel.view
+            x0, y0, x1, y1 = panel.inner or panel.view  # the title strip is no drawing room
             if not (x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1):
                 if step.role != Role.AUXILIARY:
                     self.off_sheet(panel, g, label, xy)
@@ -634,10 +634,23 @@ class StepPainter:
                     if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
                         cuts.append(q)
         if not cuts or step.role == Role.RESULT:
-            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
-                                gid=safe_id(self.prefix + label.replace(" ", "-"))))
+            gid = safe_id(self.prefix + label.replace(" ", "-"))
+            spans = inside_spans(center, r, panel.inner or panel.view)
+            if spans is None:
+                g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
+                                    gid=gid))
+            else:  # a circle larger than the drawing: the arcs inside it, clear of the title
+                for i, (t1, t2) in enumerate(spans):
+                    g.items.append(Item("arc", np.array([center]), style,
+                                        key=label if i == 0 else f"{label}:{i}", radius=r,
+                                        theta1=t1, theta2=t2,
+                                        gid=gid if i == 0 else f"{gid}-{i}"))
             if label.split("*")[0] in ("inflection circle", "Bresse circle"):
                 top = center + np.array([0.0, r])
+                if spans:  # its top is off the drawing: letter it in the middle of its arc
+                    t1, t2 = max(spans, key=lambda sp: sp[1] - sp[0])
+                    mid = math.radians((t1 + t2) / 2)
+                    top = center + r * np.array([math.cos(mid), math.sin(mid)])
                 self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
                            label, style="label-small", prefer=(0.0, 1.0))
             return
@@ -789,3 +802,4 @@ def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
 PaintFn = Callable[[Step, Group, Panel], None]
 
 _CURVATURE = ("curvature", "inflection", "bobillier", "hartmann", "cubic")
+

@@ -25,7 +25,7 @@ from graphkin.render.scale import Scale
 from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text", "construction_text"]
+           "sub_digits", "point_text", "construction_text", "inside_spans"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -132,6 +132,41 @@ def clip_segment(p0: np.ndarray, p1: np.ndarray,
         if t0 > t1:
             return None
     return p0 + t0 * d, p0 + t1 * d
+
+def inside_spans(center: np.ndarray, r: float, box: tuple[float, float, float, float]
+                  ) -> list[tuple[float, float]] | None:
+    """The arcs (degrees, counterclockwise) of a circle inside ``box``; None if all of it is.
+
+    A circle that runs out of the panel's drawing area (into the title strip
+    or the scale bar's) is drawn as the arcs that stay inside, so no
+    construction line crosses a panel's title.
+    """
+    x0, y0, x1, y1 = box
+    if (center[0] - r >= x0 and center[0] + r <= x1 and center[1] - r >= y0
+            and center[1] + r <= y1):
+        return None
+    n = 1440
+    ts = np.linspace(0.0, 360.0, n, endpoint=False)
+    xs = center[0] + r * np.cos(np.radians(ts))
+    ys = center[1] + r * np.sin(np.radians(ts))
+    inside = (xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)
+    if inside.all():
+        return None
+    if not inside.any():
+        return []
+    start = int(np.flatnonzero(~inside)[0])  # begin at a point outside: runs never wrap
+    order = np.roll(np.arange(n), -start)
+    spans: list[tuple[float, float]] = []
+    run: list[int] = []
+    for i in order:
+        if inside[i]:
+            run.append(int(i))
+        elif run:
+            spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
+            run = []
+    if run:
+        spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
+    return spans
 
 
 @dataclass

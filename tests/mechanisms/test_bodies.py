@@ -1,4 +1,4 @@
-"""``[[bodies]]``: a drawing-only description of what a link looks like (Example 4.7, Fig. 4.18a)."""
+"""``[[bodies]]``: a drawing-only description of what a link looks like (Ex. 4.7, Fig. 4.18a)."""
 
 from __future__ import annotations
 

@@ -171,3 +171,16 @@ def test_the_far_point_of_the_cubic_gives_its_distance_from_the_pole(gk):
     m = re.search(r", ([\d.]+) in from I", text)
     assert m is not None, text
     assert float(m.group(1)) == pytest.approx(dist, rel=5e-3)
+
+
+def test_a_circle_cut_by_the_title_strip_is_drawn_as_the_arcs_inside():
+    from graphkin.render.scene import inside_spans
+
+    # a unit circle under the line y = 0.5: sin t <= 0.5 outside 30° < t < 150°, so one arc
+    # from 150° to 390° (240°) stays inside; a circle well inside is drawn whole (None)
+    spans = inside_spans(np.array([0.0, 0.0]), 1.0, (-2.0, -2.0, 2.0, 0.5))
+    assert spans is not None and len(spans) == 1
+    t1, t2 = spans[0]
+    assert t1 == pytest.approx(150.0, abs=0.3) and t2 - t1 == pytest.approx(240.0, abs=0.6)
+    assert inside_spans(np.array([0.0, 0.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) is None
+    assert inside_spans(np.array([9.0, 9.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) == []
