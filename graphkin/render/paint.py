@@ -384,7 +384,9 @@ class StepPainter:
                 continue
             x0, y0, x1, y1 = panel.inner or panel.view  # the title strip is no drawing room
             if not (x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1):
-                if step.role != Role.AUXILIARY:
+                # a helper point a later line is drawn through (W of Bobillier's
+                # construction, Fig. 4.29) is shown too: the reader must find it
+                if step.role != Role.AUXILIARY or self.consumers.get(label):
                     self.off_sheet(panel, g, label, xy)
                 continue
             if panel.plane == "posture":

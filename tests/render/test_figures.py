@@ -159,18 +159,23 @@ def test_a_far_point_is_named_with_its_distance_never_its_coordinates(gk, name, 
     assert seen >= 1  # the labels' texts were read
 
 
-def test_the_far_point_of_the_cubic_gives_its_distance_from_the_pole(gk):
-    # Example 3.1's cubic panel (Hain's construction, Fig. 4.38): G_T lies beyond the panel.
-    # The label's distance must be |G_T - I| computed here from the construction's own values.
-    d = gk.drawn("ex3_1_fourbar", "cubic")
-    painter = d.sheet.painters["cubic"]
-    g_t, pole = painter.xy("G_T"), painter.xy("I")
-    text = d.texts["G_T"].get_text() if "G_T" in d.texts else next(
-        t.get_text() for t in d.texts.values() if "G_{T}" in t.get_text())
-    dist = float(np.hypot(*(g_t - pole)))
-    m = re.search(r", ([\d.]+) in from I", text)
+@pytest.mark.parametrize("diagram,point", [("cubic", "G_T"), ("bobillier", "W")])
+def test_a_far_point_gives_its_distance_from_the_pole(gk, diagram, point):
+    # Example 3.1: G_T of Hain's construction (Fig. 4.38) and W of Bobillier's (Fig. 4.29,
+    # x = -35.6 in) lie beyond their panels; each is an arrow whose label gives its distance
+    # |point - I| computed here from the construction's own values.
+    d = gk.drawn("ex3_1_fourbar", diagram)
+    painter = d.sheet.painters[diagram]
+    far, pole = painter.xy(point), painter.xy("I")
+    x0, y0, x1, y1 = d.sheet.panels[0].inner
+    assert not (x0 <= far[0] <= x1 and y0 <= far[1] <= y1)  # it is off the drawing
+    texts = [t.get_text() for t in d.texts.values()]
+    name = "$G_{T}$" if point == "G_T" else point
+    text = next((t for t in texts if t.startswith(name + ",")), None)
+    assert text is not None, texts
+    m = re.search(r", ([\d.]+) in from I$", text)
     assert m is not None, text
-    assert float(m.group(1)) == pytest.approx(dist, rel=5e-3)
+    assert float(m.group(1)) == pytest.approx(float(np.hypot(*(far - pole))), rel=5e-3)
 
 
 def test_a_circle_cut_by_the_title_strip_is_drawn_as_the_arcs_inside():
