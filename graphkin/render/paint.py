@@ -196,6 +196,8 @@ class StepPainter:
         self.drawn_points: set[str] = set()
         self.arrows: dict[str, dict[tuple[float, ...], Item]] = {}
         self.arrow_ends: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+        # far points shown per panel: (direction from the reference, the label asked for)
+        self.far: dict[str, list[tuple[np.ndarray, LabelRequest]]] = {}
         self._helper_xy: list[np.ndarray] | None = None
         self.quiet_rates = False
         """Leave angular rates off the mechanism (a sheet of every diagram lists them)."""
@@ -316,7 +318,21 @@ class StepPainter:
         who = construction_text(ref_name) if panel.plane == "posture" else image_text(ref_name)
         text = f"{name}, {fmt(dist, 3)}{unit} from {who}" if ref_name else \
             f"{name}, {fmt(dist, 3)}{unit} off the figure"
+        d = _unit(xy - ref)
+        if d is None:
+            return
+        shown = self.far.setdefault(panel.name, [])
+        for d0, req in shown:
+            if float(d @ d0) > math.cos(math.radians(8.0)):
+                # one arrow for points that lie the same way, their labels beside it
+                panel.labels.append(LabelRequest(text, req.anchor, req.style,
+                                                 self.prefix + "label-" + safe_id(label), g,
+                                                 key=label, gap=req.gap, prefer=req.prefer))
+                return
+        n = len(panel.labels)
         self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref)
+        if len(panel.labels) > n:
+            shown.append((d, panel.labels[-1]))
 
     def reference_for(self, panel: Panel, label: str, xy: np.ndarray
                       ) -> tuple[str, np.ndarray]:
