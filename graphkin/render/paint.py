@@ -42,6 +42,7 @@ from graphkin.render.scene import (
     Panel,
     clip_segment,
     construction_text,
+    far_reference,
     finite_xy,
     inside_spans,
     point_text,
@@ -336,34 +337,8 @@ class StepPainter:
 
     def reference_for(self, panel: Panel, label: str, xy: np.ndarray
                       ) -> tuple[str, np.ndarray]:
-        """The point an off-panel point's distance is given from: P, else the nearest pin.
-
-        Returns ``("", centre of the panel)`` when no named point is in the panel.
-        """
-        x0, y0, x1, y1 = panel.inner or panel.view
-
-        def inside(q: np.ndarray) -> bool:
-            return bool(x0 <= q[0] <= x1 and y0 <= q[1] <= y1)
-
-        if panel.plane == "posture":
-            for name in ("P", "I"):  # the velocity pole: P (Sec. 4.14), I (Figs. 4.37-4.39)
-                pole = self.xy(name) if label != name else None
-                if pole is not None and inside(pole):
-                    return name, pole
-            mech = self.src.mechanism
-            sol = self.src.solution
-            if mech is not None and sol is not None:
-                best: tuple[float, str, np.ndarray] | None = None
-                for n in mech.point_names:
-                    if n in mech.helper_points:
-                        continue
-                    q = np.asarray(sol.position(n), dtype=float)
-                    d = float(np.hypot(*(xy - q)))
-                    if inside(q) and (best is None or d < best[0]):
-                        best = (d, n, q)
-                if best is not None:
-                    return best[1], best[2]
-        return "", np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        """The point an off-panel point's distance is given from: see :func:`far_reference`."""
+        return far_reference(panel, label, xy, self.xy, self.src.mechanism, self.src.solution)
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
               center: np.ndarray | None = None) -> None:
