@@ -88,6 +88,8 @@ MECHANISM: Schema = {
     "gravity": {"acceleration": None},
     # gallery files (graphkin.render.gallery)
     "gallery": GALLERY,
+    # drawing only (docs/formats/mechanism.md#bodies): a cam's disc, a follower's face
+    "bodies": {"link": None, "circle": _CIRCLE, "face": None, "outline": None},
 }
 """Every key of a mechanism file (the format reference: ``docs/formats/mechanism.md``)."""
 

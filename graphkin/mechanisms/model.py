@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from graphkin.tolerance import Tolerance
 
 __all__ = ["FRAME", "Link", "Pin", "Slider", "Slot", "Rolling", "Drive", "Rates", "Mechanism",
-           "XY"]
+           "XY", "Body"]
 
 FRAME = "1"
 XY = tuple[float, float]
@@ -248,6 +248,29 @@ class Rates:
     rate2: float | None
 
 
+@dataclass(frozen=True, slots=True)
+class Body:
+    """What a link looks like where its equivalent mechanism does not show it (``[[bodies]]``).
+
+    Drawing only: a body changes no position, velocity or acceleration.  The
+    book draws a cam as its disc and a follower with its flat face even when
+    it solves them as the equivalent pin-in-slot (Sec. 4.6, Example 4.7,
+    Fig. 4.18).  ``kind`` is ``"circle"`` (``center``, ``radius``: a cam
+    disc, a wheel, a roller), ``"face"`` (``points``: a straight face from
+    the first point to the second) or ``"outline"`` (``points``: a closed
+    plate, three or more corners); every coordinate is in the link's own
+    coordinates.
+    """
+
+    index: int
+    link: str
+    kind: str
+    center: XY | None = None
+    radius: float | None = None
+    points: tuple[XY, ...] = ()
+    key: str = "bodies"
+
+
 @dataclass(frozen=True)
 class Mechanism:
     """A planar mechanism at one posture: what a mechanism file says.
@@ -283,6 +306,9 @@ class Mechanism:
     pressure: dict[str, float] = field(default_factory=dict)
     """Rolling pair key (``rolling[0]``) -> pressure angle φ (rad) of gear teeth: the contact
     force acts along the pressure line (Sec. 11.11, Fig. 11.14; an extension of forces.md)."""
+    bodies: tuple[Body, ...] = ()
+    """What links look like where the equivalent mechanism does not show it
+    (``[[bodies]]``: a cam's disc, a follower's face); drawing only."""
 
     @property
     def has_forces(self) -> bool:

@@ -14,6 +14,7 @@ from typing import Any
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
+from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -266,6 +267,7 @@ class _Parser:
                          drives=tuple(drives), rates=rates,
                          assembly=assembly, title=title, length_unit=self.unit,
                          source=self.source, line_points=frozenset(self.line_names),
+                         bodies=read_bodies(data, self.links, self.unit, self.fail, self.xy),
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)

@@ -223,6 +223,9 @@ def _mark(ink: _InkMap, panel: Panel, it: Item) -> None:
         x0 = x - w / 2 if it.ha == "center" else (x if it.ha == "left" else x - w)
         y0 = y - h / 2 if it.va == "center" else (y if it.va in ("bottom", "baseline") else y - h)
         ink.rect(x0, y0, x0 + w, y0 + h)
+        # a fixed text (a panel's title, its scale text) counts as a placed label: no label
+        # may sit on it (issue 11: B_B on the "(d) Cubic" title)
+        ink.take((x0 - 0.02, y0 - 0.02, x0 + w + 0.02, y0 + h + 0.02))
 
 
 def place_labels(panel: Panel) -> None:
@@ -364,8 +367,9 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
     Returns
     -------
     list of (kind, gid, other)
-        ``kind`` is ``label`` (two text boxes overlap) or ``line`` (a text box
-        crosses a line, arc or outline of another group).
+        ``kind`` is ``label`` (two text boxes overlap, or a label overlaps a
+        panel's title, scale text or legend) or ``line`` (a text box crosses a
+        line, arc or outline of another group).
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.text import Text
@@ -381,15 +385,19 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
         boxes: list[tuple[str, str, Any]] = []
         lines: list[Any] = []
         owners: list[str] = []
+        fixed: list[tuple[str, Any]] = []
         for gid, grp in drawing.groups.items():
             for a in grp.get_children():
                 if isinstance(a, Text):
                     tg = a.get_gid() or ""
-                    if not a.get_text().strip() or "title" in tg or "scale-text" in tg:
+                    if not a.get_text().strip():
                         continue
                     bb = a.get_window_extent(renderer)
-                    boxes.append((tg, gid, box(bb.x0 + shrink, bb.y0 + shrink,
-                                               bb.x1 - shrink, bb.y1 - shrink)))
+                    b = box(bb.x0 + shrink, bb.y0 + shrink, bb.x1 - shrink, bb.y1 - shrink)
+                    if "title" in tg or "scale-text" in tg or "legend" in tg:
+                        fixed.append((tg, b))  # a panel's title, scale text, legend: obstacles
+                    else:
+                        boxes.append((tg, gid, b))
                     continue
                 parts = [a]
                 if hasattr(a, "_shaft"):
@@ -415,10 +423,17 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
             for j in btree.query(ba, predicate="intersects"):
                 if int(j) > i and ba.intersection(boxes[int(j)][2]).area > 0:
                     out.append(("label", ga, boxes[int(j)][0]))
+            for gf, bf in fixed:
+                if ba.intersection(bf).area > 0:
+                    out.append(("label", ga, gf))
     if lines:
         tree = STRtree(lines)
         for ga, grp_a, ba in boxes:
             for j in tree.query(ba, predicate="intersects"):
                 if owners[int(j)] != grp_a:
                     out.append(("line", ga, owners[int(j)]))
+        for gf, bf in fixed:  # no construction line runs across a panel's title
+            for j in tree.query(bf, predicate="intersects"):
+                if "title" in gf and "title" not in owners[int(j)]:
+                    out.append(("line", gf, owners[int(j)]))
     return out

@@ -23,11 +23,12 @@ import shapely
 import shapely.ops
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
-from graphkin.mechanisms.model import FRAME, Rolling, Slider, Slot
+from graphkin.mechanisms.model import FRAME, Body, Rolling, Slider, Slot
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, point_text, safe_id
 from graphkin.render.sources import Source
 
-__all__ = ["paint_mechanism", "link_points", "mechanism_extent", "BAR_HALF"]
+__all__ = ["paint_mechanism", "paint_bodies", "body_world", "link_points", "mechanism_extent",
+           "BAR_HALF"]
 
 BAR_HALF = 0.045
 """Half the width of a bar, in inches."""
@@ -72,6 +73,22 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
         ts = [float(u @ (e - p0)) for e in ends]
         tq = float(u @ (q - p0))
         reach = 1.6 * BLOCK[0] * k
+        lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
+        bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
+    # a moving link's straight face that a roller rolls on (a follower's face, Fig. 4.20):
+    # along its line, past the contact point by the roller's radius
+    for r in mech.rolling:
+        if r.on != lid or r.on == FRAME or r.link == lid:
+            continue
+        lw = _line_world(src, r)
+        if lw is None:
+            continue
+        p0, u = lw
+        st = sol.links[lid]
+        assert r.p0 is not None and r.p1 is not None
+        ts = [float(u @ (np.asarray(st.position(e), dtype=float) - p0)) for e in (r.p0, r.p1)]
+        tq = float(u @ (np.asarray(sol.position(r.center, r.link), dtype=float) - p0))
+        reach = max(r.radius, 1.6 * BLOCK[0] * k)
         lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
         bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
     return bars
@@ -187,6 +204,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                     else shapely.union_all([distinct, *bars]).convex_hull)
             c = np.asarray(line.centroid.coords[0])
             _number(panel, g, lid, c, pre, gap=BAR_HALF + 0.03)
+
+    paint_bodies(src, panel, known)
 
     # ---- slots: a slot cut in the link that carries the path ------------
     rolling = mech.rolling
@@ -312,6 +331,54 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                                          f"{pre}label-{safe_id(name)}", g, key=name))
 
 
+def body_world(src: Source, body: Body) -> shapely.Geometry | None:
+    """A ``[[bodies]]`` shape at the solved posture (world coordinates), or None if unsolved.
+
+    A circle is a polygon of 96 sides; a face a line; an outline the polygon
+    through its corners in the order written (its convex hull if it crosses
+    itself).
+    """
+    sol = src.solution
+    if sol is None or body.link not in sol.links:
+        return None
+    st = sol.links[body.link]
+    if body.kind == "circle":
+        assert body.center is not None and body.radius is not None
+        c = np.asarray(st.position(body.center), dtype=float)
+        return Point(float(c[0]), float(c[1])).buffer(body.radius, quad_segs=24)
+    pts = [tuple(np.asarray(st.position(p), dtype=float)) for p in body.points]
+    if body.kind == "face":
+        return LineString(pts)
+    poly = Polygon(pts)
+    return poly if poly.is_valid and poly.area > 0 else MultiPoint(pts).convex_hull
+
+
+def paint_bodies(src: Source, panel: Panel, known: set[str] | None) -> None:
+    """Draw the ``[[bodies]]`` of the file: cam discs, rollers, faces, plates (Fig. 4.18).
+
+    A disc or plate is shaded behind the links (the book's cam, Figs. 4.18 and
+    4.20); a face is a bar of the link's width.  A body is drawn once every
+    point of its link is constructed.
+    """
+    mech = src.mechanism
+    if mech is None or src.solution is None:
+        return
+    k = panel.k
+    for body in mech.bodies:
+        if known is not None and not all(n in known for n in mech.links[body.link].points):
+            continue
+        geom = body_world(src, body)
+        if geom is None:
+            continue
+        g = panel.group(f"{panel.prefix}body-{body.index}", 0.9, key=f"link {body.link}")
+        if body.kind == "face":
+            geom = geom.buffer(BAR_HALF * k, quad_segs=6)
+        if isinstance(geom, Polygon) and not geom.is_empty:
+            g.items.append(Item("polygon", _ring(geom),
+                                "link" if body.kind == "face" else "plate",
+                                key=f"link {body.link}"))
+
+
 def _ground(a: np.ndarray, b: np.ndarray, out: np.ndarray, k: float) -> list[Item]:
     """A ground line from ``a`` to ``b`` with short slanted hatch strokes on the ``out`` side."""
     items = [Item("path", np.array([a, b]), "ground-line")]
@@ -374,4 +441,9 @@ def mechanism_extent(src: Source) -> list[np.ndarray]:
     for r in mech.rolling:
         c = np.asarray(sol.position(r.center, r.link), dtype=float)
         out.extend([c - r.radius, c + r.radius])
+    for body in mech.bodies:
+        geom = body_world(src, body)
+        if geom is not None:
+            x0, y0, x1, y1 = geom.bounds
+            out.extend([np.array([x0, y0]), np.array([x1, y1])])
     return out

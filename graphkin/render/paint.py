@@ -34,6 +34,7 @@ import numpy as np
 
 from graphkin.construction import Construction, Role, Step
 from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.render.joint_angle import angle_arc, joint_arc
 from graphkin.render.scale import fmt
 from graphkin.render.scene import (
     Group,
@@ -42,7 +43,9 @@ from graphkin.render.scene import (
     Panel,
     clip_segment,
     construction_text,
+    far_reference,
     finite_xy,
+    inside_spans,
     point_text,
     safe_id,
     sub_digits,
@@ -195,6 +198,8 @@ class StepPainter:
         self.drawn_points: set[str] = set()
         self.arrows: dict[str, dict[tuple[float, ...], Item]] = {}
         self.arrow_ends: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+        # far points shown per panel: (direction from the reference, the label asked for)
+        self.far: dict[str, list[tuple[np.ndarray, LabelRequest]]] = {}
         self._helper_xy: list[np.ndarray] | None = None
         self.quiet_rates = False
         """Leave angular rates off the mechanism (a sheet of every diagram lists them)."""
@@ -300,13 +305,41 @@ class StepPainter:
         return it
 
     def off_sheet(self, panel: Panel, g: Group, label: str, xy: np.ndarray) -> None:
-        """A point beyond the panel: an arrow at the edge toward it, with its coordinates."""
-        x0, y0, x1, y1 = panel.view
-        c = np.array([(x0 + x1) / 2, (y0 + y1) / 2])
+        """A finite point beyond the panel: an arrow toward it, named, with its distance.
+
+        As a book figure does when a point does not fit (the far Γ of
+        Fig. 4.35): the arrow points from the velocity pole (P, or I in the
+        cubic of Figs. 4.37-4.39) when the panel shows it, else from the
+        nearest point of the mechanism in the panel, and reads
+        "Γ_T, 254 in from P" -- never raw coordinates.
+        """
         name = construction_text(label) if panel.plane == "posture" else image_text(label)
-        self.ideal(panel, g, label, np.array([*(xy - c), 0.0]),
-                   text=f"{name}"
-                        f" ({fmt(xy[0], 4)}, {fmt(xy[1], 4)})", center=c)
+        ref_name, ref = self.reference_for(panel, label, xy)
+        dist = float(np.hypot(*(xy - ref)))
+        unit = f" {panel.unit}" if panel.unit else ""
+        who = construction_text(ref_name) if panel.plane == "posture" else image_text(ref_name)
+        text = f"{name}, {fmt(dist, 3)}{unit} from {who}" if ref_name else \
+            f"{name}, {fmt(dist, 3)}{unit} off the figure"
+        d = _unit(xy - ref)
+        if d is None:
+            return
+        shown = self.far.setdefault(panel.name, [])
+        for d0, req in shown:
+            if float(d @ d0) > math.cos(math.radians(8.0)):
+                # one arrow for points that lie the same way, their labels beside it
+                panel.labels.append(LabelRequest(text, req.anchor, req.style,
+                                                 self.prefix + "label-" + safe_id(label), g,
+                                                 key=label, gap=req.gap, prefer=req.prefer))
+                return
+        n = len(panel.labels)
+        self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref)
+        if len(panel.labels) > n:
+            shown.append((d, panel.labels[-1]))
+
+    def reference_for(self, panel: Panel, label: str, xy: np.ndarray
+                      ) -> tuple[str, np.ndarray]:
+        """The point an off-panel point's distance is given from: see :func:`far_reference`."""
+        return far_reference(panel, label, xy, self.xy, self.src.mechanism, self.src.solution)
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
               center: np.ndarray | None = None) -> None:
@@ -314,7 +347,7 @@ class StepPainter:
         d = _unit(np.asarray(p[:2], dtype=float))
         if d is None:
             return
-        x0, y0, x1, y1 = panel.inner or panel.view  # clear of the title and the scale bar
+        x0, y0, x1, y1 = panel.inner or panel.view  # clear of the title and scale strips
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
         ts = []
         for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
@@ -341,9 +374,11 @@ class StepPainter:
                 if np.all(np.isfinite(p)):
                     self.ideal(panel, g, label, p)
                 continue
-            x0, y0, x1, y1 = panel.view
+            x0, y0, x1, y1 = panel.inner or panel.view  # the title strip is no drawing room
             if not (x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1):
-                if step.role != Role.AUXILIARY:
+                # a helper point a later line is drawn through (W of Bobillier's
+                # construction, Fig. 4.29) is shown too: the reader must find it
+                if step.role != Role.AUXILIARY or self.consumers.get(label):
                     self.off_sheet(panel, g, label, xy)
                 continue
             if panel.plane == "posture":
@@ -593,14 +628,23 @@ class StepPainter:
                     if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
                         cuts.append(q)
         if not cuts or step.role == Role.RESULT:
-            g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
-                                gid=safe_id(self.prefix + label.replace(" ", "-"))))
+            gid = safe_id(self.prefix + label.replace(" ", "-"))
+            spans = inside_spans(center, r, panel.inner or panel.view)
+            if spans is None:
+                g.items.append(Item("circle", np.array([center]), style, key=label, radius=r,
+                                    gid=gid))
+            else:  # a circle larger than the drawing: the arcs inside it, clear of the title
+                for i, (t1, t2) in enumerate(spans):
+                    g.items.append(Item("arc", np.array([center]), style,
+                                        key=label if i == 0 else f"{label}:{i}", radius=r,
+                                        theta1=t1, theta2=t2,
+                                        gid=gid if i == 0 else f"{gid}-{i}"))
             if label.split("*")[0] in ("inflection circle", "Bresse circle"):
                 top = center + np.array([0.0, r])
-                x0, y0, x1, y1 = panel.inner or panel.view
-                mid = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) - center
-                if not (x0 <= top[0] <= x1 and y0 <= top[1] <= y1) and np.hypot(*mid) > 0:
-                    top = center + r * mid / np.hypot(*mid)  # a huge circle: its visible part
+                if spans:  # its top is off the drawing: letter it in the middle of its arc
+                    t1, t2 = max(spans, key=lambda sp: sp[1] - sp[0])
+                    mid = math.radians((t1 + t2) / 2)
+                    top = center + r * np.array([math.cos(mid), math.sin(mid)])
                 self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
                            label, style="label-small", prefer=(0.0, 1.0))
             return
@@ -642,7 +686,7 @@ class StepPainter:
         value = float(v)
         sym, lid = label[:1], label[1:]
         if sym == "θ" and step.op == "input" and "/" in lid:
-            self.joint_arc(g, panel, lid, value, label)
+            joint_arc(self, g, panel, lid, value, label)
             return
         if sym in ("ω", "α"):
             rates = [abs(float(self.values[f"{sym}{x}"])) for x in mech.links
@@ -657,7 +701,9 @@ class StepPainter:
             return
         k = panel.k
         if sym == "θ" and step.op == "input":
-            self.angle_arc(g, panel, center, value, label)
+            lid = label[1:]
+            angle_arc(self, g, panel, center, 0.0, value, label,
+                      f"θ{sub_digits('x' + lid)[1:]} = {fmt(math.degrees(value), 5)}°")
         elif sym in ("ω", "α") and not self.quiet_rates and not (
                 value == 0 and step.op in ("add_angle", "scalar")):
             unit = "rad/s" if sym == "ω" else "rad/s²"
@@ -683,58 +729,6 @@ class StepPainter:
                                                             math.sin(start + sweep / 2)])
             self.label(panel, g, text, mid, label, style="label-small", gap=0.05,
                        prefer=(math.cos(start + sweep / 2), math.sin(start + sweep / 2)))
-
-    def angle_arc(self, g: Group, panel: Panel, pivot: np.ndarray, theta: float,
-                  label: str) -> None:
-        """The input angle: a datum line along +x and an arc to the link (θ2 = 120°)."""
-        k = panel.k
-        r = 0.32 * k
-        g.items.append(Item("path", np.array([pivot, pivot + [0.5 * k, 0.0]]), "datum",
-                            key=f"{label}:datum"))
-        t = math.atan2(math.sin(theta), math.cos(theta))
-        ts = np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3), 2) + 1)
-        pts = pivot + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
-        g.items.append(Item("path", pts, "angle-arc", key=label))
-        if len(pts) >= 3:
-            head = min(0.07 * k, 0.5 * r * abs(t))
-            it = Item("arrow", np.array([pts[-3], pts[-1]]), "angle-arc", key=f"{label}:head",
-                      head=head, width=head * 0.35)
-            g.items.append(it)
-        mid = pivot + (r + 0.02 * k) * np.array([math.cos(t / 2), math.sin(t / 2)])
-        lid = label[1:]
-        self.label(panel, g, f"θ{sub_digits('x' + lid)[1:]} = {fmt(math.degrees(theta), 5)}°",
-                   mid, label, style="label-small", gap=0.04,
-                   prefer=(math.cos(t / 2), math.sin(t / 2)))
-
-
-    def joint_arc(self, g: Group, panel: Panel, pair: str, theta: float, label: str) -> None:
-        """A joint angle θi/j (a robot's elbow, P5.7): an arc at their pin from link j's axis."""
-        mech, sol = self.src.mechanism, self.src.solution
-        assert mech is not None and sol is not None
-        i, _, j = pair.partition("/")
-        pin = next((p.name for p in mech.pins if i in p.links and j in p.links), None)
-        if pin is None or j not in sol.links:
-            return
-        pivot = np.asarray(sol.position(pin), dtype=float)
-        base = float(sol.links[j].angle)
-        k = panel.k
-        r = 0.32 * k
-        d = np.array([math.cos(base), math.sin(base)])
-        g.items.append(Item("path", np.array([pivot, pivot + 0.5 * k * d]), "datum",
-                            key=f"{label}:datum"))
-        t = math.remainder(theta, 2 * math.pi)
-        ts = base + np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3), 2) + 1)
-        pts = pivot + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
-        g.items.append(Item("path", pts, "angle-arc", key=label))
-        if len(pts) >= 3:
-            head = min(0.07 * k, 0.5 * r * abs(t))
-            g.items.append(Item("arrow", np.array([pts[-3], pts[-1]]), "angle-arc",
-                                key=f"{label}:head", head=head, width=head * 0.35))
-        mid = base + t / 2
-        at = pivot + (r + 0.02 * k) * np.array([math.cos(mid), math.sin(mid)])
-        text = f"θ{sub_digits('x' + i)[1:]}/{sub_digits('x' + j)[1:]} = {fmt(math.degrees(t), 5)}°"
-        self.label(panel, g, text, at, label, style="label-small", gap=0.04,
-                   prefer=(math.cos(mid), math.sin(mid)))
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:

@@ -244,27 +244,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             ax.set_xlabel(_drive_label(sw))
         elif item == "path":
             assert which is not None
-            _check_point(sw, which)
-            px = np.asarray(cols[f"x_{which}"], dtype=float)
-            py = np.asarray(cols[f"y_{which}"], dtype=float)
-            (line,) = ax.plot(px, py, lw=1.2, label=f"path of {which}")
-            line.set_gid(f"path-{which}")
-            ok = np.flatnonzero(np.isfinite(px) & np.isfinite(py))
-            if ok.size:
-                (m,) = ax.plot(px[ok[0]], py[ok[0]], "o", ms=4)
-                m.set_gid(f"path-{which}-start")
-            frame = sw.mechanism.links[FRAME].points
-            if frame:
-                fx, fy = zip(*frame.values())
-                (pivots,) = ax.plot(fx, fy, "^", ms=6, color="0.3")
-                pivots.set_gid("frame-pivots")
-            if rated and ok.size:
-                _curvature_marks(ax, sw, which, int(ok[0]))
-            ax.set_aspect("equal", adjustable="datalim")
-            unit = sw.mechanism.length_unit
-            ax.set_xlabel(f"x, {unit}")
-            ax.set_ylabel(f"y, {unit}")
-            ax.set_title(plain(f"path of {which}{_path_kind(sw, which)}"), fontsize="medium")
+            _path_panel(ax, sw, which, rated)
         elif item == "center":
             assert which is not None
             _center_path(ax, sw, which)
@@ -299,16 +279,115 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
 
 
 def _path_kind(sw: Sweep, name: str) -> str:
-    """What the path of a point is called: a slider's line, a coupler curve, a circle."""
+    """What the path of a point is called: a slider's position, a circle, a coupler curve.
+
+    A point that runs on a line of the frame is a slider's point: its path is
+    the position of that slider.  A point of a link pinned to the frame
+    moves on a circle about the pivot.  Any other point of a moving link
+    traces a coupler curve (Sec. 2.13).
+    """
     mech = sw.mechanism
     for s in mech.sliders:
-        if s.point == name:
-            return f" (slider {s.link})"
+        if s.point == name and s.on == FRAME:
+            return f"position of slider {s.link}"
     owners = [lid for lid in mech.point_links.get(name, []) if lid != FRAME]
-    frame = set(mech.links[FRAME].points)
-    if any(not (frame & set(mech.links[lid].points)) for lid in owners):
-        return " (coupler curve)"
-    return ""
+    frame = mech.links[FRAME].points
+    for lid in owners:
+        pivots = [n for n in mech.links[lid].points if n in frame and n != name]
+        if pivots:
+            return f"circle about {pivots[0]}"
+    if name in frame:
+        return "fixed point"
+    return "coupler curve"
+
+
+def _path_panel(ax: Any, sw: Sweep, which: str, rated: bool) -> None:
+    """The path of a point, framed around the curve, with the mechanism drawn faintly.
+
+    The view is the curve's own extent and the mechanism's at the file's
+    posture (with a margin), not the reach of every point over the cycle nor
+    far construction points (Ball's point may lie outside); the mechanism
+    stands in light grey at that posture, and a legend names the curve, its
+    start, the mechanism and the fixed pivots.
+    """
+    _check_point(sw, which)
+    cols = sw.columns
+    px = np.asarray(cols[f"x_{which}"], dtype=float)
+    py = np.asarray(cols[f"y_{which}"], dtype=float)
+    kind = _path_kind(sw, which)
+    (line,) = ax.plot(px, py, lw=1.4, label=plain(f"{kind} ({which})"), zorder=3)
+    line.set_gid(f"path-{which}")
+    ok = np.flatnonzero(np.isfinite(px) & np.isfinite(py))
+    if ok.size:
+        start = float(cols["drive"][ok[0]])
+        unit = "°" if sw.drive.kind == "angle" else f" {sw.mechanism.length_unit}"
+        sym = "θ" if sw.drive.kind == "angle" else "s"
+        (m,) = ax.plot(px[ok[0]], py[ok[0]], "o", ms=4, zorder=4,
+                       label=plain(f"start, {sym}{sw.drive.link} = {start:.4g}{unit}"))
+        m.set_gid(f"path-{which}-start")
+    posture = _faint_mechanism(ax, sw)
+    frame = {n: q for n, q in sw.mechanism.links[FRAME].points.items()
+             if n not in sw.mechanism.helper_points}  # a slider line's points are no pivots
+    if frame:
+        fx, fy = zip(*frame.values())
+        (pivots,) = ax.plot(fx, fy, "^", ms=6, color="0.3", label="fixed pivots", zorder=4)
+        pivots.set_gid("frame-pivots")
+    if rated and ok.size:
+        _curvature_marks(ax, sw, which, int(ok[0]))
+    ax.set_aspect("equal", adjustable="box")
+    if ok.size:
+        # the curve and the mechanism at one posture: not every point's reach over the cycle
+        xs = np.concatenate([px[ok], posture[:, 0]])
+        ys = np.concatenate([py[ok], posture[:, 1]])
+        x0, x1, y0, y1 = float(xs.min()), float(xs.max()), float(ys.min()), float(ys.max())
+        pad = 0.08 * max(x1 - x0, y1 - y0) + 0.02 * sw.mechanism.size
+        ax.set_xlim(x0 - pad, x1 + pad)
+        ax.set_ylim(y0 - pad, y1 + pad)
+    unit = sw.mechanism.length_unit
+    ax.set_xlabel(f"x, {unit}")
+    ax.set_ylabel(f"y, {unit}")
+    ax.set_title(plain(f"path of {which}: {kind}"), fontsize="medium")
+    ax.legend(loc="best", fontsize="small", frameon=True, framealpha=0.85)
+
+
+def _faint_mechanism(ax: Any, sw: Sweep) -> np.ndarray:
+    """The mechanism at the file's posture in light grey (each link the outline of its points).
+
+    Returns the points drawn (an empty (0, 2) array when the posture cannot be assembled).
+    """
+    mech = sw.mechanism
+    drawn: list[np.ndarray] = [np.zeros((0, 2))]
+    try:
+        sol = mech.solve()
+    except GraphkinError:
+        return drawn[0]  # the file's own posture cannot be assembled: the curve alone
+    d = mech.drives[0] if mech.drives else None
+    at = ""
+    if d is not None:
+        at = (f" (θ{d.link} = {np.degrees(d.value):.4g}°)" if d.kind == "angle"
+              else f" (s{d.link} = {d.value:.4g} {mech.length_unit})")
+    first = True
+    for lid in mech.moving:
+        names = [n for n in mech.links[lid].points if n not in mech.helper_points]
+        pts = np.array([sol.position(n, lid) for n in names], dtype=float)
+        if not len(pts) or not np.all(np.isfinite(pts)):
+            continue
+        if len(pts) >= 3:
+            from shapely.geometry import MultiPoint
+
+            hull = MultiPoint([tuple(p) for p in pts]).convex_hull
+            if hull.geom_type == "Polygon":
+                pts = np.asarray(hull.exterior.coords)
+        (ln,) = ax.plot(pts[:, 0], pts[:, 1], "-o", color="0.72", lw=2.0, ms=3.5, mfc="white",
+                        zorder=1, label=plain(f"mechanism{at}") if first else None)
+        ln.set_gid(f"mechanism-link-{lid}")
+        drawn.append(pts)
+        first = False
+    for s in mech.sliders:
+        q = np.asarray(sol.position(s.point, s.link), dtype=float)
+        (blk,) = ax.plot(*q, "s", ms=8, mfc="white", mec="0.6", zorder=1)
+        blk.set_gid(f"mechanism-slider-{s.link}")
+    return np.vstack(drawn)
 
 
 def _clip_toggles(ax: Any, x: np.ndarray, ys: list[np.ndarray]) -> None:

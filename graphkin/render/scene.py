@@ -15,6 +15,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (a construction, step by step).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -25,7 +26,8 @@ from graphkin.render.scale import Scale
 from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text", "construction_text"]
+           "sub_digits", "point_text", "construction_text", "inside_spans",
+           "far_reference"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -132,6 +134,75 @@ def clip_segment(p0: np.ndarray, p1: np.ndarray,
         if t0 > t1:
             return None
     return p0 + t0 * d, p0 + t1 * d
+
+def inside_spans(center: np.ndarray, r: float, box: tuple[float, float, float, float]
+                  ) -> list[tuple[float, float]] | None:
+    """The arcs (degrees, counterclockwise) of a circle inside ``box``; None if all of it is.
+
+    A circle that runs out of the panel's drawing area (into the title strip
+    or the scale bar's) is drawn as the arcs that stay inside, so no
+    construction line crosses a panel's title.
+    """
+    x0, y0, x1, y1 = box
+    if (center[0] - r >= x0 and center[0] + r <= x1 and center[1] - r >= y0
+            and center[1] + r <= y1):
+        return None
+    n = 1440
+    ts = np.linspace(0.0, 360.0, n, endpoint=False)
+    xs = center[0] + r * np.cos(np.radians(ts))
+    ys = center[1] + r * np.sin(np.radians(ts))
+    inside = (xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)
+    if inside.all():
+        return None
+    if not inside.any():
+        return []
+    start = int(np.flatnonzero(~inside)[0])  # begin at a point outside: runs never wrap
+    order = np.roll(np.arange(n), -start)
+    spans: list[tuple[float, float]] = []
+    run: list[int] = []
+    for i in order:
+        if inside[i]:
+            run.append(int(i))
+        elif run:
+            spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
+            run = []
+    if run:
+        spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
+    return spans
+
+
+def far_reference(panel: Panel, label: str, xy: np.ndarray,
+                  value: Callable[[str], np.ndarray | None], mech: Any, sol: Any
+                  ) -> tuple[str, np.ndarray]:
+    """The point an off-panel point's distance is given from: the pole, else the nearest pin.
+
+    The velocity pole P (Sec. 4.14), or I (Figs. 4.37-4.39), when the panel
+    shows it; else the nearest named point of the mechanism in the panel.
+    ``value(name)`` gives a construction point's finite coordinates.  Returns
+    ``("", centre of the panel)`` when no named point is in the panel.
+    """
+    x0, y0, x1, y1 = panel.inner or panel.view
+
+    def inside(q: np.ndarray) -> bool:
+        return bool(x0 <= q[0] <= x1 and y0 <= q[1] <= y1)
+
+    if panel.plane == "posture":
+        for name in ("P", "I"):  # the velocity pole: P (Sec. 4.14), I (Figs. 4.37-4.39)
+            pole = value(name) if label != name else None
+            if pole is not None and inside(pole):
+                return name, pole
+        if mech is not None and sol is not None:
+            best: tuple[float, str, np.ndarray] | None = None
+            for n in mech.point_names:
+                if n in mech.helper_points:
+                    continue
+                q = np.asarray(sol.position(n), dtype=float)
+                d = float(np.hypot(*(xy - q)))
+                if inside(q) and (best is None or d < best[0]):
+                    best = (d, n, q)
+            if best is not None:
+                return best[1], best[2]
+    return "", np.array([(x0 + x1) / 2, (y0 + y1) / 2])
 
 
 @dataclass

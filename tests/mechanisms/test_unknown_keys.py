@@ -91,6 +91,8 @@ TABLES = [
     ("forces", "gravity", "acceleraton", "acceleration"),
     ("gallery/mechanisms/fig3_7_fourbar.toml", "gallery", "figuer", "figure"),
     ("gallery/mechanisms/fig3_7_fourbar.toml", "gallery.book[0]", "quanity", "quantity"),
+    ("gallery/mechanisms/fig4_18_cam_follower.toml", "bodies[1]", "fase", "face"),
+    ("gallery/mechanisms/fig4_18_cam_follower.toml", "bodies[0].circle", "raduis", "radius"),
 ]
 
 

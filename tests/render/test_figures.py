@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 
+import numpy as np
 import pytest
 from spec_data import EXAMPLES
 
@@ -115,3 +116,57 @@ def test_a_started_drawing_does_not_print_the_answers_it_has_not_reached(gk):
     assert "V_B" in keys and "V_C" not in keys and "omega3" not in keys
     full = {r.key for r in draw(sol, "velocity").sheet.rows}
     assert {"V_C", "omega3"} <= full
+
+
+CURVATURE_DIAGRAMS = ["inflection", "bobillier", "hartmann", "cubic"]
+
+
+@pytest.mark.parametrize("name", ["ex3_1_fourbar", "ex4_14_inflection_bresse", "ex4_16_cubic"])
+@pytest.mark.parametrize("diagram", CURVATURE_DIAGRAMS)
+def test_a_far_point_is_named_with_its_distance_never_its_coordinates(gk, name, diagram):
+    # A point beyond the panel is an arrow toward it labelled with its name and its distance
+    # from the pole ("Γ_T, 254 in from P"), as the book would; never "G_T (-189.9, -167.5)".
+    parser = ET.XMLParser(target=ET.TreeBuilder(insert_comments=True))
+    root = ET.fromstring(gk.svg(name, diagram), parser=parser)
+    seen = 0
+    coords = re.compile(r"\(\s*-?[\d.]+(e[-+]?\d+)?\s*,\s*-?[\d.]+(e[-+]?\d+)?\s*\)")
+    for el in root.iter():
+        gid = el.get("id") or ""
+        if not gid.startswith("label-"):
+            continue
+        text = " ".join(c.text or "" for c in el.iter(ET.Comment))
+        seen += bool(text.strip())
+        assert not coords.search(text), (gid, text)
+    assert seen >= 1  # the labels' texts were read
+
+
+@pytest.mark.parametrize("diagram,point", [("cubic", "G_T"), ("bobillier", "W")])
+def test_a_far_point_gives_its_distance_from_the_pole(gk, diagram, point):
+    # Example 3.1: G_T of Hain's construction (Fig. 4.38) and W of Bobillier's (Fig. 4.29,
+    # x = -35.6 in) lie beyond their panels; each is an arrow whose label gives its distance
+    # |point - I| computed here from the construction's own values.
+    d = gk.drawn("ex3_1_fourbar", diagram)
+    painter = d.sheet.painters[diagram]
+    far, pole = painter.xy(point), painter.xy("I")
+    x0, y0, x1, y1 = d.sheet.panels[0].inner
+    assert not (x0 <= far[0] <= x1 and y0 <= far[1] <= y1)  # it is off the drawing
+    texts = [t.get_text() for t in d.texts.values()]
+    name = "$G_{T}$" if point == "G_T" else point
+    text = next((t for t in texts if t.startswith(name + ",")), None)
+    assert text is not None, texts
+    m = re.search(r", ([\d.]+) in from I$", text)
+    assert m is not None, text
+    assert float(m.group(1)) == pytest.approx(float(np.hypot(*(far - pole))), rel=5e-3)
+
+
+def test_a_circle_cut_by_the_title_strip_is_drawn_as_the_arcs_inside():
+    from graphkin.render.scene import inside_spans
+
+    # a unit circle under the line y = 0.5: sin t <= 0.5 outside 30° < t < 150°, so one arc
+    # from 150° to 390° (240°) stays inside; a circle well inside is drawn whole (None)
+    spans = inside_spans(np.array([0.0, 0.0]), 1.0, (-2.0, -2.0, 2.0, 0.5))
+    assert spans is not None and len(spans) == 1
+    t1, t2 = spans[0]
+    assert t1 == pytest.approx(150.0, abs=0.3) and t2 - t1 == pytest.approx(240.0, abs=0.6)
+    assert inside_spans(np.array([0.0, 0.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) is None
+    assert inside_spans(np.array([9.0, 9.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) == []

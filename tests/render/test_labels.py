@@ -65,3 +65,17 @@ def test_collisions_finds_an_overlap():
     a, b = d.texts["B"], d.texts["C"]
     b.set_position(a.get_position())
     assert any(kind == "label" for kind, *_ in collisions(d))
+
+
+@pytest.mark.parametrize("target", ["title-text-cubic", "scale-text-cubic"])
+def test_collisions_finds_a_label_on_a_panel_title_or_scale(target):
+    # a panel's title and scale text are obstacles: a label moved onto one is reported
+    d = draw(_solved(EXAMPLES / "ex3_1_fourbar.toml"), "cubic")
+    assert not [c for c in collisions(d) if c[2] == target]
+    fixed = next(t for t in d.figure.findobj() if getattr(t, "get_gid", lambda: None)() == target)
+    label = d.texts["B"]
+    label.set_transform(fixed.get_transform())
+    label.set_position(fixed.get_position())
+    label.set_ha(fixed.get_ha())
+    label.set_va(fixed.get_va())
+    assert ("label", label.get_gid(), target) in collisions(d)

@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import io
+import xml.etree.ElementTree as ET
+
 import numpy as np
+import pytest
 from spec_data import EXAMPLES
 
 import graphkin
@@ -31,5 +35,52 @@ def test_a_slider_path_is_named_by_its_slider():
     sw = graphkin.load(EXAMPLES / "ex3_2_slider_driven.toml").sweep(count=37)
     fig = sweep_figure(sw, "path:C,path:D")
     titles = [ax.get_title() for ax in fig.axes]
-    assert titles[0] == "path of C (slider 4)"
-    assert titles[1] == "path of D (coupler curve)"
+    # C runs on the frame's line: its path is the slider's position, never a "coupler curve";
+    # D is a point of the coupler 3 only (no frame pivot on its link): a coupler curve
+    assert titles[0] == "path of C: position of slider 4"
+    assert titles[1] == "path of D: coupler curve"
+    assert "position of slider 4 (C)" in [t.get_text() for t in fig.axes[0].get_legend().texts]
+
+
+def _svg_ids(fig) -> set[str]:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="svg")
+    return {el.get("id") for el in ET.fromstring(buf.getvalue()).iter() if el.get("id")}
+
+
+def test_a_coupler_curve_is_framed_around_it_with_the_mechanism_faint_and_a_legend():
+    mech = graphkin.examples.crank_rocker()
+    sw = mech.sweep(count=180)
+    fig = sweep_figure(sw, "path:P")
+    ids = _svg_ids(fig)
+    assert {"path-P", "path-P-start", "frame-pivots"} <= ids
+    assert all(f"mechanism-link-{lid}" in ids for lid in mech.moving)  # the faint mechanism
+    ax = fig.axes[0]
+    legend = [t.get_text() for t in ax.get_legend().texts]
+    assert legend[0] == "coupler curve (P)" and any(t.startswith("mechanism") for t in legend)
+    # the frame: the curve and the mechanism at the file's posture (from the solver), with a
+    # margin of at most a quarter of that extent -- not every point's reach nor Ball's point
+    sol = mech.solve()
+    pts = np.array([sol.position(n) for n in mech.point_names], dtype=float)
+    px, py = (np.asarray(sw.columns[k], dtype=float) for k in ("x_P", "y_P"))
+    xs, ys = np.concatenate([px, pts[:, 0]]), np.concatenate([py, pts[:, 1]])
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    assert x0 <= xs.min() and xs.max() <= x1 and y0 <= ys.min() and ys.max() <= y1
+    span = max(np.ptp(xs), np.ptp(ys))
+    assert max(x1 - x0, y1 - y0) <= 1.25 * span + 0.05 * mech.size
+
+
+@pytest.mark.parametrize("item", ["omega", "alpha"])
+def test_toggle_and_dead_zone_read_back_from_the_svg(item):
+    # Example 3.1 (not Grashof, Sec. 1.10): the drive cannot pass two limit postures; near them
+    # ω and α run away -- clipped and marked, and the dead zone shaded and named in the legend
+    sw = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml").sweep(count=721)
+    fig = sweep_figure(sw, item)
+    ids = _svg_ids(fig)
+    assert any(i.startswith("toggle-") for i in ids)
+    assert any(i.startswith("unassembled-") for i in ids)
+    legend = [t.get_text() for t in fig.axes[0].get_legend().texts]
+    assert "cannot be assembled" in legend and "near a toggle (clipped)" in legend
+    y = np.array([sw.columns[f"{item}_{k}"] for k in ("2", "3", "4")], dtype=float)
+    lo, hi = fig.axes[0].get_ylim()
+    assert np.isfinite([lo, hi]).all() and max(hi, -lo) < np.nanmax(np.abs(y))
