@@ -37,6 +37,12 @@ from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
 from graphkin.kinematics import posture_drives as pd
+from graphkin.kinematics.posture_branches import (
+    _differ_tolerance,
+    _hint_distance,
+    _layout_distance,
+    _new_points,
+)
 from graphkin.mechanisms.model import FRAME, XY, Drive, Mechanism, Slider, Slot
 from graphkin.tolerance import Tolerance
 
@@ -633,53 +639,6 @@ def _fork(b: _Builder) -> _Builder:
     t.notes = list(b.notes)
     t.events = list(b.events)
     return t
-
-
-def _new_points(b: _Builder, t: _Builder) -> list[str]:
-    """Labels of the points ``t`` constructed beyond ``b`` (its new steps' outputs)."""
-    return [o for st in t.cx.steps[len(b.cx.steps):] if st.kind == "point" for o in st.outputs]
-
-
-def _hint_distance(t: _Builder, names: list[str], origin: np.ndarray) -> float:
-    """Mean distance of the named points from their assembly hints.
-
-    Both are taken relative to ``origin`` (a point of the mechanism), so that
-    a mechanism far from the origin loses no digits to its offset.
-    """
-    hints = t.mech.assembly
-    return float(np.mean([np.hypot(*((g.xy(t.env[n]) - origin)
-                                     - (np.asarray(hints[n]) - origin))) for n in names]))
-
-
-def _layout_distance(b: _Builder, t: _Builder) -> float:
-    """How far the links ``t`` placed beyond ``b`` are turned from their own drawing in the file.
-
-    Each link's points are compared with where they would be if the link kept
-    the orientation of its own coordinates (its x axis along the frame's).
-    """
-    total = 0.0
-    for lid in t.placed - b.placed:
-        if lid == FRAME or lid not in t.anchor:
-            continue
-        anchor, aloc = t.anchor[lid]
-        pa = g.xy(t.env[anchor])
-        for name, loc in t.mech.links[lid].points.items():
-            if name in t.env:
-                drawn = pa + np.subtract(loc, aloc)
-                total += float(np.hypot(*(g.xy(t.env[name]) - drawn)))
-    return total
-
-
-def _differ_tolerance(b: _Builder, at: np.ndarray) -> float:
-    """When two branches' positions of a point count as different.
-
-    Relative to the mechanism's own size (not to its distance from the
-    origin), with a floor of the round-off of coordinates as large as ``at``:
-    a slider-crank scaled by 1e-12 or moved 1e9 from the origin takes the
-    branch its hints ask for.
-    """
-    eps = float(np.finfo(float).eps)
-    return max(1e-6 * b.mech.size, 1e3 * eps * float(np.max(np.abs(at), initial=0.0)))
 
 
 def _try(b: _Builder, group: _Group,
