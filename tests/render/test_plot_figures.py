@@ -84,3 +84,35 @@ def test_toggle_and_dead_zone_read_back_from_the_svg(item):
     y = np.array([sw.columns[f"{item}_{k}"] for k in ("2", "3", "4")], dtype=float)
     lo, hi = fig.axes[0].get_ylim()
     assert np.isfinite([lo, hi]).all() and max(hi, -lo) < np.nanmax(np.abs(y))
+
+
+def test_the_toggles_are_marked_where_crank_and_coupler_line_up():
+    # Example 3.2 (slider-driven, crank 50, coupler 140, slide 20 mm below the crank pivot):
+    # the toggles are where crank and coupler line up, |O2 C| = 140 - 50 or 140 + 50, so the
+    # slider is at x = sqrt(90² - 20²) = 87.75 mm or sqrt(190² - 20²) = 188.94 mm; α runs
+    # away there and the plot marks both.
+    sw = graphkin.load(EXAMPLES / "ex3_2_slider_driven.toml").sweep(count=721)
+    fig = sweep_figure(sw, "alpha")
+    marks = sorted(float(i[len("toggle-"):]) for i in _svg_ids(fig) if i.startswith("toggle-"))
+    toggles = (np.sqrt(90.0**2 - 20.0**2), np.sqrt(190.0**2 - 20.0**2))
+    assert marks and all(min(abs(m - t) for t in toggles) < 4.0 for m in marks), marks
+    assert all(any(abs(m - t) < 4.0 for m in marks) for t in toggles), marks
+
+
+def test_the_dead_zone_is_where_the_law_of_cosines_says():
+    # Example 3.1 (ground 10, crank 4, coupler 18, rocker 11 in): B is at least 18 - 11 = 7 in
+    # from D only while 4² + 10² - 2·4·10 cos θ2 >= 7², i.e. outside |θ2| < arccos(67/80) =
+    # 33.12°: no assembly from 326.88° to 393.12°, one shaded span.
+    sw = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml").sweep(count=720)
+    fig = sweep_figure(sw, "omega")
+    spans = [p for p in fig.axes[0].patches if (p.get_gid() or "").startswith("unassembled-")]
+    assert len(spans) == 1
+    xs = spans[0].get_path().transformed(spans[0].get_patch_transform()).vertices[:, 0]
+    half = np.degrees(np.arccos(67.0 / 80.0))
+    step = 360.0 / 720
+    x0 = float(np.asarray(sw.drive_values)[0])
+    lo, hi = 360.0 - half, 360.0 + half
+    # the sweep may start anywhere: compare modulo a turn from its first angle
+    wrap = lambda v: x0 + (v - x0) % 360.0  # noqa: E731
+    assert wrap(min(xs)) == pytest.approx(wrap(lo), abs=2 * step)
+    assert max(xs) - min(xs) == pytest.approx(hi - lo, abs=3 * step)
