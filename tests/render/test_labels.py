@@ -31,7 +31,21 @@ def _solved(path: Path) -> graphkin.Solution:
     return graphkin.load(path).solve()
 
 
-@pytest.mark.parametrize("path", FILES, ids=lambda p: f"{p.parent.name}/{p.stem}")
+CROWDED = {
+    "p5_13_pantograph": "the pantograph's inflection circle is 10.7 m across (|IJ|), far "
+                        "larger than the mechanism: the far points A_K1 and A_H1 find no "
+                        "free place for their name and distance between the Bresse circle, "
+                        "N and the V_C line (known, left open in issue 11)",
+}
+"""Files with a known collision, each with why (strict: the test fails once it is gone)."""
+
+
+def _case(p: Path):
+    marks = [pytest.mark.xfail(reason=CROWDED[p.stem], strict=True)] if p.stem in CROWDED else []
+    return pytest.param(p, marks=marks, id=f"{p.parent.name}/{p.stem}")
+
+
+@pytest.mark.parametrize("path", [_case(p) for p in FILES])
 def test_no_label_collides_in_any_diagram(path):
     sol = _solved(path)
     found = {}
