@@ -62,36 +62,40 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
     for s in guides:
         if s.on != lid or s.link == lid or s.key in equivalent:
             continue
-        lw = _line_world(src, s)
-        if lw is None:
-            continue
-        p0, u = lw
-        st = sol.links[lid]
-        ends = [np.asarray(st.position(s.p0), dtype=float),
-                np.asarray(st.position(s.p1), dtype=float)]
-        q = np.asarray(sol.position(s.point, s.link), dtype=float)
-        ts = [float(u @ (e - p0)) for e in ends]
-        tq = float(u @ (q - p0))
-        reach = 1.6 * BLOCK[0] * k
-        lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
-        bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
+        bar = _bar(src, lid, s, s.point, s.link, 1.6 * BLOCK[0] * k)
+        if bar is not None:
+            bars.append(bar)
     # a moving link's straight face that a roller rolls on (a follower's face, Fig. 4.20):
     # along its line, past the contact point by the roller's radius
     for r in mech.rolling:
         if r.on != lid or r.on == FRAME or r.link == lid:
             continue
-        lw = _line_world(src, r)
-        if lw is None:
-            continue
-        p0, u = lw
-        st = sol.links[lid]
         assert r.p0 is not None and r.p1 is not None
-        ts = [float(u @ (np.asarray(st.position(e), dtype=float) - p0)) for e in (r.p0, r.p1)]
-        tq = float(u @ (np.asarray(sol.position(r.center, r.link), dtype=float) - p0))
-        reach = max(r.radius, 1.6 * BLOCK[0] * k)
-        lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
-        bars.append(LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)]))
+        bar = _bar(src, lid, r, r.center, r.link, max(r.radius, 1.6 * BLOCK[0] * k))
+        if bar is not None:
+            bars.append(bar)
     return bars
+
+
+def _bar(src: Source, lid: str, guide: Slider | Slot | Rolling, point: str, on: str,
+         reach: float) -> LineString | None:
+    """The bar of ``guide``'s line on link ``lid``: its two points, and ``reach`` past ``point``.
+
+    ``point`` (of link ``on``) is the block or the roller's center that runs
+    along the line; None when the line cannot be placed.
+    """
+    lw = _line_world(src, guide)
+    if lw is None:
+        return None
+    sol = src.solution
+    assert sol is not None
+    p0, u = lw
+    st = sol.links[lid]
+    ts = [float(u @ (np.asarray(st.position(e), dtype=float) - p0))
+          for e in (guide.p0, guide.p1)]
+    tq = float(u @ (np.asarray(sol.position(point, on), dtype=float) - p0))
+    lo, hi = min(*ts, tq - reach), max(*ts, tq + reach)
+    return LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)])
 
 
 def _ring(geom: shapely.Geometry) -> np.ndarray:
