@@ -336,6 +336,20 @@ class StepPainter:
         if len(panel.labels) > n:
             shown.append((d, panel.labels[-1]))
 
+    def later_points(self, label: str, panel: Panel,
+                     lies_on: Callable[[np.ndarray], bool]) -> list[np.ndarray]:
+        """The points that later steps of this panel construct from ``label`` and that lie on it."""
+        out = []
+        for s in self.consumers.get(label, []):
+            if plane_of(s.diagram) != panel.plane:
+                continue
+            for o in s.outputs:
+                if self.kinds.get(o) == "point":
+                    q = self.xy(o)
+                    if q is not None and lies_on(q):
+                        out.append(q)
+        return out
+
     def reference_for(self, panel: Panel, label: str, xy: np.ndarray
                       ) -> tuple[str, np.ndarray]:
         """The point an off-panel point's distance is given from: see :func:`far_reference`."""
@@ -539,14 +553,7 @@ class StepPainter:
                 rc = ref[2] / float(np.hypot(*ref[:2]))
                 foot = through - (float(rn @ through) + rc) * rn
                 on.append(foot)
-        for s in self.consumers.get(label, []):
-            if plane_of(s.diagram) != panel.plane:
-                continue
-            for o in s.outputs:
-                if self.kinds.get(o) == "point":
-                    q = self.xy(o)
-                    if q is not None and abs(float(n @ q) + c) <= eps * 10:
-                        on.append(q)
+        on += self.later_points(label, panel, lambda q: abs(float(n @ q) + c) <= eps * 10)
         k = panel.k
         if on:
             ts = [float(d @ q) for q in on]
@@ -607,15 +614,8 @@ class StepPainter:
             return
         center, r = c[:2], float(c[2])
         style = style_for_role(step.role, "circle")
-        cuts = []
-        for s in self.consumers.get(label, []):
-            if plane_of(s.diagram) != panel.plane:
-                continue
-            for o in s.outputs:
-                if self.kinds.get(o) == "point":
-                    q = self.xy(o)
-                    if q is not None and abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r:
-                        cuts.append(q)
+        cuts = self.later_points(
+            label, panel, lambda q: abs(float(np.hypot(*(q - center))) - r) <= 1e-6 * r)
         if not cuts:
             # no intersection cuts it: mark the later points that lie on it (a tangent's foot)
             for s in (x for x in self.cx.steps if x.index > step.index):
