@@ -505,20 +505,16 @@ class _Builder:
             self.events.append(("pin_in_slot", s, lid, p))
             self.add("circle", (p,), (k,), radius=r,
                      note=f"About {_n(p)} draw an arc through the pin's distance.")
-            if s.is_line:
-                names = ["behind", "ahead"]
-                self.add("intersect_line_circle", (f"{s.key}:line", k), (s.point,),
-                         branch=branch or names[0], role=Role.RESULT,
-                         equation=VectorEquation((Term(f"R_{s.point}", U, K),),
-                                                 (Term(f"R_{s.point}{_n(p)}", K, U),), case=2),
-                         note=f"The arc cuts the slot at {s.point} (case 2).")
-            else:
-                names = ["left", "right"]
-                self.add("intersect_circles", (f"{s.key}:k", k), (s.point,),
-                         branch=branch or names[0], role=Role.RESULT,
-                         equation=VectorEquation((Term(f"R_{s.point}", K, U),),
-                                                 (Term(f"R_{s.point}{_n(p)}", K, U),), case=4),
-                         note=f"The arc cuts the circular slot at {s.point} (case 4).")
+            # the slot's line (case 2: its direction known) or its circle (case 4)
+            op, slot, names, marks, case, what = (
+                ("intersect_line_circle", f"{s.key}:line", ["behind", "ahead"], (U, K), 2,
+                 "slot") if s.is_line else
+                ("intersect_circles", f"{s.key}:k", ["left", "right"], (K, U), 4,
+                 "circular slot"))
+            self.add(op, (slot, k), (s.point,), branch=branch or names[0], role=Role.RESULT,
+                     equation=VectorEquation((Term(f"R_{s.point}", *marks),),
+                                             (Term(f"R_{s.point}{_n(p)}", K, U),), case=case),
+                     note=f"The arc cuts the {what} at {s.point} (case {case}).")
             return names
         if kind in ("slot_through", "inverted"):
             lid = path.on
