@@ -70,7 +70,6 @@ def slide_bars(src: Source, lid: str, k: float) -> list[LineString]:
     for r in mech.rolling:
         if r.on != lid or r.on == FRAME or r.link == lid:
             continue
-        assert r.p0 is not None and r.p1 is not None
         bar = _bar(src, lid, r, r.center, r.link, max(r.radius, 1.6 * BLOCK[0] * k))
         if bar is not None:
             bars.append(bar)
