@@ -164,7 +164,7 @@ def paper_forces_sheet(fs: ForceSolution, paper: str, *, upto: int | None = None
     DiagramUnavailable
         ``paper`` is not a known size.
     """
-    from graphkin.render.handout import Page, arrange_on_paper, block_lines
+    from graphkin.render.handout import Page, arrange_on_paper, block_lines, place_on_page
 
     built: dict[float, ForceSheet] = {}
 
@@ -187,4 +187,22 @@ def paper_forces_sheet(fs: ForceSolution, paper: str, *, upto: int | None = None
             ("Values in the units of the scale bars.", "normal", 1)])
         return Page(paper, table=f.table, legend=list(f.legend), block=block)
 
-    return which(arrange_on_paper(build, band, paper, FORCE_BIGS))
+    f = which(arrange_on_paper(build, band, paper, FORCE_BIGS))
+    # the force polygons one 1-2-5 step larger at a time while the page has room
+    big = next(b for b, g in built.items() if g is f)
+    grow = 1.0
+    for _ in range(4):
+        fscale = next(p.scale for p in f.sheet.panels if p.name.startswith("polygon-")
+                      and p.scale is not None) if any(
+            p.name.startswith("polygon-") for p in f.sheet.panels) else None
+        if fscale is None:
+            break
+        mant = fscale.value / 10 ** math.floor(math.log10(fscale.value) + 1e-9)
+        grow *= (2.5 if abs(mant - 5.0) < 1e-6 else 2.0) * (1 + 1e-6)  # 5 -> 2, 2 -> 1, 1 -> .5
+        trial = build_forces_sheet(fs, upto=upto, table=table, paper=paper, big=big,
+                                   force_grow=grow)
+        built[-grow] = trial  # (kept findable by band())
+        if place_on_page(trial.sheet, band(trial.sheet), f.sheet.size) is None:
+            break
+        f = trial
+    return f

@@ -336,7 +336,7 @@ def concurrency(fs: ForceSolution, lid: str) -> np.ndarray | None:
 
 def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: bool = True,
                        paper: str | None = None, big: float = 3.4,
-                       width_cap: float = 11.5) -> ForceSheet:
+                       width_cap: float = 11.5, force_grow: float = 1.0) -> ForceSheet:
     """Lay out and paint the forces drawing (no matplotlib).
 
     Parameters
@@ -356,6 +356,9 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
         The largest side of the mechanism panel, in inches.
     width_cap : float
         The widest a row of panels may be, in inches.
+    force_grow : float
+        A factor on the room of the force polygons (a handout page draws them
+        one 1-2-5 step larger where the page has room).
     """
     from graphkin.render.mechanism import mechanism_extent, paint_mechanism
     from graphkin.render.sources import as_source
@@ -506,7 +509,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     for _, _, items in polys:
         run = np.cumsum([np.zeros(2)] + [v for _, v, _, _ in items], axis=0)
         fmax = max(fmax, float(max(run.max(axis=0) - run.min(axis=0))))
-    fscale = choose_scale(max(fmax, 1e-300), big * 0.8, pu, mech.force_unit, series)
+    fscale = choose_scale(max(fmax, 1e-300), big * 0.8 * force_grow, pu, mech.force_unit,
+                          series)
     fk = fscale.per_inch
     for lid, tag, items in polys:
         if not all(seen(raw) for *_, raw in items):
