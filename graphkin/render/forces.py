@@ -12,8 +12,10 @@ Every panel has a gid (``panel-forces-mechanism``, ``panel-fbd-3``,
 ``panel-polygon-3``) and every force one too: ``fbd-3-F₂₃`` (its arrow on
 the free body), ``polygon-3-F₂₃`` (tail to head at the force scale),
 ``concurrency-3``, ``fbd-3-torque``, ``fbd-3-h``; the line stating both
-scales is ``force-scale``.  The scene is built by
-:mod:`graphkin.render.forces_sheet`.
+scales is ``force-scale`` (on a free sheet; a handout page, ``--sheet
+a4|letter``, states them in its title block, ``title-block``, and reads the
+forces and the drive's torque off the drawing into its compact table,
+``results``).  The scene is built by :mod:`graphkin.render.forces_sheet`.
 
 References
 ----------
@@ -86,14 +88,17 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None,
         (inclusive), the newest step's forces in the highlight colour: a
         started drawing to hand out, or one frame of ``graphkin steps -d forces``.
     sheet : str, optional
-        ``a4`` or ``letter``: a handout page at round scales, with a title
-        block and a compact table.
+        ``a4`` or ``letter``: a handout page as every other diagram's
+        (:mod:`graphkin.render.handout`): 1-2-5 scales, portrait or
+        landscape, a band with the compact table (F_ij and T₁₂ in the force
+        scale's unit), the legend of the forces' colours and the title block
+        naming the mechanism, "forces" and both scales.
 
     Returns
     -------
     Drawing
         Label -> artist (``fbd-3-F₂₃``-style keys), with ``.figure``,
-        ``.texts`` (``force-scale``: the line stating both scales) and
+        ``.texts`` (``force-scale``: the line stating both scales, free sheet only) and
         ``.vectors`` (polygon -> [(label, tail, head)] in force units).
 
     Raises
@@ -107,7 +112,8 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None,
     """
     from graphkin.forces.report import forces_report
     from graphkin.forces.solve import ForceSolution
-    from graphkin.render.forces_sheet import SCALES_H, build_forces_sheet, paper_forces_sheet
+    from graphkin.render.forces_page import paper_forces_sheet
+    from graphkin.render.forces_sheet import SCALES_H, build_forces_sheet
     from graphkin.render.mpl import render_sheet
     from graphkin.render.sources import DiagramUnavailable
     from graphkin.render.style import SMALL_PT, rc_context
@@ -125,6 +131,8 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None,
             else build_forces_sheet(fs, upto=upto, table=table))
     drawing = render_sheet(laid.sheet)
     drawing.vectors = laid.vectors  # type: ignore[attr-defined]
+    if sheet is not None:  # a handout page: the title block states the scales, the table T₁₂
+        return drawing
     mech = fs.mechanism
     line = laid.scales
     if upto is None:
@@ -138,7 +146,7 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None,
                 bits.append(f"input force on {lid} = {fmt(val, 4)} {mech.force_unit}")
         line += ("   " + ";  ".join(bits)) if bits else ""
     W, H = laid.sheet.size
-    left, top = laid.sheet.title_offset or (0.0, H)
+    left, top = (0.0, H)
     assert drawing.figure is not None
     with rc_context():
         st = drawing.figure.text((left + 0.12) / W, (top - 0.22 - SCALES_H) / H, line,

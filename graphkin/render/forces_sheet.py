@@ -29,12 +29,10 @@ import numpy as np
 
 from graphkin.render.labels import place_labels
 from graphkin.render.results import Row
-from graphkin.render.scale import Scale, choose_scale, fmt, paper_unit
+from graphkin.render.scale import NICE, SERIES_125, Scale, choose_scale, fmt, paper_unit
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, clip_segment
-from graphkin.render.handout import PAGE_MARGIN, PAPERS
 from graphkin.render.sheet import (
     FOOT_H,
-    GAP,
     TITLE_H,
     Sheet,
     _frame,
@@ -44,8 +42,10 @@ from graphkin.render.text import math_escape
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
+    from graphkin.render.handout import LegendEntry
 
-__all__ = ["ForceSheet", "build_forces_sheet", "LOAD", "INERTIA", "DRIVE", "JOINT"]
+__all__ = ["ForceSheet", "build_forces_sheet", "LOAD", "INERTIA", "DRIVE", "JOINT",
+           "GREY_INK"]
 
 LOAD = "#1f4e9c"
 """Colour of a given load (and a weight)."""
@@ -88,6 +88,10 @@ class ForceSheet:
     scales: str = ""
     colors: dict[str, str] = field(default_factory=dict)
     """Text gid -> colour (labels take their force's colour)."""
+    table: Any = None
+    """A handout page's compact table (the forces in the force scale's unit), else None."""
+    legend: list[LegendEntry] = field(default_factory=list)
+    """A handout page's legend entries (the forces' colours and line styles)."""
 
 
 def label_text(name: str) -> str:
@@ -332,7 +336,7 @@ def concurrency(fs: ForceSolution, lid: str) -> np.ndarray | None:
 
 def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: bool = True,
                        paper: str | None = None, big: float = 3.4,
-                       width_cap: float = 11.5) -> ForceSheet:
+                       width_cap: float = 11.5, force_grow: float = 1.0) -> ForceSheet:
     """Lay out and paint the forces drawing (no matplotlib).
 
     Parameters
@@ -341,13 +345,20 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     upto : int, optional
         Draw only what the force construction has found up to this step.
     table : bool
-        Add the results table (graphic values beside the matrix method's).
+        Add the results table: on a free sheet the graphic values beside the
+        matrix method's; on paper the compact table of
+        :func:`graphkin.render.forces_page.page_table`.
     paper : str, optional
-        ``a4`` or ``letter``: a handout page (title block, compact table).
+        ``a4`` or ``letter``: the panels for a handout page (1-2-5 scales, no
+        key panel: :func:`graphkin.render.forces_page.paper_forces_sheet`
+        places them above the page's band).
     big : float
         The largest side of the mechanism panel, in inches.
     width_cap : float
         The widest a row of panels may be, in inches.
+    force_grow : float
+        A factor on the room of the force polygons (a handout page draws them
+        one 1-2-5 step larger where the page has room).
     """
     from graphkin.render.mechanism import mechanism_extent, paint_mechanism
     from graphkin.render.sources import as_source
@@ -371,6 +382,7 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     colors = out.colors
     src = as_source(sol)
     pu = paper_unit(mech.length_unit)
+    series = SERIES_125 if paper is not None else NICE  # a handout's 1-2-5 scales
     on = {lid: forces_on(fs, lid) for lid in moving}
     loads = [f for lid in moving for f in on[lid] if f.color != JOINT]
     # ---- the length scale: the mechanism, and its loads' arrows (fixed on paper)
@@ -378,12 +390,12 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     for r in mech.rolling:
         pts += _circle_extent(fs, r, r.on)
     lo, hi = _extent(pts)
-    lscale = choose_scale(float(max(hi - lo)) or 1.0, big, pu, mech.length_unit)
+    lscale = choose_scale(float(max(hi - lo)) or 1.0, big, pu, mech.length_unit, series)
     for _ in range(2):
         k = lscale.per_inch
         tails = [f.at - _unit(f.vector) * ARROW_IN * k for f in loads]
         lo, hi = _extent(pts + tails)
-        lscale = choose_scale(float(max(hi - lo)) or 1.0, big, pu, mech.length_unit)
+        lscale = choose_scale(float(max(hi - lo)) or 1.0, big, pu, mech.length_unit, series)
     k = lscale.per_inch
     tails = [f.at - _unit(f.vector) * ARROW_IN * k for f in loads]
     lo, hi = _extent(pts + tails)
@@ -497,7 +509,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
     for _, _, items in polys:
         run = np.cumsum([np.zeros(2)] + [v for _, v, _, _ in items], axis=0)
         fmax = max(fmax, float(max(run.max(axis=0) - run.min(axis=0))))
-    fscale = choose_scale(max(fmax, 1e-300), big * 0.8, pu, mech.force_unit)
+    fscale = choose_scale(max(fmax, 1e-300), big * 0.8 * force_grow, pu, mech.force_unit,
+                          series)
     fk = fscale.per_inch
     for lid, tag, items in polys:
         if not all(seen(raw) for *_, raw in items):
@@ -524,9 +537,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                      np.array([u[1], -u[0]]))
         g = p.group(f"{name}-start", 3.5)
         g.items.append(Item("marker", np.array([path[0]]), "point", key=f"{name}-start"))
-    legend = _legend(fs, on)
-    if legend is not None:
-        panels.append(legend)
+    if paper is None:  # the free sheet's key; a handout page has its legend in the band
+        panels.append(_legend(fs, on))
     # ---- frame, labels, table, layout
     for p in panels:
         _frame(p)
@@ -535,27 +547,25 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
             for it in g.items:
                 if it.kind == "text" and it.gid in colors:
                     it.overrides["color"] = colors[it.gid]
-    rows = _results(fs) if table and upto is None else []
+    rows = _results(fs) if table and upto is None and paper is None else []
     kind = "Dynamic" if fs.dynamic else "Static"
     title = f"{kind} force analysis: {mech.title or mech.source}"
     sheet = Sheet(panels, (0.0, 0.0), title, "forces", rows)
     sheet.paper, sheet.width_cap = paper, width_cap
     _layout(sheet)
-    if paper is not None:  # the content's width: the title is cut, the title block repeats it
-        from graphkin.render.labels import text_size
-
-        room = max(sheet.size[0] - 0.3, 2.5)
-        while len(title) > 20 and text_size(title, 11.0, "title")[0] > room:
-            title = title[:-2].rstrip(" …") + "…"
-        sheet.title = title
     if paper is None:  # room under the title for the line that states both scales
         sheet.size = (sheet.size[0], sheet.size[1] + SCALES_H)
+    else:
+        from graphkin.render.forces_page import page_legend, page_table
+
+        out.table = page_table(fs, lscale, fscale, known) if table else None
+        out.legend = page_legend(fs, on)
     out.sheet = sheet
     out.scales = f"lengths {lscale.text}" + (f";  forces {fscale.text}" if polys else "")
     return out
 
 
-def _legend(fs: ForceSolution, on: dict[str, list[Force]]) -> Panel | None:
+def _legend(fs: ForceSolution, on: dict[str, list[Force]]) -> Panel:
     """The key to the drawing's colours and line styles (only what the drawing uses)."""
     colours = {f.color for fl in on.values() for f in fl}
     rows: list[tuple[str, str, str]] = [("joint force $F_{ij}$, by i on j", JOINT, "vector-abs")]
@@ -667,53 +677,6 @@ def _pitch_circles(fs: ForceSolution, p: Panel, lid: str, g: Group) -> list[np.n
             out.append(q)
     return out
 
-
-def paper_forces_sheet(fs: ForceSolution, paper: str, *, upto: int | None = None,
-                       table: bool = True) -> ForceSheet:
-    """The forces drawing on one page of ``paper`` at round scales (as the other handouts).
-
-    Raises
-    ------
-    DiagramUnavailable
-        ``paper`` is not a known size.
-    """
-    from graphkin.render.sources import DiagramUnavailable
-
-    if paper not in PAPERS:
-        raise DiagramUnavailable(f"unknown paper {paper!r}; valid: {', '.join(PAPERS)}",
-                                 diagram="forces")
-    pw, ph = PAPERS[paper]
-    last: ForceSheet | None = None
-    for big in (3.4, 2.9, 2.4, 2.0, 1.7, 1.4, 1.2, 1.0, 0.8):
-        for w, h in ((pw, ph), (ph, pw)):
-            fsh = build_forces_sheet(fs, upto=upto, table=table, paper=paper, big=big,
-                                     width_cap=w - 2 * PAGE_MARGIN)
-            last = fsh
-            sheet = fsh.sheet
-            sw, sh = sheet.size
-            sh += SCALES_H
-            beside = sheet.last_row[0] + TITLE_BLOCK[0] <= w - 2 * PAGE_MARGIN \
-                and sheet.last_row[1] >= TITLE_BLOCK[1]
-            if sw <= w - 2 * PAGE_MARGIN and sh + (0.0 if beside else TITLE_BLOCK[1]) \
-                    <= h - 2 * PAGE_MARGIN:
-                dx = (w - sw) / 2
-                dy = h - PAGE_MARGIN - sh
-                for p in sheet.panels:
-                    p.origin = (p.origin[0] + dx, p.origin[1] + dy)
-                if sheet.rows:
-                    sheet.table_origin = (sheet.table_origin[0] + dx,
-                                          sheet.table_origin[1] + dy)
-                sheet.title_offset = (dx, h - PAGE_MARGIN)
-                if beside:
-                    sheet.block_origin = (dx + sw - TITLE_BLOCK[0] - GAP, dy + GAP)
-                sheet.size = (w, h)
-                return fsh
-    assert last is not None
-    return last
-
-
-TITLE_BLOCK = (3.4, 0.75)
-"""Width and height of the room kept for a title block, in inches."""
 
 SCALES_H = 0.22
 """Height of the line under the sheet's title that states both scales, in inches."""

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 import textwrap
-from collections.abc import Collection
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -51,7 +51,7 @@ from graphkin.render.style import STYLES
 from graphkin.render.table import Table, folds_for, measure, table_size
 
 __all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "LEGEND",
-           "MIN_BIG"]
+           "MIN_BIG", "LegendEntry", "block_lines", "place_on_page", "arrange_on_paper"]
 
 PAPERS = {"a4": (8.27, 11.69), "letter": (8.5, 11.0)}
 """Paper sizes in inches, portrait (A4 is 210 × 297 mm)."""
@@ -100,6 +100,8 @@ class LegendEntry:
     style: str
     text: str
     fill: str | None = None
+    color: str | None = None
+    """The sample's colour when it is not the style's (the forces drawing's colours)."""
 
 
 @dataclass
@@ -221,14 +223,16 @@ def _legend_cols(entries: list[LegendEntry], width: float) -> int:
     return best
 
 
-def title_block(sheet: Sheet, src: Source) -> list[tuple[str, str]]:
-    """The title block's lines: the mechanism, the diagrams, the scales (no date)."""
+def block_lines(entries: Sequence[tuple[str, str, int]]) -> list[tuple[str, str]]:
+    """Title-block lines: each ``(text, weight, most lines)`` wrapped to the block's width.
+
+    A text longer than its most lines is cut with an ellipsis.
+    """
     from graphkin.render.text import plain
 
     width = BLOCK_W - 0.16
     lines: list[tuple[str, str]] = []
-
-    def wrap(text: str, weight: str, most: int) -> None:
+    for text, weight, most in entries:
         style = "title" if weight == "bold" else "caption"
         chars = max(int(len(text) * width / max(measure(text, BLOCK_PT, style)[0],
                                                 1e-9)), 12)
@@ -240,16 +244,20 @@ def title_block(sheet: Sheet, src: Source) -> list[tuple[str, str]]:
             got = got[:most]
             got[-1] = got[-1][: max(len(got[-1]) - 1, 1)] + "…"
         lines.extend((plain(g), weight) for g in got)
+    return lines
 
-    wrap(sheet.title or (src.mechanism.source if src.mechanism else "") or "Construction",
-         "bold", 3)
+
+def title_block(sheet: Sheet, src: Source) -> list[tuple[str, str]]:
+    """The title block's lines: the mechanism, the diagrams, the scales (no date)."""
     names = [p.title.split(") ", 1)[-1] for p in sheet.panels]
-    wrap("Diagrams: " + ", ".join(n[:1].lower() + n[1:] for n in names), "normal", 3)
     scales = [f"{p.title.split(') ', 1)[-1].lower()} {p.scale.text}" for p in sheet.panels
               if p.scale is not None]
-    wrap("Scales: " + "; ".join(scales), "normal", 6)
-    wrap("Values in the units of each scale bar.", "normal", 1)
-    return lines
+    return block_lines([
+        (sheet.title or (src.mechanism.source if src.mechanism else "") or "Construction",
+         "bold", 3),
+        ("Diagrams: " + ", ".join(n[:1].lower() + n[1:] for n in names), "normal", 3),
+        ("Scales: " + "; ".join(scales), "normal", 6),
+        ("Values in the units of each scale bar.", "normal", 1)])
 
 
 # ---------------------------------------------------------------------------- layout
@@ -432,12 +440,24 @@ def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
 def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,
              size: tuple[float, float], paper: str, force: bool = False) -> Page | None:
     """Place the panels and the band on a page of ``size``; None when they do not fit."""
-    w, h = size
-    cw, ch = w - 2 * PAGE_MARGIN, h - 2 * PAGE_MARGIN
     page = Page(paper)
     page.table = results_table(sheet, rows, unit) if rows else None
     page.legend = legend_entries(sheet)
     page.block = title_block(sheet, src)
+    return place_on_page(sheet, page, size, force)
+
+
+def place_on_page(sheet: Sheet, page: Page, size: tuple[float, float],
+                  force: bool = False) -> Page | None:
+    """Place an already-built sheet's panels above a band (table, legend, title block).
+
+    The panels go in rows centred on the page; ``page``'s table, legend and
+    title block in the band at the bottom.  Sets the sheet's size and
+    ``sheet.page``.  Returns None (changing nothing) when the panels do not
+    fit above the band, unless ``force``: then they are placed anyway.
+    """
+    w, h = size
+    cw, ch = w - 2 * PAGE_MARGIN, h - 2 * PAGE_MARGIN
     band = _band(page, cw)
     sizes = [p.size for p in sheet.panels]
     spots = _pack(sizes, cw, ch - band - GAP)
@@ -460,6 +480,41 @@ def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,
     sheet.page = page
     sheet.title_offset = None
     return page
+
+
+def arrange_on_paper(build: Callable[[float], Sheet], band: Callable[[Sheet], Page],
+                     paper: str, bigs: Sequence[float] = BIGS) -> Sheet:
+    """Put a sheet built elsewhere on one page of ``paper``, as large as it fits.
+
+    The generic entry point for a drawing that builds its own panels (the
+    forces drawing, Fig. 11.5): ``build(big)`` makes the sheet with its
+    largest panel side ``big`` inches (at the 1-2-5 scales that fit),
+    ``band(sheet)`` the page's table, legend and title block.  For portrait
+    and for landscape the largest ``big`` of ``bigs`` (largest first) whose
+    panels fit above the band is found; the orientation with the larger
+    drawing is kept (portrait on a tie).
+
+    Raises
+    ------
+    DiagramUnavailable
+        ``paper`` is not a known size.
+    """
+    if paper not in PAPERS:
+        raise DiagramUnavailable(f"unknown paper {paper!r}; valid: {', '.join(PAPERS)}")
+    pw, ph = PAPERS[paper]
+    best: tuple[float, tuple[float, float]] | None = None
+    for size in ((pw, ph), (ph, pw)):
+        for big in bigs:
+            if best is not None and big <= best[0]:
+                break
+            sheet = build(big)
+            if place_on_page(sheet, band(sheet), size) is not None:
+                best = (big, size)
+                break
+    big, size = best if best is not None else (bigs[-1], (pw, ph))
+    sheet = build(big)
+    place_on_page(sheet, band(sheet), size, force=True)
+    return sheet
 
 
 # ---------------------------------------------------------------------------- drawing
@@ -517,7 +572,7 @@ def _legend(fig: Any, sheet: Sheet, page: Page) -> None:
             art = patches.Rectangle((x, y - 0.03), HANDLE_W, 0.06, fc="#ffffff", ec="k",
                                     lw=STYLES["link"]["lw"])
         else:
-            art = Line2D([x, x + HANDLE_W], [y, y], color=st.get("color", "k"),
+            art = Line2D([x, x + HANDLE_W], [y, y], color=e.color or st.get("color", "k"),
                          lw=st.get("lw", 1.0), ls=st.get("ls", "-"))
         art.set_gid(f"{e.gid}-sample")
         ax.add_artist(art)

@@ -115,7 +115,12 @@ def _check(data: dict[str, Any], kind: str) -> None:
         assert abs(tg - t) <= 1e-9 * size, (lid, tg, t)
     residual, size = power_balance(sol, graphic.dynamic,
                                    {k: v for k, (_, v) in graphic.drives.items()})
-    assert abs(residual) <= 1e-9 * max(size, 1e-300), (residual, size)
+    # near a dead point every power is tiny while the velocities' round-off is not: it is
+    # about eps · |ω| · (the mechanism's size), so the powers are judged against the
+    # largest force times that speed too (a random inverted slider-crank at θ = 0 had
+    # powers of 5e-16 and a residual of 6e-17 with forces and speeds of order 1)
+    speed = max([abs(float(sol.omega(lid))) for lid in mech.moving] + [0.0]) * arm
+    assert abs(residual) <= 1e-9 * max(size, big * speed, 1e-300), (residual, size)
 
 
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -250,3 +250,50 @@ def test_a_started_cubic_figure_does_not_draw_the_cubic(gk):
     assert answers(draw(sol, "cubic", upto=steps[1].index)) == set()
     assert answers(draw(sol, "cubic", upto=u - 1)) == set()
     assert answers(draw(sol, "cubic", upto=u)) == {"cubic", "ball-point"}
+
+
+def test_arrange_on_paper_puts_a_sheet_built_elsewhere_on_a_page(gk):
+    """The generic entry point (used by the forces drawing): the largest size that fits.
+
+    A 40 in panel fits no page (A4 is 8.27 × 11.69 in): it is tried, refused
+    with nothing changed, and the next size taken; the band's title block is
+    drawn whatever the sheet.
+    """
+    from graphkin.render.handout import (
+        PAGE_MARGIN,
+        Page,
+        arrange_on_paper,
+        block_lines,
+        place_on_page,
+    )
+    from graphkin.render.sheet import build_sheet
+    from graphkin.render.sources import as_source
+
+    src = as_source(gk.solved("ex3_1_fourbar"))
+    tried: list[float] = []
+
+    def build(big):
+        tried.append(big)
+        return build_sheet(src, "velocity", paper="a4", dry=True, table=False, max_inches=big)
+
+    def band(sheet):
+        return Page("a4", block=block_lines([("Velocity polygon " * 12, "bold", 1),
+                                             ("Scales: as drawn", "normal", 1)]))
+
+    huge = build(40.0)
+    size, origin = huge.size, [p.origin for p in huge.panels]
+    assert place_on_page(huge, band(huge), PAGES["a4"]) is None
+    assert huge.size == size and [p.origin for p in huge.panels] == origin and huge.page is None
+    sheet = arrange_on_paper(build, band, "a4", bigs=(40.0, 4.0, 2.0))
+    assert 40.0 in tried and sheet.page is not None
+    assert sorted(sheet.size) == pytest.approx(sorted(PAGES["a4"]), abs=0.01)
+    p = sheet.panels[0]
+    # portrait: 40 refused, 4 fits; landscape tries only what would be larger (40); 2 never
+    assert tried == [40.0, 40.0, 4.0, 40.0, 4.0]
+    band_top = sheet.page.block_box[1] + sheet.page.block_box[3]
+    assert p.origin[1] >= band_top and p.origin[0] >= PAGE_MARGIN - 1e-9
+    assert p.origin[1] + p.size[1] <= sheet.size[1] - PAGE_MARGIN + 1e-9
+    # a title longer than its one line is cut with an ellipsis, never runs out of the block
+    assert len(sheet.page.block) == 2 and sheet.page.block[0][0].endswith("…")
+    with pytest.raises(Exception, match="unknown paper"):
+        arrange_on_paper(build, band, "a3")
