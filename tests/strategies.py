@@ -296,6 +296,15 @@ class _Build:
 
     # -- the file --
     def finish(self) -> RandomMechanism:
+        # two points of one link either coincide or stand clearly apart: a coupler point
+        # 1e-9 from a pin makes lengths that span more than 1e9, which graphkin refuses
+        # (issue 14: such a file names the point), so it is no valid random mechanism
+        for pts in self.bodies.values():
+            xy = list(pts.values())
+            for i, p in enumerate(xy):
+                for q in xy[i + 1:]:
+                    d = _norm(_sub(p, q))
+                    assume(d == 0.0 or d > 1e-4 * self.size)
         poses: dict[str, Pose] = {"1": (0.0, 0.0, 0.0)}
         angle_drive = {str(d["link"]): d for d in self.drives if "angle" in d}
         for lid, pts in self.bodies.items():
