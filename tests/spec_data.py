@@ -63,3 +63,11 @@ def solved_json(path: Path) -> dict:
     from graphkin.output import solution_to_dict
 
     return solution_to_dict(graphkin.load(path).solve())
+
+
+def assert_round_scales(sheet: Any) -> None:
+    """Every panel of a handout page at a round scale: 1, 2 or 5 times a power of ten."""
+    for p in sheet.panels:
+        if p.scale is not None:
+            mant = p.scale.value / 10 ** math.floor(math.log10(p.scale.value) + 1e-9)
+            assert min(abs(mant - m) for m in (1.0, 2.0, 5.0)) < 1e-9, p.scale.text

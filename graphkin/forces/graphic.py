@@ -542,6 +542,13 @@ class _Builder:
                    set_known: Callable[..., None], resultant: Callable[..., str],
                    rzero: bool, pending: dict[str, Any]) -> bool:
         """The drive link, when only its frame's force is left (Ex 11.1 step 7, Ex 12.3)."""
+
+        def found(out: str, words: str) -> bool:
+            drives_out[lid] = out
+            order.append(f"link {lid}: {words}")
+            del pending[lid]
+            return True
+
         if drive.kind == "angle":
             frame = [j for j in unknown if j.kind == PIN and j.point == drive.pivot
                      and FRAME in (j.lo, j.hi)]
@@ -562,10 +569,7 @@ class _Builder:
                           f"the drive's torque {t} = -(arm of {r} about {drive.pivot}) × "
                           f"|{r}| holds link {lid} (Σ M_{drive.pivot} = 0)", role=Role.RESULT)
                 set_known(j, lid, lab)
-            drives_out[lid] = t
-            order.append(f"link {lid}: the drive's torque {t}")
-            del pending[lid]
-            return True
+            return found(t, f"the drive's torque {t}")
         slider = drive.slider
         if slider is None or slider.on != FRAME:
             return False
@@ -591,10 +595,7 @@ class _Builder:
             self.emit("force_along", (fa, f"u_{j.key}"), (amount,),
                       f"the input force {fa}, signed along the slider's line", role=Role.RESULT)
             set_known(j, lid, lab)
-        drives_out[lid] = amount
-        order.append(f"link {lid}: the input force {fa}")
-        del pending[lid]
-        return True
+        return found(amount, f"the input force {fa}")
 
     def superpose(self, partials: list[Partial]) -> tuple[dict[str, str], dict[str, str],
                                                           dict[str, str]]:

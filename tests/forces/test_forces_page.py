@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from spec_data import assert_round_scales
 
 import graphkin
 from graphkin.render import draw, to_bytes
@@ -87,11 +88,7 @@ def test_forces_page_is_a_handout(path, paper):
                 ab = t.axes.bbox
                 assert box.x0 >= ab.x0 - 1 and box.x1 <= ab.x1 + 1 and box.y0 >= ab.y0 - 1 \
                     and box.y1 <= ab.y1 + 1, (t.get_gid(), t.get_text(), t.axes.get_gid())
-    # round scales of the 1-2-5 series
-    for p in d.sheet.panels:
-        if p.scale is not None:
-            mant = p.scale.value / 10 ** math.floor(math.log10(p.scale.value) + 1e-9)
-            assert min(abs(mant - m) for m in (1.0, 2.0, 5.0)) < 1e-9, p.scale.text
+    assert_round_scales(d.sheet)  # 1-2-5 series
     # the title block: the mechanism, "forces", the length and the force scale
     fscale = _force_scale(d)
     lscale = d.sheet.panel("forces-mechanism").scale

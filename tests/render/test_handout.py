@@ -10,12 +10,11 @@ renderer), the page size is read back from the SVG.
 from __future__ import annotations
 
 import io
-import math
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
-from spec_data import EXAMPLES
+from spec_data import EXAMPLES, assert_round_scales
 
 from graphkin.render import draw, to_bytes
 from graphkin.render.labels import collisions
@@ -92,11 +91,7 @@ def test_all_sheet_fits_one_page(gk, name, paper):
         if ab is not None:
             assert box.x0 >= ab.x0 - 1 and box.x1 <= ab.x1 + 1 and box.y0 >= ab.y0 - 1 \
                 and box.y1 <= ab.y1 + 1, (t.get_gid(), t.get_text(), t.axes.get_gid())
-    # round scales: 1, 2 or 5 times a power of ten
-    for p in d.sheet.panels:
-        if p.scale is not None:
-            mant = p.scale.value / 10 ** math.floor(math.log10(p.scale.value) + 1e-9)
-            assert min(abs(mant - m) for m in (1.0, 2.0, 5.0)) < 1e-9, p.scale.text
+    assert_round_scales(d.sheet)  # 1-2-5 series
     # the compact table: no analytic column, no relative differences
     t = d.sheet.page.table
     assert t is not None and t.head[:2] == ("quantity", "value") and t.head[-1] == "unit"
