@@ -11,8 +11,10 @@ the velocity and acceleration polygons, the instant centers with the Kennedy
 circle, and of the curvature figures only (a), the inflection and Bresse
 circles; the other curvature figures stay one command away
 (``-d curvature --sheet a4`` or ``-d bobillier``...).  When even that does
-not fit legibly (no panel smaller than :data:`MIN_BIG` inches), the Kennedy
-circle and then the curvature panel are left off.
+not fit legibly (no panel smaller than :data:`MIN_BIG` inches), the curvature
+panel is left off and the title block says which command draws it; the
+Kennedy circle always stays beside the instant centers (issue 11: on every
+centers figure).
 
 The results table lists the answers the page's diagrams show, in the units
 of each diagram's scale bar (ft/s under a ``1 in = 20 ft/s`` bar, even when
@@ -45,7 +47,7 @@ from graphkin.render.results import (
 )
 from graphkin.render.scale import quantity_unit
 from graphkin.render.scene import Panel
-from graphkin.render.sheet import GAP, Sheet, build_sheet
+from graphkin.render.sheet import GAP, Sheet, build_sheet, sheet_diagrams
 from graphkin.render.sources import CURVATURE_PANELS, DiagramUnavailable, Source
 from graphkin.render.style import STYLES
 from graphkin.render.table import Table, folds_for, measure, table_size
@@ -252,12 +254,18 @@ def title_block(sheet: Sheet, src: Source) -> list[tuple[str, str]]:
     names = [p.title.split(") ", 1)[-1] for p in sheet.panels]
     scales = [f"{p.title.split(') ', 1)[-1].lower()} {p.scale.text}" for p in sheet.panels
               if p.scale is not None]
-    return block_lines([
+    lines = [
         (sheet.title or (src.mechanism.source if src.mechanism else "") or "Construction",
          "bold", 3),
         ("Diagrams: " + ", ".join(n[:1].lower() + n[1:] for n in names), "normal", 3),
         ("Scales: " + "; ".join(scales), "normal", 6),
-        ("Values in the units of each scale bar.", "normal", 1)])
+        ("Values in the units of each scale bar.", "normal", 1)]
+    if sheet.diagram == "all" and "curvature" in sheet_diagrams(src, "all") \
+            and not any(p.name in CURVATURE_PANELS for p in sheet.panels):
+        # left off to keep the rest legible (build_paper_sheet): say where it is
+        lines.append(("Curvature figures: draw -d curvature --sheet " + (sheet.paper or "a4"),
+                      "normal", 2))
+    return block_lines(lines)
 
 
 # ---------------------------------------------------------------------------- layout
@@ -372,10 +380,15 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
                         max_inches=BIGS[0])
     rows = shown_rows(first, first.rows) if table else []
     drops: list[tuple[str, ...]] = [()]
-    if diagram == "all":
-        drops += [("kennedy",), ("kennedy", "curvature")]
+    if diagram == "all" and "curvature" in sheet_diagrams(src, "all"):
+        # the curvature figures have their own page (-d curvature); the Kennedy circle belongs
+        # with the instant centers it finds (Fig. 3.22b), so it is never left off
+        drops += [("curvature",)]
     found: tuple[float, list[tuple[float, float]], tuple[str, ...]] | None = None
+    all_rows = rows
     for drop in drops:
+        # a panel left off takes its answers with it
+        rows = [r for r in all_rows if not (r.key.startswith("curvature-") and "curvature" in drop)]
         for big in BIGS:
             if big < MIN_BIG and drop != drops[-1]:
                 break

@@ -159,8 +159,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         Lay the panels out and paint them but place no labels (the handout
         page tries many scales; only the one it keeps gets its labels).
     drop : collection of str
-        Panels left off (``kennedy``, ``curvature``): a handout page that
-        does not fit otherwise.
+        Panels left off: ``curvature`` on a handout page that does not fit
+        otherwise; ``kennedy`` for a caller that wants no Kennedy circle.
     grow : dict, optional
         Panel name -> a factor on its room (a handout page draws a panel a
         scale larger where the page has room).

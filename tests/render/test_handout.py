@@ -19,6 +19,7 @@ from spec_data import EXAMPLES, assert_round_scales
 from graphkin.render import draw, to_bytes
 from graphkin.render.labels import collisions
 from graphkin.render.scale import SERIES_125, nice_ceil
+from graphkin.render.sources import as_source
 
 NAMES = sorted(p.stem for p in EXAMPLES.glob("ex*.toml") if p.stem != "expected")
 PAGES = {"a4": (210 / 25.4, 297 / 25.4), "letter": (8.5, 11.0)}
@@ -97,6 +98,14 @@ def test_all_sheet_fits_one_page(gk, name, paper):
     assert t is not None and t.head[:2] == ("quantity", "value") and t.head[-1] == "unit"
     assert not {"analytic", "rel. diff."} & set(t.head)
     assert ("direction" in t.head) == any(k.startswith(("V_", "omega")) for k in t.keys)
+    # the Kennedy circle stays beside the instant centers (issue 11: on every centers figure);
+    # when the page is full it is the curvature panel that goes, with a line saying where
+    names = [p.name for p in d.sheet.panels]
+    assert "centers" in names and "kennedy" in names
+    if "inflection" not in names and "curvature" in as_source(gk.solved(name)).available():
+        assert d.sheet.page.dropped == ("curvature",)
+        assert any("-d curvature" in text for text, _ in d.sheet.page.block)
+        assert not [k for k in t.keys if k.startswith("curvature-")]
 
 
 def test_handout_values_are_in_the_scale_bars_units(gk):
