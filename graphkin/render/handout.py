@@ -53,7 +53,8 @@ from graphkin.render.style import STYLES
 from graphkin.render.table import Table, folds_for, measure, table_size
 
 __all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "LEGEND",
-           "MIN_BIG", "LegendEntry", "block_lines", "place_on_page", "arrange_on_paper"]
+           "MIN_BIG", "LegendEntry", "block_lines", "place_on_page", "arrange_on_paper",
+           "round_off"]
 
 PAPERS = {"a4": (8.27, 11.69), "letter": (8.5, 11.0)}
 """Paper sizes in inches, portrait (A4 is 210 × 297 mm)."""
@@ -181,7 +182,8 @@ def shown_rows(sheet: Sheet, rows: list[Row]) -> list[Row]:
 def results_table(sheet: Sheet, rows: list[Row], file_unit: str) -> Table:
     """The compact results table of a handout page (no analytic column, no differences)."""
     units = _units(sheet, file_unit)
-    cells: list[tuple[str, ...]] = [compact_cells(r, units) for r in rows]
+    tiny = round_off(rows)
+    cells: list[tuple[str, ...]] = [compact_cells(r, units, tiny[_kind(r.key)]) for r in rows]
     head: tuple[str, ...] = ("quantity", "value", "direction", "unit")
     align: tuple[str, ...] = ("left", "right", "left", "left")
     if all(not c[2] for c in cells):  # no vector and no rate: no direction column
@@ -189,6 +191,41 @@ def results_table(sheet: Sheet, rows: list[Row], file_unit: str) -> Table:
         head, align = ("quantity", "value", "unit"), ("left", "right", "left")
     return Table(head, cells, [r.key for r in rows], align,
                  title="Results read off the construction")
+
+
+def _kind(key: str) -> str:
+    """The kind of quantity a row holds: ``omega``, ``alpha``, ``V_``, ``A_`` or ``length``."""
+    for k in ("omega", "alpha", "V_", "A_"):
+        if key.startswith(k):
+            return k
+    return "length"
+
+
+def round_off(rows: Sequence[Row]) -> dict[str, float]:
+    """Kind of quantity -> the magnitude at or below which it is round-off (printed as 0).
+
+    1e-9 of the largest finite magnitude of that kind on the page: a pole at
+    ``(6, 8.9e-16)`` in prints as ``(6.000, 0)`` (the elliptic trammel of
+    Ex. 12.3), a point really near the origin keeps its digits.
+
+    >>> from graphkin.render.results import Row
+    >>> r = [Row("curvature-J", "J", "in", "", "", None, drawn_value=(0.0, 8.9e-16)),
+    ...      Row("curvature-I", "I", "in", "", "", None, drawn_value=(6.0, 8.0))]
+    >>> round_off(r)["length"]
+    1e-08
+    """
+    big: dict[str, float] = {k: 0.0 for k in ("omega", "alpha", "V_", "A_", "length")}
+    for r in rows:
+        v = [float(c) for c in r.drawn_value]
+        if len(v) == 3:  # homogeneous: a center at infinity has no magnitude
+            if abs(v[2]) <= 1e-12 * max(abs(v[0]), abs(v[1]), 1e-300):
+                continue
+            v = [v[0] / v[2], v[1] / v[2]]
+        if r.key.startswith("theta"):
+            continue
+        m = max((abs(c) for c in v if math.isfinite(c)), default=0.0)
+        big[_kind(r.key)] = max(big[_kind(r.key)], m)
+    return {k: 1e-9 * m for k, m in big.items()}
 
 
 def legend_entries(sheet: Sheet) -> list[LegendEntry]:
@@ -386,23 +423,40 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
         drops += [("curvature",)]
     found: tuple[float, list[tuple[float, float]], tuple[str, ...]] | None = None
     all_rows = rows
-    for drop in drops:
-        # a panel left off takes its answers with it
-        rows = [r for r in all_rows if not (r.key.startswith("curvature-") and "curvature" in drop)]
-        for big in BIGS:
-            if big < MIN_BIG and drop != drops[-1]:
+    sheet: Sheet | None = None
+    for first_drop in range(len(drops)):
+        found = None
+        for drop in drops[first_drop:]:
+            # a panel left off takes its answers with it
+            rows = [r for r in all_rows
+                    if not (r.key.startswith("curvature-") and "curvature" in drop)]
+            for big in BIGS:
+                if big < MIN_BIG and drop != drops[-1]:
+                    break
+                trial = build_sheet(src, diagram, paper=paper, dry=True, table=False,
+                                    max_inches=big, drop=drop)
+                sizes = [(w, h) for w, h in ((pw, ph), (ph, pw))
+                         if _arrange(trial, src, rows, unit, (w, h), paper) is not None]
+                if sizes:
+                    found = (big, sizes, drop)
+                    break
+            if found:
                 break
-            trial = build_sheet(src, diagram, paper=paper, dry=True, table=False,
-                                max_inches=big, drop=drop)
-            sizes = [(w, h) for w, h in ((pw, ph), (ph, pw))
-                     if _arrange(trial, src, rows, unit, (w, h), paper) is not None]
-            if sizes:
-                found = (big, sizes, drop)
-                break
-        if found:
+        if found is None:  # the smallest panels, everything dropped: the best there is
+            found = (BIGS[-1], [(pw, ph)], drops[-1])
+        sheet = _kept(src, diagram, paper, rows, unit, found, upto, highlight)
+        if not any(p.crowded for p in sheet.panels) or found[2] == drops[-1]:
             break
-    if found is None:  # the smallest panels, everything dropped: the best there is
-        found = (BIGS[-1], [(pw, ph)], drops[-1])
+        # a label found no clear place: the page is too full; leave the next panel off
+    assert sheet is not None and sheet.page is not None
+    sheet.rows = rows
+    return sheet
+
+
+def _kept(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
+          found: tuple[float, list[tuple[float, float]], tuple[str, ...]],
+          upto: int | None, highlight: int | Collection[int] | None) -> Sheet:
+    """The page drawn at the scales found, portrait or landscape, panels grown where room."""
     big, sizes, drop = found
     # portrait or landscape: the one whose panels grow the larger (portrait on a tie)
     best: tuple[float, tuple[float, float], dict[str, float]] | None = None
@@ -417,7 +471,6 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
     page = _arrange(sheet, src, rows, unit, size, paper, force=True)
     assert page is not None
     page.dropped = drop
-    sheet.rows = rows
     return sheet
 
 

@@ -79,12 +79,30 @@ def text_size(text: str, size_pt: float, style: str = "label") -> tuple[float, f
     """
     st = STYLES.get(style, {})
     family = "monospace" if st.get("family") == "monospace" else "sans-serif"
-    lines = text.split("\n")
-    sizes = [_metrics(line or " ", float(size_pt), family, str(st.get("weight", "normal")),
-                      str(st.get("style", "normal"))) for line in lines]
-    w = max(s[0] for s in sizes)
-    h = sum(max(s[1], size_pt / 72.0) for s in sizes)
-    return w + 2 * _PAD, h + 2 * _PAD
+    if "\n" in text:  # matplotlib's own layout of the lines (line spacing, mathtext depths)
+        w, h = _block_metrics(text, float(size_pt), family, str(st.get("weight", "normal")),
+                              str(st.get("style", "normal")))
+        return w + 2 * _PAD, h + 2 * _PAD
+    w, h = _metrics(text or " ", float(size_pt), family, str(st.get("weight", "normal")),
+                    str(st.get("style", "normal")))
+    return w + 2 * _PAD, max(h, size_pt / 72.0) + 2 * _PAD
+
+
+@lru_cache(maxsize=1024)
+def _block_metrics(text: str, size_pt: float, family: str, weight: str,
+                   style: str) -> tuple[float, float]:
+    """Width and height (inches) of a text of several lines, as matplotlib lays it out."""
+    from matplotlib.figure import Figure
+    from matplotlib.font_manager import FontProperties
+
+    from graphkin.render.style import rc_context
+
+    with rc_context():
+        prop = FontProperties(family=family, size=size_pt, weight=weight,
+                              style=style)  # type: ignore[arg-type]
+        t = Figure(dpi=72).text(0, 0, text, fontproperties=prop)
+        box = t.get_window_extent(renderer=_renderer())
+    return box.width / 72.0, box.height / 72.0
 
 
 class _InkMap:
@@ -232,71 +250,93 @@ def place_labels(panel: Panel) -> None:
     """Place every label request of a panel as a text item of its group.
 
     The text items are appended to the groups that asked for them, with the
-    request's gid, centred on the chosen box.
+    request's gid, centred on the chosen box.  A request with ``fallback``
+    texts (a far point's name and distance on two lines) tries them in turn
+    when its text finds no clean place.
     """
     ink = _InkMap(panel)
     for g in panel.groups:
         for it in g.items:
             _mark(ink, panel, it)
     ink.finish()
-    pw, ph = panel.size
     order = sorted(range(len(panel.labels)),
                    key=lambda i: (_PRIORITY.get(panel.labels[i].style, 4), i))
+    panel.crowded = 0
     for i in order:
         req = panel.labels[i]
         size = float(STYLES.get(req.style, {}).get("size", 8.0))
-        w, h = text_size(req.text, size, req.style)
-        a = panel.to_paper(req.anchor)
-        area_cells = max(w * h * RES * RES, 1.0)
-        best: tuple[float, np.ndarray, bool] | None = None
-
-        def score_of(c: np.ndarray, cost: float, w: float = w, h: float = h,
-                     area_cells: float = area_cells) -> tuple[float, bool]:
-            b = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-            inked = ink.ink_in(b) / RES  # inches of line under the box
-            over = inked * INK_WIDTH / (w * h)
-            lab = ink.taken_in(b) / area_cells
-            cx0, cy0, cx1, cy1 = max(b[0], 0.0), max(b[1], 0.0), min(b[2], pw), min(b[3], ph)
-            inside = max(cx1 - cx0, 0.0) * max(cy1 - cy0, 0.0)
-            out = 1.0 - inside / (w * h)
-            # crossing any line costs more than walking a few rings out
-            score = 4.0 * over + (0.6 if inked > 0 else 0.0) + 25.0 * lab + 40.0 * out + cost
-            return score, over == 0 and lab == 0 and out <= 1e-12
-
-        for rank, c in enumerate(_candidates(req, a, w, h)):
-            sc, clean = score_of(c, 0.04 * rank)
-            if best is None or sc < best[0] - 1e-12:
-                best = (sc, c, clean)
+        best: tuple[float, np.ndarray, bool, str, float, float] | None = None
+        for text in (req.text, *req.fallback):
+            w, h = text_size(text, size, req.style)
+            sc, c, clean = _spot(panel, ink, req, w, h)
+            if best is None or (clean and not best[2]) or (clean == best[2] and sc < best[0]):
+                best = (sc, c, clean, text, w, h)
             if clean:
                 break
         assert best is not None
-        if not best[2]:
-            # a crowded place: score a fine grid around the anchor at once, nearest clean first
-            step = 0.04
-            rmax = 0.5 + 1.0 * max(w, h)
-            ring = np.arange(-rmax, rmax + 1e-9, step)
-            gx, gy = (v.ravel() for v in np.meshgrid(ring, ring))
-            dist = np.hypot(gx, gy)
-            keep = (dist <= rmax) & ((np.abs(gx) >= w / 2 + 0.02) | (np.abs(gy) >= h / 2 + 0.02))
-            cxs, cys, dist = a[0] + gx[keep], a[1] + gy[keep], dist[keep]
-            if len(cxs):
-                inked = ink.ink_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) / RES
-                lab = ink.taken_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) \
-                    / area_cells
-                ix = np.clip(np.minimum(cxs + w / 2, pw) - np.maximum(cxs - w / 2, 0.0), 0, None)
-                iy = np.clip(np.minimum(cys + h / 2, ph) - np.maximum(cys - h / 2, 0.0), 0, None)
-                out = 1.0 - ix * iy / (w * h)
-                sc = 4.0 * inked * INK_WIDTH / (w * h) + np.where(inked > 0, 0.6, 0.0) \
-                    + 25.0 * lab + 40.0 * out + 0.25 + 0.5 * dist
-                j = int(np.argmin(sc))
-                if sc[j] < best[0] - 1e-12:
-                    best = (float(sc[j]), np.array([cxs[j], cys[j]]), False)
-        c = best[1]
+        _, c, clean, text, w, h = best
+        panel.crowded += not clean
         ink.take((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2))
         x0, y0, _, _ = panel.view
         xy = np.array([[x0 + c[0] * panel.k, y0 + c[1] * panel.k]])
-        req.group.items.append(Item("text", xy, req.style, gid=req.gid, text=req.text,
+        req.group.items.append(Item("text", xy, req.style, gid=req.gid, text=text,
                                     key=req.key))
+
+
+def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
+          h: float) -> tuple[float, np.ndarray, bool]:
+    """The best place (paper inches) for a ``w`` × ``h`` box near the request's anchor.
+
+    Returns its score (lower is better), its centre and whether it is clean
+    (no ink, no other label, inside the panel).
+    """
+    pw, ph = panel.size
+    a = panel.to_paper(req.anchor)
+    area_cells = max(w * h * RES * RES, 1.0)
+    best: tuple[float, np.ndarray, bool] | None = None
+
+    def score_of(c: np.ndarray, cost: float) -> tuple[float, bool]:
+        b = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+        inked = ink.ink_in(b) / RES  # inches of line under the box
+        over = inked * INK_WIDTH / (w * h)
+        lab = ink.taken_in(b) / area_cells
+        cx0, cy0, cx1, cy1 = max(b[0], 0.0), max(b[1], 0.0), min(b[2], pw), min(b[3], ph)
+        inside = max(cx1 - cx0, 0.0) * max(cy1 - cy0, 0.0)
+        out = 1.0 - inside / (w * h)
+        # crossing any line costs more than walking a few rings out
+        score = 4.0 * over + (0.6 if inked > 0 else 0.0) + 25.0 * lab + 40.0 * out + cost
+        return score, over == 0 and lab == 0 and out <= 1e-12
+
+    for rank, c in enumerate(_candidates(req, a, w, h)):
+        sc, clean = score_of(c, 0.04 * rank)
+        if best is None or sc < best[0] - 1e-12:
+            best = (sc, c, clean)
+        if clean:
+            break
+    assert best is not None
+    if best[2]:
+        return best
+    # a crowded place: score a fine grid around the anchor at once, nearest clean first
+    step = 0.04
+    rmax = 0.5 + 1.0 * max(w, h)
+    ring = np.arange(-rmax, rmax + 1e-9, step)
+    gx, gy = (v.ravel() for v in np.meshgrid(ring, ring))
+    dist = np.hypot(gx, gy)
+    keep = (dist <= rmax) & ((np.abs(gx) >= w / 2 + 0.02) | (np.abs(gy) >= h / 2 + 0.02))
+    cxs, cys, dist = a[0] + gx[keep], a[1] + gy[keep], dist[keep]
+    if len(cxs):
+        inked = ink.ink_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) / RES
+        lab = ink.taken_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) / area_cells
+        ix = np.clip(np.minimum(cxs + w / 2, pw) - np.maximum(cxs - w / 2, 0.0), 0, None)
+        iy = np.clip(np.minimum(cys + h / 2, ph) - np.maximum(cys - h / 2, 0.0), 0, None)
+        out = 1.0 - ix * iy / (w * h)
+        sc = 4.0 * inked * INK_WIDTH / (w * h) + np.where(inked > 0, 0.6, 0.0) \
+            + 25.0 * lab + 40.0 * out + 0.25 + 0.5 * dist
+        j = int(np.argmin(sc))
+        if sc[j] < best[0] - 1e-12:
+            clean = bool(inked[j] == 0 and lab[j] == 0 and out[j] <= 1e-12)
+            best = (float(sc[j]), np.array([cxs[j], cys[j]]), clean)
+    return best
 
 
 def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> list[np.ndarray]:

@@ -172,10 +172,15 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             if lw is not None and pinned:
                 # a rod sliding in frame guides, carrying a pin (Rapson's slide, Fig. 4.23)
                 u = lw[1]
-                bar = LineString([tuple(arr[0] - 1.3 * k * u), tuple(arr[0] + 1.3 * k * u)])
+                # 1.3 in of paper each way, but never longer than half the mechanism: on a
+                # small handout panel the rod would run through the title (Ex. 12.3's trammel)
+                ext = np.array(mechanism_extent(src))
+                size = float(np.max(np.ptp(ext, axis=0))) if len(ext) > 1 else 0.0
+                half = min(1.3 * k, max(0.5 * size, 0.4 * k))
+                bar = LineString([tuple(arr[0] - half * u), tuple(arr[0] + half * u)])
                 g.items.append(Item("polygon", _ring(bar.buffer(BAR_HALF * k, quad_segs=6)),
                                     "link", key=f"link {lid}"))
-                _number(panel, g, lid, arr[0] + 0.9 * k * u, pre, gap=BAR_HALF + 0.03)
+                _number(panel, g, lid, arr[0] + 0.7 * half * u, pre, gap=BAR_HALF + 0.03)
                 rods.add(lid)
                 continue
             if not any(s.link == lid for s in mech.sliders):

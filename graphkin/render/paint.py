@@ -262,11 +262,12 @@ class StepPainter:
     # ---- helpers ------------------------------------------------------
     def label(self, panel: Panel, g: Group, text: str, anchor: np.ndarray, key: str,
               style: str = "label", gap: float = 0.045,
-              prefer: tuple[float, float] | None = None) -> None:
+              prefer: tuple[float, float] | None = None,
+              fallback: tuple[str, ...] = ()) -> None:
         """Ask for a label near ``anchor`` (placed later, avoiding the ink)."""
         panel.labels.append(LabelRequest(text, np.asarray(anchor, dtype=float), style,
                                          self.prefix + "label-" + safe_id(key), g, key=key,
-                                         gap=gap, prefer=prefer))
+                                         gap=gap, prefer=prefer, fallback=fallback))
 
     def arrow(self, panel: Panel, g: Group, tail: np.ndarray, tip: np.ndarray, style: str,
               key: str | None = None, text: str | None = None) -> Item | None:
@@ -320,6 +321,8 @@ class StepPainter:
         who = construction_text(ref_name) if panel.plane == "posture" else image_text(ref_name)
         text = f"{name}, {fmt(dist, 3)}{unit} from {who}" if ref_name else \
             f"{name}, {fmt(dist, 3)}{unit} off the figure"
+        # where a crowded edge has no room for one line: the name above its distance
+        two = (text.replace(", ", ",\n", 1),)
         d = _unit(xy - ref)
         if d is None:
             return
@@ -329,10 +332,12 @@ class StepPainter:
                 # one arrow for points that lie the same way, their labels beside it
                 panel.labels.append(LabelRequest(text, req.anchor, req.style,
                                                  self.prefix + "label-" + safe_id(label), g,
-                                                 key=label, gap=req.gap, prefer=req.prefer))
+                                                 key=label, gap=req.gap, prefer=req.prefer,
+                                                 fallback=two))
                 return
         n = len(panel.labels)
-        self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref)
+        self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref,
+                   fallback=two)
         if len(panel.labels) > n:
             shown.append((d, panel.labels[-1]))
 
@@ -356,7 +361,7 @@ class StepPainter:
         return far_reference(panel, label, xy, self.xy, self.src.mechanism, self.src.solution)
 
     def ideal(self, panel: Panel, g: Group, label: str, p: np.ndarray, text: str | None = None,
-              center: np.ndarray | None = None) -> None:
+              center: np.ndarray | None = None, fallback: tuple[str, ...] = ()) -> None:
         """A point at infinity: an arrow at the panel's edge, marked ∞."""
         d = _unit(np.asarray(p[:2], dtype=float))
         if d is None:
@@ -374,7 +379,7 @@ class StepPainter:
         tail = tip - d * 0.4 * panel.k
         self.arrow(panel, g, tail, tip, "infinity", key=label)
         self.label(panel, g, text or f"{construction_text(label)} ∞", tail, label, style="label",
-                   prefer=(-d[0], -d[1]))
+                   prefer=(-d[0], -d[1]), fallback=fallback)
 
     # ---- points -------------------------------------------------------
     def point(self, step: Step, g: Group, panel: Panel) -> None:
@@ -417,14 +422,19 @@ class StepPainter:
             return
         if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
             return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
+        internal = "#" in label or ":" in label  # a second copy, a slider line's own point
+        if internal and step.role != Role.RESULT:
+            return  # drawn as the line it defines or the point it copies: no dot, no name
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
         found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
-        if shown and "#" not in label and (":" not in label or step.op not in _LAID_OFF):
-            # a center or a point the construction finds: black, at point-label size
+        if not internal or ("#" not in label and shown and step.op not in _LAID_OFF):
+            # a center or a point the construction finds: black, at point-label size; a point
+            # laid off on the way (the pole velocity v, the Bresse diameter's end E) in grey
             text = construction_text(label)
             self.label(panel, g, text, xy, label,
-                       style="label" if found or text.startswith("$") else "label-aux")
+                       style="label" if shown and (found or text.startswith("$"))
+                       else "label-aux")
 
     def _on_helper(self, xy: np.ndarray, panel: Panel) -> bool:
         """True when ``xy`` is where a helper point of the mechanism is."""

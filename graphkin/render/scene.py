@@ -187,7 +187,12 @@ def far_reference(panel: Panel, label: str, xy: np.ndarray,
         return bool(x0 <= q[0] <= x1 and y0 <= q[1] <= y1)
 
     if panel.plane == "posture":
-        for name in ("P", "I"):  # the velocity pole: P (Sec. 4.14), I (Figs. 4.37-4.39)
+        # the velocity pole, I (Figs. 4.37-4.39; P in Sec. 4.14): "I*" when the file has a
+        # point I of its own; a point of the file called P is not the pole (the pantograph's pen)
+        named = set(mech.point_names) if mech is not None else set()
+        for name in ("I", "I*", "I**", "P"):
+            if name in named:
+                continue
             pole = value(name) if label != name else None
             if pole is not None and inside(pole):
                 return name, pole
@@ -263,6 +268,9 @@ class LabelRequest:
     """A preferred direction away from the anchor (unit vector), if any."""
     center: bool = False
     """Allow the label to sit on the anchor itself (a link number inside a plate)."""
+    fallback: tuple[str, ...] = ()
+    """Other texts to try, in turn, when ``text`` finds no clean place (a far point's name
+    and distance on two lines)."""
 
 
 @dataclass
@@ -303,6 +311,9 @@ class Panel:
     """Where the panel sits on the sheet: its lower-left corner in inches."""
     inner: tuple[float, float, float, float] | None = None
     """The view less the title and scale-bar strips: where construction lines may run."""
+    crowded: int = 0
+    """How many of its labels found no place clear of every line and label (set by
+    :func:`~graphkin.render.labels.place_labels`)."""
 
     @property
     def k(self) -> float:

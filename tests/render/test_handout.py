@@ -10,7 +10,9 @@ renderer), the page size is read back from the SVG.
 from __future__ import annotations
 
 import io
+import re
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -97,6 +99,7 @@ def test_all_sheet_fits_one_page(gk, name, paper):
     t = d.sheet.page.table
     assert t is not None and t.head[:2] == ("quantity", "value") and t.head[-1] == "unit"
     assert not {"analytic", "rel. diff."} & set(t.head)
+    assert not [c for r in t.rows for c in r if re.search(r"\de-\d", c)]  # no round-off
     assert ("direction" in t.head) == any(k.startswith(("V_", "omega")) for k in t.keys)
     # the Kennedy circle stays beside the instant centers (issue 11: on every centers figure);
     # when the page is full it is the curvature panel that goes, with a line saying where
@@ -301,3 +304,21 @@ def test_arrange_on_paper_puts_a_sheet_built_elsewhere_on_a_page(gk):
     assert len(sheet.page.block) == 2 and sheet.page.block[0][0].endswith("…")
     with pytest.raises(Exception, match="unknown paper"):
         arrange_on_paper(build, band, "a3")
+
+
+def test_round_off_prints_as_zero_on_a_handout_table():
+    # The elliptic trammel of Ex. 12.3: A = (0, 8) on the vertical guide, B = (6, 0) on the
+    # horizontal one (AB = 10 in).  I34 is the pin B itself, (6, 0); the inflection pole J of
+    # the coupler is the point of AB's plane at the origin O (the Cardan circle: the centrode
+    # of a trammel is a circle of diameter AB = 10 through O, and J lies opposite I on it, so
+    # J = O and I = (6, 8)).  Solved, their y's come out ~9e-16: the page prints 0.
+    path = Path(__file__).resolve().parents[2] / "gallery" / "mechanisms" / \
+        "ex12_3_elliptic_trammel.toml"
+    from graphkin import load
+
+    d = draw(load(path).solve(), "all", sheet="a4")
+    t = d.sheet.page.table
+    row = dict(zip(t.keys, t.rows))
+    assert row["center-I34"][1] == "(6.000, 0)"
+    assert row["curvature-J"][1] == "(0, 0)" and row["curvature-I"][1] == "(6.000, 8.000)"
+    assert not [c for r in t.rows for c in r if re.search(r"\de-\d", c)]

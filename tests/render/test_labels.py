@@ -31,12 +31,7 @@ def _solved(path: Path) -> graphkin.Solution:
     return graphkin.load(path).solve()
 
 
-CROWDED = {
-    "p5_13_pantograph": "the pantograph's inflection circle is 10.7 m across (|IJ|), far "
-                        "larger than the mechanism: the far points A_K1 and A_H1 find no "
-                        "free place for their name and distance between the Bresse circle, "
-                        "N and the V_C line (known, left open in issue 11)",
-}
+CROWDED: dict[str, str] = {}
 """Files with a known collision, each with why (strict: the test fails once it is gone)."""
 
 
