@@ -23,6 +23,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.6 (lettering a kinematic diagram).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from functools import lru_cache
 from typing import Any
 
@@ -115,6 +116,8 @@ class _InkMap:
         self.ink = np.zeros((self.ny, self.nx), dtype=np.float32)
         self.taken = np.zeros((self.ny, self.nx), dtype=np.uint8)
         self.sat: np.ndarray | None = None
+        self.last: tuple[np.ndarray, tuple[int, int, int, int]] = (
+            np.zeros((0, 0), dtype=np.uint8), (0, 0, 0, 0))
 
     def _cells(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         ij = np.floor(pts * RES).astype(np.int64)
@@ -212,7 +215,36 @@ class _InkMap:
 
     def take(self, b: tuple[float, float, float, float]) -> None:
         i0, j0, i1, j1 = self._range(b)
+        self.last = (self.taken[j0:j1, i0:i1].copy(), (i0, j0, i1, j1))
         self.taken[j0:j1, i0:i1] = 1
+
+    def _line_cells(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The cells along a polyline (paper inches), two cells wide."""
+        xs, ys = [], []
+        for p0, p1 in zip(pts[:-1], pts[1:]):
+            n = max(int(float(np.hypot(*(p1 - p0))) * RES * 2), 1)
+            q = p0 + np.linspace(0.0, 1.0, n + 1)[:, None] * (p1 - p0)
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    i, j = self._cells(q + np.array([dx, dy]) / RES)
+                    xs.append(i)
+                    ys.append(j)
+        return np.concatenate(xs), np.concatenate(ys)
+
+    def line_taken(self, pts: np.ndarray) -> bool:
+        """True when a polyline (paper inches) runs over a placed label."""
+        i, j = self._line_cells(pts)
+        return bool(self.taken[j, i].any())
+
+    def take_line(self, pts: np.ndarray) -> None:
+        """Keep later labels off a polyline drawn after the ink map was made (a slid arrow)."""
+        i, j = self._line_cells(pts)
+        self.taken[j, i] = 1
+
+    def untake(self) -> None:
+        """Give back the box of the last :meth:`take`."""
+        old, (i0, j0, i1, j1) = self.last
+        self.taken[j0:j1, i0:i1] = old
 
 
 def _mark(ink: _InkMap, panel: Panel, it: Item) -> None:
@@ -252,7 +284,9 @@ def place_labels(panel: Panel) -> None:
     The text items are appended to the groups that asked for them, with the
     request's gid, centred on the chosen box.  A request with ``fallback``
     texts (a far point's name and distance on two lines) tries them in turn
-    when its text finds no clean place.
+    when its text finds no clean place; a list of far points (``parts``) that
+    finds none is placed item by item.  ``panel.crowded`` counts the labels
+    left without a clean place.
     """
     ink = _InkMap(panel)
     for g in panel.groups:
@@ -264,23 +298,114 @@ def place_labels(panel: Panel) -> None:
     panel.crowded = 0
     for i in order:
         req = panel.labels[i]
-        size = float(STYLES.get(req.style, {}).get("size", 8.0))
-        best: tuple[float, np.ndarray, bool, str, float, float] | None = None
-        for text in (req.text, *req.fallback):
-            w, h = text_size(text, size, req.style)
-            sc, c, clean = _spot(panel, ink, req, w, h)
-            if best is None or (clean and not best[2]) or (clean == best[2] and sc < best[0]):
-                best = (sc, c, clean, text, w, h)
-            if clean:
-                break
-        assert best is not None
-        _, c, clean, text, w, h = best
-        panel.crowded += not clean
-        ink.take((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2))
-        x0, y0, _, _ = panel.view
-        xy = np.array([[x0 + c[0] * panel.k, y0 + c[1] * panel.k]])
-        req.group.items.append(Item("text", xy, req.style, gid=req.gid, text=text,
-                                    key=req.key))
+        if _place_one(panel, ink, req) or not req.parts:
+            continue
+        # the list found no clean place: its items one by one, each near the arrow
+        req.group.items.pop()
+        ink.untake()
+        for part in req.parts:
+            _place_one(panel, ink, part)
+
+
+def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
+    """Place one label (its text, else a fallback text); True when its place is clean.
+
+    A far point's label with ``slides`` looks first for a clean place close to
+    its arrow at the panel's edge, then with the arrow slid back along its ray;
+    only then anywhere near the edge.
+    """
+    size = float(STYLES.get(req.style, {}).get("size", 8.0))
+    if req.slides and req.arrow is not None:
+        for k, anchor in enumerate([req.anchor, *req.slides]):
+            shift = anchor - req.anchor
+            arrow = panel.to_paper(req.arrow.xy + shift)
+            if k and ink.line_taken(arrow):
+                continue  # the arrow would cross a label already placed
+            near = replace(req, anchor=anchor, slides=[])
+            for text in (req.text, *req.fallback):
+                w, h = text_size(text, size, req.style)
+                c = _near_spot(panel, ink, near, w, h)
+                if c is not None:
+                    if k:
+                        req.arrow.xy = req.arrow.xy + shift
+                        ink.take_line(arrow)
+                    _put(panel, ink, req, text, c, w, h)
+                    return True
+    best: tuple[float, np.ndarray, bool, str, float, float] | None = None
+    for text in (req.text, *req.fallback):
+        w, h = text_size(text, size, req.style)
+        sc, c, clean = _spot(panel, ink, req, w, h)
+        if best is None or (clean and not best[2]) or (clean == best[2] and sc < best[0]):
+            best = (sc, c, clean, text, w, h)
+        if clean:
+            break
+    assert best is not None
+    _, c, clean, text, w, h = best
+    if not (clean or req.parts):
+        panel.crowded += 1
+    if req.arrow is not None and clean:
+        _arrow_beside(panel, ink, req.arrow, c, w, h)
+    _put(panel, ink, req, text, c, w, h)
+    return clean
+
+
+def _arrow_beside(panel: Panel, ink: _InkMap, arrow: Item, c: np.ndarray, w: float,
+                  h: float) -> None:
+    """Move a far point's arrow beside its label's box (centre ``c``), pointing the same way.
+
+    The point is many sheet-widths away, so an inch along the edge does not
+    change where the arrow points; beside its name it cannot be mistaken.
+    Left where it is when the moved arrow would leave the panel or cross a
+    label.
+    """
+    pts = panel.to_paper(arrow.xy)
+    d = pts[-1] - pts[0]
+    n = float(np.hypot(*d))
+    a = panel.to_paper(np.asarray([arrow.xy[0]]))[0]
+    gap_now = math.hypot(max(abs(a[0] - c[0]) - w / 2, 0.0), max(abs(a[1] - c[1]) - h / 2, 0.0))
+    if n <= 0 or gap_now <= NEAR:
+        return
+    u = d / n
+    # from the box's centre along u to its edge, then a little clearance
+    t = min(w / 2 / abs(u[0]) if abs(u[0]) > 1e-12 else math.inf,
+            h / 2 / abs(u[1]) if abs(u[1]) > 1e-12 else math.inf) + 0.04
+    tail = c + u * t
+    new = np.array([tail, tail + u * n])
+    pw, ph = panel.size
+    if new.min() < 0 or new[:, 0].max() > pw or new[:, 1].max() > ph or ink.line_taken(new):
+        return
+    x0, y0, _, _ = panel.view
+    arrow.xy = np.array([x0, y0]) + new * panel.k
+    ink.take_line(new)
+
+
+def _put(panel: Panel, ink: _InkMap, req: LabelRequest, text: str, c: np.ndarray, w: float,
+         h: float) -> None:
+    """Take the box centred at ``c`` (paper inches) and add the text item to its group."""
+    ink.take((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2))
+    x0, y0, _, _ = panel.view
+    xy = np.array([[x0 + c[0] * panel.k, y0 + c[1] * panel.k]])
+    req.group.items.append(Item("text", xy, req.style, gid=req.gid, text=text,
+                                key=req.key, aliases=list(req.aliases)))
+
+
+NEAR = 0.3
+"""How far (inches) a far point's label may stand from its arrow before the arrow slides."""
+
+
+def _near_spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
+               h: float) -> np.ndarray | None:
+    """A clean place for a ``w`` × ``h`` box within :data:`NEAR` of the anchor, or None."""
+    pw, ph = panel.size
+    a = panel.to_paper(req.anchor)
+    for c in _candidates(req, a, w, h):
+        b = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
+        gap = math.hypot(max(b[0] - a[0], a[0] - b[2], 0.0), max(b[1] - a[1], a[1] - b[3], 0.0))
+        if gap > NEAR or b[0] < 0 or b[1] < 0 or b[2] > pw or b[3] > ph:
+            continue
+        if ink.ink_in(b) == 0 and ink.taken_in(b) == 0:
+            return c
+    return None
 
 
 def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,

@@ -249,6 +249,8 @@ def _add_group(ax: Axes, g: Group, drawing: Drawing,
             if it.kind == "text":
                 assert isinstance(main, Text)  # _artists makes one Text of a text item
                 drawing.texts.setdefault(_key(g, it.key), main)
+                for alias in it.aliases:  # far points listed in one label
+                    drawing.texts.setdefault(_key(g, alias), main)
             else:
                 drawing.setdefault(_key(g, it.key), main)
                 for alias in it.aliases:

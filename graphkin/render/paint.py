@@ -329,11 +329,19 @@ class StepPainter:
         shown = self.far.setdefault(panel.name, [])
         for d0, req in shown:
             if float(d @ d0) > math.cos(math.radians(8.0)):
-                # one arrow for points that lie the same way, their labels beside it
-                panel.labels.append(LabelRequest(text, req.anchor, req.style,
-                                                 self.prefix + "label-" + safe_id(label), g,
-                                                 key=label, gap=req.gap, prefer=req.prefer,
-                                                 fallback=two))
+                # one arrow for points that lie the same way, their names and distances in
+                # one list beside it (a label of its own could drift an inch from the arrow)
+                if not req.parts:
+                    req.parts.append(LabelRequest(req.text, req.anchor, req.style, req.gid,
+                                                  req.group, key=req.key, gap=req.gap,
+                                                  prefer=req.prefer, fallback=req.fallback))
+                req.parts.append(LabelRequest(text, req.anchor, req.style,
+                                              self.prefix + "label-" + safe_id(label), g,
+                                              key=label, gap=req.gap, prefer=req.prefer,
+                                              fallback=two))
+                req.text += "\n" + text
+                req.fallback = ()
+                req.aliases.append(label)
                 return
         n = len(panel.labels)
         self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref,
@@ -377,9 +385,14 @@ class StepPainter:
         t = min(ts)
         tip = c + d * (t - 0.12 * panel.k)
         tail = tip - d * 0.4 * panel.k
-        self.arrow(panel, g, tail, tip, "infinity", key=label)
+        arrow = self.arrow(panel, g, tail, tip, "infinity", key=label)
         self.label(panel, g, text or f"{construction_text(label)} ∞", tail, label, style="label",
                    prefer=(-d[0], -d[1]), fallback=fallback)
+        room = float((tail - c) @ d)  # how far the arrow may slide back toward the center
+        if arrow is not None and room > 0:
+            req = panel.labels[-1]
+            req.arrow = arrow
+            req.slides = [tail - d * f * room for f in (0.15, 0.3, 0.45, 0.6)]
 
     # ---- points -------------------------------------------------------
     def point(self, step: Step, g: Group, panel: Panel) -> None:

@@ -271,6 +271,16 @@ class LabelRequest:
     fallback: tuple[str, ...] = ()
     """Other texts to try, in turn, when ``text`` finds no clean place (a far point's name
     and distance on two lines)."""
+    aliases: list[str] = field(default_factory=list)
+    """Other keys the placed text answers to (far points listed in one label)."""
+    slides: list[np.ndarray] = field(default_factory=list)
+    """Other anchors (data coordinates) the label and its ``arrow`` may move to together
+    (a far point's arrow slid back along its ray, where the edge has no room)."""
+    arrow: Item | None = None
+    """The arrow that moves with the label to a slid anchor."""
+    parts: list[LabelRequest] = field(default_factory=list)
+    """The labels this one lists (far points that lie the same way): placed one by one,
+    each near the anchor, when the list as a whole finds no clean place."""
 
 
 @dataclass

@@ -80,8 +80,14 @@ def is_math(text: str) -> bool:
 
 @lru_cache(maxsize=4096)
 def math_ok(text: str) -> bool:
-    """True when a mathtext string parses (cached: the same labels recur on every sheet)."""
+    """True when a mathtext string parses (cached: the same labels recur on every sheet).
+
+    A text of several lines is parsed line by line, as matplotlib lays it out.
+    """
     from matplotlib.mathtext import MathTextParser
+
+    if "\n" in text:
+        return all(math_ok(line) for line in text.split("\n") if is_math(line))
 
     try:
         MathTextParser("path").parse(text, 72, None)

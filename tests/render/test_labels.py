@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from spec_data import EXAMPLES
 
@@ -88,3 +89,47 @@ def test_collisions_finds_a_label_on_a_panel_title_or_scale(target):
     label.set_ha(fixed.get_ha())
     label.set_va(fixed.get_va())
     assert ("label", label.get_gid(), target) in collisions(d)
+
+
+def _far_gaps(d):
+    """For every far point's label of a drawing: the gap (inches) between its box and its arrow."""
+    from graphkin.render.labels import text_size
+    from graphkin.render.style import STYLES
+
+    out = []
+    for p in d.sheet.panels:
+        placed = {i.text for g in p.groups for i in g.items if i.kind == "text"}
+        # a list of far points placed whole, else its entries one by one
+        reqs = [r for r in p.labels if r.arrow is not None or r.parts] + \
+            [q for r in p.labels if r.text not in placed for q in r.parts]
+        for req in reqs:
+            items = [i for i in req.group.items if i.kind == "text" and i.gid == req.gid
+                     and i.text in (req.text, *req.fallback)]
+            if not items:
+                continue
+            a = p.to_paper(req.arrow.xy[0] if req.arrow is not None else req.anchor)
+            c = p.to_paper(items[-1].xy)[0]
+            w, h = text_size(items[-1].text, float(STYLES[req.style].get("size", 8)), req.style)
+            gap = float(np.hypot(max(abs(c[0] - a[0]) - w / 2, 0),
+                                 max(abs(c[1] - a[1]) - h / 2, 0)))
+            out.append((gap, items[-1].text))
+    return out
+
+
+@pytest.mark.parametrize("path", [p for p in FILES if p.parent.name == "spec"],
+                         ids=lambda p: p.stem)
+def test_a_far_point_label_stays_beside_its_arrow(path):
+    # Issue 11: "every label next to its own point".  A far point is an arrow at the edge
+    # with "name, distance from I"; points that lie the same way share the arrow and are
+    # listed in one label beside it, and a label that finds no room at the edge takes its
+    # arrow along.  Before, a label of Ex. 3.2's cubic figure stood 1.55 in from its arrow.
+    sol = _solved(path)
+    try:
+        d = draw(sol, "curvature")
+    except DiagramUnavailable:
+        pytest.skip("no curvature figures")
+    gaps = _far_gaps(d)
+    if not gaps:
+        pytest.skip("every point of its curvature figures is on the drawing")
+    worst = max(gaps)
+    assert worst[0] <= 0.8, worst
