@@ -121,7 +121,8 @@ def table_size(t: Table, folds: int | None = None) -> tuple[float, float]:
     w = n * _fold_width(t) + (n - 1) * FOLD_GAP
     for line in (t.title, t.foot):
         if line:
-            w = max(w, _size(line, t.head_style if line is t.title else t.style)[0])
+            # 4 % for hinting: at 90 dpi a long sentence sets 1.6 % wider than its metrics
+            w = max(w, 1.04 * _size(line, t.head_style if line is t.title else t.style)[0])
     lines = per + 1 + (1.25 if t.title else 0.0) + (1.25 if t.foot else 0.0)
     return w + 2 * PAD, lines * ROW_H + 2 * PAD
 

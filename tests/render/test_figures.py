@@ -173,3 +173,31 @@ def test_a_circle_cut_by_the_title_strip_is_drawn_as_the_arcs_inside():
     assert t1 == pytest.approx(150.0, abs=0.3) and t2 - t1 == pytest.approx(240.0, abs=0.6)
     assert inside_spans(np.array([0.0, 0.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) is None
     assert inside_spans(np.array([9.0, 9.0]), 1.0, (-2.0, -2.0, 2.0, 2.0)) == []
+
+
+@pytest.mark.parametrize("dpi", [60, 75, 90, 120, 150])
+def test_every_text_stays_on_the_png_at_any_resolution(gk, dpi):
+    # Issue 11: at 90 dpi the results table's footnote ("The drawing agrees with the analytic
+    # solution to round-off ...") ran 9 px past the right edge of the PNG: font hinting sets
+    # a long sentence ~1.6 % wider than its metrics at 72 dpi say.
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.text import Text
+
+    from graphkin.render.style import rc_context
+
+    d = gk.drawn("ex3_1_fourbar", "posture")
+    fig = d.figure
+    old = fig.dpi
+    try:
+        fig.set_dpi(dpi)
+        with rc_context():
+            r = FigureCanvasAgg(fig).get_renderer()
+            W, H = fig.bbox.width, fig.bbox.height
+            for t in fig.findobj(Text):
+                if not t.get_text().strip() or not t.get_visible():
+                    continue
+                b = t.get_window_extent(r)
+                assert b.x0 >= -0.5 and b.y0 >= -0.5 and b.x1 <= W + 0.5 and b.y1 <= H + 0.5, \
+                    (t.get_text(), b, W, H)
+    finally:
+        fig.set_dpi(old)
