@@ -309,10 +309,10 @@ class StepPainter:
         """A finite point beyond the panel: an arrow toward it, named, with its distance.
 
         As a book figure does when a point does not fit (the far Γ of
-        Fig. 4.35): the arrow points from the velocity pole (P, or I in the
-        cubic of Figs. 4.37-4.39) when the panel shows it, else from the
+        Fig. 4.35): the arrow points from the velocity pole I (Figs.
+        4.37-4.39) when the panel shows it, else from the
         nearest point of the mechanism in the panel, and reads
-        "Γ_T, 254 in from P" -- never raw coordinates.
+        "Γ_T, 254 in from I" -- never raw coordinates.
         """
         name = construction_text(label) if panel.plane == "posture" else image_text(label)
         ref_name, ref = self.reference_for(panel, label, xy)
@@ -331,17 +331,7 @@ class StepPainter:
             if float(d @ d0) > math.cos(math.radians(8.0)):
                 # one arrow for points that lie the same way, their names and distances in
                 # one list beside it (a label of its own could drift an inch from the arrow)
-                if not req.parts:
-                    req.parts.append(LabelRequest(req.text, req.anchor, req.style, req.gid,
-                                                  req.group, key=req.key, gap=req.gap,
-                                                  prefer=req.prefer, fallback=req.fallback))
-                req.parts.append(LabelRequest(text, req.anchor, req.style,
-                                              self.prefix + "label-" + safe_id(label), g,
-                                              key=label, gap=req.gap, prefer=req.prefer,
-                                              fallback=two))
-                req.text += "\n" + text
-                req.fallback = ()
-                req.aliases.append(label)
+                req.list_also(text, self.prefix + "label-" + safe_id(label), g, label, two)
                 return
         n = len(panel.labels)
         self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref,
@@ -750,8 +740,11 @@ class StepPainter:
             g.items[-1].width = g.items[-1].head * 0.35
             mid = center + (radius + 0.02 * k) * np.array([math.cos(start + sweep / 2),
                                                             math.sin(start + sweep / 2)])
+            # where one line finds no room: the value over its unit and sense
+            two = (text.replace(" = ", " =\n", 1),)
             self.label(panel, g, text, mid, label, style="label-small", gap=0.05,
-                       prefer=(math.cos(start + sweep / 2), math.sin(start + sweep / 2)))
+                       prefer=(math.cos(start + sweep / 2), math.sin(start + sweep / 2)),
+                       fallback=two)
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:

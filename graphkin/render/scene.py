@@ -282,6 +282,23 @@ class LabelRequest:
     """The labels this one lists (far points that lie the same way): placed one by one,
     each near the anchor, when the list as a whole finds no clean place."""
 
+    def list_also(self, text: str, gid: str, group: Group, key: str,
+                  fallback: tuple[str, ...] = ()) -> None:
+        """Add a line to this label for another far point that lies the same way.
+
+        The lines are also kept as :attr:`parts`, each with its own gid and
+        group, to be placed one by one if the list finds no room.
+        """
+        if not self.parts:
+            self.parts.append(LabelRequest(self.text, self.anchor, self.style, self.gid,
+                                           self.group, key=self.key, gap=self.gap,
+                                           prefer=self.prefer, fallback=self.fallback))
+        self.parts.append(LabelRequest(text, self.anchor, self.style, gid, group, key=key,
+                                       gap=self.gap, prefer=self.prefer, fallback=fallback))
+        self.text += "\n" + text
+        self.fallback = ()
+        self.aliases.append(key)
+
 
 @dataclass
 class Panel:

@@ -46,6 +46,7 @@ from graphkin.render.sources import (
     title_of,
 )
 from graphkin.render.style import IMAGE_FILLS, STYLES
+from graphkin.render.text import plain
 
 __all__ = ["Sheet", "build_sheet", "MARGIN", "TITLE_H", "FOOT_H", "GAP"]
 
@@ -616,7 +617,9 @@ def _layout(sheet: Sheet) -> None:
     heights = [max(boxes[i][1] for i in r) for r in rows]
     W = max(sum(boxes[i][0] for i in r) + GAP * (len(r) - 1) for r in rows) + 2 * GAP
     if sheet.title:
-        W = max(W, text_size(sheet.title, STYLES["title"]["size"] + 1)[0] * 1.1 + 2 * GAP)
+        # as drawn: bold, a point larger than a panel's title, 0.12 in from the left edge
+        tw = text_size(plain(sheet.title), STYLES["title"]["size"] + 1, "title")[0]
+        W = max(W, tw * 1.06 + 0.12 + 2 * GAP)
     H = sum(heights) + GAP * (len(rows) + 1) + (SHEET_TITLE_H if sheet.title else 0.0)
     y = H - (SHEET_TITLE_H if sheet.title else 0.0) - GAP
     positions: list[tuple[float, float]] = [(0.0, 0.0)] * len(boxes)
