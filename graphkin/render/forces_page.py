@@ -41,7 +41,8 @@ from graphkin.render.table import Table
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
-    from graphkin.render.handout import LegendEntry, Page
+    from graphkin.render.handout import Page
+    from graphkin.render.legend import LegendEntry
 
 __all__ = ["page_table", "page_legend", "paper_forces_sheet", "FORCE_BIGS"]
 
@@ -112,7 +113,7 @@ def page_table(fs: ForceSolution, lscale: Scale, fscale: Scale,
 
 def page_legend(fs: ForceSolution, on: dict[str, list[Force]]) -> list[LegendEntry]:
     """A handout page's legend: the links and the forces' colours and line styles drawn."""
-    from graphkin.render.handout import LegendEntry
+    from graphkin.render.legend import LegendEntry
 
     mech = fs.mechanism
     colours = {f.color for fl in on.values() for f in fl}

@@ -42,7 +42,7 @@ from graphkin.render.text import math_escape
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
-    from graphkin.render.handout import LegendEntry
+    from graphkin.render.legend import LegendEntry
 
 __all__ = ["ForceSheet", "build_forces_sheet", "LOAD", "INERTIA", "DRIVE", "JOINT",
            "GREY_INK"]

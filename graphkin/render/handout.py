@@ -39,6 +39,16 @@ from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from graphkin.render.legend import (
+    LEGEND,
+    LINE_H,
+    LegendEntry,
+    box_axes,
+    draw_legend,
+    legend_cols,
+    legend_entries,
+    legend_size,
+)
 from graphkin.render.results import (
     Row,
     compact_cells,
@@ -49,7 +59,6 @@ from graphkin.render.scale import quantity_unit
 from graphkin.render.scene import Panel
 from graphkin.render.sheet import GAP, Sheet, build_sheet, sheet_diagrams
 from graphkin.render.sources import CURVATURE_PANELS, DiagramUnavailable, Source
-from graphkin.render.style import STYLES
 from graphkin.render.table import Table, folds_for, measure, table_size
 
 __all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "LEGEND",
@@ -66,47 +75,8 @@ BIGS = (5.0, 4.2, 3.6, 3.2, 2.8, 2.5, 2.2, 2.0, 1.8, 1.6)
 """The largest panel side tried, in inches, largest first."""
 MIN_BIG = 1.6
 """Below this a panel is no longer legible: the page leaves panels off instead."""
-LEGEND_PT = 6.5
-"""Size of the legend's text (points)."""
 BLOCK_PT = 6.5
 """Size of the title block's text (points)."""
-LINE_H = 0.14
-"""Height of one legend or title-block line, in inches."""
-HANDLE_W = 0.38
-"""Length of a legend's sample line, in inches."""
-
-LEGEND: tuple[tuple[tuple[str, ...], str, str], ...] = (
-    (("link", "plate", "pin"), "link", "link, pin joint"),
-    (("given-line",), "given-line", "given line"),
-    (("aux-line", "arc", "right-angle"), "aux-line", "construction line or arc"),
-    (("ref-line",), "ref-line", "centre line, line of centres"),
-    (("datum",), "datum", "datum or direction"),
-    (("result-line",), "result-line", "result line"),
-    (("result-arc",), "result-arc", "result circle"),
-    (("vector-abs",), "vector-abs", "absolute velocity or acceleration"),
-    (("vector-rel",), "vector-rel", "relative velocity or acceleration"),
-    (("vector-t",), "vector-t", "tangential component Aᵗ"),
-    (("vector-n",), "vector-n", "normal component Aⁿ"),
-    (("vector-c",), "vector-c", "Coriolis component Aᶜ"),
-    (("cubic",), "cubic", "cubic of stationary curvature"),
-    (("kennedy-known",), "kennedy-known", "Kennedy circle: center found"),
-    (("kennedy-unknown",), "kennedy-unknown", "Kennedy circle: center not yet found"),
-)
-"""Legend entries: the styles an entry stands for, the style of its sample, its words."""
-
-
-@dataclass
-class LegendEntry:
-    """One line of the legend: a sample (line or fill) and what it means."""
-
-    gid: str
-    style: str
-    text: str
-    fill: str | None = None
-    color: str | None = None
-    """The sample's colour when it is not the style's (the forces drawing's colours)."""
-
-
 @dataclass
 class Page:
     """The band of a handout page: where the table, the legend and the title block go.
@@ -228,40 +198,6 @@ def round_off(rows: Sequence[Row]) -> dict[str, float]:
     return {k: 1e-9 * m for k, m in big.items()}
 
 
-def legend_entries(sheet: Sheet) -> list[LegendEntry]:
-    """The legend of the styles drawn on the page, in a fixed order, then the image fills."""
-    used: set[str] = set()
-    fills: dict[str, str] = {}
-    for p in sheet.panels:
-        for g in p.groups:
-            for it in g.items:
-                used.add(it.style)
-                if it.style == "image" and it.key:
-                    fills.setdefault(it.overrides.get("fc", "#dddddd"), it.key.split(" ", 1)[-1])
-    out = [LegendEntry(f"legend-{style}", style, text) for styles, style, text in LEGEND
-           if used & set(styles)]
-    for k, (fc, lid) in enumerate(fills.items()):
-        out.append(LegendEntry(f"legend-image-{k}", "image", f"image of link {lid}", fc))
-    return out
-
-
-def _legend_size(entries: list[LegendEntry], cols: int) -> tuple[float, float]:
-    if not entries:
-        return 0.0, 0.0
-    per = -(-len(entries) // cols)
-    widths = [HANDLE_W + 0.08 + measure(e.text, LEGEND_PT, "caption")[0] for e in entries]
-    colw = [max(widths[c * per:(c + 1) * per], default=0.0) for c in range(cols)]
-    return sum(colw) + 0.12 * (cols - 1) + 0.16, per * LINE_H + 0.12
-
-
-def _legend_cols(entries: list[LegendEntry], width: float) -> int:
-    best = 1
-    for c in range(1, 5):
-        if _legend_size(entries, c)[0] <= width:
-            best = c
-    return best
-
-
 def block_lines(entries: Sequence[tuple[str, str, int]]) -> list[tuple[str, str]]:
     """Title-block lines: each ``(text, weight, most lines)`` wrapped to the block's width.
 
@@ -357,8 +293,8 @@ def _band(page: Page, cw: float) -> float:
     beside = cw - BLOCK_W - GAP
     for arrangement in ("legend-top", "table-top"):
         if arrangement == "legend-top":
-            lc = _legend_cols(page.legend, cw)
-            lw, lh = _legend_size(page.legend, lc)
+            lc = legend_cols(page.legend, cw)
+            lw, lh = legend_size(page.legend, lc)
             tf = folds_for(t, beside) if t else 1
             tw, th = table_size(t, tf) if t else (0.0, 0.0)
             if tw > beside:
@@ -369,8 +305,8 @@ def _band(page: Page, cw: float) -> float:
         else:
             tf = folds_for(t, cw) if t else 1
             tw, th = table_size(t, tf) if t else (0.0, 0.0)
-            lc = _legend_cols(page.legend, beside)
-            lw, lh = _legend_size(page.legend, lc)
+            lc = legend_cols(page.legend, beside)
+            lw, lh = legend_size(page.legend, lc)
             if tw > cw or lw > beside:
                 continue
             low = max(lh, blk_h)
@@ -381,8 +317,8 @@ def _band(page: Page, cw: float) -> float:
     if best is None:  # nothing fits side by side: everything stacked
         tf = folds_for(t, cw) if t else 1
         tw, th = table_size(t, tf) if t else (0.0, 0.0)
-        lc = _legend_cols(page.legend, cw)
-        lw, lh = _legend_size(page.legend, lc)
+        lc = legend_cols(page.legend, cw)
+        lw, lh = legend_size(page.legend, lc)
         low = blk_h
         best = (th + lh + blk_h + 2 * GAP,
                 ((0.0, blk_h + lh + 2 * GAP, tw, th), (0.0, blk_h + GAP, lw, lh), lc, tf, low))
@@ -508,7 +444,7 @@ def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,
     """Place the panels and the band on a page of ``size``; None when they do not fit."""
     page = Page(paper)
     page.table = results_table(sheet, rows, unit) if rows else None
-    page.legend = legend_entries(sheet)
+    page.legend = legend_entries(sheet.panels)
     page.block = title_block(sheet, src)
     return place_on_page(sheet, page, size, force)
 
@@ -595,55 +531,13 @@ def render_page(fig: Any, sheet: Sheet) -> None:
         x, y, w, h = page.table_box
         add_table(fig, page.table, (x, y), (w, h), sheet.size)
     if page.legend:
-        _legend(fig, sheet, page)
+        ax = _box_axes(fig, sheet, page.legend_box, "legend")
+        draw_legend(ax, page.legend, page.legend_cols, page.legend_box[3])
     _title_block(fig, sheet, page)
 
 
 def _box_axes(fig: Any, sheet: Sheet, box: tuple[float, float, float, float], gid: str) -> Any:
-    from matplotlib import patches
-
-    W, H = sheet.size
-    x, y, w, h = box
-    ax = fig.add_axes((x / W, y / H, w / W, h / H))
-    ax.set_axis_off()
-    ax.set_xlim(0, w)
-    ax.set_ylim(0, h)
-    ax.set_gid(gid)
-    frame = patches.Rectangle((0.0, 0.0), w, h, fill=False, lw=0.8, ec="k", clip_on=False)
-    frame.set_gid(f"{gid}-frame")
-    ax.add_patch(frame)
-    return ax
-
-
-def _legend(fig: Any, sheet: Sheet, page: Page) -> None:
-    """The line-style legend: a sample of each style drawn on the page and what it means."""
-    from matplotlib import patches
-    from matplotlib.lines import Line2D
-
-    ax = _box_axes(fig, sheet, page.legend_box, "legend")
-    entries = page.legend
-    cols = page.legend_cols
-    per = -(-len(entries) // cols)
-    widths = [HANDLE_W + 0.08 + measure(e.text, LEGEND_PT, "caption")[0] for e in entries]
-    colw = [max(widths[c * per:(c + 1) * per], default=0.0) for c in range(cols)]
-    h = page.legend_box[3]
-    for k, e in enumerate(entries):
-        c, r = divmod(k, per)
-        x = 0.08 + sum(colw[:c]) + 0.12 * c
-        y = h - 0.06 - LINE_H * (r + 0.5)
-        st = STYLES.get(e.style, {})
-        if e.style == "image":
-            art: Any = patches.Rectangle((x, y - 0.04), HANDLE_W, 0.08, fc=e.fill, ec="none")
-        elif e.style == "link":
-            art = patches.Rectangle((x, y - 0.03), HANDLE_W, 0.06, fc="#ffffff", ec="k",
-                                    lw=STYLES["link"]["lw"])
-        else:
-            art = Line2D([x, x + HANDLE_W], [y, y], color=e.color or st.get("color", "k"),
-                         lw=st.get("lw", 1.0), ls=st.get("ls", "-"))
-        art.set_gid(f"{e.gid}-sample")
-        ax.add_artist(art)
-        t = ax.text(x + HANDLE_W + 0.08, y, e.text, fontsize=LEGEND_PT, ha="left", va="center")
-        t.set_gid(e.gid)
+    return box_axes(fig, sheet.size, box, gid)
 
 
 def _title_block(fig: Any, sheet: Sheet, page: Page) -> None:

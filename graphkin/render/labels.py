@@ -366,17 +366,31 @@ def _arrow_beside(panel: Panel, ink: _InkMap, arrow: Item, c: np.ndarray, w: flo
     if n <= 0 or gap_now <= NEAR:
         return
     u = d / n
-    # from the box's centre along u to its edge, then a little clearance
+    # where the arrow may start: out of the box along u (its natural place), else beside
+    # the middle of a side or at a corner, a little clear of the box
     t = min(w / 2 / abs(u[0]) if abs(u[0]) > 1e-12 else math.inf,
-            h / 2 / abs(u[1]) if abs(u[1]) > 1e-12 else math.inf) + 0.04
-    tail = c + u * t
-    new = np.array([tail, tail + u * n])
-    pw, ph = panel.size
-    if new.min() < 0 or new[:, 0].max() > pw or new[:, 1].max() > ph or ink.line_taken(new):
-        return
-    x0, y0, _, _ = panel.view
-    arrow.xy = np.array([x0, y0]) + new * panel.k
-    ink.take_line(new)
+            h / 2 / abs(u[1]) if abs(u[1]) > 1e-12 else math.inf)
+    starts = [c + u * (t + 0.04)] + [
+        c + np.array([sx * (w / 2 + 0.04), sy * (h / 2 + 0.04)])
+        for sx, sy in ((1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, 1), (1, -1), (-1, -1))]
+    lo, hi = (panel.to_paper(np.asarray([q])) for q in ((panel.inner or panel.view)[:2],
+                                                        (panel.inner or panel.view)[2:]))
+    box = (c[0] - w / 2 - 0.02, c[1] - h / 2 - 0.02, c[0] + w / 2 + 0.02, c[1] + h / 2 + 0.02)
+    sides = starts[1:]
+    for length in (n, 0.6 * n):
+        # the arrow leaving its name, else (crowded) arriving beside it from behind
+        ends = [(q, q + u * length) for q in starts] + [(q - u * length, q) for q in sides]
+        for tail, tip in ends:
+            new = np.array([tail, tip])
+            q = tail + np.linspace(0.0, 1.0, 12)[:, None] * (tip - tail)
+            if (new < lo).any() or (new > hi).any() or ink.line_taken(new) or bool((
+                    (q[:, 0] > box[0]) & (q[:, 0] < box[2]) & (q[:, 1] > box[1])
+                    & (q[:, 1] < box[3])).any()):
+                continue  # off the drawing, over a label, or through its own name
+            x0, y0, _, _ = panel.view
+            arrow.xy = np.array([x0, y0]) + new * panel.k
+            ink.take_line(new)
+            return
 
 
 def _put(panel: Panel, ink: _InkMap, req: LabelRequest, text: str, c: np.ndarray, w: float,

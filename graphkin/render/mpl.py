@@ -319,6 +319,11 @@ def render_sheet(sheet: Sheet) -> Drawing:
 
             tab = full_table(sheet.rows)
             add_table(fig, tab, sheet.table_origin, table_size(tab), sheet.size)
+        if sheet.page is None and sheet.legend:
+            from graphkin.render.legend import box_axes, draw_legend
+
+            ax = box_axes(fig, sheet.size, sheet.legend_box, "legend")
+            draw_legend(ax, sheet.legend, sheet.legend_cols, sheet.legend_box[3])
     return drawing
 
 

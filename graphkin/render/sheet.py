@@ -31,6 +31,7 @@ from shapely.geometry import MultiPoint
 from graphkin.construction import Role
 from graphkin.mechanisms.model import FRAME
 from graphkin.render.labels import place_labels, text_size
+from graphkin.render.legend import CURVATURE_SHEETS, legend_cols, legend_entries, legend_size
 from graphkin.render.mechanism import mechanism_extent, paint_mechanism
 from graphkin.render.paint import POLES, StepPainter
 from graphkin.render.results import Row, result_rows
@@ -96,6 +97,11 @@ class Sheet:
     """``a4`` or ``letter`` for a handout page (``--sheet``), else None."""
     last_row: tuple[float, float] = (0.0, 0.0)
     """Width used by the last row of panels and its height, in inches."""
+    legend: list[Any] = field(default_factory=list)
+    """The line-style legend under the panels of a curvature sheet (LegendEntry's)."""
+    legend_cols: int = 1
+    legend_box: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+    """Where the legend goes: ``(x, y, width, height)`` in inches."""
     title_offset: tuple[float, float] | None = None
     """Where the sheet's title starts (left, top), in inches (None: the top left)."""
     width_cap: float = 11.5
@@ -133,7 +139,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                 highlight: int | Collection[int] | None = None, table: bool = True,
                 max_inches: float | None = None, title: str | None = None,
                 paper: str | None = None, width_cap: float = 11.5, dry: bool = False,
-                drop: Collection[str] = (), grow: dict[str, float] | None = None) -> Sheet:
+                drop: Collection[str] = (), grow: dict[str, float] | None = None,
+                legend: bool = True) -> Sheet:
     """Lay out the panels of a sheet and paint them.
 
     Parameters
@@ -162,6 +169,9 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     drop : collection of str
         Panels left off: ``curvature`` on a handout page that does not fit
         otherwise; ``kennedy`` for a caller that wants no Kennedy circle.
+    legend : bool
+        A curvature sheet's line-style legend under its panels (the step page,
+        which explains every line in words, leaves it off).
     grow : dict, optional
         Panel name -> a factor on its room (a handout page draws a panel a
         scale larger where the page has room).
@@ -332,7 +342,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
                     else "")),
                   diagram, rows, {d: pp.prefix for d, pp in painters.items()}, painters)
     sheet.paper, sheet.width_cap = paper, width_cap
-    _layout(sheet)
+    _layout(sheet, legend)
     return sheet
 
 
@@ -596,7 +606,7 @@ def _frame(p: Panel) -> None:
                         gid=f"{p.prefix}scale-text-{p.name}", text=s.text, ha="left"))
 
 
-def _layout(sheet: Sheet) -> None:
+def _layout(sheet: Sheet, legend: bool = True) -> None:
     """Place the panels in rows (shelves) and the table under them; set the sheet size."""
     sizes = [p.size for p in sheet.panels]
     boxes: list[tuple[float, float]] = list(sizes)
@@ -605,6 +615,12 @@ def _layout(sheet: Sheet) -> None:
         from graphkin.render.table import table_size
 
         boxes.append(table_size(full_table(sheet.rows)))
+    if legend and sheet.paper is None and sheet.diagram in CURVATURE_SHEETS:
+        # line styles tell the constructions apart: say what each means (issue 11, item 1)
+        sheet.legend = legend_entries(sheet.panels)
+        if sheet.legend:
+            sheet.legend_cols = legend_cols(sheet.legend, 6.5)
+            boxes.append(legend_size(sheet.legend, sheet.legend_cols))
     width_cap = max(sheet.width_cap, max(w for w, _ in boxes))
     rows: list[list[int]] = [[]]
     used = 0.0
@@ -632,7 +648,10 @@ def _layout(sheet: Sheet) -> None:
         sheet.last_row = (x, h + GAP)
     for p, pos in zip(sheet.panels, positions):
         p.origin = pos
+    if sheet.legend:
+        sheet.legend_box = (*positions[-1], *boxes[-1])
     if sheet.rows:
-        sheet.table_origin = positions[-1]
-        sheet.table_size = boxes[-1]
+        k = len(sheet.panels)
+        sheet.table_origin = positions[k]
+        sheet.table_size = boxes[k]
     sheet.size = (float(W), float(H))

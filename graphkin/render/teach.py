@@ -167,7 +167,7 @@ def step_frames(obj: Any, diagram: str = "posture", *, link: str | None = None,
     frames = []
     for step in cx.steps:
         sheet = build_sheet(src, diagram, upto=step.index, highlight=step.index, table=False,
-                            max_inches=max_inches, title="")
+                            legend=False, max_inches=max_inches, title="")
         d = render_sheet(sheet)
         assert d.figure is not None
         frames.append((step, to_svg(d.figure)))
@@ -200,7 +200,8 @@ def _scale_of(src: Any, diagram: str, max_inches: float) -> Any:
     from graphkin.render.sources import plane_of
 
     try:
-        sheet = build_sheet(src, diagram, table=False, max_inches=max_inches, title="")
+        sheet = build_sheet(src, diagram, table=False, legend=False, max_inches=max_inches,
+                            title="")
         name = diagram if plane_of(diagram) != "posture" else sheet.panels[0].name
         return sheet.panel(name).scale
     except (KeyError, IndexError):
@@ -249,7 +250,7 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
         for ps in steps:
             # the painter draws the steps numbered up to ps.main (steps keep their numbers)
             sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
-                                table=False, max_inches=max_inches, title="")
+                                table=False, legend=False, max_inches=max_inches, title="")
             d = render_sheet(sheet)
             assert d.figure is not None
             out.append(to_svg(d.figure))

@@ -213,3 +213,32 @@ def test_every_text_stays_on_the_png_at_any_resolution(gk, dpi, name, diagram):
                     (t.get_text(), b, W, H)
     finally:
         fig.set_dpi(old)
+
+
+@pytest.mark.parametrize("diagram,styles", [
+    # (a): the mechanism, construction lines, the line of centres N, the two result circles
+    ("inflection", {"link", "aux-line", "result-arc"}),
+    # (d): Hain's construction and the cubic itself (dashed, Fig. 4.39)
+    ("cubic", {"link", "aux-line", "cubic"}),
+    ("curvature", {"link", "aux-line", "result-arc", "cubic"}),
+])
+def test_a_curvature_sheet_has_a_legend_of_its_line_styles(gk, diagram, styles):
+    # Issue 11, item 1: "a legend for line styles" on the curvature figures.  Each entry
+    # is read back by its gid from the SVG; an entry names a style the sheet draws.
+    ids = _ids(gk.svg("ex4_14_inflection_bresse", diagram))
+    assert "legend" in ids and "legend-frame" in ids
+    shown = {i.removeprefix("legend-") for i in ids
+             if i.startswith("legend-") and not i.endswith(("-sample", "-frame"))}
+    assert styles <= shown, shown
+    if diagram == "inflection":
+        assert "cubic" not in shown  # the cubic is figure (d)'s, not drawn in (a)
+    d = gk.drawn("ex4_14_inflection_bresse", diagram)
+    drawn = {it.style for p in d.sheet.panels for g in p.groups for it in g.items}
+    from graphkin.render.legend import LEGEND
+
+    for styles_of, style, _ in LEGEND:  # an entry exactly when one of its styles is drawn
+        assert (style in shown) == bool(drawn & set(styles_of)), style
+
+
+def test_a_posture_sheet_has_no_legend(gk):
+    assert "legend" not in _ids(gk.svg("ex3_1_fourbar", "posture"))
