@@ -39,16 +39,7 @@ from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from graphkin.render.legend import (
-    LEGEND,
-    LINE_H,
-    LegendEntry,
-    box_axes,
-    draw_legend,
-    legend_cols,
-    legend_entries,
-    legend_size,
-)
+from graphkin.render import legend as lg
 from graphkin.render.results import (
     Row,
     compact_cells,
@@ -61,9 +52,8 @@ from graphkin.render.sheet import GAP, Sheet, build_sheet, sheet_diagrams
 from graphkin.render.sources import CURVATURE_PANELS, DiagramUnavailable, Source
 from graphkin.render.table import Table, folds_for, measure, table_size
 
-__all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "LEGEND",
-           "MIN_BIG", "LegendEntry", "block_lines", "place_on_page", "arrange_on_paper",
-           "round_off"]
+__all__ = ["PAPERS", "PAGE_MARGIN", "Page", "build_paper_sheet", "render_page", "MIN_BIG",
+           "block_lines", "place_on_page", "arrange_on_paper", "round_off"]
 
 PAPERS = {"a4": (8.27, 11.69), "letter": (8.5, 11.0)}
 """Paper sizes in inches, portrait (A4 is 210 × 297 mm)."""
@@ -87,7 +77,7 @@ class Page:
     paper: str
     table: Table | None = None
     table_box: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
-    legend: list[LegendEntry] = field(default_factory=list)
+    legend: list[lg.LegendEntry] = field(default_factory=list)
     legend_cols: int = 1
     legend_box: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
     block: list[tuple[str, str]] = field(default_factory=list)
@@ -287,14 +277,14 @@ def _band(page: Page, cw: float) -> float:
     above the table and the title block; or the table across the page above the
     legend and the title block.  Boxes are set relative to the band's lower left.
     """
-    blk_h = len(page.block) * LINE_H + 0.14
+    blk_h = len(page.block) * lg.LINE_H + 0.14
     t = page.table
     best: tuple[float, Any] | None = None
     beside = cw - BLOCK_W - GAP
     for arrangement in ("legend-top", "table-top"):
         if arrangement == "legend-top":
-            lc = legend_cols(page.legend, cw)
-            lw, lh = legend_size(page.legend, lc)
+            lc = lg.legend_cols(page.legend, cw)
+            lw, lh = lg.legend_size(page.legend, lc)
             tf = folds_for(t, beside) if t else 1
             tw, th = table_size(t, tf) if t else (0.0, 0.0)
             if tw > beside:
@@ -305,8 +295,8 @@ def _band(page: Page, cw: float) -> float:
         else:
             tf = folds_for(t, cw) if t else 1
             tw, th = table_size(t, tf) if t else (0.0, 0.0)
-            lc = legend_cols(page.legend, beside)
-            lw, lh = legend_size(page.legend, lc)
+            lc = lg.legend_cols(page.legend, beside)
+            lw, lh = lg.legend_size(page.legend, lc)
             if tw > cw or lw > beside:
                 continue
             low = max(lh, blk_h)
@@ -317,8 +307,8 @@ def _band(page: Page, cw: float) -> float:
     if best is None:  # nothing fits side by side: everything stacked
         tf = folds_for(t, cw) if t else 1
         tw, th = table_size(t, tf) if t else (0.0, 0.0)
-        lc = legend_cols(page.legend, cw)
-        lw, lh = legend_size(page.legend, lc)
+        lc = lg.legend_cols(page.legend, cw)
+        lw, lh = lg.legend_size(page.legend, lc)
         low = blk_h
         best = (th + lh + blk_h + 2 * GAP,
                 ((0.0, blk_h + lh + 2 * GAP, tw, th), (0.0, blk_h + GAP, lw, lh), lc, tf, low))
@@ -444,7 +434,7 @@ def _arrange(sheet: Sheet, src: Source, rows: list[Row], unit: str,
     """Place the panels and the band on a page of ``size``; None when they do not fit."""
     page = Page(paper)
     page.table = results_table(sheet, rows, unit) if rows else None
-    page.legend = legend_entries(sheet.panels)
+    page.legend = lg.legend_entries(sheet.panels)
     page.block = title_block(sheet, src)
     return place_on_page(sheet, page, size, force)
 
@@ -532,12 +522,12 @@ def render_page(fig: Any, sheet: Sheet) -> None:
         add_table(fig, page.table, (x, y), (w, h), sheet.size)
     if page.legend:
         ax = _box_axes(fig, sheet, page.legend_box, "legend")
-        draw_legend(ax, page.legend, page.legend_cols, page.legend_box[3])
+        lg.draw_legend(ax, page.legend, page.legend_cols, page.legend_box[3])
     _title_block(fig, sheet, page)
 
 
 def _box_axes(fig: Any, sheet: Sheet, box: tuple[float, float, float, float], gid: str) -> Any:
-    return box_axes(fig, sheet.size, box, gid)
+    return lg.box_axes(fig, sheet.size, box, gid)
 
 
 def _title_block(fig: Any, sheet: Sheet, page: Page) -> None:
@@ -545,6 +535,6 @@ def _title_block(fig: Any, sheet: Sheet, page: Page) -> None:
     ax = _box_axes(fig, sheet, page.block_box, "title-block")
     h = page.block_box[3]
     for i, (text, weight) in enumerate(page.block):
-        t = ax.text(0.08, h - 0.07 - LINE_H * (i + 0.5), text, fontsize=BLOCK_PT,
+        t = ax.text(0.08, h - 0.07 - lg.LINE_H * (i + 0.5), text, fontsize=BLOCK_PT,
                     fontweight=weight, ha="left", va="center")
         t.set_gid(f"title-block-{i}")
