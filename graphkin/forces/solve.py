@@ -270,6 +270,7 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
 
     mech = sol.mechanism
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    rough: list[tuple[Joint, Any, np.ndarray, np.ndarray, float, float, float]] = []
     for j in joints:
         src = j.source
         if j.kind not in (SLIDE, SLOT) or not isinstance(src, (Slider, Slot)) \
@@ -302,11 +303,54 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
         if c == 0:
             notes.append(f"{src.key}: no normal force without friction, so no friction")
             continue
-        d = np.sign(c) * n - mu * s * u
-        geo.normal[j.key] = d / float(np.hypot(*d))
+        rough.append((j, src, n, u, mu, s, float(np.sign(c))))
         notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
                      f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
                      f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
+    _friction_senses(sol, joints, geo, dynamic, rough)
+
+
+def _friction_senses(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
+                     rough: list[tuple[Joint, Any, np.ndarray, np.ndarray, float, float, float]]
+                     ) -> None:
+    """Lean each rough slider's force by φ, and check the normal's sense it was leant from.
+
+    The sense is the frictionless solution's (Sec. 11.10).  Friction can turn
+    it over near self-locking: the force found must press the block along the
+    leant line, not pull.  A slider whose force turns over is tried with the
+    other sense; when neither holds, the posture is self-locking: the force on
+    the block lies within the friction angle of the guide's normal and no drive
+    moves it.
+    """
+    from graphkin.forces.analytic import solve_matrix
+
+    senses = {j.key: sign for j, _, _, _, _, _, sign in rough}
+    tried: dict[str, int] = {j.key: 1 for j, *_ in rough}
+    while True:
+        for j, _src, n, u, mu, s, _ in rough:
+            d = senses[j.key] * n - mu * s * u
+            geo.normal[j.key] = d / float(np.hypot(*d))
+        if not rough:
+            return
+        fw, _, _ = solve_matrix(sol, joints, geo, dynamic)
+        big = max(float(np.hypot(*w[:2])) for w in fw.values()) or 1.0
+        turned = []
+        for j, src, *_ in rough:
+            on_block = fw[j.key][:2] if src.link == j.hi else -fw[j.key][:2]
+            if float(on_block @ geo.normal[j.key]) < -1e-9 * big:
+                turned.append((j, src))
+        if not turned:
+            return
+        for j, src in turned:
+            if tried[j.key] >= 2:
+                mu = sol.mechanism.friction[src.key][0]
+                raise InputError(
+                    f"self-locking at this posture: the force on link {src.link} lies within "
+                    f"the friction angle φ = {np.degrees(np.arctan(mu)):.2f}° of its guide's "
+                    f"normal, so no drive moves it (Sec. 11.10)",
+                    key=f"{src.key}.friction", file=sol.mechanism.source)
+            tried[j.key] += 1
+            senses[j.key] = -senses[j.key]
 
 
 def _tilt_for_pressure(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,

@@ -24,6 +24,7 @@ from strategies import (
     slotted,
 )
 
+from graphkin.errors import InputError
 from graphkin.forces import power_balance, solve_forces
 from graphkin.mechanisms import from_dict
 
@@ -46,6 +47,26 @@ _LOADED_DRIVE = RandomMechanism(
     truth={"2": (-1.125, 0.0, 0.0), "3": (-1.429730840277487, 0.3169636963055246, 0.0),
            "4": (-2.1094616805549746, 0.6339273926110492, 0.0)},
     omega={"2": 4.289013841019115, "3": 2.3662015831524985, "4": 0.0})
+
+_SELF_LOCKING = RandomMechanism(
+    # found by Hypothesis: the coupler AC stands 26.0° from the guide's normal, inside the
+    # friction angle of μ = 0.5 (26.57°): the block cannot be slid (self-locking)
+    kind="slider-crank, crank-driven",
+    data={"title": "random slider-crank, crank-driven", "units": {"length": "mm"},
+          "links": {"1": {"O2": [0.0, 0.0]}, "2": {"A": [0.25, 0.0], "O2": [-0.25, 0.0]},
+                    "3": {"A": [-0.27015115293406977, -0.4207354924039482],
+                          "C": [0.27015115293407, 0.4207354924039483],
+                          "D": [1.1102230246251565e-16, 5.551115123125783e-17]},
+                    "4": {"C": [0.0, 0.0]}},
+          "drive": {"link": 2, "angle": 0.0, "omega": "1.0 rad/s cw"},
+          "assembly": {"A": [0.5, 0.0], "C": [1.0403023058681398, 0.8414709848078965],
+                       "D": [0.7701511529340699, 0.42073549240394825]},
+          "sliders": [{"link": 4, "on": 1, "point": "C",
+                       "line": [[1.0403023058681398, 0.8414709848078965],
+                                [2.0334643585831733, 0.724727089691873]]}]},
+    truth={"2": (0.25, 0.0, 0.0), "3": (0.7701511529340698, 0.4207354924039482, 0.0),
+           "4": (1.0403023058681398, 0.8414709848078965, -0.11701072127637085)},
+    omega={"2": -1.0, "3": 1.1327867492986414, "4": 0.0})
 
 FAMILIES = st.one_of(fourbars(other_rates=False), slider_cranks(), inverted_slider_cranks(),
                      six_bars(), slotted())
@@ -154,6 +175,7 @@ def test_static_without_rates(case: tuple[Any, dict[str, Any]]) -> None:
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(slider_cranks(), st.floats(0.05, 0.6), st.floats(1.0, 500.0), st.floats(-180, 180))
 @example(_LOADED_DRIVE, 0.5, 1.0, 0.0)
+@example(_SELF_LOCKING, 0.5, 1.0, 0.0)
 def test_friction_is_coulomb(rm: Any, mu: float, mag: float, ang: float) -> None:
     """Rough sliders (Sec. 11.10): the graphic method agrees with the matrix method, and
     the force on each slider obeys Coulomb's law against its sliding velocity."""
@@ -166,7 +188,21 @@ def test_friction_is_coulomb(rm: Any, mu: float, mag: float, ang: float) -> None
     data["loads"] = [{"link": int(lid), "point": point, "force": f"{mag} N at {ang} deg"}]
     mech = from_dict(data, source="<random slider-crank>")
     sol = mech.solve()
-    graphic = solve_forces(sol)
+    try:
+        graphic = solve_forces(sol)
+    except InputError as exc:
+        # Self-locking (Sec. 11.10): the unloaded coupler AC is a two-force member, so the
+        # force on the block acts along AC; when AC lies within φ = atan μ of the guide's
+        # normal, no force along it slides the block (found by Hypothesis: AC 26.0° from the
+        # normal, φ = 26.57°, and the force on the block turned over once friction leant it).
+        assert "self-locking" in str(exc)
+        sl = mech.sliders[0]
+        u = np.subtract(sl.p1, sl.p0) / np.hypot(*np.subtract(sl.p1, sl.p0))
+        ac = np.subtract(sol.position("C"), sol.position("A"))
+        off_normal = np.degrees(np.arccos(min(abs(float(ac @ np.array([-u[1], u[0]])))
+                                              / float(np.hypot(*ac)), 1.0)))
+        assert off_normal < np.degrees(np.arctan(mu)) + 1e-6
+        return
     matrix = solve_forces(sol, method="analytic")
     # the joint forces' scale, or the load's when the drive takes the load directly
     big = max([float(np.hypot(*w[:2])) for w in matrix.forces.values()] + [mag])
