@@ -396,8 +396,33 @@ def _kept(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
                         table=False, max_inches=big, drop=drop, grow=grow)
     page = _arrange(sheet, src, rows, unit, size, paper, force=True)
     assert page is not None
+    # a panel where a label found no clear place: a scale larger, while the page has room
+    tried: set[str] = set()
+    while True:
+        crowded = sorted((p for p in sheet.panels if p.crowded and p.scale is not None
+                          and p.name not in tried), key=lambda p: -p.crowded)
+        if not crowded:
+            break
+        p = crowded[0]
+        tried.add(p.name)
+        assert p.scale is not None
+        more = dict(grow)
+        more[p.name] = more.get(p.name, 1.0) * _next_scale(p.scale.value)
+        trial = build_sheet(src, diagram, upto=upto, highlight=highlight, paper=paper,
+                            table=False, max_inches=big, drop=drop, grow=more)
+        if sum(q.crowded for q in trial.panels) >= sum(q.crowded for q in sheet.panels):
+            continue
+        tpage = _arrange(trial, src, rows, unit, size, paper)
+        if tpage is not None:
+            sheet, page, grow = trial, tpage, more
     page.dropped = drop
     return sheet
+
+
+def _next_scale(v: float) -> float:
+    """The factor on a panel's room that draws it at the next larger 1-2-5 scale."""
+    mant = v / 10 ** math.floor(math.log10(v) + 1e-9)
+    return (2.5 if abs(mant - 5.0) < 1e-6 else 2.0) * (1 + 1e-6)  # 5 -> 2, 2 -> 1, 1 -> 0.5
 
 
 def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
@@ -416,11 +441,8 @@ def _grow(src: Source, diagram: str, paper: str, rows: list[Row], unit: str,
                    key=lambda p: p.size[0] * p.size[1])
     for p in order:
         assert p.scale is not None
-        v = p.scale.value
-        mant = v / 10 ** math.floor(math.log10(v) + 1e-9)
-        step = 2.5 if abs(mant - 5.0) < 1e-6 else 2.0  # 5 -> 2, 2 -> 1, 1 -> 0.5
         trial = dict(grow)
-        trial[p.name] = step * (1 + 1e-6)
+        trial[p.name] = _next_scale(p.scale.value)
         sheet = build_sheet(src, diagram, paper=paper, dry=True, table=False, max_inches=big,
                             drop=drop, grow=trial)
         if _arrange(sheet, src, rows, unit, size, paper) is not None:

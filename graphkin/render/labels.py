@@ -341,6 +341,16 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
             break
     assert best is not None
     _, c, clean, text, w, h = best
+    if not clean and req.arrow is not None:
+        # a far point's label with no room near its arrow: the nearest clear place anywhere
+        # in the panel, with the arrow set beside it
+        for text in (req.text, *req.fallback):
+            w, h = text_size(text, size, req.style)
+            for c in _clear_spots(panel, ink, panel.to_paper(req.anchor), w, h):
+                if _arrow_beside(panel, ink, req.arrow, c, w, h):
+                    _put(panel, ink, req, text, c, w, h)
+                    return True
+        _, c, clean, text, w, h = best
     if not (clean or req.parts):
         panel.crowded += 1
     if req.arrow is not None and clean:
@@ -349,22 +359,40 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
     return clean
 
 
+def _clear_spots(panel: Panel, ink: _InkMap, a: np.ndarray, w: float,
+                 h: float) -> list[np.ndarray]:
+    """Centres (paper inches) of clear ``w`` × ``h`` boxes in the panel, nearest ``a`` first."""
+    pw, ph = panel.size
+    if w >= pw or h >= ph:
+        return []
+    xs = np.arange(w / 2, pw - w / 2, 0.05)
+    ys = np.arange(h / 2, ph - h / 2, 0.05)
+    gx, gy = (v.ravel() for v in np.meshgrid(xs, ys))
+    inked = ink.ink_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
+    taken = ink.taken_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
+    ok = (inked == 0) & (taken == 0)
+    order = np.argsort(np.hypot(gx[ok] - a[0], gy[ok] - a[1]))[:40]
+    return [np.array([gx[ok][i], gy[ok][i]]) for i in order]
+
+
 def _arrow_beside(panel: Panel, ink: _InkMap, arrow: Item, c: np.ndarray, w: float,
-                  h: float) -> None:
+                  h: float) -> bool:
     """Move a far point's arrow beside its label's box (centre ``c``), pointing the same way.
 
     The point is many sheet-widths away, so an inch along the edge does not
     change where the arrow points; beside its name it cannot be mistaken.
     Left where it is when the moved arrow would leave the panel or cross a
-    label.
+    label (returns False; True when it stands beside the label).
     """
     pts = panel.to_paper(arrow.xy)
     d = pts[-1] - pts[0]
     n = float(np.hypot(*d))
     a = panel.to_paper(np.asarray([arrow.xy[0]]))[0]
     gap_now = math.hypot(max(abs(a[0] - c[0]) - w / 2, 0.0), max(abs(a[1] - c[1]) - h / 2, 0.0))
-    if n <= 0 or gap_now <= NEAR:
-        return
+    if n <= 0:
+        return False
+    if gap_now <= NEAR:
+        return True
     u = d / n
     # where the arrow may start: out of the box along u (its natural place), else beside
     # the middle of a side or at a corner, a little clear of the box
@@ -390,7 +418,8 @@ def _arrow_beside(panel: Panel, ink: _InkMap, arrow: Item, c: np.ndarray, w: flo
             x0, y0, _, _ = panel.view
             arrow.xy = np.array([x0, y0]) + new * panel.k
             ink.take_line(new)
-            return
+            return True
+    return False
 
 
 def _put(panel: Panel, ink: _InkMap, req: LabelRequest, text: str, c: np.ndarray, w: float,

@@ -331,13 +331,16 @@ class StepPainter:
             if float(d @ d0) > math.cos(math.radians(8.0)):
                 # one arrow for points that lie the same way, their names and distances in
                 # one list beside it (a label of its own could drift an inch from the arrow)
-                req.list_also(text, self.prefix + "label-" + safe_id(label), g, label, two)
+                req.list_also(text, self.prefix + "label-" + safe_id(label), g, label, two,
+                              short=f"{name}, {fmt(dist, 3)}{unit}")
                 return
         n = len(panel.labels)
         self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref,
                    fallback=two)
         if len(panel.labels) > n:
             shown.append((d, panel.labels[-1]))
+            panel.labels[-1].short = [f"{name}, {fmt(dist, 3)}{unit}"]
+            panel.labels[-1].ref = f"from {who}" if ref_name else "off the figure"
 
     def later_points(self, label: str, panel: Panel,
                      lies_on: Callable[[np.ndarray], bool]) -> list[np.ndarray]:

@@ -282,12 +282,19 @@ class LabelRequest:
     """The labels this one lists (far points that lie the same way): placed one by one,
     each near the anchor, when the list as a whole finds no clean place."""
 
+    short: list[str] = field(default_factory=list)
+    """A far point's name and distance without the point they are measured from."""
+    ref: str = ""
+    """What a far point's distance is measured from (``from I``)."""
+
     def list_also(self, text: str, gid: str, group: Group, key: str,
-                  fallback: tuple[str, ...] = ()) -> None:
+                  fallback: tuple[str, ...] = (), short: str = "") -> None:
         """Add a line to this label for another far point that lies the same way.
 
-        The lines are also kept as :attr:`parts`, each with its own gid and
-        group, to be placed one by one if the list finds no room.
+        A list too wide for its place says once what the distances are from
+        (``U_T, 395 in`` ... ``(from I)``).  The lines are also kept as
+        :attr:`parts`, each with its own gid and group, to be placed one by
+        one if the list finds no room at all.
         """
         if not self.parts:
             self.parts.append(LabelRequest(self.text, self.anchor, self.style, self.gid,
@@ -296,7 +303,9 @@ class LabelRequest:
         self.parts.append(LabelRequest(text, self.anchor, self.style, gid, group, key=key,
                                        gap=self.gap, prefer=self.prefer, fallback=fallback))
         self.text += "\n" + text
-        self.fallback = ()
+        self.short.append(short)
+        self.fallback = ("\n".join([*self.short, f"({self.ref})"]),) \
+            if self.ref and all(self.short) else ()
         self.aliases.append(key)
 
 

@@ -151,9 +151,14 @@ def test_a_far_point_gives_its_distance_from_the_pole(gk, diagram, point):
     x0, y0, x1, y1 = d.sheet.panels[0].inner
     assert not (x0 <= far[0] <= x1 and y0 <= far[1] <= y1)  # it is off the drawing
     texts = [t.get_text() for t in d.texts.values()]
-    # one entry per line; points that lie the same way are listed in one label, and a
-    # crowded edge puts a name over its distance ("W,\n33.9 in from I")
-    entries = [e for t in texts for e in t.replace(",\n", ", ").split("\n")]
+    # one entry per line; points that lie the same way are listed in one label (when
+    # narrow, "U_T, 395 in" ... "(from I)"), and a crowded edge puts a name over its
+    # distance ("W,\n33.9 in from I")
+    entries = []
+    for t in texts:
+        lines = t.replace(",\n", ", ").split("\n")
+        ref = lines.pop()[1:-1] if len(lines) > 1 and lines[-1].startswith("(from ") else None
+        entries += [e if ref is None else f"{e} {ref}" for e in lines]
     name = "$G_{T}$" if point == "G_T" else point
     text = next((e for e in entries if e.startswith(name + ",")), None)
     assert text is not None, texts
