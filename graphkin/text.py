@@ -32,6 +32,10 @@ ROUND_OFF = 1e-12
 """Coordinates below this fraction of the mechanism's size are written as 0 (round-off)."""
 
 
+_HALF_TURN_ROUND_OFF = 1e-7
+"""Degrees: an angle this close to -180° is reported as 180° (round-off of a half turn)."""
+
+
 @overload
 def wrap_degrees(rad: float) -> float: ...
 @overload
@@ -57,6 +61,8 @@ def wrap_degrees(rad: Any) -> Any:
     d = np.degrees(np.asarray(rad, dtype=float))
     k = np.ceil((d - 180.0) * (1.0 / 360.0))
     d = d - 360.0 * k + 0.0
+    # round-off of the half turn is the half turn: -179.9999999999 is 180 on every machine
+    d = np.where(d <= -180.0 + _HALF_TURN_ROUND_OFF, d + 360.0, d)
     if isinstance(rad, (int, float, np.floating, np.integer)):
         return float(d)
     return d
@@ -131,6 +137,8 @@ def fmt_angle(rad: float) -> str:
         d -= 360.0
     if abs(d) < 0.005:
         d = 0.0
+    if d <= -179.995:  # prints as the half turn: 180.00, never -180.00
+        d = 180.0
     return f"∠{d:.2f}°"
 
 

@@ -48,3 +48,51 @@ class Tolerance:
 
 
 DEFAULT_TOL = Tolerance()
+
+
+# --- verdicts on computed values -------------------------------------------------------
+#
+# A sign, a sense, a branch or a verdict (self-locking, a toggle, cw/ccw) taken on a value
+# that is round-off of its scale differs between machines: the last digits of sin, hypot
+# or a linear solve are not the same on every CPU.  Such decisions go through these
+# helpers, with the scale of the quantity (the largest value of its kind in the problem).
+
+VERDICT_REL = 1e-9
+"""A computed value within this fraction of its scale is zero for every verdict."""
+
+
+def is_zero(x: float, scale: float, rel: float = VERDICT_REL) -> bool:
+    """True when ``x`` is round-off of ``scale``: no verdict may be taken on its sign.
+
+    Parameters
+    ----------
+    x : float
+        The computed value (a component, a rate, a moment).
+    scale : float
+        The size of its kind in the problem: the largest force of a force analysis,
+        the largest velocity of a posture, the size of the mechanism.
+    rel : float
+        Relative threshold (default :data:`VERDICT_REL`).
+
+    Examples
+    --------
+    >>> is_zero(1e-17, 1.0), is_zero(1e-3, 1.0), is_zero(0.0, 0.0)
+    (True, False, True)
+    """
+    return bool(abs(x) <= rel * abs(scale)) or x == 0.0
+
+
+def sign(x: float, scale: float, rel: float = VERDICT_REL) -> int:
+    """The sign of ``x`` (-1, 0 or 1), 0 when ``x`` is round-off of ``scale``.
+
+    Examples
+    --------
+    >>> sign(-2.0, 1.0), sign(3e-18, 1.0), sign(1e-6, 1.0)
+    (-1, 0, 1)
+    """
+    if is_zero(x, scale, rel):
+        return 0
+    return 1 if x > 0 else -1
+
+
+__all__ += ["VERDICT_REL", "is_zero", "sign"]

@@ -15,6 +15,7 @@ import numpy as np
 
 from graphkin.forces.joints import id_order
 from graphkin.forces.solve import ForceSolution
+from graphkin.tolerance import VERDICT_REL, is_zero, sign
 
 __all__ = ["forces_json", "forces_text", "forces_section", "forces_report"]
 
@@ -25,6 +26,8 @@ def _deg(v: np.ndarray) -> float:
     d = math.degrees(math.atan2(float(v[1]), float(v[0]))) % 360.0
     if d > 180.0:
         d -= 360.0
+    if d <= -179.995:  # prints as 180.00, never -180.00 (round-off of a half turn)
+        d = 180.0
     return 0.0 if d == 0 else d
 
 
@@ -36,8 +39,11 @@ def _units(fs: ForceSolution) -> dict[str, str]:
 def forces_json(fs: ForceSolution) -> dict[str, Any]:
     """The ``forces`` object of docs/formats/json.md (plus ``method``, ``shaking``, ``notes``)."""
     joints = {}
+    tiny = VERDICT_REL * fs.scale  # round-off of the forces: 0 on every machine
     for j in fs.joints:
-        joints[j.key] = {"force": fs.forces[j.key][:2].tolist(),
+        f = fs.forces[j.key][:2]
+        f = np.where(np.abs(f) <= tiny, 0.0, f) + 0.0
+        joints[j.key] = {"force": f.tolist(),
                          "point": fs.point(j.key).tolist()}
     drives = {lid: {kind: value} for lid, (kind, value) in fs.drives.items()}
     out: dict[str, Any] = {"units": _units(fs), "method": fs.method, "joints": joints,
@@ -74,11 +80,17 @@ def _num(x: float, digits: int = 4) -> str:
     return f"{r:.{places}f}"
 
 
-def _mag(v: np.ndarray, unit: str) -> str:
+def _mag(v: np.ndarray, unit: str, scale: float) -> str:
+    """``|v| unit ∠θ``, or ``0 unit`` for a vector at round-off of ``scale`` (no direction)."""
     m = float(np.hypot(v[0], v[1]))
-    if m <= 1e-12 * max(1.0, float(np.abs(v).max(initial=0.0))) or m == 0.0:
+    if is_zero(m, scale):
         return f"0 {unit}"
     return f"{_num(m)} {unit} ∠{_deg(v):.2f}°"
+
+
+def _sense(t: float, scale: float) -> str:
+    """``ccw``, ``cw``, or ``""`` for a torque at round-off of ``scale`` (no sense)."""
+    return {1: "ccw", -1: "cw", 0: ""}[sign(t, scale)]
 
 
 def _two_force_state(fs: ForceSolution, lid: str) -> str | None:
@@ -96,11 +108,13 @@ def _two_force_state(fs: ForceSolution, lid: str) -> str | None:
         return None
     # the force on the first pin pointing toward the second pin pushes the link together
     push = float(f[0] @ axis) / n
-    if abs(float(np.hypot(*(f[0] + f[1])))) > 1e-9 * max(1.0, float(np.hypot(*f[0]))):
+    scale = fs.scale
+    if not is_zero(float(np.hypot(*(f[0] + f[1]))), scale):
         return None
-    if abs(push) <= 1e-12 * max(1.0, float(np.hypot(*f[0]))):
+    s = sign(push, scale)
+    if s == 0:
         return None
-    return "in compression" if push > 0 else "in tension"
+    return "in compression" if s > 0 else "in tension"
 
 
 def forces_text(fs: ForceSolution) -> str:
@@ -112,20 +126,22 @@ def forces_text(fs: ForceSolution) -> str:
            "construction" else "by the matrix method")
     kind = "Dynamic" if fs.dynamic else "Static"
     lines = [f"{kind} force analysis {how}"]
+    fscale = fs.scale
+    tscale = fscale * (mech.size or 1.0)
     for n in fs.notes:
         lines.append(f"  note: {n}")
     if fs.inertia:
         lines.append("  inertia forces (d'Alembert, offset by h, Eq. 12.18)")
         for lid, f in fs.inertia.items():
             g = mech.inertia[lid].center
-            sense = "ccw" if f.torque > 0 else ("cw" if f.torque < 0 else "")
-            lines.append(f"    -m{lid}A_{g} = {_mag(f.force, fu)}   -I_G{lid}α{lid} = "
+            sense = _sense(f.torque, tscale)
+            lines.append(f"    -m{lid}A_{g} = {_mag(f.force, fu, fscale)}   -I_G{lid}α{lid} = "
                          f"{_num(abs(f.torque))} {tu} {sense}   h{lid} = {_num(f.offset)} "
                          f"{mech.length_unit}".rstrip())
     lines.append("  joint forces (F_ij: by link i on link j)")
     for j in sorted(fs.joints, key=lambda j: (id_order(j.lo), id_order(j.hi), j.key)):
         v = fs.forces[j.key][:2]
-        row = f"    {_name(j.lo, j.hi)} = {_mag(v, fu)}"
+        row = f"    {_name(j.lo, j.hi)} = {_mag(v, fu, fscale)}"
         at = j.key.partition("@")[2]
         if at:
             row += f"  at {at}"
@@ -136,15 +152,17 @@ def forces_text(fs: ForceSolution) -> str:
             lines.append(f"    link {lid} is a two-force member {state}")
     for lid, (kind_, value) in fs.drives.items():
         if kind_ == "torque":
-            sense = "ccw" if value > 0 else ("cw" if value < 0 else "")
+            sense = _sense(value, tscale)
+            value = 0.0 if not sense else value
             name = f"T{1}{lid}".translate(_SUB) if lid.isdigit() else f"T_1{lid}"
             lines.append(f"  drive: {name} = {_num(abs(value), 6)} {tu} {sense}".rstrip())
         else:
+            value = 0.0 if is_zero(value, fscale) else value
             lines.append(f"  drive: input force on link {lid} = {_num(value, 6)} {fu} "
                          "(along the slider's line)")
     sh = fs.shaking
     if sh is not None:
-        lines.append(f"  shaking force F_s = {_mag(sh[0], fu)}, shaking moment M_s = "
+        lines.append(f"  shaking force F_s = {_mag(sh[0], fu, fscale)}, shaking moment M_s = "
                      f"{_num(sh[1], 6)} {tu} about the origin (Eqs. 12.23-12.24)")
     if fs.partials and len(fs.partials) > 1:
         lines.append("  superposition (Sec. 12.5): one analysis per loaded link")

@@ -20,7 +20,7 @@ from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint, geometry, 
 from graphkin.forces.ops import line_of
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import Rolling, Slider, Slot
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import Tolerance, is_zero, sign
 
 if TYPE_CHECKING:
     from graphkin.construction import Construction
@@ -135,12 +135,26 @@ class ForceSolution:
         if jt.kind != SLIDE:
             return p.copy()
         w = self.forces[key]
-        if np.hypot(w[0], w[1]) == 0:
+        if is_zero(float(np.hypot(w[0], w[1])), self.scale):  # no force, no line of action
             return p.copy()
         base, u = self.geometry.base[key], self.geometry.along[key]
         den = -w[1] * u[0] + w[0] * u[1]
         t = (w[1] * base[0] - w[0] * base[1] - w[2]) / den
         return base + t * u
+
+    @property
+    def scale(self) -> float:
+        """The size of the forces: the largest load, inertia force, joint force or drive.
+
+        A torque counts as itself over the mechanism's size.  A force within
+        :data:`graphkin.tolerance.VERDICT_REL` of it is zero in the reports, and
+        no sense is taken from it.
+        """
+        size = self.mechanism.size or 1.0
+        big = force_scale(self.solution, self.dynamic, self.forces)
+        for kind, value in self.drives.values():
+            big = max(big, abs(value) / size if kind == "torque" else abs(value))
+        return big
 
     def torque(self, link: str | int) -> float:
         """The drive's torque (or input force) of a drive link."""
@@ -270,6 +284,8 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
 
     mech = sol.mechanism
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    fscale = force_scale(sol, dynamic, plain)
+    vscale = sol.velocity_scale() if sol.has_rates else 0.0
     rough: list[tuple[Joint, Any, np.ndarray, np.ndarray, float, float, float]] = []
     for j in joints:
         src = j.source
@@ -293,26 +309,28 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
             v = np.asarray(sol.velocity(p, src.link)) - _velocity_in(sol, src.on,
                                                                        sol.position(p, src.link))
             speed = float(v @ u)
-            if abs(speed) <= 1e-12 * max(1.0, float(np.hypot(*v))):
+            if is_zero(speed, vscale):
                 raise InputError("the slider is at rest relative to its guide at this posture: "
                                  "say impending = \"ahead\" or \"behind\"",
                                  key=f"{src.key}.impending", file=mech.source)
             s = 1.0 if speed > 0 else -1.0
         else:
             s = 1.0 if impending == "ahead" else -1.0
-        if c == 0:
+        if is_zero(c, fscale):
+            # a load taken directly by a drive leaves the joint forces at round-off of the
+            # loads: the normal force is zero, so is friction (no verdict on its sense)
             notes.append(f"{src.key}: no normal force without friction, so no friction")
             continue
-        rough.append((j, src, n, u, mu, s, float(np.sign(c))))
+        rough.append((j, src, n, u, mu, s, float(sign(c, fscale))))
         notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
                      f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
                      f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
-    _friction_senses(sol, joints, geo, dynamic, rough)
+    _friction_senses(sol, joints, geo, dynamic, rough, fscale)
 
 
 def _friction_senses(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: bool,
-                     rough: list[tuple[Joint, Any, np.ndarray, np.ndarray, float, float, float]]
-                     ) -> None:
+                     rough: list[tuple[Joint, Any, np.ndarray, np.ndarray, float, float, float]],
+                     fscale: float) -> None:
     """Lean each rough slider's force by φ, and check the normal's sense it was leant from.
 
     The sense is the frictionless solution's (Sec. 11.10).  Friction can turn
@@ -333,11 +351,11 @@ def _friction_senses(sol: Solution, joints: list[Joint], geo: Geometry, dynamic:
         if not rough:
             return
         fw, _, _ = solve_matrix(sol, joints, geo, dynamic)
-        big = max(float(np.hypot(*w[:2])) for w in fw.values()) or 1.0
+        big = max([fscale] + [float(np.hypot(*w[:2])) for w in fw.values()])
         turned = []
         for j, src, *_ in rough:
             on_block = fw[j.key][:2] if src.link == j.hi else -fw[j.key][:2]
-            if float(on_block @ geo.normal[j.key]) < -1e-9 * big:
+            if sign(float(on_block @ geo.normal[j.key]), big) < 0:
                 turned.append((j, src))
         if not turned:
             return
@@ -367,6 +385,7 @@ def _tilt_for_pressure(sol: Solution, joints: list[Joint], geo: Geometry, dynami
 
     mech = sol.mechanism
     plain, _, _ = solve_matrix(sol, joints, geo, dynamic)
+    fscale = force_scale(sol, dynamic, plain)
     for j in joints:
         src = j.source
         if j.kind != SLOT or not isinstance(src, Rolling):
@@ -377,15 +396,35 @@ def _tilt_for_pressure(sol: Solution, joints: list[Joint], geo: Geometry, dynami
         e = (c - p) / float(np.hypot(*(c - p)))       # radial: toward the gear's center
         t = np.array([-e[1], e[0]])
         on_gear = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
-        s = float(on_gear @ t)
+        s = sign(float(on_gear @ t), fscale)
         if s == 0:
             notes.append(f"{src.key}: no transmitted force, so no radial force")
             continue
-        d = np.sign(s) * t + np.tan(phi) * e
+        d = s * t + np.tan(phi) * e
         geo.normal[j.key] = d / float(np.hypot(*d))
         notes.append(f"{src.key}: gear teeth, the force on link {src.link} along the pressure "
                      f"line at φ = {np.degrees(phi):g}° from the common tangent at "
                      f"{j.point} (Sec. 11.11, Fig. 11.14)")
+
+
+def force_scale(sol: Solution, dynamic: bool,
+                joint_forces: dict[str, np.ndarray] | None = None) -> float:
+    """The size of the forces of a posture: the largest load, inertia force or weight.
+
+    A couple counts as its torque over the mechanism's size; the joint forces
+    (of the frictionless solution, when given) count too, since near a toggle
+    they exceed the loads.  Verdicts on a force's sense (friction, self-locking,
+    a gear's transmitted force) are taken relative to it, so a joint force at
+    round-off of it (a load taken directly by a drive) has no sense.
+    """
+    size = sol.mechanism.size or 1.0
+    big = 0.0
+    for items in applied_wrenches(sol, dynamic).values():
+        for w, point in items:
+            big = max(big, float(np.hypot(w[0], w[1])) if point else abs(float(w[2])) / size)
+    for w in (joint_forces or {}).values():
+        big = max(big, float(np.hypot(w[0], w[1])))
+    return big
 
 
 def _velocity_in(sol: Solution, lid: str, world: Any) -> np.ndarray:

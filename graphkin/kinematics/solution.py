@@ -147,6 +147,25 @@ class Solution:
         """True when accelerations are known."""
         return all(s.alpha is not None for s in self.links.values())
 
+    def velocity_scale(self) -> float:
+        """The size of the velocities: the largest ``|V|`` of a named point or ``|ω|`` × size.
+
+        Verdicts on a velocity (a slider at rest on its guide, the sense of ω) are
+        taken relative to it (:func:`graphkin.tolerance.is_zero`); 0 without rates.
+        """
+        if not self.has_rates:
+            return 0.0
+        size = self.mechanism.size
+        big = 0.0
+        for lid, st in self.links.items():
+            big = max(big, float(np.nanmax(np.abs(np.asarray(st.omega)), initial=0.0)) * size)
+            pts = self.mechanism.links[lid].points
+            if pts:
+                v = st.velocity(np.array(list(pts.values()), dtype=float).reshape(
+                    (len(pts),) + (1,) * np.ndim(st.angle) + (2,)))
+                big = max(big, float(np.nanmax(np.hypot(v[..., 0], v[..., 1]), initial=0.0)))
+        return big
+
     def owner(self, name: str) -> str:
         """A link that carries point ``name``: the frame for a fixed point, else the first."""
         owners = self.mechanism.point_links[name]

@@ -17,6 +17,7 @@ from graphkin.kinematics.instant_centers.labels import _id_key
 from graphkin.kinematics.solution import Solution
 from graphkin.output.units import OutputUnits
 from graphkin.text import g6, table
+from graphkin.tolerance import VERDICT_REL
 
 __all__ = ["instant_centers_json", "instant_centers_text", "is_batch"]
 
@@ -33,7 +34,9 @@ def _canonical(d: Array) -> list[float]:
     dx, dy = float(d[0]), float(d[1])
     n = math.hypot(dx, dy)
     dx, dy = dx / n, dy / n
-    if dx < 0 or (dx == 0 and dy < 0):
+    # a direction within round-off of the y axis is taken upward: the sense of its x
+    # component is round-off (it differs between machines), never a verdict
+    if (abs(dx) <= VERDICT_REL and dy < 0) or dx < -VERDICT_REL:
         dx, dy = -dx, -dy
     return [dx + 0.0, dy + 0.0]
 

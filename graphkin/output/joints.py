@@ -71,16 +71,19 @@ def joint_angles_text(sol: Solution, units: OutputUnits) -> str | None:
     pairs = joint_pairs(sol)
     if not pairs:
         return None
+    from graphkin.output.solution import rate_floors
+
+    floors = rate_floors(sol)
     rows = []
     for i, j in pairs:
         angle, w, al = _values(sol, i, j)
         row = f"  θ{i}/{j} = {clean(round(angle, 4)):.4f}°"
         if w is not None:
-            w = clean(w, 1e-12 * max(1.0, abs(w)))
+            w = clean(w, floors.omega)
             row += (f"   ω{i}/{j} = {g6(abs(w) * units.k_omega)} {units.text('omega')} "
                     f"{sense(w)}").rstrip()
         if al is not None:
-            al = clean(al, 1e-12 * max(1.0, abs(al)))
+            al = clean(al, floors.alpha)
             row += (f"   α{i}/{j} = {g6(abs(al) * units.k_alpha)} {units.text('alpha')} "
                     f"{sense(al)}").rstrip()
         rows.append(row)

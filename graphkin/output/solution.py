@@ -9,6 +9,7 @@ Uicker, Pennock & Shigley, 5th ed.: results are stated as the book states them,
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -18,8 +19,9 @@ from graphkin.mechanisms.model import FRAME
 from graphkin.output.sections import SECTIONS
 from graphkin.output.units import OutputUnits
 from graphkin.text import clean, g6, polar, sense, wrap_degrees
+from graphkin.tolerance import VERDICT_REL
 
-__all__ = ["solution_to_dict", "text_report", "finite"]
+__all__ = ["solution_to_dict", "text_report", "finite", "RateFloors", "rate_floors"]
 
 
 def finite(x: Any) -> Any:
@@ -111,6 +113,46 @@ def solution_to_dict(sol: Solution, units: OutputUnits | None = None) -> dict[st
     return finite(out)
 
 
+@dataclass(frozen=True)
+class RateFloors:
+    """What is round-off of each kind of rate at one posture (below it: 0, no sense).
+
+    Each is :data:`graphkin.tolerance.VERDICT_REL` of the size of its kind, which
+    counts every quantity of the same dimension: ω with ``|V|/size``, α with ω² and
+    ``|A|/size``, a velocity with ``|ω| size``, so that a posture whose every α is
+    round-off (a crank at constant ω moving a link in pure translation) prints 0,
+    never a sense, on every machine.
+    """
+
+    omega: float
+    alpha: float
+    velocity: float
+    acceleration: float
+
+
+def rate_floors(sol: Solution) -> RateFloors:
+    """The round-off floors of ω, α, V and A of a one-posture solution (0 without rates)."""
+    if not sol.has_rates:
+        return RateFloors(0.0, 0.0, 0.0, 0.0)
+    mech = sol.mechanism
+    size = mech.size or 1.0
+    moving = [st for lid, st in sol.links.items() if lid != FRAME]
+
+    def big(values: list[float]) -> float:
+        return max([0.0, *(abs(v) for v in values if math.isfinite(v))])
+
+    ws = big([float(st.omega) for st in moving if st.omega is not None])
+    als = big([float(st.alpha) for st in moving if st.alpha is not None])
+    vs = big([float(np.hypot(*sol.velocity(n))) for n in mech.point_names])
+    accs = (big([float(np.hypot(*sol.acceleration(n))) for n in mech.point_names])
+            if sol.has_accelerations else 0.0)
+    w_scale = max(ws, vs / size)
+    a_scale = max(als, w_scale**2, accs / size)
+    return RateFloors(VERDICT_REL * w_scale, VERDICT_REL * a_scale,
+                      VERDICT_REL * max(vs, w_scale * size),
+                      VERDICT_REL * max(accs, a_scale * size))
+
+
 def text_report(sol: Solution, units: OutputUnits | None = None) -> str:
     """A readable, textbook-style report of a solved posture.
 
@@ -132,18 +174,12 @@ def text_report(sol: Solution, units: OutputUnits | None = None) -> str:
     lines.append("")
     # what is left of a zero is round-off: below 1e-9 of the largest value of its kind
     # (1e-12 of the mechanism's size for positions) it prints as 0 on every machine
-    moving = [st for lid, st in sol.links.items() if lid != FRAME]
     names = mech.point_names
 
-    def _floor(values: list[float]) -> float:
-        return 1e-9 * max([0.0, *(abs(v) for v in values if math.isfinite(v))])
-
-    tw = _floor([float(st.omega) for st in moving if st.omega is not None])
-    ta = _floor([float(st.alpha) for st in moving if st.alpha is not None])
-    tv = (_floor([float(np.hypot(*sol.velocity(n))) for n in names]) * ou.k_velocity
-          if sol.has_rates else 0.0)
-    tacc = (_floor([float(np.hypot(*sol.acceleration(n))) for n in names]) * ou.k_acceleration
-            if sol.has_accelerations else 0.0)
+    floors = rate_floors(sol)
+    tw, ta = floors.omega, floors.alpha
+    tv = floors.velocity * ou.k_velocity
+    tacc = floors.acceleration * ou.k_acceleration
     tl = 1e-12 * mech.scale * ou.k_length
     lines.append("Links")
     for lid, st in sol.links.items():

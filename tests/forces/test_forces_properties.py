@@ -15,8 +15,8 @@ from typing import Any
 import numpy as np
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
+from pinned import LOADED_DRIVE, SELF_LOCKING, with_friction
 from strategies import (
-    RandomMechanism,
     fourbars,
     inverted_slider_cranks,
     six_bars,
@@ -27,46 +27,6 @@ from strategies import (
 from graphkin.errors import InputError
 from graphkin.forces import power_balance, solve_forces
 from graphkin.mechanisms import from_dict
-
-# found by Hypothesis: a load on the drive slider itself, taken by the drive, leaves every
-# joint force at round-off (1e-17 N); the tolerance is the load's scale then
-_LOADED_DRIVE = RandomMechanism(
-    kind="slider-crank, slider-driven",
-    data={"title": "random slider-crank, slider-driven", "units": {"length": "mm"},
-          "links": {"1": {"O2": [-1.5, 0.0]}, "2": {"A": [0.375, 0.0], "O2": [-0.375, 0.0]},
-                    "3": {"A": [0.6797308402774871, -0.3169636963055246],
-                          "C": [-0.6797308402774875, 0.3169636963055246],
-                          "D": [-2.220446049250313e-16, 0.0]},
-                    "4": {"C": [0.0, 0.0]}},
-          "drive": {"link": 4, "position": 0.0, "velocity": -1.5},
-          "assembly": {"A": [-0.75, 0.0], "C": [-2.1094616805549746, 0.6339273926110492],
-                       "D": [-1.4297308402774873, 0.3169636963055246]},
-          "sliders": [{"link": 4, "on": 1, "point": "C",
-                       "line": [[-2.1094616805549746, 0.6339273926110492],
-                                [-0.6094616805549746, 0.6339273926110492]]}]},
-    truth={"2": (-1.125, 0.0, 0.0), "3": (-1.429730840277487, 0.3169636963055246, 0.0),
-           "4": (-2.1094616805549746, 0.6339273926110492, 0.0)},
-    omega={"2": 4.289013841019115, "3": 2.3662015831524985, "4": 0.0})
-
-_SELF_LOCKING = RandomMechanism(
-    # found by Hypothesis: the coupler AC stands 26.0° from the guide's normal, inside the
-    # friction angle of μ = 0.5 (26.57°): the block cannot be slid (self-locking)
-    kind="slider-crank, crank-driven",
-    data={"title": "random slider-crank, crank-driven", "units": {"length": "mm"},
-          "links": {"1": {"O2": [0.0, 0.0]}, "2": {"A": [0.25, 0.0], "O2": [-0.25, 0.0]},
-                    "3": {"A": [-0.27015115293406977, -0.4207354924039482],
-                          "C": [0.27015115293407, 0.4207354924039483],
-                          "D": [1.1102230246251565e-16, 5.551115123125783e-17]},
-                    "4": {"C": [0.0, 0.0]}},
-          "drive": {"link": 2, "angle": 0.0, "omega": "1.0 rad/s cw"},
-          "assembly": {"A": [0.5, 0.0], "C": [1.0403023058681398, 0.8414709848078965],
-                       "D": [0.7701511529340699, 0.42073549240394825]},
-          "sliders": [{"link": 4, "on": 1, "point": "C",
-                       "line": [[1.0403023058681398, 0.8414709848078965],
-                                [2.0334643585831733, 0.724727089691873]]}]},
-    truth={"2": (0.25, 0.0, 0.0), "3": (0.7701511529340698, 0.4207354924039482, 0.0),
-           "4": (1.0403023058681398, 0.8414709848078965, -0.11701072127637085)},
-    omega={"2": -1.0, "3": 1.1327867492986414, "4": 0.0})
 
 FAMILIES = st.one_of(fourbars(other_rates=False), slider_cranks(), inverted_slider_cranks(),
                      six_bars(), slotted())
@@ -174,18 +134,12 @@ def test_static_without_rates(case: tuple[Any, dict[str, Any]]) -> None:
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(slider_cranks(), st.floats(0.05, 0.6), st.floats(1.0, 500.0), st.floats(-180, 180))
-@example(_LOADED_DRIVE, 0.5, 1.0, 0.0)
-@example(_SELF_LOCKING, 0.5, 1.0, 0.0)
+@example(LOADED_DRIVE, 0.5, 1.0, 0.0)
+@example(SELF_LOCKING, 0.5, 1.0, 0.0)
 def test_friction_is_coulomb(rm: Any, mu: float, mag: float, ang: float) -> None:
     """Rough sliders (Sec. 11.10): the graphic method agrees with the matrix method, and
     the force on each slider obeys Coulomb's law against its sliding velocity."""
-    data = copy.deepcopy(rm.data)
-    for s in data.get("sliders", []):
-        s["friction"] = mu
-    moving = [lid for lid in data["links"] if str(lid) != "1"]
-    lid = moving[-1]
-    point = next(iter(data["links"][lid]))
-    data["loads"] = [{"link": int(lid), "point": point, "force": f"{mag} N at {ang} deg"}]
+    data = with_friction(rm, mu, mag, ang)
     mech = from_dict(data, source="<random slider-crank>")
     sol = mech.solve()
     try:
@@ -222,3 +176,31 @@ def test_friction_is_coulomb(rm: Any, mu: float, mag: float, ang: float) -> None
         assert abs(abs(tangential) - mu * abs(normal)) <= 1e-9 * big
         # friction opposes the sliding (round-off aside)
         assert tangential * float(v @ u) <= 1e-9 * big * abs(float(v @ u))
+
+
+def test_a_load_on_the_drive_slider_is_taken_by_the_drive() -> None:
+    """Issue 23: 1 N along +x on the driving block C itself (μ = 0.5 at its guide).
+
+    By hand: the block's free body has the load, the drive's force along the guide (+x)
+    and the joint forces of AC and the guide.  Links 2 and 3 carry no load and no inertia,
+    so AC and the crank's pins carry nothing (a two-force member with nothing at its other
+    end); the guide's normal force is then 0 and so is its friction, and the drive takes
+    the load: F = -1 N along the guide.  Every joint force is zero (at round-off of 1 N),
+    and no friction or self-locking verdict may be taken from the sense of that round-off.
+    """
+    data = with_friction(LOADED_DRIVE, 0.5, 1.0, 0.0)
+    sol = from_dict(data, source="<loaded drive>").solve()
+    fs = solve_forces(sol)
+    for key, w in fs.forces.items():
+        assert np.hypot(*w[:2]) <= 1e-12, key
+    kind, value = fs.drives["4"]
+    assert kind == "force" and abs(value - (-1.0)) <= 1e-12
+    matrix = solve_forces(sol, method="analytic")
+    for key, w in matrix.forces.items():
+        assert np.hypot(*w[:2]) <= 1e-12, key
+    assert any("no normal force" in n for n in fs.notes)
+    from graphkin.forces.report import forces_json, forces_text
+
+    assert all(j["force"] == [0.0, 0.0] for j in forces_json(fs)["joints"].values())
+    assert "∠" not in "".join(line for line in forces_text(fs).splitlines() if "F" in line
+                              and "=" in line and "drive" not in line)

@@ -26,8 +26,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 from hypothesis import assume, example, given
+from pinned import BALL_FAR, BALL_FARTHER
 from spec_data import inline
-from strategies import RandomMechanism, examples, fourbars, mechanisms, slider_cranks
+from strategies import examples, fourbars, mechanisms, slider_cranks
 
 import graphkin
 from graphkin.errors import GraphkinError
@@ -373,49 +374,7 @@ def _cubic_points(k, size):
     return out
 
 
-# found by Hypothesis on another machine: ω₃/ω₂ = -0.16, Ball's point 0.34 sizes from I with
-# the inflection diameter 110 sizes; the plain stencil at h = 1e-4 gave |dκ/dφ|·size = 2e-6
-BALL_FAR = RandomMechanism(
-    kind="fourbar",
-    data={"title": "random fourbar", "units": {"length": "mm"},
-          "links": {"1": {"O2": [0.0, 0.0], "O4": [0.19312040518988316, -0.7218543337926775]},
-                    "2": {"A": [-0.20028590388673342, -0.14961803602598914],
-                          "O2": [0.20028590388673342, 0.14961803602598914]},
-                    "3": {"A": [-0.5, 0.0], "B": [1.0, 0.0], "E": [-0.5, 0.0]},
-                    "4": {"B": [0.453153893518325, 0.21130913087034958],
-                          "O4": [-0.453153893518325, -0.21130913087034964]}},
-          "drive": {"link": 2, "angle": 0.0, "omega": "1.0 rad/s cw"},
-          "assembly": {"A": [-0.40057180777346685, -0.2992360720519783],
-                       "B": [1.0994281922265332, -0.2992360720519783],
-                       "E": [-0.40057180777346685, -0.2992360720519783]}},
-    truth={"2": (-0.20028590388673342, -0.14961803602598914, 0.0),
-           "3": (0.0994281922265332, -0.2992360720519783, 0.0),
-           "4": (0.6462742987082082, -0.5105452029223279, 0.0)},
-    omega={"2": -1.0, "3": 0.16076134640539858, "4": 0.7080528674257266},
-)
-
-
-# and a coupler turning slower still (ω₃/ω₂ = 0.032, inflection diameter 1160 sizes)
-BALL_FARTHER = RandomMechanism(
-    kind="fourbar",
-    data={"title": "random fourbar", "units": {"length": "mm"},
-          "links": {"1": {"O2": [0.0, 0.0], "O4": [0.3883703158530488, -1.081225240597619]},
-                    "2": {"A": [-0.10109557266292571, -0.04174417100572378],
-                          "O2": [0.10109557266292571, 0.04174417100572378]},
-                    "3": {"A": [-0.33790129979384087, 0.24379053039185933],
-                          "B": [0.6758025995876816, -0.48758106078371855],
-                          "E": [-0.33790129979384087, 0.24379053039185933]},
-                    "4": {"B": [0.21157121910131105, 0.1331826537052968],
-                          "O4": [-0.21157121910131116, -0.1331826537052968]}},
-          "drive": {"link": 2, "angle": 0.0, "omega": "1.0 rad/s cw"},
-          "assembly": {"A": [-0.20219114532585142, -0.08348834201144756],
-                       "B": [0.811512754055671, -0.8148599331870254],
-                       "E": [-0.20219114532585142, -0.08348834201144756]}},
-    truth={"2": (-0.10109557266292571, -0.04174417100572378, 0.0),
-           "3": (0.13571015446798942, -0.3272788724033069, 0.0),
-           "4": (0.59994153495436, -0.9480425868923222, 0.0)},
-    omega={"2": -1.0, "3": -0.03197509687242704, "4": 0.4012310031211568},
-)
+# BALL_FAR, BALL_FARTHER: found by Hypothesis, kept in tests/pinned.py
 
 
 @FD

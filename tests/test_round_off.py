@@ -1,0 +1,201 @@
+"""Verdicts must not hang on round-off (issue 23).
+
+On another CPU the last digits of sin, hypot or a linear solve differ, so a sign, a sense
+(cw/ccw, ahead/behind), a branch, a toggle or a self-locking verdict taken on a value at
+round-off of its scale flips there.  Here every input of a mechanism is perturbed by
+1e-12 of its size, or by a few ulps, and everything the report decides must stay: the
+text report with its numbers taken out (what is left is every word, sense, branch, label
+and verdict), or the same error line.  The numbers themselves must agree to far better
+than the report prints them.
+
+The cases: every pinned Hypothesis example (``tests/pinned.py``), every spec, forces and
+gallery mechanism the repository carries, and random mechanisms of every family with
+rough sliders and loads.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import random
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from pinned import PINNED, with_friction
+from strategies import (
+    fourbars,
+    inverted_slider_cranks,
+    mechanisms,
+    six_bars,
+    slider_cranks,
+    slotted,
+)
+
+from graphkin.errors import GraphkinError
+from graphkin.mechanisms import from_dict
+from graphkin.output import OutputUnits, solution_to_dict, text_report
+
+ROOT = Path(__file__).resolve().parents[1]
+_NUMBER = re.compile(r"[-+−]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?")
+_QUANTITY = re.compile(r"(?<![\w.^*/])[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?(?![\w.])")
+# keys whose numbers are not measurements (never perturbed)
+_KEEP = {"title", "units", "link", "on", "relative_to", "teeth", "name", "branch",
+         "impending", "diagram", "sheet"}
+
+
+def _files() -> list[Path]:
+    out = sorted((ROOT / "tests" / "data" / "spec").glob("*.toml"))
+    out += sorted(p for p in (ROOT / "tests" / "data" / "forces").glob("*.toml")
+                  if p.name != "expected.toml")
+    out += sorted((ROOT / "gallery" / "mechanisms").glob("*.toml"))
+    return out
+
+
+def _scale(data: Any) -> float:
+    """The largest coordinate of the file (its size, for the absolute perturbation)."""
+    big = 0.0
+    if isinstance(data, dict):
+        for k, v in data.items():
+            if k not in _KEEP:
+                big = max(big, _scale(v))
+    elif isinstance(data, list):
+        for v in data:
+            if isinstance(v, (int, float)) and not isinstance(v, bool):
+                big = max(big, abs(float(v)))
+            else:
+                big = max(big, _scale(v))
+    return big or 1.0
+
+
+def perturb(data: Any, rng: random.Random, how: str, size: float, key: str = "") -> Any:
+    """A copy of a mechanism-file dict with every measured number moved by round-off.
+
+    ``how`` is ``"size"`` (coordinates by ±1e-12 of the file's size, other numbers by
+    ±1e-12 of themselves) or ``"ulps"`` (every number by up to 4 ulps).
+    """
+    if key in _KEEP:
+        return copy.deepcopy(data)
+    if isinstance(data, dict):
+        return {k: perturb(v, rng, how, size, k) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_move(v, rng, how, size, True) if _is_num(v) else perturb(v, rng, how, size, key)
+                for v in data]
+    if _is_num(data):
+        return _move(data, rng, how, size, False)
+    if isinstance(data, str):
+        # a measurement in a quantity ("900 rev/min", "10 N at 30 deg"), never the digits
+        # of a name or a unit's power (G3, s^2)
+        return _QUANTITY.sub(lambda m: repr(_move(float(m.group()), rng, how, size, False)),
+                             data)
+    return data
+
+
+def _is_num(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _move(x: float, rng: random.Random, how: str, size: float, coordinate: bool) -> float:
+    x = float(x)
+    if how == "ulps":
+        for _ in range(rng.randint(1, 4)):
+            x = float(np.nextafter(x, math.inf if rng.random() < 0.5 else -math.inf))
+        return x
+    step = 1e-12 * (size if coordinate else abs(x))
+    return x + rng.choice((-1.0, 1.0)) * step
+
+
+def verdicts(data: dict[str, Any]) -> tuple[str, list[float] | None]:
+    """The report with its numbers taken out (or the error line), and its numbers (JSON)."""
+    try:
+        mech = from_dict(copy.deepcopy(data), source="<perturbed>")
+        sol = mech.solve()
+        units = OutputUnits.of(mech.length_unit, None)
+        text = text_report(sol, units)
+        numbers = _leaves(solution_to_dict(sol, units))
+    except GraphkinError as exc:
+        return "error: " + _NUMBER.sub("#", str(exc)), None
+    # numbers out, and the spaces that align them in columns
+    return re.sub(r"[ \t]+", " ", _NUMBER.sub("#", text)), numbers
+
+
+def _leaves(obj: Any) -> list[float]:
+    out: list[float] = []
+    if isinstance(obj, dict):
+        for k in sorted(obj):
+            out += _leaves(obj[k])
+    elif isinstance(obj, list):
+        for v in obj:
+            out += _leaves(v)
+    elif _is_num(obj):
+        out.append(float(obj))
+    return out
+
+
+def assert_same_verdicts(data: dict[str, Any], tries: int = 3, seed: int = 0) -> None:
+    """Each perturbed copy of ``data`` gives the same words and nearly the same numbers."""
+    words, numbers = verdicts(data)
+    size = _scale(data.get("links", {}))
+    rng = random.Random(seed)
+    for i in range(tries):
+        how = ("size", "ulps")[i % 2]
+        moved = perturb(data, rng, how, size)
+        words2, numbers2 = verdicts(moved)
+        if words2 != words:
+            diff = [(a, b) for a, b in zip(words.splitlines(), words2.splitlines(),
+                                           strict=False) if a != b][:3]
+            raise AssertionError(f"a verdict moved under a {how} perturbation: {diff or words2}")
+        if numbers is not None:
+            assert numbers2 is not None and len(numbers2) == len(numbers)
+            a, b = np.array(numbers), np.array(numbers2)
+            big = max(1.0, float(np.max(np.abs(a), initial=0.0)))
+            # 1e-12 in, at most 1e-6 of the largest value out (the report prints 4-6 figures)
+            worst = int(np.argmax(np.abs(a - b)))
+            assert np.all(np.abs(a - b) <= 1e-6 * big), (how, worst, a[worst], b[worst], big)
+
+
+@pytest.mark.parametrize("name", sorted(PINNED))
+def test_pinned_examples_keep_their_verdicts(name: str) -> None:
+    assert_same_verdicts(PINNED[name], tries=6)
+
+
+@pytest.mark.parametrize("path", _files(), ids=lambda p: p.stem)
+def test_files_keep_their_verdicts(path: Path) -> None:
+    assert_same_verdicts(tomllib.loads(path.read_text(encoding="utf-8")), tries=2)
+
+
+@st.composite
+def _rough(draw: Any) -> dict[str, Any]:
+    rm = draw(st.one_of(slider_cranks(), inverted_slider_cranks(), slotted()))
+    return with_friction(rm, draw(st.floats(0.05, 0.6)), draw(st.floats(1.0, 500.0)),
+                         draw(st.floats(-180, 180)))
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(_rough())
+def test_rough_sliders_keep_their_verdicts(data: dict[str, Any]) -> None:
+    """Friction's sense, self-locking and every force's sense do not hang on round-off."""
+    assert_same_verdicts(data, tries=2)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.one_of(mechanisms(), fourbars(), six_bars()))
+def test_random_mechanisms_keep_their_verdicts(rm: Any) -> None:
+    """Branches, senses of ω, instant centers and curvature words of random mechanisms."""
+    assert_same_verdicts(rm.data, tries=2)
+
+
+def test_the_perturbation_moves_the_input() -> None:
+    """The perturbation is not a no-op: numbers move, keys and link ids do not."""
+    data = {"links": {"1": {"A": [0.0, 10.0]}}, "drive": {"link": 2, "omega": "3.5 rad/s"}}
+    moved = perturb(data, random.Random(1), "size", 10.0)
+    assert moved["links"]["1"]["A"] != [0.0, 10.0]
+    assert abs(moved["links"]["1"]["A"][1] - 10.0) == pytest.approx(1e-11, rel=1e-3)
+    assert moved["drive"]["link"] == 2 and moved["drive"]["omega"] != "3.5 rad/s"
+    assert json.dumps(perturb(data, random.Random(1), "ulps", 10.0)) != json.dumps(data)
