@@ -104,6 +104,8 @@ def _is_num(v: Any) -> bool:
 def _move(x: float, rng: random.Random, how: str, size: float, coordinate: bool) -> float:
     x = float(x)
     if how == "ulps":
+        if x == 0.0:  # a zero the user wrote is exact on every machine
+            return x
         for _ in range(rng.randint(1, 4)):
             x = float(np.nextafter(x, math.inf if rng.random() < 0.5 else -math.inf))
         return x
@@ -177,14 +179,14 @@ def _rough(draw: Any) -> dict[str, Any]:
                          draw(st.floats(-180, 180)))
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_rough())
 def test_rough_sliders_keep_their_verdicts(data: dict[str, Any]) -> None:
     """Friction's sense, self-locking and every force's sense do not hang on round-off."""
     assert_same_verdicts(data, tries=2)
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.one_of(mechanisms(), fourbars(), six_bars()))
 def test_random_mechanisms_keep_their_verdicts(rm: Any) -> None:
     """Branches, senses of ω, instant centers and curvature words of random mechanisms."""

@@ -88,11 +88,6 @@ def _mag(v: np.ndarray, unit: str, scale: float) -> str:
     return f"{_num(m)} {unit} ∠{_deg(v):.2f}°"
 
 
-def _sense(t: float, scale: float) -> str:
-    """``ccw``, ``cw``, or ``""`` for a torque at round-off of ``scale`` (no sense)."""
-    return {1: "ccw", -1: "cw", 0: ""}[sign(t, scale)]
-
-
 def _two_force_state(fs: ForceSolution, lid: str) -> str | None:
     """"in compression" or "in tension" for a two-pin link carrying opposite pin forces."""
     if lid in fs.drives or fs.applied.get(lid):
@@ -127,14 +122,13 @@ def forces_text(fs: ForceSolution) -> str:
     kind = "Dynamic" if fs.dynamic else "Static"
     lines = [f"{kind} force analysis {how}"]
     fscale = fs.scale
-    tscale = fscale * (mech.size or 1.0)
     for n in fs.notes:
         lines.append(f"  note: {n}")
     if fs.inertia:
         lines.append("  inertia forces (d'Alembert, offset by h, Eq. 12.18)")
         for lid, f in fs.inertia.items():
             g = mech.inertia[lid].center
-            sense = _sense(f.torque, tscale)
+            sense = fs.sense(f.torque)
             lines.append(f"    -m{lid}A_{g} = {_mag(f.force, fu, fscale)}   -I_G{lid}α{lid} = "
                          f"{_num(abs(f.torque))} {tu} {sense}   h{lid} = {_num(f.offset)} "
                          f"{mech.length_unit}".rstrip())
@@ -152,7 +146,7 @@ def forces_text(fs: ForceSolution) -> str:
             lines.append(f"    link {lid} is a two-force member {state}")
     for lid, (kind_, value) in fs.drives.items():
         if kind_ == "torque":
-            sense = _sense(value, tscale)
+            sense = fs.sense(value)
             value = 0.0 if not sense else value
             name = f"T{1}{lid}".translate(_SUB) if lid.isdigit() else f"T_1{lid}"
             lines.append(f"  drive: {name} = {_num(abs(value), 6)} {tu} {sense}".rstrip())

@@ -156,6 +156,15 @@ class ForceSolution:
             big = max(big, abs(value) / size if kind == "torque" else abs(value))
         return big
 
+    def sense(self, torque: float) -> str:
+        """``ccw``, ``cw``, or ``""`` for a torque at round-off of the forces' scale.
+
+        >>> import graphkin
+        >>> from graphkin.forces import solve_forces
+        """
+        size = self.mechanism.size or 1.0
+        return {1: "ccw", -1: "cw", 0: ""}[sign(torque, self.scale * size)]
+
     def torque(self, link: str | int) -> float:
         """The drive's torque (or input force) of a drive link."""
         return self.drives[str(link)][1]

@@ -139,7 +139,7 @@ def draw_forces(obj: Any, *, table: bool = True, upto: int | None = None,
         bits = []
         for lid, (what, val) in fs.drives.items():
             if what == "torque":
-                sense = "ccw" if val > 0 else "cw" if val < 0 else ""
+                sense = fs.sense(val)
                 bits.append(f"T{'1' + lid}".translate(_SUB) + f" = {fmt(abs(val), 4)} "
                             f"{mech.force_unit}·{mech.length_unit} {sense}")
             else:

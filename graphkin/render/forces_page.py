@@ -94,7 +94,7 @@ def page_table(fs: ForceSolution, lscale: Scale, fscale: Scale,
             if not reached(f"T_1{lid}"):
                 continue
             cells.append((f"T1{lid}".translate(_SUB), short(abs(val) / tf),
-                          "ccw" if val > 0 else "cw" if val < 0 else "", tu))
+                          fs.sense(val), tu))
             keys.append(f"T_1{lid}")
         else:
             d = next(d for d in mech.drives if d.link == lid)

@@ -41,8 +41,11 @@ def path_curvature(position: ArrayLike, velocity: ArrayLike, acceleration: Array
     va = np.sqrt(v2) * np.hypot(a[..., 0], a[..., 1])
     straight = np.abs(c) <= tol.angle * va
     rest = v2 == 0.0
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         k = np.where(straight, np.nan, v2 / np.where(straight, 1.0, c))
+        # a normal acceleration so small that V²/A^n overflows: straight here
+        straight = straight | ~np.isfinite(np.where(straight, 0.0, k))
+        k = np.where(straight, np.nan, k)
         center = p + k[..., None] * perp(v)
         rho = np.where(straight, np.inf, np.abs(k) * np.sqrt(v2))
     rho = np.where(rest, np.nan, rho)
