@@ -1,0 +1,125 @@
+"""Rolling contact: the arrangements of issue 26, item 1, each checked by hand.
+
+The mechanisms are in ``tests/data/rolling/``.  Every value below is derived in
+the comment beside it (no slip, Eq. 3.13: the contact points have one
+velocity; Eq. 4.19 for accelerations), and every solution is also held to the
+analytic solver (loop closure, Secs. 3.9 and 4.9).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+import graphkin
+from graphkin.kinematics.analytic import solve_analytic
+from graphkin.kinematics.analytic.phase import rolling_phases
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "rolling"
+
+
+def solve(name: str, **replace: str) -> graphkin.Solution:
+    text = (DATA / name).read_text()
+    for old, new in replace.items():
+        assert old in text
+        text = text.replace(old, new)
+    mech = graphkin.loads(text)
+    sol = mech.solve()
+    assert sol.method == "construction", sol.notes
+    assert not any("toggle" in n or "analytic" in n for n in sol.notes), sol.notes
+    guess = {lid: (float(s.origin[0]), float(s.origin[1]), float(s.angle))
+             for lid, s in sol.links.items() if lid != "1"}
+    exact = solve_analytic(mech, guess=guess)
+    for lid, s in sol.links.items():
+        e = exact.links[lid]
+        assert math.isclose(float(s.angle), float(e.angle), abs_tol=1e-9)
+        assert math.isclose(float(s.omega), float(e.omega), rel_tol=1e-9, abs_tol=1e-9)
+        assert math.isclose(float(s.alpha), float(e.alpha), rel_tol=1e-9, abs_tol=1e-9)
+    return sol
+
+
+def test_planet_between_a_driven_sun_and_a_fixed_ring() -> None:
+    # was KeyError: 'rolling[0]:slot:O'.  The planet's center P moves at ω2·60; the planet
+    # touches the fixed ring 20 beyond P (contact at rest) and the sun 20 before P, where the
+    # sun's pitch point moves at ω4·40 = 400: so the planet turns about its ring contact,
+    # 400 = ω3·(−40) → ω3 = −10, and V_P = ω3·(−20) = 200 = 60 ω2 → ω2 = 10/3 rad/s
+    # (the book's formula method, Sec. 7.16: ω_arm = ω_sun R_s/(R_s + R_r) = 10·40/120).
+    # The rates are linear in the input: α4 = 2 gives α3 = −2, α2 = 2/3.
+    sol = solve("planet_arm_driven_sun_fixed_ring.toml")
+    assert math.isclose(float(sol.links["2"].omega), 10 / 3)
+    assert math.isclose(float(sol.links["3"].omega), -10.0)
+    assert math.isclose(float(sol.links["2"].alpha), 2 / 3)
+    assert math.isclose(float(sol.links["3"].alpha), -2.0)
+    # at the file's drive (the sun at 30°) the arm and the planet stand as drawn
+    assert abs(float(sol.links["2"].angle)) < 1e-12
+    assert abs(float(sol.links["3"].angle)) < 1e-12
+    assert [(p.link, p.kind) for p in rolling_phases(sol.mechanism)] == \
+        [("3", "angle"), ("2", "angle")]
+
+
+def test_pinion_on_a_driven_slider_rolling_on_a_pivoted_rack() -> None:
+    # was "toggle or dead-center posture": the rack's line starts at its pivot (F1 at O4),
+    # so v(F1) and v(O4) are both at the pole and cannot carry v(F2).  The posture is
+    # regular: V_P = 5 along the slide, parallel to the rack, so the rack stays at rest
+    # (ω4 = 0) and the pinion rolls on it: 5 = ω3 · 20, ω3 = 0.25 rad/s ccw.
+    sol = solve("pinion_on_slider_pivoted_rack.toml")
+    assert abs(float(sol.links["4"].omega)) < 1e-12
+    assert math.isclose(float(sol.links["3"].omega), 0.25)
+    assert sol.velocity("F2") == pytest.approx([0.0, 0.0], abs=1e-12)
+
+
+@pytest.mark.parametrize(("angle", "expected"), [(None, 0.0), (10.0, 10.0), (-170.0, -170.0)])
+def test_gear_stands_as_the_file_says(angle: float | None, expected: float) -> None:
+    # was θ3 = −174.64° at the file's drive (and no posture at all at θ2 = 30°).  The pinion
+    # is driven, so the contact places the gear: as drawn (0°) or at the file's `angle`;
+    # the speed ratio is 15/45: ω3 = −10/3 rad/s.
+    replace = {} if angle is None else {
+        'on_circle = { center = "O3", radius = 45 }':
+            f'on_circle = {{ center = "O3", radius = 45 }}\nangle = {angle}'}
+    sol = solve("gears_15_45.toml", **replace)
+    assert math.isclose(math.degrees(float(sol.links["2"].angle)), 30.0)
+    assert math.isclose(math.degrees(float(sol.links["3"].angle)), expected, abs_tol=1e-9)
+    assert math.isclose(float(sol.links["3"].omega), -10 / 3)
+
+
+def test_rack_sliding_under_a_driven_pinion() -> None:
+    # the rack keeps its distance from the pinion's fixed center by its slider alone (no
+    # equivalent slot: Kutzbach's count was one short).  Pinion ccw at 10 rad/s, α = 2,
+    # radius 20, the rack below: V_rack = ω r = 200 along +x, A_rack = α r = 40.
+    sol = solve("rack_under_driven_pinion.toml")
+    assert sol.velocity("R") == pytest.approx([200.0, 0.0])
+    assert sol.acceleration("R") == pytest.approx([40.0, 0.0])
+    # at the file's drive the rack stands as drawn (its origin on the frame's)
+    assert sol.position("R") == pytest.approx([0.0, -30.0])
+
+
+def test_driven_rack_turns_a_pinion() -> None:
+    # the rack moves at 10 (+x) under the pinion (radius 20): 10 = 20 ω2, ω2 = 0.5 ccw
+    sol = solve("driven_rack_turns_pinion.toml")
+    assert math.isclose(float(sol.links["2"].omega), 0.5)
+    assert math.isclose(float(sol.links["2"].alpha), 0.1)
+
+
+def test_internal_gears_on_fixed_centers() -> None:
+    # a pinion (r = 20) inside a ring (R = 40), both on fixed pivots: the pitch points move
+    # together, 20 ω2 = 40 ω3, the same sense: ω3 = 5, α3 = 1
+    sol = solve("internal_gears_fixed_centers.toml")
+    assert math.isclose(float(sol.links["3"].omega), 5.0)
+    assert math.isclose(float(sol.links["3"].alpha), 1.0)
+
+
+def test_wheel_on_a_carriage() -> None:
+    # the carriage keeps the wheel's center 20 above the ground: V = 10 → ω3 = −10/20
+    sol = solve("wheel_on_carriage.toml")
+    assert math.isclose(float(sol.links["3"].omega), -0.5)
+    assert math.isclose(float(sol.links["3"].alpha), -0.1)
+
+
+def test_a_carriage_that_does_not_hold_the_wheel_on_the_ground() -> None:
+    text = (DATA / "wheel_on_carriage.toml").read_text().replace("radius = 20", "radius = 25")
+    with pytest.raises(graphkin.GraphkinError, match=r"keeps the center P 20 to the left of "
+                       r"the line; rolling on its left needs 25") as info:
+        graphkin.loads(text)
+    assert getattr(info.value, "key", None) == "rolling[0].circle.radius"
