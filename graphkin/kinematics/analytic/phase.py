@@ -7,16 +7,17 @@ that no equation gives: two gears mesh at any relative angle.  At the file's
 drive the file fixes it by placing one link of the mechanism, exactly as a
 drive places its link:
 
-* the rolling link at its ``angle`` (default 0: its own axes as written),
-  when nothing else fixes that angle (a wheel on the ground, a planet on its
-  arm);
-* else the link it rolls on (a driven pinion turns the gear it meshes with:
-  the gear stands at ``angle``, default as drawn);
+* the rolling link, when nothing else fixes its angle (a wheel on the
+  ground, a planet on its arm);
+* else the link it rolls on (a driven pinion turns the gear it meshes with);
 * else the first other link whose angle the drives leave open (the arm of a
-  planet that meshes with a driven sun and a fixed ring), as drawn;
+  planet that meshes with a driven sun and a fixed ring);
 * else the travel of a slider the drives leave open (a rack sliding under a
   driven pinion), as drawn: with its own origin at the origin of the link it
   slides on.
+
+A link placed by its angle stands at the contact's ``angle`` (default 0: its
+own axes as written, the link as drawn).
 
 "What else fixes" is decided by rank: the Jacobian of every joint and drive
 (without the no-slip rows), at a generic configuration, plus the row of the
@@ -171,8 +172,7 @@ def rolling_phases(mech: Mechanism) -> tuple[Phase, ...]:
             if rank(trial) > have:
                 base, have = trial, have + 1
                 if kind == "angle":
-                    value = float(r.angle) if lid in (r.link, r.on) else 0.0
-                    chosen = Phase(r.key, lid, "angle", value)
+                    chosen = Phase(r.key, lid, "angle", float(r.angle))
                 else:
                     assert s is not None
                     chosen = Phase(r.key, lid, "travel", _travel_drawn(mech, s), s)
