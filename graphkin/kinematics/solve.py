@@ -209,9 +209,8 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
         if exact is not None:
             # the posture is regular: the polygon met two coincident images or parallel
             # lines of its own making, not a toggle; the analytic solver gives the rates
-            exact.notes = [*pc.notes, "the velocity polygon cannot be drawn one step at a time "
-                           f"here ({singular}); the posture is regular, so the rates are "
-                           "the analytic solver's (Secs. 3.9, 4.9)"]
+            exact.notes = [*pc.notes, f"the posture is regular but {singular}: the rates "
+                           "are the analytic solver's (Secs. 3.9, 4.9)"]
             exact.branches = dict(pc.branches)
             return exact
         note = (f"toggle or dead-center posture: the velocities and accelerations are "

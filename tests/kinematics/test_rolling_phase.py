@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import graphkin
@@ -123,3 +124,33 @@ def test_a_carriage_that_does_not_hold_the_wheel_on_the_ground() -> None:
                        r"the line; rolling on its left needs 25") as info:
         graphkin.loads(text)
     assert getattr(info.value, "key", None) == "rolling[0].circle.radius"
+
+
+def test_drive_relative_to_a_rolling_planet() -> None:
+    # was StopIteration.  θ3/2 = 30°, ω3/2 = 10: the planet (r = 20) round the fixed sun
+    # (R = 40) turns (R + r)/r = 3 times as fast as its arm, ω3 = 3 ω2, so ω3 − ω2 = 2 ω2 = 10:
+    # ω2 = 5, ω3 = 15 rad/s.  The contact places the planet as drawn (θ3 = 0), the arm at −30°.
+    mech = graphkin.load(DATA / "planet_driven_relative_to_arm.toml")
+    sol = mech.solve()
+    assert math.isclose(float(sol.links["2"].omega), 5.0)
+    assert math.isclose(float(sol.links["3"].omega), 15.0)
+    assert math.isclose(math.degrees(float(sol.links["2"].angle)), -30.0)
+    sw = mech.sweep(count=5)  # over the cycle: Δθ2 = Δθ3/2 / 2, Δθ3 = 3 Δθ2
+    th2, th3 = sw.columns["angle_2"], sw.columns["angle_3"]
+    assert np.allclose(np.diff(np.unwrap(np.radians(th2))), math.radians(72 / 2))
+    assert np.allclose(np.diff(np.unwrap(np.radians(th3))), math.radians(3 * 72 / 2))
+
+
+@pytest.mark.parametrize("name", ["spur_gears.toml", "rolling_wheel_loaded.toml"])
+def test_torque_over_a_sweep_of_a_rolling_mechanism(name: str) -> None:
+    # was TypeError: hypot() over the sweep's arrays; each row's torque is the torque of the
+    # posture solved alone (Sec. 11.11)
+    from graphkin.forces import solve_forces
+    from graphkin.forces.sweep import force_columns
+
+    mech = graphkin.load(Path(__file__).resolve().parents[1] / "forces" / "data" / name)
+    sw = mech.sweep(count=6, stop=math.degrees(mech.drives[0].value) + 30.0)
+    cols = force_columns(sw, joints=False)
+    alone = solve_forces(mech.solve())
+    assert math.isclose(float(cols["torque_2"][0]), alone.torque(2), rel_tol=1e-9)
+    assert np.all(np.isfinite(cols["torque_2"]))
