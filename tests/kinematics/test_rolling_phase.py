@@ -154,3 +154,29 @@ def test_torque_over_a_sweep_of_a_rolling_mechanism(name: str) -> None:
     alone = solve_forces(mech.solve())
     assert math.isclose(float(cols["torque_2"][0]), alone.torque(2), rel_tol=1e-9)
     assert np.all(np.isfinite(cols["torque_2"]))
+
+
+@pytest.mark.parametrize("shift", [0.0, 1e-12, 1e-13, -1e-14])
+def test_only_a_real_toggle_is_called_one(shift: float) -> None:
+    # Example 3.9 with the crank at −asin(50/150): A = (141.42, −50), B = (141.42, 150) and the
+    # contact C = (141.42, 0) in line; V_B ⊥ CB and V_B − V_A ⊥ AB are both horizontal while
+    # V_A has the vertical component 141.42 ω2: the wheel cannot move, a dead point.  The
+    # verdict does not move when the drive moves by a little of itself.  (Toward the
+    # assembled side, 1e-12 of the drive puts B's two branches √(2·200·3e-11) ≈ 1e-4 apart and
+    # the polygon's lines 5e-7 from parallel: the general toggle threshold, SINGULAR_SINE =
+    # 1e-7 in solve.py, then calls it regular; not a question of rolling contact.)
+    text = (DATA / "wheel_dead_point.toml").read_text()
+    a = -19.47122063449069
+    sol = graphkin.loads(text.replace(f"angle = {a}", f"angle = {a * (1 + shift)!r}")).solve()
+    assert any("toggle or dead-center" in n for n in sol.notes), sol.notes
+    assert not sol.has_rates
+
+
+@pytest.mark.parametrize("shift", [1e-12, -1e-12])
+def test_coincident_images_are_no_toggle_when_moved_a_little(shift: float) -> None:
+    # the rack's line starting 1e-12 of the size away from its pivot: still a regular posture
+    text = (DATA / "pinion_on_slider_pivoted_rack.toml").read_text()
+    text = text.replace("F1 = [0, 20]", f"F1 = [{100 * shift!r}, {20 + 100 * shift!r}]")
+    sol = graphkin.loads(text).solve()
+    assert not any("toggle" in n for n in sol.notes), sol.notes
+    assert math.isclose(float(sol.links["3"].omega), 0.25)
