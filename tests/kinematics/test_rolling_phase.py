@@ -180,3 +180,18 @@ def test_coincident_images_are_no_toggle_when_moved_a_little(shift: float) -> No
     sol = graphkin.loads(text).solve()
     assert not any("toggle" in n for n in sol.notes), sol.notes
     assert math.isclose(float(sol.links["3"].omega), 0.25)
+
+
+def test_sweeps_start_where_the_file_stands() -> None:
+    # the gear stands as drawn at the file's drive (θ2 = 30°) and turns back a third as far:
+    # θ3 = −(θ2 − 30°)/3; the planetary's arm turns a third as far as its sun (10/3 of 10)
+    mech = graphkin.load(DATA / "gears_15_45.toml")
+    sw = mech.sweep(count=5)
+    th2 = np.unwrap(np.radians(sw.columns["angle_2"]))
+    th3 = np.unwrap(np.radians(sw.columns["angle_3"]))
+    assert np.allclose(th3, -(th2 - math.radians(30)) / 3, atol=1e-9)
+    mech = graphkin.load(DATA / "planet_arm_driven_sun_fixed_ring.toml")
+    sw = mech.sweep(count=5)
+    th4 = np.unwrap(np.radians(sw.columns["angle_4"]))
+    th2 = np.unwrap(np.radians(sw.columns["angle_2"]))
+    assert np.allclose(th2, (th4 - math.radians(30)) / 3, atol=1e-9)
