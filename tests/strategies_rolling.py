@@ -13,9 +13,10 @@ Each kind of Secs. 3.7, 4.7 and 7.12-7.16 has its own strategy:
 * a rack sliding on the frame under a pinion on a fixed pivot, the pinion or
   the rack driven;
 * a circle on a circle, outside or inside: gears on fixed centers (either as
-  the rolling ``link``), a planet on a driven arm round a fixed sun or in a
-  fixed ring, a planet on an arm between a driven sun and a fixed ring (the
-  arm the output), a planet on a driven arm and a driven sun (two inputs).
+  the rolling ``link``), three gears in a row, a planet on a driven arm round
+  a fixed sun or in a fixed ring, a planet on an arm between a driven sun and
+  a fixed ring (the arm the output), a planet on a driven arm and a driven sun
+  (two inputs), a ring driven by a planet round a fixed or a driven sun.
 
 At the file's drive a contact places one link (the rolling link, or the one
 it rolls on, or the arm: :mod:`graphkin.kinematics.analytic.phase`); its
@@ -248,7 +249,8 @@ def _gears(draw: Any) -> RandomMechanism:
 @st.composite
 def _planet(draw: Any) -> RandomMechanism:
     """A planet 3 on the arm 2 about O: round a fixed sun or ring, or with driven sun 4."""
-    kind = draw(st.sampled_from(["fixed sun", "fixed ring", "driven sun", "sun and ring"]))
+    kind = draw(st.sampled_from(["fixed sun", "fixed ring", "driven sun", "sun and ring",
+                                 "ring output", "two inputs, ring output"]))
     rs = draw(st.floats(3, 15))
     rp = draw(st.floats(1, 10)) if kind != "fixed ring" else rs * draw(st.floats(0.15, 0.7))
     arm = rs + rp if kind != "fixed ring" else rs - rp
@@ -267,7 +269,21 @@ def _planet(draw: Any) -> RandomMechanism:
         links["4"] = (p4, {"O": (0.0, 0.0), "S": _add((0.0, 0.0), _e(draw(_ANG)), rs)})
         rolling = [{**planet, "on": 4, "on_circle": {"center": "O", "radius": rs},
                     "contact": "outside"}]
-        if kind == "driven sun":
+        if kind in ("ring output", "two inputs, ring output"):
+            # the ring 5 about O meshes with the planet inside; fixed sun: the frame's circle
+            ring = rs + 2 * rp
+            p5 = _pose(draw, (0, 0))
+            links["5"] = (p5, {"O": (0.0, 0.0), "R": _add((0.0, 0.0), _e(draw(_ANG)), ring)})
+            if kind == "ring output":
+                del links["4"]
+                rolling[0]["on"] = 1
+                drive = _angle_drive("2", p2, draw)
+            else:
+                drive = [_angle_drive("2", p2, draw), _angle_drive("4", p4, draw)]
+            rolling.append({"link": 3, "on": 5, "circle": {"center": "P", "radius": rp},
+                            "on_circle": {"center": "O", "radius": ring}, "contact": "inside",
+                            "angle": _deg(p5[2])})  # this contact places the ring
+        elif kind == "driven sun":
             if draw(st.booleans()):  # the sun as the rolling link, on the planet
                 rolling = [{"link": 4, "on": 3, "circle": {"center": "O", "radius": rs},
                             "on_circle": {"center": "P", "radius": rp},
@@ -282,6 +298,31 @@ def _planet(draw: Any) -> RandomMechanism:
     return _build(f"planet, {kind}", frame, links, {"rolling": rolling, "drive": drive})
 
 
+@st.composite
+def _gear_chain(draw: Any) -> RandomMechanism:
+    """Three gears in a row on fixed pivots (a simple train, Sec. 7.12); gear 2 driven."""
+    r = [draw(st.floats(2, 10)) for _ in range(3)]
+    o = [(0.0, 0.0)]
+    o.append(_add(o[0], _e(draw(_ANG)), r[0] + r[1]))
+    t = draw(st.floats(0.4, 2 * math.pi - 0.4))  # the third gear clear of the first
+    if math.hypot(*_sub(_add(o[1], _e(math.atan2(-o[1][1], -o[1][0]) + t), r[1] + r[2]),
+                        o[0])) < r[0] + r[2] + 0.5:
+        raise _Reject
+    o.append(_add(o[1], _e(math.atan2(-o[1][1], -o[1][0]) + t), r[1] + r[2]))
+    names = ["O2", "O3", "O4"]
+    poses = [_pose(draw, c) for c in o]
+    links = {str(k + 2): (poses[k], {names[k]: o[k]}) for k in range(3)}
+    rolling = []
+    for k in range(2):
+        a, b = (k, k + 1) if draw(st.booleans()) else (k + 1, k)
+        rolling.append({"link": a + 2, "on": b + 2,
+                        "circle": {"center": names[a], "radius": r[a]},
+                        "on_circle": {"center": names[b], "radius": r[b]},
+                        "angle": _deg(poses[k + 1][2])})  # the contact places the next gear
+    extra = {"rolling": rolling, "drive": _angle_drive("2", poses[0], draw)}
+    return _build("gear chain", dict(zip(names, o)), links, extra)
+
+
 class _Reject(Exception):
     """A drawn arrangement too near a toggle: drawn again."""
 
@@ -292,6 +333,7 @@ ROLLING_KINDS = {
     "pinion on a pivoted rack": _pinion_on_pivoted_rack,
     "sliding rack": _sliding_rack,
     "gears": _gears,
+    "gear chain": _gear_chain,
     "planet": _planet,
 }
 

@@ -110,7 +110,13 @@ def test_gears_on_fixed_centers(rm: RandomMechanism) -> None:
     check(rm)
 
 
-@examples(25)
+@examples(15)
+@given(rm=rolling_arrangements("gear chain"))
+def test_gear_chains(rm: RandomMechanism) -> None:
+    check(rm)
+
+
+@examples(30)
 @given(rm=rolling_arrangements("planet"))
 def test_planets(rm: RandomMechanism) -> None:
     check(rm)
