@@ -212,6 +212,8 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
             exact.notes = [*pc.notes, f"the posture is regular but {singular}: the rates "
                            "are the analytic solver's (Secs. 3.9, 4.9)"]
             exact.branches = dict(pc.branches)
+            exact.constructions = dict(constructions)  # the posture is still constructed
+            exact.values = {"posture": values}
             return exact
         note = (f"toggle or dead-center posture: the velocities and accelerations are "
                 f"undetermined here ({singular}; Sec. 3.5)")

@@ -195,3 +195,19 @@ def test_sweeps_start_where_the_file_stands() -> None:
     th4 = np.unwrap(np.radians(sw.columns["angle_4"]))
     th2 = np.unwrap(np.radians(sw.columns["angle_2"]))
     assert np.allclose(th2, (th4 - math.radians(30)) / 3, atol=1e-9)
+
+
+@pytest.mark.parametrize(("name", "why"), [
+    ("planet_driven_relative_to_arm.toml", "the rates are the analytic solver's"),
+    ("wheel_dead_point.toml", "the posture is a toggle or dead center")])
+def test_why_no_velocity_polygon(name: str, why: str, tmp_path: Path,
+                                 capsys: pytest.CaptureFixture[str]) -> None:
+    from graphkin.cli import main
+
+    assert main(["draw", str(DATA / name), "-d", "velocity", "-o",
+                 str(tmp_path / "v.svg")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and why in err, err
+    # the posture is still the construction's, and is drawn
+    assert main(["draw", str(DATA / name), "-d", "posture", "-o",
+                 str(tmp_path / "p.svg")]) == 0
