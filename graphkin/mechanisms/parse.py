@@ -316,6 +316,7 @@ class _Parser:
             if not rad > 0:
                 raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {rad}")
             angle = math.radians(self.rate(r.get("angle", 0.0), "angle", f"{key}.angle"))
+            given = "angle" in r
             if ("line" in r) == ("on_circle" in r):
                 raise self.fail(key, "rolling contact needs the surface it rolls on: a line "
                                 "(line = [...]) or a circle (on_circle = {center, radius})")
@@ -358,12 +359,12 @@ class _Parser:
                                         f"{center} are {dist:.6g} apart on link {lk.id}; "
                                         f"rolling {contact} needs {path:.6g}")
                     roll = Rolling(i, link, on, center, rad, angle=angle, key=key,
-                                   on_center=ocen, on_radius=orad, contact=contact,
-                                   on_center_point=q, fixed_centers=True)
+                                   angle_given=given, on_center=ocen, on_radius=orad,
+                                   contact=contact, on_center_point=q, fixed_centers=True)
                     out.append((roll, None))
                     continue
-                roll = Rolling(i, link, on, center, rad, angle=angle, key=key, on_center=ocen,
-                               on_radius=orad, contact=contact,
+                roll = Rolling(i, link, on, center, rad, angle=angle, key=key, angle_given=given,
+                               on_center=ocen, on_radius=orad, contact=contact,
                                on_center_point=named[0] if named else None)
                 slot = Slot(first_slot + i, link, on, center, center=ocen, radius=path,
                             key=roll.slot_key)
@@ -393,9 +394,10 @@ class _Parser:
                                     f"{center} {where} the line; rolling on its {side} needs "
                                     f"{rad:.6g}")
                 out.append((Rolling(i, link, on, center, rad, p0, p1, side, angle, key,
-                                    fixed_centers=True), None))
+                                    fixed_centers=True, angle_given=given), None))
                 continue
-            roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key)
+            roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key,
+                           angle_given=given)
             # the center runs on the line offset by the radius toward its side
             ux, uy = p1[0] - p0[0], p1[1] - p0[1]
             n = math.hypot(ux, uy)

@@ -211,3 +211,13 @@ def test_why_no_velocity_polygon(name: str, why: str, tmp_path: Path,
     # the posture is still the construction's, and is drawn
     assert main(["draw", str(DATA / name), "-d", "posture", "-o",
                  str(tmp_path / "p.svg")]) == 0
+
+
+def test_an_angle_for_a_contact_that_places_a_travel_is_refused() -> None:
+    # the driven pinion fixes its own angle and the rack cannot turn: this contact places the
+    # rack's travel, so an `angle` would be silently ignored
+    text = (DATA / "rack_under_driven_pinion.toml").read_text().replace(
+        'side = "left"', 'side = "left"\nangle = 10')
+    with pytest.raises(graphkin.GraphkinError, match="places the slider 3 by its travel") as e:
+        graphkin.loads(text).solve()
+    assert getattr(e.value, "key", None) == "rolling[0].angle"

@@ -39,6 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism, Slider
 
 __all__ = ["Phase", "rolling_phases"]
@@ -175,6 +176,12 @@ def rolling_phases(mech: Mechanism) -> tuple[Phase, ...]:
                     chosen = Phase(r.key, lid, "angle", float(r.angle))
                 else:
                     assert s is not None
+                    if r.angle_given:
+                        raise InputError(f"this contact places the slider {lid} by its travel "
+                                         "along its line, not by an angle: leave angle out and "
+                                         "draw the slider where it stands at the file's drive "
+                                         "(its origin on that of the link it slides on)",
+                                         key=f"{r.key}.angle", file=mech.source)
                     chosen = Phase(r.key, lid, "travel", _travel_drawn(mech, s), s)
                 break
         # nothing left open (the joints already hold every coordinate): the rolling link's
