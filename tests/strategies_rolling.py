@@ -213,9 +213,11 @@ def _sliding_rack(draw: Any) -> RandomMechanism:
     travel = (w[0] - s0[0]) * u[0] + (w[1] - s0[1]) * u[1]
     extra = {"sliders": [{"link": 3, "on": 1, "point": "R", "line": ["S0", "S1"]}],
              "rolling": [{"link": 2, "on": 3, "circle": {"center": "O2", "radius": r},
-                          "line": ["L0", "L1"], "side": side, "angle": _deg(p2[2])}],
+                          "line": ["L0", "L1"], "side": side}],
              "drive": (_angle_drive("2", p2, draw) if driven == "pinion"
                        else _slide_drive("3", travel, draw))}
+    if driven == "rack":  # the contact places the pinion (else the rack's travel: no angle)
+        extra["rolling"][0]["angle"] = _deg(p2[2])
     return _build(f"sliding rack, {driven} driven", frame, links, extra)
 
 
