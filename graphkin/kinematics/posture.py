@@ -218,6 +218,8 @@ class _Builder:
         rolls = {r.key: r for r in self.mech.rolling}
         for ph in rolling_phases(self.mech):
             r = rolls[ph.key]
+            if ph.link != r.link:  # not the rolling link itself: say which link it places
+                self.notes.append(ph.describe(r.angle_given))
             if ph.kind == "angle":
                 lid = ph.link
                 if lid in self.angle:

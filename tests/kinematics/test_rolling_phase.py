@@ -83,6 +83,9 @@ def test_gear_stands_as_the_file_says(angle: float | None, expected: float) -> N
     assert math.isclose(math.degrees(float(sol.links["2"].angle)), 30.0)
     assert math.isclose(math.degrees(float(sol.links["3"].angle)), expected, abs_tol=1e-9)
     assert math.isclose(float(sol.links["3"].omega), -10 / 3)
+    drawn = "" if angle is not None else " (as drawn)"
+    assert f"rolling[0]: at the file's drive the contact places link 3 at θ3 = " \
+           f"{expected:g}°{drawn}" in sol.notes
 
 
 def test_rack_sliding_under_a_driven_pinion() -> None:

@@ -77,13 +77,14 @@ class Phase:
     value: float
     slider: Slider | None = None
 
-    def describe(self) -> str:
-        """The phase in words (for a note)."""
+    def describe(self, given: bool) -> str:
+        """The phase in words (for a note); ``given``: the file wrote the contact's angle."""
         if self.kind == "angle":
-            return (f"{self.key}: at the file's drive link {self.link} stands at "
-                    f"θ{self.link} = {math.degrees(self.value):.6g}°")
-        return (f"{self.key}: at the file's drive the slider {self.link} stands as drawn "
-                f"(travel {self.value:.6g})")
+            return (f"{self.key}: at the file's drive the contact places link {self.link} at "
+                    f"θ{self.link} = {math.degrees(self.value):.6g}°"
+                    + ("" if given else " (as drawn)"))
+        return (f"{self.key}: at the file's drive the contact places the slider {self.link} "
+                f"as drawn (travel {self.value:.6g})")
 
 
 def _travel_drawn(mech: Mechanism, s: Slider) -> float:
