@@ -37,7 +37,6 @@ from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
 from graphkin.kinematics import posture_drives as pd
-from graphkin.kinematics.analytic.phase import rolling_phases
 from graphkin.kinematics.posture_branches import (
     _differ_tolerance,
     _hint_distance,
@@ -207,40 +206,7 @@ class _Builder:
                               "its line.")
                 self.events.append(("input", d))
         pd.finish_pairs(self)
-        self.start_phases()
-
-    def start_phases(self) -> None:
-        """Each rolling contact places one link at the file's drive, as a drive does.
-
-        The no-slip condition fixes a link's angle only up to a constant; at the
-        file's drive the file gives it (:mod:`graphkin.kinematics.analytic.phase`).
-        """
-        rolls = {r.key: r for r in self.mech.rolling}
-        for ph in rolling_phases(self.mech):
-            r = rolls[ph.key]
-            if ph.link != r.link:  # not the rolling link itself: say which link it places
-                self.notes.append(ph.describe(r.angle_given))
-            if ph.kind == "angle":
-                lid = ph.link
-                if lid in self.angle:
-                    continue
-                lab = f"θ{lid}"
-                who = "rolls" if lid == r.link else f"is turned by the rolling of {r.key}"
-                self.add("scalar", (), (lab,), value=ph.value, role=Role.GIVEN,
-                         note=f"Link {lid} {who}; at this drive it stands at "
-                              f"θ{lid} = {math.degrees(ph.value):.6g}° (its reference).")
-                self.angle[lid] = lab
-                self.events.append(("roll_angle", r, lid))
-                continue
-            s = ph.slider
-            assert s is not None
-            lab = f"s{s.link}"
-            self.inputs.setdefault(lab, ph.value)
-            self.env[lab] = np.asarray(ph.value)
-            self.add("scalar", (), (lab,), value=ph.value, role=Role.GIVEN,
-                     note=f"The slider {s.link} is moved by the rolling of {r.key}; at this "
-                          f"drive it has travelled {ph.value:.6g} along its line (as drawn).")
-            self.rolled.append((r, s))
+        pd.start_phases(self)
 
     def place(self, lid: str) -> None:
         """Lay off every point of a link from one known point and its angle (case 1)."""
