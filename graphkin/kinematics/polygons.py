@@ -29,6 +29,7 @@ from typing import Any
 
 from graphkin.construction import Construction, Mark, Role, Term, VectorEquation
 from graphkin.errors import ConstructionError
+from graphkin.kinematics.polygon_rolling import RollingRules
 from graphkin.kinematics.posture import PostureConstruction, _n
 from graphkin.mechanisms.model import FRAME, Drive, Mechanism, Rolling, Slider, Slot
 
@@ -67,7 +68,7 @@ class Polygons:
     acceleration_images: dict[str, str]
 
 
-class _Poly:
+class _Poly(RollingRules):
     def __init__(self, mech: Mechanism, pc: PostureConstruction) -> None:
         self.mech = mech
         self.pc = pc
@@ -137,24 +138,26 @@ class _Poly:
     def run(self) -> None:
         self.frame()
         # an event whose rates are not known yet (a point of a rolling link whose surface's
-        # link is found later) waits, and is taken up as soon as they are
+        # link is found later) waits, and is taken up as soon as they are; when something
+        # waits, the rolling rules (polygon_rolling.py) may give the rates it waits for
         pending: list[tuple[object, ...]] = []
         for ev in self.pc.events:
             if self._take(ev):
                 pending = [e for e in pending if not self._take(e)]
             else:
                 pending.append(ev)
-        for r in self.mech.rolling:
-            if self.surface_ready(r):
-                self.rolling_rates(r)
+            while pending and self.unstick():
+                pending = [e for e in pending if not self._take(e)]
+        while self.unstick():
             pending = [e for e in pending if not self._take(e)]
-        for r in self.mech.rolling:
-            self.rolling_rates(r)
         pending = [e for e in pending if not self._take(e)]
-        if pending:
+        missing = [k for k in self.mech.links if k not in self.omega or k not in self.alpha]
+        if pending or missing:
+            what = (f"waiting: {_event_text(pending[0])}" if pending
+                    else f"the rates of link {missing[0]} are not found")
             raise ConstructionError("the velocity polygon cannot be drawn one step at a time "
-                                    f"here (waiting: {pending[0][0]} {pending[0][1:3]})",
-                                    step=str(pending[0][0]))
+                                    f"here ({what})",
+                                    step=str(pending[0][0]) if pending else missing[0])
 
     def _take(self, ev: tuple[object, ...]) -> bool:
         """Carry out one posture event's polygon steps; False when its rates are not known yet."""
@@ -164,71 +167,36 @@ class _Poly:
             return False
         return True
 
-    def surface_ready(self, r: Rolling) -> bool:
-        """True when the images of the link that carries the rolling surface can be drawn."""
-        k = r.on
-        return k == FRAME or (k in self.omega and k in self.alpha and k in self.anchor
-                              and self.anchor[k] in self.vimg and self.anchor[k] in self.aimg)
+    # ---- rolling contact (Sec. 3.7, 4.7): polygon_rolling.py -------------------
+    def ev_roll_angle(self, r: Rolling, lid: str) -> None:
+        """The ω and α of a link the rolling places come from no slip once its images allow."""
 
-    # ---- rolling contact (Sec. 3.7, 4.7) -----------------------------------
-    def rolling(self, key: str) -> Rolling:
-        return next(r for r in self.mech.rolling if r.key == key)
+    def ev_roll_travel(self, r: Rolling, s: Slider) -> None:
+        """A slider the rolling moves (a rack under a driven pinion): its point from no slip.
 
-    def ev_roll_angle(self, r: Rolling) -> None:
-        """The roller's ω and α come from the rolling condition once its images allow."""
+        ``V_C(k) = V_C(other)`` (Eq. 3.13), and the slider turns with its guide
+        (ω_k known), so ``V_P = V_C(k) + ω_k × R_PC``; likewise for accelerations
+        with ``A_C(k) = A_C(other) ∓ A^r`` (Eq. 4.19).
+        """
+        k, p, c = s.link, s.point, f"{r.key}:C"
+        other = r.link if k == r.on else r.on
+        if (p in self.vimg or c not in self.pc.values or not self.ready(other)
+                or k not in self.omega or k not in self.alpha):
+            if p in self.vimg:
+                return
+            raise _NotYet(p)
+        vc, _ = self.coincident(other, c)
+        ac = self.contact_on(r) if k == r.on else self.contact_images(r)[1]
+        self.vimg[p] = self.V(
+            "velocity_difference", (vc, self.omega[k], c, p), vimg(p), role=Role.RESULT,
+            note=f"No slip: the contact point of link {k} has the velocity of link {other}'s; "
+                 f"V_{p} = V_C + ω{k} × R_{p}C (case 1).")
+        self.aimg[p] = self.A(
+            "acceleration_difference", (ac, self.omega[k], self.alpha[k], c, p), aimg(p),
+            role=Role.RESULT, note=f"A_{p} = A_C{k} + A^n + A^t (case 1).")
 
     def ev_contact(self, r: Rolling) -> None:
         """The contact point is placed: nothing to draw until its images are needed."""
-
-    def contact_images(self, r: Rolling) -> tuple[str, str]:
-        """Images of the contact point C as a point of the roller (velocity, acceleration).
-
-        No slip: ``V_C(link) = V_C(on)`` (Eq. 3.13); ``A_C(link) = A_C(on) + A^r``
-        with A^r normal to the surfaces (Eq. 4.19).
-        """
-        c = f"{r.key}:C"
-        i, j = r.link, r.on
-        vj, aj = self.coincident(j, c)
-        al = aimg(f"{c}@{i}")
-        if al not in {o for st in self.a.steps for o in st.outputs}:
-            # ω of the roller is found in the velocity polygon (evaluated before this one)
-            ar = self.A("rolling_normal", (c, r.center, f"ω{i}", self.omega[j]),
-                        f"A_C{i}/{j}^r", factor=r.factor,
-                        note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel (× R/(R ± ρ) on a "
-                             "circle), normal to the surfaces, toward the center (Eq. 4.19).")
-            self.A("translate", (aj, ar), al, role=Role.RESULT,
-                   equation=VectorEquation((Term(f"A_C{i}", U, U),),
-                                           (Term(f"A_C{j}"), Term(f"A_C{i}/{j}^r")), case=1),
-                   note=f"A_C{i} = A_C{j} + A_C{i}/{j}^r (case 1).")
-        return vj, al
-
-    def known_point(self, lid: str, images: dict[str, str]) -> str:
-        """A named point of the link whose image is already drawn."""
-        return next(p for p in self.mech.links[lid].points if p in images)
-
-    def ensure_omega(self, r: Rolling, via: str | None = None) -> None:
-        i = r.link
-        if i in self.omega:
-            return
-        c = f"{r.key}:C"
-        vj, _ = self.coincident(r.on, c)
-        p = via or self.known_point(i, self.vimg)
-        self.V("angular_rate", (p, c, self.vimg[p], vj), f"ω{i}", role=Role.RESULT,
-               note=f"No slip: the contact point of link {i} has the velocity of the surface's; "
-                    f"ω{i} = V_C{p}/R_C{p}.")
-        self.omega[i] = f"ω{i}"
-
-    def rolling_rates(self, r: Rolling) -> None:
-        i = r.link
-        self.ensure_omega(r)
-        if i in self.alpha:
-            return
-        _, al = self.contact_images(r)
-        p = self.known_point(i, self.aimg)
-        c = f"{r.key}:C"
-        self.A("angular_rate", (p, c, self.aimg[p], al), f"α{i}", role=Role.RESULT,
-               note=f"α{i} = A^t_C{p}/R_C{p}, its sense from the image.")
-        self.alpha[i] = f"α{i}"
 
     def ev_input(self, d: Drive) -> None:
         lid, kind, idx = d.link, d.kind, d.index
@@ -330,18 +298,22 @@ class _Poly:
         self.omega[a], self.alpha[a] = f"ω{a}", f"α{a}"
 
     def ev_point(self, lid: str, name: str, anchor: str) -> None:
+        if name in self.vimg and name in self.aimg:
+            return  # drawn already (from two known images of its link)
         if anchor not in self.vimg or anchor not in self.aimg:
             raise _NotYet(name)
         for r in self.mech.rolling:
             if r.link == lid and (lid not in self.omega or lid not in self.alpha):
-                if not self.surface_ready(r):
+                if not self.surface_ready(r) or self.point_with_image(lid, f"{r.key}:C") is None:
                     raise _NotYet(name)
                 self.ensure_omega(r)
                 self.rolling_rates(r)
         if lid not in self.omega or lid not in self.alpha:
             raise _NotYet(name)
+        # the image triangle needs a base of two points apart (Mehmke): another pair, or
+        # the velocity difference from the anchor alone
         others = [p for p in self.mech.links[lid].points
-                  if p != anchor and p in self.vimg and p in self.mech.links[lid].points]
+                  if p != anchor and p in self.vimg and p in self.aimg and self.apart(anchor, p)]
         loc = self.mech.links[lid].points
         if others and anchor in loc:
             b = others[0]
@@ -570,6 +542,13 @@ class _Poly:
         self.A("angular_rate", (p, x, self.aimg[p], ax_i), al, role=Role.RESULT,
                note=f"α{lid} = A^t/R, its sense from the image.")
         self.alpha[lid] = al
+
+
+def _event_text(ev: tuple[object, ...]) -> str:
+    """A posture event in words: its kind and the names in it (links, points, keys)."""
+    parts = [str(getattr(x, "key", x)) for x in ev[1:]
+             if isinstance(x, str) or hasattr(x, "key")]
+    return " ".join([str(ev[0]), *parts])
 
 
 class _NotYet(Exception):

@@ -43,7 +43,7 @@ from graphkin.kinematics.posture_branches import (
     _layout_distance,
     _new_points,
 )
-from graphkin.mechanisms.model import FRAME, XY, Drive, Mechanism, Slider, Slot
+from graphkin.mechanisms.model import FRAME, XY, Drive, Mechanism, Rolling, Slider, Slot
 from graphkin.tolerance import Tolerance
 
 __all__ = ["PostureConstruction", "build_posture", "NotDecomposable"]
@@ -124,6 +124,7 @@ class _Builder:
         self.notes: list[str] = []
         self.events: list[tuple[object, ...]] = []
         self.forced: dict[str, str] = {}
+        self.rolled: list[tuple[Rolling, Slider]] = []
         self.serial = 0
 
     # ---- steps --------------------------------------------------------
@@ -205,6 +206,7 @@ class _Builder:
                               "its line.")
                 self.events.append(("input", d))
         pd.finish_pairs(self)
+        pd.start_phases(self)
 
     def place(self, lid: str) -> None:
         """Lay off every point of a link from one known point and its angle (case 1)."""
@@ -315,15 +317,14 @@ class _Builder:
                              note=f"Lay off the travel s{d.link} along the line: {ds.point}.")
                     self.events.append(("slider_drive", d))
                     changed = True
-            for r in self.mech.rolling:
-                if r.link not in self.angle:
-                    lab = f"θ{r.link}"
-                    self.add("scalar", (), (lab,), value=r.angle, role=Role.GIVEN,
-                             note=f"Link {r.link} rolls; at this drive it stands at "
-                                  f"θ{r.link} = {math.degrees(r.angle):.6g}° (its reference).")
-                    self.angle[r.link] = lab
-                    self.events.append(("roll_angle", r))
+            for r, ds in self.rolled:
+                if ds.on in self.placed and ds.point not in self.env:
+                    self.add("along_line", (f"{ds.key}:L0", f"{ds.key}:L1", f"s{ds.link}"),
+                             (ds.point,), role=Role.RESULT,
+                             note=f"Lay off the travel s{ds.link} along the line: {ds.point}.")
+                    self.events.append(("roll_travel", r, ds))
                     changed = True
+            for r in self.mech.rolling:
                 c = f"{r.key}:C"
                 if r.link in self.placed and r.on in self.placed and c not in self.env:
                     if r.on_line:
@@ -393,7 +394,7 @@ class _Builder:
                     return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
             for r in self.mech.rolling:
                 slot = r.slot_key  # the center's equivalent slot
-                if r.link == lid and r.on in self.placed:
+                if r.link == lid and r.on in self.placed and not r.fixed_centers:
                     cloc = self.mech.links[lid].points[r.center]
                     x = self.fresh(f"{name}'")
                     start = f"{slot}:L0" if r.on_line else f"{slot}:O"
@@ -452,7 +453,8 @@ class _Builder:
         if lid in self.angle and not self.distinct_known(lid):
             return any((sl.link == lid and sl.on in self.placed) or
                        (sl.on == lid and sl.link in self.placed) for sl in self.mech.sliders) or \
-                any(r.link == lid and r.on in self.placed for r in self.mech.rolling)
+                any(r.link == lid and r.on in self.placed and not r.fixed_centers
+                    for r in self.mech.rolling)
         return False
 
     def do(self, group: _Group, branch: str | None) -> list[str]:
@@ -634,6 +636,7 @@ def _fork(b: _Builder) -> _Builder:
     t.branches = dict(b.branches)
     t.notes = list(b.notes)
     t.events = list(b.events)
+    t.rolled = list(b.rolled)
     return t
 
 

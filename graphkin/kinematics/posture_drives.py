@@ -154,3 +154,38 @@ def do_coordinate(b: _Builder, d: Drive, lid: str, branch: str | None) -> list[s
           equation=VectorEquation((Term(f"R_{x}", U, K),), (Term(f"R_{x}{n}", K, U),), case=2),
           note=f"The arc cuts the line {d.kind} = {d.label} at {x} (case 2).")
     return names
+
+
+def start_phases(b: _Builder) -> None:
+    """Each rolling contact places one link at the file's drive, as a drive does.
+
+    The no-slip condition fixes a link's angle only up to a constant; at the
+    file's drive the file gives it (:mod:`graphkin.kinematics.analytic.phase`):
+    an angle, laid off as a given scalar, or a slider's travel, laid off along
+    its line as soon as the line is drawn (``Builder.propagate``).
+    """
+    from graphkin.kinematics.analytic.phase import rolling_phases
+
+    rolls = {r.key: r for r in b.mech.rolling}
+    for ph in rolling_phases(b.mech):
+        r = rolls[ph.key]
+        if ph.link != r.link:  # not the rolling link itself: say which link it places
+            b.notes.append(ph.describe(r.angle_given))
+        if ph.kind == "angle":
+            lid = ph.link
+            if lid in b.angle:
+                continue
+            lab = f"θ{lid}"
+            who = "rolls" if lid == r.link else f"is turned by the rolling of {r.key}"
+            b.add("scalar", (), (lab,), value=ph.value, role=Role.GIVEN,
+                  note=f"Link {lid} {who}; at this drive it stands at "
+                       f"θ{lid} = {math.degrees(ph.value):.6g}° (its reference).")
+            b.angle[lid] = lab
+            b.events.append(("roll_angle", r, lid))
+            continue
+        s = ph.slider
+        assert s is not None
+        b.add("scalar", (), (f"s{s.link}",), value=ph.value, role=Role.GIVEN,
+              note=f"The slider {s.link} is moved by the rolling of {r.key}; at this "
+                   f"drive it has travelled {ph.value:.6g} along its line (as drawn).")
+        b.rolled.append((r, s))

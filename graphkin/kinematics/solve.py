@@ -205,6 +205,16 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
         singular = str(exc)
     if singular is not None:
         states = link_states(mech, pc, values)
+        exact = _rates_by_analytic(mech, states, tol)
+        if exact is not None:
+            # the posture is regular: the polygon met two coincident images or parallel
+            # lines of its own making, not a toggle; the analytic solver gives the rates
+            exact.notes = [*pc.notes, f"the posture is regular but {singular}: the rates "
+                           "are the analytic solver's (Secs. 3.9, 4.9)"]
+            exact.branches = dict(pc.branches)
+            exact.constructions = dict(constructions)  # the posture is still constructed
+            exact.values = {"posture": values}
+            return exact
         note = (f"toggle or dead-center posture: the velocities and accelerations are "
                 f"undetermined here ({singular}; Sec. 3.5)")
         return Solution(mech, states, "construction", constructions,
@@ -217,6 +227,32 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
                     branches=dict(pc.branches),
                     values={"posture": values, "velocity": ev.values,
                             "acceleration": ea.values})
+
+
+def _rates_by_analytic(mech: Mechanism, states: Mapping[str, LinkState],
+                       tol: Tolerance | None) -> Solution | None:
+    """The analytic solution at the constructed posture, or None at a real toggle.
+
+    The verdict "toggle" is the analytic solver's: its Jacobian, scaled to the
+    mechanism's size, rank deficient (Sec. 3.9); a polygon that fails at a
+    regular posture is no verdict.
+    """
+    from graphkin.kinematics.analytic import solve_analytic
+
+    guess = {lid: (float(s.origin[0]), float(s.origin[1]), float(s.angle))
+             for lid, s in states.items() if lid != FRAME}
+    try:
+        sol = solve_analytic(mech, guess=guess, tol=tol)
+    except (ConstructionError, DegenerateError):
+        return None
+    # the same posture as the construction (Newton from it stays on its branch)
+    size = float(mech.scale)
+    for lid, s in states.items():
+        e = sol.links[lid]
+        if float(np.hypot(*(np.asarray(e.origin) - np.asarray(s.origin)))) > \
+                1e-6 * size or abs(np.angle(np.exp(1j * (float(e.angle) - float(s.angle))))) > 1e-6:
+            return None
+    return sol
 
 
 def superposition(mech: Mechanism, tol: Tolerance | None = None) -> list[tuple[int, Solution]]:

@@ -121,7 +121,8 @@ class Rolling:
     of one link (gears on fixed centers, a planet on its arm) the distance of
     the centers is already held and only the no-slip condition is a constraint
     (``fixed_centers``); ``on_center_point`` then names the point of ``on`` at
-    its circle's center.
+    its circle's center.  ``angle_given`` says whether the file wrote ``angle``
+    (a contact that places a slider's travel has no angle to take).
     """
 
     index: int
@@ -139,6 +140,7 @@ class Rolling:
     contact: str = "outside"
     on_center_point: str | None = None
     fixed_centers: bool = False
+    angle_given: bool = False
 
     @property
     def slot_key(self) -> str:

@@ -252,7 +252,7 @@ class _Parser:
                     raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {r}")
                 slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
 
-        rolling = self.rolling_entries(len(slots))
+        rolling = self.rolling_entries(len(slots), sliders)
         slots += [r_slot for _, r_slot in rolling if r_slot is not None]
         drives = self.drives(pins, sliders)
         rates = self.rates_table(sliders)
@@ -290,8 +290,16 @@ class _Parser:
             raise self.fail(f"{key}.on", same)
         return link, on
 
-    def rolling_entries(self, first_slot: int) -> list[tuple[Rolling, Slot | None]]:
-        """Rolling contacts, each with the equivalent slot of its circle's center."""
+    def rolling_entries(self, first_slot: int,
+                        sliders: list[Slider] | None = None) -> list[tuple[Rolling, Slot | None]]:
+        """Rolling contacts, each with the equivalent slot of its circle's center.
+
+        No slot when the links already hold the center's distance from the surface:
+        a link that carries both centers (gears on fixed centers, a planet on its
+        arm), or a slider parallel to the line between the link carrying the center
+        and the line's link (a rack sliding under a pinion on a fixed pivot, a wheel
+        on a carriage rolling on the ground).
+        """
         out: list[tuple[Rolling, Slot | None]] = []
         for i, r in enumerate(self.entries("rolling")):
             key = f"rolling[{i}]"
@@ -308,6 +316,7 @@ class _Parser:
             if not rad > 0:
                 raise self.fail(f"{key}.circle.radius", f"the radius must be positive, not {rad}")
             angle = math.radians(self.rate(r.get("angle", 0.0), "angle", f"{key}.angle"))
+            given = "angle" in r
             if ("line" in r) == ("on_circle" in r):
                 raise self.fail(key, "rolling contact needs the surface it rolls on: a line "
                                 "(line = [...]) or a circle (on_circle = {center, radius})")
@@ -350,12 +359,12 @@ class _Parser:
                                         f"{center} are {dist:.6g} apart on link {lk.id}; "
                                         f"rolling {contact} needs {path:.6g}")
                     roll = Rolling(i, link, on, center, rad, angle=angle, key=key,
-                                   on_center=ocen, on_radius=orad, contact=contact,
-                                   on_center_point=q, fixed_centers=True)
+                                   angle_given=given, on_center=ocen, on_radius=orad,
+                                   contact=contact, on_center_point=q, fixed_centers=True)
                     out.append((roll, None))
                     continue
-                roll = Rolling(i, link, on, center, rad, angle=angle, key=key, on_center=ocen,
-                               on_radius=orad, contact=contact,
+                roll = Rolling(i, link, on, center, rad, angle=angle, key=key, angle_given=given,
+                               on_center=ocen, on_radius=orad, contact=contact,
                                on_center_point=named[0] if named else None)
                 slot = Slot(first_slot + i, link, on, center, center=ocen, radius=path,
                             key=roll.slot_key)
@@ -375,11 +384,23 @@ class _Parser:
                 side = "left" if cross > 0 else "right"
             if side not in ("left", "right"):
                 raise self.fail(f"{key}.side", f"side must be \"left\" or \"right\", not {side!r}")
-            roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key)
+            sgn = 1.0 if side == "left" else -1.0
+            held = _held_offset(self.links, sliders or [], center, on, p0, p1)
+            if held is not None:
+                if abs(held - sgn * rad) > 1e-9 * max(1.0, rad, abs(held)):
+                    where = (f"{abs(held):.6g} to the {'left' if held > 0 else 'right'} of"
+                             if abs(held) > 1e-9 * max(1.0, rad) else "on")
+                    raise self.fail(f"{key}.circle.radius", f"the slider keeps the center "
+                                    f"{center} {where} the line; rolling on its {side} needs "
+                                    f"{rad:.6g}")
+                out.append((Rolling(i, link, on, center, rad, p0, p1, side, angle, key,
+                                    fixed_centers=True, angle_given=given), None))
+                continue
+            roll = Rolling(i, link, on, center, rad, p0, p1, side, angle, key,
+                           angle_given=given)
             # the center runs on the line offset by the radius toward its side
             ux, uy = p1[0] - p0[0], p1[1] - p0[1]
             n = math.hypot(ux, uy)
-            sgn = 1.0 if side == "left" else -1.0
             ox, oy = -uy / n * rad * sgn, ux / n * rad * sgn
             slot = Slot(first_slot + i, link, on, center, p0=(p0[0] + ox, p0[1] + oy),
                         p1=(p1[0] + ox, p1[1] + oy), key=roll.slot_key)
@@ -647,3 +668,40 @@ def _lonely_points(mech: Mechanism) -> str:
                      "alike: is a pin misspelt?")
             break
     return text
+
+
+def _held_offset(links: Mapping[str, Link], sliders: list[Slider], center: str, on: str,
+                 p0: XY, p1: XY) -> float | None:
+    """The signed distance (left +) at which a slider holds a center from the line p0 p1 of ``on``.
+
+    None unless a link A carrying the point ``center`` and the link ``on`` are
+    joined by a slider parallel to the line: then A translates along it relative
+    to ``on`` and the center keeps its distance from the line (the equivalent slot
+    would repeat the slider's constraint, and Kutzbach's count would be one short).
+    """
+    ux, uy = p1[0] - p0[0], p1[1] - p0[1]
+    n = math.hypot(ux, uy)
+    ux, uy = ux / n, uy / n
+    for s in sliders:
+        for a in (s.link, s.on):
+            other = s.on if a == s.link else s.link
+            if other != on or center not in links[a].points:
+                continue
+            c = links[a].points[center]
+            phi = s.direction_angle
+            cs, sn = math.cos(phi), math.sin(phi)
+            if a == s.link:  # A slides on `on`: A's axes are the slide's, in on's coordinates
+                sx, sy = s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]
+                if abs(ux * sy - uy * sx) > 1e-9 * math.hypot(sx, sy):
+                    continue
+                q = links[a].points[s.point]
+                dx, dy = c[0] - q[0], c[1] - q[1]
+                wx, wy = s.p0[0] + cs * dx - sn * dy, s.p0[1] + sn * dx + cs * dy
+            else:  # `on` slides on A along its own x axis
+                if abs(uy) > 1e-9:
+                    continue
+                q = links[on].points[s.point]
+                dx, dy = c[0] - s.p0[0], c[1] - s.p0[1]
+                wx, wy = cs * dx + sn * dy + q[0], -sn * dx + cs * dy + q[1]
+            return ux * (wy - p0[1]) - uy * (wx - p0[0])
+    return None

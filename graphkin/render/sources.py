@@ -186,9 +186,18 @@ class Source:
             if self.solution is not None and not self.solution.mechanism.has_rates:
                 return (f"no {diagram} polygon: the file gives no rates (add omega to [drive] "
                         "or a [rates] table)")
-            if self.solution is not None and self.solution.method != "construction":
+            sol = self.solution
+            if sol is not None and sol.method != "construction" and "posture" in \
+                    sol.constructions:
+                return (f"no {diagram} polygon: it cannot be drawn one step at a time at "
+                        "this posture, and the rates are the analytic solver's (see the notes "
+                        "of graphkin solve)")
+            if sol is not None and sol.method != "construction":
                 return (f"no {diagram} polygon: the mechanism was solved analytically "
                         "(it cannot be constructed one group at a time)")
+            if sol is not None and any(n.startswith("toggle or dead-center") for n in sol.notes):
+                return (f"no {diagram} polygon: the posture is a toggle or dead center, where "
+                        "the velocities and accelerations are undetermined (Sec. 3.5)")
             return f"no {diagram} construction in this object"
         if diagram in optional_modules:
             module = optional_modules[diagram]

@@ -193,9 +193,10 @@ class _Search:
         for d, v in zip(mech.drives, values):
             if d.kind == "angle":
                 angles[d.link] = float(v)
-        if eqs.rolling_fixed:  # at the file's drive a rolling link stands at its angle
-            for ro in mech.rolling:
-                angles.setdefault(ro.link, float(ro.angle))
+        # at the file's drive each rolling contact places a link at its angle (its phase)
+        for ph in eqs.phases:
+            if ph.kind == "angle":
+                angles.setdefault(ph.link, float(ph.value))
 
         def learn(lid: str) -> None:
             x, y, t = poses[lid]
@@ -256,9 +257,9 @@ class _Search:
         for d, v in zip(eqs.mech.drives, values):
             if d.kind == "angle":
                 q[3 * eqs.index[d.link] + 2] = v
-        if eqs.rolling_fixed:
-            for ro in eqs.mech.rolling:
-                q[3 * eqs.index[ro.link] + 2] = ro.angle
+        for ph in eqs.phases:
+            if ph.kind == "angle":
+                q[3 * eqs.index[ph.link] + 2] = ph.value
         return q
 
     def score(self, q: np.ndarray) -> tuple[float, float]:

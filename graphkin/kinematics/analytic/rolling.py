@@ -21,15 +21,21 @@ class _RollingRow:
     link: int
     angle: float
     ref: float | None
+    #: the posture row at the file's drive: (link index, "angle" or "travel", value, the
+    #: travel row of a slider or None); see :mod:`graphkin.kinematics.analytic.phase`
+    phase: tuple[int, str, float, _OnLine | None] | None
 
     def rate_eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
         raise NotImplementedError
 
     def eval(self, st: _Poses, J: np.ndarray | None, row: int) -> list[float]:
         if self.ref is None:
-            if J is not None and self.link != _F:
-                J[row, 3 * self.link + 2] += 1.0
-            return [st.th[self.link] - self.angle]
+            k, kind, value, travel = self.phase or (self.link, "angle", self.angle, None)
+            if kind == "angle" or travel is None:
+                if J is not None and k != _F:
+                    J[row, 3 * k + 2] += 1.0
+                return [st.th[k] - value]
+            return [travel.eval(st, J, row)[0] - value]
         return [self.rate_eval(st, J, row)[0] - self.ref]
 
 
@@ -75,8 +81,9 @@ class _Rolling(_RollingRow):
     vanishes along ``u`` here, since ``V_rel`` is along ``u``).
 
     Posture rows.  With ``ref`` None (one posture at the file's drive) the
-    posture row is ``θ_l - angle = 0``: at its own drive the file gives the
-    rolling link's angle.  With ``ref = c`` (a sweep) it is ``g`` itself,
+    posture row places the link that the contact places at the file's drive
+    (``phase``: the rolling link at its ``angle``, or another link, see
+    :mod:`graphkin.kinematics.analytic.phase`).  With ``ref = c`` (a sweep) it is ``g`` itself,
     the integrated no-slip condition through the file's posture.  The rate
     rows are ``g``'s in both cases (:meth:`rate_eval`).
     """
@@ -90,6 +97,7 @@ class _Rolling(_RollingRow):
     ref: float | None
     label: str
     kinds: tuple[str, ...] = ("A",)
+    phase: tuple[int, str, float, _OnLine | None] | None = None
 
     def value(self, st: _Poses) -> float:
         """``(θ_l - θ_o) + σ s/ρ`` at a posture (not wrapped)."""
@@ -158,7 +166,7 @@ class _RollingCircle(_RollingRow):
     toward ``P`` (Eq. 4.19 for two circles).
 
     Posture rows as for :class:`_Rolling`: with ``ref`` None (the file's
-    drive) ``θ_l - angle = 0``; with ``ref = c`` (a sweep) ``g``.  ``φ`` is
+    drive) the row of ``phase``; with ``ref = c`` (a sweep) ``g``.  ``φ`` is
     an angle on a covering: ``k φ`` with ``k`` not an integer is not a
     function of ``φ`` modulo 2π, so ``φ`` is counted on from ``anchor``
     (``anchor + wrap(atan2(d) - θ_o - anchor)``), and a sweep moves the
@@ -176,6 +184,7 @@ class _RollingCircle(_RollingRow):
     label: str
     kinds: tuple[str, ...] = ("A",)
     anchor: float | None = None
+    phase: tuple[int, str, float, _OnLine | None] | None = None
 
     def _d(self, st: _Poses) -> tuple[float, float]:
         px, py = st.world(self.link, self.p)

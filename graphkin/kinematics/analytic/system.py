@@ -16,6 +16,7 @@ from graphkin.kinematics.analytic.constraints import (
     _Poses,
     _wrap_array,
 )
+from graphkin.kinematics.analytic.phase import Phase, rolling_phases
 from graphkin.kinematics.analytic.rolling import _Rolling, _RollingCircle
 from graphkin.mechanisms.model import FRAME, Drive, Mechanism
 from graphkin.tolerance import Tolerance
@@ -69,23 +70,27 @@ class _System:
                 self.cons.append(_OnCircle(s, p, o, sk.center, float(sk.radius), lab))
         # rolling: the contact is the equivalent slot above; no slip is one more row
         self.rolling_fixed = rolling_ref is None
+        # at the file's drive each contact places one link (its phase), as a drive would
+        self.phases: tuple[Phase, ...] = rolling_phases(mech) if rolling_ref is None else ()
         for i, ro in enumerate(mech.rolling):
             s, o = self.index[ro.link], self.index[ro.on]
             p = mech.links[ro.link].points[ro.center]
             lab = f"{ro.key} (link {ro.link} rolls on link {ro.on} without slip)"
             ref = None if rolling_ref is None else float(rolling_ref[i])
+            row = self._phase_row(self.phases[i]) if self.phases else None
+            rk = ("L",) if row is not None and row[1] == "travel" else ("A",)
             if ro.p0 is None or ro.p1 is None:
                 assert ro.on_center is not None and ro.on_radius is not None
                 rad, big = float(ro.radius), float(ro.on_radius)
                 ratio = (big + rad) / rad if ro.contact == "outside" else -(big - rad) / rad
                 self.cons.append(_RollingCircle(s, o, p, ro.on_center, ratio, float(ro.angle),
-                                                ref, lab))
+                                                ref, lab, rk, phase=row))
                 continue
             u, _ = _unit(ro.p0, ro.p1)
             travel = _OnLine(s, p, o, ro.p0, u, lab)
             sigma = 1.0 if ro.side == "left" else -1.0
             self.cons.append(_Rolling(s, o, travel, sigma, float(ro.radius), float(ro.angle),
-                                      ref, lab))
+                                      ref, lab, rk, phase=row))
         self.drives: list[_Constraint] = [self._drive_function(d) for d in mech.drives]
         self.values = np.array([d.value for d in mech.drives], dtype=float)
         kinds: list[str] = []
@@ -101,6 +106,16 @@ class _System:
         rates = self._rates()
         self.rate_functions: list[_Constraint] | None = rates[0]
         self.rate_values: list[tuple[float, float]] | None = rates[1]
+
+    def _phase_row(self, ph: Phase) -> tuple[int, str, float, _OnLine | None]:
+        """The posture row of a rolling contact's phase (an angle or a slider's travel)."""
+        if ph.kind == "angle" or ph.slider is None:
+            return self.index[ph.link], "angle", ph.value, None
+        sl = ph.slider
+        u, _ = _unit(sl.p0, sl.p1)
+        row = _OnLine(self.index[sl.link], self.mech.links[sl.link].points[sl.point],
+                      self.index[sl.on], sl.p0, u, f"{ph.key} (travel of link {sl.link})")
+        return self.index[sl.link], "travel", ph.value, row
 
     # -- the functions that drives and rates prescribe --------------------
     def _drive_function(self, d: Drive) -> _Constraint:
