@@ -50,11 +50,11 @@ def contact_point(sol: Solution, r: Rolling) -> np.ndarray:
         assert r.p0 is not None and r.p1 is not None
         b = np.asarray(guide.position(r.p0), dtype=float)
         d = np.asarray(guide._r(np.subtract(r.p1, r.p0)), dtype=float)
-        u = d / float(np.hypot(*d))
-        return b + float((c - b) @ u) * u
+        u = d / np.hypot(d[..., 0], d[..., 1])[..., None]  # one posture or a sweep's (N, 2)
+        return b + np.sum((c - b) * u, axis=-1)[..., None] * u
     assert r.on_center is not None and r.on_radius is not None
     o = np.asarray(guide.position(r.on_center), dtype=float)
-    e = (c - o) / float(np.hypot(*(c - o)))
+    e = (c - o) / np.hypot(c[..., 0] - o[..., 0], c[..., 1] - o[..., 1])[..., None]
     return o + r.on_radius * e
 
 
@@ -193,8 +193,9 @@ def geometry(sol: Solution, joints: list[Joint]) -> Geometry:
             points[j.point] = contact_point(sol, src)
             if j.kind == SLOT:  # gear teeth: first along the common tangent (solve.py tilts)
                 c = np.asarray(sol.position(src.center, src.link), dtype=float)
-                e = (c - points[j.point]) / float(np.hypot(*(c - points[j.point])))
-                normal[j.key] = np.array([-e[1], e[0]])
+                d = c - points[j.point]
+                e = d / np.hypot(d[..., 0], d[..., 1])[..., None]
+                normal[j.key] = perp(e)
             continue
         if src is None:
             continue
