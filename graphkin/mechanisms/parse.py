@@ -42,6 +42,11 @@ MAX_MAGNITUDE = 1e100
 MAX_RANGE = 1e9
 
 
+#: The longest title (characters): drawings and pages lay it out.
+MAX_TITLE = 1000
+#: The longest point name or link id (characters): labels are drawn on every figure.
+MAX_NAME = 64
+
 #: Characters the constructions use in their labels (graphkin.kinematics.posture and
 #: polygons): ``#`` construction points, ``:`` a path's points, ``@`` coincident points,
 #: ``(``/``)`` images and loci, ``>`` posture lines.  A point name cannot contain them.
@@ -199,6 +204,10 @@ class _Parser:
         title = data.get("title", "")
         if not isinstance(title, str):
             raise self.fail("title", "the title must be a string")
+        if len(title) > MAX_TITLE:
+            # every drawing and page lays the title out: 200 kB took 70 s and 3.5 GB
+            raise self.fail("title", f"the title has {len(title)} characters; at most "
+                            f"{MAX_TITLE} are drawn")
         self.units = read_units(data.get("units", {}), "units", self.source)
         self.unit = self.units.get("length", "mm")
         try:
@@ -212,6 +221,12 @@ class _Parser:
         self.links: dict[str, Link] = {}
         for lid, pts in links_raw.items():
             key = f"links.{lid}"
+            for what, name in (("link id", str(lid)), *(("point name", str(n)) for n in
+                                                          (pts if isinstance(pts, Mapping)
+                                                           else ()))):
+                if len(name) > MAX_NAME:
+                    raise self.fail(key if what == "link id" else f"{key}.{_short(name, 20)}",
+                                    f"a {what} of {len(name)} characters; at most {MAX_NAME}")
             pts = self.table(pts, key)
             for n in pts:
                 self.point_name(str(n), f"{key}.{n}")
