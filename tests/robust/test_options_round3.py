@@ -80,3 +80,34 @@ def test_plot_without_rates_names_the_file_and_the_option(what: str, tmp_path: P
     rc, out, err = run(["plot", str(f), "--what", what, "-o", str(tmp_path / "p.svg")])
     assert_clean(rc, out, err)
     assert rc == 2 and f"{f}: --what: " in err and "needs rates" in err, err
+
+
+def _q_line(path: Path) -> str:
+    rc, out, err = run(["sweep", str(path), "--count", "360", "--singular"])
+    assert rc == 0, err
+    lines = [ln for ln in err.splitlines() if "time ratio" in ln]
+    assert len(lines) == 1, err
+    return lines[0]
+
+
+def test_time_ratio_of_a_crank_rocker() -> None:
+    """Sec. 1.7: crank 100, coupler 250, rocker 300, frame 200 (Fig. 2.25).  The rocker's
+    limits are where crank and coupler are in line: extended, |AC| = 350 and
+    cos φe = (200² + 350² − 300²)/(2·200·350); folded, |AC| = 150, the crank opposite:
+    cos φf = (200² + 150² − 300²)/(2·200·150).  α = 180° + φf − φe, Q = α/(360° − α)."""
+    fe = math.degrees(math.acos((200**2 + 350**2 - 300**2) / (2 * 200 * 350)))
+    ff = math.degrees(math.acos((200**2 + 150**2 - 300**2) / (2 * 200 * 150)))
+    alpha = 180 + ff - fe
+    line = _q_line(ROOT / "graphkin" / "examples" / "data" / "crank_rocker.toml")
+    assert f"{alpha:.2f}°/{360 - alpha:.2f}° = {alpha / (360 - alpha):.3f}" in line, line
+
+
+def test_time_ratio_of_a_whitworth_quick_return() -> None:
+    """Crank 3 about O2, O4 1 above it; the ram is at its ends when link 4 lies along the
+    ram's line: O4A horizontal, 3 sin θ2 = 1, θ2 = asin(1/3) or 180° − asin(1/3).  The crank
+    turns 180° + 2 asin(1/3) for one stroke and 180° − 2 asin(1/3) for the other."""
+    a = math.degrees(math.asin(1 / 3))
+    alpha, beta = 180 + 2 * a, 180 - 2 * a
+    line = _q_line(ROOT / "tests" / "data" / "whitworth.toml")
+    assert "slider 6's strokes" in line and f"{alpha:.2f}°/{beta:.2f}°" in line, line
+    assert f"= {alpha / beta:.3f}" in line
