@@ -220,3 +220,25 @@ def table(rows: Sequence[Sequence[str]], indent: str = "") -> list[str]:
         return []
     widths = [max(len(r[i]) for r in rows if i < len(r)) for i in range(max(map(len, rows)))]
     return [(indent + "  ".join(c.ljust(w) for c, w in zip(r, widths))).rstrip() for r in rows]
+
+
+_SCRIPT_ESCAPES = {ord("<"): "\\u003c", ord(">"): "\\u003e", ord("&"): "\\u0026",
+                   0x2028: "\\u2028", 0x2029: "\\u2029"}
+
+
+def script_json(data: Any) -> str:
+    r"""JSON to put inside an HTML ``<script>`` element, whatever text it holds.
+
+    ``<``, ``>`` and ``&`` are written as ``\u003c``, ``\u003e``, ``\u0026`` (the
+    same string to ``JSON.parse``), so a title holding ``</script>`` or
+    ``<!--<script>`` can neither close the element nor put the parser in its
+    double-escaped state; U+2028 and U+2029 are escaped for old script parsers.
+
+    Examples
+    --------
+    >>> script_json({"title": "<!--<script>"})
+    '{"title":"\\u003c!--\\u003cscript\\u003e"}'
+    """
+    import json
+
+    return json.dumps(data, separators=(",", ":"), ensure_ascii=False).translate(_SCRIPT_ESCAPES)

@@ -483,7 +483,12 @@ def test_change_point_branches_meet_without_a_gap() -> None:
 @given(start=st.floats(-720, 720), span=st.floats(-400, 400), count=st.integers(1, 60))
 def test_random_ranges_never_write_nan(start: float, span: float, count: int) -> None:
     for mech in (_non_grashof(), _fourbar(10, 4, 12, 11, angle=120, hint=(9, 11))):
-        sw = sweep(mech, count=count, start=start, stop=start + span)
+        try:
+            sw = sweep(mech, count=count, start=start, stop=start + span)
+        except InputError as exc:
+            # postures the floats cannot tell apart are refused in one line (issue 25)
+            assert "too narrow" in str(exc) and abs(span) / count <= 1e-9 * 1440, exc
+            continue
         text = sw.csv_text().lower()
         assert "nan" not in text and "inf" not in text
         rows = list(csv.reader(io.StringIO(text)))

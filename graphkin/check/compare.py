@@ -47,7 +47,14 @@ class Comparison:
 
 
 def _pct(x: float) -> str:
+    """A relative error in percent; beyond a million percent, its order only.
+
+    >>> _pct(0.0123), _pct(4e306), _pct(-2e7)
+    ('+1.23 %', 'over +1e+06 %', 'over -1e+06 %')
+    """
     v = x * 100
+    if not abs(v) < 1e6:  # an answer of 1e308: no '+inf %'
+        return f"over {'-' if x < 0 else '+'}1e+06 %"
     return f"{v if abs(v) >= 0.005 else 0.0:+.2f} %"
 
 

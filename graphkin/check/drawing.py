@@ -235,7 +235,13 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         mm_per_unit = 25.4 if poly.unit == "in" else {"mm": 1.0, "cm": 10.0, "m": 1000.0,
                                                        "ft": 304.8}.get(poly.unit)
     if stated:
-        per, unit, factor = parse_scale(stated, kind, lu, poly.unit)
+        try:
+            per, unit, factor = parse_scale(stated, kind, lu, poly.unit)
+        except InputError as exc:
+            if scale:  # --scale
+                raise
+            # the scale noted in the drawing: the drawing's file
+            raise InputError(f"its noted scale: {exc.message}", file=path_s) from None
         how = f"scale {stated}, not turned"
         turn = complex(per, 0.0)
         if mm_per_unit is None:

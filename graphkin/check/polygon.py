@@ -19,6 +19,7 @@ import re
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -161,6 +162,11 @@ def _to_tips(long: np.ndarray, strokes: np.ndarray, size: float, eps: float) -> 
     if not len(strokes):
         return long
     marks = strokes.reshape(-1, 2)
+    # candidates from a grid of cells of the arrowhead's size: linear in the drawing
+    cell = _cell_size(np.concatenate([marks, long.reshape(-1, 2)]), 1.02 * max(size, eps))
+    grid: dict[tuple[int, int], list[int]] = {}
+    for i, q in enumerate(marks.tolist()):
+        grid.setdefault(_key(q, cell), []).append(i)
     for seg in long:
         for k in (0, 1):
             p, q = seg[k], seg[1 - k]
@@ -169,21 +175,82 @@ def _to_tips(long: np.ndarray, strokes: np.ndarray, size: float, eps: float) -> 
             if n == 0:
                 continue
             d = d / n
-            at_p = np.hypot(*(strokes - p).transpose(2, 0, 1)) <= eps       # (n, 2)
-            touching = np.any(at_p, axis=1)
-            if np.any(touching):
-                other = np.where(at_p[touching][:, :1], strokes[touching][:, 1],
-                                 strokes[touching][:, 0])
+            cand = np.array(sorted(_near(grid, p, cell)), dtype=int)
+            if not len(cand):
+                continue
+            near = marks[cand]
+            at = np.hypot(*(near - p).T) <= eps          # stroke ends at p
+            if np.any(at):
+                # the other end of each stroke that touches p
+                other = marks[cand[at] ^ 1]
                 if np.any((other - p) @ d < 0):
                     continue
-            rel = marks - p
+            rel = near - p
             along = rel @ d
             across = np.abs(rel[:, 0] * d[1] - rel[:, 1] * d[0])
             ok = (along > 0) & (along <= size) & (across <= 0.14 * along)
             if np.any(ok):
                 j = int(np.argmax(np.where(ok, along, -np.inf)))
-                seg[k] = marks[j]
+                seg[k] = near[j]
     return long
+
+
+def _cell_size(points: np.ndarray, eps: float) -> float:
+    """A grid cell of at least ``eps``, coarse enough that cell numbers stay whole numbers."""
+    far = float(np.max(np.abs(points))) if points.size else 0.0
+    return max(eps, far / 2.0**40, 1e-300)
+
+
+def _key(p: Any, cell: float) -> tuple[int, int]:
+    return int(math.floor(p[0] / cell)), int(math.floor(p[1] / cell))
+
+
+def _near(grid: dict[tuple[int, int], list[int]], p: Any, cell: float) -> list[int]:
+    """Indices in the 3 × 3 cells around ``p``: every point within a cell of it is there."""
+    a, b = _key(p, cell)
+    out: list[int] = []
+    for da in (-1, 0, 1):
+        for db in (-1, 0, 1):
+            out += grid.get((a + da, b + db), [])
+    return out
+
+
+def _any_within(points: np.ndarray, others: np.ndarray, eps: float) -> np.ndarray:
+    """For each point, whether some point of ``others`` lies within ``eps`` (linear time)."""
+    cell = _cell_size(np.concatenate([points, others]), eps)
+    grid: dict[tuple[int, int], list[int]] = {}
+    for i, q in enumerate(others.tolist()):
+        grid.setdefault(_key(q, cell), []).append(i)
+    out = np.zeros(len(points), dtype=bool)
+    for i, p in enumerate(points.tolist()):
+        cand = _near(grid, p, cell)
+        if cand:
+            d = np.hypot(*(others[cand] - p).T)
+            out[i] = bool(np.any(d <= eps))
+    return out
+
+
+def _cluster(ends: np.ndarray, eps: float) -> tuple[list[np.ndarray], np.ndarray]:
+    """Ends closer than ``eps`` to a vertex are that vertex (the first such, in order).
+
+    A grid of cells of side ``eps`` finds the candidates, so a drawing of
+    thousands of chained lines is read in linear time (it took a minute
+    comparing every end with every vertex).
+    """
+    cell = _cell_size(ends, eps)
+    verts: list[np.ndarray] = []
+    grid: dict[tuple[int, int], list[int]] = {}
+    index = np.empty(len(ends), dtype=int)
+    for i, e in enumerate(ends):
+        for j in sorted(_near(grid, e, cell)):
+            if float(np.hypot(*(e - verts[j]))) <= eps:
+                index[i] = j
+                break
+        else:
+            index[i] = len(verts)
+            grid.setdefault(_key(e, cell), []).append(len(verts))
+            verts.append(e)
+    return verts, index
 
 
 def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
@@ -218,18 +285,8 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
     original = arr[~short].reshape(-1, 2)
     tip |= np.any(ends != original, axis=1)
     if len(marks):
-        near = np.hypot(*(ends[:, None, :] - marks[None, :, :]).transpose(2, 0, 1))
-        tip |= np.any(near <= eps, axis=1)
-    verts: list[np.ndarray] = []
-    index = np.empty(len(ends), dtype=int)
-    for i, e in enumerate(ends):
-        for j, v in enumerate(verts):
-            if float(np.hypot(*(e - v))) <= eps:
-                index[i] = j
-                break
-        else:
-            index[i] = len(verts)
-            verts.append(e)
+        tip |= _any_within(ends, marks, eps)
+    verts, index = _cluster(ends, eps)
     parent = list(range(len(verts)))
 
     def find(i: int) -> int:

@@ -27,6 +27,9 @@ from graphkin.io.dxf import DrawingData
 
 #: deepest nesting of SVG groups read
 MAX_DEPTH = 200
+#: The most elements read from one drawing (a polygon drawing has a few dozen): the check's
+#: work grows with them, so a larger file is refused before it starts.
+MAX_ELEMENTS = 50_000
 #: mm per unit of an SVG length
 _SVG_UNITS = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72.0, "pc": 25.4 / 6.0,
               "px": 25.4 / 96.0, "": 25.4 / 96.0}
@@ -175,8 +178,13 @@ def _walk(el: ET.Element, path: Path, parent: np.ndarray, depth: int = 0):  # ty
     Iterative and depth-bounded (a hostile file nests groups thousands deep).
     """
     stack: list[tuple[ET.Element, np.ndarray, int]] = [(el, parent, depth)]
+    seen = 0
     while stack:
         el, mat, depth = stack.pop()
+        seen += 1
+        if seen > MAX_ELEMENTS:
+            raise InputError(f"the drawing has more than {MAX_ELEMENTS} elements (a polygon "
+                             "drawing has a few dozen)", file=str(path))
         if depth > MAX_DEPTH:
             raise InputError(f"not a readable SVG file: elements nested more than {MAX_DEPTH} "
                              "deep", file=str(path))

@@ -83,7 +83,13 @@ def read_scale(text: str, length_unit: str, *, key: str = "tolerance.scale",
             continue
         if not (paper > 0 and value > 0):
             raise InputError("both sides of the scale must be positive", key=key, file=file)
-        return SheetScale(kind, value / paper, text.strip())
+        per = value / paper
+        if not 1e-100 <= per <= 1e100:
+            # lengths on paper times the scale must stay finite (no 'inf in/s')
+            raise InputError(f"the scale {text.strip()!r} is out of range: one millimetre of "
+                             "paper may stand for 1e-100 to 1e100 of the quantity", key=key,
+                             file=file)
+        return SheetScale(kind, per, text.strip())
     raise InputError(f"the right side of the scale, {right!r}, is not a "
                      f"{' or '.join(kinds)}", key=key, file=file)
 

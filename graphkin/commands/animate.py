@@ -55,6 +55,15 @@ def run(args: argparse.Namespace) -> int:
     if args.output is None and args.frames is None and args.gif is None:
         raise InputError("nothing to write: give -o OUT.html, --frames DIR and/or --gif FILE",
                          key="--output")
+    from graphkin.files import check_output
+
+    if args.output is not None:
+        check_output(args.output, [args.file], "--output")
+    if args.gif is not None:
+        if not str(args.gif).lower().endswith(".gif"):
+            raise InputError(f"the animated picture is a .gif file, not {args.gif!r}",
+                             key="--gif")
+        check_output(args.gif, [args.file], "--gif")
     mech = graphkin.load(args.file)
     # one step per thing written (the page, the frames, the GIF); drawn on a terminal only
     jobs = sum(x is not None for x in (args.output, args.frames, args.gif))
@@ -71,7 +80,8 @@ def run(args: argparse.Namespace) -> int:
             if args.frames is not None:
                 with writing(f"into {args.frames}", "--frames"):
                     paths = write_cycle_frames(mech, args.frames, count=args.count,
-                                               start=args.start, stop=args.stop)
+                                               start=args.start, stop=args.stop,
+                                               keep=[args.file])
                 print(f"wrote {len(paths)} frames into {args.frames}", file=sys.stderr)
                 progress.update(1)
             if args.gif is not None:

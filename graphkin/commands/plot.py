@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from typing import Any
 
 from graphkin.commands._args import MAX_COUNT, bounded_int, command, finite_float
 
@@ -49,8 +50,12 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.render.plots import parse_what, save_figure, sweep_figure
 
     check_output(args.output, [args.file], "--output")
-    items = parse_what(args.what)
+    try:
+        items = parse_what(args.what)
+    except InputError as exc:
+        raise InputError(exc.message, key="--what", file=args.file) from None
     mech = graphkin.load(args.file)
+    _check_items(mech, items)
     if args.count < 2:
         raise InputError(f"--count must be at least 2 to draw a curve, not {args.count}",
                          key="count", file=args.file)
@@ -59,7 +64,10 @@ def run(args: argparse.Namespace) -> int:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=any(i == "transmission" for i, _ in items))
         b.update(1)
-        fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])
+        try:
+            fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])
+        except InputError as exc:  # an item this sweep cannot draw: the file and the option
+            raise InputError(exc.message, key="--what", file=exc.file or args.file) from None
         b.update(1)
         try:
             save_figure(fig, args.output)
@@ -69,3 +77,40 @@ def run(args: argparse.Namespace) -> int:
     for line in sw.report():
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
     return 0
+
+
+def _check_items(mech: Any, items: list[tuple[str, str | None]]) -> None:
+    """Every ``--what`` item and its suffix checked against the file before the sweep.
+
+    A suffix an item does not take (``torque:99``, ``transmission:Q``) is refused, not
+    ignored; an item that needs rates or loads the file lacks names the file and the option.
+    """
+    from graphkin.errors import InputError
+
+    def fail(message: str) -> InputError:
+        return InputError(message, key="--what", file=mech.source)
+
+    driven = [d.link for d in mech.drives]
+    for item, which in items:
+        name = f"{item}:{which}" if which else item
+        if item in ("omega", "alpha", "velocity", "acceleration") and not mech.has_rates:
+            raise fail(f"{name} needs rates, and the file gives none (add omega or velocity "
+                       "to [drive])")
+        if item in ("angle", "omega", "alpha") and which is not None \
+                and which not in mech.links:
+            raise fail(f"no link {which!r} for {item}; the links are {', '.join(mech.links)}")
+        if item in ("velocity", "acceleration", "path") and which not in mech.point_links:
+            raise fail(f"no point {which!r} for {item}; the points are "
+                       f"{', '.join(mech.point_names)}")
+        if item == "centrode" and which not in mech.moving:
+            raise fail(f"no moving link {which!r} for a centrode; the moving links are "
+                       f"{', '.join(mech.moving)}")
+        if item == "torque":
+            if not mech.has_forces:
+                raise fail("torque needs forces: the file has no [[loads]] and no [inertia.N]")
+            if which is not None and which not in driven:
+                raise fail(f"torque:{which}: link {which!r} is not driven; the driven links "
+                           f"are {', '.join(driven)} (or give torque alone)")
+        if item == "transmission" and which is not None:
+            raise fail(f"transmission takes no suffix ({name!r}): it plots the angle at every "
+                       "pin found by two arcs")

@@ -519,15 +519,18 @@ def generate(steps: Sequence[Step], *, varying: Sequence[str],
         outs.append(_request(gen, v, lab, part))
     ret = f"return ({', '.join(outs)},)"
     body = "\n".join(_release(gen.lines, ret))
-    src = f"def {_ident(name)}({', '.join(params)}):\n{body}\n    {ret}\n"
+    # the function's name and its file name are graphkin's own: no text of the user's (a
+    # title, a point's name) is ever written into the source (issue 25)
+    fname = _ident(name)
+    src = f"def {fname}({', '.join(params)}):\n{body}\n    {ret}\n"
     code = _CODE.get(src)
     if code is None:
         if len(_CODE) >= 64:
             _CODE.clear()
-        code = _CODE[src] = compile(src, f"<graphkin: {name}>", "exec")
+        code = _CODE[src] = compile(src, f"<graphkin: {fname}>", "exec")
     ns = gen.ns
     exec(code, ns)
-    fn = ns[_ident(name)]
+    fn = ns[fname]
     return Generated(fn, tuple(varying), requests, tuple(constant), src)
 
 
@@ -581,8 +584,13 @@ def _request(gen: Gen, v: _Val, lab: str, part: str) -> str:
 
 
 def _ident(name: str) -> str:
-    s = "".join(ch if ch.isalnum() else "_" for ch in name)
-    return s if s[:1].isalpha() else f"f_{s}"
+    """An ASCII identifier from ``name`` (letters, digits and ``_`` only; never a keyword).
+
+    ``str.isalnum`` is not enough: ``²`` and ``½`` are alphanumeric but not valid in
+    an identifier, and a ligature is rewritten by the parser (NFKC).
+    """
+    s = "".join(ch if (ch.isascii() and ch.isalnum()) else "_" for ch in name)[:40]
+    return f"_gk_{s}"
 
 
 def _fold(gen: Gen, step: Step, args: list[Any]) -> None:

@@ -145,6 +145,11 @@ def solve_matrix(sol: Solution, joints: list[Joint], geo: Geometry, dynamic: boo
     s = mech.scale
     a[2::3] /= s
     b[2::3] /= s
+    if not (np.isfinite(a).all() and np.isfinite(b).all()):
+        # loads or rates beyond the floats' range (a load of 1e300 with friction)
+        raise InputError("the force equations overflow at this posture (loads, masses or "
+                         "rates too large for the mechanism's size)", key="loads",
+                         file=mech.source)
     cond = np.linalg.cond(a)
     if not np.isfinite(cond) or cond > 1e12:
         raise InputError("equilibrium cannot be held at this posture (the drive is at a "

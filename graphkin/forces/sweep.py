@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.errors import InputError
+from graphkin.forces.batch import tilt_many
 from graphkin.forces.joints import geometry, joints_of
 from graphkin.forces.solve import solve_forces
 
@@ -40,7 +41,7 @@ def force_columns(sw: Any, joints: bool = False) -> dict[str, np.ndarray]:
     -------
     dict
         Column name -> array of length N (NaN where the posture does not assemble
-        or cannot be held).
+        or cannot be held: a dead center for these loads, a self-locking posture).
 
     Raises
     ------
@@ -60,6 +61,10 @@ def force_columns(sw: Any, joints: bool = False) -> dict[str, np.ndarray]:
     jts = joints_of(mech)
     geo = geometry(sol, jts)
     n = len(sw)
+    # the rough joints' and gear teeth's lines of action lean as at one posture (solve does
+    # it there): their senses are found at every posture by the stacked matrix method
+    rough_ok = tilt_many(sol, jts, geo, fs.dynamic, n) if (mech.friction or mech.pressure) \
+        else np.ones(n, dtype=bool)
     given: dict[str, np.ndarray] = {}
     for name, xy in geo.points.items():
         xy = np.broadcast_to(np.asarray(xy, dtype=float), (n, 2))
@@ -74,7 +79,7 @@ def force_columns(sw: Any, joints: bool = False) -> dict[str, np.ndarray]:
                 np.asarray(sol.acceleration(inr.center, lid), dtype=float), (n, 2))
             given[f"α{lid}"] = np.broadcast_to(np.asarray(sol.alpha(lid), dtype=float), (n,))
     ev = fs.built.construction.replay(given, strict=False)
-    ok = np.asarray(ev.valid, dtype=bool) & np.asarray(sw.assembled, dtype=bool)
+    ok = np.asarray(ev.valid, dtype=bool) & np.asarray(sw.assembled, dtype=bool) & rough_ok
     out: dict[str, np.ndarray] = {}
     for d in mech.drives:
         label = fs.built.drives[d.link]

@@ -329,6 +329,10 @@ def read_dxf(path: str | Path) -> DrawingData:
         data.unit = _UNIT_OF_CODE.get(int(doc.header.get("$INSUNITS", 0) or 0))
         if doc.header.custom_vars.has_tag("graphkin_scale"):
             data.scale = doc.header.custom_vars.get("graphkin_scale")
+        total = _expanded_count(doc)
+        if total > MAX_ENTITIES:
+            raise InputError(f"the drawing places more than {MAX_ENTITIES} entities through "
+                             "its blocks (a polygon drawing has a few dozen)", file=str(path))
         count = [0]
         for e in doc.modelspace():
             _read_entity(e, data, 0, count)
@@ -345,8 +349,36 @@ def read_dxf(path: str | Path) -> DrawingData:
 
 
 #: most entities read from one drawing (blocks included), and deepest block nesting
-MAX_ENTITIES = 1_000_000
+MAX_ENTITIES = 100_000
 MAX_BLOCK_DEPTH = 16
+
+
+def _expanded_count(doc: Any) -> int:
+    """The entities the model space places, its blocks expanded, counted before reading.
+
+    Each block's count is found once (memoized by block and depth), so a small
+    file of nested blocks that expands to millions of entities is refused in
+    time linear in its size (it ran half a minute before the limit was met).
+    """
+    memo: dict[tuple[str, int], int] = {}
+
+    def count(entities: Any, depth: int) -> int:
+        n = 0
+        for e in entities:
+            n += 1
+            if e.dxftype() == "INSERT" and depth < MAX_BLOCK_DEPTH:
+                name = str(e.dxf.name)
+                key = (name, depth + 1)
+                if key not in memo:
+                    memo[key] = 0  # a block that inserts itself counts once per depth
+                    block = doc.blocks.get(name)
+                    memo[key] = count(block, depth + 1) if block is not None else 0
+                n += memo[key]
+            if n > MAX_ENTITIES:
+                return n
+        return n
+
+    return count(doc.modelspace(), 0)
 
 
 def _mtext_plain(raw: str) -> str:
@@ -362,7 +394,8 @@ def _mtext_plain(raw: str) -> str:
 def _read_entity(e: Any, data: DrawingData, depth: int, count: list[int]) -> None:
     count[0] += 1
     if count[0] > MAX_ENTITIES:
-        raise InputError(f"the drawing has more than {MAX_ENTITIES} entities")
+        raise InputError(f"the drawing has more than {MAX_ENTITIES} entities (a polygon "
+                         "drawing has a few dozen)")
     t = e.dxftype()
     if t == "LINE":
         s, f = e.dxf.start, e.dxf.end

@@ -179,12 +179,37 @@ class Solution:
     def velocity(self, name: str, link: str | None = None) -> np.ndarray:
         """Absolute velocity of named point ``name`` (of ``link``)."""
         lid = link or self.owner(name)
-        return self.links[lid].velocity(self.mechanism.links[lid].points[name])
+        try:
+            return self.links[lid].velocity(self.mechanism.links[lid].points[name])
+        except ValueError:
+            raise self._no_rates("velocities") from None
 
     def acceleration(self, name: str, link: str | None = None) -> np.ndarray:
         """Absolute acceleration of named point ``name`` (of ``link``)."""
         lid = link or self.owner(name)
-        return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
+        try:
+            return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
+        except ValueError:
+            raise self._no_rates("accelerations") from None
+
+    def _no_rates(self, what: str) -> ValueError:
+        """Why the rates are unknown: the file gives none, or this posture is a dead point.
+
+        At a toggle or dead-center posture (Sec. 3.5) the file's rates cannot
+        be carried through: that is said, not "the file gives no rates".
+        """
+        from graphkin.errors import InputError
+
+        mech = self.mechanism
+        if not mech.has_rates:
+            return InputError(f"{what} are not known (the file gives no rates)", key="drive",
+                              file=mech.source)
+        why = next((n for n in self.notes if n.startswith("toggle or dead-center")), None)
+        if why is not None:
+            return InputError(f"{what} are not known at this posture: it is a {why}",
+                              key="drive", file=mech.source)
+        return InputError(f"{what} are not known at this posture (the rates could not be "
+                          "found here)", key="drive", file=mech.source)
 
     def _repr_svg_(self) -> str | None:
         """Jupyter: the solved mechanism drawn inline (matplotlib is imported only here)."""
@@ -227,12 +252,12 @@ class Solution:
         """ω of ``link`` (rad/s, counterclockwise positive)."""
         w = self._link(link).omega
         if w is None:
-            raise ValueError("velocities are not known (the file gives no rates)")
+            raise self._no_rates("velocities")
         return w
 
     def alpha(self, link: str | int) -> np.ndarray:
         """α of ``link`` (rad/s², counterclockwise positive)."""
         a = self._link(link).alpha
         if a is None:
-            raise ValueError("accelerations are not known (the file gives no rates)")
+            raise self._no_rates("accelerations")
         return a

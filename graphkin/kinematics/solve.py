@@ -8,6 +8,7 @@ polygons), 4.2-4.6 (acceleration polygons), 5.4 (several inputs).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -121,9 +122,14 @@ def rate_inputs(mech: Mechanism, pol: Polygons, pc: PostureConstruction,
     vin[w] = target.rate / k
     ev = pol.velocity.evaluate(vin, values=dict(values))
     a0 = measure(ev.values, pol.acceleration.evaluate({a: 0.0}, values=ev.values).values, "a")
-    a1 = measure(ev.values, pol.acceleration.evaluate({a: 1.0}, values=ev.values).values, "a")
     want = 0.0 if target.rate2 is None else target.rate2
-    ain[a] = (want - a0) / (a1 - a0)
+    # the target's acceleration is k times the input's plus the terms in ω² (Eqs. 4.5-4.7):
+    # its coefficient is the velocity ratio k itself, exactly; a difference of two
+    # evaluations would lose it in the ω² terms' round-off (ω = 1e8: a division by zero)
+    ain[a] = (want - a0) / k
+    if not (math.isfinite(vin[w]) and math.isfinite(ain[a])):
+        raise InputError("the rates are too large for this mechanism: its accelerations "
+                         "overflow", key="rates", file=mech.source)
     return vin, ain
 
 

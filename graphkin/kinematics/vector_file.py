@@ -98,6 +98,8 @@ def loads(text: str, source: str = "<vector file>") -> VectorFile:
     title = data.get("title", "")
     if not isinstance(title, str):
         raise fail("title", f"expected a string, not {title!r}")
+    if len(title) > 1000:  # as a mechanism's title (graphkin.mechanisms.parse.MAX_TITLE)
+        raise fail("title", f"the title has {len(title)} characters; at most 1000 are drawn")
     units = None
     if "units" in data:
         units = read_units(data["units"], "units", source, VECTOR["units"]).get("length")

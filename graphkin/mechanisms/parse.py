@@ -42,6 +42,11 @@ MAX_MAGNITUDE = 1e100
 MAX_RANGE = 1e9
 
 
+#: The longest title (characters): drawings and pages lay it out.
+MAX_TITLE = 1000
+#: The longest point name or link id (characters): labels are drawn on every figure.
+MAX_NAME = 64
+
 #: Characters the constructions use in their labels (graphkin.kinematics.posture and
 #: polygons): ``#`` construction points, ``:`` a path's points, ``@`` coincident points,
 #: ``(``/``)`` images and loci, ``>`` posture lines.  A point name cannot contain them.
@@ -125,6 +130,20 @@ class _Parser:
             raise self.fail(key, f"a point name cannot contain {' or '.join(map(repr, bad))} "
                             "(the constructions use it in their own labels)")
 
+    def not_a_label(self, name: str, key: str) -> None:
+        """Refuse a point name spelt like a label the constructions make of their own.
+
+        The constructions name their values in the book's notation, from link
+        ids and point names: ``θ3``, ``ω3``, ``α3``, ``s4`` (a slider's travel),
+        ``I13`` (an instant center), ``F_43``, ``P_4``, ``T_12``, ``n_1-4`` (the
+        force analysis), ``V_B``, ``A_B``, ``k_B`` (polygons and loci).  A point
+        so named would be read for that value (a torque of 1.00 lbf·in instead
+        of 184.98): it is refused here, in one line (issue 25).
+        """
+        why = label_like(name, self.links)
+        if why:
+            raise self.fail(key, f"a point cannot be named {_short(name)!r}: {why} (rename it)")
+
     def table(self, value: Any, key: str) -> Mapping[str, Any]:
         if not isinstance(value, Mapping):
             raise self.fail(key, f"expected a table, not {value!r}")
@@ -185,6 +204,10 @@ class _Parser:
         title = data.get("title", "")
         if not isinstance(title, str):
             raise self.fail("title", "the title must be a string")
+        if len(title) > MAX_TITLE:
+            # every drawing and page lays the title out: 200 kB took 70 s and 3.5 GB
+            raise self.fail("title", f"the title has {len(title)} characters; at most "
+                            f"{MAX_TITLE} are drawn")
         self.units = read_units(data.get("units", {}), "units", self.source)
         self.unit = self.units.get("length", "mm")
         try:
@@ -198,6 +221,12 @@ class _Parser:
         self.links: dict[str, Link] = {}
         for lid, pts in links_raw.items():
             key = f"links.{lid}"
+            for what, name in (("link id", str(lid)), *(("point name", str(n)) for n in
+                                                          (pts if isinstance(pts, Mapping)
+                                                           else ()))):
+                if len(name) > MAX_NAME:
+                    raise self.fail(key if what == "link id" else f"{key}.{_short(name, 20)}",
+                                    f"a {what} of {len(name)} characters; at most {MAX_NAME}")
             pts = self.table(pts, key)
             for n in pts:
                 self.point_name(str(n), f"{key}.{n}")
@@ -205,6 +234,9 @@ class _Parser:
             self.links[str(lid)] = Link(str(lid), points)
         if FRAME not in self.links:
             raise self.fail("links", "link 1 (the frame) is missing")
+        for lid, lk in self.links.items():
+            for n in lk.points:
+                self.not_a_label(n, f"links.{lid}.{n}")
         if len(self.links) < 2:
             raise self.fail("links", "a mechanism needs at least one moving link")
 
@@ -274,7 +306,13 @@ class _Parser:
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")
+        rolling_links = {r.link for r in mech.rolling}
         for d in mech.drives:
+            if d.kind == "relative" and {d.link, d.relative_to} & rolling_links:
+                lid = d.link if d.link in rolling_links else str(d.relative_to)
+                raise self.fail(f"{d.key}.relative_to", f"link {lid} rolls (rolling[...]): an "
+                                "angle relative to a rolling link is not supported yet (drive "
+                                "the arm or the wheel's carrier by its angle)")
             if mech.has_forces and d.kind in ("relative", "x", "y"):
                 what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
                 raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
@@ -643,6 +681,48 @@ class _Parser:
             if not link.points and not slid:
                 raise self.fail(f"links.{lid}", "a moving link needs at least one point")
 
+
+
+#: Prefixes of the labels the constructions make from a point name or a link id, followed
+#: by ``_``: forces and their lines (``F_43``, ``P_4``, ``T_12``, ``M_4``, ``W_4``, ``R_4``,
+#: ``l_3``, ``q_4``, ``X_4``, ``n_1-4``, ``u_1-4``), velocities and accelerations (``V_B``,
+#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), and the Greek symbols.
+LABEL_PREFIXES = ("F", "P", "T", "M", "W", "R", "l", "q", "X", "n", "u", "V", "A", "k", "J",
+                  "Q", "θ", "ω", "α")
+#: Symbols the constructions put before a link id: ``θ3``, ``ω3``, ``α3``, ``s4``, ``ds4``,
+#: ``dds4`` (a slider's travel and its rates).
+LINK_SYMBOLS = ("θ", "ω", "α", "dds", "ds", "s")
+
+
+def label_like(name: str, links: Mapping[str, Any]) -> str:
+    """Why ``name`` could be taken for a construction's label ("" when it cannot).
+
+    Examples
+    --------
+    >>> links = {"1": None, "2": None, "3": None, "4": None}
+    >>> label_like("F_43", links)
+    "it is written like a label of graphkin's constructions (F_…)"
+    >>> label_like("ω3", links)
+    "it is written like a link's symbol (ω3)"
+    >>> label_like("I13", links)
+    'it is written like an instant center (I13)'
+    >>> label_like("a_b_c", links), label_like("O2", links), label_like("Q", links)
+    ('', '', '')
+    """
+    head, sep, _ = name.partition("_")
+    if sep and head in LABEL_PREFIXES:
+        return f"it is written like a label of graphkin's constructions ({head}_…)"
+    if name[:1] in ("θ", "ω", "α"):
+        return f"it is written like a link's symbol ({name})"
+    for sym in LINK_SYMBOLS:
+        if name.startswith(sym) and name[len(sym):] in links:
+            return f"it is written like a link's symbol ({name})"
+    if name.startswith("I"):
+        rest = name[1:]
+        ids = [lid for lid in links if rest.startswith(lid)]
+        if any(rest[len(a):].lstrip("-") in links for a in ids):
+            return f"it is written like an instant center ({name})"
+    return ""
 
 
 def _lonely_points(mech: Mechanism) -> str:

@@ -28,12 +28,12 @@ Sec. 4.4 (acceleration polygons), Sec. 3.13 (instant centers), Sec. 4.15
 from __future__ import annotations
 
 import html
-import json
 from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.render.cycle_data import QUANTUM, cycle_data
+from graphkin.text import script_json
 
 __all__ = ["cycle_data", "animate_html", "QUANTUM"]
 
@@ -74,6 +74,11 @@ figure svg { width: 100%; height: auto; max-height: calc(100vh - 150px); }
 _JS = r"""
 (function () {
   var D = JSON.parse(document.getElementById('cycle-data').textContent);
+  function esc(s) {  // text of the file's (names, units) as HTML text
+    return String(s).replace(/[&<>"']/g, function (c) {
+      return {'&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;'}[c];
+    });
+  }
   var NS = 'http://www.w3.org/2000/svg';
   var errors = [];
   window.addEventListener('error', function (e) { errors.push(String(e.message)); });
@@ -321,23 +326,25 @@ _JS = r"""
     if (D.rates) {
       Object.keys(D.omega).forEach(function (k) {
         var w = val(D.omega[k], 1e-6, i), a = val(D.alpha[k], 1e-5, i);
-        out.push('<tr><td>ω' + k + '</td><td class="v">' + fmt(w) + '</td><td>rad/s</td></tr>');
-        out.push('<tr><td>α' + k + '</td><td class="v">' + fmt(a) + '</td><td>rad/s²</td></tr>');
+        out.push('<tr><td>ω' + esc(k) + '</td><td class="v">' + fmt(w) +
+                 '</td><td>rad/s</td></tr>');
+        out.push('<tr><td>α' + esc(k) + '</td><td class="v">' + fmt(a) +
+                 '</td><td>rad/s²</td></tr>');
       });
       var p = choose.value;
       if (p && D.points[p]) {
         var vv = img(p, i, 'velocity'), aa = img(p, i, 'acceleration');
         var vm = Math.sqrt(vv[0] * vv[0] + vv[1] * vv[1]);
         var am = Math.sqrt(aa[0] * aa[0] + aa[1] * aa[1]);
-        out.push('<tr><td>V<sub>' + p + '</sub></td><td class="v">' + fmt(vm) + '</td><td>' +
-                 D.unit + '/s ' + (vm > 0 ? angle(vv) : '') + '</td></tr>');
-        out.push('<tr><td>A<sub>' + p + '</sub></td><td class="v">' + fmt(am) + '</td><td>' +
-                 D.unit + '/s² ' + (am > 0 ? angle(aa) : '') + '</td></tr>');
+        out.push('<tr><td>V<sub>' + esc(p) + '</sub></td><td class="v">' + fmt(vm) + '</td><td>' +
+                 esc(D.unit) + '/s ' + (vm > 0 ? angle(vv) : '') + '</td></tr>');
+        out.push('<tr><td>A<sub>' + esc(p) + '</sub></td><td class="v">' + fmt(am) + '</td><td>' +
+                 esc(D.unit) + '/s² ' + (am > 0 ? angle(aa) : '') + '</td></tr>');
       }
     }
     var xy = choose.value ? P(choose.value, i) : [NaN, NaN];
-    out.push('<tr><td>' + (choose.value || '') + '</td><td class="v">(' + fmt(xy[0]) + ', ' +
-             fmt(xy[1]) + ')</td><td>' + D.unit + '</td></tr>');
+    out.push('<tr><td>' + esc(choose.value || '') + '</td><td class="v">(' + fmt(xy[0]) + ', ' +
+             fmt(xy[1]) + ')</td><td>' + esc(D.unit) + '</td></tr>');
     document.getElementById('value-rows').innerHTML = out.join('');
   }
   function show(i) {
@@ -454,7 +461,7 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
     data = cycle_data(mech, count=count, start=start, stop=stop, centers=centers,
                       inflection=inflection)
     title = html.escape(data["title"])
-    blob = json.dumps(data, separators=(",", ":"), ensure_ascii=False).replace("</", "<\\/")
+    blob = script_json(data)
     options = "".join(f'<option value="{html.escape(p)}">{html.escape(p)}</option>'
                       for p in _default_order(mech, data))
     toggles = ""

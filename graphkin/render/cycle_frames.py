@@ -12,6 +12,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4, 4.4.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -107,7 +108,7 @@ class _Drawer:
 
 def write_cycle_frames(mech: Mechanism, directory: str | Path, *, count: int = 360,
                        start: float | None = None, stop: float | None = None,
-                       fmt: str = "svg") -> list[Path]:
+                       fmt: str = "svg", keep: Sequence[str | Path] = ()) -> list[Path]:
     """Write one picture per posture of the cycle (``cycle-000.svg``, ...).
 
     Parameters
@@ -119,6 +120,9 @@ def write_cycle_frames(mech: Mechanism, directory: str | Path, *, count: int = 3
         The drive range, as for ``graphkin sweep``.
     fmt : str
         ``svg`` or ``png``.
+    keep : sequence of path
+        Files that must not be overwritten (the command's inputs): refused
+        before any frame is written.
 
     Returns
     -------
@@ -127,22 +131,24 @@ def write_cycle_frames(mech: Mechanism, directory: str | Path, *, count: int = 3
     Raises
     ------
     InputError
-        An unknown format.
+        An unknown format, or a frame would overwrite a file of ``keep``.
     """
+    from graphkin.files import check_output
+
     if fmt not in ("svg", "png"):
         raise InputError(f"frames are svg or png, not {fmt!r}", key="--frames")
     data = cycle_data(mech, count=count, start=start, stop=stop)
     out = Path(directory)
-    out.mkdir(parents=True, exist_ok=True)
     width = max(3, len(str(data["n"] - 1)))
-    paths = []
+    paths = [out / f"cycle-{i:0{width}d}.{fmt}" for i in range(data["n"])]
+    for p in paths:  # nothing the user gave may be lost: checked before any is written
+        check_output(p, list(keep), "--frames")
+    out.mkdir(parents=True, exist_ok=True)
     with rc_context():  # real text in the SVG, deterministic ids
         drawer = _Drawer(data)
-        for i in range(data["n"]):
-            p = out / f"cycle-{i:0{width}d}.{fmt}"
+        for i, p in enumerate(paths):
             drawer.draw(i).savefig(p, format=fmt,
                                    metadata={"Date": None} if fmt == "svg" else None)
-            paths.append(p)
     return paths
 
 

@@ -39,9 +39,43 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
 
     ``start + (stop - start) k / count``, ``k = 0 .. count - 1``.
     """
+    for name, v in (("start", start), ("stop", stop)):
+        if v is not None and not (isinstance(v, (int, float)) and math.isfinite(v)):
+            raise InputError(f"the drive range must be finite numbers, not {name} = {v!r}",
+                             key=f"--{'from' if name == 'start' else 'to'}",
+                             file=eng.mech.source)
     a, b, cyclic = _drive_range(eng, start, stop)
-    user = a + (b - a) * (np.arange(count, dtype=float) / count)
+    _resolvable(eng, a, b, count)
+    # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
+    # 48.00000000000001
+    user = a + ((b - a) * np.arange(count, dtype=float)) / count
     return user, (np.radians(user) if eng.drive.is_angle else user), cyclic
+
+
+#: The largest drive value a sweep takes: degrees, or a travel in sizes of the mechanism.
+MAX_DRIVE = 1e9
+
+
+def _resolvable(eng: _Engine, a: float, b: float, count: int) -> None:
+    """Refuse a range whose postures the floats cannot tell apart (``--from 1e17``).
+
+    Near 1e17 the spacing of floats is 16, so steps of a degree land on the
+    same or wrong values; the drive values must stay within :data:`MAX_DRIVE`
+    (degrees, or sizes of the mechanism for a slider) and each step must be
+    far above the rounding of the values.
+    """
+    d = eng.drive
+    unit = 1.0 if d.is_angle else eng.mech.scale
+    what = "degrees" if d.is_angle else f"{eng.mech.length_unit} of travel"
+    far = max(abs(a), abs(b))
+    if far > MAX_DRIVE * unit:
+        key = "--from" if abs(a) > MAX_DRIVE * unit else "--to"
+        raise InputError(f"a drive value of {far:g} {what} is beyond the ±{MAX_DRIVE * unit:g} "
+                         "a sweep takes", key=key, file=eng.mech.source)
+    if count > 1 and abs(b - a) / count <= 1e-9 * max(far, unit * 1e-6):
+        raise InputError(f"the range {a:g} to {b:g} is too narrow for {count} postures (steps "
+                         f"of {abs(b - a) / count:.3g} {what})", key="--to",
+                         file=eng.mech.source)
 
 
 def _drive_range(eng: _Engine, start: float | None, stop: float | None) -> tuple[float, float,

@@ -86,7 +86,7 @@ def _build(eng: _Engine) -> _Fast | None:
     cx = eng.combined if eng.combined is not None else eng.pc.construction  # type: ignore[union-attr]
     try:
         gen = generate(cx.steps, varying=[eng.label], constants=_constants(eng),
-                       requests=requests, tol=eng.tol, name=f"sweep_{cx.title or 'mechanism'}")
+                       requests=requests, tol=eng.tol, name="sweep")
     except Unsupported:
         return None
     return _Fast(gen, layout)

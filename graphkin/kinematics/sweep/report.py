@@ -21,7 +21,7 @@ import numpy as np
 from graphkin.kinematics.solution import Solution
 from graphkin.kinematics.sweep.columns import _concat_solutions, _solution_of_block
 from graphkin.kinematics.sweep.engine import _Block, _Engine
-from graphkin.kinematics.sweep.singular import SingularPosture, _singular
+from graphkin.kinematics.sweep.singular import SingularPosture, _singular, time_ratios
 from graphkin.mechanisms.model import Drive, Mechanism
 
 Array = np.ndarray
@@ -146,6 +146,8 @@ class Sweep:
                 out.append(s.note)
             elif s.change_point:
                 out.append(s.note)
+        if events:
+            out += time_ratios(self)
         return out
 
     def to_csv(self, file: str | IO[str], *, columns: dict[str, Array] | None = None,

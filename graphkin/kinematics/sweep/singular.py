@@ -454,3 +454,47 @@ def _travel_ends(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
                     f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
                     "(an end of the travel over which it assembles)"))
     return out
+
+
+def time_ratios(sw: Sweep) -> list[str]:
+    """The time ratio of each output that swings between two limit positions (Sec. 1.7).
+
+    Over one whole turn of a crank turning at constant speed, a link (or a
+    slider) with exactly two limit positions, at drive angles θa and θb, makes
+    one stroke while the crank turns through α = θb − θa and the other while
+    it turns through β = 360° − α; the advance-to-return time ratio is
+    Q = α/β (Eq. 1.5), written with the longer stroke first (Q ≥ 1).
+
+    Returns
+    -------
+    list of str
+        One line per such output; none when the sweep is not one assembled turn
+        of a revolute drive at constant speed.
+    """
+    eng = sw._engine
+    if eng is None:
+        return []
+    d = eng.drive
+    if not (sw._cyclic and d.is_angle) or any(s.kind == "cannot-assemble"
+                                              for s in sw.singular):
+        return []
+    drive = next((dd for dd in sw.mechanism.drives if dd.link == d.link), None)
+    if drive is not None and drive.rate2 not in (None, 0.0):
+        return []
+    out = []
+    by: dict[str, list[float]] = {}
+    for s in sw.singular:
+        if s.kind == "limit":
+            by.setdefault(s.label, []).append(s.drive)
+    for lid, us in by.items():
+        if len(us) != 2:
+            continue
+        a = (us[1] - us[0]) % 360.0
+        alpha, beta = max(a, 360.0 - a), min(a, 360.0 - a)
+        if beta <= 0.0:
+            continue
+        what = f"slider {lid}" if any(sl.link == lid for sl in sw.mechanism.sliders) \
+            else f"link {lid}"
+        out.append(f"time ratio of {what}'s strokes at a constant crank speed: Q = "
+                   f"α/β = {alpha:.2f}°/{beta:.2f}° = {alpha / beta:.3f} (Sec. 1.7, Eq. 1.5)")
+    return out
