@@ -306,13 +306,9 @@ class _Parser:
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")
-        rolling_links = {r.link for r in mech.rolling}
         for d in mech.drives:
-            if d.kind == "relative" and {d.link, d.relative_to} & rolling_links:
-                lid = d.link if d.link in rolling_links else str(d.relative_to)
-                raise self.fail(f"{d.key}.relative_to", f"link {lid} rolls (rolling[...]): an "
-                                "angle relative to a rolling link is not supported yet (drive "
-                                "the arm or the wheel's carrier by its angle)")
+            # a drive relative to a rolling link is solved (its rates by the analytic
+            # solver, with a note: tests/kinematics/test_rolling_phase.py)
             if mech.has_forces and d.kind in ("relative", "x", "y"):
                 what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
                 raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
