@@ -39,8 +39,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GALLERY", "check_keys", "read_units",
-           "nearest"]
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "GALLERY", "check_keys",
+           "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
 
@@ -101,6 +101,21 @@ VECTOR: Schema = {
     "gallery": GALLERY,
 }
 """Every key of a vector file (``graphkin vector``, ``docs/formats/vector.md``)."""
+
+_GEAR_SIZE: Schema = {"module": None, "diametral_pitch": None, "pressure_angle": None,
+                      "system": None}
+
+GEARS: Schema = {
+    "title": None,
+    "units": {"length": None},
+    **_GEAR_SIZE,
+    "center_distance": None,
+    # [gears.<name>]: the first is the driver (link 2), the second the driven gear (link 3)
+    "gears": {"*": {"teeth": None, "link": None, "addendum": None, "dedendum": None,
+                    "offset": None, **_GEAR_SIZE}},
+    "gallery": GALLERY,
+}
+"""Every key of a gear file (``graphkin gears``, ``docs/formats/gears.md``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

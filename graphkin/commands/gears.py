@@ -1,0 +1,52 @@
+"""``graphkin gears FILE [--json] [--steps]``: a pair of spur gears in mesh, Chapter 7.
+
+Lay out a pair of spur gears in mesh as the book does (Figs. 7.8-7.9) and
+report every quantity with its unit: the pitch, base, addendum and dedendum
+circles, the tooth thickness (Eqs. 7.16-7.17), the operating pressure angle
+at the center distance (Sec. 7.9), the path of contact with its approach and
+recess, the contact ratio by construction and by Eq. (7.9), and
+interference and undercutting (Sec. 7.7). The file format is
+docs/formats/gears.md; draw the pair with graphkin draw FILE -d gears.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+
+from graphkin.commands._args import about, command
+
+__all__ = ["add_parser", "run"]
+
+HELP = "a pair of spur gears in mesh: contact ratio, interference, tooth thickness (Ch. 7)"
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = command(sub, "gears", help=HELP, description=about(__doc__),
+                file="gear file (TOML, docs/formats/gears.md)")
+    p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("--steps", action="store_true",
+                   help="also list every step of the layout's construction")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    from graphkin.gears import layout
+    from graphkin.gears.file import load
+    from graphkin.output.gears import gears_json, gears_text
+
+    lay = layout(load(args.file))
+    if args.json:
+        data = gears_json(lay)
+        if args.steps:
+            data["construction"] = lay.construction.to_dict()
+        sys.stdout.write(json.dumps(data, ensure_ascii=False, indent=1, allow_nan=False))
+        sys.stdout.write("\n")
+        return 0
+    sys.stdout.write(gears_text(lay))
+    if args.steps:
+        sys.stdout.write(f"\nLayout construction\n{lay.construction.table()}\n")
+    return 0
