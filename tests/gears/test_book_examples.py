@@ -39,7 +39,7 @@ def test_example_7_1_and_sec_7_5(gear_examples):
     # Sec. 7.7 for these gears (Fig. 7.17): C and D between A and B, no interference
     assert lay.start == Contact.INSIDE and lay.end == Contact.INSIDE
     # Hand check of Eqs. (7.10)-(7.11): r3 = 2.5 cos 20° = 2.349232,
-    # CP = √(2.6² − 2.349232²) − 2.5 sin 20° = 1.114058 − 0.855050 = 0.259008 (…001 exactly),
+    # CP = √(2.6² − 2.349232²) − 2.5 sin 20° = 1.114051 − 0.855050 = 0.259001,
     # PD = √(1.1² − 0.939693²) − sin 20° = 0.571820 − 0.342020 = 0.229800,
     # m_c = 0.488801 / (0.314159 cos 20°) = 0.488801 / 0.295213 = 1.6558.
     assert lay.approach == pytest.approx(0.259001, abs=2e-6)
