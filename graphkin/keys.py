@@ -39,7 +39,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "GALLERY", "check_keys",
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "check_keys",
            "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
@@ -116,6 +116,18 @@ GEARS: Schema = {
     "gallery": GALLERY,
 }
 """Every key of a gear file (``graphkin gears``, ``docs/formats/gears.md``)."""
+
+TRAIN: Schema = {
+    "title": None,
+    "teeth": {"*": None},          # <gear> = N
+    "radii": {"*": None},          # <gear> = R (instead of teeth: only ratios count)
+    "mesh": {"gears": None, "contact": None, "arm": None},
+    "joined": {"members": None},
+    "speeds": {"*": None},         # <member> = "100 rev/min ccw"
+    "turns": {"*": None},          # <member> = "1 rev" (angular displacements)
+    "gallery": GALLERY,
+}
+"""Every key of a gear-train file (``graphkin gears``, ``docs/formats/gears.md#trains``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

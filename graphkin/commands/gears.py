@@ -6,7 +6,9 @@ circles, the tooth thickness (Eqs. 7.16-7.17), the operating pressure angle
 at the center distance (Sec. 7.9), the path of contact with its approach and
 recess, the contact ratio by construction and by Eq. (7.9), and
 interference and undercutting (Sec. 7.7). The file format is
-docs/formats/gears.md; draw the pair with graphkin draw FILE -d gears.
+docs/formats/gears.md; draw the pair with graphkin draw FILE -d gears. A
+gear-train file (its [[mesh]] tables) gives every member's angular velocity
+by the formula method (Eq. 7.25) and the book's table (Sec. 7.16).
 """
 
 from __future__ import annotations
@@ -34,11 +36,16 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
+    from graphkin.files import load_toml
     from graphkin.gears import layout
-    from graphkin.gears.file import load
+    from graphkin.gears.file import from_dict
+    from graphkin.gears.train_file import is_train_file, train_from_dict
     from graphkin.output.gears import gears_json, gears_text
 
-    lay = layout(load(args.file))
+    data = load_toml(args.file)
+    if is_train_file(data):
+        return _train(train_from_dict(data, args.file), args)
+    lay = layout(from_dict(data, args.file))
     if args.json:
         data = gears_json(lay)
         if args.steps:
@@ -49,4 +56,23 @@ def run(args: argparse.Namespace) -> int:
     sys.stdout.write(gears_text(lay))
     if args.steps:
         sys.stdout.write(f"\nLayout construction\n{lay.construction.table()}\n")
+    return 0
+
+
+def _train(train: object, args: argparse.Namespace) -> int:
+    """A gear train (Secs. 7.12-7.16)."""
+    from graphkin.errors import InputError
+    from graphkin.gears.train import Train
+    from graphkin.output.trains import train_json, train_text
+
+    assert isinstance(train, Train)
+    if args.steps:
+        raise InputError("--steps lists the construction of a pair in mesh; a train file has "
+                         "none", key="--steps", file=args.file)
+    if args.json:
+        sys.stdout.write(json.dumps(train_json(train), ensure_ascii=False, indent=1,
+                                    allow_nan=False))
+        sys.stdout.write("\n")
+        return 0
+    sys.stdout.write(train_text(train))
     return 0
