@@ -51,29 +51,42 @@ def _xy(v: Any) -> np.ndarray:
     return a[:2] / a[2]
 
 
+def _near(lay: MeshLayout) -> list[str]:
+    """The points of the layout near the mesh.
+
+    C, D, P, and the interference points A and B unless they lie far along
+    the line of action (a gear much larger than its pinion).
+    """
+    p = np.array(lay.points["P"])
+    reach = max(3.0 * abs(lay.path), 6.0 * lay.pair.driver.module)
+    far = [k for k in ("A", "B") if np.hypot(*(np.array(lay.points[k]) - p)) > reach]
+    return [k for k in ("A", "B", "C", "D", "P") if k not in far]
+
+
 def _extent(lay: MeshLayout) -> tuple[np.ndarray, np.ndarray, bool]:
     """The box of the drawing's content; whether gear 3 is drawn whole."""
     pair = lay.pair
     ra2, ra3 = pair.outside_radii
-    pts = np.array(list(lay.points.values()))
     o2, o3 = np.array(lay.points["O2"]), np.array(lay.points["O3"])
     r2p, r3p = pair.operating_pitch_radii
     whole = r3p <= 2.6 * r2p
+    keys = ["A", "B", "C", "D", "P"] if whole else _near(lay)
+    pts = np.array([lay.points[k] for k in keys])
     lo = np.minimum(pts.min(axis=0), o2 - ra2)
     hi = np.maximum(pts.max(axis=0), o2 + ra2)
     if whole:
         lo, hi = np.minimum(lo, o3 - ra3), np.maximum(hi, o3 + ra3)
     else:   # the gear near the mesh, as deep below P as the pinion is tall
         lo = np.array([lo[0], min(lo[1], -1.1 * ra2)])
-        lo[1] = max(lo[1], o3[1] + 0.2 * ra3)
     return lo, hi, whole
 
 
 def _zone(lay: MeshLayout) -> tuple[np.ndarray, np.ndarray]:
     """The box of the zone of action: A, B, C, D and P with room around them (Fig. 7.9)."""
-    pts = np.array([lay.points[k] for k in ("A", "B", "C", "D", "P")])
+    keys = _near(lay)
+    pts = np.array([lay.points[k] for k in keys])
     lo, hi = pts.min(axis=0), pts.max(axis=0)
-    ab = float(np.hypot(*(np.array(lay.points["B"]) - np.array(lay.points["A"]))))
+    ab = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
     m = lay.pair.driver.module
     pad = np.array([0.12 * ab + 1.5 * m, 3.0 * m])
     return lo - pad, hi + pad
@@ -125,9 +138,10 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
         _frame(p)
         place_labels(p)
     rows = _rows(lay) if table else []
-    sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
-                  (pair.title or f"gears {g2.teeth} and {g3.teeth} teeth in mesh"), "gears",
-                  rows)
+    default = (f"Spur gears, {g2.teeth} and {g3.teeth} teeth, module {fmt(g2.module)} "
+               f"{pair.units}, {fmt(math.degrees(g2.pressure_angle))}°")
+    sheet = Sheet(panels, (0.0, 0.0), title if title is not None else (pair.title or default),
+                  "gears", rows)
     _layout(sheet, legend=False)
     return sheet
 
