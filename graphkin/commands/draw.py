@@ -96,10 +96,13 @@ def run(args: argparse.Namespace) -> int:
 def _is_gear_file(path: str, diagram: str) -> bool:
     """Whether ``path`` is a gear file; ``-d gears`` of anything else is one line, exit 2."""
     from graphkin.errors import InputError
-    from graphkin.files import load_toml
-    from graphkin.gears.file import is_gear_file
+    from graphkin.gears.file import gear_kind
 
-    gears = is_gear_file(load_toml(path))
+    found = gear_kind(path)
+    if found is not None and found[0] == "train":
+        raise InputError("a gear-train file is solved by graphkin gears FILE; only a pair in "
+                         "mesh is drawn", key="--diagram", file=path)
+    gears = found is not None
     if diagram == "gears" and not gears:
         raise InputError("-d gears draws a gear file (docs/formats/gears.md): a [gears.<name>] "
                          "table for each gear of the pair", key="--diagram", file=path)

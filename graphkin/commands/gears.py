@@ -19,7 +19,7 @@ import sys
 
 from graphkin.commands._args import about, command
 
-__all__ = ["add_parser", "run"]
+__all__ = ["add_parser", "run", "report"]
 
 HELP = "a pair of spur gears in mesh: contact ratio, interference, tooth thickness (Ch. 7)"
 
@@ -36,40 +36,51 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
-    from graphkin.files import load_toml
+    from graphkin.errors import InputError
+    from graphkin.gears.file import gear_kind
+
+    found = gear_kind(args.file)
+    if found is None:
+        raise InputError("not a gear file: a pair in mesh has [gears.<name>] tables, a train "
+                         "[[mesh]] tables (docs/formats/gears.md)", file=args.file)
+    return report(found[0], found[1], args.file, as_json=args.json, steps=args.steps)
+
+
+def report(kind: str, data: dict, source: str, *, as_json: bool = False,
+           steps: bool = False) -> int:
+    """Print the report of a parsed gear file (``kind`` "pair") or gear-train file ("train")."""
     from graphkin.gears import layout
     from graphkin.gears.file import from_dict
-    from graphkin.gears.train_file import is_train_file, train_from_dict
+    from graphkin.gears.train_file import train_from_dict
     from graphkin.output.gears import gears_json, gears_text
 
-    data = load_toml(args.file)
-    if is_train_file(data):
-        return _train(train_from_dict(data, args.file), args)
-    lay = layout(from_dict(data, args.file))
-    if args.json:
-        data = gears_json(lay)
-        if args.steps:
-            data["construction"] = lay.construction.to_dict()
-        sys.stdout.write(json.dumps(data, ensure_ascii=False, indent=1, allow_nan=False))
+    if kind == "train":
+        return _train(train_from_dict(data, source), source, as_json, steps)
+    lay = layout(from_dict(data, source))
+    if as_json:
+        out = gears_json(lay)
+        if steps:
+            out["construction"] = lay.construction.to_dict()
+        sys.stdout.write(json.dumps(out, ensure_ascii=False, indent=1, allow_nan=False))
         sys.stdout.write("\n")
         return 0
     sys.stdout.write(gears_text(lay))
-    if args.steps:
+    if steps:
         sys.stdout.write(f"\nLayout construction\n{lay.construction.table()}\n")
     return 0
 
 
-def _train(train: object, args: argparse.Namespace) -> int:
+def _train(train: object, source: str, as_json: bool, steps: bool) -> int:
     """A gear train (Secs. 7.12-7.16)."""
     from graphkin.errors import InputError
     from graphkin.gears.train import Train
     from graphkin.output.trains import train_json, train_text
 
     assert isinstance(train, Train)
-    if args.steps:
+    if steps:
         raise InputError("--steps lists the construction of a pair in mesh; a train file has "
-                         "none", key="--steps", file=args.file)
-    if args.json:
+                         "none", key="--steps", file=source)
+    if as_json:
         sys.stdout.write(json.dumps(train_json(train), ensure_ascii=False, indent=1,
                                     allow_nan=False))
         sys.stdout.write("\n")

@@ -38,7 +38,10 @@ from graphkin.gears.tooth import ADDENDUM, DEDENDUM, Gear, ToothSystem
 from graphkin.keys import GEARS, check_keys, read_units
 from graphkin.units import length_factor, parse_quantity
 
-__all__ = ["load", "loads", "from_dict", "is_gear_file", "MAX_TEETH"]
+__all__ = ["load", "loads", "from_dict", "is_gear_file", "gear_kind", "MAX_TEETH"]
+
+#: A gear file's or a gear-train file's table headers, looked for before any TOML is parsed.
+_KIND = re.compile(r"^\s*(\[\s*gears\s*\.|\[\[\s*mesh\s*\]\])", re.MULTILINE)
 
 #: A diametral pitch with its unit: "10 teeth/in", "10/in", "10 per in".
 _PITCH = re.compile(r"\s*([0-9]+(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?)\s*(?:teeth\s*)?(?:/|per\s)"
@@ -51,6 +54,23 @@ MAX_TEETH = 10_000
 def is_gear_file(data: Mapping[str, Any]) -> bool:
     """Whether parsed TOML is a gear file (it has a ``[gears]`` table and no ``[links]``)."""
     return isinstance(data.get("gears"), Mapping) and "links" not in data
+
+
+def gear_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
+    """``("pair", data)`` for a gear file, ``("train", data)`` for a gear-train file, else None.
+
+    The text is looked at first and parsed only when it has a ``[gears.<name>]``
+    or ``[[mesh]]`` header, so that a mechanism file is not parsed twice.
+    """
+    text = read_text(path)
+    if not _KIND.search(text):
+        return None
+    data = parse_toml(text, str(path))
+    if is_gear_file(data):
+        return "pair", data
+    if "mesh" in data and "links" not in data:
+        return "train", data
+    return None
 
 
 def load(path: str | Path) -> GearPair:

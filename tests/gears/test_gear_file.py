@@ -111,3 +111,15 @@ def test_json_and_steps(gear_examples, capsys):
     labels = [s["label"] for s in data["construction"]]
     assert labels.index("A") < labels.index("C") and "D" in labels
     assert "NaN" not in text
+
+
+def test_solve_reads_gear_files_too(gear_examples, capsys):
+    """`graphkin solve` on a gear file or a train file gives the gear report (issue 26)."""
+    assert main(["solve", str(gear_examples / "ex7_3.toml"), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    # Example 7.3: m_c = 1.443
+    assert data["mesh"]["contact_ratio"] == pytest.approx(1.443, abs=1e-3)
+    assert main(["solve", str(gear_examples / "trains" / "ex7_9.toml")]) == 0
+    assert "350 rev/min ccw" in capsys.readouterr().out   # Example 7.9
+    assert main(["solve", str(gear_examples / "ex7_1.toml"), "--units", "mm"]) == 2
+    assert "--units" in capsys.readouterr().err
