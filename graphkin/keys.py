@@ -127,7 +127,7 @@ TRAIN: Schema = {
     "turns": {"*": None},          # <member> = "1 rev" (angular displacements)
     "gallery": GALLERY,
 }
-"""Every key of a gear-train file (``graphkin gears``, ``docs/formats/gears.md#trains``)."""
+"""Every key of a gear-train file (``graphkin gears``, ``docs/formats/gears.md#gear-trains``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

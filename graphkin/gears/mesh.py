@@ -321,6 +321,11 @@ def layout(pair: GearPair) -> MeshLayout:
     path = t_d - t_c
     g2, g3 = pair.driver, pair.driven
     tol = pair.tol.length(pair.center)
+    if path <= tol:
+        raise InputError(f"the gears cannot mesh at a center distance of {pair.center:g} "
+                         f"{pair.units}: the addendum circles cross the line of action with no "
+                         "path of contact between them", key="center_distance",
+                         file=pair.source)
     beyond_a, beyond_b = t_a - t_c, t_d - t_b
     start = Contact.INTERFERENCE if beyond_a > tol else Contact.INSIDE
     end = Contact.INTERFERENCE if beyond_b > tol else Contact.INSIDE

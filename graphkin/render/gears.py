@@ -39,7 +39,7 @@ from graphkin.render.sheet import FOOT_H, MARGIN, TITLE_H, Sheet, _frame, _layou
 from graphkin.render.style import STYLES
 from graphkin.text import fmt
 
-__all__ = ["gear_sheet", "draw_gears", "CIRCLE_STYLE"]
+__all__ = ["gear_sheet", "draw_gears", "gear_frames", "gear_steps_html", "CIRCLE_STYLE"]
 
 #: How each circle of the layout is drawn: pitch circles as center lines (dash-dot).
 CIRCLE_STYLE = {"pitch": "ref-line", "base": "angle-arc", "addendum": "arc",
@@ -109,14 +109,17 @@ def _panel(lay: MeshLayout, name: str, title: str, lo: np.ndarray, hi: np.ndarra
 
 
 def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
-               title: str | None = None, skip: frozenset[str] = frozenset()) -> Sheet:
+               title: str | None = None, skip: frozenset[str] = frozenset(),
+               upto: int | None = None) -> Sheet:
     """Lay out the drawing of a pair in mesh on a sheet (pure data, no matplotlib).
 
     Two panels: ``pair``, the two gears with their circles, the line of action
     and the angles of approach and recess at the centers (Figs. 7.8, 7.17),
     and ``action``, the zone of action enlarged with every letter (Figs. 7.9,
     7.18, 7.21b).  The names of circles and lines whose label gids are in
-    ``skip`` are left out (a crowded zone: see :func:`draw_gears`).
+    ``skip`` are left out (a crowded zone: see :func:`draw_gears`).  With
+    ``upto`` only the construction's steps ``0..upto`` are drawn, the newest
+    highlighted, and no teeth (the book's Steps 1-5 before Steps 6-8).
     """
     pair = lay.pair
     g2, g3 = pair.driver, pair.driven
@@ -133,7 +136,7 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
     panels.append(_panel(lay, "action", f"(b) the zone of action ({fig})", zlo, zhi,
                          1.2 * max_inches))
     for p in panels:
-        _paint(lay, p, zoom=p.name == "action")
+        _paint(lay, p, zoom=p.name == "action", upto=upto)
         p.labels = [r for r in p.labels if r.gid not in skip]
         _frame(p)
         place_labels(p)
@@ -146,7 +149,8 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
     return sheet
 
 
-def draw_gears(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5) -> Any:
+def draw_gears(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
+               upto: int | None = None) -> Any:
     """The matplotlib drawing (:class:`~graphkin.render.mpl.Drawing`) of a pair in mesh.
 
     Where the zone of action is too crowded for the name of a circle or a line
@@ -159,7 +163,8 @@ def draw_gears(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5) 
 
     skip: frozenset[str] = frozenset()
     for _ in range(4):
-        drawing = render_sheet(gear_sheet(lay, table=table, max_inches=max_inches, skip=skip))
+        drawing = render_sheet(gear_sheet(lay, table=table, max_inches=max_inches, skip=skip,
+                                          upto=upto))
         bad = {gid for _, gid, _ in collisions(drawing)
                if gid.endswith(("-circle", "-line", "-words"))}
         if not bad:
@@ -174,8 +179,11 @@ def _label(p: Panel, g: Any, text: str, at: np.ndarray, key: str, style: str = "
                                  f"label-{g.gid}-{key}", g, key=key, prefer=prefer))
 
 
-def _paint(lay: MeshLayout, p: Panel, zoom: bool) -> None:
-    """Draw the layout in a panel; ``zoom``: the zone of action, every element lettered."""
+def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> None:
+    """Draw the layout in a panel; ``zoom``: the zone of action, every element lettered.
+
+    ``upto``: the construction's steps up to that one only (the newest highlighted).
+    """
     pair = lay.pair
     cx = lay.construction
     ev = cx.evaluate()
@@ -187,7 +195,8 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool) -> None:
     psi2, psi3 = mesh_phases(pair)
     ra2, ra3 = pair.outside_radii
     for gear, ra, psi, center, link in ((pair.driver, ra2, psi2, "O2", "2"),
-                                        (pair.driven, ra3, psi3, "O3", "3")):
+                                        (pair.driven, ra3, psi3, "O3", "3")
+                                        ) if upto is None else ():
         g = p.group(f"{p.prefix}teeth-{link}", teeth_z, key=f"teeth {link}")
         outline = gear_teeth(gear, ra, lay.points[center], psi)
         x0, y0, x1, y1 = box
@@ -204,9 +213,10 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool) -> None:
         if g.items:
             g.items[0].key = f"teeth {link}"
     # the construction's steps
-    for step in cx.steps:
+    for step in cx.steps[: None if upto is None else upto + 1]:
         g = p.group(p.prefix + step.step_id, circle_z if step.kind == "circle" else line_z,
-                    step=step, diagram="gears", key=step.label)
+                    step=step, diagram="gears", key=step.label,
+                    highlight=upto is not None and step.index == upto)
         value = ev[step.outputs[0]]
         if step.kind == "circle":
             c = np.asarray(value, dtype=float)
@@ -245,11 +255,61 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool) -> None:
                 g.items.append(Item("marker", np.array([xy]), style, key=step.label))
                 if zoom or step.label in ("O2", "O3", "P"):
                     _label(p, g, _letters(step.label), xy, "letter")
+    if upto is not None:
+        return
     _path_of_contact(lay, p)
     if zoom:
         _interference(lay, p)
     else:
         _angles(lay, p)
+
+
+def gear_frames(lay: MeshLayout) -> list[tuple[str, str, str]]:
+    """One drawing per step of the layout, then the teeth: ``(title, note, svg)`` each."""
+    from graphkin.render.svg import to_svg
+
+    frames = []
+    for step in lay.construction:
+        d = draw_gears(lay, table=False, upto=step.index)
+        frames.append((step.label, step.note, to_svg(d.figure)))
+    d = draw_gears(lay, table=True)
+    frames.append(("the teeth", "Steps 6-8: the involute teeth of both gears, one tooth of each "
+                   "touching at P; the path of contact CD, the angles of approach and recess "
+                   "(Eqs. 7.7-7.8) and the contact ratio CD/p_b (Eq. 7.9).", to_svg(d.figure)))
+    return frames
+
+
+def gear_steps_html(lay: MeshLayout) -> str:
+    """The layout of Sec. 7.5 step by step as one self-contained HTML page (``steps -d gears``).
+
+    Each step: its number, one sentence in the book's words, and the drawing
+    up to it with the newest element highlighted; previous/next buttons and
+    the arrow keys walk through it.
+    """
+    import html
+
+    frames = gear_frames(lay)
+    head = html.escape(lay.pair.title or lay.construction.title)
+    n = len(frames)
+    parts = []
+    for k, (label, note, svg) in enumerate(frames):
+        parts.append(f"<section class='frame' id='step-{k}' style='display:"
+                     f"{'block' if k == 0 else 'none'}'><h2>Step {k + 1} of {n}: "
+                     f"{html.escape(label)}</h2><p>{html.escape(note)}</p>"
+                     f"<div class='fig'>{svg[svg.index('<svg'):]}</div></section>")
+    script = ("let k=0;const f=[...document.querySelectorAll('.frame')];"
+              "function show(i){k=Math.max(0,Math.min(f.length-1,i));"
+              "f.forEach((e,j)=>e.style.display=j===k?'block':'none');}"
+              "document.getElementById('prev').onclick=()=>show(k-1);"
+              "document.getElementById('next').onclick=()=>show(k+1);"
+              "document.addEventListener('keydown',e=>{if(e.key==='ArrowLeft')show(k-1);"
+              "if(e.key==='ArrowRight')show(k+1);});")
+    return ("<!DOCTYPE html><html><head><meta charset='utf-8'>"
+            f"<title>Gears: {head}</title><style>body{{font-family:sans-serif;margin:1em}}"
+            ".fig svg{max-width:100%;height:auto}</style></head>"
+            f"<body><h1>Spur gears in mesh (Sec. 7.5): {head}</h1><p><button id='prev'>"
+            "◀ previous</button> <button id='next'>next ▶</button> (or the arrow keys)</p>"
+            + "".join(parts) + f"<script>{script}</script></body></html>\n")
 
 
 def _letters(label: str) -> str:

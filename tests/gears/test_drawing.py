@@ -92,3 +92,24 @@ def test_cli_draws_a_gear_file(gear_examples, tmp_path, capsys):
     assert main(["draw", str(gear_examples / "ex7_1.toml"), "-d", "velocity", "-o",
                  str(out)]) == 2
     assert "-d gears" in capsys.readouterr().err
+
+
+def test_step_frames_draw_the_construction_so_far(gear_examples):
+    """`steps -d gears`: frame k draws steps 0..k only, the newest highlighted, no teeth yet."""
+    lay = layout(load(gear_examples / "ex7_1.toml"))
+    step = lay.construction.step_of("A")
+    d = draw_gears(lay, table=False, upto=step.index)
+    ids = _ids(to_bytes(d.figure))
+    assert "action-" + step.step_id in ids
+    later = lay.construction.step_of("C")
+    assert "action-" + later.step_id not in ids and "action-teeth-2" not in ids
+    assert d.groups["action-" + step.step_id].get_children()   # A is drawn
+    assert collisions(d) == []
+
+
+def test_steps_gears_refuses_a_mechanism_file(tmp_path, capsys):
+    from pathlib import Path
+
+    mech = Path(__file__).resolve().parents[2] / "examples" / "fourbar.toml"
+    assert main(["steps", str(mech), "-d", "gears", "-o", str(tmp_path / "s.html")]) == 2
+    assert "-d gears" in capsys.readouterr().err
