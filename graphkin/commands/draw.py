@@ -123,13 +123,17 @@ def _draw_gears(args: argparse.Namespace, out: object) -> int:
     from graphkin.render.svg import save
 
     assert isinstance(out, Path)
-    for option, value in (("--upto", args.upto), ("--link", args.link), ("--sheet", args.sheet)):
+    for option, value in (("--link", args.link), ("--sheet", args.sheet)):
         if value is not None:
             raise InputError(f"{option} is not used by a gear drawing", key=option,
                              file=args.file)
     if out.suffix.lower() == ".dxf":
         raise InputError("a gear drawing is written as .svg, .pdf or .png", key="--output")
-    d = draw_gears(layout(load(args.file)), table=not args.no_table)
+    lay = layout(load(args.file))
+    if args.upto is not None and args.upto >= len(lay.construction):
+        raise InputError(f"the layout has {len(lay.construction)} steps (0 to "
+                         f"{len(lay.construction) - 1})", key="--upto", file=args.file)
+    d = draw_gears(lay, table=not args.no_table and args.upto is None, upto=args.upto)
     try:
         save(d.figure, out, dpi=args.dpi)
     except OSError as exc:
