@@ -137,6 +137,9 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
                          1.2 * max_inches))
     for p in panels:
         _paint(lay, p, zoom=p.name == "action", upto=upto)
+    if upto is None:
+        panels.append(_involute_panel(lay, 0.9 * max_inches))
+    for p in panels:
         p.labels = [r for r in p.labels if r.gid not in skip]
         _frame(p)
         place_labels(p)
@@ -310,6 +313,80 @@ def gear_steps_html(lay: MeshLayout) -> str:
             f"<body><h1>Spur gears in mesh (Sec. 7.5): {head}</h1><p><button id='prev'>"
             "◀ previous</button> <button id='next'>next ▶</button> (or the arrow keys)</p>"
             + "".join(parts) + f"<script>{script}</script></body></html>\n")
+
+
+INVOLUTE_PARTS = 6
+"""How many equal parts of the base circle the drawn involute construction uses (Step 6)."""
+
+
+def _involute_panel(lay: MeshLayout, max_inches: float) -> Panel:
+    """(c) The involute of gear 3 struck on its tangents, as in Fig. 7.8 (Sec. 7.5, Step 6).
+
+    The recorded steps of :func:`graphkin.gears.involute.involute_construction`
+    about O3 (off the panel): the points A0..A6 dividing the base circle, the
+    radial lines and the tangents at them, the arcs of radius A0A_k, the
+    points T_k, and the involute itself in closed form up to the addendum
+    circle.
+    """
+    from graphkin.gears.involute import Unwind, involute_construction, involute_xy
+
+    g3 = lay.pair.driven
+    rb, ra = g3.base_radius, lay.pair.outside_radii[1]
+    roll = math.sqrt(max((ra / rb) ** 2 - 1.0, 1e-12))   # tan ϕ at the addendum circle
+    origin = math.pi / 2 - 0.5 * roll
+    cx = involute_construction(rb, parts=INVOLUTE_PARTS, roll=roll, origin=origin,
+                               sense=Unwind.CCW)
+    ev = cx.evaluate()
+    pts = {s.outputs[0]: _xy(ev[s.outputs[0]]) for s in cx.steps if s.kind == "point"}
+    near = np.array([v for k, v in pts.items() if k != "O"])
+    lo, hi = near.min(axis=0), near.max(axis=0)
+    pad = 0.25 * float(max(hi - lo))
+    lo, hi = lo - pad, hi + pad
+    p = _panel(lay, "involute", "(c) the involute of gear 3 (Step 6)", lo, hi, max_inches)
+    box = p.inner
+    assert box is not None
+    o = pts["O"]
+    for step in cx.steps:
+        if step.op in ("point", "scalar", "copy_point"):
+            continue
+        g = p.group(p.prefix + step.step_id, 3.0, step=step, diagram="gears", key=step.label)
+        value = np.asarray(ev[step.outputs[0]], dtype=float)
+        if step.kind == "circle":   # the arc struck about A_k: near the tangent only
+            k = step.label[1:]
+            t = pts[f"T{k}"]
+            a = math.degrees(math.atan2(t[1] - value[1], t[0] - value[0]))
+            g.items.append(Item("arc", np.array([value[:2]]), "arc", radius=float(value[2]),
+                                theta1=a - 12.0, theta2=a + 12.0, key=step.label))
+        elif step.kind == "line":
+            anchor = pts["A" + step.label[len("OA"):]] if step.label.startswith("OA") \
+                else pts["A" + step.label[1:]]
+            d = np.array([value[1], -value[0]])
+            reach = 0.45 * float(max(hi - lo))
+            if step.label.startswith("OA"):   # the radius O A_k, from inside the panel
+                seg = clip_segment(anchor - reach * d, anchor + 0.1 * reach * d, box)
+            else:
+                seg = clip_segment(anchor - reach * d, anchor + 0.25 * reach * d, box)
+            if seg is not None:
+                g.items.append(Item("path", np.array(seg), "aux-line", key=step.label))
+        else:
+            xy = pts[step.outputs[0]]
+            style = "point" if step.label.startswith("T") else "aux-point"
+            g.items.append(Item("marker", np.array([xy]), style, key=step.label))
+            if step.label.startswith("A"):
+                _label(p, g, _letters(step.label), xy, "letter", "label-small",
+                       prefer=tuple((xy - o) / np.hypot(*(xy - o)) * -1))
+    for name, r, style in (("base circle 3", rb, "angle-arc"), ("addendum circle 3", ra, "arc")):
+        g = p.group(f"{p.prefix}{name.replace(' ', '-')}", 1.0, key=name)
+        for t1, t2 in inside_spans(o, r, box) or [(0.0, 360.0)]:
+            g.items.append(Item("arc", np.array([o]), style, radius=r, theta1=t1, theta2=t2))
+        at = math.radians(90.0 + math.degrees(0.5 * roll) + 4.0)
+        _label(p, g, name, o + r * np.array([math.cos(at), math.sin(at)]), "circle",
+               "label-aux")
+    g = p.group(f"{p.prefix}involute-curve", 4.0, key="involute")
+    curve = involute_xy(rb, np.linspace(rb, ra, 60), origin=origin, sense=Unwind.CCW)
+    g.items.append(Item("path", curve, "result-line", key="involute"))
+    _label(p, g, "involute", curve[40], "words", "label-aux")
+    return p
 
 
 def _letters(label: str) -> str:

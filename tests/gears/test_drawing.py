@@ -49,6 +49,13 @@ def _check(lay, drawing) -> dict[str, ET.Element]:
             assert prefix + gid in ids
     for gid in ("approach-2", "recess-2"):
         assert "pair-" + gid in ids
+    # (c) the involute struck on its tangents (Step 6): every arc, tangent and point T_k
+    from graphkin.render.gears import INVOLUTE_PARTS
+
+    for k in range(1, INVOLUTE_PARTS + 1):
+        for what in (f"T{k}", f"t{k}", f"k{k}", f"A{k}"):
+            assert any(i.startswith("involute-step-") and i.endswith(f"-{what}") for i in ids)
+    assert "involute-involute-curve" in ids
     assert ("action-interference" in ids) == lay.interference
     # the letters of the zone of action (Figs. 7.9, 7.17): C, D and P, and A and B unless
     # they lie far along the line of action (a gear much larger than its pinion)
