@@ -202,3 +202,37 @@ def test_book_verdicts_do_not_move_with_round_off(gear_examples, name, factor):
     moved = layout(replace(pair, driver=replace(pair.driver, module=pair.driver.module * factor),
                            driven=replace(pair.driven, module=pair.driven.module * factor)))
     assert (moved.start, moved.end) == (base.start, base.end)
+
+
+@settings(max_examples=30, deadline=None)
+@given(pairs())
+def test_drawn_teeth_are_involutes_touching_at_p(pair):
+    """The drawn flanks lie on the involute of Eqs. (7.14)-(7.15), and the teeth set in mesh
+    touch at P with their common normal the line of action: the flank of 2 through P is
+    generated from A, the flank of 3 from B (Sec. 7.3, Fig. 7.7)."""
+    from graphkin.gears.profile import FLANK, gear_teeth, mesh_phases
+
+    lay = _layout(lambda: pair)
+    g2, g3 = pair.driver, pair.driven
+    ra2, ra3 = pair.outside_radii
+    # tooth 0 of gear 2 about the origin, phase 0: its clockwise flank (the first FLANK
+    # points above the base circle) starts on the base circle at -β_b and unwinds ccw
+    outline = gear_teeth(g2, ra2, (0.0, 0.0), 0.0)[0]
+    flank = outline[: FLANK + (1 if g2.root_radius < g2.base_radius else 0)]
+    r = np.hypot(flank[:, 0], flank[:, 1])
+    on = r >= g2.base_radius * (1 + 1e-12)
+    beta_b = g2.thickness / (2 * g2.pitch_radius) + an.inv(g2.pressure_angle)
+    expect = involute_xy(g2.base_radius, r[on], origin=-beta_b, sense=Unwind.CCW)
+    assert np.allclose(flank[on], expect, rtol=0, atol=1e-9 * ra2)
+    # in mesh: the flank points at the operating pitch radii are P, generated from A and B
+    psi2, psi3 = mesh_phases(pair)
+    r2p, r3p = pair.operating_pitch_radii
+    for g, psi, rp, o, foot in ((g2, psi2, r2p, "O2", "A"), (g3, psi3, r3p, "O3", "B")):
+        center = np.array(lay.points[o])
+        theta = psi - float(g.half_angle(rp))
+        on_p = center + rp * np.array([math.cos(theta), math.sin(theta)])
+        assert np.allclose(on_p, lay.points["P"], atol=1e-9 * pair.center)
+        varphi = math.acos(g.base_radius / rp)
+        t = center + g.base_radius * np.array([math.cos(theta + varphi),
+                                               math.sin(theta + varphi)])
+        assert np.allclose(t, lay.points[foot], atol=1e-9 * pair.center)
