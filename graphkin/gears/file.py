@@ -47,6 +47,9 @@ _KIND = re.compile(r"^\s*(\[\s*gears\s*\.|\[\[\s*mesh\s*\]\])", re.MULTILINE)
 _PITCH = re.compile(r"\s*([0-9]+(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?)\s*(?:teeth\s*)?(?:/|per\s)"
                     r"\s*([A-Za-z]{1,16})\s*$")
 
+#: The smallest module accepted, in the file's unit: the tolerances' absolute floor is 1e-12.
+MIN_MODULE = 1e-6
+
 #: The most teeth a gear may have (a drawing of more is a grey disc).
 MAX_TEETH = 10_000
 
@@ -170,6 +173,10 @@ class _Reader:
         dedendum = (self.length(table["dedendum"], f"{key}.dedendum", positive=True)
                     if "dedendum" in table else DEDENDUM[system] * module)
         offset = self.length(table["offset"], f"{key}.offset") if "offset" in table else 0.0
+        if module < MIN_MODULE:
+            raise self.error(f"a module too small (below {MIN_MODULE:g} {self.unit}): write the "
+                             "sizes in a smaller unit",
+                             f"{where}module" if "module" in level else f"{where}diametral_pitch")
         if abs(offset) >= teeth * module / 2:
             raise self.error(f"an offset of {offset:g} {self.unit} is larger than the gear",
                              f"{key}.offset")

@@ -201,6 +201,8 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> No
                                         (pair.driven, ra3, psi3, "O3", "3")
                                         ) if upto is None else ():
         g = p.group(f"{p.prefix}teeth-{link}", teeth_z, key=f"teeth {link}")
+        if gear.circular_pitch / p.k < MIN_PITCH:   # teeth too fine to see: the circles only
+            continue
         outline = gear_teeth(gear, ra, lay.points[center], psi)
         x0, y0, x1, y1 = box
         inside = ((outline[..., 0] >= x0) & (outline[..., 0] <= x1)
@@ -315,6 +317,9 @@ def gear_steps_html(lay: MeshLayout) -> str:
             + "".join(parts) + f"<script>{script}</script></body></html>\n")
 
 
+MIN_PITCH = 0.04
+"""The smallest circular pitch on paper (inches) at which teeth are drawn one by one."""
+
 INVOLUTE_PARTS = 6
 """How many equal parts of the base circle the drawn involute construction uses (Step 6)."""
 
@@ -332,7 +337,8 @@ def _involute_panel(lay: MeshLayout, max_inches: float) -> Panel:
 
     g3 = lay.pair.driven
     rb, ra = g3.base_radius, lay.pair.outside_radii[1]
-    roll = math.sqrt(max((ra / rb) ** 2 - 1.0, 1e-12))   # tan ϕ at the addendum circle
+    # tan ϕ at the addendum circle (the construction stops at 1.5 rad for a very steep one)
+    roll = min(math.sqrt(max((ra / rb) ** 2 - 1.0, 1e-12)), 1.5)
     origin = math.pi / 2 - 0.5 * roll
     cx = involute_construction(rb, parts=INVOLUTE_PARTS, roll=roll, origin=origin,
                                sense=Unwind.CCW)

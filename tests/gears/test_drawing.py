@@ -121,3 +121,14 @@ def test_steps_gears_refuses_a_mechanism_file(tmp_path, capsys):
     mech = Path(__file__).resolve().parents[2] / "examples" / "fourbar.toml"
     assert main(["steps", str(mech), "-d", "gears", "-o", str(tmp_path / "s.html")]) == 2
     assert "-d gears" in capsys.readouterr().err
+
+
+def test_teeth_too_fine_to_see_are_left_to_their_circles():
+    """Two 10000-tooth gears: panel (a) draws their circles only (the teeth would be a grey
+    band); the zone of action still draws its teeth one by one."""
+    m = 1.0
+    g2 = Gear("a", 2, 10000, m, math.radians(20), m, 1.25 * m, clearance=0.25 * m)
+    g3 = Gear("b", 3, 10000, m, math.radians(20), m, 1.25 * m, clearance=0.25 * m)
+    d = draw_gears(layout(GearPair(g2, g3)), table=False)
+    assert not d.groups["pair-teeth-2"].get_children()
+    assert d.groups["action-teeth-2"].get_children()

@@ -62,6 +62,8 @@ CASES = [
      "tooth system"),
     ("bad unit", PAIR.replace('units = "in"', 'units = "bananas"'), "units.length", "unit"),
     ("bad toml", PAIR + "[[[", "", "TOML"),
+    ("module too small", PAIR.replace("diametral_pitch = 10", "module = 1e-300"), "module",
+     "too small"),
 ]
 
 
