@@ -39,8 +39,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GALLERY", "check_keys", "read_units",
-           "nearest"]
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "check_keys",
+           "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
 
@@ -101,6 +101,33 @@ VECTOR: Schema = {
     "gallery": GALLERY,
 }
 """Every key of a vector file (``graphkin vector``, ``docs/formats/vector.md``)."""
+
+_GEAR_SIZE: Schema = {"module": None, "diametral_pitch": None, "pressure_angle": None,
+                      "system": None}
+
+GEARS: Schema = {
+    "title": None,
+    "units": {"length": None},
+    **_GEAR_SIZE,
+    "center_distance": None,
+    # [gears.<name>]: the first is the driver (link 2), the second the driven gear (link 3)
+    "gears": {"*": {"teeth": None, "link": None, "addendum": None, "dedendum": None,
+                    "offset": None, **_GEAR_SIZE}},
+    "gallery": GALLERY,
+}
+"""Every key of a gear file (``graphkin gears``, ``docs/formats/gears.md``)."""
+
+TRAIN: Schema = {
+    "title": None,
+    "teeth": {"*": None},          # <gear> = N
+    "radii": {"*": None},          # <gear> = R (instead of teeth: only ratios count)
+    "mesh": {"gears": None, "contact": None, "arm": None},
+    "joined": {"members": None},
+    "speeds": {"*": None},         # <member> = "100 rev/min ccw"
+    "turns": {"*": None},          # <member> = "1 rev" (angular displacements)
+    "gallery": GALLERY,
+}
+"""Every key of a gear-train file (``graphkin gears``, ``docs/formats/gears.md#gear-trains``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

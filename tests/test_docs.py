@@ -30,7 +30,15 @@ def _toml_blocks():
 @pytest.mark.parametrize("page,block", list(_toml_blocks()))
 def test_every_toml_example_in_the_docs_is_valid(page, block):
     data = tomllib.loads(block)          # TOML at all
-    if "links" in data and "1" in data["links"] and "drive" in data:
+    if "gears" in data and "links" not in data:
+        from graphkin.gears.file import from_dict as gears_from_dict
+
+        gears_from_dict(data, source=str(page))     # a whole gear file: it loads
+    elif "mesh" in data and "links" not in data:
+        from graphkin.gears.train_file import train_from_dict
+
+        train_from_dict(data, source=str(page))     # a whole gear-train file: it loads
+    elif "links" in data and "1" in data["links"] and "drive" in data:
         graphkin.from_dict(data, source=str(page))   # a whole mechanism: it loads
     elif set(data) & {"A", "B", "C"}:
         check_keys(data, VECTOR, str(page))

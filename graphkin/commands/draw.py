@@ -10,7 +10,7 @@ from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int, comma
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
 
 DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "inflection",
-                   "bobillier", "hartmann", "cubic", "forces", "all")
+                   "bobillier", "hartmann", "cubic", "forces", "gears", "all")
 
 
 HELP = "draw a diagram to scale (SVG, PDF or PNG)"
@@ -18,8 +18,9 @@ DESCRIPTION = ("Draw the mechanism and its construction to a stated scale: the p
                "the velocity or acceleration polygon beside the mechanism, the instant "
                "centers, the curvature construction, the free bodies and force polygons "
                "(-d forces, Fig. 11.5), or all of them on one sheet, with "
-               "a results table comparing the drawing with the analytic solution. The "
-               "output's suffix chooses the format (.svg, .pdf, .png).")
+               "a results table comparing the drawing with the analytic solution. A gear "
+               "file (docs/formats/gears.md) draws the pair in mesh (-d gears, Figs. 7.8-7.9, "
+               "7.18, 7.21). The output's suffix chooses the format (.svg, .pdf, .png).")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -62,6 +63,8 @@ def run(args: argparse.Namespace) -> int:
     if out.suffix.lower().lstrip(".") not in FORMATS and not dxf:
         raise InputError(f"cannot tell the format from {out.name!r}; use "
                          + ", ".join("." + f for f in (*FORMATS, "dxf")), key="--output")
+    if _is_gear_file(args.file, args.diagram):
+        return _draw_gears(args, out)
     mech = graphkin.load(args.file)
     sol = mech.solve()
     if dxf:
@@ -82,6 +85,55 @@ def run(args: argparse.Namespace) -> int:
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
     assert d.figure is not None
+    try:
+        save(d.figure, out, dpi=args.dpi)
+    except OSError as exc:
+        raise InputError(f"cannot write {out}: {exc.strerror or exc}", key="--output") from None
+    print(f"wrote {out}", file=sys.stderr)
+    return 0
+
+
+def _is_gear_file(path: str, diagram: str) -> bool:
+    """Whether ``path`` is a gear file; ``-d gears`` of anything else is one line, exit 2."""
+    from graphkin.errors import InputError
+    from graphkin.gears.file import gear_kind
+
+    found = gear_kind(path)
+    if found is not None and found[0] == "train":
+        raise InputError("a gear-train file is solved by graphkin gears FILE; only a pair in "
+                         "mesh is drawn", key="--diagram", file=path)
+    gears = found is not None
+    if diagram == "gears" and not gears:
+        raise InputError("-d gears draws a gear file (docs/formats/gears.md): a [gears.<name>] "
+                         "table for each gear of the pair", key="--diagram", file=path)
+    if gears and diagram not in ("gears", "all"):
+        raise InputError(f"a gear file is drawn with -d gears, not -d {diagram}",
+                         key="--diagram", file=path)
+    return gears
+
+
+def _draw_gears(args: argparse.Namespace, out: object) -> int:
+    """A pair of gears in mesh (Figs. 7.8-7.9, 7.17, 7.18, 7.21)."""
+    from pathlib import Path
+
+    from graphkin.errors import InputError
+    from graphkin.gears import layout
+    from graphkin.gears.file import load
+    from graphkin.render.gears import draw_gears
+    from graphkin.render.svg import save
+
+    assert isinstance(out, Path)
+    for option, value in (("--link", args.link), ("--sheet", args.sheet)):
+        if value is not None:
+            raise InputError(f"{option} is not used by a gear drawing", key=option,
+                             file=args.file)
+    if out.suffix.lower() == ".dxf":
+        raise InputError("a gear drawing is written as .svg, .pdf or .png", key="--output")
+    lay = layout(load(args.file))
+    if args.upto is not None and args.upto >= len(lay.construction):
+        raise InputError(f"the layout has {len(lay.construction)} steps (0 to "
+                         f"{len(lay.construction) - 1})", key="--upto", file=args.file)
+    d = draw_gears(lay, table=not args.no_table and args.upto is None, upto=args.upto)
     try:
         save(d.figure, out, dpi=args.dpi)
     except OSError as exc:

@@ -34,8 +34,18 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
+    from graphkin.gears.file import gear_kind
     from graphkin.output import OutputUnits, solution_to_dict, text_report
 
+    gears = gear_kind(args.file)
+    if gears is not None:   # a gear file or a gear-train file (docs/formats/gears.md)
+        from graphkin.commands.gears import report
+        from graphkin.errors import InputError
+
+        if args.units is not None:
+            raise InputError("a gear report is in the file's own units", key="--units",
+                             file=args.file)
+        return report(*gears, args.file, as_json=args.json, steps=args.steps)
     mech = graphkin.load(args.file)
     units = OutputUnits.of(mech.length_unit, args.units)
     sol = mech.solve()

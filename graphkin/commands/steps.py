@@ -25,7 +25,7 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p = command(sub, "steps", help=HELP, description=DESCRIPTION)
     p.add_argument("--diagram", "-d", default="posture",
                    choices=("posture", "velocity", "acceleration", "centers", "curvature",
-                            "inflection", "bobillier", "hartmann", "cubic", "forces"),
+                            "inflection", "bobillier", "hartmann", "cubic", "forces", "gears"),
                    help="which construction (default: posture); inflection, bobillier, "
                         "hartmann and cubic walk through one figure of the curvature sheet "
                         "(as draw -d does: the inflection and Bresse circles, Bobillier's "
@@ -50,6 +50,11 @@ def run(args: argparse.Namespace) -> int:
         from graphkin.files import check_output
 
         check_output(args.output, [args.file], "--output")
+    from graphkin.gears.file import gear_kind
+
+    gears = gear_kind(args.file)
+    if args.diagram == "gears" or gears is not None:
+        return _gears(gears, args)
     sol = graphkin.load(args.file).solve()
     if args.diagram == "forces":  # free bodies and force polygons (graphkin.render.forces)
         return _forces(sol, args)
@@ -89,4 +94,35 @@ def _forces(sol: object, args: argparse.Namespace) -> int:
             print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     except DiagramUnavailable as exc:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
+    return 0
+
+
+def _gears(found: tuple[str, dict] | None, args: argparse.Namespace) -> int:
+    """The layout of a pair in mesh, one frame per step (Sec. 7.5, Figs. 7.8-7.9)."""
+    from pathlib import Path
+
+    from graphkin.errors import InputError
+    from graphkin.gears import layout
+    from graphkin.gears.file import from_dict
+    from graphkin.render.gears import gear_frames, gear_steps_html
+
+    if found is None or found[0] != "pair":
+        raise InputError("-d gears walks through the layout of a pair of gears in mesh: a gear "
+                         "file with [gears.<name>] tables (docs/formats/gears.md)",
+                         key="--diagram", file=args.file)
+    if args.diagram not in ("gears", "posture"):
+        raise InputError(f"a gear file is taught with -d gears, not -d {args.diagram}",
+                         key="--diagram", file=args.file)
+    lay = layout(from_dict(found[1], args.file))
+    if args.output is not None:
+        out = write_text(args.output, gear_steps_html(lay), "--output")
+        print(f"wrote {out}", file=sys.stderr)
+    if args.frames is not None:
+        d = Path(args.frames)
+        with writing(f"into {d}", "--frames"):
+            d.mkdir(parents=True, exist_ok=True)
+            frames = gear_frames(lay)
+            for k, (_, _, svg) in enumerate(frames):
+                (d / f"gears-{k:02d}.svg").write_text(svg, encoding="utf-8")
+        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     return 0

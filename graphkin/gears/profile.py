@@ -1,0 +1,100 @@
+"""The teeth of a gear as outlines to draw: involute flanks, top and bottom lands (Sec. 7.5).
+
+A tooth centred on the polar angle ψ has its flanks at ``ψ ± β(r)`` where
+``β(r) = t_p / 2R + inv φ − inv ϕ(r)`` is its angular half-thickness
+(Sec. 7.10, Eq. d); inside the base circle the flank is carried down to the
+dedendum circle by a radial line (Step 6: "this portion of the curve is not
+involute"; the fillet and any undercut are not drawn).  The top land is an
+arc of the addendum circle, the bottom land an arc of the dedendum circle
+(Step 8).  One template tooth is computed and turned to every tooth's
+angle with numpy: no loop over teeth.
+
+:func:`mesh_phases` sets the two gears of a pair as in Fig. 7.9: the
+driving flank of a tooth of 2 and the driven flank of a tooth of 3 touch at
+the pitch point P.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Secs. 7.5 (Steps 6-8), 7.10.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from graphkin.gears.mesh import GearPair
+from graphkin.gears.tooth import Gear
+
+__all__ = ["tooth_template", "gear_teeth", "mesh_phases"]
+
+FLANK = 24
+"""Points along each involute flank."""
+LAND = 8
+"""Points along each top or bottom land."""
+
+
+def tooth_template(g: Gear, outside: float) -> np.ndarray:
+    """One tooth centred on the polar angle 0, with the bottom land to the next tooth.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n, 2)`` polar coordinates ``(r, θ)``: up the flank at ``−β``
+        (the clockwise side), across the top land, down the flank at ``+β``,
+        and along the bottom land to ``2π/N − β`` (where the next tooth starts).
+    """
+    rb, rr = g.base_radius, g.root_radius
+    tip = min(outside, g.pointed_radius())
+    lo = max(rb, rr)
+    if tip <= lo:   # no involute above the root: a tooth of radial lines
+        lo = tip
+    r = np.linspace(lo, tip, FLANK)
+    beta = np.asarray(g.half_angle(r), dtype=float)
+    if rr < rb:   # the radial line from the dedendum circle up to the base circle
+        r = np.concatenate([[rr], r])
+        beta = np.concatenate([[beta[0]], beta])
+    up = np.stack([r, -beta], axis=-1)
+    top_t = np.linspace(-beta[-1], beta[-1], LAND)[1:-1]
+    top = np.stack([np.full_like(top_t, tip), top_t], axis=-1)
+    down = np.stack([r[::-1], beta[::-1]], axis=-1)
+    pitch = 2.0 * math.pi / g.teeth
+    root_t = np.linspace(beta[0], pitch - beta[0], LAND)[1:]
+    bottom = np.stack([np.full_like(root_t, rr), root_t], axis=-1)
+    return np.concatenate([up, top, down, bottom])
+
+
+def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float
+               ) -> np.ndarray:
+    """Every tooth of a gear, shape ``(N, n, 2)`` in Cartesian coordinates.
+
+    Parameters
+    ----------
+    g : Gear
+    outside : float
+        The addendum-circle radius as cut.
+    center : (float, float)
+        The gear's center.
+    phase : float
+        The polar angle of the center line of tooth 0 (radians).
+    """
+    tpl = tooth_template(g, outside)
+    angles = phase + 2.0 * math.pi * np.arange(g.teeth) / g.teeth
+    th = tpl[None, :, 1] + angles[:, None]
+    r = np.broadcast_to(tpl[None, :, 0], th.shape)
+    return np.stack([center[0] + r * np.cos(th), center[1] + r * np.sin(th)], axis=-1)
+
+
+def mesh_phases(pair: GearPair) -> tuple[float, float]:
+    """The tooth phases ψ2, ψ3 of the layout of :func:`graphkin.gears.mesh.mesh_construction`.
+
+    Gear 2 (above, clockwise) drives with the clockwise flank of a tooth,
+    ``ψ2 − β2(R'_2) = −90°`` at P; gear 3 (below) is driven on the clockwise
+    flank of its tooth, ``ψ3 − β3(R'_3) = 90°``.  The two flanks are tangent
+    at P, their common normal the line of action.
+    """
+    r2p, r3p = pair.operating_pitch_radii
+    b2 = float(pair.driver.half_angle(r2p))
+    b3 = float(pair.driven.half_angle(r3p))
+    return -math.pi / 2 + b2, math.pi / 2 + b3

@@ -1,0 +1,179 @@
+"""The report of a gear pair in mesh: every quantity of Secs. 7.1-7.11 with its unit.
+
+Lengths are in the gear file's length unit, angles in degrees (and the
+angles of approach and recess in radians as well, as Eqs. 7.7-7.8 give
+them).  Each measured quantity of the layout stands beside the book's closed
+form (:mod:`graphkin.gears.analytic`), so a reader sees the construction
+and the equation agree.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Secs. 7.1-7.11.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from graphkin.gears import analytic
+from graphkin.gears.mesh import Contact, GearPair, MeshLayout
+from graphkin.gears.tooth import Gear
+from graphkin.text import g6, table
+
+__all__ = ["gears_json", "gears_text", "undercut_offset"]
+
+
+def undercut_offset(g: Gear) -> float:
+    """The least offset of the rack cutter that cuts ``g`` without undercut (Eq. 7.21).
+
+    The cutter's addendum is the gear's dedendum less the clearance.
+    """
+    return analytic.offset_for_no_undercut(g.dedendum - g.clearance, g.pitch_radius,
+                                           g.pressure_angle)
+
+
+def _gear(g: Gear, outside: float, operating: float, pair: GearPair) -> dict[str, Any]:
+    tol = pair.tol.length(g.pitch_radius)
+    k = (g.dedendum - g.clearance) / g.module
+    pointed = g.pointed_radius()
+    need = undercut_offset(g)
+    return {
+        "name": g.name, "link": g.link, "teeth": g.teeth,
+        "module": g.module, "diametral_pitch": 1.0 / g.module,
+        "pressure_angle": math.degrees(g.pressure_angle),
+        "pitch_radius": g.pitch_radius, "operating_pitch_radius": operating,
+        "base_radius": g.base_radius, "addendum": g.addendum, "dedendum": g.dedendum,
+        "offset": g.offset, "outside_radius": outside, "root_radius": g.root_radius,
+        "circular_pitch": g.circular_pitch, "base_pitch": g.base_pitch,
+        "thickness_pitch": g.thickness,
+        "thickness_base": float(g.thickness_at(g.base_radius)),
+        "thickness_outside": float(g.thickness_at(outside)),
+        "thickness_operating_pitch": float(g.thickness_at(operating)),
+        "pointed_radius": pointed, "pointed": bool(outside > pointed + tol),
+        "undercut_by_rack": bool(g.offset < need - tol),
+        "offset_for_no_undercut": need,
+        "minimum_teeth_rack": math.ceil(analytic.minimum_teeth_rack(k, g.pressure_angle)
+                                        - 1e-9),
+    }
+
+
+def gears_json(lay: MeshLayout) -> dict[str, Any]:
+    """The report as plain data (``graphkin gears --json``; keys in ``docs/formats/gears.md``)."""
+    pair = lay.pair
+    g2, g3 = pair.driver, pair.driven
+    ra2, ra3 = pair.outside_radii
+    r2p, r3p = pair.operating_pitch_radii
+    phi = lay.operating_pressure_angle
+    cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius, pair.center,
+                                      analytic.operating_pressure_angle(
+                                          pair.standard_center_distance, pair.center,
+                                          g2.pressure_angle))
+    pitch_op = 2.0 * math.pi * r2p / g2.teeth
+    backlash = pitch_op - float(g2.thickness_at(r2p)) - float(g3.thickness_at(r3p))
+    if backlash < pair.tol.length(pair.center):   # round-off of the thicknesses' sum
+        backlash = 0.0
+    k3 = (g3.dedendum - g3.clearance) / g3.module
+    return {
+        "title": pair.title,
+        "units": {"length": pair.units, "angle": "deg"},
+        "gears": {g.name: _gear(g, ra, rp, pair)
+                  for g, ra, rp in ((g2, ra2, r2p), (g3, ra3, r3p))},
+        "mesh": {
+            "driver": g2.name, "driven": g3.name,
+            "ratio": g3.teeth / g2.teeth,
+            "standard_center_distance": pair.standard_center_distance,
+            "tight_center_distance": pair.tight_center_distance,
+            "center_distance": pair.center,
+            "operating_pressure_angle": math.degrees(phi),
+            "backlash": backlash,
+            "points": {k: list(v) for k, v in lay.points.items()},
+            "approach_CP": lay.approach, "recess_PD": lay.recess, "path_CD": lay.path,
+            "contact_ratio": lay.contact_ratio,
+            "contact_ratio_eq_7_9": analytic.contact_ratio(cp, pd, g2.base_pitch),
+            "approach_angles": {"alpha2": math.degrees(lay.approach_angles[0]),
+                                "alpha3": math.degrees(lay.approach_angles[1])},
+            "recess_angles": {"beta2": math.degrees(lay.recess_angles[0]),
+                              "beta3": math.degrees(lay.recess_angles[1])},
+            "interference": lay.interference,
+            "start": str(lay.start), "end": str(lay.end),
+            "AC": max(lay.beyond_a, 0.0), "BD": max(lay.beyond_b, 0.0),
+            "involute_contact_ratio": lay.involute_contact_ratio,
+            "minimum_driver_teeth": math.ceil(
+                analytic.minimum_teeth(k3, g2.pressure_angle, g3.teeth) - 1e-9),
+        },
+    }
+
+
+def gears_text(lay: MeshLayout) -> str:
+    """The report as text (``graphkin gears FILE``)."""
+    data = gears_json(lay)
+    u = data["units"]["length"]
+    m = data["mesh"]
+    g2, g3 = (data["gears"][lay.pair.driver.name], data["gears"][lay.pair.driven.name])
+    lines = [data["title"] or f"Gears {g2['teeth']} and {g3['teeth']} teeth in mesh", ""]
+    rows = [("", f"{g2['name']} ({g2['link']}, driver)", f"{g3['name']} ({g3['link']})", "")]
+    spec = [
+        ("teeth N", "teeth", ""), ("module m", "module", u),
+        ("diametral pitch P", "diametral_pitch", f"teeth/{u}"),
+        ("pressure angle φ", "pressure_angle", "°"),
+        ("pitch radius R", "pitch_radius", u), ("base radius r", "base_radius", u),
+        ("addendum a", "addendum", u), ("dedendum d", "dedendum", u),
+        ("cutter offset e", "offset", u), ("outside radius", "outside_radius", u),
+        ("root radius", "root_radius", u), ("circular pitch p", "circular_pitch", u),
+        ("base pitch p_b", "base_pitch", u),
+        ("thickness at R (Eq. 7.17)", "thickness_pitch", u),
+        ("thickness at r (Eq. 7.16)", "thickness_base", u),
+        ("thickness at outside", "thickness_outside", u),
+        ("operating pitch radius R'", "operating_pitch_radius", u),
+    ]
+    for name, key, unit in spec:
+        rows.append((name, g6(g2[key]), g6(g3[key]), unit))
+    rows.append(("undercut by a rack cutter", _yes(g2["undercut_by_rack"]),
+                 _yes(g3["undercut_by_rack"]), ""))
+    rows.append(("pointed teeth", _yes(g2["pointed"]), _yes(g3["pointed"]), ""))
+    lines += table(rows, "  ")
+    lines.append("")
+    c2, c3 = g2["name"], g3["name"]
+    pair_rows = [
+        ("speed ratio ω2/ω3 = N3/N2", g6(m["ratio"]), ""),
+        ("standard center distance R2 + R3", g6(m["standard_center_distance"]), u),
+        ("center distance", g6(m["center_distance"]), u),
+        ("operating pressure angle φ'", g6(m["operating_pressure_angle"]), "°"),
+        ("backlash on the pitch circles", g6(m["backlash"]), u),
+        ("approach CP (Eq. 7.10)", g6(m["approach_CP"]), u),
+        ("recess PD (Eq. 7.11)", g6(m["recess_PD"]), u),
+        ("path of contact CD", g6(m["path_CD"]), u),
+        ("contact ratio CD/p_b, construction", g6(m["contact_ratio"]), ""),
+        ("contact ratio, Eq. (7.9)", g6(m["contact_ratio_eq_7_9"]), ""),
+        (f"angles of approach α2 ({c2}), α3 ({c3})",
+         f"{g6(m['approach_angles']['alpha2'])}, {g6(m['approach_angles']['alpha3'])}", "°"),
+        (f"angles of recess β2 ({c2}), β3 ({c3})",
+         f"{g6(m['recess_angles']['beta2'])}, {g6(m['recess_angles']['beta3'])}", "°"),
+    ]
+    lines += table(pair_rows, "  ")
+    lines.append("")
+    if lay.interference:
+        where = []
+        if lay.start == Contact.INTERFERENCE:
+            where.append(f"contact begins at C, {g6(m['AC'])} {u} before the interference "
+                         f"point A: the tip of {c3} digs into the flank of {c2}")
+        if lay.end == Contact.INTERFERENCE:
+            where.append(f"contact ends at D, {g6(m['BD'])} {u} after the interference point "
+                         f"B: the tip of {c2} digs into the flank of {c3}")
+        lines.append("  Interference (Sec. 7.7, Eq. 7.12): " + "; ".join(where) + ".")
+        lines.append(f"  The involute action (from A or C to D or B) has a contact ratio of "
+                     f"{g6(m['involute_contact_ratio'])}.")
+    else:
+        lines.append("  No interference: C and D lie between the interference points A and B "
+                     "(Eq. 7.12).")
+    lines.append(f"  The fewest teeth on {c2} that mesh with {g3['teeth']} teeth without "
+                 f"interference: {m['minimum_driver_teeth']}.")
+    if m["contact_ratio"] < 1.0:
+        lines.append("  The contact ratio is below 1: at times no pair of teeth is in contact "
+                     "(Sec. 7.9).")
+    return "\n".join(lines) + "\n"
+
+
+def _yes(flag: bool) -> str:
+    return "yes" if flag else "no"
