@@ -124,7 +124,7 @@ def undercuts(cam: Cam) -> list[Undercut]:
         bad = (pr.rho_pitch > 0) & (pr.rho_pitch < cam.follower.roller)
     else:
         return []
-    out = []
+    out: list[Undercut] = []
     if not np.any(bad):
         return out
     seg = cam.program.evaluate(th).segment
