@@ -39,7 +39,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GALLERY", "check_keys", "read_units",
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GALLERY", "CAM", "check_keys", "read_units",
            "nearest"]
 
 Schema = Mapping[str, Any]
@@ -101,6 +101,19 @@ VECTOR: Schema = {
     "gallery": GALLERY,
 }
 """Every key of a vector file (``graphkin vector``, ``docs/formats/vector.md``)."""
+
+CAM: Schema = {
+    "title": None,
+    "units": {"length": None},
+    "cam": {"prime": None, "rotation": None, "speed": None},
+    "follower": {"kind": None, "offset": None, "roller": None, "face": None, "pivot": None,
+                 "arm": None, "face_offset": None, "rise": None},
+    "segment": {"motion": None, "lift": None, "angle": None, "rest": None, "name": None,
+                "points": None},
+    "limits": {"pressure_angle": None, "radius": None},
+    "gallery": GALLERY,
+}
+"""Every key of a cam file (``graphkin cam``, ``docs/formats/cam.md``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

@@ -177,9 +177,11 @@ def check(cam: Cam) -> Checks:
     if not cam.follower.kind.flat:
         pitch = extreme(lambda t: profile(cam, t).rho_pitch, maximum=False,   # type: ignore
                         mask=lambda t: profile(cam, t).rho_pitch > 0)          # type: ignore
-    rho = extreme(lambda t: profile(cam, t).rho, maximum=False,
-                  mask=lambda t: profile(cam, t).rho > 0 if cam.follower.kind.flat
-                  else profile(cam, t).rho_pitch > cam.follower.roller)  # type: ignore
+    if cam.follower.kind.flat:     # a flat face's profile is convex unless undercut
+        rho = extreme(lambda t: profile(cam, t).rho, maximum=False)
+    else:                           # where the pitch curve is convex (concave parts are fine)
+        rho = extreme(lambda t: profile(cam, t).rho, maximum=False,
+                      mask=lambda t: profile(cam, t).rho_pitch > 0)  # type: ignore
     return Checks(pressure, rho, pitch, undercuts(cam), face_width(cam))
 
 

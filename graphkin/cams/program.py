@@ -184,7 +184,7 @@ class Program:
     def label(self, k: int) -> str:
         """How a message names segment ``k``: ``segment 2 (cycloidal rise)``."""
         s = self.segments[k]
-        what = s.name or f"{s.motion.value} {s.kind}" if s.kind != "dwell" else "dwell"
+        what = s.name or (f"{s.motion.value} {s.kind}" if s.kind != "dwell" else "dwell")
         return f"segment {k + 1} ({what})"
 
     @property
