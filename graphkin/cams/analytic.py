@@ -177,6 +177,8 @@ def profile(cam: Cam, theta: Array) -> Profile:
     54.141³/2181.3 = 72.757; see docs/cams.md).
     """
     k = cam.program.evaluate(np.atleast_1d(np.asarray(theta, dtype=float)))
-    if cam.follower.kind.flat:
-        return _flat(cam, k)
-    return _roller(cam, k)
+    # where the follower turns with the cam the envelope has no point (NaN), said by undercuts()
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if cam.follower.kind.flat:
+            return _flat(cam, k)
+        return _roller(cam, k)

@@ -117,13 +117,14 @@ def undercuts(cam: Cam) -> list[Undercut]:
     """
     th = _grid()
     pr = profile(cam, th)
+    lost = ~np.isfinite(pr.contact)          # no envelope point: the face turns with the cam
     if cam.follower.kind.flat:
-        bad = pr.rho < 0
+        bad = (pr.rho < 0) | lost
     elif cam.follower.kind.roller:
         assert pr.rho_pitch is not None
-        bad = (pr.rho_pitch > 0) & (pr.rho_pitch < cam.follower.roller)
+        bad = ((pr.rho_pitch > 0) & (pr.rho_pitch < cam.follower.roller)) | lost
     else:
-        return []
+        bad = lost
     out: list[Undercut] = []
     if not np.any(bad):
         return out

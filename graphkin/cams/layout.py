@@ -74,7 +74,8 @@ class Layout:
     def contact(self, theta: Array | list[float]) -> Array:
         """The profile: the contact points C at cam angles Θ, complex ``u + iv`` (cam frame)."""
         c = self.evaluate(theta)["C"]
-        return c[..., 0] / c[..., 2] + 1j * c[..., 1] / c[..., 2]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return c[..., 0] / c[..., 2] + 1j * c[..., 1] / c[..., 2]
 
 
 def stations(n: int) -> Array:

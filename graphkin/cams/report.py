@@ -18,12 +18,14 @@ import numpy as np
 
 from graphkin.cams import design
 from graphkin.cams.analytic import profile
-from graphkin.cams.layout import stations
+from graphkin.cams.layout import layout, stations
+from graphkin.cams.model import FollowerKind
 from graphkin.cams.parse import CamFile
 from graphkin.errors import InputError
 from graphkin.text import g6, table
 
-__all__ = ["refuse_undercut", "cam_json", "cam_text", "profile_table", "profile_csv"]
+__all__ = ["refuse_undercut", "cam_json", "cam_text", "profile_table", "profile_csv",
+           "steps_text"]
 
 
 def _deg(rad: float) -> float:
@@ -43,8 +45,11 @@ def refuse_undercut(cf: CamFile) -> None:
     if not cuts:
         return
     c = cuts[0]
-    what = ("ρ = R0 + Y + y'' < 0, Eq. 6.27" if cam.follower.kind.flat
-            else "the roller is larger than the pitch curve's radius of curvature, Fig. 6.29")
+    what = {FollowerKind.FLAT_FACE: "ρ = R0 + Y + y'' < 0, Eq. 6.27",
+            FollowerKind.OSCILLATING_FLAT_FACE: "the face's envelope folds back on itself",
+            FollowerKind.KNIFE_EDGE: "the pitch curve has no point there",
+            }.get(cam.follower.kind,
+                  "the roller is larger than the pitch curve's radius of curvature, Fig. 6.29")
     need = _safe(lambda: design.min_prime_for_curvature(cam, 0.0))
     more = f"; a prime circle of at least {g6(need)} {cam.unit} would do" if need else ""
     raise InputError(f"{cam.program.label(c.segment)}: the profile is undercut from "
@@ -196,3 +201,19 @@ def profile_csv(cf: CamFile, n: int = 360) -> str:
     head = f"theta_deg,u_{u},v_{u},R_{u},psi_deg,rho_{u}"
     return "\n".join([head] + [",".join(f"{x:.12g}" for x in row)
                                for row in profile_table(cf, n)]) + "\n"
+
+
+def steps_text(cf: CamFile) -> str:
+    """The recorded steps of one station of the layout, in order, with what each one draws.
+
+    The same steps are evaluated at every station (Sec. 6.4): this is the
+    list a student follows with ruler, compass and dividers.
+    """
+    cx = layout(cf.cam).construction
+    rows = [("#", "label", "operation", "from", "what it is")]
+    for s in cx:
+        rows.append((str(s.index + 1), s.label, s.op, ", ".join(s.inputs), s.note))
+    head = [f"The layout by inversion, one station (Sec. 6.4): {cx.title}",
+            "The given inputs phi, Y, y1 are read off the displacement diagram at the station.",
+            ""]
+    return "\n".join(head + table(rows, "  ")) + "\n"

@@ -44,6 +44,8 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="inverted postures drawn in the layout (default 12)")
     p.add_argument("--points", type=bounded_int(8, 100_000), default=360,
                    help="points of the profile in the CSV and DXF (default 360)")
+    p.add_argument("--steps", action="store_true",
+                   help="also list the recorded steps of one station of the layout")
     p.add_argument("--allow-undercut", action="store_true",
                    help="report and draw an undercut cam instead of refusing it")
     return p
@@ -52,7 +54,7 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     from graphkin.cams.parse import load_cam
-    from graphkin.cams.report import cam_json, cam_text, profile_csv, refuse_undercut
+    from graphkin.cams.report import cam_json, cam_text, profile_csv, refuse_undercut, steps_text
 
     cf = load_cam(args.file)
     if not args.allow_undercut:
@@ -82,4 +84,6 @@ def run(args: argparse.Namespace) -> int:
         sys.stdout.write("\n")
     else:
         sys.stdout.write(cam_text(cf))
+        if args.steps:
+            sys.stdout.write("\n" + steps_text(cf))
     return 0

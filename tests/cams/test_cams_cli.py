@@ -169,3 +169,34 @@ def test_a_jump_in_acceleration_is_a_warning_on_stderr(capsys, tmp_path):
     assert rc == 0
     assert "warning: segment 2 (cycloidal return): y'' (acceleration) jumps" in err
     assert "at Θ = 180°" in err and err.count("warning") == 2
+
+
+def test_steps_lists_one_station_of_the_layout(capsys):
+    rc, out, _ = _run(capsys, CAMS / "ex6_5_roller.toml", "--steps")
+    assert rc == 0
+    steps = out.split("The layout by inversion")[1]
+    for label in ("O2", "k0", "kb", "A", "axis", "T", "I24", "roller", "n", "C"):
+        assert f"  {label} " in steps, label
+
+
+def test_a_face_that_turns_with_the_cam_cannot_follow(capsys, tmp_path):
+    """An oscillating face whose arm turns as fast as the cam (ω4 = ω2) has no envelope point."""
+    f = tmp_path / "c.toml"
+    f.write_text("""units = "in"
+[cam]
+prime = 1.5
+[follower]
+kind = "oscillating-flat-face"
+pivot = [3.0, 0.0]
+rise = "ccw"
+[[segment]]
+motion = "harmonic"
+lift = "1 rad"
+angle = 90
+[[segment]]
+motion = "harmonic"
+lift = "-1 rad"
+angle = 270
+""")
+    rc, out, err = _run(capsys, f)
+    assert rc == 2 and "cannot follow" in err and err.count("\n") == 1

@@ -136,3 +136,18 @@ def test_the_least_prime_circle_gives_exactly_the_pressure_angle(prog, phi, offs
         return
     got = check(dataclasses.replace(cam, prime=r0)).pressure.value
     assert abs(got - phi) < 1e-7
+
+
+def test_undercut_verdicts_do_not_move_under_1e_12():
+    """Fig. 6.25 perturbed by 1e-12 of its sizes: the same undercut, in the same segment."""
+    def cuts(eps):
+        p = Program((Segment(Motion.CYCLOIDAL, 100.0 * (1 + eps), D(90)),
+                     Segment(Motion.CYCLOIDAL, -100.0 * (1 + eps), D(270))))
+        return undercuts(Cam(p, 25.0 * (1 - eps), Follower(FollowerKind.FLAT_FACE)))
+
+    base = cuts(0.0)
+    for eps in (1e-12, -1e-12):
+        moved = cuts(eps)
+        assert [c.segment for c in moved] == [c.segment for c in base]
+        assert all(abs(a.start - b.start) < 1e-3 and abs(a.end - b.end) < 1e-3
+                   for a, b in zip(moved, base))
