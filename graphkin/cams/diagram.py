@@ -1,4 +1,10 @@
-"""The book's graphic construction of the harmonic and cycloidal displacement diagrams.
+"""The book's graphic constructions of the parabolic, harmonic and cycloidal diagrams.
+
+Fig. 6.5b (parabolic motion): in the rectangle of the first half (β/2 by
+L/2), the abscissa and the far ordinate are divided into the same number of
+equal parts; point k of the parabola is where the ordinate through
+abscissa division k meets the line from the origin O to division k of the
+far ordinate.  The second half is the same from the top corner B.
 
 Fig. 6.6 (simple harmonic motion): a semicircle on the lift L as diameter
 and the abscissa β are divided into the same number of equal parts; each
@@ -16,7 +22,7 @@ Eqs. (6.12a) and (6.13a) (tested).  The abscissa is drawn ``width`` long for β.
 
 References
 ----------
-Uicker, Pennock & Shigley, 5th ed., Sec. 6.3, Figs. 6.6 and 6.7.
+Uicker, Pennock & Shigley, 5th ed., Sec. 6.3, Figs. 6.5b, 6.6 and 6.7.
 """
 
 from __future__ import annotations
@@ -30,7 +36,7 @@ from graphkin.construction import Construction
 from graphkin.construction.protocol import Evaluation
 from graphkin.construction.step import Role
 
-__all__ = ["DiagramConstruction", "harmonic_diagram", "cycloidal_diagram"]
+__all__ = ["DiagramConstruction", "harmonic_diagram", "cycloidal_diagram", "parabolic_diagram"]
 
 Array = np.ndarray
 
@@ -56,6 +62,11 @@ class DiagramConstruction:
     def given(self) -> dict[str, Array]:
         """The inputs: for division k = 0..n, its angle on the circle and its abscissa."""
         k = np.arange(self.divisions + 1, dtype=float)
+        if self.construction.title.startswith("parabolic"):
+            t = k / self.divisions
+            half = self.width / 2
+            return {"x": half * t, "q": self.lift / 2 * t,
+                    "x2": self.width - half * t, "q2": self.lift - self.lift / 2 * t}
         step = math.pi if self.construction.title.startswith("harmonic") else 2 * math.pi
         sign = 1.0 if self.construction.title.startswith("harmonic") else -1.0
         return {"angle": sign * step * k / self.divisions, "x": self.width * k / self.divisions}
@@ -65,9 +76,17 @@ class DiagramConstruction:
         return self.construction.evaluate(self.given(), strict=False)
 
     def points(self) -> Array:
-        """The diagram's points ``(x, y)``, one per division, shape ``(n + 1, 2)``."""
-        d = self.evaluate()["D"]
-        return d[..., :2] / d[..., 2:3]
+        """The diagram's points ``(x, y)``, one per division, shape ``(n + 1, 2)``.
+
+        For the parabolic construction, both halves: ``(2n + 2, 2)``, in order of x.
+        """
+        ev = self.evaluate()
+        d = ev["D"]
+        pts = d[..., :2] / d[..., 2:3]
+        if "D2" in ev:
+            e = ev["D2"]
+            pts = np.concatenate([pts, (e[..., :2] / e[..., 2:3])[::-1]])
+        return pts
 
 
 def harmonic_diagram(lift: float, width: float, divisions: int = 6) -> DiagramConstruction:
@@ -128,4 +147,37 @@ def cycloidal_diagram(lift: float, width: float, divisions: int = 6) -> DiagramC
     cx.add("meet", ("h", "axis"), ("Q",), note="onto the ordinate")
     cx.add("parallel", ("OB", "Q"), ("g",), note="from the ordinate, parallel to OB")
     cx.add("meet", ("g", "v"), ("D",), role=Role.RESULT, note="point k of the diagram")
+    return DiagramConstruction(cx, divisions, lift, width)
+
+
+def parabolic_diagram(lift: float, width: float, divisions: int = 4) -> DiagramConstruction:
+    """Fig. 6.5b: the parabolic rise (Eqs. 6.5a, 6.6a) drawn in two rectangles.
+
+    Examples
+    --------
+    >>> d = parabolic_diagram(2.0, 4.0, divisions=2)
+    >>> [round(float(y), 12) for y in d.points()[:, 1]]    # 2L(θ/β)², L(1 − 2(1 − θ/β)²)
+    [0.0, 0.25, 1.0, 1.0, 1.75, 2.0]
+    """
+    cx = Construction(title="parabolic displacement diagram (Fig. 6.5b)")
+    cx.add("point", (), ("O",), xy=(0.0, 0.0), role=Role.GIVEN, note="the origin O")
+    cx.add("point", (), ("B",), xy=(width, lift), role=Role.GIVEN, note="B: the end of the rise")
+    cx.add("scalar", (), ("mid",), value=width / 2, note="the midpoint of β, where the "
+           "parabolas meet")
+    cx.add("coordinate_line", ("mid",), ("m",), axis="x", note="the far ordinate of each "
+           "rectangle")
+    for tag, corner in (("", "O"), ("2", "B")):
+        cx.add("input", (), (f"x{tag}",), name=f"x{tag}", role=Role.GIVEN,
+               note="the abscissa of the half divided into equal parts")
+        cx.add("input", (), (f"q{tag}",), name=f"q{tag}", role=Role.GIVEN,
+               note="the far ordinate divided into the same number of parts")
+        cx.add("coordinate_line", (f"q{tag}",), (f"hq{tag}",), axis="y",
+               note="the height of division k on the far ordinate")
+        cx.add("meet", ("m", f"hq{tag}"), (f"Q{tag}",), note="division k of the far ordinate")
+        cx.add("join", (corner, f"Q{tag}"), (f"r{tag}",),
+               note=f"the line from {corner} to division k of the far ordinate")
+        cx.add("coordinate_line", (f"x{tag}",), (f"v{tag}",), axis="x",
+               note="the ordinate through abscissa division k")
+        cx.add("meet", (f"r{tag}", f"v{tag}"), (f"D{tag}",), role=Role.RESULT,
+               note="point k of the parabola")
     return DiagramConstruction(cx, divisions, lift, width)

@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from graphkin.cams import Motion, Program, Segment
-from graphkin.cams.diagram import cycloidal_diagram, harmonic_diagram
+from graphkin.cams.diagram import cycloidal_diagram, harmonic_diagram, parabolic_diagram
 
 
 def _closed_form(motion, lift, k, n):
@@ -38,3 +38,18 @@ def test_the_steps_are_the_book_s():
     assert [s.op for s in cx if s.label in ("OB", "k", "g", "D")] == ["join", "circle", "parallel",
                                                                      "meet"]
     assert cx.step_of("k").params["radius"] == 3.0 / (2 * math.pi)
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.floats(0.1, 100), st.floats(0.5, 20), st.integers(1, 12))
+def test_the_parabolic_construction_lands_on_eqs_6_5_and_6_6(lift, width, n):
+    """Fig. 6.5b, both halves: Ex 6.1's parabolas at θ = (β/2)(k/n) and β − (β/2)(k/n)."""
+    pts = parabolic_diagram(lift, width, n).points()
+    t = np.arange(n + 1) / n
+    k = np.concatenate([t / 2, (1 - t / 2)[::-1]])           # θ/β of each point
+    assert np.allclose(pts[:, 0], width * k, rtol=0, atol=1e-12 * width)
+    beta = math.radians(120)
+    p = Program((Segment(Motion.PARABOLIC, lift, beta),
+                 Segment(Motion.CYCLOIDAL, -lift, 2 * math.pi - beta)))
+    y = p.evaluate(np.minimum(k, 1 - 1e-15) * beta).Y
+    assert np.allclose(pts[:, 1], y, rtol=0, atol=1e-12 * (lift + width))
