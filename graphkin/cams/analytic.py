@@ -60,6 +60,8 @@ class Profile:
         Flat faces: where the contact lies along the face, measured from the
         foot of the perpendicular from O2 (translating, Eq. 6.26: ``y'``) or
         from the pivot's foot (oscillating).
+    normal : array, complex
+        The profile's unit normal at the contact, pointing into the cam (cam frame).
     """
 
     theta: Array
@@ -69,6 +71,7 @@ class Profile:
     rho_pitch: Array | None
     pressure: Array
     face: Array | None
+    normal: Array | None = None
 
 
 def pitch(cam: Cam, k: Kinematics) -> tuple[Array, Array, Array, Array]:
@@ -114,7 +117,7 @@ def _roller(cam: Cam, k: Kinematics) -> Profile:
     rho_pitch = -s * rho_book
     normal_fixed = np.exp(1j * s * k.theta) * (-inward)
     phi = s * np.angle(normal_fixed / d)
-    return Profile(k.theta, contact, p, rho_pitch - rr, rho_pitch, phi, None)
+    return Profile(k.theta, contact, p, rho_pitch - rr, rho_pitch, phi, None, inward)
 
 
 def _flat(cam: Cam, k: Kinematics) -> Profile:
@@ -154,7 +157,7 @@ def _flat(cam: Cam, k: Kinematics) -> Profile:
         phi = s * np.angle(nf / (dv / np.abs(dv)))
         arm = np.exp(1j * (cam.arm0 + sig * k.Y))
         along = (np.conj(arm) * (cf - o4)).real
-    return Profile(k.theta, contact, None, rho, None, phi, along)
+    return Profile(k.theta, contact, None, rho, None, phi, along, -N)
 
 
 def profile(cam: Cam, theta: Array) -> Profile:

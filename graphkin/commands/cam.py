@@ -19,7 +19,7 @@ import json
 import sys
 from pathlib import Path
 
-from graphkin.commands._args import about, bounded_int, command, write_text, writing
+from graphkin.commands._args import about, bounded_int, command, finite_float, write_text, writing
 from graphkin.errors import InputError
 
 __all__ = ["add_parser", "run"]
@@ -44,6 +44,10 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="inverted postures drawn in the layout (default 12)")
     p.add_argument("--points", type=bounded_int(8, 100_000), default=360,
                    help="points of the profile in the CSV and DXF (default 360)")
+    p.add_argument("--equivalent", type=finite_float, default=None, metavar="ANGLE",
+                   help="write the cam mechanism at cam angle ANGLE (degrees) as its "
+                        "equivalent linkage, a mechanism file (to -o OUT.toml, or print it), "
+                        "for solve, draw, steps (Sec. 4.7)")
     p.add_argument("--steps", action="store_true",
                    help="also list the recorded steps of one station of the layout")
     p.add_argument("--allow-undercut", action="store_true",
@@ -61,6 +65,20 @@ def run(args: argparse.Namespace) -> int:
         refuse_undercut(cf)
     for w in cf.cam.program.warnings():
         sys.stderr.write(f"{args.file}: warning: {w}\n")
+    if args.equivalent is not None:
+        import math
+
+        from graphkin.cams.equivalent import equivalent_toml
+
+        text = equivalent_toml(cf.cam, math.radians(args.equivalent))
+        if args.output is None:
+            sys.stdout.write(text)
+        elif Path(args.output).suffix.lower() != ".toml":
+            raise InputError("--equivalent writes a mechanism file: -o OUT.toml",
+                             key="--output")
+        else:
+            write_text(args.output, text, "--output")
+        return 0
     if args.output:
         out = Path(args.output)
         ext = out.suffix.lower()

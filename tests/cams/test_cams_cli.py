@@ -200,3 +200,15 @@ angle = 270
 """)
     rc, out, err = _run(capsys, f)
     assert rc == 2 and "cannot follow" in err and err.count("\n") == 1
+
+
+def test_the_equivalent_linkage_is_a_mechanism_file_graphkin_solves(capsys, tmp_path):
+    """Ex 6.6 at 30°: the written linkage solves; its follower moves at y'ω = 25.981 mm/s."""
+    out = tmp_path / "eq.toml"
+    assert _run(capsys, CAMS / "ex6_6_roller.toml", "--equivalent", "30", "-o", out)[0] == 0
+    rc = main(["solve", str(out), "--json"])
+    d = json.loads(capsys.readouterr().out)
+    assert rc == 0
+    assert abs(d["points"]["T"]["velocity"][1] - 25.981) < 1e-3
+    rc = main(["draw", str(out), "-d", "velocity", "-o", str(tmp_path / "v.svg")])
+    assert rc == 0 and (tmp_path / "v.svg").exists()
