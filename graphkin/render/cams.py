@@ -76,6 +76,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
                 ls=PHANTOM)
     # the pitch curve (roller: the trace point's path) and the profile
     size = cam.prime + cam.program.lift * (1 if not f.kind.oscillating else f.arm) + f.roller
+    pitch = None
     if f.kind.roller:
         pitch = _xy(lay.evaluate(fine)["T"])
         ln, = ax.plot(np.append(pitch[:, 0], pitch[:1, 0]), np.append(pitch[:, 1], pitch[:1, 1]),
@@ -86,6 +87,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
     ln.set_gid("profile")
     # the stations
     reach = 0.12 * size
+    drawn: list[Array] = []          # the ends of what is drawn, to frame the figure
     for i in range(n):
         bold = i == 0
         lw = 1.1 if bold else 0.5
@@ -108,6 +110,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
             ln, = ax.plot([base_pt[0], tip[0]], [base_pt[1], tip[1]], color=col, lw=lw,
                           ls="-" if bold else DASHDOT)
             ln.set_gid(f"station-{i}-axis")
+            drawn.append(tip)
             anchor = a - d * (0.07 * size + (f.roller if f.kind.roller else 0.0))
         lbl = ax.text(anchor[0], anchor[1], str(i), ha="center", va="center", fontsize=7,
                       color=INK)
@@ -126,6 +129,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
                 p0, p1 = t - u * 0.1 * size, c + u * 0.25 * size
             ln, = ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color=col, lw=lw * 1.3)
             ln.set_gid(f"station-{i}-face")
+            drawn += [p0, p1]
         else:
             dot, = ax.plot([t[0]], [t[1]], "o", ms=2.0, color=col)
             dot.set_gid(f"station-{i}-T")
@@ -153,6 +157,9 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
     pts = np.concatenate([np.c_[prof.real, prof.imag], T, np.zeros((1, 2))])
     if f.kind.oscillating:
         pts = np.concatenate([pts, _xy(ev["O4"])])
+    if drawn:
+        pts = np.concatenate([pts, np.asarray(drawn)])
+    _nomenclature(ax, cam, prof, pitch if f.kind.roller else None, n, pts)
     lo, hi = np.nanmin(pts, axis=0), np.nanmax(pts, axis=0)
     pad = 0.18 * float(np.max(hi - lo))
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
@@ -172,6 +179,63 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
     sub = fig.text(0.5, 0.03, note, ha="center", va="bottom", fontsize=8, color=GREY)
     sub.set_gid("note")
     return fig
+
+
+def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
+                  pts: Array) -> None:
+    """Name the circles and curves as Fig. 6.8 does, with leaders out to the margin.
+
+    Each name sits between two stations (half a station's angle off), on a
+    ray from O2, beyond everything drawn; its leader ends on the curve or
+    circle that ray meets.
+    """
+    reach = float(np.max(np.hypot(pts[:, 0], pts[:, 1]))) + \
+        (cam.follower.roller if cam.follower.kind.roller else 0.0)
+    step = 360.0 / n
+    items: list[tuple[str, str, complex]] = []
+    base_dir = 90.0 + step / 2
+
+    def on_curve(z: Array, deg: float) -> complex:
+        ang = np.angle(z)
+        k = int(np.argmin(np.abs(np.angle(np.exp(1j * (ang - math.radians(deg)))))))
+        return complex(z[k])
+
+    names = [("profile", "cam profile", lambda d: on_curve(prof, d)),
+             ("prime-circle", "prime circle", lambda d: cam.prime * np.exp(1j * math.radians(d)))]
+    if pitch is not None:
+        pz = pitch[:, 0] + 1j * pitch[:, 1]
+        names.insert(1, ("pitch-curve", "pitch curve", lambda d: on_curve(pz, d)))
+        names.append(("base-circle", "base circle",
+                      lambda d: cam.base * np.exp(1j * math.radians(d))))
+    # each name on the free ray where its curve stands farthest from the others
+    rays = [base_dir + step * k for k in range(1, n)]       # not beside station 0's follower
+    taken: set[int] = set()
+    # the circles first: they stand apart from the profile only where the follower has risen
+    for gid, text, where in sorted(names, key=lambda t: not t[0].endswith("circle")):
+        def gap(deg: float, where: Any = where, gid: str = gid) -> float:
+            # a circle stands apart where the curves leave it (circles keep their distance)
+            z = complex(where(deg))
+            return min(abs(z - complex(w(deg))) for g, _, w in names
+                       if w is not where and not (gid.endswith("circle") and
+                                                  g.endswith("circle")))
+
+        order = sorted((k for k in range(len(rays)) if k not in taken and k - 1 not in taken
+                        and k + 1 not in taken), key=lambda k: -gap(rays[k]))
+        if not order:
+            break
+        taken.add(order[0])
+        items.append((gid, text, complex(where(rays[order[0]]))))
+    for gid, text, z in items:
+        d = z / abs(z)
+        at = d * reach * 1.1
+        ha = "left" if d.real > 0.2 else "right" if d.real < -0.2 else "center"
+        ann = ax.annotate(text, xy=(z.real, z.imag), xytext=(at.real, at.imag), fontsize=7.5,
+                          ha=ha, va="center", color=INK,
+                          arrowprops={"arrowstyle": "-|>", "color": GREY, "lw": 0.5,
+                                      "mutation_scale": 6, "shrinkA": 1, "shrinkB": 0})
+        ann.set_gid(f"name-{gid}")
+        pts.resize((len(pts) + 1, 2), refcheck=False)
+        pts[-1] = (at.real, at.imag)
 
 
 def displacement_figure(cam: Cam, fig: Any = None) -> Any:

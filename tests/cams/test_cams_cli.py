@@ -57,6 +57,7 @@ def test_the_layout_svg_has_every_element(capsys, tmp_path):
     assert rc == 0
     ids = {el.get("id") for el in ET.parse(out).getroot().iter()}
     need = {"profile", "pitch-curve", "prime-circle", "base-circle", "O2", "title", "rotation"}
+    need |= {f"name-{g}" for g in ("profile", "pitch-curve", "prime-circle", "base-circle")}
     need |= {f"station-{i}-{w}" for i in range(8) for w in ("roller", "axis", "label", "C")}
     assert need <= ids, need - ids
 
