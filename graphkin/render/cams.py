@@ -219,8 +219,9 @@ def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
                        if w is not where and not (gid.endswith("circle") and
                                                   g.endswith("circle")))
 
-        order = sorted((k for k in range(len(rays)) if k not in taken and k - 1 not in taken
-                        and k + 1 not in taken), key=lambda k: -gap(rays[k]))
+        free = [k for k in range(len(rays)) if k not in taken]
+        apart = [k for k in free if k - 1 not in taken and k + 1 not in taken]
+        order = sorted(apart or free, key=lambda k: -gap(rays[k]))
         if not order:
             break
         taken.add(order[0])
