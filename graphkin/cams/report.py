@@ -142,7 +142,10 @@ def cam_text(cf: CamFile) -> str:
     lines += [f"  {w}" for w in d["warnings"]] or ["  y, y' and y'' are continuous at every joint"]
     lines += ["", "Design checks (Secs. 6.9-6.10)"]
     p = d["pressure_angle"]
-    lines.append(f"  pressure angle: largest |φ| = {g6(p['max'])}° at Θ = {g6(p['at'])}°")
+    if cam.follower.kind is FollowerKind.FLAT_FACE:
+        lines.append("  pressure angle: 0° throughout (the face is square to its motion)")
+    else:
+        lines.append(f"  pressure angle: largest |φ| = {g6(p['max'])}° at Θ = {g6(p['at'])}°")
     r = d["radius_of_curvature"]
     lines.append("  radius of curvature of the profile: " +
                  ("nowhere convex" if r is None else
