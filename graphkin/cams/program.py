@@ -76,7 +76,9 @@ class Segment:
 
     @property
     def kind(self) -> str:
-        """``rise``, ``return`` or ``dwell``."""
+        """``rise``, ``return``, ``dwell`` or ``table``."""
+        if self.motion is Motion.TABLE:
+            return "table"
         if self.motion is Motion.DWELL or self.lift == 0:
             return "dwell"
         return "rise" if self.lift > 0 else "return"
@@ -184,7 +186,8 @@ class Program:
     def label(self, k: int) -> str:
         """How a message names segment ``k``: ``segment 2 (cycloidal rise)``."""
         s = self.segments[k]
-        what = s.name or (f"{s.motion.value} {s.kind}" if s.kind != "dwell" else "dwell")
+        what = s.name or (f"{s.motion.value} {s.kind}" if s.kind not in ("dwell", "table")
+                          else s.kind)
         return f"segment {k + 1} ({what})"
 
     @property
