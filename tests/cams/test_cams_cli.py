@@ -213,3 +213,20 @@ def test_the_equivalent_linkage_is_a_mechanism_file_graphkin_solves(capsys, tmp_
     assert abs(d["points"]["T"]["velocity"][1] - 25.981) < 1e-3
     rc = main(["draw", str(out), "-d", "velocity", "-o", str(tmp_path / "v.svg")])
     assert rc == 0 and (tmp_path / "v.svg").exists()
+
+
+def test_the_tutorial_shows_what_graphkin_prints(capsys, tmp_path):
+    """docs/tutorial/cam.md: its file is examples/cams/ex6_5_roller.toml and its report block
+    is what graphkin cam prints for it."""
+    import re
+
+    page = (CAMS.parents[1] / "docs" / "tutorial" / "cam.md").read_text(encoding="utf-8")
+    toml = re.search(r"```toml\n(.*?)```", page, re.DOTALL).group(1)
+    f = tmp_path / "cam.toml"
+    f.write_text(toml)
+    assert load_cam(f).cam.program.segments == load_cam(CAMS / "ex6_5_roller.toml").cam \
+        .program.segments
+    rc, out, _ = _run(capsys, f)
+    shown = re.search(r"```text\n(.*?)```", page, re.DOTALL).group(1)
+    for line in shown.splitlines():
+        assert line in out, line
