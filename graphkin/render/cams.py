@@ -23,9 +23,10 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch
 
+from graphkin.cams import design
 from graphkin.cams.layout import layout, stations
 from graphkin.cams.model import Cam, FollowerKind
-from graphkin.render.style import GREY, INK, rc_context
+from graphkin.render.style import GREY, HIGHLIGHT, INK, rc_context
 from graphkin.render.svg import save
 from graphkin.text import g6
 
@@ -85,9 +86,17 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
     ln, = ax.plot(np.append(prof.real, prof.real[:1]), np.append(prof.imag, prof.imag[:1]),
                   color=INK, lw=1.8, solid_joinstyle="round")
     ln.set_gid("profile")
+    for j, cut in enumerate(design.undercuts(cam)):     # Figs. 6.25, 6.29: drawn in red
+        th = np.linspace(cut.start, cut.end if cut.end >= cut.start else cut.end + 2 * math.pi,
+                         200)
+        z = lay.contact(th)
+        ln, = ax.plot(z.real, z.imag, color=HIGHLIGHT, lw=2.2)
+        ln.set_gid(f"undercut-{j}")
     # the stations
     reach = 0.12 * size
     drawn: list[Array] = []          # the ends of what is drawn, to frame the figure
+    extent = design.face_width(cam)
+    face_half = max(extent) if extent else reach
     for i in range(n):
         bold = i == 0
         lw = 1.1 if bold else 0.5
@@ -111,7 +120,8 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
                           ls="-" if bold else DASHDOT)
             ln.set_gid(f"station-{i}-axis")
             drawn.append(tip)
-            anchor = a - d * (0.07 * size + (f.roller if f.kind.roller else 0.0))
+            anchor = a - d * (min(0.07 * size, 0.15 * cam.prime)
+                              + (f.roller if f.kind.roller else 0.0))
         lbl = ax.text(anchor[0], anchor[1], str(i), ha="center", va="center", fontsize=7,
                       color=INK)
         lbl.set_gid(f"station-{i}-label")
@@ -122,7 +132,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
             c = np.array([C[i].real, C[i].imag])
             if f.kind is FollowerKind.FLAT_FACE:
                 u = np.array([-d[1], d[0]])
-                half = 0.5 * (f.face or 2 * reach)
+                half = 0.5 * f.face if f.face else 1.1 * face_half
                 p0, p1 = t - u * half, t + u * half
             else:
                 u = (c - t) / max(np.hypot(*(c - t)), 1e-300)

@@ -160,7 +160,9 @@ def test_bad_files_are_one_line_naming_the_key(capsys, tmp_path, text, words):
 def test_an_undercut_cam_is_drawn_when_allowed(capsys, tmp_path):
     out = tmp_path / "u.svg"
     rc, text, _ = _run(capsys, CAMS / "fig6_25_undercut.toml", "--allow-undercut", "-o", out)
-    assert rc == 0 and "UNDERCUT: segment 1" in text and out.exists()
+    assert rc == 0 and "UNDERCUT: segment 1" in text
+    ids = {el.get("id") for el in ET.parse(out).getroot().iter()}
+    assert {"profile", "undercut-0", "station-0-face"} <= ids
 
 
 def test_a_jump_in_acceleration_is_a_warning_on_stderr(capsys, tmp_path):
