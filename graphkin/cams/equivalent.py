@@ -47,14 +47,24 @@ def equivalent_linkage(cam: Cam, theta: float) -> dict[str, Any]:
 
     Links: 1 the frame (O2, the follower's guide or pivot O4), 2 the cam
     (its own frame: the profile's u, v), 3 the coupler K-T (roller and knife
-    edge), 4 the follower.  The drive turns the
-    cam to Θ at the cam's speed (1 rad/s when the file gives none).
+    edge), 4 the follower.  The drive turns the cam to Θ at the cam's speed
+    (1 rad/s when the file gives none).
 
     Raises
     ------
     InputError
         At a posture where the surface in contact is straight (an infinite
-        radius of curvature): there the equivalent pin has no circle.
+        radius of curvature): there is no center of curvature to pin.
+
+    Examples
+    --------
+    Ex 6.6 at Θ = 30°: the coupler is the pitch curve's radius of curvature.
+
+    >>> import math
+    >>> from graphkin.cams.examples import example_6_6
+    >>> d = equivalent_linkage(example_6_6(), math.radians(30))
+    >>> round(d["links"]["3"]["T"][0], 3), d["assembly"]["T"]
+    (72.757, [0.0, 47.5])
     """
     f = cam.follower
     s = cam.s
