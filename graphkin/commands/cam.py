@@ -60,6 +60,10 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.cams.parse import load_cam
     from graphkin.cams.report import cam_json, cam_text, profile_csv, refuse_undercut, steps_text
 
+    if args.output is not None:
+        from graphkin.files import check_output
+
+        check_output(args.output, [args.file], "--output")
     cf = load_cam(args.file)
     if not args.allow_undercut:
         refuse_undercut(cf)

@@ -232,3 +232,21 @@ def test_the_tutorial_shows_what_graphkin_prints(capsys, tmp_path):
     shown = re.search(r"```text\n(.*?)```", page, re.DOTALL).group(1)
     for line in shown.splitlines():
         assert line in out, line
+
+
+def test_the_output_never_overwrites_the_input(capsys, tmp_path):
+    f = tmp_path / "c.toml"
+    f.write_text((CAMS / "ex6_6_roller.toml").read_text())
+    for extra in (["--equivalent", "30", "-o", str(f)], ["-o", str(f)]):
+        rc, out, err = _run(capsys, f, *extra)
+        assert rc == 2 and "--output" in err and "refusing to write over" in err
+    assert f.read_text() == (CAMS / "ex6_6_roller.toml").read_text()
+
+
+@pytest.mark.parametrize("special", ["/dev/zero", "folder"])
+def test_files_that_are_not_small_regular_files(capsys, tmp_path, special):
+    path = str(tmp_path) if special == "folder" else special
+    if not Path(path).exists():
+        pytest.skip(f"{path} does not exist here")
+    rc, out, err = _run(capsys, path)
+    assert rc == 2 and "not a regular file" in err and err.count("\n") == 1
