@@ -37,9 +37,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", default=None, metavar="OUT",
                    help="write OUT: .svg/.png/.pdf a drawing (-d), .dxf the profile to true "
                         "scale, .csv a table of the profile's coordinates")
-    p.add_argument("-d", "--diagram", choices=("layout", "displacement"), default="layout",
-                   help="the drawing: the profile's layout by inversion (Figs. 6.8-6.11), or "
-                        "the displacement diagram with y', y'' (Figs. 6.12-6.24)")
+    p.add_argument("-d", "--diagram", choices=("layout", "displacement", "design"),
+                   default="layout",
+                   help="the drawing: the profile's layout by inversion (Figs. 6.8-6.11), "
+                        "the displacement diagram with y', y'' (Figs. 6.12-6.24), or the "
+                        "pressure angle and radius of curvature over the cycle (design)")
     p.add_argument("--stations", type=bounded_int(4, 360), default=12,
                    help="inverted postures drawn in the layout (default 12)")
     p.add_argument("--points", type=bounded_int(8, 100_000), default=360,

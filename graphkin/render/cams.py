@@ -24,13 +24,14 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Circle, FancyArrowPatch
 
 from graphkin.cams import design
+from graphkin.cams.analytic import profile
 from graphkin.cams.layout import layout, stations
 from graphkin.cams.model import Cam, FollowerKind
 from graphkin.render.style import GREY, HIGHLIGHT, INK, rc_context
 from graphkin.render.svg import save
 from graphkin.text import g6
 
-__all__ = ["layout_figure", "displacement_figure", "save_cam_figure"]
+__all__ = ["layout_figure", "displacement_figure", "design_figure", "save_cam_figure"]
 
 Array = np.ndarray
 DASHDOT = (0, (8, 2, 1.5, 2))
@@ -278,6 +279,15 @@ def displacement_figure(cam: Cam, fig: Any = None) -> Any:
             ax.axvline(s, color=GREY, lw=0.5, ls=(0, (3, 2))).set_gid(f"boundary-{key}-{j}")
         ax.set_ylabel(label, fontsize=8)
         ax.tick_params(labelsize=7)
+        order = {"Y": 0, "y1": 1, "y2": 2}[key]
+        if cam.omega and order:          # the same curve read in time rates (Eq. 6.11)
+            w = cam.omega ** order
+            sec = ax.secondary_yaxis("right", functions=(lambda v, w=w: v * w,
+                                                         lambda v, w=w: v / w))
+            sec.set_ylabel(f"{('velocity', 'acceleration')[order - 1]}, {unit}/s"
+                           + ("\u00b2" if order == 2 else ""), fontsize=8)
+            sec.tick_params(labelsize=7)
+            sec.set_gid(f"rate-axis-{key}")
         ax.set_xlim(0, 360)
         ax.spines[["top", "right"]].set_visible(False)
     for j, s in enumerate(list(starts) + [360.0]):
@@ -299,9 +309,71 @@ def displacement_figure(cam: Cam, fig: Any = None) -> Any:
     return fig
 
 
+def design_figure(cam: Cam, fig: Any = None) -> Any:
+    """The pressure angle and the radius of curvature over one turn (Secs. 6.9-6.10).
+
+    The largest |φ| and the least convex radius are marked; an undercut
+    stretch is shaded.
+    """
+    fig = fig or Figure(figsize=(7.0, 5.6))
+    th = stations(3600)
+    pr = profile(cam, th)
+    deg = np.degrees(th)
+    chk = design.check(cam)
+    axes = fig.subplots(2, 1, sharex=True, gridspec_kw={"hspace": 0.3})
+    ln, = axes[0].plot(deg, np.degrees(pr.pressure), color=INK, lw=1.2)
+    ln.set_gid("pressure-angle")
+    m = chk.pressure
+    i = int(np.argmin(np.abs(np.angle(np.exp(1j * (th - m.theta))))))
+    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(pr.pressure[i])], "o", ms=4,
+                       color=HIGHLIGHT)
+    mk.set_gid("pressure-max")
+    t = axes[0].annotate(f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
+                         xy=(math.degrees(m.theta), math.degrees(pr.pressure[i])),
+                         xytext=(6, 6), textcoords="offset points", fontsize=7.5)
+    t.set_gid("pressure-max-label")
+    axes[0].set_ylabel("pressure angle \u03c6, degrees", fontsize=8)
+    rho = pr.rho
+    ok = np.isfinite(rho)
+    big = np.percentile(np.abs(rho[ok]), 90) * 3 if np.any(ok) else 1.0
+    ln, = axes[1].plot(deg, np.where(np.abs(rho) <= big, rho, np.nan), color=INK, lw=1.2)
+    ln.set_gid("radius-of-curvature")
+    if chk.rho is not None:
+        r = chk.rho
+        mk, = axes[1].plot([math.degrees(r.theta)], [r.value], "o", ms=4, color=HIGHLIGHT)
+        mk.set_gid("radius-min")
+        t = axes[1].annotate(f"\u03c1min = {g6(r.value)} {cam.unit}",
+                             xy=(math.degrees(r.theta), r.value), xytext=(6, -12),
+                             textcoords="offset points", fontsize=7.5)
+        t.set_gid("radius-min-label")
+    for j, cut in enumerate(chk.undercut):
+        for a, b in ((cut.start, cut.end),) if cut.end >= cut.start else \
+                ((cut.start, 2 * math.pi), (0.0, cut.end)):
+            for ax in axes:
+                ax.axvspan(math.degrees(a), math.degrees(b), color=HIGHLIGHT, alpha=0.15,
+                           lw=0).set_gid(f"undercut-{j}")
+    axes[1].set_ylabel(f"radius of curvature \u03c1, {cam.unit}\n(convex +)", fontsize=8)
+    axes[1].set_xlabel("cam angle \u0398, degrees", fontsize=8)
+    axes[1].set_xticks(np.arange(0, 361, 45))
+    for ax in axes:
+        ax.axhline(0.0, color=GREY, lw=0.5)
+        ax.set_xlim(0, 360)
+        ax.tick_params(labelsize=7)
+        ax.spines[["top", "right"]].set_visible(False)
+    title = fig.suptitle((cam.title + " \u2014 " if cam.title else "")
+                         + "pressure angle and radius of curvature", fontsize=10)
+    title.set_gid("title")
+    return fig
+
+
 def save_cam_figure(cam: Cam, path: str | Path, *, diagram: str = "layout",
                     stations: int = 12) -> Path:
-    """Draw ``diagram`` (``layout`` or ``displacement``) and save it (.svg, .png, .pdf)."""
+    """Draw ``diagram`` (``layout``, ``displacement`` or ``design``); save it (.svg/.png/.pdf)."""
     with rc_context():
-        fig = layout_figure(cam, stations) if diagram == "layout" else displacement_figure(cam)
+        if diagram == "layout":
+            fig = layout_figure(cam, stations)
+        elif diagram == "design":
+            fig = design_figure(cam)
+        else:
+            fig = displacement_figure(cam)
     return save(fig, path)

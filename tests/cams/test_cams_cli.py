@@ -250,3 +250,26 @@ def test_files_that_are_not_small_regular_files(capsys, tmp_path, special):
         pytest.skip(f"{path} does not exist here")
     rc, out, err = _run(capsys, path)
     assert rc == 2 and "not a regular file" in err and err.count("\n") == 1
+
+
+def test_the_design_drawing_marks_the_extremes(capsys, tmp_path):
+    """-d design: φ and ρ over the cycle, the largest |φ| and the least ρ marked (Ex 6.4-6.5)."""
+    out = tmp_path / "d.svg"
+    assert _run(capsys, CAMS / "ex6_5_roller.toml", "-d", "design", "-o", out)[0] == 0
+    root = ET.parse(out).getroot()
+    ids = {el.get("id") for el in root.iter()}
+    assert {"pressure-angle", "pressure-max", "radius-of-curvature", "radius-min",
+            "title"} <= ids
+    text = "".join(el.text or "" for el in root.iter("{http://www.w3.org/2000/svg}text"))
+    assert "28.1558" in text and "3.5 in" in text
+    out2 = tmp_path / "u.svg"
+    assert _run(capsys, CAMS / "fig6_25_undercut.toml", "--allow-undercut", "-d", "design",
+                "-o", out2)[0] == 0
+    assert "undercut-0" in {el.get("id") for el in ET.parse(out2).getroot().iter()}
+
+
+def test_the_displacement_diagram_reads_in_rates_at_the_cam_s_speed(capsys, tmp_path):
+    out = tmp_path / "d.svg"
+    assert _run(capsys, CAMS / "ex6_5_roller.toml", "-d", "displacement", "-o", out)[0] == 0
+    ids = {el.get("id") for el in ET.parse(out).getroot().iter()}
+    assert {"rate-axis-y1", "rate-axis-y2"} <= ids
