@@ -56,3 +56,22 @@ def test_a_cam_turning_the_other_way_is_its_mirror_image(cam):
     assert np.allclose(a.contact[ok], -np.conj(b.contact[ok]), rtol=0, atol=1e-9 * size)
     assert np.allclose(a.pressure[ok], b.pressure[ok], rtol=0, atol=1e-9)
     assert np.allclose(a.rho[ok], b.rho[ok], rtol=1e-6, atol=1e-9 * size)
+
+
+def test_example_6_1_parabolic_motion():
+    """Ex 6.1: two parabolas meeting at mid-rise; y'max = 2L/β there (Eq. 5), y'' = ±4L/β²
+    (Eqs. 6.5c, 6.6c), y''' = 0; the "acceleration" steps at 0, β/2 and β (Fig. 6.12)."""
+    from graphkin.cams import Motion, Program, Segment
+    from graphkin.cams.program import Jump
+
+    L, beta = 2.0, math.radians(120)
+    p = Program((Segment(Motion.PARABOLIC, L, beta), Segment(Motion.DWELL, 0.0, math.radians(60)),
+                 Segment(Motion.PARABOLIC, -L, math.radians(180))))
+    k = p.evaluate(np.array([beta / 2, beta / 4, 3 * beta / 4]))
+    assert abs(k.y1[0] - 2 * L / beta) < 1e-12
+    assert abs(k.y2[1] - 4 * L / beta**2) < 1e-12 and abs(k.y2[2] + 4 * L / beta**2) < 1e-12
+    assert np.all(k.y3 == 0)
+    assert abs(k.Y[0] - L / 2) < 1e-12
+    # the joints: y'' jumps at every one, y' at none
+    kinds = [set(j.jumps) for j in p.joints()]
+    assert kinds and all(s == {Jump.ACCELERATION} for s in kinds)
