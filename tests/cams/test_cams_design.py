@@ -151,3 +151,26 @@ def test_undercut_verdicts_do_not_move_under_1e_12():
         assert [c.segment for c in moved] == [c.segment for c in base]
         assert all(abs(a.start - b.start) < 1e-3 and abs(a.end - b.end) < 1e-3
                    for a, b in zip(moved, base))
+
+
+@settings(max_examples=15, deadline=None)
+@given(programs(lift=10.0), st.floats(0.0, 5.0))
+def test_the_least_prime_circle_for_a_flat_face_gives_exactly_the_radius(prog, rho_min):
+    """Eq. (6.28) made exact: at R0 = min_prime_for_curvature, min(R0 + Y + y'') = ρmin."""
+    cam = Cam(prog, 1.0, Follower(FollowerKind.FLAT_FACE))
+    r0 = min_prime_for_curvature(cam, rho_min)
+    if r0 <= 0:
+        return
+    rho = profile(dataclasses.replace(cam, prime=r0), np.linspace(0, 2 * np.pi, 72001)).rho
+    assert rho.min() >= rho_min - 1e-6 * (10 + r0)
+    assert rho.min() <= rho_min + 1e-4 * (10 + r0)      # the grid's spacing, not the search's
+
+
+@settings(max_examples=10, deadline=None)
+@given(programs(lift=10.0), st.floats(0.5, 3.0))
+def test_the_least_prime_circle_for_a_roller_keeps_it_from_undercutting(prog, rr):
+    """Bisection on R0: just above it nothing is undercut and the convex pitch radius is ≥ R_r."""
+    cam = Cam(prog, 50.0, Follower(FollowerKind.ROLLER, roller=rr))
+    r0 = min_prime_for_curvature(cam, 0.0)
+    above = dataclasses.replace(cam, prime=r0 * (1 + 1e-6))
+    assert undercuts(above) == []
