@@ -23,7 +23,7 @@ from graphkin.cams.analytic import profile
 from graphkin.cams.model import Cam, FollowerKind
 from graphkin.cams.program import TWO_PI, Program
 
-__all__ = ["Extreme", "Undercut", "Checks", "check", "extreme", "min_prime_for_pressure",
+__all__ = ["Extreme", "Undercut", "Checks", "check", "extreme", "joints", "min_prime_for_pressure",
            "min_prime_for_curvature", "face_width", "undercuts", "jump_speed", "GRID"]
 
 Array = np.ndarray
@@ -71,11 +71,26 @@ def _grid() -> Array:
     return np.arange(GRID) * (TWO_PI / GRID)
 
 
+def joints(program: Program) -> Array:
+    """The cam angles at either side of every joint: where an extreme may sit on a jump.
+
+    At a joint where y'' (say) jumps, the extreme of a quantity built on it is
+    a one-sided limit, which neither the grid nor a search between grid points
+    reaches; the angle just before the joint (1e-12 rad: the end of the
+    segment before) and the joint itself (the start of the next) do.
+    """
+    st = program.starts
+    return np.mod(np.concatenate([st, st - 1e-12]), TWO_PI)
+
+
 def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
-            mask: Callable[[Array], Array] | None = None) -> Extreme | None:
+            mask: Callable[[Array], Array] | None = None,
+            candidates: Array | None = None) -> Extreme | None:
     """The largest (or smallest) value of ``fun`` over one turn, refined (golden section).
 
-    ``fun`` takes an array of cam angles; ``mask``, if given, says where it counts.
+    ``fun`` takes an array of cam angles; ``mask``, if given, says where it
+    counts; ``candidates`` are angles also tried as they are (the joints, see
+    :func:`joints`).
     """
     th = _grid()
     v = np.asarray(fun(th), dtype=float)
@@ -106,6 +121,12 @@ def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
             gd = g(d)
     x = (a + b) / 2
     best = max((sign * v[i], th[i]), (g(x), x))
+    if candidates is not None and len(candidates):
+        cv = np.asarray(fun(candidates), dtype=float)
+        cok = np.isfinite(cv) if mask is None else np.isfinite(cv) & mask(candidates)
+        if np.any(cok):
+            j = int(np.argmax(np.where(cok, sign * cv, -np.inf)))
+            best = max(best, (sign * cv[j], float(candidates[j])))
     return Extreme(sign * best[0], float(np.mod(best[1], TWO_PI)))
 
 
@@ -152,8 +173,8 @@ def face_width(cam: Cam) -> tuple[float, float] | None:
         assert a is not None
         return a
 
-    hi = extreme(along)
-    lo = extreme(along, maximum=False)
+    hi = extreme(along, candidates=joints(cam.program))
+    lo = extreme(along, maximum=False, candidates=joints(cam.program))
     assert hi is not None and lo is not None
     return (max(0.0, -lo.value), max(0.0, hi.value))
 
@@ -172,17 +193,20 @@ def check(cam: Cam) -> Checks:
     >>> round(math.degrees(c.pressure.value), 2), c.undercut
     (29.55, [])
     """
-    pressure = extreme(lambda t: np.abs(profile(cam, t).pressure))
+    jt = joints(cam.program)
+    pressure = extreme(lambda t: np.abs(profile(cam, t).pressure), candidates=jt)
     assert pressure is not None
     pitch = None
     if not cam.follower.kind.flat:
         pitch = extreme(lambda t: profile(cam, t).rho_pitch, maximum=False,   # type: ignore
-                        mask=lambda t: profile(cam, t).rho_pitch > 0)          # type: ignore
+                        mask=lambda t: profile(cam, t).rho_pitch > 0,          # type: ignore
+                        candidates=jt)
     if cam.follower.kind.flat:     # a flat face's profile is convex unless undercut
-        rho = extreme(lambda t: profile(cam, t).rho, maximum=False)
+        rho = extreme(lambda t: profile(cam, t).rho, maximum=False, candidates=jt)
     else:                           # where the pitch curve is convex (concave parts are fine)
         rho = extreme(lambda t: profile(cam, t).rho, maximum=False,
-                      mask=lambda t: profile(cam, t).rho_pitch > 0)  # type: ignore
+                      mask=lambda t: profile(cam, t).rho_pitch > 0,  # type: ignore
+                      candidates=jt)
     return Checks(pressure, rho, pitch, undercuts(cam), face_width(cam))
 
 
@@ -207,7 +231,7 @@ def min_prime_for_pressure(cam: Cam, phi_max: float) -> float:
     if not f.kind.oscillating:
         t = math.tan(phi_max)
         need = extreme(lambda th: np.abs(_kin(cam.program, th)[1] - f.offset) / t
-                       - _kin(cam.program, th)[0])
+                       - _kin(cam.program, th)[0], candidates=joints(cam.program))
         assert need is not None
         return math.hypot(max(need.value, 0.0), f.offset)
 
@@ -248,7 +272,7 @@ def min_prime_for_curvature(cam: Cam, rho_min: float) -> float:
     f = cam.follower
     if f.kind is FollowerKind.FLAT_FACE:
         low = extreme(lambda th: _kin(cam.program, th)[0] + _kin(cam.program, th)[2],
-                      maximum=False)
+                      maximum=False, candidates=joints(cam.program))
         assert low is not None
         return rho_min - low.value
     rr = f.roller if f.kind.roller else 0.0
@@ -281,7 +305,8 @@ def jump_speed(program: Program, k: float, preload: float, mass: float) -> Extre
         with np.errstate(divide="ignore", invalid="ignore"):
             return np.where(y2 < 0, (k * Y + preload) / (-mass * y2), np.inf)
 
-    low = extreme(omega2, maximum=False, mask=lambda th: _kin(program, th)[2] < 0)
+    low = extreme(omega2, maximum=False, mask=lambda th: _kin(program, th)[2] < 0,
+                  candidates=joints(program))
     if low is None:
         return Extreme(math.inf, 0.0)
     return Extreme(math.sqrt(low.value), low.theta)
