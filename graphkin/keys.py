@@ -39,8 +39,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "check_keys",
-           "read_units", "nearest"]
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "CAM",
+           "check_keys", "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
 
@@ -128,6 +128,19 @@ TRAIN: Schema = {
     "gallery": GALLERY,
 }
 """Every key of a gear-train file (``graphkin gears``, ``docs/formats/gears.md#gear-trains``)."""
+
+CAM: Schema = {
+    "title": None,
+    "units": {"length": None},
+    "cam": {"prime": None, "rotation": None, "speed": None},
+    "follower": {"kind": None, "offset": None, "roller": None, "face": None, "pivot": None,
+                 "arm": None, "face_offset": None, "rise": None},
+    "segment": {"motion": None, "lift": None, "angle": None, "rest": None, "name": None,
+                "points": None},
+    "limits": {"pressure_angle": None, "radius": None},
+    "gallery": GALLERY,
+}
+"""Every key of a cam file (``graphkin cam``, ``docs/formats/cam.md``)."""
 
 #: What to say besides the nearest key, for keys people expect to exist.
 HINTS: Mapping[str, str] = {

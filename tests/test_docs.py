@@ -40,6 +40,14 @@ def test_every_toml_example_in_the_docs_is_valid(page, block):
         train_from_dict(data, source=str(page))     # a whole gear-train file: it loads
     elif "links" in data and "1" in data["links"] and "drive" in data:
         graphkin.from_dict(data, source=str(page))   # a whole mechanism: it loads
+    elif set(data) & {"cam", "follower", "segment"}:
+        from graphkin.keys import CAM
+
+        check_keys(data, CAM, str(page))           # a cam file or a fragment of one
+        if {"cam", "follower", "segment"} <= set(data):
+            from graphkin.cams.parse import loads_cam
+
+            loads_cam(block, str(page))            # a whole cam file: it loads
     elif set(data) & {"A", "B", "C"}:
         check_keys(data, VECTOR, str(page))
     elif "links" not in data and any(k in data for k in ("omega3", "theta3", "V_E",

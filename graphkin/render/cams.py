@@ -1,0 +1,379 @@
+"""Drawings of a cam: its profile laid out by inversion, its displacement diagram.
+
+The layout is drawn like Figs. 6.8-6.11, the displacement diagram with its
+kinematic coefficients like Figs. 6.12-6.24.
+
+Every element carries a gid (``profile``, ``prime-circle``, ``station-3-roller``,
+``diagram-y1``, ``boundary-2`` ...) so that tests and pages find it in the SVG.
+The drawings are built from the recorded layout (:func:`graphkin.cams.layout`):
+the stations are the construction's values at equal cam angles.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Secs. 6.3-6.4, Figs. 6.8-6.11, 6.12-6.24.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Circle, FancyArrowPatch
+
+from graphkin.cams import design
+from graphkin.cams.analytic import profile
+from graphkin.cams.layout import layout, stations
+from graphkin.cams.model import Cam, FollowerKind
+from graphkin.render.style import GREY, HIGHLIGHT, INK, rc_context
+from graphkin.render.svg import save
+from graphkin.text import g6
+
+__all__ = ["layout_figure", "displacement_figure", "design_figure", "save_cam_figure"]
+
+Array = np.ndarray
+DASHDOT = (0, (8, 2, 1.5, 2))
+PHANTOM = (0, (10, 2, 1.5, 2, 1.5, 2))
+
+
+def _xy(p: Array) -> Array:
+    return p[..., :2] / p[..., 2:3]
+
+
+def _circle(ax: Any, c: tuple[float, float], r: float, gid: str, **kw: Any) -> None:
+    patch = Circle(c, r, fill=False, **kw)
+    patch.set_gid(gid)
+    ax.add_patch(patch)
+
+
+def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
+    """The layout of the profile by inversion, drawn like Figs. 6.8-6.11.
+
+    The cam is held still; the follower is drawn at ``n`` stations 0, 1, 2, ...
+    turned against the cam's rotation, with its centerline (or arm), its roller
+    or face, and the profile drawn tangent to them all.
+    """
+    fig = fig or Figure(figsize=(7.0, 7.4))
+    ax = fig.add_axes((0.03, 0.06, 0.94, 0.86))
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    lay = layout(cam)
+    f = cam.follower
+    fine = stations(1440)
+    prof = lay.contact(fine)
+    st = stations(n)
+    ev = lay.evaluate(st)
+    T = _xy(ev["T"])
+    C = lay.contact(st)
+    # circles of the cam
+    _circle(ax, (0, 0), cam.prime, "prime-circle", color=GREY, lw=0.6, ls=PHANTOM)
+    if f.kind.roller:
+        _circle(ax, (0, 0), cam.base, "base-circle", color=GREY, lw=0.6)
+    if f.offset and not f.kind.oscillating:
+        _circle(ax, (0, 0), abs(f.offset), "offset-circle", color=GREY, lw=0.5)
+    if f.kind.oscillating:
+        _circle(ax, (0, 0), math.hypot(*f.pivot), "pivot-circle", color=GREY, lw=0.5,
+                ls=PHANTOM)
+    # the pitch curve (roller: the trace point's path) and the profile
+    size = cam.prime + cam.program.lift * (1 if not f.kind.oscillating else f.arm) + f.roller
+    pitch = None
+    if f.kind.roller:
+        pitch = _xy(lay.evaluate(fine)["T"])
+        ln, = ax.plot(np.append(pitch[:, 0], pitch[:1, 0]), np.append(pitch[:, 1], pitch[:1, 1]),
+                      color=GREY, lw=0.6, ls=DASHDOT)
+        ln.set_gid("pitch-curve")
+    ln, = ax.plot(np.append(prof.real, prof.real[:1]), np.append(prof.imag, prof.imag[:1]),
+                  color=INK, lw=1.8, solid_joinstyle="round")
+    ln.set_gid("profile")
+    for j, cut in enumerate(design.undercuts(cam)):     # Figs. 6.25, 6.29: drawn in red
+        th = np.linspace(cut.start, cut.end if cut.end >= cut.start else cut.end + 2 * math.pi,
+                         200)
+        z = lay.contact(th)
+        ln, = ax.plot(z.real, z.imag, color=HIGHLIGHT, lw=2.2)
+        ln.set_gid(f"undercut-{j}")
+    # the stations
+    reach = 0.12 * size
+    drawn: list[Array] = []          # the ends of what is drawn, to frame the figure
+    extent = design.face_width(cam)
+    face_half = max(extent) if extent else reach
+    for i in range(n):
+        bold = i == 0
+        lw = 1.1 if bold else 0.5
+        col = INK if bold else GREY
+        t = T[i]
+        if f.kind.oscillating:
+            o4 = _xy(ev["O4"][i])
+            arm_end = t
+            ln, = ax.plot([o4[0], arm_end[0]], [o4[1], arm_end[1]], color=col, lw=lw)
+            ln.set_gid(f"station-{i}-arm")
+            dot, = ax.plot([o4[0]], [o4[1]], "o", ms=2.5, color=col)
+            dot.set_gid(f"station-{i}-O4")
+            anchor = o4 * (1 + 0.06 * size / max(np.hypot(*o4), 1e-300))
+        else:
+            a = _xy(ev["A"][i])
+            fpt = _xy(ev["F"][i])
+            d = (a - fpt) / np.hypot(*(a - fpt))
+            tip = t + d * reach * (2.0 if bold else 1.0)
+            base_pt = fpt if f.offset else a - d * 0.0
+            ln, = ax.plot([base_pt[0], tip[0]], [base_pt[1], tip[1]], color=col, lw=lw,
+                          ls="-" if bold else DASHDOT)
+            ln.set_gid(f"station-{i}-axis")
+            drawn.append(tip)
+            anchor = a - d * (min(0.07 * size, 0.15 * cam.prime)
+                              + (f.roller if f.kind.roller else 0.0))
+        lbl = ax.text(anchor[0], anchor[1], str(i), ha="center", va="center", fontsize=7,
+                      color=INK)
+        lbl.set_gid(f"station-{i}-label")
+        if f.kind.roller:
+            _circle(ax, (float(t[0]), float(t[1])), f.roller, f"station-{i}-roller", color=col,
+                    lw=lw)
+        elif f.kind.flat:
+            c = np.array([C[i].real, C[i].imag])
+            if f.kind is FollowerKind.FLAT_FACE:
+                u = np.array([-d[1], d[0]])
+                half = 0.5 * f.face if f.face else 1.1 * face_half
+                p0, p1 = t - u * half, t + u * half
+            else:
+                u = (c - t) / max(np.hypot(*(c - t)), 1e-300)
+                p0, p1 = t - u * 0.1 * size, c + u * 0.25 * size
+            ln, = ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color=col, lw=lw * 1.3)
+            ln.set_gid(f"station-{i}-face")
+            drawn += [p0, p1]
+        else:
+            dot, = ax.plot([t[0]], [t[1]], "o", ms=2.0, color=col)
+            dot.set_gid(f"station-{i}-T")
+        cc, = ax.plot([C[i].real], [C[i].imag], "o", ms=1.6, color=INK)
+        cc.set_gid(f"station-{i}-C")
+    # the shaft and the sense of rotation
+    m = 0.05 * cam.prime
+    ln, = ax.plot([-m, m, np.nan, 0, 0], [0, 0, np.nan, -m, m], color=INK, lw=0.8)
+    ln.set_gid("O2")
+    t2 = ax.text(0.6 * m, -0.6 * m, r"$O_2$", fontsize=8, ha="left", va="top")
+    t2.set_gid("O2-label")
+    r = 0.35 * cam.prime
+    a0, a1 = (math.radians(200), math.radians(250)) if cam.s > 0 else \
+        (math.radians(250), math.radians(200))
+    arrow = FancyArrowPatch((r * math.cos(a0), r * math.sin(a0)),
+                            (r * math.cos(a1), r * math.sin(a1)),
+                            connectionstyle=f"arc3,rad={0.2 * cam.s}", arrowstyle="->",
+                            mutation_scale=9, color=INK, lw=0.8)
+    arrow.set_gid("rotation")
+    ax.add_patch(arrow)
+    w = ax.text(r * 1.05 * math.cos(math.radians(225)), r * 1.05 * math.sin(math.radians(225)),
+                r"$\omega$", fontsize=8, ha="right", va="top")
+    w.set_gid("rotation-label")
+    # frame the drawing on everything drawn
+    pts = np.concatenate([np.c_[prof.real, prof.imag], T, np.zeros((1, 2))])
+    if f.kind.oscillating:
+        pts = np.concatenate([pts, _xy(ev["O4"])])
+    if drawn:
+        pts = np.concatenate([pts, np.asarray(drawn)])
+    _nomenclature(ax, cam, prof, pitch if f.kind.roller else None, n, pts)
+    lo, hi = np.nanmin(pts, axis=0), np.nanmax(pts, axis=0)
+    pad = 0.18 * float(np.max(hi - lo))
+    ax.set_xlim(lo[0] - pad, hi[0] + pad)
+    ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    what = {FollowerKind.KNIFE_EDGE: "knife-edge", FollowerKind.ROLLER: "roller",
+            FollowerKind.FLAT_FACE: "flat-face", FollowerKind.OSCILLATING_ROLLER:
+            "oscillating roller", FollowerKind.OSCILLATING_FLAT_FACE:
+            "oscillating flat-face"}[f.kind]
+    title = fig.text(0.5, 0.965, (cam.title + " — " if cam.title else "")
+                     + f"profile laid out by inversion ({what} follower)", ha="center",
+                     va="top", fontsize=10)
+    title.set_gid("title")
+    note = (f"$R_0$ = {g6(cam.prime)} {cam.unit}"
+            + (f", $R_r$ = {g6(f.roller)} {cam.unit}" if f.kind.roller else "")
+            + (f", $\\varepsilon$ = {g6(f.offset)} {cam.unit}" if f.offset else "")
+            + f"; stations every {g6(360 / n)}°, the follower turned against the cam")
+    sub = fig.text(0.5, 0.03, note, ha="center", va="bottom", fontsize=8, color=GREY)
+    sub.set_gid("note")
+    return fig
+
+
+def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
+                  pts: Array) -> None:
+    """Name the circles and curves as Fig. 6.8 does, with leaders out to the margin.
+
+    Each name sits between two stations (half a station's angle off), on a
+    ray from O2, beyond everything drawn; its leader ends on the curve or
+    circle that ray meets.
+    """
+    reach = float(np.max(np.hypot(pts[:, 0], pts[:, 1]))) + \
+        (cam.follower.roller if cam.follower.kind.roller else 0.0)
+    step = 360.0 / n
+    items: list[tuple[str, str, complex]] = []
+    base_dir = 90.0 + step / 2
+
+    def on_curve(z: Array, deg: float) -> complex:
+        ang = np.angle(z)
+        k = int(np.argmin(np.abs(np.angle(np.exp(1j * (ang - math.radians(deg)))))))
+        return complex(z[k])
+
+    names = [("profile", "cam profile", lambda d: on_curve(prof, d)),
+             ("prime-circle", "prime circle", lambda d: cam.prime * np.exp(1j * math.radians(d)))]
+    if pitch is not None:
+        pz = pitch[:, 0] + 1j * pitch[:, 1]
+        names.insert(1, ("pitch-curve", "pitch curve", lambda d: on_curve(pz, d)))
+        names.append(("base-circle", "base circle",
+                      lambda d: cam.base * np.exp(1j * math.radians(d))))
+    # each name on the free ray where its curve stands farthest from the others
+    rays = [base_dir + step * k for k in range(1, n)]       # not beside station 0's follower
+    taken: set[int] = set()
+    # the circles first: they stand apart from the profile only where the follower has risen
+    for gid, text, where in sorted(names, key=lambda t: not t[0].endswith("circle")):
+        def gap(deg: float, where: Any = where, gid: str = gid) -> float:
+            # a circle stands apart where the curves leave it (circles keep their distance)
+            z = complex(where(deg))
+            return min(abs(z - complex(w(deg))) for g, _, w in names
+                       if w is not where and not (gid.endswith("circle") and
+                                                  g.endswith("circle")))
+
+        free = [k for k in range(len(rays)) if k not in taken]
+        apart = [k for k in free if k - 1 not in taken and k + 1 not in taken]
+        order = sorted(apart or free, key=lambda k: -gap(rays[k]))
+        if not order:
+            break
+        taken.add(order[0])
+        items.append((gid, text, complex(where(rays[order[0]]))))
+    for gid, text, z in items:
+        d = z / abs(z)
+        at = d * reach * 1.1
+        ha = "left" if d.real > 0.2 else "right" if d.real < -0.2 else "center"
+        ann = ax.annotate(text, xy=(z.real, z.imag), xytext=(at.real, at.imag), fontsize=7.5,
+                          ha=ha, va="center", color=INK,
+                          arrowprops={"arrowstyle": "-|>", "color": GREY, "lw": 0.5,
+                                      "mutation_scale": 6, "shrinkA": 1, "shrinkB": 0})
+        ann.set_gid(f"name-{gid}")
+        pts.resize((len(pts) + 1, 2), refcheck=False)
+        pts[-1] = (at.real, at.imag)
+
+
+def displacement_figure(cam: Cam, fig: Any = None) -> Any:
+    """The displacement diagram and y', y'' over one turn, one above the other (Fig. 6.24)."""
+    fig = fig or Figure(figsize=(7.0, 7.4))
+    prog = cam.program
+    th = np.linspace(0.0, 2 * math.pi, 3601)
+    k = prog.evaluate(th[:-1])
+    deg = np.degrees(th[:-1])
+    ang = cam.follower.kind.oscillating
+    unit = "rad" if ang else cam.unit
+    rows = [("Y", k.Y, f"(a) displacement Y, {unit}"),
+            ("y1", k.y1, f"(b) \u201cvelocity\u201d y', {unit}/rad"),
+            ("y2", k.y2, f"(c) \u201cacceleration\u201d y'', {unit}/rad\u00b2")]
+    axes = fig.subplots(3, 1, sharex=True, gridspec_kw={"hspace": 0.35})
+    starts = np.degrees(prog.starts)
+    letters = [chr(ord("A") + i) for i in range(len(prog.segments))]
+    for ax, (key, y, label) in zip(axes, rows):
+        # break the line at the joints, so that a jump shows as a jump
+        br = np.flatnonzero(np.diff(k.segment) != 0) + 1
+        xs = np.insert(deg, br, np.nan)
+        ys = np.insert(y, br, np.nan)
+        ln, = ax.plot(xs, ys, color=INK, lw=1.2)
+        ln.set_gid(f"diagram-{key}")
+        ax.axhline(0.0, color=GREY, lw=0.5).set_gid(f"zero-{key}")
+        for j, s in enumerate(starts):
+            if j == 0:
+                continue
+            ax.axvline(s, color=GREY, lw=0.5, ls=(0, (3, 2))).set_gid(f"boundary-{key}-{j}")
+        ax.set_ylabel(label, fontsize=8)
+        ax.tick_params(labelsize=7)
+        order = {"Y": 0, "y1": 1, "y2": 2}[key]
+        if cam.omega and order:          # the same curve read in time rates (Eq. 6.11)
+            w = cam.omega ** order
+            sec = ax.secondary_yaxis("right", functions=(lambda v, w=w: v * w,
+                                                         lambda v, w=w: v / w))
+            sec.set_ylabel(f"{('velocity', 'acceleration')[order - 1]}, {unit}/s"
+                           + ("\u00b2" if order == 2 else ""), fontsize=8)
+            sec.tick_params(labelsize=7)
+            sec.set_gid(f"rate-axis-{key}")
+        ax.set_xlim(0, 360)
+        ax.spines[["top", "right"]].set_visible(False)
+    for j, s in enumerate(list(starts) + [360.0]):
+        name = letters[j % len(prog.segments)]
+        t = axes[0].text(s, 1.02, name, transform=axes[0].get_xaxis_transform(), ha="center",
+                         va="bottom", fontsize=8)
+        t.set_gid(f"joint-{j}")
+    for j, seg in enumerate(prog.segments):
+        mid = float(starts[j] + math.degrees(seg.angle) / 2)
+        txt = seg.name or (seg.motion.value if seg.kind != "dwell" else "dwell")
+        t = axes[2].text(mid, 0.02, txt, transform=axes[2].get_xaxis_transform(),
+                         ha="center", va="bottom", fontsize=6.5, color=GREY)
+        t.set_gid(f"segment-label-{j}")
+    axes[2].set_xlabel("cam angle \u0398, degrees", fontsize=8)
+    axes[2].set_xticks(np.arange(0, 361, 45))
+    title = fig.suptitle((cam.title + " — " if cam.title else "") + "displacement diagram",
+                         fontsize=10)
+    title.set_gid("title")
+    return fig
+
+
+def design_figure(cam: Cam, fig: Any = None) -> Any:
+    """The pressure angle and the radius of curvature over one turn (Secs. 6.9-6.10).
+
+    The largest |φ| and the least convex radius are marked; an undercut
+    stretch is shaded.
+    """
+    fig = fig or Figure(figsize=(7.0, 5.6))
+    th = stations(3600)
+    pr = profile(cam, th)
+    deg = np.degrees(th)
+    chk = design.check(cam)
+    axes = fig.subplots(2, 1, sharex=True, gridspec_kw={"hspace": 0.3})
+    ln, = axes[0].plot(deg, np.degrees(pr.pressure), color=INK, lw=1.2)
+    ln.set_gid("pressure-angle")
+    m = chk.pressure
+    i = int(np.argmin(np.abs(np.angle(np.exp(1j * (th - m.theta))))))
+    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(pr.pressure[i])], "o", ms=4,
+                       color=HIGHLIGHT)
+    mk.set_gid("pressure-max")
+    t = axes[0].annotate(f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
+                         xy=(math.degrees(m.theta), math.degrees(pr.pressure[i])),
+                         xytext=(6, 6), textcoords="offset points", fontsize=7.5)
+    t.set_gid("pressure-max-label")
+    axes[0].set_ylabel("pressure angle \u03c6, degrees", fontsize=8)
+    rho = pr.rho
+    ok = np.isfinite(rho)
+    big = np.percentile(np.abs(rho[ok]), 90) * 3 if np.any(ok) else 1.0
+    ln, = axes[1].plot(deg, np.where(np.abs(rho) <= big, rho, np.nan), color=INK, lw=1.2)
+    ln.set_gid("radius-of-curvature")
+    if chk.rho is not None:
+        r = chk.rho
+        mk, = axes[1].plot([math.degrees(r.theta)], [r.value], "o", ms=4, color=HIGHLIGHT)
+        mk.set_gid("radius-min")
+        t = axes[1].annotate(f"\u03c1min = {g6(r.value)} {cam.unit}",
+                             xy=(math.degrees(r.theta), r.value), xytext=(6, -12),
+                             textcoords="offset points", fontsize=7.5)
+        t.set_gid("radius-min-label")
+    for j, cut in enumerate(chk.undercut):
+        for a, b in ((cut.start, cut.end),) if cut.end >= cut.start else \
+                ((cut.start, 2 * math.pi), (0.0, cut.end)):
+            for ax in axes:
+                ax.axvspan(math.degrees(a), math.degrees(b), color=HIGHLIGHT, alpha=0.15,
+                           lw=0).set_gid(f"undercut-{j}")
+    axes[1].set_ylabel(f"radius of curvature \u03c1, {cam.unit}\n(convex +)", fontsize=8)
+    axes[1].set_xlabel("cam angle \u0398, degrees", fontsize=8)
+    axes[1].set_xticks(np.arange(0, 361, 45))
+    for ax in axes:
+        ax.axhline(0.0, color=GREY, lw=0.5)
+        ax.set_xlim(0, 360)
+        ax.tick_params(labelsize=7)
+        ax.spines[["top", "right"]].set_visible(False)
+    title = fig.suptitle((cam.title + " \u2014 " if cam.title else "")
+                         + "pressure angle and radius of curvature", fontsize=10)
+    title.set_gid("title")
+    return fig
+
+
+def save_cam_figure(cam: Cam, path: str | Path, *, diagram: str = "layout",
+                    stations: int = 12) -> Path:
+    """Draw ``diagram`` (``layout``, ``displacement`` or ``design``); save it (.svg/.png/.pdf)."""
+    with rc_context():
+        if diagram == "layout":
+            fig = layout_figure(cam, stations)
+        elif diagram == "design":
+            fig = design_figure(cam)
+        else:
+            fig = displacement_figure(cam)
+    return save(fig, path)
