@@ -1,0 +1,129 @@
+"""Five postures: the Burmester points (Sec. 9.6).
+
+The center points of postures 1234 form one cubic and those of 1235 another;
+their common points other than the poles P12, P13, P23 are the Burmester
+center points (0, 2 or 4 of them real), whose circle points pass through all
+five postures on one circle.  By construction: the center-point curve of
+1234 is drawn as in Sec. 9.5 (the construction of :mod:`.four`, evaluated on
+an array of t); for each of its points, the circle point A1 is carried to
+posture 5 by the rotation θ15 about P15 (two mirrors in lines through P15,
+φ15 apart), and the center point is a Burmester point where A5 falls on the
+circle through A1..A4.  The roots are bracketed along the curve and halved
+(every halving one evaluation of the construction on all brackets at once).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 9.6.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from graphkin.construction import Construction
+from graphkin.construction.step import Role
+from graphkin.synthesis.analytic import REACH
+from graphkin.synthesis.four import _cplx, burmester_construction, letters, sample_t
+from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles
+
+__all__ = ["BurmesterPoint", "five_construction", "burmester_points"]
+
+
+@dataclass(frozen=True)
+class BurmesterPoint:
+    """A Burmester point: a center point and its circle point (posture 1), complex."""
+
+    center: complex
+    circle: complex
+
+
+def five_construction(post: Postures) -> Construction:
+    """The four-posture construction of postures 1-4 with the fifth position of each circle point.
+
+    Adds P15 and, for both branches, ``E5``/``F5``: the circle point turned
+    θ15 about P15 (mirrored in P15E_C and then in the line through P15 turned
+    φ15 from it).
+    """
+    four_post = Postures(post.points[:4], post.angles[:4], post.names, post.second,
+                         post.source, post.key, post.tol)
+    cx = burmester_construction(four_post)
+    cx.title = "Burmester points (five postures)"
+    # posture 5 and its pole with posture 1
+    d, e = post.names
+    cx.add("point", (), (f"{d}5",), xy=tuple(map(float, post.points[4])), role=Role.GIVEN,
+           diagram=DIAGRAM, note=f"{d}5: the body's point {d} in posture 5 (given).")
+    cx.add("scalar", (), ("θ5",), value=float(post.angles[4]), role=Role.GIVEN,
+           diagram=DIAGRAM, note="θ5: the body's angle in posture 5 (given).")
+    cx.add("rigid", (f"{d}5", "θ5"), (f"{e}5",), local_p=(0.0, 0.0),
+           local_q=tuple(post.second), role=Role.GIVEN, diagram=DIAGRAM,
+           note=f"{e}5: the body's point {e} in posture 5.")
+    labels = [(f"{d}{k}", f"{e}{k}", f"θ{k}") for k in range(1, 6)]
+    add_poles(cx, post, labels, [(1, 5)])
+    phi = math.remainder(float(post.angles[4] - post.angles[0]), math.tau) / 2
+    for name in letters(post):
+        center = f"{name}_C"
+        ang = f"∠P15{center}"
+        cx.add("angle_along", ("P15", center), (ang,), local_angle=0.0, sign=1.0,
+               diagram=DIAGRAM, note=f"the direction of P15{center}.")
+        cx.add("line_at_angle", ("P15", ang), (f"m_{name}15",), diagram=DIAGRAM,
+               note=f"the line P15{center}.")
+        cx.add("line_at_angle", ("P15", ang), (f"n_{name}15",), offset=phi, diagram=DIAGRAM,
+               note=f"the line through P15 turned φ15 = {math.degrees(phi):.6g}° from it.")
+        cx.add("reflect", (f"{name}1", f"m_{name}15"), (f"{name}'",), diagram=DIAGRAM,
+               note=f"{name}1 mirrored in P15{center}.")
+        cx.add("reflect", (f"{name}'", f"n_{name}15"), (f"{name}5",), role=Role.RESULT,
+               diagram=DIAGRAM, note=f"{name}5: {name}1 turned θ15 about P15 (two mirrors).")
+    return cx
+
+
+def _defect(ev: dict[str, np.ndarray] | object, branch: str, center: str,
+            scale: float) -> np.ndarray:
+    m = _cplx(ev[center])  # type: ignore[index]
+    a1 = _cplx(ev[f"{branch}1"])  # type: ignore[index]
+    a5 = _cplx(ev[f"{branch}5"])  # type: ignore[index]
+    return (np.abs(a5 - m) ** 2 - np.abs(a1 - m) ** 2) / scale ** 2
+
+
+def burmester_points(post: Postures, count: int = 4001,
+                     cx: Construction | None = None) -> tuple[list[BurmesterPoint], Construction]:
+    """The real Burmester points of five postures, by construction.
+
+    Returns the points (ordered along the curve) and the construction.
+    """
+    cx = cx if cx is not None else five_construction(post)
+    scale = post.scale
+    middle = complex(*np.mean(post.points, axis=0))
+    t = sample_t(count)
+    ev = cx.evaluate({"t": t}, strict=False)
+    found: list[BurmesterPoint] = []
+    for branch in letters(post):
+        center = f"{branch}_C"
+        g = _defect(ev, branch, center, scale)
+        ok = np.isfinite(g[:-1]) & np.isfinite(g[1:])
+        k = np.nonzero(ok & (np.sign(g[:-1]) * np.sign(g[1:]) <= 0))[0]
+        if k.size == 0:
+            continue
+        lo, hi = t[k], t[k + 1]
+        glo = g[k]
+        for _ in range(64):
+            mid = 0.5 * (lo + hi)
+            gm = _defect(cx.evaluate({"t": mid}, strict=False), branch, center, scale)
+            left = np.sign(gm) == np.sign(glo)
+            lo = np.where(left, mid, lo)
+            glo = np.where(left, gm, glo)
+            hi = np.where(left, hi, mid)
+        ev2 = cx.evaluate({"t": 0.5 * (lo + hi)}, strict=False)
+        m = np.atleast_1d(_cplx(ev2[center]))
+        a1 = np.atleast_1d(_cplx(ev2[f"{branch}1"]))
+        a5 = np.atleast_1d(_cplx(ev2[f"{branch}5"]))
+        miss = np.abs(np.abs(a5 - m) - np.abs(a1 - m)) / scale
+        for mi, ai, gap in zip(m, a1, miss):
+            # a true root, not a jump of the defect through infinity (A1 at infinity)
+            if np.isfinite(gap) and gap <= 1e-7 and abs(ai - mi) <= 1e6 * scale \
+                    and abs(mi - middle) <= REACH * scale:
+                if all(abs(mi - f.center) > 1e-7 * scale for f in found):
+                    found.append(BurmesterPoint(complex(mi), complex(ai)))
+    return found, cx
