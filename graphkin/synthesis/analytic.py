@@ -309,10 +309,10 @@ def freudenstein(phi: np.ndarray, psi: np.ndarray) -> np.ndarray:
 
 def freudenstein_lengths(k: np.ndarray, r1: float) -> tuple[float, float, float, float]:
     """r1, r2, r3, r4 from K1, K2, K3 (Eqs. 9.25-9.27); r3² must come out positive."""
-    r4 = r1 / k[0]
-    r2 = r1 / k[1]
+    r4 = float(r1 / k[0])
+    r2 = float(r1 / k[1])
     r3sq = 2 * r2 * r4 * k[2] + r1 ** 2 + r2 ** 2 + r4 ** 2
-    return r1, r2, float(np.sqrt(r3sq)) if r3sq > 0 else float("nan"), r4
+    return float(r1), r2, float(np.sqrt(r3sq)) if r3sq > 0 else float("nan"), r4
 
 
 # ---- the dyads of Example 9.8 -------------------------------------------------------------
