@@ -159,10 +159,11 @@ def add_poles(cx: Construction, post: Postures, labels: list[tuple[str, str, str
         note = (f"{name}: the bisectors of {d}{i}{d}{j} and {e}{i}{e}{j} meet at the pole, "
                 f"the point of the body that does not move from posture {i} to {j}; "
                 f"θ{i}{j} = {math.degrees(math.remainder(rot, math.tau)):.6g}° (Eq. 9.2).")
-        fixed = [(p, q) for p, q, loc in ((di, dj, (0.0, 0.0)), (ei, ej, post.second))
+        fixed = [(p, q, loc) for p, q, loc in ((di, dj, (0.0, 0.0)), (ei, ej, post.second))
                  if np.hypot(*np.diff(post.positions(loc)[[i - 1, j - 1]], axis=0)[0]) <= eps]
         if fixed:
-            cx.add("copy_point", (fixed[0][0],), (name,), role=Role.RESULT, diagram=DIAGRAM,
+            cx.add("rigid", (labels[i - 1][0], ti), (name,), local_p=(0.0, 0.0),
+                   local_q=fixed[0][2], role=Role.RESULT, diagram=DIAGRAM,
                    note=f"{name}: {fixed[0][0]} does not move from posture {i} to {j}, so it "
                         f"is the pole (Sec. 9.3).")
             out.append(name)

@@ -189,7 +189,9 @@ class _Reader:
                 and names[0] != names[1]):
             raise self.fail("body.points", "expected two different point names, "
                                            "e.g. [\"D\", \"E\"]")
-        pts, angs, seconds = [], [], []
+        pts: list[tuple[float, float]] = []
+        angs: list[float] = []
+        seconds: list[float | None] = []
         for i, e in enumerate(entries):
             key = f"postures[{i}]"
             valid = ["point", "angle", *names]

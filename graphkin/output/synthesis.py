@@ -1,0 +1,90 @@
+"""The report of a synthesis: text and JSON (``graphkin synthesize``).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Ch. 9.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from graphkin.synthesis.linkage import Linkage
+from graphkin.synthesis.run import Result
+from graphkin.text import fmt
+
+__all__ = ["synthesis_json", "synthesis_text"]
+
+
+def _xy(z: complex) -> list[float]:
+    return [float(z.real), float(z.imag)]
+
+
+def _linkage(link: Linkage) -> dict[str, Any]:
+    na, nb = link.names
+    return {"fixed_pivots": {f"O_{na}": _xy(link.o_a), f"O_{nb}": _xy(link.o_b)},
+            "moving_pivots": {f"{na}1": _xy(link.a1), f"{nb}1": _xy(link.b1)},
+            "lengths": {k: float(v) for k, v in link.lengths.items()},
+            "crank_angles_deg": [float(math.degrees(a)) for a in link.crank_angles()],
+            "checks": [{"name": c.name, "passed": c.passed, "detail": c.detail}
+                       for c in link.checks], "ok": link.ok}
+
+
+def synthesis_json(res: Result) -> dict[str, Any]:
+    """The result as plain data (floats in the file's length unit, angles in degrees)."""
+    out: dict[str, Any] = {"title": res.spec.title, "kind": res.kind, "units": res.spec.units}
+    if res.construction is not None:
+        ev = res.construction.evaluate({"t": np.array(0.0)} if "t" in res.construction.labels
+                                       else None, strict=False)
+        out["poles"] = {s.label: _xy(complex(ev[s.label][0] / ev[s.label][2],
+                                             ev[s.label][1] / ev[s.label][2]))
+                        for s in res.construction if s.label.startswith("P")
+                        and s.role == "result" and s.kind == "point"}
+        out["steps"] = res.construction.to_dict()
+    if res.burmester:
+        out["burmester_points"] = [{"center": _xy(p.center), "circle": _xy(p.circle)}
+                                   for p in res.burmester]
+    out["candidates"] = [_linkage(c) for c in res.candidates]
+    if res.function is not None:
+        f = res.function
+        out["function"] = {
+            "expression": f.spec.expression, "x": f.x.tolist(), "y": f.y.tolist(),
+            "phi_deg": np.degrees(f.phi).tolist(), "psi_deg": np.degrees(f.psi).tolist(),
+            "K": f.k.tolist(), "lengths": {"r1": f.lengths[0], "r2": f.lengths[1],
+                                           "r3": f.lengths[2], "r4": f.lengths[3]},
+            "max_structural_error": float(np.nanmax(np.abs(f.error)))}
+    return out
+
+
+def synthesis_text(res: Result) -> str:
+    """The result as a text report."""
+    lines = [res.spec.title or "Synthesis", f"{res.kind}", ""]
+    data = synthesis_json(res)
+    if "poles" in data:
+        lines.append("Poles: " + ", ".join(f"{k} = ({fmt(v[0])}, {fmt(v[1])})"
+                                            for k, v in data["poles"].items()))
+    if res.burmester:
+        lines.append(f"Burmester points: {len(res.burmester)} real")
+        for p in res.burmester:
+            lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
+                         f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
+    for i, c in enumerate(data["candidates"], 1):
+        lines.append(f"Candidate {i}: " + ("passes every check" if c["ok"] else "fails " +
+                     ", ".join(k["name"] for k in c["checks"] if not k["passed"])))
+        for name, v in {**c["fixed_pivots"], **c["moving_pivots"]}.items():
+            lines.append(f"  {name} = ({fmt(v[0])}, {fmt(v[1])}) {res.spec.units}")
+        lines.append("  " + ", ".join(f"{k} {fmt(v)}" for k, v in c["lengths"].items()))
+        for k in c["checks"]:
+            lines.append(f"  [{'ok' if k['passed'] else 'FAIL'}] {k['name']}: {k['detail']}")
+    if res.function is not None:
+        f = data["function"]
+        lines.append(f"y = {f['expression']}; precision points (Chebyshev, Eq. 9.22):")
+        for x, y, p, q in zip(f["x"], f["y"], f["phi_deg"], f["psi_deg"]):
+            lines.append(f"  x = {fmt(x)}  y = {fmt(y)}  φ = {fmt(p)}°  ψ = {fmt(q)}°")
+        lines.append("  K1, K2, K3 = " + ", ".join(fmt(k) for k in f["K"]))
+        lines.append("  " + ", ".join(f"{k} = {fmt(v)}" for k, v in f["lengths"].items()))
+        lines.append(f"  largest structural error |Δy| = {fmt(f['max_structural_error'])}")
+    return "\n".join(lines) + "\n"
