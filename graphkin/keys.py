@@ -39,8 +39,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GALLERY", "check_keys", "read_units",
-           "nearest"]
+__all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "SYNTHESIS", "GALLERY", "check_keys",
+           "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
 
@@ -92,6 +92,19 @@ MECHANISM: Schema = {
     "bodies": {"link": None, "circle": _CIRCLE, "face": None, "outline": None},
 }
 """Every key of a mechanism file (the format reference: ``docs/formats/mechanism.md``)."""
+
+SYNTHESIS: Schema = {
+    "title": None,
+    "units": UNITS,
+    "body": {"points": None},
+    "postures": None,     # [[postures]]: point and angle, or the body's two points by name
+    "pivots": {"circle_points": None, "center_points": None},
+    "function": {"expression": None, "range": None, "points": None, "input": None,
+                 "output": None, "ground": None},
+}
+"""Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
+the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by
+:mod:`graphkin.synthesis.spec`."""
 
 VECTOR: Schema = {
     "title": None,

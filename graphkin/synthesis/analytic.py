@@ -228,16 +228,19 @@ def burmester(mo: Motion, scale: float, middle: complex = 0j) -> list[tuple[comp
     span = REACH * scale
     out: list[tuple[complex, complex]] = []
     # abscissae from the resultant in y, ordinates from the resultant in x (the cubics
-    # transposed): two near roots that one resultant blurs into a complex pair the other
-    # keeps apart; every candidate is polished on both cubics and checked
-    for a1, a2, c0, swap in ((c1, c2, center.real, False), (c1.T, c2.T, center.imag, True)):
-        for u in _resultant_roots(a1, a2, c0, span):
+    # transposed), each interpolated over 1, 3 and 10 figure sizes (near roots in a
+    # cluster are blurred by the widest fit): every candidate is polished on both cubics
+    # and checked
+    passes = [(c1, c2, center.real, False, w) for w in (1.0, 3.0, 10.0)] + \
+        [(c1.T, c2.T, center.imag, True, w) for w in (1.0, 3.0, 10.0)]
+    for a1, a2, c0, swap, width in passes:
+        for u in _resultant_roots(a1, a2, c0, span * width / 10.0):
             for v in np.roots(_trim(_in_y(a1, u))[::-1]):
                 if abs(v.imag) > 1e-3 * span:
                     continue
                 start = complex(v.real, u) if swap else complex(u, v.real)
                 z = _polish(c1, c2, start)
-                if z is None or abs(z - start) > 1e-3 * scale:
+                if z is None or abs(z - start) > 0.1 * scale:
                     continue
                 if any(abs(z - p) < 1e-6 * scale for p in finite):
                     continue

@@ -87,36 +87,81 @@ def _defect(ev: dict[str, np.ndarray] | object, branch: str, center: str,
     return (np.abs(a5 - m) ** 2 - np.abs(a1 - m) ** 2) / scale ** 2
 
 
+def _bisect(cx: Construction, branch: str, lo: np.ndarray, hi: np.ndarray,
+            scale: float) -> np.ndarray:
+    """Halve the brackets [lo, hi] of t (either order) on one branch; the t's found."""
+    center = f"{branch}_C"
+    glo = _defect(cx.evaluate({"t": lo}, strict=False), branch, center, scale)
+    for _ in range(64):
+        mid = 0.5 * (lo + hi)
+        gm = _defect(cx.evaluate({"t": mid}, strict=False), branch, center, scale)
+        left = np.sign(gm) == np.sign(glo)
+        lo = np.where(left, mid, lo)
+        glo = np.where(left, gm, glo)
+        hi = np.where(left, hi, mid)
+    return np.asarray(0.5 * (lo + hi))
+
+
+def _junctions(cx: Construction, t: np.ndarray, exists: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Where the two circles stop meeting: the last t on each side, and t at the tangency.
+
+    The two branches of center points join there (the circles touch), so a root of
+    the defect may lie on the loop through the junction.
+    """
+    k_end = np.nonzero(exists[:-1] & ~exists[1:])[0]
+    k_start = np.nonzero(~exists[:-1] & exists[1:])[0]
+    inner = np.concatenate([t[k_end], t[k_start + 1]])
+    outer = np.concatenate([t[k_end + 1], t[k_start]])
+    first = inner.copy()
+    if inner.size == 0:
+        return first, inner
+    name = next(s.outputs[0] for s in cx if s.op == "intersect_circles")
+    for _ in range(64):
+        mid = 0.5 * (inner + outer)
+        fin = np.isfinite(_cplx(cx.evaluate({"t": mid}, strict=False)[name]))
+        inner = np.where(fin, mid, inner)
+        outer = np.where(fin, outer, mid)
+    return first, inner
+
+
 def burmester_points(post: Postures, count: int = 4001,
                      cx: Construction | None = None) -> tuple[list[BurmesterPoint], Construction]:
     """The real Burmester points of five postures, by construction.
 
-    Returns the points (ordered along the curve) and the construction.
+    The defect (A5's distance from the center point minus A1's) changes sign
+    along a branch of the 1234 curve, or between the two branches where they
+    join (the two circles touch): each change is bracketed and halved.
+
+    Returns the points and the construction.
     """
     cx = cx if cx is not None else five_construction(post)
     scale = post.scale
     middle = complex(*np.mean(post.points, axis=0))
     t = sample_t(count)
     ev = cx.evaluate({"t": t}, strict=False)
+    names = letters(post)
+    g = {b: _defect(ev, b, f"{b}_C", scale) for b in names}
+    brackets: dict[str, list[tuple[float, float]]] = {b: [] for b in names}
+    for b in names:
+        ok = np.isfinite(g[b][:-1]) & np.isfinite(g[b][1:])
+        for k in np.nonzero(ok & (np.sign(g[b][:-1]) * np.sign(g[b][1:]) <= 0))[0]:
+            brackets[b].append((float(t[k]), float(t[k + 1])))
+    first, touch = _junctions(cx, t, np.isfinite(_cplx(ev[f"{names[0]}_C"])))
+    if first.size:
+        ev_first = cx.evaluate({"t": first}, strict=False)
+        ev_touch = cx.evaluate({"t": touch}, strict=False)
+        for b in names:
+            g0 = _defect(ev_first, b, f"{b}_C", scale)
+            g1 = _defect(ev_touch, b, f"{b}_C", scale)
+            for k in np.nonzero(np.sign(g0) * np.sign(g1) < 0)[0]:
+                brackets[b].append((float(first[k]), float(touch[k])))
     found: list[BurmesterPoint] = []
-    for branch in letters(post):
-        center = f"{branch}_C"
-        g = _defect(ev, branch, center, scale)
-        ok = np.isfinite(g[:-1]) & np.isfinite(g[1:])
-        k = np.nonzero(ok & (np.sign(g[:-1]) * np.sign(g[1:]) <= 0))[0]
-        if k.size == 0:
+    for branch in names:
+        if not brackets[branch]:
             continue
-        lo, hi = t[k], t[k + 1]
-        glo = g[k]
-        for _ in range(64):
-            mid = 0.5 * (lo + hi)
-            gm = _defect(cx.evaluate({"t": mid}, strict=False), branch, center, scale)
-            left = np.sign(gm) == np.sign(glo)
-            lo = np.where(left, mid, lo)
-            glo = np.where(left, gm, glo)
-            hi = np.where(left, hi, mid)
-        ev2 = cx.evaluate({"t": 0.5 * (lo + hi)}, strict=False)
-        m = np.atleast_1d(_cplx(ev2[center]))
+        lo, hi = (np.array(v) for v in zip(*brackets[branch]))
+        ev2 = cx.evaluate({"t": _bisect(cx, branch, lo, hi, scale)}, strict=False)
+        m = np.atleast_1d(_cplx(ev2[f"{branch}_C"]))
         a1 = np.atleast_1d(_cplx(ev2[f"{branch}1"]))
         a5 = np.atleast_1d(_cplx(ev2[f"{branch}5"]))
         miss = np.abs(np.abs(a5 - m) - np.abs(a1 - m)) / scale

@@ -30,6 +30,7 @@ import numpy as np
 
 from graphkin.construction import Construction
 from graphkin.construction.step import Role, Side
+from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles, add_postures
 
@@ -84,6 +85,33 @@ def circle_point_steps(cx: Construction, post: Postures, center: str, name: str,
     return first
 
 
+def check_quadrilateral(post: Postures, quadrilateral: str = "a") -> None:
+    """Refuse postures two of whose six poles coincide.
+
+    A side of the opposite-pole quadrilateral of no length, or P12 = P13 (the
+    two lines that find a circle point through one point), leaves the
+    center-point curve undefined; two poles that coincide elsewhere make it
+    degenerate into lines and circles through them.
+
+    Raises
+    ------
+    InputError
+        Naming the file's postures and the two poles.
+    """
+    def pole(i: int, j: int) -> complex:
+        return an.pole(complex(*post.points[i - 1]), float(post.angles[i - 1]),
+                       complex(*post.points[j - 1]), float(post.angles[j - 1]))
+
+    names = ["P12", "P13", "P14", "P23", "P24", "P34"]
+    poles = {n: pole(int(n[1]), int(n[2])) for n in names}
+    for k, p in enumerate(names):
+        for q in names[k + 1:]:
+            if abs(poles[p] - poles[q]) <= post.tol.length(post.scale) * 1e3:
+                raise InputError(f"the poles {p} and {q} coincide (three postures turn about "
+                                 "one point, or the body turns about a pole): the center-point "
+                                 "curve degenerates (Sec. 9.5)", key=post.key, file=post.source)
+
+
 def burmester_construction(post: Postures, quadrilateral: str = "a") -> Construction:
     """Record the center-point and circle-point curves of four postures as one construction.
 
@@ -93,6 +121,7 @@ def burmester_construction(post: Postures, quadrilateral: str = "a") -> Construc
     intersections) and ``E1``, ``F1`` (their circle points in posture 1;
     other letters when the body's points are named E or F, :func:`letters`).
     """
+    check_quadrilateral(post, quadrilateral)
     cx = Construction(title="center-point curve (four postures)")
     labels = add_postures(cx, post)
     add_poles(cx, post, labels, [(1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4)])

@@ -23,18 +23,13 @@ import numpy as np
 
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
-from graphkin.keys import nearest, read_units
+from graphkin.keys import SYNTHESIS, nearest, read_units
 from graphkin.synthesis.postures import Postures
 
 __all__ = ["Spec", "FunctionSpec", "load_spec", "loads_spec", "SCHEMA"]
 
-SCHEMA: dict[str, Any] = {
-    "title": None, "units": None, "body": {"points": None},
-    "postures": None, "pivots": {"circle_points": None, "center_points": None},
-    "function": {"expression": None, "range": None, "points": None, "input": None,
-                 "output": None, "ground": None},
-}
-"""Every key of a synthesis file (``[[postures]]`` entries are checked on their own)."""
+SCHEMA = SYNTHESIS
+"""Every key of a synthesis file (:data:`graphkin.keys.SYNTHESIS`)."""
 
 
 @dataclass(frozen=True)
