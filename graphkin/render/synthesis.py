@@ -1,9 +1,14 @@
-"""Drawings of a synthesis, after Figs. 9.5-9.26: postures, poles, pole triangle, curves, linkage.
+"""Drawings of a synthesis, after Figs. 9.5-9.26: postures, poles, bisectors, curves, linkage.
 
-Every element carries a gid (``posture-2``, ``pole-P12``, ``side-s1``,
-``center-point-curve``, ``circle-point-curve``, ``burmester-1``,
-``linkage-3``...), so a test reads the SVG back by id.  A function generator
-is drawn as its structural error over the range (Sec. 9.7).
+Every recorded step of the construction is drawn with its step id as gid
+(``step-07-P12``: the pole P12; ``step-12-b_A12``: a bisector), as the
+other drawings of graphkin are: points as dots with their names, lines
+(bisectors, sides of the pole triangle, the lines turned about a pole) as
+thin lines across the figure, circles (the circle of a circle point's
+positions, the straight-line circles of Example 9.4) as circles.  The curves
+and the linkage carry names of their own (``center-point-curve-1``,
+``circle-point-curve-1``, ``burmester-1``, ``linkage-1``, ``fixed-pivots``).
+A function generator is drawn as its structural error over the range.
 
 References
 ----------
@@ -18,35 +23,85 @@ from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.patches import Circle
 
+from graphkin.construction import Construction
 from graphkin.render.svg import save
 from graphkin.synthesis.run import Result
 
 __all__ = ["synthesis_figure", "save_synthesis"]
 
-
-def _z(ev: Any, lab: str) -> complex:
-    v = np.asarray(ev[lab], dtype=float)
-    return complex(v[0] / v[2], v[1] / v[2]) if v[2] != 0 else complex(np.nan, np.nan)
+_LINE_OPS = {"bisector", "join", "line_at_angle", "perpendicular"}
+_CIRCLE_OPS = {"circle_through"}
 
 
-def _polyline(ax: Any, z: np.ndarray, gid: str, window: tuple[complex, float],
-              **kw: Any) -> None:
-    """A sampled curve, broken where it leaves the window or jumps (no line across gaps)."""
+def _z(v: Any) -> complex:
+    v = np.asarray(v, dtype=float)
+    if v.shape != (3,) or v[2] == 0:
+        return complex(np.nan, np.nan)
+    return complex(v[0] / v[2], v[1] / v[2])
+
+
+def _after_t(cx: Construction) -> set[str]:
+    """The labels that depend on the input t (the curves' steps, drawn as curves instead)."""
+    out = {"t"}
+    for s in cx:
+        if any(i in out for i in s.inputs):
+            out.update(s.outputs)
+    return out
+
+
+def _paint_steps(ax: Any, cx: Construction, window: tuple[complex, float],
+                 skip: set[str]) -> None:
+    """Draw every step of a construction not in ``skip``; the gid of each is its step id."""
     mid, size = window
-    z = np.where(np.abs(z - mid) <= size, z, np.nan)
-    gap = np.abs(np.diff(z)) > 0.2 * size
-    z = z.copy()
-    z[1:][gap] = np.nan
-    (line,) = ax.plot(z.real, z.imag, **kw)
-    line.set_gid(gid)
+    ev = cx.evaluate({"t": np.array(0.0)} if "t" in cx.labels else None, strict=False)
+    for s in cx:
+        if s.label in skip or s.outputs[0] in skip or s.outputs[0] not in ev:
+            continue
+        v = np.asarray(ev[s.outputs[0]], dtype=float)
+        result = str(s.role) == "result"
+        if s.kind == "point":
+            z = _z(v)
+            if not np.isfinite(z) or abs(z - mid) > 3 * size:
+                continue
+            color = "C0" if s.label.startswith("P") and len(s.label) == 3 else (
+                "C3" if result else "0.2")
+            (m,) = ax.plot(z.real, z.imag, "s" if color == "C0" else "o", color=color,
+                           ms=4.5 if result or color == "C0" else 3.0)
+            m.set_gid(s.step_id)
+            t = ax.text(z.real, z.imag, f" {s.label}", color=color, fontsize=7, clip_on=True)
+            t.set_gid(f"{s.step_id}-label")
+        elif s.kind == "line" and s.op in _LINE_OPS and v.shape == (3,):
+            a, b, c = v
+            if not np.all(np.isfinite(v)) or a == b == 0:
+                continue
+            side = s.op == "join" and all(i.startswith("P") for i in s.inputs)
+            if s.op == "join":   # a side between two points (the pole triangle, the quadrilateral)
+                p, q = (_z(ev[i]) for i in s.inputs)
+                foot, d = (p + q) / 2, (q - p) / 2
+            else:      # a bisector or a line turned about a pole: across the figure
+                off = a * mid.real + b * mid.imag + c
+                foot = mid - off * complex(a, b)
+                d = complex(-b, a) * 3 * size
+            (ln,) = ax.plot([(foot - d).real, (foot + d).real], [(foot - d).imag, (foot + d).imag],
+                            color="C0" if side else "0.55", lw=0.9 if side else 0.5,
+                            ls="-" if side else (0, (4, 3)))
+            ln.set_gid(s.step_id)
+        elif s.kind == "circle" and s.op in _CIRCLE_OPS and v.shape == (3,):
+            if not np.all(np.isfinite(v)) or v[2] > 3 * size:
+                continue
+            circ = Circle((v[0], v[1]), v[2], fill=False, lw=0.6,
+                          color="C2" if result else "0.45")
+            circ.set_gid(s.step_id)
+            ax.add_patch(circ)
 
 
 def synthesis_figure(res: Result) -> Figure:
     """The figure of a synthesis result (a matplotlib Figure, no pyplot state)."""
-    fig = Figure(figsize=(7.5, 6.0))
+    fig = Figure(figsize=(7.5, 6.5))
     ax = fig.add_subplot(1, 1, 1)
-    ax.set_title(res.spec.title or f"Synthesis: {res.kind}")
+    ax.set_title(res.spec.title or f"Synthesis: {res.kind}", fontsize=10)
     if res.function is not None:
         f = res.function
         (line,) = ax.plot(f.error_x, f.error, color="k")
@@ -55,44 +110,42 @@ def synthesis_figure(res: Result) -> Figure:
         pts.set_gid("precision-points")
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.set_xlabel("x")
-        ax.set_ylabel("structural error Δy (Sec. 9.7)")
+        ax.set_ylabel(f"structural error of y = {f.spec.expression} (Sec. 9.7)")
         return fig
     post = res.spec.postures
     assert post is not None
     dpos = post.positions((0.0, 0.0))
     epos = post.positions(post.second)
-    mid = complex(*dpos.mean(axis=0))
-    size = 4.0 * post.scale
+    mid = complex(*np.vstack([dpos, epos]).mean(axis=0))
+    size = 2.5 * post.scale
+    window = (mid, size)
+    # the marked points and the bisectors that found the poles are the pole construction of
+    # Fig. 9.7: left out here, where the postures are drawn as bars
+    marked = {f"{n}{j + 1}" for n in post.names for j in range(post.n)}
+    for cx in (res.construction, res.selection):
+        if cx is not None:
+            pole_bisectors = {s.label for s in cx if s.op == "bisector"
+                              and set(s.inputs) <= marked | {lab for t in cx if t.op == "rigid"
+                                                             for lab in t.outputs}}
+            _paint_steps(ax, cx, window, _after_t(cx) | marked | pole_bisectors)
     for j in range(post.n):
-        (body,) = ax.plot([dpos[j, 0], epos[j, 0]], [dpos[j, 1], epos[j, 1]], color="k", lw=2.2)
+        (body,) = ax.plot([dpos[j, 0], epos[j, 0]], [dpos[j, 1], epos[j, 1]], color="k", lw=2.4)
         body.set_gid(f"posture-{j + 1}")
-        t = ax.text(dpos[j, 0], dpos[j, 1], f" {post.names[0]}{j + 1}", fontsize=8)
-        t.set_gid(f"label-posture-{j + 1}")
-    if res.construction is not None:
-        cx = res.construction
-        given = {"t": np.array(0.0)} if "t" in cx.labels else None
-        ev = cx.evaluate(given, strict=False)
-        for s in cx:
-            if s.kind == "point" and s.label.startswith("P") and len(s.label) == 3 \
-                    and s.role == "result":
-                z = _z(ev, s.label)
-                if np.isfinite(z):
-                    (m,) = ax.plot(z.real, z.imag, "s", color="C0", ms=5)
-                    m.set_gid(f"pole-{s.label}")
-                    ax.text(z.real, z.imag, f" {s.label}", color="C0", fontsize=8)
-            if s.op == "join" and s.label in ("s1", "s2", "s3"):
-                p, q = (_z(ev, i) for i in s.inputs)
-                (ln,) = ax.plot([p.real, q.real], [p.imag, q.imag], color="C0", lw=0.8)
-                ln.set_gid(f"side-{s.label}")
+        t = ax.text(dpos[j, 0], dpos[j, 1], f"{post.names[0]}{j + 1} ", fontsize=8,
+                    ha="right", va="top", clip_on=True)
+        t.set_gid(f"posture-{j + 1}-label")
     if res.curves is not None:
         for b in range(2):
-            _polyline(ax, res.curves.center[b], f"center-point-curve-{b + 1}", (mid, size),
-                      color="C2", lw=1.0)
-            _polyline(ax, res.curves.circle[b], f"circle-point-curve-{b + 1}", (mid, size),
-                      color="C4", lw=1.0, ls="--")
+            for z, gid, style in ((res.curves.center[b], "center-point-curve", "-"),
+                                  (res.curves.circle[b], "circle-point-curve", "--")):
+                z = np.where(np.abs(z - mid) <= 2 * size, z, np.nan)
+                z[1:][np.abs(np.diff(z)) > 0.2 * size] = np.nan
+                (ln,) = ax.plot(z.real, z.imag, color="C2" if style == "-" else "C4",
+                                lw=1.0, ls=style)
+                ln.set_gid(f"{gid}-{b + 1}")
     for k, bp in enumerate(res.burmester, 1):
         (mk,) = ax.plot([bp.center.real, bp.circle.real], [bp.center.imag, bp.circle.imag],
-                        "o", color="C3", ms=6)
+                        "o", color="C3", ms=6, mfc="none")
         mk.set_gid(f"burmester-{k}")
     link = res.chosen
     if link is not None:
@@ -100,15 +153,17 @@ def synthesis_figure(res: Result) -> Figure:
         for j in range(post.n):
             xs = [link.o_a.real, pa[j].real, pb[j].real, link.o_b.real]
             ys = [link.o_a.imag, pa[j].imag, pb[j].imag, link.o_b.imag]
-            (ln,) = ax.plot(xs, ys, color="C1", lw=1.4 if j == 0 else 0.7,
-                            alpha=1.0 if j == 0 else 0.6)
+            (ln,) = ax.plot(xs, ys, color="C1", lw=1.6 if j == 0 else 0.8,
+                            alpha=1.0 if j == 0 else 0.55)
             ln.set_gid(f"linkage-{j + 1}")
         (fx,) = ax.plot([link.o_a.real, link.o_b.real], [link.o_a.imag, link.o_b.imag], "^",
                         color="C1", ms=9)
         fx.set_gid("fixed-pivots")
-    ax.set_aspect("equal", adjustable="box")
     ax.set_xlim(mid.real - size, mid.real + size)
     ax.set_ylim(mid.imag - size, mid.imag + size)
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=7)
+    ax.set_xlabel(f"x ({res.spec.units})", fontsize=8)
     return fig
 
 

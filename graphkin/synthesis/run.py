@@ -35,7 +35,10 @@ class Result:
     kind : str
         ``"2 postures"`` ... ``"5 postures"`` or ``"function"``.
     construction : Construction or None
-        The recorded construction (poles, triangle, pivots).
+        The recorded construction (poles, triangle, pivots; for four and five
+        postures the curve's, with the input ``t``).
+    selection : Construction or None
+        Four postures: the chosen center points and their circle points.
     curves : Curves or None
         Four and five postures: the center-point and circle-point curves.
     burmester : list
@@ -48,6 +51,7 @@ class Result:
     spec: Spec
     kind: str
     construction: Construction | None = None
+    selection: Construction | None = None
     curves: four.Curves | None = None
     burmester: list[BurmesterPoint] = field(default_factory=list)
     candidates: list[Linkage] = field(default_factory=list)
@@ -189,6 +193,11 @@ def _four(spec: Spec, post: Postures) -> Result:
                              file=spec.source)
         b, i = np.unravel_index(np.nanargmin(dist), dist.shape)
         chosen.append((complex(fine.center[b, i]), complex(fine.circle[b, i])))
+    if abs(chosen[0][0] - chosen[1][0]) <= 1e-3 * post.scale:
+        raise InputError("both center points fall on the same point of the center-point curve "
+                         f"near ({chosen[0][0].real:.4g}, {chosen[0][0].imag:.4g}): choose them "
+                         "near two different points of it (draw it with --draw)",
+                         key="pivots.center_points", file=spec.source)
     sel = Construction(title="four postures: the chosen center points")
     labels = add_postures(sel, post)
     add_poles(sel, post, labels, [(1, 2), (1, 3), (1, 4)])
@@ -199,9 +208,7 @@ def _four(spec: Spec, post: Postures) -> Result:
         four.circle_point_steps(sel, post, f"O_{name}", name, post.n)
     link = Linkage(post, chosen[0][0], chosen[1][0], chosen[0][1], chosen[1][1], names)
     link.check()
-    res = Result(spec, "4 postures", cx, cv, candidates=[link])
-    res.selection = sel  # type: ignore[attr-defined]
-    return res
+    return Result(spec, "4 postures", cx, sel, cv, candidates=[link])
 
 
 def _five(spec: Spec, post: Postures) -> Result:
@@ -218,4 +225,4 @@ def _five(spec: Spec, post: Postures) -> Result:
         link = Linkage(post, p.center, q.center, p.circle, q.circle, names)
         link.check()
         cands.append(link)
-    return Result(spec, "5 postures", cx, cv, burmester=pts, candidates=cands)
+    return Result(spec, "5 postures", cx, None, cv, burmester=pts, candidates=cands)

@@ -117,6 +117,12 @@ def test_cli_writes_mechanism_and_drawing(tmp_path) -> None:  # type: ignore[no-
     assert main(["synthesize", str(f), "-o", str(out), "--draw", str(svg)]) == 0
     assert graphkin.load(out).solve() is not None
     ids = {e.get("id") for e in ET.parse(svg).iter()}
-    for gid in ("posture-1", "pole-P12", "center-point-curve-1", "circle-point-curve-1",
+    for gid in ("posture-1", "center-point-curve-1", "circle-point-curve-1",
                 "linkage-1", "fixed-pivots"):
         assert gid in ids
+    # every pole and every side of the opposite-pole quadrilateral, by its step's id
+    for name in ("P12", "P13", "P14", "P23", "P24", "P34", "q_P12P24", "q_P34P13"):
+        assert any(i and i.startswith("step-") and i.endswith(f"-{name}") for i in ids), name
+    # the chosen center points' circle points in the four postures
+    for name in ("A1", "A4", "B1", "B4", "O_A", "O_B"):
+        assert any(i and i.endswith(f"-{name}") for i in ids), name
