@@ -101,6 +101,7 @@ SYNTHESIS: Schema = {
     "pivots": {"circle_points": None, "center_points": None},
     "function": {"expression": None, "range": None, "points": None, "input": None,
                  "output": None, "ground": None},
+    "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
 }
 """Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
 the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by

@@ -48,6 +48,9 @@ def synthesis_json(res: Result) -> dict[str, Any]:
         out["burmester_points"] = [{"center": _xy(p.center), "circle": _xy(p.circle)}
                                    for p in res.burmester]
     out["candidates"] = [_linkage(c) for c in res.candidates]
+    if res.dyads:
+        out["dyads"] = {k: (_xy(v) if k.startswith("r") else float(np.degrees(v.real)))
+                        for k, v in res.dyads.items()}
     if res.function is not None:
         f = res.function
         out["function"] = {
@@ -71,6 +74,11 @@ def synthesis_text(res: Result) -> str:
         for p in res.burmester:
             lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
                          f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
+    if "dyads" in data:
+        lines.append("Dyads (Sec. 9.12): " + ", ".join(
+            f"{k} = {fmt(v[0])} {'-' if v[1] < 0 else '+'} j{fmt(abs(v[1]))}"
+            if isinstance(v, list) else f"{k} = {fmt(v)}°"
+            for k, v in data["dyads"].items()))
     for i, c in enumerate(data["candidates"], 1):
         lines.append(f"Candidate {i}: " + ("passes every check" if c["ok"] else "fails " +
                      ", ".join(k["name"] for k in c["checks"] if not k["passed"])))

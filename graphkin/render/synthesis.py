@@ -106,18 +106,24 @@ def synthesis_figure(res: Result) -> Figure:
         f = res.function
         (line,) = ax.plot(f.error_x, f.error, color="k")
         line.set_gid("structural-error")
-        pts = ax.plot(f.x, np.zeros_like(f.x), "o", color="C3")[0]
-        pts.set_gid("precision-points")
+        marks = ax.plot(f.x, np.zeros_like(f.x), "o", color="C3")[0]
+        marks.set_gid("precision-points")
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.set_xlabel("x")
         ax.set_ylabel(f"structural error of y = {f.spec.expression} (Sec. 9.7)")
         return fig
-    post = res.spec.postures
+    post = res.postures
     assert post is not None
     dpos = post.positions((0.0, 0.0))
     epos = post.positions(post.second)
-    mid = complex(*np.vstack([dpos, epos]).mean(axis=0))
-    size = 2.5 * post.scale
+    pts = [complex(*p) for p in np.vstack([dpos, epos])]
+    link = res.chosen
+    if link is not None:   # the linkage too, when its pivots are not far off
+        pts += [z for z in (link.o_a, link.o_b) if abs(z - pts[0]) < 10 * post.scale]
+    lo = complex(min(z.real for z in pts), min(z.imag for z in pts))
+    hi = complex(max(z.real for z in pts), max(z.imag for z in pts))
+    mid = (lo + hi) / 2
+    size = max(0.7 * max((hi - lo).real, (hi - lo).imag), 1.5 * post.scale)
     window = (mid, size)
     # the marked points and the bisectors that found the poles are the pole construction of
     # Fig. 9.7: left out here, where the postures are drawn as bars
@@ -147,7 +153,6 @@ def synthesis_figure(res: Result) -> Figure:
         (mk,) = ax.plot([bp.center.real, bp.circle.real], [bp.center.imag, bp.circle.imag],
                         "o", color="C3", ms=6, mfc="none")
         mk.set_gid(f"burmester-{k}")
-    link = res.chosen
     if link is not None:
         pa, pb = link.pivots
         for j in range(post.n):
@@ -156,6 +161,14 @@ def synthesis_figure(res: Result) -> Figure:
             (ln,) = ax.plot(xs, ys, color="C1", lw=1.6 if j == 0 else 0.8,
                             alpha=1.0 if j == 0 else 0.55)
             ln.set_gid(f"linkage-{j + 1}")
+        for j in range(post.n):   # the coupler: the body carried by the pins
+            tri = [pa[j], pb[j], complex(*dpos[j]), pa[j]]
+            (cp,) = ax.plot([z.real for z in tri], [z.imag for z in tri], color="C1",
+                            lw=0.6, alpha=0.6)
+            cp.set_gid(f"coupler-{j + 1}")
+        path = link.coupler_path()
+        (cc,) = ax.plot(path.real, path.imag, color="C5", lw=0.9)
+        cc.set_gid("coupler-curve")
         (fx,) = ax.plot([link.o_a.real, link.o_b.real], [link.o_a.imag, link.o_b.imag], "^",
                         color="C1", ms=9)
         fx.set_gid("fixed-pivots")

@@ -123,6 +123,27 @@ class Linkage:
         u = d / dist
         return a + along * u + side * h * 1j * u, h2 / self.post.scale ** 2
 
+    def travel(self) -> tuple[float, float]:
+        """The crank's sense (+1 ccw, −1 cw) and its travel from the first posture to the last."""
+        psi = self.crank_angles()
+        ccw = float(np.sum(np.mod(np.diff(psi), math.tau)))
+        cw = float(np.sum(np.mod(-np.diff(psi), math.tau)))
+        return (1.0, ccw) if ccw <= cw else (-1.0, cw)
+
+    def coupler_path(self, count: int = SAMPLES) -> np.ndarray:
+        """The body's reference point over the crank's travel, on the first posture's branch.
+
+        Complex; NaN where the linkage cannot assemble.
+        """
+        a, b = self.pivots
+        side = float(self._branch(a[:1], b[:1])[0]) or 1.0
+        sense, travel = self.travel()
+        track = float(self.crank_angles()[0]) + sense * np.linspace(0.0, travel, count)
+        bb, h2 = self._solve(track, side)
+        aa = self.o_a + self.lengths["crank"] * np.exp(1j * track)
+        d_local = (complex(*self.post.points[0]) - a[0]) / (b[0] - a[0])
+        return np.where(h2 >= 0, aa + (bb - aa) * d_local, np.nan)
+
     # ---- the checks ----------------------------------------------------------
     def check(self) -> list[Check]:
         """Run every check and keep the verdicts in :attr:`checks`."""
@@ -141,10 +162,7 @@ class Linkage:
                          "posture(s) " + ", ".join(str(k + 1) for k in np.nonzero(
                              sides != sides[0])[0]) + " on the other branch (branch defect)"))
         psi = self.crank_angles()
-        steps = np.mod(np.diff(psi), math.tau)
-        ccw, cw = float(np.sum(steps)), float(np.sum(np.mod(-np.diff(psi), math.tau)))
-        sense = 1.0 if ccw <= cw else -1.0
-        travel = min(ccw, cw)
+        sense, travel = self.travel()
         ordered = travel < math.tau
         out.append(Check("order", ordered,
                          f"postures in order turning the crank {'ccw' if sense > 0 else 'cw'} "

@@ -46,6 +46,9 @@ class Result:
     candidates : list of Linkage
         The linkages found, each with its checks.
     function : FunctionDesign or None
+    dyads : dict
+        Path generation: the complex vectors r1 ... r5 of Sec. 9.12 and the
+        rotations β2, β3 of the rocker (radians, as real numbers).
     """
 
     spec: Spec
@@ -56,6 +59,14 @@ class Result:
     burmester: list[BurmesterPoint] = field(default_factory=list)
     candidates: list[Linkage] = field(default_factory=list)
     function: FunctionDesign | None = None
+    dyads: dict[str, complex] = field(default_factory=dict)
+
+    @property
+    def postures(self) -> Postures | None:
+        """The body's postures: the file's, or (path generation) the coupler's at the points."""
+        if self.spec.postures is not None:
+            return self.spec.postures
+        return self.candidates[0].post if self.candidates else None
 
     @property
     def chosen(self) -> Linkage | None:
@@ -92,6 +103,8 @@ def synthesize(spec: Spec) -> Result:
     """
     if spec.function is not None:
         return Result(spec, "function", function=design(spec.function))
+    if spec.path is not None:
+        return _path(spec)
     post = spec.postures
     assert post is not None
     return {2: _two, 3: _three, 4: _four, 5: _five}[post.n](spec, post)
@@ -226,3 +239,39 @@ def _five(spec: Spec, post: Postures) -> Result:
         link.check()
         cands.append(link)
     return Result(spec, "5 postures", cx, None, cv, burmester=pts, candidates=cands)
+
+
+def _path(spec: Spec) -> Result:
+    """A crank, coupler and rocker through three precision points with timing (Sec. 9.12).
+
+    The crank-and-coupler dyad from Eq. 3 (two complex linear equations), the
+    rocker dyad pinned on the coupler from Eqs. 5-10 (the determinant of Eq. 7
+    vanishes; the trivial root β = 0 left out).  The coupler, with the coupler
+    point S as its reference point, becomes the body of three postures, and
+    the linkage is checked and written like any other.
+    """
+    ps = spec.path
+    assert ps is not None
+    r2, r3, r1 = an.crank_coupler_dyad(ps.crank, ps.coupler, ps.points)
+    size = float(np.max(np.abs(ps.points - ps.points[0])))
+    if not all(np.isfinite(z) for z in (r1, r2, r3)) or min(abs(r2), abs(r3)) <= 1e-9 * size:
+        raise InputError("no crank and coupler reach the three precision points with these "
+                         "rotations (the dyad equations are singular)", key="path",
+                         file=spec.source)
+    turn = np.exp(1j * (ps.crank - ps.crank[0]))
+    roll = np.exp(1j * ps.coupler)
+    crank_pin = r1 + r2 * turn
+    pin = crank_pin + ps.rocker_pin * r3 * roll
+    roots = an.rocker_dyad(ps.coupler, -pin)
+    if not roots:
+        raise InputError("no rocker pinned there reaches the three positions (Eq. 7 has no "
+                         "real root but β = 0)", key="path.rocker_pin", file=spec.source)
+    r4, r5, b2, b3 = roots[0]
+    ang = float(np.angle(r3)) + ps.coupler
+    post = Postures(np.stack([ps.points.real, ps.points.imag], axis=-1), ang, ("S", "T"),
+                    (0.0, 0.25 * abs(r3)), spec.source, "path")
+    link = Linkage(post, r1, r5, complex(crank_pin[0]), complex(pin[0]), ("A", "B"))
+    link.check()
+    return Result(spec, "path (3 precision points)", candidates=[link],
+                  dyads={"r1": r1, "r2": r2, "r3": r3, "r4": r4, "r5": r5,
+                         "beta2": complex(b2), "beta3": complex(b3)})

@@ -26,7 +26,7 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import SYNTHESIS, nearest, read_units
 from graphkin.synthesis.postures import Postures
 
-__all__ = ["Spec", "FunctionSpec", "load_spec", "loads_spec", "SCHEMA"]
+__all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA"]
 
 SCHEMA = SYNTHESIS
 """Every key of a synthesis file (:data:`graphkin.keys.SYNTHESIS`)."""
@@ -48,6 +48,22 @@ class FunctionSpec:
 
 
 @dataclass(frozen=True)
+class PathSpec:
+    """A coupler point through three precision points with prescribed timing (Sec. 9.12).
+
+    ``points``: the coupler point's positions (complex); ``crank``: the crank's
+    angles φ_j; ``coupler``: the coupler's rotations α_j from the first (rad);
+    ``rocker_pin``: where the rocker is pinned on the coupler, as a fraction of
+    the way from the crank pin A to the coupler point.
+    """
+
+    points: np.ndarray
+    crank: np.ndarray
+    coupler: np.ndarray
+    rocker_pin: float
+
+
+@dataclass(frozen=True)
 class Spec:
     """A parsed synthesis file."""
 
@@ -58,6 +74,7 @@ class Spec:
     circle_points: list[tuple[float, float]] | None
     center_points: list[tuple[float, float]] | None
     function: FunctionSpec | None
+    path: PathSpec | None = None
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -156,11 +173,15 @@ class _Reader:
         cent = self.points(piv["center_points"], "pivots.center_points") \
             if "center_points" in piv else None
         func = self.function() if "function" in self.data else None
-        if post is None and func is None:
-            raise self.fail("postures", "give [[postures]] (body guidance) or [function] "
-                                        "(function generation)")
-        if post is not None and func is not None:
-            raise self.fail("function", "give either [[postures]] or [function], not both")
+        path = self.path() if "path" in self.data else None
+        kinds = [k for k, v in (("postures", post), ("function", func), ("path", path))
+                 if v is not None]
+        if not kinds:
+            raise self.fail("postures", "give [[postures]] (body guidance), [function] "
+                                        "(function generation) or [path] (path generation)")
+        if len(kinds) > 1:
+            raise self.fail(kinds[1], f"give one of [[postures]], [function] or [path], not "
+                                      f"{' and '.join(kinds)}")
         if post is not None:
             if post.n < 2 or post.n > 5:
                 raise self.fail("postures", f"{post.n} postures given: two to five can be "
@@ -171,7 +192,34 @@ class _Reader:
                 raise self.fail("pivots.circle_points", "for four postures choose center "
                                 "points (on the center-point curve); give center_points")
             post.check()
-        return Spec(self.source, title, units, post, circ, cent, func)
+        return Spec(self.source, title, units, post, circ, cent, func, path)
+
+    def path(self) -> PathSpec:
+        f = self.data["path"]
+        for k in ("points", "crank", "coupler"):
+            if k not in f:
+                raise self.fail(f"path.{k}", "missing (path generation needs points, crank "
+                                             "and coupler, three of each)")
+        pts = f["points"]
+        if not isinstance(pts, list) or len(pts) != 3:
+            raise self.fail("path.points", "expected three points [[x, y], [x, y], [x, y]]")
+        xy = [self.xy(v, f"path.points[{i}]") for i, v in enumerate(pts)]
+        ang = {}
+        for k in ("crank", "coupler"):
+            v = f[k]
+            if not isinstance(v, list) or len(v) != 3:
+                raise self.fail(f"path.{k}", "expected three angles (degrees)")
+            ang[k] = np.radians([self.number(a, f"path.{k}[{i}]") for i, a in enumerate(v)])
+        if abs(ang["coupler"][0]) > 0:
+            raise self.fail("path.coupler[0]", "the coupler's rotations are measured from the "
+                                               "first precision point: the first is 0")
+        z = np.array([complex(*p) for p in xy])
+        if min(abs(z[0] - z[1]), abs(z[1] - z[2]), abs(z[0] - z[2])) == 0.0:
+            raise self.fail("path.points", "two precision points coincide")
+        pin = self.number(f.get("rocker_pin", 0.5), "path.rocker_pin")
+        if not 0.0 < pin < 1.0:
+            raise self.fail("path.rocker_pin", "a fraction of the coupler between 0 and 1")
+        return PathSpec(z, ang["crank"], ang["coupler"], pin)
 
     def postures(self) -> Postures:
         entries = self.data["postures"]
