@@ -89,17 +89,38 @@ def _defect(ev: dict[str, np.ndarray] | object, branch: str, center: str,
 
 def _bisect(cx: Construction, branch: str, lo: np.ndarray, hi: np.ndarray,
             scale: float) -> np.ndarray:
-    """Halve the brackets [lo, hi] of t (either order) on one branch; the t's found."""
+    """Close the brackets [lo, hi] of t (either order) on one branch; the t's found.
+
+    Regula falsi with the Illinois rule (a bisection where the secant leaves the
+    bracket or meets a missing value): each step one evaluation of the
+    construction on every bracket at once.
+    """
     center = f"{branch}_C"
-    glo = _defect(cx.evaluate({"t": lo}, strict=False), branch, center, scale)
-    for _ in range(64):
-        mid = 0.5 * (lo + hi)
-        gm = _defect(cx.evaluate({"t": mid}, strict=False), branch, center, scale)
-        left = np.sign(gm) == np.sign(glo)
-        lo = np.where(left, mid, lo)
-        glo = np.where(left, gm, glo)
-        hi = np.where(left, hi, mid)
-    return np.asarray(0.5 * (lo + hi))
+
+    def g(t: np.ndarray) -> np.ndarray:
+        return np.atleast_1d(_defect(cx.evaluate({"t": t}, strict=False), branch, center,
+                                     scale))
+
+    lo, hi = np.atleast_1d(lo).astype(float), np.atleast_1d(hi).astype(float)
+    glo, ghi = g(lo), g(hi)
+    side = np.zeros(lo.shape)
+    for _ in range(48):
+        with np.errstate(invalid="ignore", divide="ignore"):
+            new = hi - ghi * (hi - lo) / (ghi - glo)
+        inside = np.isfinite(new) & ((new - lo) * (new - hi) < 0)
+        new = np.where(inside, new, 0.5 * (lo + hi))
+        gn = g(new)
+        stay = np.sign(gn) == np.sign(glo)
+        # the Illinois rule: the end kept twice running has its value halved
+        ghi = np.where(stay, np.where(side > 0, 0.5 * ghi, ghi), gn)
+        glo = np.where(stay, gn, np.where(side < 0, 0.5 * glo, glo))
+        lo = np.where(stay, new, lo)
+        hi = np.where(stay, hi, new)
+        side = np.where(stay, 1.0, -1.0)
+        done = np.abs(hi - lo) <= 1e-15 * (1.0 + np.abs(lo))
+        if np.all(done | (gn == 0)):
+            break
+    return np.where(np.abs(glo) < np.abs(ghi), lo, hi)
 
 
 def _junctions(cx: Construction, t: np.ndarray, exists: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -115,10 +136,11 @@ def _junctions(cx: Construction, t: np.ndarray, exists: np.ndarray) -> tuple[np.
     first = inner.copy()
     if inner.size == 0:
         return first, inner
-    name = next(s.outputs[0] for s in cx if s.op == "intersect_circles")
-    for _ in range(64):
+    step = next(s for s in cx if s.op == "intersect_circles")
+    head = cx.upto(step.index)   # the steps up to the first center point only
+    for _ in range(52):
         mid = 0.5 * (inner + outer)
-        fin = np.isfinite(_cplx(cx.evaluate({"t": mid}, strict=False)[name]))
+        fin = np.isfinite(_cplx(head.evaluate({"t": mid}, strict=False)[step.outputs[0]]))
         inner = np.where(fin, mid, inner)
         outer = np.where(fin, outer, mid)
     return first, inner

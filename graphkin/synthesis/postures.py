@@ -150,7 +150,6 @@ def add_poles(cx: Construction, post: Postures, labels: list[tuple[str, str, str
     """
     out = []
     d, e = post.names
-    eps = post.tol.length(post.scale)
     for i, j in pairs:
         di, ei, ti = labels[i - 1]
         dj, ej, tj = labels[j - 1]
@@ -159,8 +158,13 @@ def add_poles(cx: Construction, post: Postures, labels: list[tuple[str, str, str
         note = (f"{name}: the bisectors of {d}{i}{d}{j} and {e}{i}{e}{j} meet at the pole, "
                 f"the point of the body that does not move from posture {i} to {j}; "
                 f"θ{i}{j} = {math.degrees(math.remainder(rot, math.tau)):.6g}° (Eq. 9.2).")
+        # a point is the pole itself only where no line joins its two positions (the test of
+        # graphkin.geometry.join: within round-off of their distance from the origin); one
+        # that moves by more still has an accurate bisector (its direction errs by
+        # round-off over the move, at about the move's distance from the pole), while
+        # calling it the pole would err by the move
         fixed = [(p, q, loc) for p, q, loc in ((di, dj, (0.0, 0.0)), (ei, ej, post.second))
-                 if np.hypot(*np.diff(post.positions(loc)[[i - 1, j - 1]], axis=0)[0]) <= eps]
+                 if _no_line(post.positions(loc)[[i - 1, j - 1]], post.tol)]
         if fixed:
             cx.add("rigid", (labels[i - 1][0], ti), (name,), local_p=(0.0, 0.0),
                    local_q=fixed[0][2], role=Role.RESULT, diagram=DIAGRAM,
@@ -188,6 +192,12 @@ def add_poles(cx: Construction, post: Postures, labels: list[tuple[str, str, str
         cx.add("meet", (b1, b2), (name,), role=Role.RESULT, diagram=DIAGRAM, note=note)
         out.append(name)
     return out
+
+
+def _no_line(pq: np.ndarray, tol: Tolerance) -> bool:
+    """Whether two positions are too close for a line to join them (as ``join`` decides)."""
+    move = float(np.hypot(*(pq[1] - pq[0])))
+    return move <= tol.length(float(np.max(np.hypot(pq[:, 0], pq[:, 1]))))
 
 
 def _same_line(post: Postures, i: int, j: int) -> bool:

