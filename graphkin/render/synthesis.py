@@ -32,7 +32,7 @@ from graphkin.synthesis.run import Result
 __all__ = ["synthesis_figure", "save_synthesis"]
 
 _LINE_OPS = {"bisector", "join", "line_at_angle", "perpendicular"}
-_CIRCLE_OPS = {"circle_through"}
+_CIRCLE_OPS = {"circle_through", "circle_on_diameter"}
 
 
 def _z(v: Any) -> complex:
@@ -99,11 +99,20 @@ def _paint_steps(ax: Any, cx: Construction, window: tuple[complex, float],
 
 def synthesis_figure(res: Result) -> Figure:
     """The figure of a synthesis result (a matplotlib Figure, no pyplot state)."""
-    fig = Figure(figsize=(7.5, 6.5))
-    ax = fig.add_subplot(1, 1, 1)
-    ax.set_title(res.spec.title or f"Synthesis: {res.kind}", fontsize=10)
+    fig = Figure(figsize=(7.5, 6.5) if res.function is None else (10.0, 4.5))
     if res.function is not None:
         f = res.function
+        ax = fig.add_subplot(1, 2, 1)
+        x0, x1 = f.spec.x_range
+        half = (x1 - x0) / 2
+        if res.construction is not None:
+            _paint_steps(ax, res.construction, (complex(x0 + half, 0.0), 1.2 * half), set())
+        ax.set_xlim(x0 - 0.2 * half, x1 + 0.2 * half)
+        ax.set_ylim(-1.2 * half, 1.2 * half)
+        ax.set_aspect("equal", adjustable="box")
+        ax.set_title("Chebyshev spacing (Fig. 9.27)", fontsize=10)
+        ax = fig.add_subplot(1, 2, 2)
+        ax.set_title(res.spec.title or f"Synthesis: {res.kind}", fontsize=10)
         (line,) = ax.plot(f.error_x, f.error, color="k")
         line.set_gid("structural-error")
         marks = ax.plot(f.x, np.zeros_like(f.x), "o", color="C3")[0]
@@ -111,7 +120,10 @@ def synthesis_figure(res: Result) -> Figure:
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.set_xlabel("x")
         ax.set_ylabel(f"structural error of y = {f.spec.expression} (Sec. 9.7)")
+        fig.subplots_adjust(wspace=0.4)
         return fig
+    ax = fig.add_subplot(1, 1, 1)
+    ax.set_title(res.spec.title or f"Synthesis: {res.kind}", fontsize=10)
     post = res.postures
     assert post is not None
     dpos = post.positions((0.0, 0.0))

@@ -22,10 +22,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from graphkin.construction import Construction
+from graphkin.construction.step import Role
 from graphkin.synthesis import analytic as an
+from graphkin.synthesis.postures import DIAGRAM
 from graphkin.synthesis.spec import FunctionSpec
 
-__all__ = ["FunctionDesign", "design"]
+__all__ = ["FunctionDesign", "design", "chebyshev_construction"]
 
 
 @dataclass(frozen=True)
@@ -57,6 +60,42 @@ class FunctionDesign:
             "[links.4]", "O4 = [0.0, 0.0]", f"C = [{r4!r}, 0.0]", "",
             "[drive]", "link = 2", f"angle = {math.degrees(phi)!r}", "",
             "[assembly]", f"C = [{float(c.real)!r}, {float(c.imag)!r}]", ""])
+
+
+def chebyshev_construction(x0: float, x1: float, n: int) -> Construction:
+    """Chebyshev spacing drawn as in Fig. 9.27.
+
+    A circle on the range as diameter, a regular polygon of 2n sides in it
+    with its first side perpendicular to the x axis, and the perpendiculars
+    from its vertices to the diameter.  The feet (labels ``x_1`` ... ``x_n``)
+    are the precision points of Eq. 9.22: vertex j stands at the angle
+    ``π − (2j − 1)π / 2n`` about the circle's center, so its foot is
+    ``(x0 + x1)/2 − (x1 − x0)/2 · cos((2j − 1)π / 2n)``.
+    """
+    cx = Construction(title="Chebyshev spacing (Fig. 9.27)")
+    half = (x1 - x0) / 2
+    cx.add("point", (), ("X0",), xy=(x0, 0.0), role=Role.GIVEN, diagram=DIAGRAM,
+           note="X0: the start of the range on the x axis.")
+    cx.add("point", (), ("X1",), xy=(x1, 0.0), role=Role.GIVEN, diagram=DIAGRAM,
+           note="X1: the end of the range.")
+    cx.add("circle_on_diameter", ("X0", "X1"), ("k",), diagram=DIAGRAM,
+           note="the circle whose diameter is the range Δx (Eq. c).")
+    cx.add("join", ("X0", "X1"), ("diameter",), diagram=DIAGRAM, note="the diameter X0X1.")
+    cx.add("scalar", (), ("θ0",), value=0.0, diagram=DIAGRAM, note="the x axis's direction.")
+    cx.add("rigid", ("X0", "θ0"), ("C",), local_p=(0.0, 0.0), local_q=(half, 0.0),
+           diagram=DIAGRAM, note="C: the circle's center.")
+    for j in range(1, n + 1):
+        ang = math.pi - (2 * j - 1) * math.pi / (2 * n)
+        cx.add("scalar", (), (f"∠V{j}",), value=ang, diagram=DIAGRAM,
+               note=f"vertex {j} of the regular {2 * n}-gon, {math.degrees(ang):.6g}° about C.")
+        cx.add("rigid", ("C", f"∠V{j}"), (f"V{j}",), local_p=(0.0, 0.0), local_q=(half, 0.0),
+               diagram=DIAGRAM, note=f"V{j}: a vertex of the {2 * n}-gon inscribed in the "
+                                     f"circle, its first side perpendicular to the x axis.")
+        cx.add("perpendicular", ("diameter", f"V{j}"), (f"n{j}",), diagram=DIAGRAM,
+               note=f"the perpendicular dropped from V{j} to the diameter.")
+        cx.add("meet", ("diameter", f"n{j}"), (f"x_{j}",), role=Role.RESULT, diagram=DIAGRAM,
+               note=f"x_{j}: precision point {j} (Eq. 9.22).")
+    return cx
 
 
 def _rocker(phi: np.ndarray, lengths: tuple[float, float, float, float],

@@ -18,7 +18,7 @@ from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis import four, three
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
-from graphkin.synthesis.function import FunctionDesign, design
+from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.linkage import Linkage
 from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles, add_postures
 from graphkin.synthesis.spec import Spec
@@ -297,4 +297,6 @@ def _function(spec: Spec) -> Result:
                     (0.0, 0.25 * r3), spec.source, "function")
     link = Linkage(post, 0j, complex(r1, 0.0), complex(b[0]), complex(c[0]), ("B", "C"))
     link.check()
-    return Result(spec, "function", candidates=[link], function=fd)
+    x0, x1 = spec.function.x_range
+    cheb = chebyshev_construction(x0, x1, spec.function.points)
+    return Result(spec, "function", cheb, candidates=[link], function=fd)

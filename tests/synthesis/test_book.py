@@ -228,3 +228,18 @@ def test_example_9_7_is_the_crossed_four_bar_of_fig_9_40() -> None:
         assert cross(cj - r1, -r1) * cross(cj - r1, bj - r1) < 0
     grashof = {c.name: c for c in res.chosen.checks}["grashof"]
     assert grashof.detail == "Grashof double-rocker"
+
+
+@pytest.mark.parametrize("x0, x1, n", [(1.0, 3.0, 3), (1.0, 2.0, 3), (0.0, 90.0, 5)])
+def test_chebyshev_spacing_drawn_as_fig_9_27(x0: float, x1: float, n: int) -> None:
+    # Sec. 9.7: 1 <= x <= 3 with three points gives x = 1.134, 2.000, 2.866 (book); the
+    # feet of the perpendiculars from the 2n-gon's vertices equal Eq. 9.22
+    from graphkin.synthesis.function import chebyshev_construction
+
+    ev = chebyshev_construction(x0, x1, n).evaluate()
+    feet = np.array([ev[f"x_{j}"][0] / ev[f"x_{j}"][2] for j in range(1, n + 1)])
+    j = np.arange(1, n + 1)
+    want = 0.5 * (x1 + x0) - 0.5 * (x1 - x0) * np.cos((2 * j - 1) * np.pi / (2 * n))
+    assert feet == pytest.approx(want, abs=1e-12 * x1)
+    if (x0, x1) == (1.0, 3.0):
+        assert feet == pytest.approx([1.134, 2.000, 2.866], abs=5e-4)
