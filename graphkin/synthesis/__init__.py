@@ -11,6 +11,18 @@ synthesis is a mechanism file graphkin analyses as it is.
 References
 ----------
 Uicker, Pennock & Shigley, 5th ed., Ch. 9.
+
+Examples
+--------
+Example 9.7: y = 1/x over 1 <= x <= 2 by Freudenstein's equation.
+
+>>> from graphkin.synthesis import loads_spec, synthesize
+>>> text = "[function]", 'expression = "1/x"', "range = [1, 2]"
+>>> res = synthesize(loads_spec(chr(10).join(text)))
+>>> [round(float(x), 3) for x in res.function.x]
+[1.067, 1.5, 1.933]
+>>> res.mechanism_toml().splitlines()[3:6]
+['[links.1]', 'O2 = [0.0, 0.0]', 'O4 = [1.0, 0.0]']
 """
 
 from __future__ import annotations
@@ -19,6 +31,8 @@ from graphkin.synthesis import analytic
 from graphkin.synthesis.five import BurmesterPoint, burmester_points, five_construction
 from graphkin.synthesis.four import Curves, burmester_construction, curves
 from graphkin.synthesis.postures import Postures
+from graphkin.synthesis.run import Result, synthesize
+from graphkin.synthesis.spec import Spec, load_spec, loads_spec
 from graphkin.synthesis.three import (
     center_from_circle_point,
     circle_point_from_center,
@@ -28,4 +42,5 @@ from graphkin.synthesis.three import (
 
 __all__ = ["analytic", "Postures", "pole_triangle", "center_from_circle_point",
            "circle_point_from_center", "straight_line_locus", "burmester_construction",
-           "curves", "Curves", "five_construction", "burmester_points", "BurmesterPoint"]
+           "curves", "Curves", "five_construction", "burmester_points", "BurmesterPoint",
+           "synthesize", "Result", "Spec", "load_spec", "loads_spec"]

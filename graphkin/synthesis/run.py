@@ -156,8 +156,11 @@ def _three(spec: Spec, post: Postures) -> Result:
                      post.angles[j]) for i, j in ((0, 1), (1, 2), (2, 0))]
     u, v = poles[1] - poles[0], poles[2] - poles[0]
     if abs(u.real * v.imag - u.imag * v.real) <= 1e-9 * post.scale ** 2:
-        raise InputError("the poles P12, P23, P31 are collinear: the pole triangle "
-                         "degenerates (Sec. 9.4)", key="postures", file=spec.source)
+        same = max(abs(u), abs(v)) <= 1e-9 * post.scale
+        raise InputError("the poles P12, P23, P31 " + (
+            "coincide (the three postures turn about one point)" if same else
+            "are collinear") + ": the pole triangle degenerates (Sec. 9.4)",
+            key="postures", file=spec.source)
     cx = three.pole_triangle(post)
     three.straight_line_locus(cx)
     names = _pivot_names(post)

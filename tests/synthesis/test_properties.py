@@ -108,6 +108,18 @@ def test_written_mechanism_reaches_postures(post: Postures, ax: float, ay: float
     ("tittle = 'x'\n", "tittle"),
     ("[[postures]]\npoint = [0, 0]\nangle = 0\n[[postures]]\npoint = [3, 0]\nangle = 0\n",
      "postures"),
+    # three postures turning about one point: P12 = P23 = P31, no pole triangle
+    ("[[postures]]\npoint = [1, 0]\nangle = 0\n[[postures]]\npoint = [0, 1]\nangle = 90\n"
+     "[[postures]]\npoint = [-1, 0]\nangle = 180\n[pivots]\ncircle_points = [[2, 0], [3, 0]]\n",
+     "postures"),
+    # five postures with no real Burmester point (by construction and by the resultant)
+    ("".join(f"[[postures]]\npoint = [{x}, {y}]\nangle = {a}\n" for x, y, a in (
+        (2.040919, -2.555665, -24.928662), (0.418099, -0.567770, 3.836567),
+        (-0.452649, -0.215597, -15.898887), (-2.019986, -0.231932, 19.892767),
+        (-0.865213, 3.323000, 54.508406))), "postures"),
+    ("[function]\nexpression = \"__import__('os')\"\nrange = [1, 2]\n", "function.expression"),
+    ("[path]\npoints = [[0, 0], [1, 0], [2, 0]]\ncrank = [0, 10, 20]\ncoupler = [5, 0, 0]\n",
+     "path.coupler[0]"),
 ])
 def test_bad_input_one_line_exit_2(tmp_path, capsys, text: str, key: str) -> None:  # type: ignore[no-untyped-def]
     f = tmp_path / "s.toml"
