@@ -1,9 +1,10 @@
 """``graphkin synthesize FILE``: find a four-bar by the constructions of Chapter 9.
 
 Guide a body through two to five postures (poles, pole triangle, center-point
-and circle-point curves, Burmester points), or generate a function (Chebyshev
-spacing, Freudenstein's equation); report the linkage with its checks and
-write it as a mechanism file that solve, draw and sweep take as it is.
+and circle-point curves, Burmester points), generate a function (Chebyshev
+spacing, Freudenstein's equation) or a path with timing (dyads); report the
+linkage with its checks and write it as a mechanism file that solve, draw and
+sweep take as it is.
 
 The file format is ``docs/formats/synthesis.md``; the work is done in
 :mod:`graphkin.synthesis` and the report written by
@@ -30,7 +31,7 @@ HELP = "synthesize a four-bar through given postures or for a function (Ch. 9)"
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
     p = command(sub, "synthesize", help=HELP, description=about(__doc__),
-                file="synthesis file (TOML: [[postures]] or [function])")
+                file="synthesis file (TOML: [[postures]], [function] or [path])")
     p.add_argument("--json", action="store_true", help="print the result as JSON")
     p.add_argument("-o", "--output", metavar="MECH.toml",
                    help="write the synthesized linkage as a mechanism file")
