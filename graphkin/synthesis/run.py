@@ -151,7 +151,6 @@ def _two(spec: Spec, post: Postures) -> Result:
 def _three(spec: Spec, post: Postures) -> Result:
     if spec.circle_points is None and spec.center_points is None:
         raise _need(spec, "circle_points or center_points")
-    mo = post.motion()
     poles = [an.pole(complex(*post.points[i]), post.angles[i], complex(*post.points[j]),
                      post.angles[j]) for i, j in ((0, 1), (1, 2), (2, 0))]
     u, v = poles[1] - poles[0], poles[2] - poles[0]
@@ -187,7 +186,6 @@ def _three(spec: Spec, post: Postures) -> Result:
             raise InputError(f"{lab} is at infinity for these postures (its three positions "
                              "are on a line): choose another pivot", key="pivots",
                              file=spec.source)
-    del mo
     link = Linkage(post, z(centers[0]), z(centers[1]), z(circles[0]), z(circles[1]), names)
     link.check()
     return Result(spec, "3 postures", cx, candidates=[link])
