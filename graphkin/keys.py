@@ -102,6 +102,7 @@ SYNTHESIS: Schema = {
     "function": {"expression": None, "range": None, "points": None, "input": None,
                  "output": None, "ground": None},
     "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
+    "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
 }
 """Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
 the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by

@@ -48,6 +48,10 @@ def synthesis_json(res: Result) -> dict[str, Any]:
         out["burmester_points"] = [{"center": _xy(p.center), "circle": _xy(p.circle)}
                                    for p in res.burmester]
     out["candidates"] = [_linkage(c) for c in res.candidates]
+    if res.cognates is not None:
+        z = res.cognates.points
+        out["cognates"] = {w: {lab: _xy(z[lab]) for lab in labs}
+                           for w, labs in res.cognates.linkages().items()}
     if res.dyads:
         out["dyads"] = {k: (_xy(v) if k.startswith("r") else float(np.degrees(v.real)))
                         for k, v in res.dyads.items()}
@@ -66,7 +70,7 @@ def synthesis_text(res: Result) -> str:
     """The result as a text report."""
     lines = [res.spec.title or "Synthesis", f"{res.kind}", ""]
     data = synthesis_json(res)
-    if "poles" in data:
+    if data.get("poles"):
         lines.append("Poles: " + ", ".join(f"{k} = ({fmt(v[0])}, {fmt(v[1])})"
                                             for k, v in data["poles"].items()))
     if res.burmester:
@@ -74,6 +78,10 @@ def synthesis_text(res: Result) -> str:
         for p in res.burmester:
             lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
                          f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
+    if "cognates" in data:
+        for w, labs in data["cognates"].items():
+            lines.append(f"Cognate {w}: " + ", ".join(
+                f"{k} = ({fmt(v[0])}, {fmt(v[1])})" for k, v in labs.items()))
     if "dyads" in data:
         lines.append("Dyads (Sec. 9.12): " + ", ".join(
             f"{k} = {fmt(v[0])} {'-' if v[1] < 0 else '+'} j{fmt(abs(v[1]))}"

@@ -124,6 +124,9 @@ def synthesis_figure(res: Result) -> Figure:
         return fig
     ax = fig.add_subplot(1, 1, 1)
     ax.set_title(res.spec.title or f"Synthesis: {res.kind}", fontsize=10)
+    if res.cognates is not None:
+        _cognates(ax, res)
+        return fig
     post = res.postures
     assert post is not None
     dpos = post.positions((0.0, 0.0))
@@ -190,6 +193,39 @@ def synthesis_figure(res: Result) -> Figure:
     ax.tick_params(labelsize=7)
     ax.set_xlabel(f"x ({res.spec.units})", fontsize=8)
     return fig
+
+
+def _cognates(ax: Any, res: Result) -> None:
+    """The three cognates of Cayley's diagram (Fig. 9.38) and their one coupler curve."""
+    from graphkin.mechanisms import loads
+
+    cg = res.cognates
+    assert cg is not None
+    z = cg.points
+    pts = list(z.values())
+    mid = complex(np.mean([p.real for p in pts]), np.mean([p.imag for p in pts]))
+    size = 0.75 * max(max(abs(p - mid) for p in pts), 1e-9)
+    _paint_steps(ax, cg.construction, (mid, 3 * size), {s.label for s in cg.construction
+                                                         if s.op == "join"})
+    for k, (w, (o1, p1, p2, o2)) in enumerate(cg.linkages().items()):
+        quad = [z[o1], z[p1], z[p2], z[o2]]
+        (ln,) = ax.plot([q.real for q in quad], [q.imag for q in quad], color=f"C{k + 1}",
+                        lw=1.6)
+        ln.set_gid(f"cognate-{w}")
+        tri = [z[p1], z[p2], z["P"], z[p1]]
+        (cp,) = ax.plot([q.real for q in tri], [q.imag for q in tri], color=f"C{k + 1}",
+                        lw=0.7)
+        cp.set_gid(f"cognate-{w}-coupler")
+    try:   # the coupler curve, traced by graphkin's sweep of the first cognate
+        sw = loads(cg.mechanism_toml("1")).sweep(count=360)
+        (cc,) = ax.plot(sw.columns["x_P"], sw.columns["y_P"], color="C5", lw=0.9)
+        cc.set_gid("coupler-curve")
+    except Exception:  # noqa: BLE001 - a linkage that does not sweep is drawn without it
+        pass
+    ax.set_xlim(mid.real - 1.6 * size, mid.real + 1.6 * size)
+    ax.set_ylim(mid.imag - 1.6 * size, mid.imag + 1.6 * size)
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=7)
 
 
 def save_synthesis(res: Result, path: str | os.PathLike[str]) -> Path:

@@ -17,6 +17,7 @@ from graphkin.construction.step import Role
 from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis import four, three
+from graphkin.synthesis.cognates import Cognates, cayley
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.linkage import Linkage
@@ -49,6 +50,8 @@ class Result:
     dyads : dict
         Path generation: the complex vectors r1 ... r5 of Sec. 9.12 and the
         rotations β2, β3 of the rocker (radians, as real numbers).
+    cognates : Cognates or None
+        The Roberts-Chebyshev cognates (Cayley's diagram).
     """
 
     spec: Spec
@@ -60,6 +63,7 @@ class Result:
     candidates: list[Linkage] = field(default_factory=list)
     function: FunctionDesign | None = None
     dyads: dict[str, complex] = field(default_factory=dict)
+    cognates: Cognates | None = None
 
     @property
     def postures(self) -> Postures | None:
@@ -80,6 +84,9 @@ class Result:
         """The mechanism file of the result (assembled in the first design posture)."""
         if self.function is not None:
             return self.function.mechanism_toml(self.spec.title, self.spec.units)
+        if self.cognates is not None:
+            return self.cognates.mechanism_toml(self.spec.write, self.spec.units,
+                                                self.spec.title)
         link = self.chosen
         if link is None:
             raise InputError("no linkage was found, so no mechanism can be written",
@@ -105,6 +112,10 @@ def synthesize(spec: Spec) -> Result:
         return _function(spec)
     if spec.path is not None:
         return _path(spec)
+    if spec.cognates is not None:
+        z = spec.cognates
+        cg = cayley(z["O_A"], z["A"], z["B"], z["O_B"], z["P"])
+        return Result(spec, "cognates (Roberts-Chebyshev)", cg.construction, cognates=cg)
     post = spec.postures
     assert post is not None
     return {2: _two, 3: _three, 4: _four, 5: _five}[post.n](spec, post)

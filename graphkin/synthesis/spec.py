@@ -75,6 +75,8 @@ class Spec:
     center_points: list[tuple[float, float]] | None
     function: FunctionSpec | None
     path: PathSpec | None = None
+    cognates: dict[str, complex] | None = None
+    write: str = "1"
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -174,14 +176,16 @@ class _Reader:
             if "center_points" in piv else None
         func = self.function() if "function" in self.data else None
         path = self.path() if "path" in self.data else None
-        kinds = [k for k, v in (("postures", post), ("function", func), ("path", path))
-                 if v is not None]
+        cog, write = self.cognates() if "cognates" in self.data else (None, "1")
+        kinds = [k for k, v in (("postures", post), ("function", func), ("path", path),
+                                ("cognates", cog)) if v is not None]
         if not kinds:
             raise self.fail("postures", "give [[postures]] (body guidance), [function] "
-                                        "(function generation) or [path] (path generation)")
+                                        "(function generation), [path] (path generation) or "
+                                        "[cognates]")
         if len(kinds) > 1:
-            raise self.fail(kinds[1], f"give one of [[postures]], [function] or [path], not "
-                                      f"{' and '.join(kinds)}")
+            raise self.fail(kinds[1], "give one of [[postures]], [function], [path] or "
+                                      f"[cognates], not {' and '.join(kinds)}")
         if post is not None:
             if post.n < 2 or post.n > 5:
                 raise self.fail("postures", f"{post.n} postures given: two to five can be "
@@ -192,7 +196,25 @@ class _Reader:
                 raise self.fail("pivots.circle_points", "for four postures choose center "
                                 "points (on the center-point curve); give center_points")
             post.check()
-        return Spec(self.source, title, units, post, circ, cent, func, path)
+        return Spec(self.source, title, units, post, circ, cent, func, path, cog, write)
+
+    def cognates(self) -> tuple[dict[str, complex], str]:
+        f = self.data["cognates"]
+        pts = {}
+        for k in ("O_A", "A", "B", "O_B", "P"):
+            if k not in f:
+                raise self.fail(f"cognates.{k}", "missing (the four-bar O_A A B O_B and its "
+                                                 "coupler point P in one posture)")
+            pts[k] = complex(*self.xy(f[k], f"cognates.{k}"))
+        for k1, k2 in (("O_A", "A"), ("A", "B"), ("B", "O_B"), ("O_A", "O_B"), ("A", "P"),
+                       ("B", "P")):
+            if pts[k1] == pts[k2]:
+                raise self.fail(f"cognates.{k2}", f"{k1} and {k2} coincide: a link (or a "
+                                                  "cognate's link) of no length")
+        write = str(f.get("write", 1))
+        if write not in ("1", "2", "3"):
+            raise self.fail("cognates.write", "which cognate -o writes: 1, 2 or 3")
+        return pts, write
 
     def path(self) -> PathSpec:
         f = self.data["path"]

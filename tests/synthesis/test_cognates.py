@@ -73,3 +73,29 @@ def test_cayley_diagram_links_keep_their_lengths() -> None:
     # graphkin sweeps cognate 3 by its crank O_B B3 over the range it assembles
     sw = graphkin.loads(first.mechanism_toml("3")).sweep(count=72)
     assert bool(sw.assembled.any())
+
+
+def test_cognates_file_cli_and_drawing(tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    import xml.etree.ElementTree as ET
+
+    from graphkin.cli import main
+
+    a, b = _pins(0.7)
+    p = a + (0.3 + 0.6j) * (b - a)
+    f = tmp_path / "c.toml"
+    f.write_text("[cognates]\n" + "".join(
+        f"{k} = [{float(z.real)!r}, {float(z.imag)!r}]\n"
+        for k, z in (("O_A", OA), ("A", a), ("B", b), ("O_B", OB), ("P", p))) + "write = 3\n")
+    out, svg = tmp_path / "m.toml", tmp_path / "c.svg"
+    assert main(["synthesize", str(f), "-o", str(out), "--draw", str(svg)]) == 0
+    assert "Cognate 3: O_B = (4, 0)" in capsys.readouterr().out
+    sol = graphkin.load(out).solve()
+    assert sol.position("P") == pytest.approx([p.real, p.imag], abs=1e-9)
+    ids = {e.get("id") for e in ET.parse(svg).iter() if e.get("id")}
+    for gid in ("cognate-1", "cognate-2", "cognate-3", "coupler-curve"):
+        assert gid in ids
+    for name in ("O_C", "A2", "B2", "B3", "A3"):
+        assert any(i.startswith("step-") and i.endswith(f"-{name}") for i in ids), name
+    f.write_text("[cognates]\nO_A = [0, 0]\nA = [0, 0]\nB = [1, 1]\nO_B = [2, 0]\nP = [1, 2]\n")
+    assert main(["synthesize", str(f)]) == 2
+    assert "cognates.A: O_A and A coincide" in capsys.readouterr().err
