@@ -43,6 +43,13 @@ def synthesis_json(res: Result) -> dict[str, Any]:
                                              ev[s.label][1] / ev[s.label][2]))
                         for s in res.construction if s.label.startswith("P")
                         and s.role == "result" and s.kind == "point"}
+        post = res.postures
+        if post is not None and res.cognates is None and res.function is None:
+            # the rotation angle θij of each pole (Eq. 9.2), in (-180°, 180°]
+            out["rotation_angles_deg"] = {
+                f"θ{k[1:]}": float(math.degrees(math.remainder(
+                    float(post.angles[int(k[2]) - 1] - post.angles[int(k[1]) - 1]), math.tau)))
+                for k in out["poles"]}
         out["steps"] = res.construction.to_dict()
     if res.burmester:
         out["burmester_points"] = [{"center": _xy(p.center), "circle": _xy(p.circle)}
@@ -73,6 +80,9 @@ def synthesis_text(res: Result) -> str:
     if data.get("poles"):
         lines.append("Poles: " + ", ".join(f"{k} = ({fmt(v[0])}, {fmt(v[1])})"
                                             for k, v in data["poles"].items()))
+    if data.get("rotation_angles_deg"):
+        lines.append("Rotation angles (Eq. 9.2): " + ", ".join(
+            f"{k} = {fmt(v)}°" for k, v in data["rotation_angles_deg"].items()))
     if res.burmester:
         lines.append(f"Burmester points: {len(res.burmester)} real")
         for p in res.burmester:

@@ -28,6 +28,7 @@ Example 9.7: y = 1/x over 1 <= x <= 2 by Freudenstein's equation.
 from __future__ import annotations
 
 from graphkin.synthesis import analytic
+from graphkin.synthesis.cognates import Cognates, cayley
 from graphkin.synthesis.five import BurmesterPoint, burmester_points, five_construction
 from graphkin.synthesis.four import Curves, burmester_construction, curves
 from graphkin.synthesis.postures import Postures
@@ -43,4 +44,4 @@ from graphkin.synthesis.three import (
 __all__ = ["analytic", "Postures", "pole_triangle", "center_from_circle_point",
            "circle_point_from_center", "straight_line_locus", "burmester_construction",
            "curves", "Curves", "five_construction", "burmester_points", "BurmesterPoint",
-           "synthesize", "Result", "Spec", "load_spec", "loads_spec"]
+           "synthesize", "Result", "Spec", "load_spec", "loads_spec", "cayley", "Cognates"]

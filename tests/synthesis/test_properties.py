@@ -183,3 +183,24 @@ def test_cli_json_and_written_mechanism_analysed(tmp_path, capsys, name: str) ->
     for verb in (["solve", str(mech)], ["draw", str(mech), "-o", str(tmp_path / "d.svg")],
                  ["sweep", str(mech), "--csv", str(tmp_path / "s.csv")]):
         assert main(verb) == 0, verb
+
+
+def test_json_poles_and_rotation_angles(tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    import json
+
+    # four postures of angles 0, 20, 45, 70: θ12 = 20°, θ34 = 25°, θ14 = 70° (Eq. 9.2); each
+    # pole's point does not move: P = (p_j - e^{iθ} p_i) / (1 - e^{iθ})
+    rows = [(0, 0, 0), (1, 0.5, 20), (2, 0.6, 45), (3, 0.2, 70)]
+    f = tmp_path / "s.toml"
+    f.write_text("".join(f"[[postures]]\npoint = [{x}, {y}]\nangle = {a}\n" for x, y, a in rows)
+                 + "[pivots]\ncenter_points = [[0, -3], [8, 6]]\n")
+    assert main(["synthesize", str(f), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    rot = data["rotation_angles_deg"]
+    assert rot["θ12"] == pytest.approx(20) and rot["θ34"] == pytest.approx(25)
+    assert rot["θ14"] == pytest.approx(70)
+    for i, j in ((1, 2), (2, 4), (3, 4)):
+        (xi, yi, ai), (xj, yj, aj) = rows[i - 1], rows[j - 1]
+        e = np.exp(1j * np.radians(aj - ai))
+        want = (complex(xj, yj) - e * complex(xi, yi)) / (1 - e)
+        assert data["poles"][f"P{i}{j}"] == pytest.approx([want.real, want.imag], abs=1e-12)
