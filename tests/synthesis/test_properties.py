@@ -204,3 +204,32 @@ def test_json_poles_and_rotation_angles(tmp_path, capsys) -> None:  # type: igno
         e = np.exp(1j * np.radians(aj - ai))
         want = (complex(xj, yj) - e * complex(xi, yi)) / (1 - e)
         assert data["poles"][f"P{i}{j}"] == pytest.approx([want.real, want.imag], abs=1e-12)
+
+
+@settings(max_examples=10, deadline=None)
+@given(postures(4), st.integers(0, 10_000), st.integers(0, 10_000))
+def test_four_posture_linkage_written_reaches_postures(post: Postures, i: int, k: int) -> None:
+    # two points of the center-point curve (away from the poles, circles of a drawable
+    # size) as fixed pivots: the written mechanism, solved by graphkin at each posture's
+    # crank angle, puts the body where it was asked
+    cv = four.curves(post, 401)
+    mo = post.motion()
+    rot = np.angle(mo.rot)
+    good = np.isfinite(cv.center) & np.isfinite(cv.circle)
+    good &= (np.abs(cv.circle - cv.center) < 20 * post.scale) & \
+        (np.abs(cv.center - complex(*post.points[0])) < 20 * post.scale)
+    for a in range(4):
+        for b in range(a + 1, 4):
+            pab = an.pole(mo.shift[a], float(rot[a]), mo.shift[b], float(rot[b]))
+            good &= np.abs(cv.center - pab) > 1e-2 * post.scale
+    idx = np.flatnonzero(good.ravel())
+    assume(idx.size >= 2)
+    m1, m2 = idx[i % idx.size], idx[k % idx.size]
+    assume(abs(cv.center.ravel()[m1] - cv.center.ravel()[m2]) > 0.1 * post.scale)
+    link = Linkage(post, cv.center.ravel()[m1], cv.center.ravel()[m2], cv.circle.ravel()[m1],
+                   cv.circle.ravel()[m2])
+    second = post.positions(post.second)
+    for j in range(4):
+        sol = graphkin.loads(link.mechanism_toml(j)).solve()
+        assert np.abs(sol.position("D") - post.points[j]).max() < 1e-8 * post.scale
+        assert np.abs(sol.position("E") - second[j]).max() < 1e-8 * post.scale
