@@ -29,6 +29,7 @@ from __future__ import annotations
 
 from graphkin.synthesis import analytic
 from graphkin.synthesis.cognates import Cognates, cayley
+from graphkin.synthesis.dwell import Dwell, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points, five_construction
 from graphkin.synthesis.four import Curves, burmester_construction, curves
 from graphkin.synthesis.postures import Postures
@@ -44,4 +45,5 @@ from graphkin.synthesis.three import (
 __all__ = ["analytic", "Postures", "pole_triangle", "center_from_circle_point",
            "circle_point_from_center", "straight_line_locus", "burmester_construction",
            "curves", "Curves", "five_construction", "burmester_points", "BurmesterPoint",
-           "synthesize", "Result", "Spec", "load_spec", "loads_spec", "cayley", "Cognates"]
+           "synthesize", "Result", "Spec", "load_spec", "loads_spec", "cayley", "Cognates",
+           "dwell", "Dwell"]
