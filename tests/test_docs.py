@@ -32,7 +32,8 @@ def test_every_toml_example_in_the_docs_is_valid(page, block):
     data = tomllib.loads(block)          # TOML at all
     if "links" in data and "1" in data["links"] and "drive" in data:
         graphkin.from_dict(data, source=str(page))   # a whole mechanism: it loads
-    elif set(data) & {"postures", "function", "pivots", "body", "path", "cognates"}:
+    elif set(data) & {"postures", "function", "pivots", "body", "path", "cognates",
+                        "dwell"}:
         from graphkin.keys import SYNTHESIS
 
         check_keys(data, SYNTHESIS, str(page))      # a synthesis file (docs/formats/synthesis.md)

@@ -55,6 +55,13 @@ def synthesis_json(res: Result) -> dict[str, Any]:
         out["burmester_points"] = [{"center": _xy(p.center), "circle": _xy(p.circle)}
                                    for p in res.burmester]
     out["candidates"] = [_linkage(c) for c in res.candidates]
+    if res.dwell is not None:
+        dw = res.dwell
+        out["dwell"] = {"D": _xy(dw.d), "O6": _xy(dw.o6), "link_5": dw.radius,
+                        "link_6": float(abs(dw.d - dw.o6)), "arc_deviation": dw.deviation,
+                        "crank_from_deg": float(np.degrees(dw.crank[dw.start]) % 360),
+                        "crank_span_deg": float(np.degrees(dw.crank[1] - dw.crank[0])
+                                                * (dw.stop - dw.start))}
     if res.cognates is not None:
         z = res.cognates.points
         out["cognates"] = {w: {lab: _xy(z[lab]) for lab in labs}
@@ -88,6 +95,13 @@ def synthesis_text(res: Result) -> str:
         for p in res.burmester:
             lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
                          f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
+    if "dwell" in data:
+        d = data["dwell"]
+        lines.append(f"Dwell (Sec. 9.13): D = ({fmt(d['D'][0])}, {fmt(d['D'][1])}), "
+                     f"O6 = ({fmt(d['O6'][0])}, {fmt(d['O6'][1])}), link 5 = "
+                     f"{fmt(d['link_5'])}, link 6 = {fmt(d['link_6'])}; the coupler point "
+                     f"stays within {fmt(d['arc_deviation'])} of the arc for "
+                     f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
     if "cognates" in data:
         for w, labs in data["cognates"].items():
             lines.append(f"Cognate {w}: " + ", ".join(

@@ -127,6 +127,9 @@ def synthesis_figure(res: Result) -> Figure:
     if res.cognates is not None:
         _cognates(ax, res)
         return fig
+    if res.dwell is not None:
+        _dwell(ax, res)
+        return fig
     post = res.postures
     assert post is not None
     dpos = post.positions((0.0, 0.0))
@@ -224,6 +227,41 @@ def _cognates(ax: Any, res: Result) -> None:
         pass
     ax.set_xlim(mid.real - 1.6 * size, mid.real + 1.6 * size)
     ax.set_ylim(mid.imag - 1.6 * size, mid.imag + 1.6 * size)
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=7)
+
+
+def _dwell(ax: Any, res: Result) -> None:
+    """The dwell six-bar (Fig. 9.42a): the coupler curve, its arc, D, links 5 and 6."""
+    dw = res.dwell
+    assert dw is not None
+    curve = dw.c
+    (cc,) = ax.plot(curve.real, curve.imag, color="C5", lw=0.9)
+    cc.set_gid("coupler-curve")
+    arc = curve[np.arange(dw.start, dw.stop + 1) % len(curve)]
+    (ac,) = ax.plot(arc.real, arc.imag, color="C3", lw=2.2)
+    ac.set_gid("dwell-arc")
+    pts = [dw.o_a, dw.o_b, dw.o6, dw.d, *curve[:: max(1, len(curve) // 12)]]
+    mid = complex(np.mean([p.real for p in pts]), np.mean([p.imag for p in pts]))
+    size = max(abs(p - mid) for p in pts)
+    _paint_steps(ax, dw.construction, (mid, 2 * size), set())
+    k = (dw.start + dw.stop) // 2 % len(curve)
+    cz = complex(curve[k])
+    az = dw.o_a + dw.lengths[0] * np.exp(1j * float(dw.crank[k]))
+    bz = az + (cz - az) / dw.coupler_local
+    for gid, chain in {"linkage-1": (dw.o_a, az, bz, dw.o_b), "coupler-1": (az, bz, cz, az)
+                       }.items():
+        (ln,) = ax.plot([z.real for z in chain], [z.imag for z in chain], color="C0",
+                        lw=1.4 if gid == "linkage-1" else 0.7)
+        ln.set_gid(gid)
+    for gid, (p, q) in {"link-5": (cz, dw.d), "link-6": (dw.o6, dw.d)}.items():
+        (ln,) = ax.plot([p.real, q.real], [p.imag, q.imag], color="C1", lw=1.8)
+        ln.set_gid(gid)
+    (fx,) = ax.plot([dw.o_a.real, dw.o_b.real, dw.o6.real], [dw.o_a.imag, dw.o_b.imag,
+                    dw.o6.imag], "^", color="C1", ms=9)
+    fx.set_gid("fixed-pivots")
+    ax.set_xlim(mid.real - 1.2 * size, mid.real + 1.2 * size)
+    ax.set_ylim(mid.imag - 1.2 * size, mid.imag + 1.2 * size)
     ax.set_aspect("equal", adjustable="box")
     ax.tick_params(labelsize=7)
 

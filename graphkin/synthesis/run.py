@@ -18,6 +18,7 @@ from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis import four, three
 from graphkin.synthesis.cognates import Cognates, cayley
+from graphkin.synthesis.dwell import Dwell, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.linkage import Linkage
@@ -52,6 +53,8 @@ class Result:
         rotations β2, β3 of the rocker (radians, as real numbers).
     cognates : Cognates or None
         The Roberts-Chebyshev cognates (Cayley's diagram).
+    dwell : Dwell or None
+        The dwell six-bar (Sec. 9.13).
     """
 
     spec: Spec
@@ -64,6 +67,7 @@ class Result:
     function: FunctionDesign | None = None
     dyads: dict[str, complex] = field(default_factory=dict)
     cognates: Cognates | None = None
+    dwell: Dwell | None = None
 
     @property
     def postures(self) -> Postures | None:
@@ -84,6 +88,8 @@ class Result:
         """The mechanism file of the result (assembled in the first design posture)."""
         if self.function is not None:
             return self.function.mechanism_toml(self.spec.title, self.spec.units)
+        if self.dwell is not None:
+            return self.dwell.mechanism_toml(self.spec.units, self.spec.title)
         if self.cognates is not None:
             return self.cognates.mechanism_toml(self.spec.write, self.spec.units,
                                                 self.spec.title)
@@ -112,6 +118,13 @@ def synthesize(spec: Spec) -> Result:
         return _function(spec)
     if spec.path is not None:
         return _path(spec)
+    if spec.dwell is not None:
+        z = spec.dwell
+        try:
+            dw = dwell(z["O_A"], z["A"], z["B"], z["O_B"], z["C"], spec.dwell_span)
+        except InputError as exc:
+            raise InputError(exc.message, key="dwell", file=spec.source) from None
+        return Result(spec, "dwell six-bar", dw.construction, dwell=dw)
     if spec.cognates is not None:
         z = spec.cognates
         cg = cayley(z["O_A"], z["A"], z["B"], z["O_B"], z["P"])

@@ -77,6 +77,8 @@ class Spec:
     path: PathSpec | None = None
     cognates: dict[str, complex] | None = None
     write: str = "1"
+    dwell: dict[str, complex] | None = None
+    dwell_span: float = math.radians(60.0)
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -177,15 +179,16 @@ class _Reader:
         func = self.function() if "function" in self.data else None
         path = self.path() if "path" in self.data else None
         cog, write = self.cognates() if "cognates" in self.data else (None, "1")
+        dw, span = self.dwell() if "dwell" in self.data else (None, math.radians(60.0))
         kinds = [k for k, v in (("postures", post), ("function", func), ("path", path),
-                                ("cognates", cog)) if v is not None]
+                                ("cognates", cog), ("dwell", dw)) if v is not None]
         if not kinds:
             raise self.fail("postures", "give [[postures]] (body guidance), [function] "
                                         "(function generation), [path] (path generation) or "
                                         "[cognates]")
         if len(kinds) > 1:
-            raise self.fail(kinds[1], "give one of [[postures]], [function], [path] or "
-                                      f"[cognates], not {' and '.join(kinds)}")
+            raise self.fail(kinds[1], "give one of [[postures]], [function], [path], "
+                                      f"[cognates] or [dwell], not {' and '.join(kinds)}")
         if post is not None:
             if post.n < 2 or post.n > 5:
                 raise self.fail("postures", f"{post.n} postures given: two to five can be "
@@ -196,21 +199,34 @@ class _Reader:
                 raise self.fail("pivots.circle_points", "for four postures choose center "
                                 "points (on the center-point curve); give center_points")
             post.check()
-        return Spec(self.source, title, units, post, circ, cent, func, path, cog, write)
+        return Spec(self.source, title, units, post, circ, cent, func, path, cog, write, dw,
+                    span)
+
+    def fourbar(self, table: str, point: str) -> dict[str, complex]:
+        f = self.data[table]
+        pts = {}
+        for k in ("O_A", "A", "B", "O_B", point):
+            if k not in f:
+                raise self.fail(f"{table}.{k}", "missing (the four-bar O_A A B O_B and its "
+                                                f"coupler point {point} in one posture)")
+            pts[k] = complex(*self.xy(f[k], f"{table}.{k}"))
+        for k1, k2 in (("O_A", "A"), ("A", "B"), ("B", "O_B"), ("O_A", "O_B"), ("A", point),
+                       ("B", point)):
+            if pts[k1] == pts[k2]:
+                raise self.fail(f"{table}.{k2}", f"{k1} and {k2} coincide: a link of no "
+                                                 "length")
+        return pts
+
+    def dwell(self) -> tuple[dict[str, complex], float]:
+        pts = self.fourbar("dwell", "C")
+        span = self.number(self.data["dwell"].get("span", 60.0), "dwell.span")
+        if not 5.0 <= span <= 180.0:
+            raise self.fail("dwell.span", "the crank's turn of the dwell, 5° to 180°")
+        return pts, math.radians(span)
 
     def cognates(self) -> tuple[dict[str, complex], str]:
         f = self.data["cognates"]
-        pts = {}
-        for k in ("O_A", "A", "B", "O_B", "P"):
-            if k not in f:
-                raise self.fail(f"cognates.{k}", "missing (the four-bar O_A A B O_B and its "
-                                                 "coupler point P in one posture)")
-            pts[k] = complex(*self.xy(f[k], f"cognates.{k}"))
-        for k1, k2 in (("O_A", "A"), ("A", "B"), ("B", "O_B"), ("O_A", "O_B"), ("A", "P"),
-                       ("B", "P")):
-            if pts[k1] == pts[k2]:
-                raise self.fail(f"cognates.{k2}", f"{k1} and {k2} coincide: a link (or a "
-                                                  "cognate's link) of no length")
+        pts = self.fourbar("cognates", "P")
         write = str(f.get("write", 1))
         if write not in ("1", "2", "3"):
             raise self.fail("cognates.write", "which cognate -o writes: 1, 2 or 3")

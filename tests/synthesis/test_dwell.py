@@ -43,3 +43,27 @@ def test_link_6_dwells_while_the_coupler_point_runs_the_arc() -> None:
     assert bool(whole.assembled.all())
     moved = float(np.ptp(np.unwrap(np.radians(whole.columns["angle_6"]))))
     assert moved > 10 * swing          # outside the dwell it swings
+
+
+def test_dwell_file_cli_and_drawing(tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    import xml.etree.ElementTree as ET
+
+    from graphkin.cli import main
+
+    a, b = _posture(0.5)
+    c = a + (0.5 - 0.8j) * (b - a)
+    f = tmp_path / "d.toml"
+    f.write_text("[dwell]\n" + "".join(
+        f"{k} = [{float(z.real)!r}, {float(z.imag)!r}]\n"
+        for k, z in (("O_A", OA), ("A", a), ("B", b), ("O_B", OB), ("C", c))) + "span = 60\n")
+    out, svg = tmp_path / "m.toml", tmp_path / "d.svg"
+    assert main(["synthesize", str(f), "-o", str(out), "--draw", str(svg)]) == 0
+    assert "Dwell (Sec. 9.13)" in capsys.readouterr().out
+    assert graphkin.load(out).solve() is not None
+    ids = {e.get("id") for e in ET.parse(svg).iter() if e.get("id")}
+    for gid in ("coupler-curve", "dwell-arc", "link-5", "link-6", "linkage-1", "fixed-pivots"):
+        assert gid in ids
+    assert any(i.startswith("step-") and i.endswith("-D") for i in ids)
+    f.write_text(f.read_text().replace("span = 60", "span = 400"))
+    assert main(["synthesize", str(f)]) == 2
+    assert "dwell.span" in capsys.readouterr().err
