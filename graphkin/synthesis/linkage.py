@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from graphkin.construction.step import Side
 from graphkin.synthesis.postures import Postures
 from graphkin.text import fmt
 
@@ -158,7 +159,10 @@ class Linkage:
         a, b = self.pivots
         sides = self._branch(a, b)
         one = bool(np.all(sides == sides[0]) and sides[0] != 0)
-        out.append(Check("branch", one, "every posture on one branch" if one else
+        na, nb = self.names
+        side = Side.LEFT if sides[0] > 0 else Side.RIGHT
+        out.append(Check("branch", one, f"every posture on one branch ({nb} {side} of "
+                                        f"{na} → O_{nb})" if one else
                          "posture(s) " + ", ".join(str(k + 1) for k in np.nonzero(
                              sides != sides[0])[0]) + " on the other branch (branch defect)"))
         psi = self.crank_angles()
