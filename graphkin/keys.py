@@ -40,7 +40,7 @@ from typing import Any
 from graphkin.errors import InputError
 
 __all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "CAM",
-           "check_keys", "read_units", "nearest"]
+           "SYNTHESIS", "check_keys", "read_units", "nearest"]
 
 Schema = Mapping[str, Any]
 
@@ -92,6 +92,22 @@ MECHANISM: Schema = {
     "bodies": {"link": None, "circle": _CIRCLE, "face": None, "outline": None},
 }
 """Every key of a mechanism file (the format reference: ``docs/formats/mechanism.md``)."""
+
+SYNTHESIS: Schema = {
+    "title": None,
+    "units": UNITS,
+    "body": {"points": None},
+    "postures": None,     # [[postures]]: point and angle, or the body's two points by name
+    "pivots": {"circle_points": None, "center_points": None},
+    "function": {"expression": None, "range": None, "points": None, "input": None,
+                 "output": None, "ground": None},
+    "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
+    "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
+    "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
+}
+"""Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
+the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by
+:mod:`graphkin.synthesis.spec`."""
 
 VECTOR: Schema = {
     "title": None,

@@ -48,6 +48,11 @@ def test_every_toml_example_in_the_docs_is_valid(page, block):
             from graphkin.cams.parse import loads_cam
 
             loads_cam(block, str(page))            # a whole cam file: it loads
+    elif set(data) & {"postures", "function", "pivots", "body", "path", "cognates",
+                        "dwell"}:
+        from graphkin.keys import SYNTHESIS
+
+        check_keys(data, SYNTHESIS, str(page))      # a synthesis file (docs/formats/synthesis.md)
     elif set(data) & {"A", "B", "C"}:
         check_keys(data, VECTOR, str(page))
     elif "links" not in data and any(k in data for k in ("omega3", "theta3", "V_E",

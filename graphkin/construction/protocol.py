@@ -339,8 +339,13 @@ def _mark(valid: np.ndarray | None, failed_at: np.ndarray | None, bad: np.ndarra
     if valid is None:
         valid = np.ones(np.shape(bad), dtype=bool)
         failed_at = np.full(np.shape(bad), -1, dtype=int)
-    bad = np.broadcast_to(bad, valid.shape)
     assert failed_at is not None
+    # a step on constants may fail before the batch's shape is known: widen to the batch
+    shape = np.broadcast_shapes(np.shape(bad), valid.shape)
+    if shape != valid.shape:
+        valid = np.broadcast_to(valid, shape).copy()
+        failed_at = np.broadcast_to(failed_at, shape).copy()
+    bad = np.broadcast_to(bad, shape)
     failed_at = np.where(bad & valid, index, failed_at)
     valid = valid & ~bad
     return valid, failed_at
