@@ -63,7 +63,8 @@ class Cognates:
             return f"[{float(c.real)!r}, {float(c.imag)!r}]"
 
         drive = math.degrees(float(np.angle(z[p1] - z[o1])))
-        n1, n2 = f"{p1}_{which}", f"{p2}_{which}"   # pin names of their own per cognate
+        # pin names of their own per cognate (A_1 would read as an acceleration label)
+        n1, n2 = f"{p1}c{which}", f"{p2}c{which}"
         return "\n".join([
             f'title = "{title or f"Cognate {which} (Roberts-Chebyshev)"}"',
             f'units = {{ length = "{units}" }}', "",
