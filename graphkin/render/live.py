@@ -1,0 +1,161 @@
+"""The live page: drag the crank or a frame pivot and the polygons redraw (``graphkin live``).
+
+One self-contained HTML file (no network): the mechanism's recorded
+posture, velocity and acceleration constructions are written out as one
+JavaScript function (:func:`graphkin.construction.jsgen.generate_js`) whose
+parameters are the mechanism's dimensions, and a small script
+(:mod:`graphkin.render.live_app`) calls it on every pointer move and redraws
+the three panels.  Nothing is computed in Python at run time; the values the
+page shows are the construction's own (tested against ``graphkin solve`` of
+the file the page saves, tests/render/test_live.py).
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.,
+Sec. 2.8 (the posture constructions), Secs. 3.4-3.6 (velocity polygon and
+images), Secs. 4.2-4.6 (acceleration polygon).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from typing import Any
+
+from graphkin.construction.codegen import Unsupported
+from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
+from graphkin.errors import InputError
+from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.render.live_app import APP_JS, PAGE_CSS
+from graphkin.render.style import STYLES
+from graphkin.tolerance import DEFAULT_TOL
+
+__all__ = ["live_data", "live_html", "script_json"]
+
+_BRANCH_OPS = ("intersect_circles", "intersect_line_circle", "tangent_foot")
+
+
+def script_json(value: Any) -> str:
+    """``value`` as JSON safe inside ``<script>`` (``<``, ``>``, ``&``, line separators escaped)."""
+    return (json.dumps(value, ensure_ascii=False, allow_nan=False)
+            .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+            .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029"))
+
+
+def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[dict[str, Any],
+                                                                               str]:
+    """What the page needs: its data (JSON-able) and the JavaScript of the construction.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The loaded file.
+    file_data : dict
+        The file's parsed TOML (the page saves it back with the edits).
+    source : str
+        The file's name, for messages.
+
+    Raises
+    ------
+    InputError
+        The mechanism is not solved by a construction (the page has nothing to
+        write out), or its construction uses an operation with no template.
+    """
+    from graphkin.kinematics.posture import NotDecomposable
+    from graphkin.kinematics.sweep.engine import _Engine
+
+    try:
+        eng = _Engine(mech, DEFAULT_TOL)
+    except NotDecomposable as exc:
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc})",
+                         file=source) from None
+    if eng.method != "construction" or eng.pc is None:
+        raise InputError("no live page: the mechanism is not solved by a construction",
+                         file=source)
+    cx = eng.combined if eng.combined is not None else eng.pc.construction
+    consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
+    if eng.combined is not None:
+        consts.update({k: float(v) for k, v in eng.rate_given.items()})
+    made = {o for s in cx.steps for o in s.outputs}
+    points = [n for lk in mech.links.values() for n in lk.points if n in made]
+    points = list(dict.fromkeys(points))
+    requests = list(points)
+    requests += [f"θ{lid}" for lid in mech.links if f"θ{lid}" in made]
+    rates = eng.combined is not None
+    if rates:
+        for pre in ("v", "a"):
+            requests += [f"{pre}({n})" for n in points if f"{pre}({n})" in made]
+        requests += [f"{w}{lid}" for w in ("ω", "α") for lid in mech.links if f"{w}{lid}" in made]
+        requests += [p for p in ("o_v", "o_a") if p in made]
+    try:
+        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
+    except Unsupported as exc:
+        raise InputError(f"no live page: {exc}", file=source) from None
+    d = mech.drives[0]
+    drive: dict[str, Any] = {"label": eng.label, "kind": d.kind, "link": d.link,
+                             "value": float(d.value), "index": 0}
+    link = mech.links.get(d.link)
+    if d.kind == "angle" and link is not None:
+        frame = mech.links[FRAME].points
+        pivot = next((n for n in link.points if n in frame), None)
+        tip = next((n for n in link.points if n != pivot and n in made), None)
+        if pivot is not None and tip is not None:
+            (px, py), (tx, ty) = link.points[pivot], link.points[tip]
+            drive.update(pivot=pivot, tip=tip, phi=math.atan2(ty - py, tx - px))
+    names = [n for n, _ in fn.slots]
+    frame_pts = {n: [names.index(f"{n}.0"), names.index(f"{n}.1")]
+                 for n in mech.links[FRAME].points if f"{n}.0" in names}
+    branch_pts = [s.outputs[0] for s in cx.steps if s.op in _BRANCH_OPS and
+                  s.outputs[0] in points]
+    hints = dict(file_data.get("assembly", {})) if isinstance(file_data.get("assembly"),
+                                                              dict) else {}
+    data = {
+        "title": mech.title or source,
+        "unit": mech.length_unit,
+        "links": {lid: [n for n in lk.points if n in made] for lid, lk in mech.links.items()},
+        "frame": frame_pts,
+        "drive": drive,
+        "inputs": consts,
+        "K": fn.values,
+        "rates": rates,
+        "assembly": sorted(set(hints) | set(branch_pts)),
+        "file": file_data,
+        "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
+                  if k in STYLES},
+    }
+    return data, RUNTIME + fn.source
+
+
+def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
+    """The whole page, self-contained (one file, no network)."""
+    data, js = live_data(mech, file_data, source)
+    title = html.escape(str(data["title"]))
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{title} (live)</title>
+<style>{PAGE_CSS}</style></head>
+<body>
+<header><h1>{title}</h1>
+<p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
+the recorded construction, re-solved in the page.</p>
+<div class="controls"><label>drive <input id="gk-drive" type="range"></label>
+<output id="gk-drive-val"></output>
+<button id="gk-undo" type="button">Undo</button>
+<button id="gk-reset" type="button">Reset</button>
+<button id="gk-save" type="button">Save the edited mechanism</button></div>
+<p id="gk-status" role="status"></p></header>
+<main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
+<figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
+<figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
+</main>
+<table id="gk-table"></table>
+<script id="gk-data" type="application/json">{script_json(data)}</script>
+<script>
+{js}
+const GK_NAME = {js_string(source)};
+{APP_JS}
+</script>
+</body></html>
+"""
