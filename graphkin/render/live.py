@@ -106,6 +106,7 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     names = [n for n, _ in fn.slots]
     frame_pts = {n: [names.index(f"{n}.0"), names.index(f"{n}.1")]
                  for n in mech.links[FRAME].points if f"{n}.0" in names}
+    coupler = _coupler_points(mech, cx.steps, names, made)
     branch_pts = [s.outputs[0] for s in cx.steps if s.op in _BRANCH_OPS and
                   s.outputs[0] in points]
     hints = dict(file_data.get("assembly", {})) if isinstance(file_data.get("assembly"),
@@ -115,6 +116,7 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "unit": mech.length_unit,
         "links": {lid: [n for n in lk.points if n in made] for lid, lk in mech.links.items()},
         "frame": frame_pts,
+        "coupler": coupler,
         "drive": drive,
         "inputs": consts,
         "K": fn.values,
@@ -125,6 +127,57 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
                   if k in STYLES},
     }
     return data, RUNTIME + fn.source
+
+
+_DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")
+
+
+def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
+                    made: set[str]) -> dict[str, dict[str, Any]]:
+    """The points of one moving link that can be dragged: where their numbers sit in ``K``.
+
+    A point of one link only, laid off by a ``rigid`` step (case 1), whose
+    velocity and acceleration images are ``similar`` to the link (Sec. 3.5,
+    Mehmke) or found by a difference (no dimension), and whose local
+    coordinates no other step carries.  Dragging it changes the link's shape:
+    the ``rigid`` step's ``q - p`` and the images' complex ratios.
+    """
+    owners: dict[str, list[str]] = {}
+    for lid, lk in mech.links.items():
+        for n in lk.points:
+            owners.setdefault(n, []).append(lid)
+    out: dict[str, dict[str, Any]] = {}
+    for n, lids in owners.items():
+        if len(lids) != 1 or lids[0] == FRAME or n not in made:
+            continue
+        lid = lids[0]
+        local = mech.links[lid].points[n]
+        mine = {n, f"v({n})", f"a({n})"}
+        rigid = [s for s in steps if s.outputs == (n,) and s.op == "rigid"]
+        readers = [s for s in steps if mine & set(s.inputs)
+                   and any(k in s.params for k in _DIMENSIONS)]
+        if len(rigid) != 1 or readers or f"{n}.0" not in names:
+            continue
+        images = []
+        ok = True
+        for s in steps:
+            if not (mine & set(s.outputs)) or s.outputs == (n,):
+                continue
+            if s.op == "similar" and f"{s.outputs[0]}.0" in names and \
+                    tuple(s.params["local_p"]) == tuple(local):
+                images.append({"slots": [names.index(f"{s.outputs[0]}.0"),
+                                         names.index(f"{s.outputs[0]}.1")],
+                               "a": list(s.params["local_a"]), "b": list(s.params["local_b"])})
+            elif s.op not in ("velocity_difference", "acceleration_difference"):
+                ok = False
+        if not ok:
+            continue
+        r = rigid[0]
+        out[n] = {"link": lid, "anchor": r.inputs[0], "angle": r.inputs[1],
+                  "offset": float(r.params.get("offset", 0.0)),
+                  "p": [float(v) for v in r.params["local_p"]],
+                  "slots": [names.index(f"{n}.0"), names.index(f"{n}.1")], "images": images}
+    return out
 
 
 def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:

@@ -153,6 +153,7 @@ function drawPosture(r, stale) {
   }
   const handles = [];
   for (const n of Object.keys(D.frame)) handles.push(["frame", n]);
+  for (const n of Object.keys(D.coupler)) handles.push(["point", n]);
   if (D.drive.tip) handles.push(["drive", D.drive.tip]);
   for (const [kind, n] of handles) {
     const p = r[n]; if (!p) continue;
@@ -263,12 +264,31 @@ svgs.posture.addEventListener("pointermove", (ev) => {
   if (dragging.kind === "frame") {
     const i = D.frame[dragging.name];
     K[i[0]] = w[0]; K[i[1]] = w[1];
+  } else if (dragging.kind === "point") {
+    dragPoint(D.coupler[dragging.name], w);
   } else {
     const piv = (res || good)[D.drive.pivot];
     drive = Math.atan2(w[1] - piv[1], w[0] - piv[0]) - D.drive.phi;
   }
   redraw(false);
 });
+function localOf(c) { return [c.p[0] + K[c.slots[0]], c.p[1] + K[c.slots[1]]]; }
+function dragPoint(c, w) {
+  // Q = P + R(θ + offset)(q - p): the link's new local q of the dragged point, and the
+  // complex ratio (q - a)/(b - a) of each image similar to the link (Mehmke, Sec. 3.5)
+  const r = res || good, P = r[c.anchor], t = r[c.angle] + c.offset;
+  const dx = w[0] - P[0], dy = w[1] - P[1], ct = Math.cos(t), sn = Math.sin(t);
+  K[c.slots[0]] = ct * dx + sn * dy;
+  K[c.slots[1]] = -sn * dx + ct * dy;
+  const q = localOf(c);
+  for (const im of c.images) {
+    const zr0 = im.b[0] - im.a[0], zr1 = im.b[1] - im.a[1];
+    const zp0 = q[0] - im.a[0], zp1 = q[1] - im.a[1];
+    const den = zr0 ** 2 + zr1 ** 2;
+    K[im.slots[0]] = (zp0 * zr0 + zp1 * zr1) / den;
+    K[im.slots[1]] = (zp1 * zr0 - zp0 * zr1) / den;
+  }
+}
 const stop = () => { if (dragging) { dragging = null; redraw(true); } };
 svgs.posture.addEventListener("pointerup", stop);
 svgs.posture.addEventListener("pointercancel", stop);
@@ -327,6 +347,7 @@ function edited() {
   const f = JSON.parse(JSON.stringify(D.file));
   const r = res || good;
   for (const n of Object.keys(D.frame)) f.links["1"][n] = [K[D.frame[n][0]], K[D.frame[n][1]]];
+  for (const n of Object.keys(D.coupler)) f.links[D.coupler[n].link][n] = localOf(D.coupler[n]);
   const dr = Array.isArray(f.drive) ? f.drive[D.drive.index] : f.drive;
   if (isAngle) dr.angle = drive * 180 / Math.PI; else dr.position = drive;
   if (r && D.assembly.length) {

@@ -194,3 +194,20 @@ def test_a_mechanism_without_a_construction_is_one_line(monkeypatch):
     with pytest.raises(InputError, match="no live page: the operation 'x'") as e:
         live_html(mech, load_toml(EXAMPLES / "ex3_1_fourbar.toml"), "ex3_1_fourbar.toml")
     assert e.value.file == "ex3_1_fourbar.toml"
+
+
+def test_dragging_a_coupler_point_changes_the_link(browser, tmp_path):
+    # Example 3.1: drag E (a point of the coupler 3 only); the saved file has E's new local
+    # coordinates on link 3, and solve agrees with the page's posture and polygons
+    browser.open(_page(tmp_path, EXAMPLES / "ex3_1_fourbar.toml"))
+    ex, ey = _handle(browser, "point", "E")
+    before = browser.js("window.graphkinLive.state()")["result"]
+    _drag(browser, (ex, ey), (ex + 20, ey + 15))
+    state = _same_as_solve(browser, tmp_path)
+    r = state["result"]
+    # E moved right and down; B and C did not move (the coupler's shape changed, not the loop)
+    assert r["E"][0] > before["E"][0] + 0.2 and r["E"][1] < before["E"][1] - 0.2
+    np.testing.assert_allclose(r["C"], before["C"], rtol=0, atol=1e-12)
+    saved = load_toml(tmp_path / "saved.toml")
+    assert saved["links"]["3"]["E"] != [10, -4]
+    assert browser.errors() == []
