@@ -68,6 +68,27 @@ for (const lid of Object.keys(D.links)) {
 
 function solve() { I[D.drive.label] = drive; return construction(I, K); }
 
+// the coupler curves of the whole cycle: the points of the links not pinned to the frame,
+// at 360 drive angles from the current one (null where the posture cannot be assembled)
+const traced = [];
+for (const lid of Object.keys(D.links)) {
+  if (lid === "1" || D.links[lid].some((n) => D.frame[n])) continue;
+  for (const n of D.links[lid]) if (traced.indexOf(n) < 0 && owners[n] === 1) traced.push(n);
+}
+let curves = {};
+function cycle() {
+  curves = {};
+  if (D.drive.kind !== "angle" || !traced.length) return curves;
+  const J = Object.assign({}, I);
+  for (const n of traced) curves[n] = [];
+  for (let k = 0; k < 360; k++) {
+    J[D.drive.label] = drive + 2 * Math.PI * k / 360;
+    const r = construction(J, K);
+    for (const n of traced) curves[n].push(r ? r[n] : null);
+  }
+  return curves;
+}
+
 function pointsOf(panel, r) {
   const out = [];
   const pre = panel === "posture" ? "" : (panel === "velocity" ? "v" : "a");
@@ -81,6 +102,9 @@ function pointsOf(panel, r) {
 
 function fit(panel, r) {
   const pts = pointsOf(panel, r);
+  if (panel === "posture") {
+    for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
+  }
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
   for (const p of pts) {
     x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
@@ -134,6 +158,21 @@ function drawPosture(r, stale) {
   svg.textContent = "";
   defs(svg);
   const g = el(svg, "g", stale ? {class: "gk-stale"} : {});
+  for (const n of Object.keys(curves)) {
+    let run = [];
+    const flush = () => {
+      if (run.length > 1) {
+        el(g, "polyline", {points: run.join(" "), fill: "none", class: "gk-curve",
+                           stroke: ink("aux-line", "color"), "stroke-width": "1"});
+      }
+      run = [];
+    };
+    for (const p of curves[n].concat([curves[n][0]])) {
+      if (p) run.push(X("posture", p).toFixed(1) + "," + Y("posture", p).toFixed(1));
+      else flush();
+    }
+    flush();
+  }
   for (const lid of Object.keys(D.links)) {
     if (lid === "1") continue;
     outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
@@ -231,6 +270,7 @@ function redraw(refit) {
   if (ok) good = res;
   const r = ok ? res : good;
   if (r === null) return;
+  cycle();
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
@@ -369,7 +409,7 @@ document.getElementById("gk-save").addEventListener("click", () => {
 });
 
 window.graphkinLive = {
-  state: () => ({drive: drive, K: K.slice(), result: res}),
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   toml: edited,
   redraw: redraw,

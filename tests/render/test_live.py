@@ -211,3 +211,23 @@ def test_dragging_a_coupler_point_changes_the_link(browser, tmp_path):
     saved = load_toml(tmp_path / "saved.toml")
     assert saved["links"]["3"]["E"] != [10, -4]
     assert browser.errors() == []
+
+
+def test_coupler_curve_is_the_sweep(browser, tmp_path):
+    # the coupler curve of E over the whole turn, from the page, against graphkin's sweep of
+    # the same file (the compiled kernels in Python); the postures that cannot be assembled
+    # (θ2 < 33.1° past the file's 120°, see above) are null in the page and NaN in the sweep
+    browser.open(_page(tmp_path, EXAMPLES / "ex3_1_fourbar.toml"))
+    curve = browser.js("window.graphkinLive.state()")["curves"]["E"]
+    assert len(curve) == 360
+    mech = graphkin.load(EXAMPLES / "ex3_1_fourbar.toml")
+    sw = mech.sweep(count=360, start=120.0)
+    x, y = sw.columns["x_E"], sw.columns["y_E"]
+    got = np.array([p if p is not None else [np.nan, np.nan] for p in curve], dtype=float)
+    # the sweep marks unclean postures it still assembles; the page refuses them: compare
+    # where both answer, and the page never answers where the sweep cannot assemble
+    assert not np.any(np.isfinite(got[:, 0]) & ~sw.assembled)
+    both = np.isfinite(got[:, 0]) & np.isfinite(x)
+    assert both.sum() > 250
+    np.testing.assert_allclose(got[both, 0], x[both], rtol=0, atol=1e-9 * 30)
+    np.testing.assert_allclose(got[both, 1], y[both], rtol=0, atol=1e-9 * 30)
