@@ -25,7 +25,7 @@ from typing import Any
 
 from graphkin.construction.codegen import Unsupported
 from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
-from graphkin.errors import InputError
+from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.render.live_app import APP_JS, PAGE_CSS
 from graphkin.render.style import STYLES
@@ -126,7 +126,58 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
-    return data, RUNTIME + fn.source
+    js = RUNTIME + fn.source
+    centers = _centers(mech)
+    if centers is not None:
+        data["centers"], cjs = centers
+        js += cjs
+    return data, js
+
+
+def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
+    """The instant centers' construction (Sec. 3.13-3.15) as a second function, of the pins.
+
+    Aronhold-Kennedy's lines are drawn through the primary centers, which are
+    the pins (I23 at B ...): the function takes their positions from the
+    posture (inputs ``I23.x``, ``I23.y``) and returns every center, or
+    ``null`` when two of the lines are parallel (a center at infinity).  A
+    mechanism with a primary center that is not a pin (a slider's, at
+    infinity) gets no centers on the page.
+    """
+    from itertools import combinations
+
+    from graphkin.construction import Construction
+    from graphkin.kinematics.instant_centers import center_label, instant_centers
+
+    try:
+        sol = mech.solve()
+        ic = instant_centers(sol)
+    except GraphkinError:  # the centers cannot be found here: the page has the rest
+        return None
+    pin_of = {center_label(i, j): p.name for p in mech.pins
+              for i, j in combinations(p.links, 2)}
+    cx = Construction()
+    inputs: dict[str, str] = {}
+    for st in ic.construction.steps:
+        if st.op == "point" and st.outputs[0] in pin_of:
+            lab = st.outputs[0]
+            cx.add("input", (), (f"{lab}.x",), name=f"{lab}.x")
+            cx.add("input", (), (f"{lab}.y",), name=f"{lab}.y")
+            cx.add("point_xy", (f"{lab}.x", f"{lab}.y"), (lab,))
+            inputs[lab] = pin_of[lab]
+        elif st.op in ("join", "meet"):
+            cx.add(st.op, st.inputs, st.outputs, **st.params)
+        else:
+            return None
+    labels = [s.outputs[0] for s in cx.steps if s.op in ("point_xy", "meet")]
+    try:
+        fn = generate_js(cx.steps, requests=labels, tol=DEFAULT_TOL, name="centers")
+    except Unsupported:
+        return None
+    joins = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "join"]
+    meets = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "meet"]
+    return ({"pins": inputs, "labels": labels, "K": fn.values, "joins": joins,
+             "meets": meets}, fn.source)
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")

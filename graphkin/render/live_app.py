@@ -68,6 +68,19 @@ for (const lid of Object.keys(D.links)) {
 
 function solve() { I[D.drive.label] = drive; return construction(I, K); }
 
+// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the pins of the posture
+function centersOf(r) {
+  if (!D.centers || !r) return null;
+  const J = {};
+  for (const lab of Object.keys(D.centers.pins)) {
+    const p = r[D.centers.pins[lab]];
+    if (!p) return null;
+    J[lab + ".x"] = p[0]; J[lab + ".y"] = p[1];
+  }
+  return centers(J, D.centers.K);
+}
+let ics = null;
+
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
 // at 360 drive angles from the current one (null where the posture cannot be assembled)
 const traced = [];
@@ -104,6 +117,20 @@ function fit(panel, r) {
   const pts = pointsOf(panel, r);
   if (panel === "posture") {
     for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
+    // the instant centers too, unless one is far (near parallel lines): within 3 sizes
+    const c = centersOf(r);
+    if (c) {
+      let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+      for (const p of pts) {
+        x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
+        y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
+      }
+      const size = Math.hypot(x1 - x0, y1 - y0), o = [(x0 + x1) / 2, (y0 + y1) / 2];
+      for (const lab of Object.keys(c)) {
+        const p = c[lab];
+        if (Math.hypot(p[0] - o[0], p[1] - o[1]) < 3 * size) pts.push(p);
+      }
+    }
   }
   let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
   for (const p of pts) {
@@ -177,6 +204,7 @@ function drawPosture(r, stale) {
     if (lid === "1") continue;
     outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
   }
+  if (ics) drawCenters(g);
   for (const n of Object.keys(D.frame)) {
     const p = r[n] || [K[D.frame[n][0]], K[D.frame[n][1]]];
     const x = X("posture", p), y = Y("posture", p);
@@ -199,6 +227,32 @@ function drawPosture(r, stale) {
     el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 11, fill: "#c62828",
                      "fill-opacity": "0.18", class: "gk-handle", "data-kind": kind,
                      "data-name": n});
+  }
+}
+
+function drawCenters(g) {
+  // each of Kennedy's lines from the first of its centers to the farthest on it
+  const on = {};
+  for (const [lab, p, q] of D.centers.joins) on[lab] = [p, q];
+  for (const [lab, l1, l2] of D.centers.meets) { on[l1].push(lab); on[l2].push(lab); }
+  for (const lab of Object.keys(on)) {
+    const pts = on[lab].map((c) => ics[c]);
+    const o = pts[0];
+    let far = pts[1], best = -1;
+    for (const p of pts) {
+      const dd = Math.hypot(p[0] - o[0], p[1] - o[1]);
+      if (dd > best) { best = dd; far = p; }
+    }
+    el(g, "line", {x1: X("posture", o), y1: Y("posture", o), x2: X("posture", far),
+                   y2: Y("posture", far), stroke: ink("aux-line", "color"),
+                   "stroke-width": "0.8", "stroke-dasharray": "5 3", class: "gk-kennedy"});
+  }
+  for (const lab of D.centers.labels) {
+    if (D.centers.pins[lab]) continue;
+    const p = ics[lab];
+    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
+                     stroke: "#000", "stroke-width": "1.2"});
+    label(g, "posture", p, lab);
   }
 }
 
@@ -271,6 +325,7 @@ function redraw(refit) {
   const r = ok ? res : good;
   if (r === null) return;
   cycle();
+  ics = centersOf(r);
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
@@ -409,7 +464,7 @@ document.getElementById("gk-save").addEventListener("click", () => {
 });
 
 window.graphkinLive = {
-  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves}),
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   toml: edited,
   redraw: redraw,

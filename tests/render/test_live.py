@@ -231,3 +231,20 @@ def test_coupler_curve_is_the_sweep(browser, tmp_path):
     assert both.sum() > 250
     np.testing.assert_allclose(got[both, 0], x[both], rtol=0, atol=1e-9 * 30)
     np.testing.assert_allclose(got[both, 1], y[both], rtol=0, atol=1e-9 * 30)
+
+
+def test_instant_centers_follow_the_drag(browser, tmp_path):
+    # Example 3.1 (Fig. 3.19's four-bar): after a drag of D, the page's I13 and I24 (Kennedy's
+    # lines through the pins) are graphkin's instant centers of the saved file
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    browser.open(_page(tmp_path, EXAMPLES / "ex3_1_fourbar.toml"))
+    dx, dy = _handle(browser, "frame", "D")
+    _drag(browser, (dx, dy), (dx + 15, dy - 20))
+    state = _same_as_solve(browser, tmp_path)
+    ic = instant_centers(graphkin.load(tmp_path / "saved.toml").solve())
+    for lab in ("I13", "I24", "I23", "I34"):
+        ref = np.asarray(ic.values[lab], dtype=float)
+        np.testing.assert_allclose(state["centers"][lab], ref[:2] / ref[2], rtol=0,
+                                   atol=1e-9 * 30, err_msg=lab)
+    assert browser.js("document.querySelectorAll('.gk-kennedy').length") == 4
