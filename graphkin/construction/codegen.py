@@ -288,6 +288,10 @@ class Gen:
         """The name of a shared helper function (:data:`HELPERS`), with the tolerance bound."""
         return self.bind(functools.partial(HELPERS[name], tol=self.tol), name.split("_")[0])
 
+    def side(self, step: Step, left: bool) -> bool | str:
+        """The branch of a two-way step: here the recorded one (JavaScript: a sign in ``K``)."""
+        return left
+
     @staticmethod
     def is_zero(a: str) -> bool:
         """True for the literal zero."""

@@ -19,7 +19,9 @@ Two differences from the Python writer:
   arc's radius) is read from the array ``K`` the function takes, not written
   in as a literal, and no step is folded; :attr:`JSFunction.slots` names each
   entry and gives its recorded value.  A frame point ``A`` (a ``point``
-  step) has the slots ``"A.0"`` and ``"A.1"`` (its x and y).
+  step) has the slots ``"A.0"`` and ``"A.1"`` (its x and y); the branch of a
+  two-way step making ``C`` is the sign ``"C.branch"`` (+1 the recorded
+  ``left``/``ahead``, -1 the other), so the page can switch it.
 * **No general function to fall back on.**  An operation without a template
   cannot be written (:class:`~graphkin.construction.codegen.Unsupported`).
 
@@ -179,6 +181,14 @@ class JSGen(Gen):
         k = len(self.slots)
         self.slots.append((f"{self.owner}.{self.count}", float(a)))
         self.count += 1
+        name = self.tmp("k")
+        self.lines.append(f"  const {name} = K[{k}];")
+        return name
+
+    def side(self, step: Step, left: bool) -> bool | str:
+        """The branch as a sign in ``K`` (slot ``<label>.branch``: +1 left, -1 right)."""
+        k = len(self.slots)
+        self.slots.append((f"{self.owner}.branch", 1.0 if left else -1.0))
         name = self.tmp("k")
         self.lines.append(f"  const {name} = K[{k}];")
         return name

@@ -117,6 +117,8 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "links": {lid: [n for n in lk.points if n in made] for lid, lk in mech.links.items()},
         "frame": frame_pts,
         "coupler": coupler,
+        "branches": {n[:-len(".branch")]: k for k, n in enumerate(names)
+                     if n.endswith(".branch") and n[:-len(".branch")] in points},
         "drive": drive,
         "inputs": consts,
         "K": fn.values,
@@ -246,6 +248,8 @@ def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
 the recorded construction, re-solved in the page.</p>
 <div class="controls"><label>drive <input id="gk-drive" type="range"></label>
 <output id="gk-drive-val"></output>
+<label>branch at <select id="gk-branch"></select></label>
+<button id="gk-switch" type="button">Switch the branch</button>
 <button id="gk-undo" type="button">Undo</button>
 <button id="gk-reset" type="button">Reset</button>
 <button id="gk-save" type="button">Save the edited mechanism</button></div>

@@ -400,6 +400,22 @@ slider.addEventListener("input", () => {
   drive = isAngle ? v * Math.PI / 180 : v;
   redraw(false);
 });
+// the two-way steps (Sec. 2.8, cases 2-4): switch the chosen point's branch
+const branchSel = document.getElementById("gk-branch");
+for (const n of Object.keys(D.branches)) {
+  const o = document.createElement("option");
+  o.value = n; o.textContent = n;
+  branchSel.appendChild(o);
+}
+if (!branchSel.options.length) {
+  branchSel.parentNode.style.display = "none";
+  document.getElementById("gk-switch").style.display = "none";
+}
+document.getElementById("gk-switch").addEventListener("click", () => {
+  const k = D.branches[branchSel.value];
+  if (k === undefined) return;
+  snapshot(); K[k] = -K[k]; redraw(true);
+});
 document.getElementById("gk-undo").addEventListener("click", () => {
   const s = history.pop(); if (!s) return;
   K = s[0]; drive = s[1]; redraw(true);

@@ -248,3 +248,21 @@ def test_instant_centers_follow_the_drag(browser, tmp_path):
         np.testing.assert_allclose(state["centers"][lab], ref[:2] / ref[2], rtol=0,
                                    atol=1e-9 * 30, err_msg=lab)
     assert browser.js("document.querySelectorAll('.gk-kennedy').length") == 4
+
+
+def test_switching_the_branch_is_the_other_assembly(browser, tmp_path):
+    # Example 3.1 at θ2 = 120°: C on the other side of the line BD (the crossed four-bar,
+    # Sec. 2.8 case 4): C mirrored in BD, and solve of the saved file (its assembly hints
+    # at the page's points) gives the same posture and polygons
+    browser.open(_page(tmp_path, EXAMPLES / "ex3_1_fourbar.toml"))
+    r0 = browser.js("window.graphkinLive.state()")["result"]
+    browser.js("document.getElementById('gk-branch').value = 'C';"
+               "document.getElementById('gk-switch').click()")
+    r = _same_as_solve(browser, tmp_path)["result"]
+    b, d, c0 = (np.asarray(r0[n], dtype=float) for n in ("B", "D", "C"))
+    u = (d - b) / np.linalg.norm(d - b)
+    mirror = b + 2 * np.dot(c0 - b, u) * u - (c0 - b)
+    np.testing.assert_allclose(r["C"], mirror, rtol=0, atol=1e-9 * 30)
+    browser.js("document.getElementById('gk-undo').click()")
+    np.testing.assert_allclose(browser.js("window.graphkinLive.state()")["result"]["C"],
+                               r0["C"], rtol=0, atol=0)

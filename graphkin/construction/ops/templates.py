@@ -100,13 +100,20 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     gen.bail_unless(f"_min({q2}, None) >= 0.0")
     q = gen.let(f"_sqrt({q2})", "h")
     # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
-    x, y = _turned(gen, p, q, dx, dy, step.params["branch"] == "left")
+    x, y = _turned(gen, p, q, dx, dy, gen.side(step, step.params["branch"] == "left"))
     gen.put_point(step.outputs[0], gen.add(x, x1), gen.add(y, y1))
 
 
-def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool) -> tuple[str, str]:
-    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it."""
+def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool | str) -> tuple[str, str]:
+    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it.
+
+    ``left`` is the branch (:meth:`Gen.side`): a bool, or the name of a sign
+    read at run time (+1 left, -1 right: the JavaScript page can switch it).
+    """
     pux, puy, qux, quy = gen.mul(p, ux), gen.mul(p, uy), gen.mul(q, ux), gen.mul(q, uy)
+    if isinstance(left, str):
+        qux, quy = gen.mul(left, qux), gen.mul(left, quy)
+        return gen.sub(pux, quy), gen.add(puy, qux)
     if left:
         return gen.sub(pux, quy), gen.add(puy, qux)
     return gen.add(pux, quy), gen.sub(puy, qux)
@@ -124,7 +131,7 @@ def _intersect_line_circle(gen: Gen, step: Step) -> None:
     gen.bail_unless(f"_min({h2}, None) >= 0.0")
     h = gen.let(f"_sqrt({h2})", "h")
     # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
-    x, y = _turned(gen, s, h, l0, l1, step.params["branch"] != "behind")
+    x, y = _turned(gen, s, h, l0, l1, gen.side(step, step.params["branch"] != "behind"))
     gen.put_point(step.outputs[0], gen.sub(cx, x), gen.sub(cy, y))
 
 
@@ -466,5 +473,5 @@ def _tangent_foot(gen: Gen, step: Step) -> None:
     ux, uy = gen.let(f"{vx} / {dist}", "c"), gen.let(f"{vy} / {dist}", "s")
     p = gen.let(f"{d} * {d} / {dist}", "p")
     q = gen.let(f"{d} * {t} / {dist}", "q")
-    x, y = _turned(gen, p, q, ux, uy, step.params["branch"] == "left")
+    x, y = _turned(gen, p, q, ux, uy, gen.side(step, step.params["branch"] == "left"))
     gen.put_point(step.outputs[0], gen.add(ax, x), gen.add(ay, y))
