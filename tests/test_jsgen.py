@@ -102,6 +102,49 @@ def test_javascript_equals_the_replay(rm: RandomMechanism, offsets: list[float])
         _compare(cx, fn, got, inputs)
 
 
+@examples(20)
+@given(rm=mechanisms(), moves=st.lists(st.tuples(st.floats(-0.02, 0.02), st.floats(-0.02, 0.02)),
+                                       min_size=4, max_size=4))
+def test_frame_points_are_parameters(rm: RandomMechanism,
+                                     moves: list[tuple[float, float]]) -> None:
+    # every family: frame points moved in K give the replay of the construction recorded with
+    # those points moved (the same steps, the 'point' steps' coordinates changed)
+    from graphkin.construction import Construction
+
+    mech = rm.mechanism()
+    got_setup = _setup(mech)
+    if got_setup is None:
+        return
+    eng, cx, consts = got_setup
+    labels = list(dict.fromkeys(o for s in cx.steps for o in s.outputs if s.op != "input"))
+    fn = generate_js(cx.steps, requests=labels)
+    names = [n for n, _ in fn.slots]
+    k = fn.values
+    given = [s for s in cx.steps if s.op == "point"]
+    # a frame point that is also a slider's line point is a path, not a pivot: not moved
+    frame = [s for s in given if s.outputs[0] in mech.links["1"].points and
+             sum(tuple(t.params["xy"]) == tuple(s.params["xy"]) for t in given) == 1]
+    moved = Construction()
+    for s in cx.steps:
+        params = dict(s.params)
+        if s in frame[:len(moves)]:
+            dx, dy = moves[frame.index(s)]
+            x, y = s.params["xy"]
+            params["xy"] = (x + dx * mech.scale, y + dy * mech.scale)
+            k[names.index(f"{s.outputs[0]}.0")] = params["xy"][0]
+            k[names.index(f"{s.outputs[0]}.1")] = params["xy"][1]
+        moved.add(s.op, s.inputs, s.outputs, **params)
+    inputs = {**consts, eng.label: mech.drives[0].value}
+    got = _run(fn, [inputs], k)[0]
+    ref = moved.replay(inputs, strict=False)
+    if not bool(np.all(ref.valid)):
+        assert got is None  # moved too far: this posture cannot be constructed
+        return
+    if got is None:  # the clean case only (a tangency within the margin): refused, not wrong
+        return
+    _compare(moved, fn, got, inputs)
+
+
 def test_dimensions_are_parameters(examples, tmp_path) -> None:
     # Example 3.1 (Fig. 3.6): the written function with the frame pivot D moved in K is the
     # construction recorded from the file with D moved (nothing of the file written in)

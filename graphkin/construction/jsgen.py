@@ -246,7 +246,8 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
             continue
         ins = [gen.val(i) for i in step.inputs]
         pk = _params_key(step.params)
-        key = None if pk is None else (step.op, tuple(v.token for v in ins), pk)
+        # a step of given numbers only (a frame point) is never shared: its numbers are its own
+        key = None if pk is None or not ins else (step.op, tuple(v.token for v in ins), pk)
         if key is not None and key in gen.cse:
             for lab, v in zip(step.outputs, gen.cse[key]):
                 gen.vals[lab] = v

@@ -104,8 +104,15 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
             (px, py), (tx, ty) = link.points[pivot], link.points[tip]
             drive.update(pivot=pivot, tip=tip, phi=math.atan2(ty - py, tx - px))
     names = [n for n, _ in fn.slots]
+    # a frame point where a path of the frame passes (a slider's line, a slot's center) is
+    # part of that path, whose direction other steps carry: not draggable
+    fixed = {tuple(map(float, q)) for path in (*mech.sliders, *mech.slots, *mech.rolling)
+             if path.on == FRAME
+             for q in (getattr(path, a, None) for a in ("p0", "p1", "center", "on_center"))
+             if isinstance(q, (tuple, list))}
     frame_pts = {n: [names.index(f"{n}.0"), names.index(f"{n}.1")]
-                 for n in mech.links[FRAME].points if f"{n}.0" in names}
+                 for n, xy in mech.links[FRAME].points.items()
+                 if f"{n}.0" in names and tuple(map(float, xy)) not in fixed}
     coupler = _coupler_points(mech, cx.steps, names, made)
     branch_pts = [s.outputs[0] for s in cx.steps if s.op in _BRANCH_OPS and
                   s.outputs[0] in points]
