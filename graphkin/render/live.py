@@ -206,12 +206,22 @@ def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
     for lid, lk in mech.links.items():
         for n in lk.points:
             owners.setdefault(n, []).append(lid)
+    # a point of a path (a slider's or slot's point, a line's points, a rolling center) is
+    # read by the path's own steps through their numbers: not draggable
+    paths = (*mech.sliders, *mech.slots, *mech.rolling)
+    on_path = {getattr(p, a) for p in paths for a in ("point", "center")
+               if isinstance(getattr(p, a, None), str)}
+    path_xy = {(p.on, tuple(map(float, q))) for p in paths
+               for q in (getattr(p, a, None) for a in ("p0", "p1", "center", "on_center"))
+               if isinstance(q, (tuple, list))}
     out: dict[str, dict[str, Any]] = {}
     for n, lids in owners.items():
-        if len(lids) != 1 or lids[0] == FRAME or n not in made:
+        if len(lids) != 1 or lids[0] == FRAME or n not in made or n in on_path:
             continue
         lid = lids[0]
         local = mech.links[lid].points[n]
+        if (lid, tuple(map(float, local))) in path_xy:
+            continue
         mine = {n, f"v({n})", f"a({n})"}
         rigid = [s for s in steps if s.outputs == (n,) and s.op == "rigid"]
         readers = [s for s in steps if mine & set(s.inputs)
