@@ -106,7 +106,8 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     names = [n for n, _ in fn.slots]
     # a frame point where a path of the frame passes (a slider's line, a slot's center) is
     # part of that path, whose direction other steps carry: not draggable
-    fixed = {tuple(map(float, q)) for path in (*mech.sliders, *mech.slots, *mech.rolling)
+    all_paths: tuple[Any, ...] = (*mech.sliders, *mech.slots, *mech.rolling)
+    fixed = {tuple(map(float, q)) for path in all_paths
              if path.on == FRAME
              for q in (getattr(path, a, None) for a in ("p0", "p1", "center", "on_center"))
              if isinstance(q, (tuple, list))}
@@ -208,7 +209,7 @@ def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
             owners.setdefault(n, []).append(lid)
     # a point of a path (a slider's or slot's point, a line's points, a rolling center) is
     # read by the path's own steps through their numbers: not draggable
-    paths = (*mech.sliders, *mech.slots, *mech.rolling)
+    paths: tuple[Any, ...] = (*mech.sliders, *mech.slots, *mech.rolling)
     on_path = {getattr(p, a) for p in paths for a in ("point", "center")
                if isinstance(getattr(p, a, None), str)}
     path_xy = {(p.on, tuple(map(float, q))) for p in paths
