@@ -21,6 +21,7 @@ from __future__ import annotations
 import html
 import json
 import math
+import re
 from typing import Any
 
 from graphkin.construction.codegen import Unsupported
@@ -93,8 +94,12 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
     d = mech.drives[0]
+    m = re.fullmatch(r"drive\[(\d+)\]", d.key)
+    # where the file gives the drive's value: its table (or its place in [[drive]]) and key
     drive: dict[str, Any] = {"label": eng.label, "kind": d.kind, "link": d.link,
-                             "value": float(d.value), "index": 0}
+                             "value": float(d.value), "index": int(m.group(1)) if m else 0,
+                             "key": {"relative": "angle"}.get(d.kind, d.kind),
+                             "degrees": d.kind in ("angle", "relative")}
     link = mech.links.get(d.link)
     if d.kind == "angle" and link is not None:
         frame = mech.links[FRAME].points

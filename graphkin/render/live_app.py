@@ -310,7 +310,7 @@ function el0(parent, tag, text) {
 const slider = document.getElementById("gk-drive");
 const sval = document.getElementById("gk-drive-val");
 const status = document.getElementById("gk-status");
-const isAngle = D.drive.kind === "angle";
+const isAngle = D.drive.degrees;
 function showDrive() {
   const v = isAngle ? drive * 180 / Math.PI : drive;
   sval.textContent = D.drive.label + " = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit);
@@ -460,7 +460,7 @@ function edited() {
   for (const n of Object.keys(D.frame)) f.links["1"][n] = [K[D.frame[n][0]], K[D.frame[n][1]]];
   for (const n of Object.keys(D.coupler)) f.links[D.coupler[n].link][n] = localOf(D.coupler[n]);
   const dr = Array.isArray(f.drive) ? f.drive[D.drive.index] : f.drive;
-  if (isAngle) dr.angle = drive * 180 / Math.PI; else dr.position = drive;
+  dr[D.drive.key] = D.drive.degrees ? drive * 180 / Math.PI : drive;
   if (r && D.assembly.length) {
     f.assembly = isTable(f.assembly) ? f.assembly : {};
     for (const n of D.assembly) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];

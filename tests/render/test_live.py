@@ -278,3 +278,22 @@ def test_switching_the_branch_is_the_other_assembly(browser, tmp_path):
     browser.js("document.getElementById('gk-undo').click()")
     np.testing.assert_allclose(browser.js("window.graphkinLive.state()")["result"]["C"],
                                r0["C"], rtol=0, atol=0)
+
+
+def test_every_gallery_file_opens_or_is_refused_in_one_line(browser, tmp_path):
+    # the gallery's mechanisms: a page that opens without an error and equals solve, or (a
+    # mechanism solved by Newton's method, with no construction to write out) one InputError
+    root = Path(__file__).resolve().parents[2] / "gallery" / "mechanisms"
+    opened = 0
+    for path in sorted(root.glob("*.toml")):
+        try:
+            page = _page(tmp_path, path)
+        except InputError as e:
+            assert "not solved by a construction" in str(e), path.name
+            continue
+        browser.open(page)
+        assert browser.errors() == [], path.name
+        assert browser.js("window.graphkinLive.state()")["result"] is not None, path.name
+        _same_as_solve(browser, tmp_path)
+        opened += 1
+    assert opened >= 20
