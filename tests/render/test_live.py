@@ -297,3 +297,18 @@ def test_every_gallery_file_opens_or_is_refused_in_one_line(browser, tmp_path):
         _same_as_solve(browser, tmp_path)
         opened += 1
     assert opened >= 20
+
+
+def test_the_command_writes_the_page_or_says_why_in_one_line(tmp_path, capsys):
+    from graphkin.cli import main
+
+    out = tmp_path / "live.html"
+    assert main(["live", str(EXAMPLES / "ex3_1_fourbar.toml"), "-o", str(out)]) == 0
+    assert out.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    capsys.readouterr()
+    root = Path(__file__).resolve().parents[2]
+    rc = main(["live", str(root / "examples" / "ex3_9_rolling_wheel.toml"), "-o",
+               str(tmp_path / "w.html")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2 and len(err) == 1 and "ex3_9_rolling_wheel.toml" in err[0]
+    assert "not solved by a construction" in err[0]
