@@ -50,7 +50,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.construction.ops import OPS
-from graphkin.construction.ops.runtime import ORIGINATING, _all_finite
+from graphkin.construction.ops.runtime import ORIGINATING, _all_finite, tangent_cc, tangent_lc
 from graphkin.construction.step import Step
 from graphkin.geometry import ops as g
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
@@ -68,14 +68,29 @@ class NeedGeneric(Exception):
 
 Template = Callable[["Gen", Step], None]
 
+HELPERS: dict[str, Callable[..., Any]] = {"tangent_cc": tangent_cc, "tangent_lc": tangent_lc}
+"""Functions a template may call by name (:meth:`Gen.helper`); the JavaScript writer has its own."""
+
 TEMPLATES: dict[str, Template] = {}
 """Operation -> the function that writes its arithmetic (see :class:`Gen`)."""
 
-def template(name: str) -> Callable[[Template], Template]:
-    """Register the template of operation ``name``."""
+PYTHON_GENERIC: set[str] = set()
+"""Operations whose template only the JavaScript writer uses: Python calls the general function."""
+
+
+def template(name: str, python: bool = True) -> Callable[[Template], Template]:
+    """Register the template of operation ``name`` (one table for both writers).
+
+    With ``python=False`` the Python writer keeps calling the operation's
+    general function (which also handles the unclean postures) and only the
+    JavaScript writer (:mod:`graphkin.construction.jsgen`), which has no
+    general functions, writes the template.
+    """
 
     def deco(f: Template) -> Template:
         TEMPLATES[name] = f
+        if not python:
+            PYTHON_GENERIC.add(name)
         return f
 
     return deco
@@ -260,6 +275,23 @@ class Gen:
         x = _num(a)
         return lit(-x) if x is not None else self.let(f"-{a}")
 
+    # ---- the few forms that differ between the languages (see jsgen.py) -----
+    def where(self, cond: str, a: str, b: str) -> str:
+        """``a`` where ``cond`` holds for every entry, else ``b`` (a conditional expression)."""
+        return f"{a} if {cond} else {b}"
+
+    def every(self, cond: str) -> str:
+        """``cond`` (an array of truth values) holds for every entry."""
+        return f"({cond}).all()"
+
+    def helper(self, name: str) -> str:
+        """The name of a shared helper function (:data:`HELPERS`), with the tolerance bound."""
+        return self.bind(functools.partial(HELPERS[name], tol=self.tol), name.split("_")[0])
+
+    def side(self, step: Step, left: bool) -> bool | str:
+        """The branch of a two-way step: here the recorded one (JavaScript: a sign in ``K``)."""
+        return left
+
     @staticmethod
     def is_zero(a: str) -> bool:
         """True for the literal zero."""
@@ -414,7 +446,7 @@ def _live(steps: Sequence[Step], wanted: set[str]) -> list[bool]:
             need[k] = True
             live.difference_update(s.outputs)
             continue
-        fails = s.op in ORIGINATING or s.op not in TEMPLATES
+        fails = s.op in ORIGINATING or s.op not in TEMPLATES or s.op in PYTHON_GENERIC
         if fails or not live.isdisjoint(s.outputs):
             need[k] = True
             live.difference_update(s.outputs)
@@ -490,7 +522,7 @@ def generate(steps: Sequence[Step], *, varying: Sequence[str],
             for lab, v in zip(step.outputs, gen.cse[key]):
                 gen.vals[lab] = v
             continue
-        tpl = TEMPLATES.get(step.op)
+        tpl = None if step.op in PYTHON_GENERIC else TEMPLATES.get(step.op)
         done = False
         if tpl is not None:
             mark = len(gen.lines)

@@ -17,12 +17,9 @@ polygon, Coriolis component).
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 
 from graphkin.construction.codegen import Gen, _num, lit, template
-from graphkin.construction.ops.runtime import tangent_cc, tangent_lc
 from graphkin.construction.step import Step
 
 
@@ -98,18 +95,25 @@ def _intersect_circles(gen: Gen, step: Step) -> None:
     gen.bail_unless(f"_min({dd}, None) > {lim}")
     # tangency (a dead center): a tiny negative h² from a length error counts as zero, as
     # the kernel rounds it; arcs that do not meet are not clean
-    fix = gen.bind(functools.partial(tangent_cc, tol=tol), "tangent")
-    q2 = gen.let(f"{q2} if _min({q2}, None) >= 0.0 else {fix}({q2}, {dd}, {r1}, {r2})", "q")
+    fix = gen.helper("tangent_cc")
+    q2 = gen.let(gen.where(f"_min({q2}, None) >= 0.0", q2, f"{fix}({q2}, {dd}, {r1}, {r2})"), "q")
     gen.bail_unless(f"_min({q2}, None) >= 0.0")
     q = gen.let(f"_sqrt({q2})", "h")
     # C1 + a u ± h k × u with u the unit vector from center 1 to center 2
-    x, y = _turned(gen, p, q, dx, dy, step.params["branch"] == "left")
+    x, y = _turned(gen, p, q, dx, dy, gen.side(step, step.params["branch"] == "left"))
     gen.put_point(step.outputs[0], gen.add(x, x1), gen.add(y, y1))
 
 
-def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool) -> tuple[str, str]:
-    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it."""
+def _turned(gen: Gen, p: str, q: str, ux: str, uy: str, left: bool | str) -> tuple[str, str]:
+    """``p u + q k × u`` (``left``) or ``p u - q k × u``: along ``u`` and across it.
+
+    ``left`` is the branch (:meth:`Gen.side`): a bool, or the name of a sign
+    read at run time (+1 left, -1 right: the JavaScript page can switch it).
+    """
     pux, puy, qux, quy = gen.mul(p, ux), gen.mul(p, uy), gen.mul(q, ux), gen.mul(q, uy)
+    if isinstance(left, str):
+        qux, quy = gen.mul(left, qux), gen.mul(left, quy)
+        return gen.sub(pux, quy), gen.add(puy, qux)
     if left:
         return gen.sub(pux, quy), gen.add(puy, qux)
     return gen.add(pux, quy), gen.sub(puy, qux)
@@ -122,12 +126,12 @@ def _intersect_line_circle(gen: Gen, step: Step) -> None:
     cx, cy, r = gen.rows(c)
     s = gen.let(gen.add(gen.add(gen.mul(l0, cx), gen.mul(l1, cy)), l2), "s")
     h2 = gen.let(gen.sub(gen.mul(r, r), gen.mul(s, s)), "h")
-    fix = gen.bind(functools.partial(tangent_lc, tol=gen.tol), "tangent")
-    h2 = gen.let(f"{h2} if _min({h2}, None) >= 0.0 else {fix}({h2}, {s}, {r})", "h")
+    fix = gen.helper("tangent_lc")
+    h2 = gen.let(gen.where(f"_min({h2}, None) >= 0.0", h2, f"{fix}({h2}, {s}, {r})"), "h")
     gen.bail_unless(f"_min({h2}, None) >= 0.0")
     h = gen.let(f"_sqrt({h2})", "h")
     # the foot of the perpendicular from the center, then ∓ h along the line (l1, -l0)
-    x, y = _turned(gen, s, h, l0, l1, step.params["branch"] != "behind")
+    x, y = _turned(gen, s, h, l0, l1, gen.side(step, step.params["branch"] != "behind"))
     gen.put_point(step.outputs[0], gen.sub(cx, x), gen.sub(cy, y))
 
 
@@ -224,7 +228,7 @@ def _meet(gen: Gen, step: Step) -> None:
     n2 = gen.add(gen.mul(px, px), gen.mul(py, py))
     # the kernel's clean case: nowhere parallel, coincident or NaN
     gate = lit((gen.tol.angle * (1.0 + 1e-6)) ** 2)
-    gen.bail_unless(f"({pw} * {pw} > {gate} * _maximum({n2}, 1.0)).all()")
+    gen.bail_unless(gen.every(f"{pw} * {pw} > {gate} * _maximum({n2}, 1.0)"))
     gen.put_point(step.outputs[0], _div(gen, px, pw), _div(gen, py, pw))
 
 
@@ -357,3 +361,117 @@ def _along(gen: Gen, step: Step) -> None:
 template("add_along")(_along)
 
 template("along_line")(_along)
+
+
+@template("point")
+def _point(gen: Gen, step: Step) -> None:
+    # a given point (a frame pivot): the Python writer folds it when the function is written,
+    # the JavaScript writer keeps its coordinates parameters (they can be dragged)
+    gen.put_point(step.outputs[0], *_pair(gen, step.params["xy"]))
+
+
+@template("scalar")
+def _scalar(gen: Gen, step: Step) -> None:
+    # a given number (the frame's angle): folded by the Python writer, a parameter in JS
+    gen.put_scalar(step.outputs[0], gen.num(step.params["value"]))
+
+
+# ---- templates the JavaScript writer needs (Python calls the general functions) ----------
+# Each writes the operation's own formula (compass.py, points.py, drives.py) and returns
+# None wherever the formula would divide by zero or take a root of a negative number.
+
+@template("copy_point", python=False)
+def _copy_point(gen: Gen, step: Step) -> None:
+    gen.put_point(step.outputs[0], *gen.pt(step.inputs[0]))
+
+
+template("same_point", python=False)(_copy_point)
+
+
+@template("point_xy", python=False)
+def _point_xy(gen: Gen, step: Step) -> None:
+    x, y = step.inputs
+    gen.put_point(step.outputs[0], gen.scalar(x), gen.scalar(y))
+
+
+@template("add_angles", python=False)
+def _add_angles(gen: Gen, step: Step) -> None:
+    a, b = (gen.scalar(i) for i in step.inputs)
+    sign = float(step.params.get("sign", 1.0))
+    gen.put_scalar(step.outputs[0], gen.add(a, b) if sign == 1.0 else gen.sub(a, b)
+                   if sign == -1.0 else gen.add(a, gen.mul(lit(sign), b)))
+
+
+@template("circle_on_diameter", python=False)
+def _circle_on_diameter(gen: Gen, step: Step) -> None:
+    # Thales: the center is the midpoint of PQ, the radius half of |PQ|
+    px, py = gen.pt(step.inputs[0])
+    dx, dy = _diff(gen, *step.inputs)
+    gen.put_rows(step.outputs[0], "circle", gen.add(px, gen.mul("0.5", dx)),
+                 gen.add(py, gen.mul("0.5", dy)),
+                 f"0.5 * _sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})")
+
+
+def _line_through_direction(gen: Gen, px: str, py: str, dx: str, dy: str) -> tuple[str, ...]:
+    """The line through (px, py) directed along (dx, dy): ``(-dy, dx, px dy - py dx) / |d|``."""
+    n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
+    _positive(gen, n)
+    c = gen.sub(gen.mul(px, dy), gen.mul(py, dx))
+    return tuple(_div(gen, r, n) for r in (gen.neg(dy), dx, c))
+
+
+@template("line_at_angle", python=False)
+def _line_at_angle(gen: Gen, step: Step) -> None:
+    px, py = gen.pt(step.inputs[0])
+    c, s = gen.cs(step.inputs[1], float(step.params.get("offset", 0.0)))
+    gen.put_rows(step.outputs[0], "line", *_line_through_direction(gen, px, py, c, s))
+
+
+@template("coordinate_line", python=False)
+def _coordinate_line(gen: Gen, step: Step) -> None:
+    # x = s directed +y, or y = s directed +x
+    s = gen.scalar(step.inputs[0])
+    if step.params["axis"] == "x":
+        gen.put_rows(step.outputs[0], "line", *_line_through_direction(gen, s, "0.0", "0.0",
+                                                                          "1.0"))
+    else:
+        gen.put_rows(step.outputs[0], "line", *_line_through_direction(gen, "0.0", s, "1.0",
+                                                                          "0.0"))
+
+
+@template("perpendicular_cw", python=False)
+def _perpendicular_cw(gen: Gen, step: Step) -> None:
+    line, p = step.inputs
+    a, b, _ = gen.rows(line)
+    px, py, pw = gen.rows(p)
+    # the counterclockwise perpendicular (-b, a, c) turned end for end
+    c = gen.add(gen.mul(gen.neg(b), px), gen.mul(a, py))
+    gen.put_rows(step.outputs[0], "line", b, gen.neg(a), _div(gen, c, pw))
+
+
+@template("along_ray", python=False)
+def _along_ray(gen: Gen, step: Step) -> None:
+    ax, ay = gen.pt(step.inputs[0])
+    dx, dy = _diff(gen, *step.inputs)
+    n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
+    _positive(gen, n)
+    k = gen.let(f"{gen.num(step.params['distance'])} / {n}", "k")
+    gen.put_point(step.outputs[0], gen.add(ax, gen.mul(dx, k)), gen.add(ay, gen.mul(dy, k)))
+
+
+@template("tangent_foot", python=False)
+def _tangent_foot(gen: Gen, step: Step) -> None:
+    # T = P + (d²/D) ŝ ± (d t/D) k × ŝ, D = |PS|, t = √(D² − d²)
+    ax, ay = gen.pt(step.inputs[0])
+    vx, vy = _diff(gen, *step.inputs)
+    dist = gen.let(f"_sqrt({gen.add(gen.mul(vx, vx), gen.mul(vy, vy))})", "n")
+    _positive(gen, dist)
+    d = gen.num(step.params["offset"])
+    t2 = gen.let(f"({dist} - {d}) * ({dist} + {d})", "q")
+    gen.bail_unless(f"_min({t2}, None) >= 0.0")
+    t = gen.let(f"_sqrt({t2})", "h")
+    ux, uy = gen.let(f"{vx} / {dist}", "c"), gen.let(f"{vy} / {dist}", "s")
+    p = gen.let(f"{d} * {d} / {dist}", "p")
+    q = gen.let(f"{d} * {t} / {dist}", "q")
+    x, y = _turned(gen, p, q, ux, uy, gen.side(step, step.params["branch"] == "left"))
+    gen.put_point(step.outputs[0], gen.add(ax, x), gen.add(ay, y))

@@ -1,0 +1,40 @@
+"""``graphkin live FILE -o page.html``: drag the crank or a frame pivot and the polygons redraw.
+
+Write one self-contained HTML file (no network) where the mechanism's posture, velocity and
+acceleration constructions are re-solved in the page on every pointer move: drag the crank's
+moving pin, a frame pivot or the drive slider; a posture that cannot be assembled is shown as
+such; undo, reset, and save the edited mechanism as a TOML file.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from graphkin.commands._args import about, command, write_text
+
+__all__ = ["add_parser", "run"]
+
+HELP = ("write a self-contained HTML page where dragging the crank or a frame pivot "
+        "re-solves the posture and the velocity and acceleration polygons")
+DESCRIPTION = about(__doc__)
+
+
+def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
+    """Register the sub-command."""
+    p = command(sub, "live", help=HELP, description=DESCRIPTION)
+    p.add_argument("-o", "--output", required=True, help="the HTML file to write")
+    return p
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the sub-command."""
+    import graphkin
+    from graphkin.files import load_toml
+    from graphkin.render.live import live_html
+
+    mech = graphkin.load(args.file)
+    text = live_html(mech, load_toml(args.file), str(args.file))
+    out = write_text(args.output, text, "--output")
+    print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
+    return 0

@@ -1,0 +1,292 @@
+"""The live page: drag the crank or a frame pivot and the polygons redraw (``graphkin live``).
+
+One self-contained HTML file (no network): the mechanism's recorded
+posture, velocity and acceleration constructions are written out as one
+JavaScript function (:func:`graphkin.construction.jsgen.generate_js`) whose
+parameters are the mechanism's dimensions, and a small script
+(:mod:`graphkin.render.live_app`) calls it on every pointer move and redraws
+the three panels.  Nothing is computed in Python at run time; the values the
+page shows are the construction's own (tested against ``graphkin solve`` of
+the file the page saves, tests/render/test_live.py).
+
+References
+----------
+Uicker, Pennock & Shigley, *Theory of Machines and Mechanisms*, 5th ed.,
+Sec. 2.8 (the posture constructions), Secs. 3.4-3.6 (velocity polygon and
+images), Secs. 4.2-4.6 (acceleration polygon).
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+import re
+from typing import Any
+
+from graphkin.construction.codegen import Unsupported
+from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
+from graphkin.errors import GraphkinError, InputError
+from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.render.live_app import APP_JS, PAGE_CSS
+from graphkin.render.style import STYLES
+from graphkin.tolerance import DEFAULT_TOL
+
+__all__ = ["live_data", "live_html", "script_json"]
+
+_BRANCH_OPS = ("intersect_circles", "intersect_line_circle", "tangent_foot")
+
+
+def script_json(value: Any) -> str:
+    """``value`` as JSON safe inside ``<script>`` (``<``, ``>``, ``&``, line separators escaped)."""
+    return (json.dumps(value, ensure_ascii=False, allow_nan=False)
+            .replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+            .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029"))
+
+
+def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[dict[str, Any],
+                                                                               str]:
+    """What the page needs: its data (JSON-able) and the JavaScript of the construction.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The loaded file.
+    file_data : dict
+        The file's parsed TOML (the page saves it back with the edits).
+    source : str
+        The file's name, for messages.
+
+    Raises
+    ------
+    InputError
+        The mechanism is not solved by a construction (the page has nothing to
+        write out), or its construction uses an operation with no template.
+    """
+    from graphkin.kinematics.posture import NotDecomposable
+    from graphkin.kinematics.sweep.engine import _Engine
+
+    try:
+        eng = _Engine(mech, DEFAULT_TOL)
+    except NotDecomposable as exc:
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc})",
+                         file=source) from None
+    if eng.method != "construction" or eng.pc is None:
+        raise InputError("no live page: the mechanism is not solved by a construction",
+                         file=source)
+    cx = eng.combined if eng.combined is not None else eng.pc.construction
+    consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
+    if eng.combined is not None:
+        consts.update({k: float(v) for k, v in eng.rate_given.items()})
+    made = {o for s in cx.steps for o in s.outputs}
+    points = [n for lk in mech.links.values() for n in lk.points if n in made]
+    points = list(dict.fromkeys(points))
+    requests = list(points)
+    requests += [f"θ{lid}" for lid in mech.links if f"θ{lid}" in made]
+    rates = eng.combined is not None
+    if rates:
+        for pre in ("v", "a"):
+            requests += [f"{pre}({n})" for n in points if f"{pre}({n})" in made]
+        requests += [f"{w}{lid}" for w in ("ω", "α") for lid in mech.links if f"{w}{lid}" in made]
+        requests += [p for p in ("o_v", "o_a") if p in made]
+    try:
+        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
+    except Unsupported as exc:
+        raise InputError(f"no live page: {exc}", file=source) from None
+    d = mech.drives[0]
+    m = re.fullmatch(r"drive\[(\d+)\]", d.key)
+    # where the file gives the drive's value: its table (or its place in [[drive]]) and key
+    drive: dict[str, Any] = {"label": eng.label, "kind": d.kind, "link": d.link,
+                             "value": float(d.value), "index": int(m.group(1)) if m else 0,
+                             "key": {"relative": "angle"}.get(d.kind, d.kind),
+                             "degrees": d.kind in ("angle", "relative")}
+    link = mech.links.get(d.link)
+    if d.kind == "angle" and link is not None:
+        frame = mech.links[FRAME].points
+        pivot = next((n for n in link.points if n in frame), None)
+        tip = next((n for n in link.points if n != pivot and n in made), None)
+        if pivot is not None and tip is not None:
+            (px, py), (tx, ty) = link.points[pivot], link.points[tip]
+            drive.update(pivot=pivot, tip=tip, phi=math.atan2(ty - py, tx - px))
+    names = [n for n, _ in fn.slots]
+    # a frame point where a path of the frame passes (a slider's line, a slot's center) is
+    # part of that path, whose direction other steps carry: not draggable
+    all_paths: tuple[Any, ...] = (*mech.sliders, *mech.slots, *mech.rolling)
+    fixed = {tuple(map(float, q)) for path in all_paths
+             if path.on == FRAME
+             for q in (getattr(path, a, None) for a in ("p0", "p1", "center", "on_center"))
+             if isinstance(q, (tuple, list))}
+    frame_pts = {n: [names.index(f"{n}.0"), names.index(f"{n}.1")]
+                 for n, xy in mech.links[FRAME].points.items()
+                 if f"{n}.0" in names and tuple(map(float, xy)) not in fixed}
+    coupler = _coupler_points(mech, cx.steps, names, made)
+    branch_pts = [s.outputs[0] for s in cx.steps if s.op in _BRANCH_OPS and
+                  s.outputs[0] in points]
+    hints = dict(file_data.get("assembly", {})) if isinstance(file_data.get("assembly"),
+                                                              dict) else {}
+    data = {
+        "title": mech.title or source,
+        "unit": mech.length_unit,
+        "links": {lid: [n for n in lk.points if n in made] for lid, lk in mech.links.items()},
+        "frame": frame_pts,
+        "coupler": coupler,
+        "branches": {n[:-len(".branch")]: k for k, n in enumerate(names)
+                     if n.endswith(".branch") and n[:-len(".branch")] in points},
+        "drive": drive,
+        "inputs": consts,
+        "K": fn.values,
+        "rates": rates,
+        "assembly": sorted(set(hints) | set(branch_pts)),
+        "file": file_data,
+        "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
+                  if k in STYLES},
+    }
+    js = RUNTIME + fn.source
+    centers = _centers(mech)
+    if centers is not None:
+        data["centers"], cjs = centers
+        js += cjs
+    return data, js
+
+
+def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
+    """The instant centers' construction (Sec. 3.13-3.15) as a second function, of the pins.
+
+    Aronhold-Kennedy's lines are drawn through the primary centers, which are
+    the pins (I23 at B ...): the function takes their positions from the
+    posture (inputs ``I23.x``, ``I23.y``) and returns every center, or
+    ``null`` when two of the lines are parallel (a center at infinity).  A
+    mechanism with a primary center that is not a pin (a slider's, at
+    infinity) gets no centers on the page.
+    """
+    from itertools import combinations
+
+    from graphkin.construction import Construction
+    from graphkin.kinematics.instant_centers import center_label, instant_centers
+
+    try:
+        sol = mech.solve()
+        ic = instant_centers(sol)
+    except GraphkinError:  # the centers cannot be found here: the page has the rest
+        return None
+    pin_of = {center_label(i, j): p.name for p in mech.pins
+              for i, j in combinations(p.links, 2)}
+    cx = Construction()
+    inputs: dict[str, str] = {}
+    for st in ic.construction.steps:
+        if st.op == "point" and st.outputs[0] in pin_of:
+            lab = st.outputs[0]
+            cx.add("input", (), (f"{lab}.x",), name=f"{lab}.x")
+            cx.add("input", (), (f"{lab}.y",), name=f"{lab}.y")
+            cx.add("point_xy", (f"{lab}.x", f"{lab}.y"), (lab,))
+            inputs[lab] = pin_of[lab]
+        elif st.op in ("join", "meet"):
+            cx.add(st.op, st.inputs, st.outputs, **st.params)
+        else:
+            return None
+    labels = [s.outputs[0] for s in cx.steps if s.op in ("point_xy", "meet")]
+    try:
+        fn = generate_js(cx.steps, requests=labels, tol=DEFAULT_TOL, name="centers")
+    except Unsupported:
+        return None
+    joins = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "join"]
+    meets = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "meet"]
+    return ({"pins": inputs, "labels": labels, "K": fn.values, "joins": joins,
+             "meets": meets}, fn.source)
+
+
+_DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")
+
+
+def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
+                    made: set[str]) -> dict[str, dict[str, Any]]:
+    """The points of one moving link that can be dragged: where their numbers sit in ``K``.
+
+    A point of one link only, laid off by a ``rigid`` step (case 1), whose
+    velocity and acceleration images are ``similar`` to the link (Sec. 3.5,
+    Mehmke) or found by a difference (no dimension), and whose local
+    coordinates no other step carries.  Dragging it changes the link's shape:
+    the ``rigid`` step's ``q - p`` and the images' complex ratios.
+    """
+    owners: dict[str, list[str]] = {}
+    for lid, lk in mech.links.items():
+        for n in lk.points:
+            owners.setdefault(n, []).append(lid)
+    # a point of a path (a slider's or slot's point, a line's points, a rolling center) is
+    # read by the path's own steps through their numbers: not draggable
+    paths: tuple[Any, ...] = (*mech.sliders, *mech.slots, *mech.rolling)
+    on_path = {getattr(p, a) for p in paths for a in ("point", "center")
+               if isinstance(getattr(p, a, None), str)}
+    path_xy = {(p.on, tuple(map(float, q))) for p in paths
+               for q in (getattr(p, a, None) for a in ("p0", "p1", "center", "on_center"))
+               if isinstance(q, (tuple, list))}
+    out: dict[str, dict[str, Any]] = {}
+    for n, lids in owners.items():
+        if len(lids) != 1 or lids[0] == FRAME or n not in made or n in on_path:
+            continue
+        lid = lids[0]
+        local = mech.links[lid].points[n]
+        if (lid, tuple(map(float, local))) in path_xy:
+            continue
+        mine = {n, f"v({n})", f"a({n})"}
+        rigid = [s for s in steps if s.outputs == (n,) and s.op == "rigid"]
+        readers = [s for s in steps if mine & set(s.inputs)
+                   and any(k in s.params for k in _DIMENSIONS)]
+        if len(rigid) != 1 or readers or f"{n}.0" not in names:
+            continue
+        images = []
+        ok = True
+        for s in steps:
+            if not (mine & set(s.outputs)) or s.outputs == (n,):
+                continue
+            if s.op == "similar" and f"{s.outputs[0]}.0" in names and \
+                    tuple(s.params["local_p"]) == tuple(local):
+                images.append({"slots": [names.index(f"{s.outputs[0]}.0"),
+                                         names.index(f"{s.outputs[0]}.1")],
+                               "a": list(s.params["local_a"]), "b": list(s.params["local_b"])})
+            elif s.op not in ("velocity_difference", "acceleration_difference"):
+                ok = False
+        if not ok:
+            continue
+        r = rigid[0]
+        out[n] = {"link": lid, "anchor": r.inputs[0], "angle": r.inputs[1],
+                  "offset": float(r.params.get("offset", 0.0)),
+                  "p": [float(v) for v in r.params["local_p"]],
+                  "slots": [names.index(f"{n}.0"), names.index(f"{n}.1")], "images": images}
+    return out
+
+
+def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
+    """The whole page, self-contained (one file, no network)."""
+    data, js = live_data(mech, file_data, source)
+    title = html.escape(str(data["title"]))
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{title} (live)</title>
+<style>{PAGE_CSS}</style></head>
+<body>
+<header><h1>{title}</h1>
+<p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
+the recorded construction, re-solved in the page.</p>
+<div class="controls"><label>drive <input id="gk-drive" type="range"></label>
+<output id="gk-drive-val"></output>
+<label>branch at <select id="gk-branch"></select></label>
+<button id="gk-switch" type="button">Switch the branch</button>
+<button id="gk-undo" type="button">Undo</button>
+<button id="gk-reset" type="button">Reset</button>
+<button id="gk-save" type="button">Save the edited mechanism</button></div>
+<p id="gk-status" role="status"></p></header>
+<main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
+<figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
+<figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
+</main>
+<table id="gk-table"></table>
+<script id="gk-data" type="application/json">{script_json(data)}</script>
+<script>
+{js}
+const GK_NAME = {js_string(source)};
+{APP_JS}
+</script>
+</body></html>
+"""

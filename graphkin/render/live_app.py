@@ -1,0 +1,490 @@
+"""The script and style sheet of the live page (:mod:`graphkin.render.live`), as strings.
+
+The script reads the page's data (``#gk-data``), calls the written-out
+construction ``construction(I, K)`` on every pointer move and redraws the
+posture and the velocity and acceleration polygons (Secs. 3.4-3.6 and
+4.2-4.6 of Uicker, Pennock & Shigley, 5th ed.) in the colours of ``draw``
+(render/style.py, passed in the data).  Every text it writes goes through
+``textContent`` (never parsed as HTML).  ``window.graphkinLive`` gives the
+tests and the benchmark the page's state, its drive setter and its TOML.
+"""
+
+from __future__ import annotations
+
+__all__ = ["APP_JS", "PAGE_CSS"]
+
+PAGE_CSS = """
+body { font-family: system-ui, sans-serif; margin: 1em; color: #000; }
+h1 { font-size: 1.2em; margin: 0 0 .3em; }
+.hint { margin: 0 0 .5em; color: #444; font-size: .9em; }
+.controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; }
+#gk-drive { width: 22em; }
+#gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .4em 0; }
+main { display: flex; flex-wrap: wrap; gap: .8em; }
+figure { margin: 0; border: 1px solid #ccc; }
+figcaption { font-size: .85em; padding: .2em .4em; background: #f4f4f4; }
+svg { display: block; width: 420px; height: 360px; touch-action: none; }
+.gk-handle { cursor: grab; }
+.gk-stale { opacity: .35; }
+table { border-collapse: collapse; margin-top: .8em; font-size: .85em; }
+td, th { border: 1px solid #ccc; padding: .15em .5em; text-align: right; }
+th { background: #f4f4f4; }
+"""
+
+APP_JS = r"""
+(function () {
+"use strict";
+const D = JSON.parse(document.getElementById("gk-data").textContent);
+const NS = "http://www.w3.org/2000/svg";
+const W = 420, H = 360, M = 30;
+const K0 = D.K.slice();
+let K = D.K.slice();
+const drive0 = D.drive.value;
+let drive = drive0;
+const I = Object.assign({}, D.inputs);
+const history = [];
+let res = null, good = null, dragging = null;
+const st = D.style;
+const ink = (k, p) => (st[k] && st[k][p] !== undefined) ? st[k][p] : "#000";
+const px = (lw) => 1.4 * lw;
+const views = {};
+const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
+const svgs = {};
+for (const name of ["posture", "velocity", "acceleration"]) {
+  const svg = document.getElementById("gk-" + name);
+  svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+  if (panels.indexOf(name) < 0) svg.parentNode.style.display = "none";
+  svgs[name] = svg;
+}
+const moving = [];
+for (const lid of Object.keys(D.links)) {
+  if (lid === "1") continue;
+  for (const n of D.links[lid]) if (moving.indexOf(n) < 0) moving.push(n);
+}
+const owners = {};
+for (const lid of Object.keys(D.links)) {
+  for (const n of D.links[lid]) owners[n] = (owners[n] || 0) + 1;
+}
+
+function solve() { I[D.drive.label] = drive; return construction(I, K); }
+
+// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the pins of the posture
+function centersOf(r) {
+  if (!D.centers || !r) return null;
+  const J = {};
+  for (const lab of Object.keys(D.centers.pins)) {
+    const p = r[D.centers.pins[lab]];
+    if (!p) return null;
+    J[lab + ".x"] = p[0]; J[lab + ".y"] = p[1];
+  }
+  return centers(J, D.centers.K);
+}
+let ics = null;
+
+// the coupler curves of the whole cycle: the points of the links not pinned to the frame,
+// at 360 drive angles from the current one (null where the posture cannot be assembled)
+const traced = [];
+for (const lid of Object.keys(D.links)) {
+  if (lid === "1" || D.links[lid].some((n) => D.frame[n])) continue;
+  for (const n of D.links[lid]) if (traced.indexOf(n) < 0 && owners[n] === 1) traced.push(n);
+}
+let curves = {};
+function cycle() {
+  curves = {};
+  if (D.drive.kind !== "angle" || !traced.length) return curves;
+  const J = Object.assign({}, I);
+  for (const n of traced) curves[n] = [];
+  for (let k = 0; k < 360; k++) {
+    J[D.drive.label] = drive + 2 * Math.PI * k / 360;
+    const r = construction(J, K);
+    for (const n of traced) curves[n].push(r ? r[n] : null);
+  }
+  return curves;
+}
+
+function pointsOf(panel, r) {
+  const out = [];
+  const pre = panel === "posture" ? "" : (panel === "velocity" ? "v" : "a");
+  if (pre) { const o = r["o_" + pre]; if (o) out.push(o); }
+  for (const lid of Object.keys(D.links)) for (const n of D.links[lid]) {
+    const p = pre ? r[pre + "(" + n + ")"] : r[n];
+    if (p) out.push(p);
+  }
+  return out;
+}
+
+function fit(panel, r) {
+  const pts = pointsOf(panel, r);
+  if (panel === "posture") {
+    for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
+    // the instant centers too, unless one is far (near parallel lines): within 3 sizes
+    const c = centersOf(r);
+    if (c) {
+      let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+      for (const p of pts) {
+        x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
+        y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
+      }
+      const size = Math.hypot(x1 - x0, y1 - y0), o = [(x0 + x1) / 2, (y0 + y1) / 2];
+      for (const lab of Object.keys(c)) {
+        const p = c[lab];
+        if (Math.hypot(p[0] - o[0], p[1] - o[1]) < 3 * size) pts.push(p);
+      }
+    }
+  }
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (const p of pts) {
+    x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
+    y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
+  }
+  let w = x1 - x0, h = y1 - y0;
+  const big = Math.max(w, h) || 1;
+  w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
+  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
+}
+
+function X(panel, p) { const v = views[panel]; return (p[0] - v.left) * v.s; }
+function Y(panel, p) { const v = views[panel]; return (v.top - p[1]) * v.s; }
+
+function el(parent, tag, attrs, text) {
+  const e = document.createElementNS(NS, tag);
+  for (const k of Object.keys(attrs)) e.setAttribute(k, attrs[k]);
+  if (text !== undefined) e.textContent = text;
+  parent.appendChild(e);
+  return e;
+}
+
+function defs(svg) {
+  const d = el(svg, "defs", {});
+  const m = el(d, "marker", {id: svg.id + "-arrow", viewBox: "0 0 10 10", refX: "10", refY: "5",
+                             markerWidth: "7", markerHeight: "7", orient: "auto-start-reverse"});
+  el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: ink("result-line", "color")});
+}
+
+function outline(g, panel, pts, plate) {
+  if (pts.length < 2) return;
+  const xy = pts.map((p) => X(panel, p).toFixed(2) + "," + Y(panel, p).toFixed(2)).join(" ");
+  if (pts.length >= 3) {
+    el(g, "polygon", {points: xy, fill: ink(plate, "fc"), stroke: ink(plate, "ec"),
+                      "stroke-width": px(ink(plate, "lw"))});
+  } else {
+    el(g, "polyline", {points: xy, fill: "none", stroke: ink("link", "ec"),
+                       "stroke-width": 2 * px(ink("link", "lw"))});
+  }
+}
+
+function label(g, panel, p, text) {
+  el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) - 6, "font-size": "12",
+                 "font-style": "italic"}, text);
+}
+
+function drawPosture(r, stale) {
+  const svg = svgs.posture;
+  svg.textContent = "";
+  defs(svg);
+  const g = el(svg, "g", stale ? {class: "gk-stale"} : {});
+  for (const n of Object.keys(curves)) {
+    let run = [];
+    const flush = () => {
+      if (run.length > 1) {
+        el(g, "polyline", {points: run.join(" "), fill: "none", class: "gk-curve",
+                           stroke: ink("aux-line", "color"), "stroke-width": "1"});
+      }
+      run = [];
+    };
+    for (const p of curves[n].concat([curves[n][0]])) {
+      if (p) run.push(X("posture", p).toFixed(1) + "," + Y("posture", p).toFixed(1));
+      else flush();
+    }
+    flush();
+  }
+  for (const lid of Object.keys(D.links)) {
+    if (lid === "1") continue;
+    outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
+  }
+  if (ics) drawCenters(g);
+  for (const n of Object.keys(D.frame)) {
+    const p = r[n] || [K[D.frame[n][0]], K[D.frame[n][1]]];
+    const x = X("posture", p), y = Y("posture", p);
+    el(g, "path", {d: "M" + x + "," + y + " l-9,14 h18 z", fill: "#fff", stroke: "#000",
+                   "stroke-width": "1"});
+  }
+  for (const n of moving.concat(Object.keys(D.frame))) {
+    const p = r[n]; if (!p) continue;
+    const pin = (owners[n] || 0) > 1;
+    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: pin ? 4 : 2.5,
+                     fill: pin ? "#fff" : "#000", stroke: "#000", "stroke-width": "1.2"});
+    label(g, "posture", p, n);
+  }
+  const handles = [];
+  for (const n of Object.keys(D.frame)) handles.push(["frame", n]);
+  for (const n of Object.keys(D.coupler)) handles.push(["point", n]);
+  if (D.drive.tip) handles.push(["drive", D.drive.tip]);
+  for (const [kind, n] of handles) {
+    const p = r[n]; if (!p) continue;
+    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 11, fill: "#c62828",
+                     "fill-opacity": "0.18", class: "gk-handle", "data-kind": kind,
+                     "data-name": n});
+  }
+}
+
+function drawCenters(g) {
+  // each of Kennedy's lines from the first of its centers to the farthest on it
+  const on = {};
+  for (const [lab, p, q] of D.centers.joins) on[lab] = [p, q];
+  for (const [lab, l1, l2] of D.centers.meets) { on[l1].push(lab); on[l2].push(lab); }
+  for (const lab of Object.keys(on)) {
+    const pts = on[lab].map((c) => ics[c]);
+    const o = pts[0];
+    let far = pts[1], best = -1;
+    for (const p of pts) {
+      const dd = Math.hypot(p[0] - o[0], p[1] - o[1]);
+      if (dd > best) { best = dd; far = p; }
+    }
+    el(g, "line", {x1: X("posture", o), y1: Y("posture", o), x2: X("posture", far),
+                   y2: Y("posture", far), stroke: ink("aux-line", "color"),
+                   "stroke-width": "0.8", "stroke-dasharray": "5 3", class: "gk-kennedy"});
+  }
+  for (const lab of D.centers.labels) {
+    if (D.centers.pins[lab]) continue;
+    const p = ics[lab];
+    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
+                     stroke: "#000", "stroke-width": "1.2"});
+    label(g, "posture", p, lab);
+  }
+}
+
+function drawPolygon(panel, pre, r, stale) {
+  const svg = svgs[panel];
+  svg.textContent = "";
+  defs(svg);
+  const g = el(svg, "g", stale ? {class: "gk-stale"} : {});
+  const o = r["o_" + pre];
+  if (!o) return;
+  const img = (n) => r[pre + "(" + n + ")"];
+  for (const lid of Object.keys(D.links)) {
+    if (lid === "1") continue;
+    outline(g, panel, D.links[lid].map(img).filter(Boolean), "plate");
+  }
+  for (const n of moving) {
+    const p = img(n); if (!p) continue;
+    if (Math.hypot(p[0] - o[0], p[1] - o[1]) * views[panel].s > 1) {
+      el(g, "line", {x1: X(panel, o), y1: Y(panel, o), x2: X(panel, p), y2: Y(panel, p),
+                     stroke: ink("result-line", "color"),
+                     "stroke-width": px(ink("result-line", "lw")),
+                     "marker-end": "url(#" + svg.id + "-arrow)"});
+    }
+    label(g, panel, p, n.toLowerCase());
+  }
+  el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
+  label(g, panel, o, pre === "v" ? "O_V" : "O_A");
+}
+
+function fmt(v) { return Number.isFinite(v) ? Number(v.toPrecision(6)).toString() : "\u2014"; }
+
+function table(r) {
+  const t = document.getElementById("gk-table");
+  t.textContent = "";
+  const head = el0(t, "tr");
+  for (const h of ["point", "x", "y"].concat(D.rates ? ["|V|", "|A|"] : [])) el0(head, "th", h);
+  for (const n of moving) {
+    const p = r[n]; if (!p) continue;
+    const row = el0(t, "tr");
+    el0(row, "th", n); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
+    if (D.rates) {
+      const v = r["v(" + n + ")"], a = r["a(" + n + ")"], ov = r.o_v, oa = r.o_a;
+      el0(row, "td", v && ov ? fmt(Math.hypot(v[0] - ov[0], v[1] - ov[1])) : "\u2014");
+      el0(row, "td", a && oa ? fmt(Math.hypot(a[0] - oa[0], a[1] - oa[1])) : "\u2014");
+    }
+  }
+}
+function el0(parent, tag, text) {
+  const e = document.createElement(tag);
+  if (text !== undefined) e.textContent = text;
+  parent.appendChild(e);
+  return e;
+}
+
+const slider = document.getElementById("gk-drive");
+const sval = document.getElementById("gk-drive-val");
+const status = document.getElementById("gk-status");
+const isAngle = D.drive.degrees;
+function showDrive() {
+  const v = isAngle ? drive * 180 / Math.PI : drive;
+  sval.textContent = D.drive.label + " = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit);
+  if (isAngle) slider.value = String(((v + 180) % 360 + 360) % 360 - 180);
+  else slider.value = String(v);
+}
+
+function redraw(refit) {
+  res = solve();
+  const ok = res !== null;
+  if (ok) good = res;
+  const r = ok ? res : good;
+  if (r === null) return;
+  cycle();
+  ics = centersOf(r);
+  if (refit || !views.posture) for (const p of panels) fit(p, r);
+  drawPosture(r, !ok);
+  if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
+  if (ok) table(r);
+  status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
+    "where the construction has no clean answer): drag back.";
+  showDrive();
+}
+
+function snapshot() { history.push([K.slice(), drive]); if (history.length > 200) history.shift(); }
+
+function world(svg, ev) {
+  const pt = svg.createSVGPoint();
+  pt.x = ev.clientX; pt.y = ev.clientY;
+  const q = pt.matrixTransform(svg.getScreenCTM().inverse());
+  const v = views.posture;
+  return [v.left + q.x / v.s, v.top - q.y / v.s];
+}
+
+svgs.posture.addEventListener("pointerdown", (ev) => {
+  const t = ev.target;
+  if (!t.classList || !t.classList.contains("gk-handle")) return;
+  snapshot();
+  dragging = {kind: t.getAttribute("data-kind"), name: t.getAttribute("data-name")};
+  svgs.posture.setPointerCapture(ev.pointerId);
+  ev.preventDefault();
+});
+svgs.posture.addEventListener("pointermove", (ev) => {
+  if (!dragging) return;
+  const w = world(svgs.posture, ev);
+  if (dragging.kind === "frame") {
+    const i = D.frame[dragging.name];
+    K[i[0]] = w[0]; K[i[1]] = w[1];
+  } else if (dragging.kind === "point") {
+    dragPoint(D.coupler[dragging.name], w);
+  } else {
+    const piv = (res || good)[D.drive.pivot];
+    drive = Math.atan2(w[1] - piv[1], w[0] - piv[0]) - D.drive.phi;
+  }
+  redraw(false);
+});
+function localOf(c) { return [c.p[0] + K[c.slots[0]], c.p[1] + K[c.slots[1]]]; }
+function dragPoint(c, w) {
+  // Q = P + R(θ + offset)(q - p): the link's new local q of the dragged point, and the
+  // complex ratio (q - a)/(b - a) of each image similar to the link (Mehmke, Sec. 3.5)
+  const r = res || good, P = r[c.anchor], t = r[c.angle] + c.offset;
+  const dx = w[0] - P[0], dy = w[1] - P[1], ct = Math.cos(t), sn = Math.sin(t);
+  K[c.slots[0]] = ct * dx + sn * dy;
+  K[c.slots[1]] = -sn * dx + ct * dy;
+  const q = localOf(c);
+  for (const im of c.images) {
+    const zr0 = im.b[0] - im.a[0], zr1 = im.b[1] - im.a[1];
+    const zp0 = q[0] - im.a[0], zp1 = q[1] - im.a[1];
+    const den = zr0 ** 2 + zr1 ** 2;
+    K[im.slots[0]] = (zp0 * zr0 + zp1 * zr1) / den;
+    K[im.slots[1]] = (zp1 * zr0 - zp0 * zr1) / den;
+  }
+}
+const stop = () => { if (dragging) { dragging = null; redraw(true); } };
+svgs.posture.addEventListener("pointerup", stop);
+svgs.posture.addEventListener("pointercancel", stop);
+
+if (isAngle) { slider.min = "-180"; slider.max = "180"; slider.step = "0.1"; }
+else {
+  const span = Math.max(Math.abs(drive0), 1);
+  slider.min = String(drive0 - 2 * span); slider.max = String(drive0 + 2 * span);
+  slider.step = String(span / 500);
+}
+slider.addEventListener("pointerdown", snapshot);
+slider.addEventListener("input", () => {
+  const v = Number(slider.value);
+  drive = isAngle ? v * Math.PI / 180 : v;
+  redraw(false);
+});
+// the two-way steps (Sec. 2.8, cases 2-4): switch the chosen point's branch
+const branchSel = document.getElementById("gk-branch");
+for (const n of Object.keys(D.branches)) {
+  const o = document.createElement("option");
+  o.value = n; o.textContent = n;
+  branchSel.appendChild(o);
+}
+if (!branchSel.options.length) {
+  branchSel.parentNode.style.display = "none";
+  document.getElementById("gk-switch").style.display = "none";
+}
+document.getElementById("gk-switch").addEventListener("click", () => {
+  const k = D.branches[branchSel.value];
+  if (k === undefined) return;
+  snapshot(); K[k] = -K[k]; redraw(true);
+});
+document.getElementById("gk-undo").addEventListener("click", () => {
+  const s = history.pop(); if (!s) return;
+  K = s[0]; drive = s[1]; redraw(true);
+});
+document.getElementById("gk-reset").addEventListener("click", () => {
+  snapshot(); K = K0.slice(); drive = drive0; redraw(true);
+});
+
+function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
+function tomlVal(v) {
+  if (typeof v === "string") return JSON.stringify(v);
+  if (typeof v === "number") return String(v);
+  if (typeof v === "boolean") return String(v);
+  if (Array.isArray(v)) return "[" + v.map(tomlVal).join(", ") + "]";
+  return "{ " + Object.keys(v).map((k) => tomlKey(k) + " = " + tomlVal(v[k])).join(", ") + " }";
+}
+const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+function tomlTable(out, obj, path) {
+  const simple = [], subs = [], arrs = [];
+  for (const k of Object.keys(obj)) {
+    const v = obj[k];
+    if (isTable(v)) subs.push(k);
+    else if (Array.isArray(v) && v.length && v.every(isTable)) arrs.push(k);
+    else simple.push(k);
+  }
+  if (path.length && (simple.length || (!subs.length && !arrs.length))) {
+    out.push("", "[" + path.map(tomlKey).join(".") + "]");
+  }
+  for (const k of simple) out.push(tomlKey(k) + " = " + tomlVal(obj[k]));
+  for (const k of subs) tomlTable(out, obj[k], path.concat([k]));
+  for (const k of arrs) {
+    for (const e of obj[k]) {
+      out.push("", "[[" + path.concat([k]).map(tomlKey).join(".") + "]]");
+      for (const kk of Object.keys(e)) out.push(tomlKey(kk) + " = " + tomlVal(e[kk]));
+    }
+  }
+}
+
+function edited() {
+  const f = JSON.parse(JSON.stringify(D.file));
+  const r = res || good;
+  for (const n of Object.keys(D.frame)) f.links["1"][n] = [K[D.frame[n][0]], K[D.frame[n][1]]];
+  for (const n of Object.keys(D.coupler)) f.links[D.coupler[n].link][n] = localOf(D.coupler[n]);
+  const dr = Array.isArray(f.drive) ? f.drive[D.drive.index] : f.drive;
+  dr[D.drive.key] = D.drive.degrees ? drive * 180 / Math.PI : drive;
+  if (r && D.assembly.length) {
+    f.assembly = isTable(f.assembly) ? f.assembly : {};
+    for (const n of D.assembly) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];
+  }
+  const out = [];
+  tomlTable(out, f, []);
+  return out.join("\n").replace(/^\n+/, "") + "\n";
+}
+
+document.getElementById("gk-save").addEventListener("click", () => {
+  const blob = new Blob([edited()], {type: "application/toml"});
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(blob);
+  a.download = GK_NAME.replace(/\.toml$/i, "").replace(/^.*[\\/]/, "") + "-edited.toml";
+  document.body.appendChild(a); a.click(); a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+});
+
+window.graphkinLive = {
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics}),
+  setDrive: (v) => { drive = v; redraw(false); return res; },
+  toml: edited,
+  redraw: redraw,
+};
+redraw(true);
+})();
+"""
