@@ -41,6 +41,7 @@ from pathlib import Path
 from typing import Any
 
 from graphkin.files import load_toml
+from graphkin.tolerance import VERDICT_REL
 
 __all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
 
@@ -202,14 +203,22 @@ def _render(entry: Entry) -> tuple[dict[str, bytes], dict[str, Any]]:
                       "has_rates": mech.has_rates}
 
 
-def _fmt(v: Any) -> str:
+def _fmt(v: Any, scale: float | None = None) -> str:
+    """A value (or a vector) to five figures; round-off of ``scale`` written as 0.
+
+    ``scale`` defaults to the value's own size: a component 1e-14 of a vector of
+    583 prints as 0 on every machine (its digits are the arithmetic's, not the
+    mechanism's, and differ between CPUs).
+    """
     from graphkin.render.scale import fmt
 
-    if isinstance(v, (list, tuple)):
-        return "(" + ", ".join(fmt(float(x), 5) for x in v) + ")"
     if v is None:
         return "—"
-    return fmt(float(v), 5)
+    vals = [float(x) for x in v] if isinstance(v, (list, tuple)) else [float(v)]
+    big = max((abs(x) for x in vals if math.isfinite(x)), default=0.0)
+    tiny = VERDICT_REL * (big if scale is None else max(scale, big))
+    text = [fmt(0.0 if abs(x) <= tiny else x, 5) for x in vals]
+    return "(" + ", ".join(text) + ")" if isinstance(v, (list, tuple)) else text[0]
 
 
 def _last_digit(v: Any) -> float:
@@ -230,9 +239,11 @@ def _compare(book: Any, got: Any) -> tuple[str, float, float]:
     if isinstance(book, (list, tuple)):
         d = [float(g) - float(b) for g, b in zip(got, book)]
         size = math.hypot(*map(float, book))
-        return _fmt(d), math.hypot(*d) / max(size, 1e-12), max(abs(x) for x in d)
+        return (_fmt(d, max(size, math.hypot(*map(float, got)))),
+                math.hypot(*d) / max(size, 1e-12), max(abs(x) for x in d))
     diff = float(got) - float(book)
-    return _fmt(diff), abs(diff) / max(abs(float(book)), 1e-12), abs(diff)
+    return (_fmt(diff, max(abs(float(book)), abs(float(got)))),
+            abs(diff) / max(abs(float(book)), 1e-12), abs(diff))
 
 
 def _rows(entry: Entry, data: dict[str, Any]) -> list[dict[str, str]]:
