@@ -1,0 +1,144 @@
+"""TikZ output (issue 31): LaTeX labels, and the compiled PDF's geometry against the SVG's.
+
+The geometry test compiles the TikZ with pdflatex (skipped when it is not
+installed; ``.ci/run`` installs Debian's texlive) and reads the PDF's content
+stream uncompressed: every straight-line vertex the SVG draws inside the
+page must be a vertex of the PDF within 0.1 mm.  The SVG's coordinates are
+matplotlib's (points from the top left), the PDF's pdfTeX's (big points from
+the bottom left): two independent writers of the same scene.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import graphkin
+from graphkin.cli import main
+from graphkin.render import draw
+from graphkin.render.latex import to_latex
+from graphkin.render.svg import to_svg
+from graphkin.render.tikz import drawing_tikz
+
+MM = 72.0 / 25.4  # big points per millimetre
+PDFLATEX = shutil.which("pdflatex")
+needs_tex = pytest.mark.skipif(PDFLATEX is None, reason="pdflatex is not installed")
+
+
+@pytest.mark.parametrize(("text", "tex"), [
+    ("ω₃", "$\\omega_{3}$"),                  # the issue's own example
+    ("$A^{n}_{CB}$", "$A^{n}_{CB}$"),        # mathtext is LaTeX already
+    ("I₁₃", "I$_{13}$"),                     # a run of subscripts is one subscript
+    ("θ₂ = 120°", "$\\theta_{2}$ = 120$^{\\circ}$"),
+    ("P% & #_x", "P\\% \\& \\#\\_x"),        # the user's letters escaped
+    ("\\$5", "\\$5"),                        # plain(): a literal dollar
+    ("V_BA ✓ ?", "V\\_BA $\\checkmark$ ?"),  # the book's marks
+    ("$Q_{Γ}$", "$Q_{\\Gamma}$"),
+    ("漢", "?"),                              # never a compile error
+])
+def test_labels_in_latex(text: str, tex: str) -> None:
+    assert to_latex(text) == tex
+
+
+def test_every_greek_letter_has_a_command() -> None:
+    for ch in "αβγδεζηθικλμνξπρστυφχψωΓΔΘΛΞΠΣΦΨΩ":
+        assert to_latex(ch).startswith("$\\") or to_latex(ch).startswith("$\\mathrm")
+
+
+def _svg_vertices(svg: str) -> np.ndarray:
+    """Vertices of the SVG's straight paths (M/L only), in bp from the bottom left."""
+    height = float(re.search(r'height="([\d.]+)pt"', svg).group(1))  # type: ignore[union-attr]
+    body = re.sub(r"<defs>.*?</defs>", "", svg, flags=re.S)  # marker shapes, clip rects
+    pts = []
+    for d in re.findall(r'<path d="([^"]*)"', body):
+        if re.search(r"[CQAHV]", d):
+            continue
+        for x, y in re.findall(r"[ML] (-?[\d.]+) (-?[\d.]+)", d):
+            pts.append((float(x), height - float(y)))
+    return np.array(pts)
+
+
+def _pdf_vertices(pdf: bytes) -> np.ndarray:
+    """Every ``x y m`` and ``x y l`` of the PDF's uncompressed content streams (no ``cm``
+    moves a path in pgf's output: its paths are written in page coordinates)."""
+    text = pdf.decode("latin-1")
+    pts = re.findall(r"(-?[\d.]+) (-?[\d.]+) [ml]\s", text)
+    return np.array([(float(x), float(y)) for x, y in pts])
+
+
+def _compile(tex: str, tmp: Path) -> bytes:
+    src = tmp / "fig.tex"
+    src.write_text("\\pdfcompresslevel=0 \\pdfobjcompresslevel=0\n" + tex, encoding="utf-8")
+    run = subprocess.run([PDFLATEX or "pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                          "fig.tex"], cwd=tmp, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stdout[-2000:]
+    return (tmp / "fig.pdf").read_bytes()
+
+
+def _same_geometry(d: object, tmp: Path) -> None:
+    tex = drawing_tikz(d)
+    svg = to_svg(d.figure)  # type: ignore[attr-defined]
+    pdf = _compile(tex, tmp)
+    w, h = (float(v) for v in re.search(  # type: ignore[union-attr]
+        r"/MediaBox \[0 0 ([\d.]+) ([\d.]+)\]", pdf.decode("latin-1")).groups())
+    W, H = d.sheet.size  # type: ignore[attr-defined]
+    assert abs(w - 72 * W) < 0.1 * MM and abs(h - 72 * H) < 0.1 * MM  # the same page
+    want = _svg_vertices(svg)
+    got = _pdf_vertices(pdf)
+    inside = (want[:, 0] > 1) & (want[:, 0] < w - 1) & (want[:, 1] > 1) & (want[:, 1] < h - 1)
+    want = want[inside]
+    assert len(want) > 50
+    # nearest PDF vertex of every SVG vertex, in blocks (memory stays small)
+    worst = 0.0
+    for k in range(0, len(want), 500):
+        block = want[k:k + 500]
+        dist = np.min(np.hypot(block[:, None, 0] - got[None, :, 0],
+                               block[:, None, 1] - got[None, :, 1]), axis=1)
+        worst = max(worst, float(dist.max()))
+    assert worst < 0.1 * MM, f"a vertex of the SVG is {worst / MM:.3f} mm from the PDF's"
+
+
+@needs_tex
+def test_every_kinematic_diagram_compiles_to_the_svg_geometry(tmp_path: Path) -> None:
+    """Ex. 3.1/4.2: posture, polygons, centers and the four curvature figures on one sheet."""
+    sol = graphkin.examples.fourbar().solve()
+    _same_geometry(draw(sol, "all"), tmp_path)
+
+
+@needs_tex
+def test_forces_drawing_compiles_to_the_svg_geometry(tmp_path: Path) -> None:
+    spec = Path(__file__).parents[2] / "shared" / "spec" / "forces-examples"
+    files = sorted(spec.glob("*.toml")) if spec.is_dir() else []
+    if not files:
+        pytest.skip("no forces example here")
+    _same_geometry(draw(graphkin.load(files[0]).solve(), "forces"), tmp_path)
+
+
+def test_draw_writes_tikz(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                          monkeypatch: pytest.MonkeyPatch) -> None:
+    src = tmp_path / "fourbar.toml"
+    src.write_text(graphkin.examples.text("fourbar"), encoding="utf-8")
+    out = tmp_path / "v.tex"
+    assert main(["draw", str(src), "-d", "velocity", "-o", str(out)]) == 0
+    tex = out.read_text(encoding="utf-8")
+    assert "\\begin{tikzpicture}" in tex and "\\documentclass" in tex
+    assert "$\\omega_{3}$" in tex or "$\\omega_{2}$" in tex  # ω labels as LaTeX
+    assert "wrote" in capsys.readouterr().err
+    # -o - --format tikz: the same text on standard output
+    assert main(["draw", str(src), "-d", "velocity", "-o", "-", "--format", "tikz"]) == 0
+    assert capsys.readouterr().out == tex
+
+
+def test_handout_page_is_refused_in_tikz(tmp_path: Path, capsys: pytest.CaptureFixture[str]
+                                         ) -> None:
+    src = tmp_path / "fourbar.toml"
+    src.write_text(graphkin.examples.text("fourbar"), encoding="utf-8")
+    assert main(["draw", str(src), "-d", "posture", "--sheet", "a4", "-o",
+                 str(tmp_path / "p.tex")]) == 2
+    err = capsys.readouterr().err
+    assert "--output" in err and "handout" in err and "Traceback" not in err
