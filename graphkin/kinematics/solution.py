@@ -187,10 +187,14 @@ class Solution:
         return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
 
     def _repr_svg_(self) -> str | None:
-        """Jupyter: the solved mechanism drawn inline (matplotlib is imported only here)."""
+        """Jupyter: the solved posture drawn inline, without the table (a fraction of a second).
+
+        Another diagram shows itself the same way: ``sol.draw("velocity")``;
+        the whole sheet is ``sol.draw("all")``.  matplotlib is imported only here.
+        """
         from graphkin.render import repr_svg
 
-        return repr_svg(self)
+        return repr_svg(self, "posture", table=False)
 
     def draw(self, diagram: str = "posture", ax: Any = None, **kw: Any) -> Any:
         """Draw a diagram of this solution; see :func:`graphkin.render.draw`."""
