@@ -142,3 +142,25 @@ def test_handout_page_is_refused_in_tikz(tmp_path: Path, capsys: pytest.CaptureF
                  str(tmp_path / "p.tex")]) == 2
     err = capsys.readouterr().err
     assert "--output" in err and "handout" in err and "Traceback" not in err
+
+
+def test_commands_write_beside_the_user_and_say_so(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str],
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 31: draw, plot and steps without -o write FILE-STEM-... here and say ``wrote``."""
+    src = tmp_path / "in" / "fourbar.toml"
+    src.parent.mkdir()
+    src.write_text(graphkin.examples.text("fourbar"), encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    for argv, name in ((["draw", str(src), "-d", "posture"], "fourbar-posture.svg"),
+                       (["plot", str(src), "--what", "omega", "--count", "12"],
+                        "fourbar-plot.svg"),
+                       (["steps", str(src)], "fourbar-steps-posture.html")):
+        assert main(argv) == 0
+        assert (tmp_path / name).is_file()
+        assert f"wrote {name}" in capsys.readouterr().err
+    # -o - is the SVG itself on standard output, nothing written here
+    assert main(["draw", str(src), "-d", "posture", "-o", "-"]) == 0
+    assert capsys.readouterr().out.lstrip().startswith("<?xml")
+    assert main(["draw", str(src), "-d", "posture", "-o", "-", "--format", "pdf"]) == 2
+    assert "not PDF" in capsys.readouterr().err
