@@ -109,3 +109,36 @@ def test_relative_omega_given_for_the_absolute_one(tmp_path: Path, examples: Pat
     assert "ω3/4 = ω3 − ω4" in out and "no usual mistake" not in out
     # the sense is wrong and so is the size: the rule says both
     assert "sense reversed and size outside" in out
+
+
+def test_rates_at_a_dead_point_are_not_blamed_on_the_file() -> None:
+    """Issue 31: the file gives rates; at a dead center they are undefined, not missing."""
+    import math
+
+    # slider_crank: crank AB = 50 mm, rod BC = 140 mm, slider line 20 mm below A. A, B, C
+    # in line (the slider at its far dead center) when |AC| = 190 mm: x_C = sqrt(190² - 20²)
+    text = graphkin.examples.text("slider_crank")
+    assert "position = 164" in text
+    x = math.sqrt(190.0**2 - 20.0**2)
+    sol = graphkin.loads(text.replace("position = 164", f"position = {x!r}")).solve()
+    with pytest.raises(ValueError, match="not defined in this posture although the file "
+                                         "gives rates") as e:
+        sol.velocity("B")
+    assert "dead" in str(e.value) and "gives no rates" not in str(e.value)
+    # a file without rates still says so
+    import re
+
+    bare = re.sub(r"(?m)^(omega|alpha) = .*\n", "", graphkin.examples.text("fourbar"))
+    sol = graphkin.loads(bare).solve()
+    assert not sol.mechanism.has_rates
+    with pytest.raises(ValueError, match="the file gives no rates"):
+        sol.omega(3)
+
+
+def test_a_slot_normal_is_named_in_words(capsys: pytest.CaptureFixture[str],
+                                         tmp_path: Path) -> None:
+    f = tmp_path / "cam.toml"
+    f.write_text(graphkin.examples.text("cam_follower"), encoding="utf-8")
+    assert main(["solve", str(f)]) == 0
+    out = capsys.readouterr().out
+    assert "the slot's normal at B" in out and "n(B)" not in out

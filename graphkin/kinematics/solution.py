@@ -176,14 +176,30 @@ class Solution:
         lid = link or self.owner(name)
         return self.links[lid].position(self.mechanism.links[lid].points[name])
 
+    def _why_no_rates(self, what: str) -> str:
+        """Why ``what`` (velocities, accelerations) are not known: no rates, or this posture.
+
+        A file that gives rates has none at a toggle or dead-center posture
+        (Sec. 3.5: the velocity polygon has no answer there); the notes say which step.
+        """
+        if not self.mechanism.has_rates:
+            return f"{what} are not known (the file gives no rates)"
+        why = next((n for n in self.notes if "undetermined" in n or "dead" in n), "")
+        return (f"{what} are not defined in this posture although the file gives rates"
+                + (f": {why}" if why else " (a toggle or dead-center posture)"))
+
     def velocity(self, name: str, link: str | None = None) -> np.ndarray:
         """Absolute velocity of named point ``name`` (of ``link``)."""
         lid = link or self.owner(name)
+        if self.links[lid].omega is None:
+            raise ValueError(self._why_no_rates("velocities"))
         return self.links[lid].velocity(self.mechanism.links[lid].points[name])
 
     def acceleration(self, name: str, link: str | None = None) -> np.ndarray:
         """Absolute acceleration of named point ``name`` (of ``link``)."""
         lid = link or self.owner(name)
+        if self.links[lid].alpha is None or self.links[lid].omega is None:
+            raise ValueError(self._why_no_rates("accelerations"))
         return self.links[lid].acceleration(self.mechanism.links[lid].points[name])
 
     def _repr_svg_(self) -> str | None:
@@ -231,12 +247,12 @@ class Solution:
         """ω of ``link`` (rad/s, counterclockwise positive)."""
         w = self._link(link).omega
         if w is None:
-            raise ValueError("velocities are not known (the file gives no rates)")
+            raise ValueError(self._why_no_rates("velocities"))
         return w
 
     def alpha(self, link: str | int) -> np.ndarray:
         """α of ``link`` (rad/s², counterclockwise positive)."""
         a = self._link(link).alpha
         if a is None:
-            raise ValueError("accelerations are not known (the file gives no rates)")
+            raise ValueError(self._why_no_rates("accelerations"))
         return a
