@@ -142,3 +142,13 @@ def test_a_slot_normal_is_named_in_words(capsys: pytest.CaptureFixture[str],
     assert main(["solve", str(f)]) == 0
     out = capsys.readouterr().out
     assert "the slot's normal at B" in out and "n(B)" not in out
+
+
+@pytest.mark.parametrize(("name", "doc"), [("quick_return", "quick_return.toml"),
+                                           ("inline_engine", "slider_crank.toml")])
+def test_the_tutorials_files_ship_with_graphkin(name: str, doc: str) -> None:
+    """Issue 31: `graphkin example NAME` gives the tutorial's own file (no drift)."""
+    tutorial = Path(__file__).parents[1] / "docs" / "tutorial" / doc
+    assert graphkin.examples.text(name) == tutorial.read_text(encoding="utf-8")
+    assert name in graphkin.examples.names()
+    assert getattr(graphkin.examples, name)().title == graphkin.load(tutorial).title
