@@ -164,3 +164,33 @@ def test_commands_write_beside_the_user_and_say_so(tmp_path: Path,
     assert capsys.readouterr().out.lstrip().startswith("<?xml")
     assert main(["draw", str(src), "-d", "posture", "-o", "-", "--format", "pdf"]) == 2
     assert "not PDF" in capsys.readouterr().err
+
+
+def test_far_geometry_is_cut_to_the_panel(tmp_path: Path) -> None:
+    """A circle 10 000 in across and a line 1000 in long: TikZ stops at 226 in, so they are
+    written as the part near the panel; the visible chord of the circle stays on it."""
+    from graphkin.render.scale import Scale
+    from graphkin.render.scene import Item, Panel
+    from graphkin.render.sheet import Sheet
+    from graphkin.render.tikz import sheet_tikz
+
+    p = Panel("posture", "posture", "", "in", scale=Scale(1.0, "in", 1.0, "in"),
+              view=(0.0, 0.0, 4.0, 3.0), origin=(0.0, 0.0))
+    g = p.group("far", 1.0)
+    r = 5000.0  # centre 5000 in below the panel's middle: the circle crosses it at y = 1.5
+    g.items.append(Item("circle", np.array([[2.0, 1.5 - r]]), "arc", radius=r))
+    g.items.append(Item("path", np.array([[-1000.0, 1.0], [1000.0, 2.0]]), "aux-line"))
+    g.items.append(Item("marker", np.array([[900.0, 900.0]]), "point"))
+    g.items.append(Item("polygon", np.array([[-500.0, -500.0], [500.0, -500.0], [0.0, 2.0]]),
+                        "plate"))
+    tex = sheet_tikz(Sheet([p], (4.0, 3.0), "", "posture"))
+    nums = [float(v) for v in re.findall(r"-?\d+\.?\d*", tex.split("begin{tikzpicture}")[1])]
+    assert max(abs(v) for v in nums) < 1000  # nothing near TikZ's limit (16383 pt)
+    # every vertex of the circle's polyline lies on the circle, within 1e-6 in
+    first = [line for line in tex.splitlines() if line.startswith("\\path[draw")][0]
+    pts = np.array([[float(a), float(b)] for a, b in
+                    re.findall(r"\((-?[\d.]+),(-?[\d.]+)\)", first)])
+    assert len(pts) >= 2
+    assert np.allclose(np.hypot(pts[:, 0] - 2.0, pts[:, 1] - (1.5 - r)), r, atol=1e-4)
+    if PDFLATEX is not None:
+        _compile(tex, tmp_path)

@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.render.latex import to_latex
-from graphkin.render.scene import Group, Item, Panel
+from graphkin.render.scene import Group, Item, Panel, clip_segment
 from graphkin.render.style import HIGHLIGHT, STYLES
 
 __all__ = ["sheet_tikz", "drawing_tikz", "PREAMBLE"]
@@ -143,6 +143,87 @@ def text_node(x: float, y: float, text: str, size: float, *, color: Any = "#0000
     return f"\\node[{', '.join(opts)}] at {_xy((x, y))} {{{body}}};"
 
 
+FAR = 100.0
+"""Inches from the panel beyond which a line is cut and a circle drawn as its visible part:
+TikZ's dimensions stop at 16383 pt (226 in), and a nearly straight path's circle of
+curvature can be miles across."""
+
+
+def _box(p: Panel) -> tuple[float, float, float, float]:
+    """The panel on paper, an inch larger all round (TikZ clips the rest exactly)."""
+    x0, y0 = p.origin
+    w, h = p.size
+    return x0 - 1.0, y0 - 1.0, x0 + w + 1.0, y0 + h + 1.0
+
+
+def _runs(pts: np.ndarray, box: tuple[float, float, float, float]) -> list[np.ndarray]:
+    """A polyline cut to ``box``: the runs of it inside, each a polyline."""
+    runs: list[np.ndarray] = []
+    cur: list[np.ndarray] = []
+    for a, b in zip(pts[:-1], pts[1:]):
+        seg = clip_segment(a, b, box)
+        if seg is None:
+            if cur:
+                runs.append(np.array(cur))
+            cur = []
+            continue
+        s0, s1 = seg
+        if cur and np.allclose(cur[-1], s0, atol=1e-9):
+            cur.append(s1)
+        else:
+            if cur:
+                runs.append(np.array(cur))
+            cur = [s0, s1]
+    if cur:
+        runs.append(np.array(cur))
+    return runs
+
+
+def _visible_arc(c: np.ndarray, r: float, t1: float, t2: float,
+                 box: tuple[float, float, float, float]) -> list[np.ndarray]:
+    """The part of a huge circle (or arc ``t1..t2``, degrees) near ``box``, as polylines.
+
+    From a center outside the box, the box is seen within less than a half
+    turn: only the angles between its corners' directions can reach it.  The
+    polyline's chords stay within 0.1 µin of the circle.
+    """
+    x0, y0, x1, y1 = box
+    if x0 <= c[0] <= x1 and y0 <= c[1] <= y1:
+        return []  # a circle larger than the box about a point inside: none of it shows
+    corners = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]]) - c
+    mid = math.degrees(math.atan2((y0 + y1) / 2 - c[1], (x0 + x1) / 2 - c[0]))
+    ang = np.degrees(np.arctan2(corners[:, 1], corners[:, 0]))
+    ang = mid + (ang - mid + 180.0) % 360.0 - 180.0
+    lo, hi = float(ang.min()), float(ang.max())
+    if t2 - t1 < 360.0:  # an arc: its part within [lo, hi], the arc shifted by whole turns
+        shift = 360.0 * math.floor((lo - t1) / 360.0)
+        a, b = t1 + shift, t2 + shift
+        if b < lo:
+            a, b = a + 360.0, b + 360.0
+        lo, hi = max(lo, a), min(hi, b)
+        if lo >= hi:
+            return []
+    step = math.degrees(2.0 * math.sqrt(2.0 * 1e-7 / r))
+    n = min(max(int(math.ceil((hi - lo) / step)), 2), 20000)
+    t = np.radians(np.linspace(lo, hi, n + 1))
+    pts = c + r * np.stack([np.cos(t), np.sin(t)], axis=-1)
+    return _runs(pts, box)
+
+
+def _flat(p: Panel) -> Panel:
+    """A panel whose data coordinates are the paper's (inches from the sheet's corner)."""
+    from graphkin.render.scale import Scale
+
+    w, h = p.size
+    x0, y0 = p.origin
+    return Panel(p.name, p.plane, "", "in", scale=Scale(1.0, "in", 1.0, "in"),
+                 view=(0.0, 0.0, x0 + w, y0 + h), origin=(0.0, 0.0))
+
+
+def _polyline(opts: list[str], pts: np.ndarray) -> str:
+    return f"\\path[{', '.join(opts)}] " + " -- ".join(_xy(q) for q in pts) + ";"
+
+
 def _item(it: Item, p: Panel, highlight: bool) -> list[str]:
     """The TikZ commands of one item of a panel (paper coordinates, inches)."""
     st = _style(it, highlight)
@@ -152,11 +233,24 @@ def _item(it: Item, p: Panel, highlight: bool) -> list[str]:
     if not np.all(np.isfinite(paper)):
         return []
     out: list[str] = []
+    if it.kind in ("marker", "text", "arrow") and np.abs(paper).max() > FAR:
+        return []  # far off the panel: clipped away in the SVG too
+    if it.kind == "polygon" and np.abs(paper).max() > FAR:
+        from shapely.geometry import Polygon, box
+
+        cut = Polygon(paper).intersection(box(*_box(p)))
+        parts = getattr(cut, "geoms", [cut])
+        return [line for part in parts if isinstance(part, Polygon) and not part.is_empty
+                for line in _item(Item("polygon", np.asarray(part.exterior.coords)[:-1],
+                                       it.style, overrides=it.overrides), _flat(p), highlight)]
     if it.kind == "path":
         if len(paper) < 2:
             return []
         opts = _stroke(st.get("color", "k"), float(st.get("lw", 1.0)), st.get("ls", "-"))
-        out.append(f"\\path[{', '.join(opts)}] " + " -- ".join(_xy(q) for q in paper) + ";")
+        if np.abs(paper).max() > FAR:
+            out += [_polyline(opts, run) for run in _runs(paper, _box(p))]
+        else:
+            out.append(_polyline(opts, paper))
     elif it.kind == "marker":
         ms = float(st.get("ms", 3.0))
         mew = float(st.get("mew", 0.5))
@@ -195,7 +289,13 @@ def _item(it: Item, p: Panel, highlight: bool) -> list[str]:
         r = it.radius / k
         opts = _stroke(st.get("color", "k"), float(st.get("lw", 0.5)), st.get("ls", "-"))
         c = paper[0]
-        if it.kind == "circle":
+        if r > FAR or np.abs(c).max() > FAR:
+            t1, t2 = (0.0, 360.0) if it.kind == "circle" else (float(it.theta1),
+                                                                 float(it.theta2))
+            while t2 <= t1:
+                t2 += 360.0
+            out += [_polyline(opts, run) for run in _visible_arc(c, r, t1, t2, _box(p))]
+        elif it.kind == "circle":
             out.append(f"\\path[{', '.join(opts)}] {_xy(c)} circle[radius={_f(r)}];")
         else:
             t1, t2 = float(it.theta1), float(it.theta2)
