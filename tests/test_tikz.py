@@ -194,3 +194,17 @@ def test_far_geometry_is_cut_to_the_panel(tmp_path: Path) -> None:
     assert np.allclose(np.hypot(pts[:, 0] - 2.0, pts[:, 1] - (1.5 - r)), r, atol=1e-4)
     if PDFLATEX is not None:
         _compile(tex, tmp_path)
+
+
+def test_sweep_and_check_say_what_they_wrote(tmp_path: Path, examples: Path,
+                                             capsys: pytest.CaptureFixture[str]) -> None:
+    csv = tmp_path / "cycle.csv"
+    assert main(["sweep", str(examples / "ex3_1_fourbar.toml"), "--count", "8",
+                 "--csv", str(csv)]) == 0
+    assert csv.is_file() and f"wrote {csv}" in capsys.readouterr().err
+    answers = tmp_path / "a.toml"
+    answers.write_text('omega3 = "25.4 rad/s ccw"\n', encoding="utf-8")  # Ex. 3.1: 25.38
+    marks = tmp_path / "marks.csv"
+    assert main(["check", str(examples / "ex3_1_fourbar.toml"), str(answers), "--csv",
+                 str(marks)]) == 0
+    assert marks.is_file() and f"wrote {marks}" in capsys.readouterr().err
