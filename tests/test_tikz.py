@@ -164,6 +164,10 @@ def test_commands_write_beside_the_user_and_say_so(tmp_path: Path,
     assert capsys.readouterr().out.lstrip().startswith("<?xml")
     assert main(["draw", str(src), "-d", "posture", "-o", "-", "--format", "pdf"]) == 2
     assert "not PDF" in capsys.readouterr().err
+    # a name without a suffix says nothing of its format: refused, as before
+    assert main(["draw", str(src), "-d", "posture", "-o", "noext"]) == 2
+    assert "cannot tell the format" in capsys.readouterr().err
+    assert not (tmp_path / "noext").exists()
 
 
 def test_far_geometry_is_cut_to_the_panel(tmp_path: Path) -> None:

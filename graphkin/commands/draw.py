@@ -79,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
             raise InputError(f"--format {fmt} does not match the suffix of {out.name!r}",
                              key="--format")
         fmt = given
-    fmt = fmt or "svg"
+    fmt = fmt or ("svg" if to_stdout else "")
     dxf = fmt == "dxf"
     if fmt not in (*FORMATS, "dxf", "tikz"):
         raise InputError(f"cannot tell the format from {out.name!r}; use "
