@@ -212,3 +212,32 @@ def test_sweep_and_check_say_what_they_wrote(tmp_path: Path, examples: Path,
     assert main(["check", str(examples / "ex3_1_fourbar.toml"), str(answers), "--csv",
                  str(marks)]) == 0
     assert marks.is_file() and f"wrote {marks}" in capsys.readouterr().err
+
+
+SPEC = Path(__file__).parents[2] / "shared" / "spec"
+ALL = pytest.mark.skipif(
+    PDFLATEX is None or not __import__("os").environ.get("GRAPHKIN_TIKZ_ALL"),
+    reason="every spec example's TikZ (about 3 min): set GRAPHKIN_TIKZ_ALL=1")
+
+
+@ALL
+@pytest.mark.parametrize("path", sorted(p for d in ("examples", "forces-examples")
+                                        for p in (SPEC / d).glob("*.toml")
+                                        if p.name != "expected.toml"),
+                         ids=lambda p: p.stem)
+def test_every_diagram_of_every_spec_example(path: Path, tmp_path: Path) -> None:
+    """The acceptance check of issue 31, opt-in: each diagram the example has, compiled."""
+    from graphkin.render.sources import DiagramUnavailable
+
+    sol = graphkin.load(path).solve()
+    drawn = 0
+    for k, diagram in enumerate(("posture", "velocity", "acceleration", "centers",
+                                 "curvature", "forces")):
+        try:
+            d = draw(sol, diagram)
+        except DiagramUnavailable:
+            continue
+        (tmp_path / str(k)).mkdir()
+        _same_geometry(d, tmp_path / str(k))
+        drawn += 1
+    assert drawn >= 1
