@@ -217,7 +217,7 @@ def test_sweep_and_check_say_what_they_wrote(tmp_path: Path, examples: Path,
 SPEC = Path(__file__).parents[2] / "shared" / "spec"
 ALL = pytest.mark.skipif(
     PDFLATEX is None or not __import__("os").environ.get("GRAPHKIN_TIKZ_ALL"),
-    reason="every spec example's TikZ (about 3 min): set GRAPHKIN_TIKZ_ALL=1")
+    reason="every spec example's TikZ (about a minute): set GRAPHKIN_TIKZ_ALL=1")
 
 
 @ALL
