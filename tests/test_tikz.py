@@ -71,6 +71,37 @@ def _pdf_vertices(pdf: bytes) -> np.ndarray:
     return np.array([(float(x), float(y)) for x, y in pts])
 
 
+def _svg_markers(svg: str) -> np.ndarray:
+    """Centres of the SVG's markers (pins, points: ``<use x= y=>``), bp from the bottom left."""
+    height = float(re.search(r'height="([\d.]+)pt"', svg).group(1))  # type: ignore[union-attr]
+    return np.array([(float(x), height - float(y)) for x, y in
+                     re.findall(r'<use xlink:href="#[^"]+" x="(-?[\d.]+)" y="(-?[\d.]+)"', svg)])
+
+
+def _pdf_markers(pdf: bytes) -> np.ndarray:
+    """Centres of the PDF's closed circles (a move and four curves) and rectangles (``re``)."""
+    text = pdf.decode("latin-1")
+    num = r"(-?[\d.]+)"
+    out = []
+    for m in re.finditer(r"-?[\d.]+ -?[\d.]+ m \n((?:(?:-?[\d.]+ ){6}c \n){4})", text):
+        ends = [line.split()[4:6] for line in m.group(1).strip().split("\n")]
+        out.append(np.mean(np.array(ends, dtype=float), axis=0))
+    for x, y, w, h in re.findall(rf"{num} {num} {num} {num} re", text):
+        out.append(np.array([float(x) + float(w) / 2, float(y) + float(h) / 2]))
+    return np.array(out)
+
+
+def _nearest(want: np.ndarray, got: np.ndarray) -> float:
+    """The largest distance from a point of ``want`` to the nearest of ``got`` (bp)."""
+    worst = 0.0
+    for k in range(0, len(want), 500):  # in blocks: memory stays small
+        block = want[k:k + 500]
+        dist = np.min(np.hypot(block[:, None, 0] - got[None, :, 0],
+                               block[:, None, 1] - got[None, :, 1]), axis=1)
+        worst = max(worst, float(dist.max()))
+    return worst
+
+
 def _compile(tex: str, tmp: Path) -> bytes:
     src = tmp / "fig.tex"
     src.write_text("\\pdfcompresslevel=0 \\pdfobjcompresslevel=0\n" + tex, encoding="utf-8")
@@ -93,14 +124,15 @@ def _same_geometry(d: object, tmp: Path) -> None:
     inside = (want[:, 0] > 1) & (want[:, 0] < w - 1) & (want[:, 1] > 1) & (want[:, 1] < h - 1)
     want = want[inside]
     assert len(want) > 50
-    # nearest PDF vertex of every SVG vertex, in blocks (memory stays small)
-    worst = 0.0
-    for k in range(0, len(want), 500):
-        block = want[k:k + 500]
-        dist = np.min(np.hypot(block[:, None, 0] - got[None, :, 0],
-                               block[:, None, 1] - got[None, :, 1]), axis=1)
-        worst = max(worst, float(dist.max()))
+    worst = _nearest(want, got)
     assert worst < 0.1 * MM, f"a vertex of the SVG is {worst / MM:.3f} mm from the PDF's"
+    # every pin and point: its marker's centre where the SVG puts it
+    marks = _svg_markers(svg)
+    marks = marks[(marks[:, 0] > 1) & (marks[:, 0] < w - 1) & (marks[:, 1] > 1)
+                  & (marks[:, 1] < h - 1)]
+    assert len(marks) >= 3
+    worst = _nearest(marks, _pdf_markers(pdf))
+    assert worst < 0.1 * MM, f"a marker of the SVG is {worst / MM:.3f} mm from the PDF's"
 
 
 @needs_tex
