@@ -23,7 +23,7 @@ from graphkin.check.answers import CheckTolerance, Given
 from graphkin.check.exact import Exact, wrap180
 from graphkin.text import fmt as text_fmt
 
-__all__ = ["Comparison", "compare", "show_given", "show_exact", "fmt"]
+__all__ = ["Comparison", "compare", "show_given", "show_exact", "fmt", "direction_text"]
 
 
 @dataclass(frozen=True)
@@ -56,6 +56,25 @@ def _pct(x: float) -> str:
     if not abs(v) < 1e6:  # an answer of 1e308: no '+inf %'
         return f"over {'-' if x < 0 else '+'}1e+06 %"
     return f"{v if abs(v) >= 0.005 else 0.0:+.2f} %"
+
+
+def direction_text(deg: float, digits: int = 2) -> str:
+    """A direction in degrees as printed: in (-180, 180], never ``-180.00°`` nor ``-0.00°``.
+
+    A direction a hair below the half turn rounds to the half turn and is
+    printed as the given ``180 deg`` would be.
+
+    Examples
+    --------
+    >>> direction_text(-179.9999), direction_text(180.0), direction_text(-1e-9, 1)
+    ('180.00°', '180.00°', '0.0°')
+    >>> direction_text(-90.0), direction_text(540.0)
+    ('-90.00°', '180.00°')
+    """
+    d = round(wrap180(deg), digits)
+    if d <= -180.0:
+        d += 360.0
+    return f"{d + 0.0:.{digits}f}°"
 
 
 def _deg(d: float) -> str:
@@ -164,7 +183,11 @@ def _scalar(given: Given, exact: Exact, tol: CheckTolerance, floor: float) -> Co
         rule = "zero within round-off" if ok else "not zero"
     if signed and abs(g) > floor and abs(e) > floor and (g > 0) != (e > 0):
         text += ", sense"
-        rule = "sense reversed"
+        # the sense alone, or the sense and the size too (never "sense reversed" alone
+        # for an answer whose magnitude is wrong as well)
+        size_ok = abs(abs(g) - abs(e)) <= tol.relative * abs(e) + floor
+        rule = "sense reversed" if size_ok else \
+            f"sense reversed and size outside {tol.relative * 100:g} %"
     elif not signed and given.key.shape == "scalar":
         rule += " (magnitude only)"
     return Comparison(ok, text, rule)
@@ -256,7 +279,7 @@ def show_exact(given: Given, exact: Exact, *, plain: bool = False) -> str:
     f = given.factor or 1.0
     if shape == "angle":
         assert exact.value is not None
-        return f"{wrap180(exact.value):.2f}°" if given.unit == "deg" else \
+        return direction_text(exact.value) if given.unit == "deg" else \
             f"{fmt(exact.value / f)} {given.unit}"
     if shape == "scalar":
         v = float(exact.value or 0.0)
@@ -268,12 +291,12 @@ def show_exact(given: Given, exact: Exact, *, plain: bool = False) -> str:
     if shape == "point":
         assert exact.xy is not None
         if exact.ideal:
-            return f"∞ at {wrap180(exact.direction or 0.0):.1f}°"
+            return f"∞ at {direction_text(exact.direction or 0.0, 1)}"
         return f"({fmt(exact.xy[0] / f)}, {fmt(exact.xy[1] / f)}) {given.unit}"
     if exact.xy is None:
         return f"{fmt(float(exact.value or 0.0) / f)} {given.unit}"
     text = f"{fmt(exact.magnitude / f)} {given.unit}"
     d = exact.direction
     if d is not None:
-        text += f" at {d:.2f}°"
+        text += f" at {direction_text(d)}"
     return text

@@ -7,7 +7,9 @@ brings the answer within tolerance is named:
 * the sense reversed (an angular rate, a direction, a difference the wrong way);
 * a unit factor (12 in/ft, 1000 mm/m, 2π/60 rev/min to rad/s, 25.4 mm/in,
   0.3048 m/ft ...);
-* a velocity difference given for an absolute velocity, or the other way;
+* a velocity difference given for an absolute velocity, or the other way; the
+  angular velocity (or acceleration) of a link relative to another given for
+  its absolute one (ω6/4 = ω6 − ω4 for ω6);
 * a velocity or acceleration image flipped over (the mirror image of the
   link's shape, Sec. 3.5 and the footnote to Example 4.2);
 * a normal component drawn away from the center instead of toward it
@@ -317,8 +319,37 @@ class Diagnoser:
         f = self.sol.velocity if kind == "V" else self.sol.acceleration
         return np.asarray(f(p, link) if link else f(p), dtype=float)
 
+    def _relative_rate(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
+        """ω (or α) of a link relative to another, ω_i/j = ω_i − ω_j, given for the absolute one.
+
+        The angular velocity of link 6 relative to link 4 (Sec. 3.6, 3.13: the
+        rates read off an inversion, or off a joint angle θ6/4) differs from
+        ω6 by the rate of the link it is measured from.
+        """
+        if key.kind not in ("omega", "alpha") or len(key.args) != 1:
+            return
+        (i,) = key.args
+        rate = self.sol.omega if key.kind == "omega" else self.sol.alpha
+        sym = "ω" if key.kind == "omega" else "α"
+        floor = self.ev.floor(key.quantity)
+        try:
+            wi = float(rate(i))
+            for j in self.mech.links:
+                if j in (i, FRAME):
+                    continue
+                wj = float(rate(j))
+                if not math.isfinite(wj) or abs(wj) <= floor:
+                    continue  # relative to a link at rest is the absolute value
+                yield (Mistake("relative", f"{sym}{i}/{j} = {sym}{i} − {sym}{j} (of link {i} "
+                                           f"relative to link {j}) given for the absolute "
+                                           f"{sym}{i}", f"relative-{key.kind}"),
+                       Exact(wi - wj))
+        except (GraphkinError, ValueError, TypeError, KeyError):
+            return
+
     def _relative(self, key: Key) -> Iterator[tuple[Mistake, Exact]]:
         """A difference given for an absolute value, or the other way."""
+        yield from self._relative_rate(key)
         if key.kind not in ("V", "A"):
             return
         word = "velocity" if key.kind == "V" else "acceleration"

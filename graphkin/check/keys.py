@@ -254,6 +254,15 @@ def suggest(word: str, valid: Any) -> str:
     --------
     >>> suggest("titel", ["title", "student"])
     " (did you mean 'title'?)"
+
+    A key that differs only in case is the one meant (``V_e`` is V_E, not V_P):
+
+    >>> suggest("V_e", ["V_P", "V_E", "A_E"])
+    " (did you mean 'V_E'?)"
     """
-    near = difflib.get_close_matches(word, list(valid), n=1, cutoff=0.6)
+    valid = list(valid)
+    same = [v for v in valid if v.casefold() == word.casefold()]
+    if same:
+        return f" (did you mean {same[0]!r}?)"
+    near = difflib.get_close_matches(word, valid, n=1, cutoff=0.6)
     return f" (did you mean {near[0]!r}?)" if near else ""

@@ -25,7 +25,9 @@ DESCRIPTION = about(__doc__)
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Register the sub-command."""
     p = command(sub, "animate", help=HELP, description=DESCRIPTION)
-    p.add_argument("-o", "--output", default=None, help="the HTML file to write")
+    p.add_argument("-o", "--output", default=None,
+                   help="the HTML file to write (default, when nothing else is asked for: "
+                        "FILE-STEM-cycle.html in the current directory)")
     p.add_argument("--count", type=int, default=360, help="number of postures (default 360)")
     p.add_argument("--from", dest="start", type=float, default=None, metavar="DRIVE",
                    help="first drive value: degrees, or a slider's travel (default: the "
@@ -53,8 +55,9 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(f"the number of postures must be 2 to 20000, not {args.count}",
                          key="--count")
     if args.output is None and args.frames is None and args.gif is None:
-        raise InputError("nothing to write: give -o OUT.html, --frames DIR and/or --gif FILE",
-                         key="--output")
+        from pathlib import Path  # the page beside the user, named for the file
+
+        args.output = f"{Path(args.file).stem}-cycle.html"
     from graphkin.files import check_output
 
     if args.output is not None:

@@ -151,6 +151,7 @@ def run(args: argparse.Namespace) -> int:
             except OSError as exc:
                 raise InputError(f"cannot write the marks: {exc.strerror or exc}",
                                  file=args.csv) from None
+            print(f"wrote {args.csv}", file=sys.stderr)
     return status
 
 

@@ -1,4 +1,4 @@
-"""``graphkin draw FILE --diagram D -o OUT``: draw a construction to scale (SVG, PDF or PNG)."""
+"""``graphkin draw FILE --diagram D -o OUT``: draw a construction to scale (SVG, PDF, PNG, TikZ)."""
 
 from __future__ import annotations
 
@@ -8,6 +8,9 @@ import sys
 from graphkin.commands._args import DPI_RANGE, bounded_float, bounded_int, command
 
 __all__ = ["add_parser", "run", "DIAGRAM_CHOICES"]
+
+FORMAT_CHOICES = ("svg", "pdf", "png", "tikz", "dxf")
+"""What --format accepts; ``tikz`` is written to a ``.tex`` file."""
 
 DIAGRAM_CHOICES = ("posture", "velocity", "acceleration", "centers", "curvature", "inflection",
                    "bobillier", "hartmann", "cubic", "forces", "gears", "all")
@@ -20,7 +23,10 @@ DESCRIPTION = ("Draw the mechanism and its construction to a stated scale: the p
                "(-d forces, Fig. 11.5), or all of them on one sheet, with "
                "a results table comparing the drawing with the analytic solution. A gear "
                "file (docs/formats/gears.md) draws the pair in mesh (-d gears, Figs. 7.8-7.9, "
-               "7.18, 7.21). The output's suffix chooses the format (.svg, .pdf, .png).")
+               "7.18, 7.21). The output's suffix chooses the format (.svg, .pdf, .png, .tex: "
+               "a TikZ picture that compiles with pdflatex). Without -o, the drawing is "
+               "written to FILE-STEM-DIAGRAM.svg in the current directory; -o - writes the SVG "
+               "(or, with --format tikz, the TikZ) to standard output.")
 
 
 def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
@@ -28,10 +34,13 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p = command(sub, "draw", help=HELP, description=DESCRIPTION)
     p.add_argument("--diagram", "-d", default="all", choices=DIAGRAM_CHOICES,
                    help="which diagram (default: all)")
-    p.add_argument("-o", "--output", required=True,
-                   help="output file: .svg, .pdf, .png, or .dxf (a CAD drawing of the posture, "
-                        "velocity or acceleration construction, e.g. a started drawing to hand "
-                        "out with --upto)")
+    p.add_argument("-o", "--output", default=None,
+                   help="output file: .svg, .pdf, .png, .tex (TikZ, standalone for pdflatex), "
+                        "or .dxf (a CAD drawing of the posture, velocity or acceleration "
+                        "construction, e.g. a started drawing to hand out with --upto); "
+                        "- for standard output (default: FILE-STEM-DIAGRAM.svg here)")
+    p.add_argument("--format", choices=(*FORMAT_CHOICES,), default=None,
+                   help="the format when the suffix does not say it (with -o - or no -o)")
     p.add_argument("--upto", type=bounded_int(0, 100_000), default=None, metavar="K",
                    help="draw the construction only up to step K (0-based)")
     p.add_argument("--link", default=None, metavar="K",
@@ -52,18 +61,37 @@ def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     import graphkin
-    from graphkin.errors import InputError
+    from graphkin.errors import GraphkinError, InputError
     from graphkin.files import check_output
     from graphkin.render import DiagramUnavailable, draw, save
     from graphkin.render.svg import FORMATS
 
+    fmt = args.format
+    if args.output is None:  # FILE-STEM-DIAGRAM.svg in the current directory
+        suffix = {"tikz": "tex"}.get(fmt or "svg", fmt or "svg")
+        args.output = f"{Path(args.file).stem}-{args.diagram}.{suffix}"
+    to_stdout = args.output == "-"
     check_output(args.output, [args.file], "--output")
     out = Path(args.output)
-    dxf = out.suffix.lower() == ".dxf"
-    if out.suffix.lower().lstrip(".") not in FORMATS and not dxf:
+    if not to_stdout:
+        given = out.suffix.lower().lstrip(".")
+        given = "tikz" if given == "tex" else given
+        if fmt is not None and given != fmt:
+            raise InputError(f"--format {fmt} does not match the suffix of {out.name!r}",
+                             key="--format")
+        fmt = given
+    fmt = fmt or ("svg" if to_stdout else "")
+    dxf = fmt == "dxf"
+    if fmt not in (*FORMATS, "dxf", "tikz"):
         raise InputError(f"cannot tell the format from {out.name!r}; use "
-                         + ", ".join("." + f for f in (*FORMATS, "dxf")), key="--output")
+                         + ", ".join("." + f for f in (*FORMATS, "tex", "dxf")), key="--output")
+    if to_stdout and fmt in ("pdf", "png", "dxf"):
+        raise InputError(f"-o - writes text (SVG or TikZ), not {fmt.upper()}; name a file",
+                         key="--output")
     if _is_gear_file(args.file, args.diagram):
+        if to_stdout or fmt == "tikz":
+            raise InputError("a gear drawing is written to a .svg, .pdf or .png file",
+                             key="--output", file=args.file)
         return _draw_gears(args, out)
     mech = graphkin.load(args.file)
     sol = mech.solve()
@@ -86,7 +114,24 @@ def run(args: argparse.Namespace) -> int:
         raise InputError(str(exc), key="--diagram", file=args.file) from None
     assert d.figure is not None
     try:
-        save(d.figure, out, dpi=args.dpi)
+        if fmt == "tikz":
+            from graphkin.render.tikz import drawing_tikz
+
+            try:
+                text = drawing_tikz(d)
+            except GraphkinError as exc:
+                raise InputError(str(exc), key="--output") from None
+            if to_stdout:
+                sys.stdout.write(text)
+                return 0
+            out.write_text(text, encoding="utf-8")
+        elif to_stdout:
+            from graphkin.render.svg import to_svg
+
+            sys.stdout.write(to_svg(d.figure))
+            return 0
+        else:
+            save(d.figure, out, dpi=args.dpi)
     except OSError as exc:
         raise InputError(f"cannot write {out}: {exc.strerror or exc}", key="--output") from None
     print(f"wrote {out}", file=sys.stderr)

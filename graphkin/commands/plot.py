@@ -29,8 +29,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p = command(sub, "plot", help=HELP, description=DESCRIPTION)
     p.add_argument("--what", default="angle,omega,alpha", metavar="ITEMS",
                    help="comma-separated items (default angle,omega,alpha)")
-    p.add_argument("-o", "--output", required=True, metavar="OUT.svg",
-                   help="the drawing: .svg, .pdf or .png")
+    p.add_argument("-o", "--output", default=None, metavar="OUT.svg",
+                   help="the drawing: .svg, .pdf or .png (default: FILE-STEM-plot.svg in the "
+                        "current directory)")
     p.add_argument("--from", dest="start", type=finite_float, default=None, metavar="DEG",
                    help="first drive value (default: the file's)")
     p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",
@@ -49,6 +50,10 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.progress import bar
     from graphkin.render.plots import parse_what, save_figure, sweep_figure
 
+    if args.output is None:  # beside the user, named for the file (as draw does)
+        from pathlib import Path
+
+        args.output = f"{Path(args.file).stem}-plot.svg"
     check_output(args.output, [args.file], "--output")
     try:
         items = parse_what(args.what)
@@ -76,6 +81,7 @@ def run(args: argparse.Namespace) -> int:
                              file=args.output) from None
     for line in sw.report():
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
+    print(f"wrote {args.output}", file=sys.stderr)
     return 0
 
 

@@ -43,9 +43,10 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.render import DiagramUnavailable
     from graphkin.render.teach import steps_html, write_frames
 
-    if args.output is None and args.frames is None:
-        raise InputError("nothing to write: give -o OUT.html and/or --frames DIR",
-                         key="--output")
+    if args.output is None and args.frames is None:  # the page beside the user
+        from pathlib import Path
+
+        args.output = f"{Path(args.file).stem}-steps-{args.diagram}.html"
     if args.output is not None:
         from graphkin.files import check_output
 

@@ -113,6 +113,8 @@ def run(args: argparse.Namespace) -> int:
             except OSError as exc:
                 raise InputError(f"cannot write the CSV: {exc.strerror}", key="csv",
                                  file=args.csv) from None
+    if args.csv != "-":
+        print(f"wrote {args.csv}", file=sys.stderr)
     for line in sw.report(events=args.singular):
         print(f"graphkin: {args.file}: {line}", file=sys.stderr)
     if args.singular:

@@ -19,7 +19,7 @@ prints it, to copy and edit).
 References
 ----------
 Uicker, Pennock & Shigley, 5th ed.: Examples 2.6, 3.1, 3.2, 3.3, 3.9, 4.4, 4.7,
-4.11 and 5.4.
+4.11 and 5.4; Sec. 1.10 (the crank-shaper quick-return).
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ if TYPE_CHECKING:
 
 __all__ = ["names", "text", "load", "fourbar", "crank_rocker", "slider_crank",
            "inverted_slider_crank", "coriolis_block", "fivebar", "cam_follower", "rapsons_slide",
-           "rolling_wheel", "planetary"]
+           "rolling_wheel", "planetary", "quick_return", "inline_engine"]
 
 
 def _data():  # type: ignore[no-untyped-def]
@@ -114,3 +114,13 @@ def rolling_wheel() -> Mechanism:
 def planetary() -> Mechanism:
     """A planet gear rolling outside a fixed sun, carried by an arm."""
     return load("planetary")
+
+
+def quick_return() -> Mechanism:
+    """The crank-shaper quick-return of Sec. 1.10 (the tutorial's): block 3 as a pin in a slot."""
+    return load("quick_return")
+
+
+def inline_engine() -> Mechanism:
+    """An in-line slider-crank at 1800 rev/min: crank 2 in, rod 8 in (the tutorial's)."""
+    return load("inline_engine")

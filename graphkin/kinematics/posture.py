@@ -146,9 +146,12 @@ class _Builder:
 
     def _fail(self, step: Step) -> ConstructionError:
         from graphkin.construction.protocol import _failure
+        from graphkin.kinematics.assembly_words import assembly_words
 
-        exc = _failure(step, [self.env[i] for i in step.inputs])
-        return AssemblyError(f"cannot assemble at this drive: {exc}", step=step.label,
+        args = [self.env[i] for i in step.inputs]
+        exc = _failure(step, args)
+        words = assembly_words(self.mech, step, args)  # which link is short, by how much
+        return AssemblyError(f"cannot assemble at this drive: {words or exc}", step=step.label,
                              objects=getattr(exc, "objects", {}))
 
     def fresh(self, stem: str) -> str:

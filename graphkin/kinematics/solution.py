@@ -204,18 +204,22 @@ class Solution:
         if not mech.has_rates:
             return InputError(f"{what} are not known (the file gives no rates)", key="drive",
                               file=mech.source)
-        why = next((n for n in self.notes if n.startswith("toggle or dead-center")), None)
-        if why is not None:
-            return InputError(f"{what} are not known at this posture: it is a {why}",
-                              key="drive", file=mech.source)
-        return InputError(f"{what} are not known at this posture (the rates could not be "
-                          "found here)", key="drive", file=mech.source)
+        why = next((n for n in self.notes if "toggle or dead-center" in n
+                    or "undetermined" in n or "dead" in n), None)
+        return InputError(f"{what} are not defined in this posture although the file gives "
+                          "rates" + (f": {why}" if why else
+                                     " (a toggle or dead-center posture, Sec. 3.5)"),
+                          key="drive", file=mech.source)
 
     def _repr_svg_(self) -> str | None:
-        """Jupyter: the solved mechanism drawn inline (matplotlib is imported only here)."""
+        """Jupyter: the solved posture drawn inline, without the table (a fraction of a second).
+
+        Another diagram shows itself the same way: ``sol.draw("velocity")``;
+        the whole sheet is ``sol.draw("all")``.  matplotlib is imported only here.
+        """
         from graphkin.render import repr_svg
 
-        return repr_svg(self)
+        return repr_svg(self, "posture", table=False)
 
     def draw(self, diagram: str = "posture", ax: Any = None, **kw: Any) -> Any:
         """Draw a diagram of this solution; see :func:`graphkin.render.draw`."""

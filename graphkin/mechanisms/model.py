@@ -317,6 +317,19 @@ class Mechanism:
         """True when the file asks for a force analysis (loads or mass properties)."""
         return bool(self.loads) or bool(self.inertia)
 
+    def _repr_svg_(self) -> str | None:
+        """Jupyter: a sketch of the mechanism in the file's posture (its repr is the summary).
+
+        None (Jupyter then shows the one-line repr) when it cannot be assembled.
+        """
+        from graphkin.errors import GraphkinError
+
+        try:
+            sol = self.solve()
+        except GraphkinError:
+            return None
+        return sol._repr_svg_()
+
     def __repr__(self) -> str:
         """A short summary: title, links, pins, pairs, drives (never raises).
 

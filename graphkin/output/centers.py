@@ -8,6 +8,7 @@ Uicker, Pennock & Shigley, 5th ed., Secs. 3.12-3.14.
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import numpy as np
@@ -23,6 +24,24 @@ __all__ = ["instant_centers_json", "instant_centers_text", "is_batch"]
 
 Array = np.ndarray
 
+
+def _line_words(label: str) -> str:
+    """A line of centers as the report names it: ``n(B):I23`` is the slot's normal at B.
+
+    Examples
+    --------
+    >>> print(_line_words("n(B):I23"), "|", _line_words("n(A):I24#3"), "|",
+    ...       _line_words("I12-I23"))
+    the slot's normal at B | the slot's normal at A | I12-I23
+    >>> _line_words("rolling[0]:normal")
+    'the common normal at the rolling contact'
+    """
+    m = re.match(r"^n\((?P<p>[^()]+)\):I[\w-]+(#\d+)?$", label)
+    if m:
+        return f"the slot's normal at {m.group('p')}"
+    if re.match(r"^rolling\[\d+\]:normal(#\d+)?$", label):
+        return "the common normal at the rolling contact"
+    return label.split("#")[0]
 
 def is_batch(sol: Solution) -> bool:
     """Whether ``sol`` holds many postures (a sweep): the reports describe one."""
@@ -124,7 +143,7 @@ def instant_centers_text(sol: Solution, units: OutputUnits | None = None) -> str
                      f"{unit}")
         if c.how is How.KENNEDY:
             by = "Kennedy"
-            extra = "on " + " and ".join(c.lines)
+            extra = "on " + " and ".join(_line_words(x) for x in c.lines)
         elif c.how is How.VELOCITIES:
             by = "velocities"
             extra = "depends on the speed ratio (Sec. 5.4)" if c.speed_dependent else ""

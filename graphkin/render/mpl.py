@@ -153,6 +153,38 @@ class Drawing(dict[str, Artist]):
         except Exception:
             return f"<Drawing at {id(self):#x}>"
 
+    def save(self, path: Any, dpi: float = 150.0) -> Any:
+        """Write the drawing; the suffix chooses the format: ``.svg``, ``.pdf``, ``.png``, ``.tex``.
+
+        ``.tex`` is a TikZ picture that compiles with pdflatex
+        (:mod:`graphkin.render.tikz`).  Returns the path written.
+
+        Raises
+        ------
+        GraphkinError
+            An unknown suffix, a drawing into axes of one's own as TikZ, or a handout
+            page as TikZ.
+        """
+        from pathlib import Path
+
+        from graphkin.render.svg import save
+
+        p = Path(path)
+        if p.suffix.lower() == ".tex":
+            from graphkin.errors import GraphkinError
+            from graphkin.render.tikz import drawing_tikz
+
+            if not self.own_figure:
+                raise GraphkinError("a drawing into axes of your own is saved with its figure "
+                                    "(fig.savefig); TikZ writes a whole sheet")
+            p.write_text(drawing_tikz(self), encoding="utf-8")
+            return p
+        if self.figure is None:
+            from graphkin.errors import GraphkinError
+
+            raise GraphkinError("this drawing has no figure to save")
+        return save(self.figure, p, dpi=dpi)
+
     def _repr_svg_(self) -> str | None:
         """Jupyter: ``sol.draw("velocity")`` shows itself (a figure of your own shows itself)."""
         if not self.own_figure or self.figure is None:

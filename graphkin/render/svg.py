@@ -85,12 +85,14 @@ def save(fig: Any, path: str | os.PathLike[str], dpi: float = 150.0) -> Path:
     return p
 
 
-def repr_svg(obj: Any, diagram: str | None = None) -> str | None:
+def repr_svg(obj: Any, diagram: str | None = None, *, table: bool | None = None
+             ) -> str | None:
     """SVG text of a solved mechanism or a construction, for Jupyter's ``_repr_svg_``.
 
     A solution shows every diagram it has (``all``); a construction is drawn
     by itself when it can be evaluated alone.  Returns None (so that Jupyter
-    falls back to the text repr) instead of raising.
+    falls back to the text repr) instead of raising.  ``table=False`` leaves
+    the results table out (a Solution's own ``_repr_svg_``: its posture only).
 
     Examples
     --------
@@ -105,7 +107,7 @@ def repr_svg(obj: Any, diagram: str | None = None) -> str | None:
     from graphkin.render.mpl import draw
 
     try:
-        d = draw(obj, diagram or _default_diagram(obj), max_inches=3.5)
+        d = draw(obj, diagram or _default_diagram(obj), max_inches=3.5, table=table)
     except (GraphkinError, TypeError, ValueError):
         return None
     assert d.figure is not None

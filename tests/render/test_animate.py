@@ -90,9 +90,12 @@ def test_frames_and_gif_for_slides(tmp_path):
     assert gif[:6] in (b"GIF87a", b"GIF89a")
 
 
-def test_cli_animate_needs_an_output(tmp_path, capsys):
-    assert main(["animate", str(EXAMPLES / "ex3_1_fourbar.toml")]) == 2
-    assert "nothing to write" in capsys.readouterr().err
+def test_cli_animate_without_an_output_writes_beside_the_user(tmp_path, capsys, monkeypatch):
+    """Issue 31: no -o writes FILE-STEM-cycle.html in the current directory and says so."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["animate", str(EXAMPLES / "ex3_1_fourbar.toml"), "--count", "4"]) == 0
+    assert (tmp_path / "ex3_1_fourbar-cycle.html").is_file()
+    assert "wrote ex3_1_fourbar-cycle.html" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("name", ["inverted_slider_crank", "coriolis_block"])

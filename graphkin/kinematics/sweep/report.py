@@ -106,6 +106,50 @@ class Sweep:
     def __len__(self) -> int:
         return len(self.values)
 
+    def __repr__(self) -> str:
+        """A short summary: size, drive range, how many postures assemble, the columns.
+
+        >>> import graphkin
+        >>> graphkin.examples.crank_rocker().sweep(count=8)  # doctest: +ELLIPSIS
+        <Sweep of 'Crank-rocker...': 8 postures, drive 60 to 375, 8 valid, ... columns: drive, ...>
+        """
+        try:
+            cols = list(self.columns)
+            shown = ", ".join(cols[:6]) + (", ..." if len(cols) > 6 else "")
+            d = self.drive_values
+            title = self.mechanism.title or self.mechanism.source
+            return (f"<Sweep of {title!r}: {len(self)} postures, drive {d[0]:g} to {d[-1]:g}, "
+                    f"{int(np.count_nonzero(self.valid))} valid, {len(cols)} columns: {shown}>")
+        except Exception:  # noqa: BLE001 - a repr never raises
+            return f"<Sweep at {id(self):#x}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: a small table, the size, the columns and the first and last postures.
+
+        The values are the CSV's (``docs/formats/sweep-csv.md``); ``sw.columns`` holds all.
+        """
+        import html
+
+        from graphkin.text import fmt
+
+        cols = list(self.columns)
+        n = len(self)
+        rows = list(range(min(n, 3))) + ([-1] if n > 4 else []) + list(range(max(3, n - 2), n))
+        head = "".join(f"<th>{html.escape(c)}</th>" for c in cols)
+        body = []
+        for r in rows:
+            if r < 0:
+                body.append(f"<tr><td colspan='{len(cols)}'>… {n - 5} more …</td></tr>")
+                continue
+            body.append("<tr>" + "".join(
+                f"<td>{html.escape(fmt(float(self.columns[c][r]), 6))}</td>" for c in cols)
+                + "</tr>")
+        title = html.escape(self.mechanism.title or self.mechanism.source)
+        return (f"<div><p><b>Sweep</b> of {title}: {n} postures × {len(cols)} columns, "
+                f"{int(np.count_nonzero(self.valid))} valid ({html.escape(self.method)})</p>"
+                "<div style='overflow-x:auto'><table><thead><tr>" + head + "</tr></thead>"
+                "<tbody>" + "".join(body) + "</tbody></table></div></div>")
+
     @property
     def drive_values(self) -> Array:
         """The drive values as written in the CSV: degrees, or the slider's travel."""
