@@ -108,7 +108,10 @@ def _compile(expr: str, source: str, key: str) -> Callable[[np.ndarray], np.ndar
     try:
         tree = ast.parse(expr, mode="eval")
     except SyntaxError:
-        raise InputError(f"not a formula in x: {expr!r}", key=key, file=source) from None
+        raise InputError(f"not a formula in x: {expr[:60]!r}", key=key, file=source) from None
+    except (RecursionError, MemoryError):
+        raise InputError(f"{expr[:60]!r}: the formula is nested too deep", key=key,
+                         file=source) from None
 
     def ev(node: ast.AST, x: np.ndarray) -> Any:
         if isinstance(node, ast.Expression):
@@ -127,14 +130,20 @@ def _compile(expr: str, source: str, key: str) -> Callable[[np.ndarray], np.ndar
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
                 and node.func.id in _FUNCS and len(node.args) == 1 and not node.keywords:
             return _FUNCS[node.func.id](ev(node.args[0], x))
-        raise InputError(f"{expr!r}: only numbers, x, + - * / **, pi, e and "
+        raise InputError(f"{expr[:60]!r}: only numbers, x, + - * / **, pi, e and "
                          f"{', '.join(_FUNCS)} may be used", key=key, file=source)
 
-    ev(tree, np.array([1.5]))  # refuse what is not allowed before any use
-
     def f(x: np.ndarray) -> np.ndarray:
-        with np.errstate(all="ignore"):
-            return np.asarray(ev(tree, np.asarray(x, dtype=float)), dtype=float)
+        try:
+            with np.errstate(all="ignore"):
+                return np.asarray(ev(tree, np.asarray(x, dtype=float)), dtype=float)
+        except (OverflowError, ZeroDivisionError, RecursionError, MemoryError):
+            # 9**9**9 in floats, 1/0 of constants, a formula nested a thousand deep
+            raise InputError(f"{expr[:60]!r} cannot be evaluated (too large, nested too "
+                             "deep or dividing by zero)", key=key, file=source) from None
+
+    f(np.array([1.5]))  # refuse what is not allowed before any use
+
 
     return f
 

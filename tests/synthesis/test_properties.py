@@ -233,3 +233,16 @@ def test_four_posture_linkage_written_reaches_postures(post: Postures, i: int, k
         sol = graphkin.loads(link.mechanism_toml(j)).solve()
         assert np.abs(sol.position("D") - post.points[j]).max() < 1e-8 * post.scale
         assert np.abs(sol.position("E") - second[j]).max() < 1e-8 * post.scale
+
+
+@pytest.mark.parametrize("expr", ["9**9**9", "1/0", "(" * 2000 + "x" + ")" * 2000,
+                                  "__import__('os')", "x.real", "x if x else 1"])
+def test_a_hostile_function_formula_is_one_line(expr: str) -> None:
+    """A formula that overflows, divides constants by zero, nests deep or reaches beyond
+    arithmetic is refused in one line naming function.expression (never evaluated)."""
+    from graphkin.errors import InputError
+    from graphkin.synthesis.spec import _compile
+
+    with pytest.raises(InputError) as info:
+        _compile(expr, "f.toml", "function.expression")
+    assert info.value.key == "function.expression" and "\n" not in info.value.one_line()
