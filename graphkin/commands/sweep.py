@@ -1,7 +1,8 @@
 """``graphkin sweep FILE [--from DEG] [--to DEG] [--count N] --csv OUT.csv``: whole cycles.
 
 Solve a mechanism at many values of its (first) drive at once, by the same constructions
-as solve, and write one CSV row per posture. Other drives are held at the file's values.
+as solve, and write one CSV row per posture. Other drives are held at the file's values,
+except those that follow the first by a law (follows = {link, ratio, offset}).
 
 The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,

@@ -434,9 +434,13 @@ class _Parser:
         multi = not isinstance(raw, Mapping)
         out: list[Drive] = []
         seen: set[str] = set()
+        laws: list[tuple[int, Mapping[str, Any], str]] = []
         for i, d in enumerate(items):
             key = f"drive[{i}]" if multi else "drive"
             d = self.table(d, key)
+            if "follows" in d:
+                d = self.follower(d, key, i, pins)
+                laws.append((len(out), d["follows"], key))
             if "point" in d:
                 out += self.point_drive(d, key, len(out), seen)
                 continue
@@ -487,10 +491,58 @@ class _Parser:
                                         "a slider drive takes velocity and acceleration")
                 out.append(Drive(len(out), lid, "position", value, rate, rate2, slider=slider,
                                  key=key))
+        for idx, raw, key in laws:
+            out[idx] = self.coupled(out[idx], out[0], raw, key)
         has = [d.rate is not None for d in out]
         if any(has) and not all(has):
             raise self.fail("drive", "give the rate of every drive or of none")
         return out
+
+    def follower(self, d: Mapping[str, Any], key: str, i: int, pins: list[Pin]
+                 ) -> dict[str, Any]:
+        """A drive with ``follows``: checked, with a placeholder value (the law sets it)."""
+        if i == 0:
+            raise self.fail(f"{key}.follows", "the first drive is the swept parameter: it "
+                            "cannot follow another (put the leading drive first)")
+        for bad in ("angle", "position", "omega", "alpha", "velocity", "acceleration",
+                    "point", "x", "y"):
+            if bad in d:
+                raise self.fail(f"{key}.{bad}", "a drive that follows the first gets its value "
+                                f"and its rates from the law: leave out {bad}")
+        self.table(d["follows"], f"{key}.follows")
+        out = dict(d)
+        lid = str(d.get("link"))
+        pinned = any(lid in p.links and FRAME in p.links for p in pins)
+        out["angle" if "relative_to" in d or pinned else "position"] = 0.0
+        return out
+
+    def coupled(self, drive: Drive, leader: Drive, raw: Mapping[str, Any], key: str) -> Drive:
+        """The law ``value = ratio · first + offset`` of a following drive, applied.
+
+        The file writes it in its own units (degrees, lengths): ``θ5 = 3 θ2 + 30°`` is
+        ``follows = { link = 2, ratio = 3, offset = 30 }``; its rates are ratio · ω2 and
+        ratio · α2 (the law is linear).
+        """
+        lead = self.link_id(raw.get("link"), f"{key}.follows.link")
+        if lead != leader.link or leader.kind not in ("angle", "position", "relative") \
+                or leader.law is not None:
+            raise self.fail(f"{key}.follows.link", "a drive follows the first drive, the "
+                            f"swept one (link {leader.link}), not link {lead}")
+        ratio = raw.get("ratio", 1.0)
+        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) \
+                or not math.isfinite(float(ratio)) or abs(float(ratio)) > 1e6:
+            raise self.fail(f"{key}.follows.ratio", "the ratio is a finite number (at most "
+                            f"1e6 in size), not {_short(ratio)}")
+        kind = "angle" if drive.is_angle else "length"
+        offset = self.rate(raw.get("offset", 0.0), kind, f"{key}.follows.offset")
+        f_f = math.pi / 180.0 if drive.is_angle else 1.0
+        f_l = math.pi / 180.0 if leader.is_angle else 1.0
+        k, c = float(ratio) * f_f / f_l, f_f * offset
+        rate = None if leader.rate is None else k * leader.rate
+        rate2 = None if leader.rate is None else k * (leader.rate2 or 0.0)
+        return Drive(drive.index, drive.link, drive.kind, k * leader.value + c, rate, rate2,
+                     pivot=drive.pivot, slider=drive.slider, key=drive.key,
+                     relative_to=drive.relative_to, point=drive.point, law=(k, c))
 
     def relative_drive(self, d: Mapping[str, Any], key: str, lid: str, index: int,
                        seen: set[str]) -> Drive:
