@@ -28,9 +28,11 @@ from graphkin.mechanisms.model import (
     Slider,
     Slot,
 )
+from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, label_like
 from graphkin.units import length_factor, parse_rate
 
-__all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE"]
+__all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE", "LABEL_PREFIXES", "LINK_SYMBOLS",
+           "label_like"]
 
 #: The largest coordinate, length or rate accepted (squares and products of such numbers,
 #: as the constructions form them, stay finite).
@@ -712,48 +714,6 @@ class _Parser:
             if not link.points and not slid:
                 raise self.fail(f"links.{lid}", "a moving link needs at least one point")
 
-
-
-#: Prefixes of the labels the constructions make from a point name or a link id, followed
-#: by ``_``: forces and their lines (``F_43``, ``P_4``, ``T_12``, ``M_4``, ``W_4``, ``R_4``,
-#: ``l_3``, ``q_4``, ``X_4``, ``n_1-4``, ``u_1-4``), velocities and accelerations (``V_B``,
-#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), and the Greek symbols.
-LABEL_PREFIXES = ("F", "P", "T", "M", "W", "R", "l", "q", "X", "n", "u", "V", "A", "k", "J",
-                  "Q", "θ", "ω", "α")
-#: Symbols the constructions put before a link id: ``θ3``, ``ω3``, ``α3``, ``s4``, ``ds4``,
-#: ``dds4`` (a slider's travel and its rates).
-LINK_SYMBOLS = ("θ", "ω", "α", "dds", "ds", "s")
-
-
-def label_like(name: str, links: Mapping[str, Any]) -> str:
-    """Why ``name`` could be taken for a construction's label ("" when it cannot).
-
-    Examples
-    --------
-    >>> links = {"1": None, "2": None, "3": None, "4": None}
-    >>> label_like("F_43", links)
-    "it is written like a label of graphkin's constructions (F_…)"
-    >>> label_like("ω3", links)
-    "it is written like a link's symbol (ω3)"
-    >>> label_like("I13", links)
-    'it is written like an instant center (I13)'
-    >>> label_like("a_b_c", links), label_like("O2", links), label_like("Q", links)
-    ('', '', '')
-    """
-    head, sep, _ = name.partition("_")
-    if sep and head in LABEL_PREFIXES:
-        return f"it is written like a label of graphkin's constructions ({head}_…)"
-    if name[:1] in ("θ", "ω", "α"):
-        return f"it is written like a link's symbol ({name})"
-    for sym in LINK_SYMBOLS:
-        if name.startswith(sym) and name[len(sym):] in links:
-            return f"it is written like a link's symbol ({name})"
-    if name.startswith("I"):
-        rest = name[1:]
-        ids = [lid for lid in links if rest.startswith(lid)]
-        if any(rest[len(a):].lstrip("-") in links for a in ids):
-            return f"it is written like an instant center ({name})"
-    return ""
 
 
 def _lonely_points(mech: Mechanism) -> str:
