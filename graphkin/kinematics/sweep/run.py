@@ -96,7 +96,9 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     file's posture by the assembly hints) and evaluated on whole arrays; the
     named branches are kept through the sweep (see the module notes on
     continuity).  With several drives the first is swept and the others are
-    held at the file's values (their rates, if given, apply throughout).
+    held at the file's values (their rates, if given, apply throughout), except
+    those that follow the first by a law (``follows``, ``Drive.law``): they move with
+    it, value k · first + c and rates k · ω, k · α.
     Mechanisms that cannot be solved one group at a time are solved by
     :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
     each posture from the one before), and ``method`` and ``notes`` say so.
