@@ -315,6 +315,11 @@ class _Parser:
                 raise self.fail(f"{d.key}.relative_to", f"link {lid} rolls (rolling[...]): an "
                                 "angle relative to a rolling link is not supported yet (drive "
                                 "the arm or the wheel's carrier by its angle)")
+            if mech.has_forces and d.kind == "angle" and d.pivot is None:
+                raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with the "
+                                f"absolute angle of link {d.link}, which is not pinned to the "
+                                "frame, as the drive is not supported yet (drive a link pinned "
+                                "to the frame, or a slider)")
             if mech.has_forces and d.kind in ("relative", "x", "y"):
                 what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
                 raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
@@ -464,11 +469,7 @@ class _Parser:
                 raise self.fail(key, "a drive gives either angle (revolute) or position (slider)")
             if has_angle:
                 pivot = next((p.name for p in pins if lid in p.links and FRAME in p.links), None)
-                if pivot is None:
-                    raise self.fail(f"{key}.link", f"link {lid} is not pinned to the frame, "
-                                    "so its absolute angle cannot drive it (drive a slider by "
-                                    "position, or give the angle relative_to the link it is "
-                                    "pinned to)")
+
                 value = math.radians(self.rate(d["angle"], "angle", f"{key}.angle"))
                 rate = self.rate(d["omega"], "omega", f"{key}.omega") if "omega" in d else None
                 rate2 = self.rate(d["alpha"], "alpha", f"{key}.alpha") if "alpha" in d else None
