@@ -315,6 +315,10 @@ class _Parser:
                 raise self.fail(f"{d.key}.relative_to", f"link {lid} rolls (rolling[...]): an "
                                 "angle relative to a rolling link is not supported yet (drive "
                                 "the arm or the wheel's carrier by its angle)")
+            if d.kind == "angle" and d.pivot is None and d.link in rolling_links:
+                raise self.fail(f"{d.key}.link", f"link {d.link} rolls and is not pinned to "
+                                "the frame: its absolute angle as the drive is not supported "
+                                "yet (drive the arm or the wheel's carrier by its angle)")
             if mech.has_forces and d.kind == "angle" and d.pivot is None:
                 raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with the "
                                 f"absolute angle of link {d.link}, which is not pinned to the "
