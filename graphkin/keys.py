@@ -78,7 +78,9 @@ MECHANISM: Schema = {
               "relative_to": None,
               # a point's coordinates in the frame (Problem 5.13)
               "point": None, "x": None, "y": None, "vx": None, "vy": None, "ax": None,
-              "ay": None},
+              "ay": None,
+              # an input coupled to the first by a law: θ5 = 3 θ2 + 30° (a swept parameter)
+              "follows": {"link": None, "ratio": None, "offset": None}},
     "rates": {"link": None, "omega": None, "alpha": None, "velocity": None,
               "acceleration": None},
     "assembly": {"*": None},              # <point> = [x, y]

@@ -36,6 +36,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="first drive value (default: the file's)")
     p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",
                    help="end of the range, excluded (default: one full turn on)")
+    p.add_argument("--follow", action="store_true",
+                   help="keep the motion continuous through stretched or folded postures "
+                        "(as sweep --follow)")
     p.add_argument("--count", type=bounded_int(2, MAX_COUNT), default=360, metavar="N",
                    help="number of postures (default 360)")
     return p
@@ -67,7 +70,8 @@ def run(args: argparse.Namespace) -> int:
     # three stages: the sweep, the figure, the file (a bar only past a second, on a terminal)
     with bar("plot", total=3, unit="stage") as b:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
-                   transmission=any(i == "transmission" for i, _ in items))
+                   transmission=any(i == "transmission" for i, _ in items),
+                   follow=args.follow)
         b.update(1)
         try:
             fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])

@@ -1,7 +1,8 @@
 """``graphkin sweep FILE [--from DEG] [--to DEG] [--count N] --csv OUT.csv``: whole cycles.
 
 Solve a mechanism at many values of its (first) drive at once, by the same constructions
-as solve, and write one CSV row per posture. Other drives are held at the file's values.
+as solve, and write one CSV row per posture. Other drives are held at the file's values,
+except those that follow the first by a law (follows = {link, ratio, offset}).
 
 The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
@@ -61,6 +62,10 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "the loads and inertia forces of the file (docs/forces.md)")
     p.add_argument("--joint-forces", action="store_true",
                    help="with --torque: also the magnitude of every joint force (F_3-4)")
+    p.add_argument("--follow", action="store_true",
+                   help="keep the motion continuous: where the file's branch would jump (a "
+                        "stretched or folded posture), go on along the other branch and say "
+                        "where on standard error")
     p.add_argument("--singular", action="store_true",
                    help="also report dead centers, limit positions (of links pinned to the "
                         "frame and of sliders on it) and Grashof's classification on standard "
@@ -87,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
     with bar("sweep", total=args.count, unit="posture") as b:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=args.transmission, centers=args.centers,
-                   curvature=args.curvature, progress=b.fraction)
+                   curvature=args.curvature, progress=b.fraction, follow=args.follow)
     if args.torque or args.joint_forces:
         from graphkin.forces.sweep import force_columns
 

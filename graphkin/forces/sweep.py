@@ -15,6 +15,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 12.5 (superposition), Sec. 12.8
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import numpy as np
@@ -53,7 +54,15 @@ def force_columns(sw: Any, joints: bool = False) -> dict[str, np.ndarray]:
     if not mech.has_forces:
         raise InputError("no forces to sweep: the file has no [[loads]] and no [inertia.N]",
                          key="loads", file=mech.source)
-    fs = solve_forces(mech.solve())
+    try:
+        fs = solve_forces(mech.solve())
+    except InputError:
+        if not mech.friction:
+            raise
+        # the file's own posture is self-locking, or its slider at rest with no impending
+        # sense: the construction's order is that of the frictionless mechanism, and the
+        # rough joints' lines are leant at every posture below (NaN where they cannot be)
+        fs = solve_forces(dataclasses.replace(mech, friction={}).solve())
     if fs.built is None:
         raise InputError("the drive's torque is swept by the graphic construction, which "
                          "finds no order for this mechanism", key="loads", file=mech.source)

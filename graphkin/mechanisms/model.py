@@ -201,6 +201,9 @@ class Drive:
     key: str = "drive"
     relative_to: str | None = None
     point: str | None = None
+    law: tuple[float, float] | None = None
+    """``(k, c)`` of an input coupled to the first drive: value = k · first + c, in
+    internal units (rad or length), its rates k · ω and k · α (``follows`` in the file)."""
 
     @property
     def is_angle(self) -> bool:

@@ -28,9 +28,11 @@ from graphkin.mechanisms.model import (
     Slider,
     Slot,
 )
+from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, label_like
 from graphkin.units import length_factor, parse_rate
 
-__all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE"]
+__all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE", "LABEL_PREFIXES", "LINK_SYMBOLS",
+           "label_like"]
 
 #: The largest coordinate, length or rate accepted (squares and products of such numbers,
 #: as the constructions form them, stay finite).
@@ -306,9 +308,19 @@ class _Parser:
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")
+        rolling_links = {r.link for r in mech.rolling}
         for d in mech.drives:
             # a drive relative to a rolling link is solved (its rates by the analytic
             # solver, with a note: tests/kinematics/test_rolling_phase.py)
+            if d.kind == "angle" and d.pivot is None and d.link in rolling_links:
+                raise self.fail(f"{d.key}.link", f"link {d.link} rolls and is not pinned to "
+                                "the frame: its absolute angle as the drive is not supported "
+                                "yet (drive the arm or the wheel's carrier by its angle)")
+            if mech.has_forces and d.kind == "angle" and d.pivot is None:
+                raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with the "
+                                f"absolute angle of link {d.link}, which is not pinned to the "
+                                "frame, as the drive is not supported yet (drive a link pinned "
+                                "to the frame, or a slider)")
             if mech.has_forces and d.kind in ("relative", "x", "y"):
                 what = "a joint angle" if d.kind == "relative" else "a point's coordinate"
                 raise self.fail(d.key, f"a force analysis ([[loads]], [inertia]) with {what} "
@@ -451,9 +463,13 @@ class _Parser:
         multi = not isinstance(raw, Mapping)
         out: list[Drive] = []
         seen: set[str] = set()
+        laws: list[tuple[int, Mapping[str, Any], str]] = []
         for i, d in enumerate(items):
             key = f"drive[{i}]" if multi else "drive"
             d = self.table(d, key)
+            if "follows" in d:
+                d = self.follower(d, key, i, pins)
+                laws.append((len(out), d["follows"], key))
             if "point" in d:
                 out += self.point_drive(d, key, len(out), seen)
                 continue
@@ -475,11 +491,7 @@ class _Parser:
                 raise self.fail(key, "a drive gives either angle (revolute) or position (slider)")
             if has_angle:
                 pivot = next((p.name for p in pins if lid in p.links and FRAME in p.links), None)
-                if pivot is None:
-                    raise self.fail(f"{key}.link", f"link {lid} is not pinned to the frame, "
-                                    "so its absolute angle cannot drive it (drive a slider by "
-                                    "position, or give the angle relative_to the link it is "
-                                    "pinned to)")
+
                 value = math.radians(self.rate(d["angle"], "angle", f"{key}.angle"))
                 rate = self.rate(d["omega"], "omega", f"{key}.omega") if "omega" in d else None
                 rate2 = self.rate(d["alpha"], "alpha", f"{key}.alpha") if "alpha" in d else None
@@ -504,10 +516,58 @@ class _Parser:
                                         "a slider drive takes velocity and acceleration")
                 out.append(Drive(len(out), lid, "position", value, rate, rate2, slider=slider,
                                  key=key))
+        for idx, raw, key in laws:
+            out[idx] = self.coupled(out[idx], out[0], raw, key)
         has = [d.rate is not None for d in out]
         if any(has) and not all(has):
             raise self.fail("drive", "give the rate of every drive or of none")
         return out
+
+    def follower(self, d: Mapping[str, Any], key: str, i: int, pins: list[Pin]
+                 ) -> dict[str, Any]:
+        """A drive with ``follows``: checked, with a placeholder value (the law sets it)."""
+        if i == 0:
+            raise self.fail(f"{key}.follows", "the first drive is the swept parameter: it "
+                            "cannot follow another (put the leading drive first)")
+        for bad in ("angle", "position", "omega", "alpha", "velocity", "acceleration",
+                    "point", "x", "y"):
+            if bad in d:
+                raise self.fail(f"{key}.{bad}", "a drive that follows the first gets its value "
+                                f"and its rates from the law: leave out {bad}")
+        self.table(d["follows"], f"{key}.follows")
+        out = dict(d)
+        lid = str(d.get("link"))
+        pinned = any(lid in p.links and FRAME in p.links for p in pins)
+        out["angle" if "relative_to" in d or pinned else "position"] = 0.0
+        return out
+
+    def coupled(self, drive: Drive, leader: Drive, raw: Mapping[str, Any], key: str) -> Drive:
+        """The law ``value = ratio · first + offset`` of a following drive, applied.
+
+        The file writes it in its own units (degrees, lengths): ``θ5 = 3 θ2 + 30°`` is
+        ``follows = { link = 2, ratio = 3, offset = 30 }``; its rates are ratio · ω2 and
+        ratio · α2 (the law is linear).
+        """
+        lead = self.link_id(raw.get("link"), f"{key}.follows.link")
+        if lead != leader.link or leader.kind not in ("angle", "position", "relative") \
+                or leader.law is not None:
+            raise self.fail(f"{key}.follows.link", "a drive follows the first drive, the "
+                            f"swept one (link {leader.link}), not link {lead}")
+        ratio = raw.get("ratio", 1.0)
+        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) \
+                or not math.isfinite(float(ratio)) or abs(float(ratio)) > 1e6:
+            raise self.fail(f"{key}.follows.ratio", "the ratio is a finite number (at most "
+                            f"1e6 in size), not {_short(ratio)}")
+        kind = "angle" if drive.is_angle else "length"
+        offset = self.rate(raw.get("offset", 0.0), kind, f"{key}.follows.offset")
+        f_f = math.pi / 180.0 if drive.is_angle else 1.0
+        f_l = math.pi / 180.0 if leader.is_angle else 1.0
+        k, c = float(ratio) * f_f / f_l, f_f * offset
+        rate = None if leader.rate is None else k * leader.rate
+        rate2 = None if leader.rate is None else k * (leader.rate2 or 0.0)
+        return Drive(drive.index, drive.link, drive.kind, k * leader.value + c, rate, rate2,
+                     pivot=drive.pivot, slider=drive.slider, key=drive.key,
+                     relative_to=drive.relative_to, point=drive.point, law=(k, c))
 
     def relative_drive(self, d: Mapping[str, Any], key: str, lid: str, index: int,
                        seen: set[str]) -> Drive:
@@ -677,48 +737,6 @@ class _Parser:
             if not link.points and not slid:
                 raise self.fail(f"links.{lid}", "a moving link needs at least one point")
 
-
-
-#: Prefixes of the labels the constructions make from a point name or a link id, followed
-#: by ``_``: forces and their lines (``F_43``, ``P_4``, ``T_12``, ``M_4``, ``W_4``, ``R_4``,
-#: ``l_3``, ``q_4``, ``X_4``, ``n_1-4``, ``u_1-4``), velocities and accelerations (``V_B``,
-#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), and the Greek symbols.
-LABEL_PREFIXES = ("F", "P", "T", "M", "W", "R", "l", "q", "X", "n", "u", "V", "A", "k", "J",
-                  "Q", "θ", "ω", "α")
-#: Symbols the constructions put before a link id: ``θ3``, ``ω3``, ``α3``, ``s4``, ``ds4``,
-#: ``dds4`` (a slider's travel and its rates).
-LINK_SYMBOLS = ("θ", "ω", "α", "dds", "ds", "s")
-
-
-def label_like(name: str, links: Mapping[str, Any]) -> str:
-    """Why ``name`` could be taken for a construction's label ("" when it cannot).
-
-    Examples
-    --------
-    >>> links = {"1": None, "2": None, "3": None, "4": None}
-    >>> label_like("F_43", links)
-    "it is written like a label of graphkin's constructions (F_…)"
-    >>> label_like("ω3", links)
-    "it is written like a link's symbol (ω3)"
-    >>> label_like("I13", links)
-    'it is written like an instant center (I13)'
-    >>> label_like("a_b_c", links), label_like("O2", links), label_like("Q", links)
-    ('', '', '')
-    """
-    head, sep, _ = name.partition("_")
-    if sep and head in LABEL_PREFIXES:
-        return f"it is written like a label of graphkin's constructions ({head}_…)"
-    if name[:1] in ("θ", "ω", "α"):
-        return f"it is written like a link's symbol ({name})"
-    for sym in LINK_SYMBOLS:
-        if name.startswith(sym) and name[len(sym):] in links:
-            return f"it is written like a link's symbol ({name})"
-    if name.startswith("I"):
-        rest = name[1:]
-        ids = [lid for lid in links if rest.startswith(lid)]
-        if any(rest[len(a):].lstrip("-") in links for a in ids):
-            return f"it is written like an instant center ({name})"
-    return ""
 
 
 def _lonely_points(mech: Mechanism) -> str:

@@ -206,7 +206,7 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     else:
         data["drive"] = {"label": d.label, "unit": mech.length_unit,
                          "values": [round(float(v), 6) for v in sw.drive_values]}
-    held = [x.label for x in mech.drives[1:]]
+    held = [x.label for x in mech.drives[1:] if x.law is None]  # coupled inputs are swept
     data["held"] = (f"{data['drive']['label']} is swept; {', '.join(held)} held at the file's "
                     "value (its rate applies throughout)") if held else ""
     data["valid"] = "".join("1" if v else "0" for v in np.asarray(sw.assembled).tolist())

@@ -84,6 +84,7 @@ TABLES = [
     ("examples/planetary_outside.toml", "rolling[0]", "contakt", "contact"),
     ("examples/planetary_outside.toml", "rolling[0].on_circle", "radus", "radius"),
     ("tests/data/spec/ex5_4_fivebar.toml", "drive[1]", "angel", "angle"),
+    ("examples/fivebar_coupled.toml", "drive[1].follows", "ration", "ratio"),
     ("tests/data/spec/ex4_14_inflection_bresse.toml", "rates", "omeag", "omega"),
     ("forces", "loads[1]", "torqe", "torque"),
     ("forces", "inertia", None, None),         # link ids

@@ -43,7 +43,7 @@ for d in DATA.values():
 HOSTILE = ["F_43", "P_4", "θ2", "ω3", "n_1-4", "I13", "s4", "x²", "ﬁ", "\u202e", "<!--<script>",
            '"', "__import__('os')", "a\nb", "O_2"]
 SEED = int(os.environ.get("FUZZ_SEED", "25"))
-BUDGET = float(os.environ.get("FUZZ_SECONDS", "6"))
+BUDGET = float(os.environ.get("FUZZ_SECONDS", "4"))
 MIN_CASES = 12
 
 

@@ -514,7 +514,8 @@ def batch(mech: Mechanism, dimensions: Mapping[str, Any], count: int = 360,
         ccx, pts = designs.chunk(lo, hi)
         given = dict(given0)
         given.update(pts)
-        given[eng.label] = np.broadcast_to(dv, (mc, count))
+        for lab, inp in eng.inputs_at(np.asarray(dv, dtype=float)).items():
+            given[lab] = np.broadcast_to(inp, (mc, count))
         ev = ccx.evaluate_for(keep, given, tol=tol, strict=False)
         flat = _flatten(ev, mc, count)
         fa = ev.failed_at

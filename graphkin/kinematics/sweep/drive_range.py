@@ -45,7 +45,7 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
                              key=f"--{'from' if name == 'start' else 'to'}",
                              file=eng.mech.source)
     a, b, cyclic = _drive_range(eng, start, stop)
-    _resolvable(eng, a, b, count)
+    _resolvable(eng, a, b, count, "--to" if stop is not None else "--from")
     # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
     # 48.00000000000001
     user = a + ((b - a) * np.arange(count, dtype=float)) / count
@@ -56,7 +56,7 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
 MAX_DRIVE = 1e9
 
 
-def _resolvable(eng: _Engine, a: float, b: float, count: int) -> None:
+def _resolvable(eng: _Engine, a: float, b: float, count: int, narrow: str = "--to") -> None:
     """Refuse a range whose postures the floats cannot tell apart (``--from 1e17``).
 
     Near 1e17 the spacing of floats is 16, so steps of a degree land on the
@@ -69,12 +69,12 @@ def _resolvable(eng: _Engine, a: float, b: float, count: int) -> None:
     what = "degrees" if d.is_angle else f"{eng.mech.length_unit} of travel"
     far = max(abs(a), abs(b))
     if far > MAX_DRIVE * unit:
-        key = "--from" if abs(a) > MAX_DRIVE * unit else "--to"
+        key = "--from" if abs(a) > MAX_DRIVE * unit else narrow
         raise InputError(f"a drive value of {far:g} {what} is beyond the ±{MAX_DRIVE * unit:g} "
                          "a sweep takes", key=key, file=eng.mech.source)
     if count > 1 and abs(b - a) / count <= 1e-9 * max(far, unit * 1e-6):
         raise InputError(f"the range {a:g} to {b:g} is too narrow for {count} postures (steps "
-                         f"of {abs(b - a) / count:.3g} {what})", key="--to",
+                         f"of {abs(b - a) / count:.3g} {what})", key=narrow,
                          file=eng.mech.source)
 
 

@@ -66,7 +66,10 @@ class _Engine:
         self.label = d.label
         if self.label not in self.pc.inputs:  # pragma: no cover - the builder names them so
             raise GraphkinError(f"the posture construction has no input {self.label!r}")
-        self.held = {k: v for k, v in self.pc.inputs.items() if k != self.label}
+        #: the inputs coupled to the swept one by a law (``follows``): label -> (k, c)
+        self.coupled = {dd.label: dd.law for dd in mech.drives if dd.law is not None}
+        self.held = {k: v for k, v in self.pc.inputs.items()
+                     if k != self.label and k not in self.coupled}
         if mech.has_rates:
             self.pol = build_polygons(mech, self.pc)
             if mech.rates is None:
@@ -98,7 +101,9 @@ class _Engine:
                 raise
             for k in range(1, 360):
                 moved = dataclasses.replace(d, value=d.value + math.radians(k))
-                drives = tuple(moved if x is d else x for x in mech.drives)
+                drives = tuple(moved if x is d else x if x.law is None else
+                               dataclasses.replace(x, value=x.law[0] * moved.value + x.law[1])
+                               for x in mech.drives)
                 try:
                     pc = build_posture(dataclasses.replace(mech, drives=drives), tol)
                 except AssemblyError:
@@ -130,8 +135,15 @@ class _Engine:
         """The posture construction at the drive values ``dv`` (internal units)."""
         assert self.pc is not None
         given: dict[str, Any] = dict(self.held)
-        given[self.label] = dv
+        given.update(self.inputs_at(dv))
         return self.pc.construction.evaluate(given, tol=self.tol, strict=False)
+
+    def inputs_at(self, dv: Array) -> dict[str, Array]:
+        """The swept input and the inputs coupled to it by a law, at drive values ``dv``."""
+        out = {self.label: dv}
+        for lab, (k, c) in self.coupled.items():
+            out[lab] = k * np.asarray(dv, dtype=float) + c
+        return out
 
     def rates(self, ev: Evaluation, unit: bool = False) -> tuple[Evaluation, Evaluation]:
         """The velocity and acceleration constructions on an evaluated posture.
@@ -146,8 +158,8 @@ class _Engine:
         ain: dict[str, Any] = {}
         for d in mech.drives:
             w, a = pol.rate_inputs[d.index]
-            if unit:
-                vin[w] = 1.0 if d is self.drive else 0.0
+            if unit:  # the first-order coefficients with respect to the swept input
+                vin[w] = 1.0 if d is self.drive else (d.law[0] if d.law is not None else 0.0)
                 ain[a] = 0.0
             else:
                 vin[w] = 0.0 if d.rate is None else d.rate
@@ -198,7 +210,7 @@ class _Engine:
         if self.combined is not None:
             given: dict[str, Any] = dict(self.held)
             given.update(self.rate_given)
-            given[self.label] = dv
+            given.update(self.inputs_at(dv))
             ev = self.combined.evaluate_for(self.keep, given, tol=self.tol, strict=False)
             fa = ev.failed_at
             assembled = None
@@ -217,7 +229,7 @@ class _Engine:
         mech = self.mech
         full = np.empty((len(dv), len(mech.drives)))
         for i, d in enumerate(mech.drives):
-            full[:, i] = dv if i == 0 else d.value
+            full[:, i] = dv if i == 0 else d.value if d.law is None else d.law[0] * dv + d.law[1]
         sol = solve_analytic_many(mech, full, tol=self.tol)
         return _Block(dv, None, None, None, sol)
 

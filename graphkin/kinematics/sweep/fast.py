@@ -85,7 +85,7 @@ def _build(eng: _Engine) -> _Fast | None:
     layout, requests = plan
     cx = eng.combined if eng.combined is not None else eng.pc.construction  # type: ignore[union-attr]
     try:
-        gen = generate(cx.steps, varying=[eng.label], constants=_constants(eng),
+        gen = generate(cx.steps, varying=[eng.label, *eng.coupled], constants=_constants(eng),
                        requests=requests, tol=eng.tol, name="sweep")
     except Unsupported:
         return None
@@ -131,7 +131,8 @@ def fast_columns(eng: _Engine, dv: Array, user: Array) -> dict[str, Array] | Non
     if fast is None:
         return None
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        out = fast.generated.fn(dv)
+        inputs = eng.inputs_at(dv)
+        out = fast.generated.fn(*(inputs[lab] for lab in fast.generated.varying))
     if out is None:
         fast.unclean += 1
         if fast.unclean >= _GIVE_UP and fast.unclean > fast.clean:

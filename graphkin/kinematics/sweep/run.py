@@ -15,7 +15,7 @@ import numpy as np
 
 from graphkin.kinematics.sweep.columns import _assembled_of, _columns, _valid_of
 from graphkin.kinematics.sweep.drive_range import _count, _drive_values
-from graphkin.kinematics.sweep.engine import _Block, _engine
+from graphkin.kinematics.sweep.engine import _Block, _Engine, _engine
 from graphkin.kinematics.sweep.extra_columns import (
     _center_columns,
     _curvature_columns,
@@ -38,7 +38,7 @@ BLOCK = 8_192
 def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
           stop: float | None = None, *, tol: Tolerance | None = None,
           transmission: bool = False, centers: bool = False, curvature: bool = False,
-          progress: Callable[[float], None] | None = None) -> Sweep:
+          progress: Callable[[float], None] | None = None, follow: bool = False) -> Sweep:
     """Solve a mechanism over ``count`` values of its (first) drive, all at once.
 
     Parameters
@@ -72,6 +72,11 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     progress : callable, optional
         Called with the fraction done, for long sweeps (evaluated in blocks of
         :data:`BLOCK` postures).
+    follow : bool
+        Keep the motion continuous: where the named branch of a two-way choice
+        would jump (a stretched or folded posture, two centers passing each
+        other), go on along the other branch, and say where in ``notes``
+        (:func:`graphkin.kinematics.sweep.follow.follow`).
 
     Returns
     -------
@@ -91,7 +96,9 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     file's posture by the assembly hints) and evaluated on whole arrays; the
     named branches are kept through the sweep (see the module notes on
     continuity).  With several drives the first is swept and the others are
-    held at the file's values (their rates, if given, apply throughout).
+    held at the file's values (their rates, if given, apply throughout), except
+    those that follow the first by a law (``follows``, ``Drive.law``): they move with
+    it, value k · first + c and rates k · ω, k · α.
     Mechanisms that cannot be solved one group at a time are solved by
     :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
     each posture from the one before), and ``method`` and ``notes`` say so.
@@ -114,9 +121,21 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
     128.6822
     """
+    if follow:
+        from graphkin.kinematics.sweep.follow import follow as _follow
+
+        return _follow(mech, count, start, stop, tol=tol, transmission=transmission,
+                       centers=centers, curvature=curvature)
     count = _count(count, mech)
     tol = tol or DEFAULT_TOL
-    eng = _engine(mech, tol)
+    return _run(mech, _engine(mech, tol), count, start, stop, transmission=transmission,
+                centers=centers, curvature=curvature, progress=progress)
+
+
+def _run(mech: Mechanism, eng: _Engine, count: int, start: float | None, stop: float | None,
+         *, transmission: bool = False, centers: bool = False, curvature: bool = False,
+         progress: Callable[[float], None] | None = None) -> Sweep:
+    """The sweep of :func:`sweep` by a given engine (its constructions and branches)."""
     user, dv, cyclic = _drive_values(eng, count, start, stop)
     blocks: list[_Block] = []
     released = False

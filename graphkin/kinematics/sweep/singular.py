@@ -295,7 +295,8 @@ def _change_points(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
                     "dead-center", u, None, lab,
                     f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
                     f"(change point); the sweep keeps the branch named {br!r}, which need not "
-                    "be the continuous motion beyond it", change_point=True))
+                    "be the continuous motion beyond it (--follow goes on with the motion)",
+                    change_point=True))
     return out
 
 

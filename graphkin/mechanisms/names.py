@@ -1,0 +1,58 @@
+"""Point names the constructions could take for their own labels (issue 25).
+
+The constructions name their values in the book's notation, built from the
+file's link ids and point names: ``θ3``, ``ω3``, ``s4``, ``I13``, ``F_43``,
+``V_B``...  A point named like one of them would be read for that value, so
+:func:`label_like` says why such a name is refused (``mechanisms/parse.py``
+refuses it in one line naming the key; ``docs/formats/mechanism.md`` lists the
+grammar).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+__all__ = ["LABEL_PREFIXES", "LINK_SYMBOLS", "label_like"]
+
+
+#: Prefixes of the labels the constructions make from a point name or a link id, followed
+#: by ``_``: forces and their lines (``F_43``, ``P_4``, ``T_12``, ``M_4``, ``W_4``, ``R_4``,
+#: ``l_3``, ``q_4``, ``X_4``, ``n_1-4``, ``u_1-4``), velocities and accelerations (``V_B``,
+#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), and the Greek symbols.
+LABEL_PREFIXES = ("F", "P", "T", "M", "W", "R", "l", "q", "X", "n", "u", "V", "A", "k", "J",
+                  "Q", "θ", "ω", "α")
+#: Symbols the constructions put before a link id: ``θ3``, ``ω3``, ``α3``, ``s4``, ``ds4``,
+#: ``dds4`` (a slider's travel and its rates).
+LINK_SYMBOLS = ("θ", "ω", "α", "dds", "ds", "s")
+
+
+def label_like(name: str, links: Mapping[str, Any]) -> str:
+    """Why ``name`` could be taken for a construction's label ("" when it cannot).
+
+    Examples
+    --------
+    >>> links = {"1": None, "2": None, "3": None, "4": None}
+    >>> label_like("F_43", links)
+    "it is written like a label of graphkin's constructions (F_…)"
+    >>> label_like("ω3", links)
+    "it is written like a link's symbol (ω3)"
+    >>> label_like("I13", links)
+    'it is written like an instant center (I13)'
+    >>> label_like("a_b_c", links), label_like("O2", links), label_like("Q", links)
+    ('', '', '')
+    """
+    head, sep, _ = name.partition("_")
+    if sep and head in LABEL_PREFIXES:
+        return f"it is written like a label of graphkin's constructions ({head}_…)"
+    if name[:1] in ("θ", "ω", "α"):
+        return f"it is written like a link's symbol ({name})"
+    for sym in LINK_SYMBOLS:
+        if name.startswith(sym) and name[len(sym):] in links:
+            return f"it is written like a link's symbol ({name})"
+    if name.startswith("I"):
+        rest = name[1:]
+        ids = [lid for lid in links if rest.startswith(lid)]
+        if any(rest[len(a):].lstrip("-") in links for a in ids):
+            return f"it is written like an instant center ({name})"
+    return ""
