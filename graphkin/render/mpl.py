@@ -25,7 +25,7 @@ from matplotlib.text import Text
 from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import Sheet, build_sheet
 from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
-from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
+from graphkin.render.style import STYLES, item_style, rc_context
 from graphkin.render.text import plain
 
 __all__ = ["StepGroup", "Vector", "Drawing", "draw", "sheet_figure", "render_sheet"]
@@ -194,22 +194,7 @@ class Drawing(dict[str, Artist]):
         return to_bytes(self.figure).decode("utf-8")
 
 
-def _style(it: Item, highlight: bool) -> dict[str, Any]:
-    st = dict(STYLES.get(it.style, {}))
-    if it.style == "image":
-        st = {"ec": "none", "fc": "#dddddd", "lw": 0.0}
-    st.update(it.overrides)
-    if highlight:
-        for key in ("color", "ec", "mec"):
-            if key in st and st[key] not in ("none",):
-                st[key] = HIGHLIGHT
-        if st.get("mfc", "#ffffff") not in ("#ffffff", "none"):
-            st["mfc"] = HIGHLIGHT
-        if "lw" in st and st.get("lw", 0) > 0:
-            st["lw"] = st["lw"] + 0.5
-        if it.kind == "text":
-            st["color"] = HIGHLIGHT
-    return st
+_style = item_style
 
 
 def _artists(it: Item, highlight: bool) -> list[Artist]:

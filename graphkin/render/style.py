@@ -23,8 +23,10 @@ from graphkin.construction import Role
 if TYPE_CHECKING:  # matplotlib is imported only when something is drawn
     from matplotlib.typing import RcKeyType
 
+    from graphkin.render.scene import Item
+
 __all__ = ["STYLES", "HIGHLIGHT", "RC", "rc_context", "IMAGE_FILLS", "style_for_role",
-           "FONT_PT", "SMALL_PT"]
+           "FONT_PT", "SMALL_PT", "item_style"]
 
 HIGHLIGHT = "#c62828"
 """Colour of the newest step on a teaching page."""
@@ -142,3 +144,27 @@ def style_for_role(role: Role | str, kind: str) -> str:
     if kind == "circle":
         return "result-arc" if role == Role.RESULT else "arc"
     return "aux-point" if role == Role.AUXILIARY else "point"
+
+
+def item_style(it: Item, highlight: bool) -> dict[str, Any]:
+    """An item's drawing style: its style's entry, its overrides, and the highlight.
+
+    The one reading of :data:`STYLES` for every writer of a scene (matplotlib in
+    :mod:`graphkin.render.mpl`, TikZ in :mod:`graphkin.render.tikz`), so both draw
+    a step the same way.
+    """
+    st = dict(STYLES.get(it.style, {}))
+    if it.style == "image":
+        st = {"ec": "none", "fc": "#dddddd", "lw": 0.0}
+    st.update(it.overrides)
+    if highlight:
+        for key in ("color", "ec", "mec"):
+            if key in st and st[key] not in ("none",):
+                st[key] = HIGHLIGHT
+        if st.get("mfc", "#ffffff") not in ("#ffffff", "none"):
+            st["mfc"] = HIGHLIGHT
+        if "lw" in st and st.get("lw", 0) > 0:
+            st["lw"] = st["lw"] + 0.5
+        if it.kind == "text":
+            st["color"] = HIGHLIGHT
+    return st

@@ -28,7 +28,7 @@ import numpy as np
 
 from graphkin.render.latex import to_latex
 from graphkin.render.scene import Group, Item, Panel, clip_segment
-from graphkin.render.style import HIGHLIGHT, STYLES
+from graphkin.render.style import STYLES, item_style
 
 __all__ = ["sheet_tikz", "drawing_tikz", "PREAMBLE"]
 
@@ -84,23 +84,7 @@ def _dash(ls: Any, lw: float) -> str | None:
     return "dash pattern=" + " ".join(parts)
 
 
-def _style(it: Item, highlight: bool) -> dict[str, Any]:
-    """The item's style dictionary, as :mod:`graphkin.render.mpl` reads it."""
-    st = dict(STYLES.get(it.style, {}))
-    if it.style == "image":
-        st = {"ec": "none", "fc": "#dddddd", "lw": 0.0}
-    st.update(it.overrides)
-    if highlight:
-        for key in ("color", "ec", "mec"):
-            if key in st and st[key] not in ("none",):
-                st[key] = HIGHLIGHT
-        if st.get("mfc", "#ffffff") not in ("#ffffff", "none"):
-            st["mfc"] = HIGHLIGHT
-        if "lw" in st and st.get("lw", 0) > 0:
-            st["lw"] = st["lw"] + 0.5
-        if it.kind == "text":
-            st["color"] = HIGHLIGHT
-    return st
+_style = item_style
 
 
 def _stroke(color: Any, lw: float, ls: Any = "-") -> list[str]:
