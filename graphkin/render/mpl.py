@@ -205,6 +205,13 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
         out.append(patches.Circle(tuple(xy[0]), it.radius, fill=False,
                                   ec=st.get("color", "k"), lw=st.get("lw", 0.5),
                                   ls=st.get("ls", "-")))
+    elif it.kind == "arc" and abs(it.theta2 - it.theta1) < 1.0:
+        # a sliver of a huge circle (an inflection circle far larger than the panel):
+        # its chord points, so no transform sees the far centre
+        t = np.radians(np.linspace(it.theta1, it.theta2, 17))
+        out.append(Line2D(xy[0, 0] + it.radius * np.cos(t), xy[0, 1] + it.radius * np.sin(t),
+                          color=st.get("color", "k"), lw=st.get("lw", 0.5),
+                          ls=st.get("ls", "-")))
     elif it.kind == "arc":
         out.append(patches.Arc(tuple(xy[0]), 2 * it.radius, 2 * it.radius,
                                theta1=it.theta1, theta2=it.theta2, ec=st.get("color", "k"),
