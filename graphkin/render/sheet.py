@@ -30,13 +30,14 @@ from shapely.geometry import MultiPoint
 
 from graphkin.construction import Role
 from graphkin.mechanisms.model import FRAME
+from graphkin.render.curvature_notes import link_title, missing_reasons, sheet_note
 from graphkin.render.labels import place_labels, text_size
 from graphkin.render.legend import CURVATURE_SHEETS, legend_cols, legend_entries, legend_size
 from graphkin.render.mechanism import mechanism_extent, paint_mechanism
 from graphkin.render.paint import POLES, StepPainter
 from graphkin.render.results import Row, result_rows
 from graphkin.render.scale import NICE, SERIES_125, choose_scale, paper_unit, quantity_unit
-from graphkin.render.scene import Item, Panel, finite_xy, safe_id
+from graphkin.render.scene import Item, LabelRequest, Panel, finite_xy, safe_id
 from graphkin.render.sources import (
     CURVATURE_PANELS,
     DIAGRAMS,
@@ -190,10 +191,13 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         subs = split_curvature(src)
         if diagram in CURVATURE_PANELS:
             if diagram not in subs:
+                lc0 = src.extras.get("curvature")
+                why = (missing_reasons(lc0, subs).get(diagram, "") if subs and lc0 is not None
+                       else "the link turns about a frame pivot")
                 raise DiagramUnavailable(
-                    f"no {diagram} figure for this link's curvature (the construction did not "
-                    f"use it{'; the link turns about a frame pivot' if not subs else ''}); "
-                    f"draw --diagram curvature", diagram=diagram)
+                    f"no {diagram} figure for this link's curvature: {why}" + (
+                        f"; draw --diagram curvature for {', '.join(subs)}" if subs else ""),
+                    diagram=diagram)
             subs = [diagram]
         if paper and diagram == "all":
             subs = subs[:1]  # a handout's `all` page: (a) only; -d curvature has them all
@@ -238,6 +242,11 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         p = new_panel(d, plane_of(d), False, "")
         (length_of if p.plane == "posture" else polygon_of)[d] = p
 
+    lc_ = src.extras.get("curvature")
+    if lc_ is not None:  # a curvature figure names the link whose motion it shows
+        for p in panels:
+            if p.name in CURVATURE_PANELS or p.name == "curvature":
+                p.title = link_title(p.title, str(lc_.link))
     if mech is not None and len(panels) > 1 and main not in length_of.values():
         panels.remove(main)  # a sheet of curvature panels has no separate posture panel
 
@@ -323,6 +332,12 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
             _curvature_extras(src, length_of[d], d,  # type: ignore[arg-type]
                               upto if own else None)
+    firsts = [d for d in diagrams if d in CURVATURE_PANELS and length_of.get(d) is not None]
+    if firsts and lc_ is not None:
+        note = sheet_note(lc_, [d for d in diagrams if d in CURVATURE_PANELS],
+                          mechanism_extent(src), unit, diagram == "curvature")
+        if note:
+            _caption(length_of[firsts[0]], note)  # type: ignore[arg-type]
     for p in panels:
         if p.mechanism:
             _hold_anchors(p)
@@ -437,18 +452,7 @@ def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) ->
         cx = src.constructions.get("curvature")
         note = cx.steps[0].note if cx is not None and len(cx.steps) else ""
         if note:
-            # below the drawing, where the scale bar was (it moves down under the sentence),
-            # wrapped to the panel's width (at least 3 in: a narrow panel grows)
-            vx0, vy0, vx1, vy1 = p.view
-            room = max(p.size[0] - 0.3, 3.0)
-            text = _wrap_to(note, room, STYLES["caption"]["size"])
-            depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
-            grow = max(room + 0.3 - p.size[0], 0.0) * p.k
-            p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
-            g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
-            g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
-                                "caption", gid=f"{p.prefix}curvature-note-text",
-                                text=text, ha="left", va="top", key="curvature note"))
+            _caption(p, note)
         return
     cubic = getattr(lc, "cubic", None)
     if d != "cubic" or cubic is None:
@@ -483,12 +487,35 @@ def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) ->
     _ball(lc, g, p, upto is None or upto >= found_u)
 
 
+def _caption(p: Panel, note: str) -> None:
+    """A sentence below a panel's drawing, where the scale bar was (it moves down under it).
+
+    Wrapped to the panel's width (at least 3 in: a narrow panel grows).
+    """
+    vx0, vy0, vx1, vy1 = p.view
+    room = max(p.size[0] - 0.3, 3.0)
+    text = _wrap_to(note, room, STYLES["caption"]["size"])
+    depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
+    grow = max(room + 0.3 - p.size[0], 0.0) * p.k
+    p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
+    g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
+    g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
+                        "caption", gid=f"{p.prefix}curvature-note-text",
+                        text=text, ha="left", va="top", key="curvature note"))
+
+
 def _ball(lc: Any, g: Any, p: Panel, reached: bool) -> None:
     """Ball's point U as a ring (Fig. 4.39), once the construction has found it."""
     ball = getattr(lc, "ball_point", None)
     if reached and ball is not None and np.all(np.isfinite(ball)):
-        g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
+        at = np.asarray(ball, dtype=float)[:2]
+        g.items.append(Item("marker", np.array([at]), "ball",
                             gid=f"{p.prefix}ball-point", key="Ball's point"))
+        x0, y0, x1, y1 = p.inner or p.view
+        if x0 <= at[0] <= x1 and y0 <= at[1] <= y1:  # named in words beside its ring
+            p.labels.append(LabelRequest("Ball's point", at, "label-small",
+                                         f"{p.prefix}label-ball-point", g,
+                                         key="Ball's point:label", gap=0.08))
 
 
 def _hold_anchors(p: Panel, reach: float = 1.0, clear: float = 0.3) -> None:
