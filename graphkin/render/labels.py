@@ -31,6 +31,7 @@ import numpy as np
 
 from graphkin.render.scene import Item, LabelRequest, Panel
 from graphkin.render.style import STYLES
+from graphkin.render.text import shown_size
 
 __all__ = ["place_labels", "text_size", "collisions", "RES"]
 
@@ -79,6 +80,7 @@ def text_size(text: str, size_pt: float, style: str = "label") -> tuple[float, f
     True
     """
     st = STYLES.get(style, {})
+    size_pt = shown_size(text, float(size_pt))
     family = "monospace" if st.get("family") == "monospace" else "sans-serif"
     if "\n" in text:  # matplotlib's own layout of the lines (line spacing, mathtext depths)
         w, h = _block_metrics(text, float(size_pt), family, str(st.get("weight", "normal")),
@@ -614,6 +616,11 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
                 if a.axes is not None:  # what the panel shows: its drawing is clipped there
                     ab = a.axes.bbox
                     axbox = box(ab.x0, ab.y0, ab.x1, ab.y1)
+                    # the panel less its title strip (mpl._add_group): a rectangle clip
+                    # is kept by matplotlib as a clip box
+                    e = a.get_clip_box() if a.get_clip_on() else None
+                    if e is not None:
+                        axbox = axbox.intersection(box(e.x0, e.y0, e.x1, e.y1))
                 for part in parts:
                     part.axes = a.axes
                     for seg in _segments(part):

@@ -26,7 +26,7 @@ from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import Sheet, build_sheet
 from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
 from graphkin.render.style import HIGHLIGHT, STYLES, rc_context
-from graphkin.render.text import plain
+from graphkin.render.text import plain, shown_size
 
 __all__ = ["StepGroup", "Vector", "Drawing", "draw", "sheet_figure", "render_sheet"]
 
@@ -220,7 +220,8 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
         out.append(Vector(xy[0], xy[-1], it.head, it.width, color=st.get("color", "k"),
                           lw=st.get("lw", 1.0), ls=st.get("ls", "-")))
     elif it.kind == "text":
-        kw = {"fontsize": st.get("size", 8.0), "color": st.get("color", "k"),
+        kw = {"fontsize": shown_size(it.text, st.get("size", 8.0)),
+              "color": st.get("color", "k"),
               "ha": it.ha, "va": it.va}
         if "family" in st:
             kw["family"] = st["family"]

@@ -40,6 +40,7 @@ from graphkin.render.scene import (
     Item,
     LabelRequest,
     Panel,
+    clip_arc,
     clip_segment,
     construction_text,
     far_distance,
@@ -425,13 +426,13 @@ class StepPainter:
             self.label(panel, g, point_text(label), xy, label,
                        style="label-aux" if helper else "label")
             return
-        if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
+        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
+        if mech is not None and not found and self._on_helper(xy, panel):
             return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
         internal = "#" in label or ":" in label  # a second copy, a slider line's own point
         if internal and step.role != Role.RESULT:
             return  # drawn as the line it defines or the point it copies: no dot, no name
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
-        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if not internal or ("#" not in label and shown and step.op not in _LAID_OFF):
             # a center or a point the construction finds: black, at point-label size; a point
@@ -663,12 +664,19 @@ class StepPainter:
                 self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
                            label, style="label-small", prefer=(0.0, 1.0))
             return
-        half = min(max(6.0, math.degrees(ARC_HALF * panel.k / r)), 170.0)
-        for i, q in enumerate(cuts):
+        # a short arc about each cut: at least 6° of a small circle, never longer than
+        # three times the usual arc on paper (6° of a huge circle would cross the panel)
+        half = min(max(min(6.0, math.degrees(3 * ARC_HALF * panel.k / r)),
+                       math.degrees(ARC_HALF * panel.k / r)), 170.0)
+        spans = inside_spans(center, r, panel.inner or panel.view)
+        n = 0
+        for q in cuts:
             phi = math.degrees(math.atan2(q[1] - center[1], q[0] - center[0]))
-            g.items.append(Item("arc", np.array([center]), style,
-                                key=label if i == 0 else f"{label}:{i}", radius=r,
-                                theta1=phi - half, theta2=phi + half))
+            for t1, t2 in clip_arc(phi - half, phi + half, spans):  # kept out of the title
+                g.items.append(Item("arc", np.array([center]), style,
+                                    key=label if n == 0 else f"{label}:{n}", radius=r,
+                                    theta1=t1, theta2=t2))
+                n += 1
 
     # ---- vectors ------------------------------------------------------
     def vector(self, step: Step, g: Group, panel: Panel) -> None:

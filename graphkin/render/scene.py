@@ -26,7 +26,7 @@ from graphkin.render.scale import Scale
 from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text", "construction_text", "inside_spans",
+           "sub_digits", "point_text", "construction_text", "inside_spans", "clip_arc",
            "far_reference", "far_distance"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -199,6 +199,28 @@ def inside_spans(center: np.ndarray, r: float, box: tuple[float, float, float, f
     return joined
 
 
+def clip_arc(t1: float, t2: float, spans: list[tuple[float, float]] | None
+             ) -> list[tuple[float, float]]:
+    """The parts of the arc ``t1..t2`` (degrees, ccw) inside ``spans`` (of :func:`inside_spans`).
+
+    Examples
+    --------
+    >>> clip_arc(-10, 10, None), clip_arc(-10.0, 10.0, [(0.0, 90.0)])
+    ([(-10, 10)], [(0.0, 10.0)])
+    >>> clip_arc(350.0, 370.0, [(-90.0, 5.0)])     # the span -90..5 is 270..365 too
+    [(350.0, 365.0)]
+    """
+    if spans is None:
+        return [(t1, t2)]
+    out: list[tuple[float, float]] = []
+    for a, b in spans:
+        for k in (-360.0, 0.0, 360.0):
+            lo, hi = max(t1, a + k), min(t2, b + k)
+            if hi > lo:
+                out.append((lo, hi))
+    return out
+
+
 def far_distance(dist: float) -> str:
     """A far point's distance in a label: three figures, a power of ten past five digits.
 
@@ -208,7 +230,7 @@ def far_distance(dist: float) -> str:
     Examples
     --------
     >>> far_distance(254.31), far_distance(44666961.0), far_distance(98765.0)
-    ('254', '4.47·10⁷', '98800')
+    ('254', '4.47·10⁷', '98765')
     """
     if not math.isfinite(dist) or dist < 1e5:
         from graphkin.text import fmt

@@ -33,6 +33,12 @@ from graphkin.mechanisms.model import FRAME
 from graphkin.render.curvature_notes import link_title, missing_reasons, sheet_note
 from graphkin.render.labels import place_labels, text_size
 from graphkin.render.legend import CURVATURE_SHEETS, legend_cols, legend_entries, legend_size
+from graphkin.render.measurable import (
+    component_magnitudes,
+    room_for,
+    short_components,
+    short_note,
+)
 from graphkin.render.mechanism import mechanism_extent, paint_mechanism
 from graphkin.render.paint import POLES, StepPainter
 from graphkin.render.results import Row, result_rows
@@ -68,6 +74,9 @@ left off the sheet."""
 FAR_RESULT = 4.0
 """Results and given points are kept on the sheet up to this many mechanism sizes away
 (beyond, an arrow at the edge points to them)."""
+FAR_RESULT_PAPER = 1.5
+"""On a handout page (small panels): a result farther than this is an arrow at the edge, so
+that one far center does not shrink the mechanism to a corner of its panel."""
 
 
 @dataclass
@@ -269,7 +278,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     # ---- extents and scales -------------------------------------------
     big = max_inches or (4.2 if many else 5.0)
     for p in panels:
-        pts = _content(src, p, painters)
+        pts = _content(src, p, painters, FAR_RESULT_PAPER if paper else FAR_RESULT)
         if not pts:
             pts = [np.zeros(2)]
         arr = np.array(pts)
@@ -281,6 +290,10 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             room = 6.5
         room *= (grow or {}).get(p.name, 1.0)
         extent = max(float(ex), float(ey), 1e-12)
+        if p.plane in ("velocity", "acceleration") and p.name in painters and not paper:
+            # room enough for the shortest component to be measured (3 mm), up to twice it
+            room = room_for(extent, component_magnitudes(painters[p.name], p.plane), room,
+                            2.0 * room)
         p.scale = choose_scale(extent, room, paper_u, p.unit,
                                SERIES_125 if paper else NICE)
         k = p.k
@@ -339,6 +352,11 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         if note:
             _caption(length_of[firsts[0]], note)  # type: ignore[arg-type]
     for p in panels:
+        if p.plane in ("velocity", "acceleration"):
+            note = short_note(p, short_components(p))
+            if note:
+                _caption(p, note, "short-components")
+    for p in panels:
         if p.mechanism:
             _hold_anchors(p)
         _frame(p)
@@ -361,7 +379,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     return sheet
 
 
-def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np.ndarray]:
+def _content(src: Source, p: Panel, painters: dict[str, StepPainter],
+             far_result: float = 4.0) -> list[np.ndarray]:
     """Every point a panel must show, in data units (the full construction, not ``upto``)."""
     pts: list[np.ndarray] = []
     allowed: tuple[float, float, float, float] | None = None
@@ -374,7 +393,7 @@ def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np
             size = max(float(np.max(hi - lo)), 1e-12)
             reach = FAR * size
             allowed = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
-            reach = FAR_RESULT * size
+            reach = far_result * size
             allowed_result = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
     if p.pole is not None:
         for painter in painters.values():
@@ -487,7 +506,7 @@ def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) ->
     _ball(lc, g, p, upto is None or upto >= found_u)
 
 
-def _caption(p: Panel, note: str) -> None:
+def _caption(p: Panel, note: str, name: str = "curvature-note") -> None:
     """A sentence below a panel's drawing, where the scale bar was (it moves down under it).
 
     Wrapped to the panel's width (at least 3 in: a narrow panel grows).
@@ -498,10 +517,11 @@ def _caption(p: Panel, note: str) -> None:
     depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
     grow = max(room + 0.3 - p.size[0], 0.0) * p.k
     p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
-    g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
+    key = name.replace("-", " ")
+    g = p.group(f"{p.prefix}{name}", 6.0, key=key)
     g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
-                        "caption", gid=f"{p.prefix}curvature-note-text",
-                        text=text, ha="left", va="top", key="curvature note"))
+                        "caption", gid=f"{p.prefix}{name}-text",
+                        text=text, ha="left", va="top", key=key))
 
 
 def _ball(lc: Any, g: Any, p: Panel, reached: bool) -> None:
