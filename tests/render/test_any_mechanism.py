@@ -193,3 +193,28 @@ def test_the_quick_return_strategy_gives_the_true_angular_velocities(rm):
     big = max(abs(w) for w in rm.omega.values())
     for lid, w in rm.omega.items():
         assert math.isclose(sol.omega(lid), w, rel_tol=1e-7, abs_tol=1e-9 * big), lid
+
+
+@pytest.mark.parametrize("name,sense", [
+    # ω2 = 60 rev/min cw: θ2 falls as time goes on, so the page plays the sweep backwards
+    ("whitworth_quick_return", -1),
+    # ω2 = 100 rev/min ccw: θ2 rises
+    ("watt1_sixbar", 1),
+])
+def test_animate_turns_the_way_the_drive_turns(name, sense):
+    from graphkin.render.animate import animate_html
+    from graphkin.render.cycle_data import cycle_data
+    from graphkin.render.cycle_frames import _in_time
+
+    mech = graphkin.load(DATA / f"{name}.toml")
+    data = cycle_data(mech, count=12)
+    assert data["sense"] == sense
+    # the frames of a GIF follow time: the drive's value moves in the sense of ω2
+    vals = [data["drive"]["values"][i] for i in _in_time(data)]
+    steps = np.diff(vals)
+    assert np.all(np.sign(steps) == sense), vals
+    page = animate_html(mech, count=12)
+    assert "stepBy(sense)" in page and '"sense":' in page
+    # link colours as `draw` paints them: a plate grey, a bar white (render/style.py)
+    fills = {lk["shape"]: lk["fill"] for lk in data["links"]}
+    assert fills.get("bar", "#ffffff") == "#ffffff"
