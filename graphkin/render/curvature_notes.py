@@ -92,7 +92,7 @@ def missing_reasons(lc: Any, shown: list[str]) -> dict[str, str]:
 
 
 def sheet_note(lc: Any, shown: list[str], extent: list[np.ndarray],
-               unit: str, whole: bool) -> str:
+               unit: str, whole: bool, omitted: list[str] | None = None) -> str:
     """The sentences under a curvature sheet's first figure ('' when there is nothing to say).
 
     ``whole`` is True for the full sheet (``-d curvature``): only then are the
@@ -118,4 +118,8 @@ def sheet_note(lc: Any, shown: list[str], extent: list[np.ndarray],
                 + ", so they and the points found from them are shown by arrows")
     if whole:
         parts.extend(missing_reasons(lc, shown).values())
+    if omitted and "hartmann" in shown:
+        parts.append(f"(c) constructs the conjugates of the first points only; those of "
+                     f"{len(omitted)} more ({', '.join(omitted[:3])}, ...) are in the report "
+                     "(graphkin solve)")
     return ". ".join(parts) + ("." if parts else "")

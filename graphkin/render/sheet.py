@@ -348,7 +348,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     firsts = [d for d in diagrams if d in CURVATURE_PANELS and length_of.get(d) is not None]
     if firsts and lc_ is not None:
         note = sheet_note(lc_, [d for d in diagrams if d in CURVATURE_PANELS],
-                          mechanism_extent(src), unit, diagram == "curvature")
+                          mechanism_extent(src), unit, diagram == "curvature",
+                          src.extras.get("conjugates_omitted", []))
         if note:
             _caption(length_of[firsts[0]], note)  # type: ignore[arg-type]
     for p in panels:
@@ -369,6 +370,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             "curvature" if d in CURVATURE_PANELS else d for d in diagrams)))
         if upto is not None:
             rows = _reached(src, diagram, upto, rows)
+        rows = _few_points(mech, rows)
     sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
                   (mech.title if mech is not None and mech.title else
                    (next(iter(src.constructions.values())).title if src.constructions
@@ -377,6 +379,38 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     sheet.paper, sheet.width_cap = paper, width_cap
     _layout(sheet, legend)
     return sheet
+
+
+POINT_ROWS = 8
+"""The results table of a sheet lists at most this many coupler points (a coupler with 300
+lettered points would make a table of a thousand rows; the report has them all)."""
+
+
+def _few_points(mech: Any, rows: list[Row]) -> list[Row]:
+    """The rows of the first :data:`POINT_ROWS` coupler points, and one row saying how many more.
+
+    Joints (pins, slider and slot points) always keep their rows.
+    """
+    joints = {s.point for s in (*mech.sliders, *mech.slots)}
+    coupler = [n for n in mech.point_names
+               if len(mech.point_links[n]) == 1 and n not in joints
+               and FRAME not in mech.point_links[n] and n not in mech.helper_points]
+    if len(coupler) <= POINT_ROWS:
+        return rows
+    left = set(coupler[POINT_ROWS:])
+
+    def point_of(key: str) -> str:
+        for pre in ("R_", "V_", "A_"):
+            if key.startswith(pre):
+                return key[len(pre):]
+        if key.startswith("curvature-") and key.endswith("_"):
+            return key[len("curvature-"):-1]
+        return ""
+
+    kept = [r for r in rows if point_of(r.key) not in left]
+    kept.append(Row("more-points", f"… {len(left)} more points: graphkin solve", "", "", "",
+                    None))
+    return kept
 
 
 def _content(src: Source, p: Panel, painters: dict[str, StepPainter],
