@@ -34,14 +34,14 @@ LETTERS = {"inflection": "(a)", "bobillier": "(b)", "hartmann": "(c)", "cubic": 
 
 
 def link_title(title: str, link: str) -> str:
-    """A curvature figure's title naming its link: ``(a) Inflection and Bresse circles, link 3``.
+    """A sheet's title naming the link whose curvature its figures show.
 
     Examples
     --------
-    >>> link_title("(c) Conjugate points", "5")
-    '(c) Conjugate points, link 5'
+    >>> link_title("Watt I six-bar", "5")
+    'Watt I six-bar: curvature of link 5'
     """
-    return f"{title}, link {link}"
+    return f"{title}: curvature of link {link}"
 
 
 def missing_reasons(lc: Any, shown: list[str]) -> dict[str, str]:

@@ -75,8 +75,8 @@ FAR_RESULT = 4.0
 """Results and given points are kept on the sheet up to this many mechanism sizes away
 (beyond, an arrow at the edge points to them)."""
 FAR_RESULT_PAPER = 1.5
-"""On a handout page (small panels): a result farther than this is an arrow at the edge, so
-that one far center does not shrink the mechanism to a corner of its panel."""
+"""On a handout page's instant-center panel (small): a center farther than this is an arrow at
+the edge, so that one far center does not shrink the mechanism to a corner of its panel."""
 
 
 @dataclass
@@ -252,10 +252,6 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         (length_of if p.plane == "posture" else polygon_of)[d] = p
 
     lc_ = src.extras.get("curvature")
-    if lc_ is not None:  # a curvature figure names the link whose motion it shows
-        for p in panels:
-            if p.name in CURVATURE_PANELS or p.name == "curvature":
-                p.title = link_title(p.title, str(lc_.link))
     if mech is not None and len(panels) > 1 and main not in length_of.values():
         panels.remove(main)  # a sheet of curvature panels has no separate posture panel
 
@@ -278,7 +274,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     # ---- extents and scales -------------------------------------------
     big = max_inches or (4.2 if many else 5.0)
     for p in panels:
-        pts = _content(src, p, painters, FAR_RESULT_PAPER if paper else FAR_RESULT)
+        pts = _content(src, p, painters,
+                       FAR_RESULT_PAPER if paper and p.name == "centers" else FAR_RESULT)
         if not pts:
             pts = [np.zeros(2)]
         arr = np.array(pts)
@@ -371,10 +368,13 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         if upto is not None:
             rows = _reached(src, diagram, upto, rows)
         rows = _few_points(mech, rows)
-    sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
-                  (mech.title if mech is not None and mech.title else
-                   (next(iter(src.constructions.values())).title if src.constructions
-                    else "")),
+    name = title if title is not None else (
+        mech.title if mech is not None and mech.title else
+        (next(iter(src.constructions.values())).title if src.constructions else ""))
+    if name and lc_ is not None and any(p.name in CURVATURE_PANELS or p.name == "curvature"
+                                        for p in panels):
+        name = link_title(name, str(lc_.link))  # the sheet says whose motion it shows
+    sheet = Sheet(panels, (0.0, 0.0), name,
                   diagram, rows, {d: pp.prefix for d, pp in painters.items()}, painters)
     sheet.paper, sheet.width_cap = paper, width_cap
     _layout(sheet, legend)

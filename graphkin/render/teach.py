@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import html
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
@@ -232,8 +232,12 @@ def _classroom_type() -> Iterator[None]:
 
 
 def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
-                max_inches: float = FRAME_INCHES) -> list[str]:
-    """The drawing after each page step, its own construction steps highlighted (SVG texts)."""
+                max_inches: float = FRAME_INCHES,
+                progress: Callable[[float], None] | None = None) -> list[str]:
+    """The drawing after each page step, its own construction steps highlighted (SVG texts).
+
+    ``progress`` is told the fraction of the drawings made (a progress bar's callback).
+    """
     from graphkin.render.mpl import render_sheet
     from graphkin.render.sheet import build_sheet
     from graphkin.render.svg import to_svg
@@ -254,6 +258,8 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
             d = render_sheet(sheet)
             assert d.figure is not None
             out.append(to_svg(d.figure))
+            if progress is not None:
+                progress(len(out) / len(steps))
     return out
 
 
@@ -460,7 +466,8 @@ def _step_section(ps: PageStep, k: int, n: int, svg: str) -> str:
 
 
 def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
-               title: str | None = None, max_inches: float = FRAME_INCHES) -> str:
+               title: str | None = None, max_inches: float = FRAME_INCHES,
+               progress: Callable[[float], None] | None = None) -> str:
     """The teaching page of a construction, as one self-contained HTML document.
 
     Every step has a title in words, the vector equation it solves or uses
@@ -490,6 +497,8 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     title : str, optional
     max_inches : float
         The largest side of a panel of the drawings.
+    progress : callable, optional
+        Told the fraction of the step drawings made (``graphkin steps`` shows a bar).
 
     Returns
     -------
@@ -509,7 +518,7 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     src, cx = _construction(obj, diagram, link)
     scale = _scale_of(src, diagram, max_inches)
     told = narrate(src, diagram, scale)
-    svgs = page_frames(src, diagram, told, max_inches=max_inches)
+    svgs = page_frames(src, diagram, told, max_inches=max_inches, progress=progress)
     mech = src.mechanism
     name = title or (mech.title if mech is not None and mech.title else cx.title or diagram)
     results = _results_html(src, diagram)

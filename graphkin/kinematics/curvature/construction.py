@@ -113,7 +113,7 @@ class _Build:
         if seen is None or seen[0] is not self.cx or seen[1] > len(steps) or (
                 seen[1] and steps[seen[1] - 1] is not seen[2]):
             seen = (self.cx, 0, None, set())
-        outs = seen[3]
+        outs: set[str] = seen[3]
         for st in steps[seen[1]:]:
             outs.update(st.outputs)
         self._made_outputs = (self.cx, len(steps), steps[-1] if steps else None, outs)
