@@ -95,6 +95,9 @@ def check_drawing(d, mech, far_may_cross: bool = False) -> None:
            if not (far_may_cross and c[0] == "line" and _is_far_label(d, c[1]))]
     assert not bad, bad[:5]
     texts = _labelled_keys(d)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(d.figure).get_renderer()
     captions = " ".join(t.get_text() for k, t in d.texts.items() if "note" in k
                         or "short" in k)
     names = set(mech.point_names) - set(mech.helper_points)
@@ -110,6 +113,18 @@ def check_drawing(d, mech, far_may_cross: bool = False) -> None:
             tail, tip = ax.transData.transform(np.array([art.tail, art.tip]))
             mm = float(np.hypot(*(tip - tail))) / d.figure.dpi * 25.4
             assert mm >= MIN_MM - 1e-6 or base in captions, (key, round(mm, 2))
+            # its label stands by it: the label's box within half an inch of the vector
+            box = d.texts[key].get_window_extent(renderer)
+            gap = _box_to_segment(box, tail, tip) / d.figure.dpi
+            assert gap <= 0.5, (key, round(gap, 2), "label away from its vector")
+
+
+def _box_to_segment(box, p: np.ndarray, q: np.ndarray) -> float:
+    """Distance (pixels) from a text's box to the segment p q (0 when they touch)."""
+    from shapely.geometry import LineString
+    from shapely.geometry import box as rect
+
+    return float(rect(box.x0, box.y0, box.x1, box.y1).distance(LineString([p, q])))
 
 
 def _draw_all_ways(sol, kind: str, sheet: str | None, fmt: str, link: str | None = None):
