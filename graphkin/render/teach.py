@@ -249,12 +249,21 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
         src = replace(src, constructions={**src.constructions,
                                           diagram: Construction(kept,
                                                                 src.constructions[diagram].title)})
+    # a curvature page draws each step on its own figure only ((a) to (d), Figs. 4.25-4.39),
+    # a size larger: four figures a step made the figure hard to follow, and slow
+    owner: dict[int, str] = {}
+    if diagram == "curvature":
+        for name in split_curvature(src):
+            for i in getattr(src.constructions[name], "own", ()):
+                owner[i] = name
     out = []
     with _classroom_type():
         for ps in steps:
+            fig = next((owner[i] for i in (ps.main, *ps.steps) if i in owner), diagram)
             # the painter draws the steps numbered up to ps.main (steps keep their numbers)
-            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
-                                table=False, legend=False, max_inches=max_inches, title="")
+            sheet = build_sheet(src, fig, upto=ps.main, highlight=set(ps.steps),
+                                table=False, legend=False, title="",
+                                max_inches=max_inches * (1.6 if fig != diagram else 1.0))
             d = render_sheet(sheet)
             assert d.figure is not None
             out.append(to_svg(d.figure))
