@@ -120,9 +120,12 @@ def clip_segment(p0: np.ndarray, p1: np.ndarray,
     x0, y0, x1, y1 = rect
     d = p1 - p0
     t0, t1 = 0.0, 1.0
+    # a component round-off of the other (1e-191 beside 40: an assembly hint's y) is zero:
+    # q / p would overflow, and the segment is parallel to that side of the box anyway
+    flat = 1e-15 * max(abs(float(d[0])), abs(float(d[1])))
     for p, q in ((-d[0], p0[0] - x0), (d[0], x1 - p0[0]), (-d[1], p0[1] - y0),
                  (d[1], y1 - p0[1])):
-        if p == 0:
+        if abs(p) <= flat or p == 0:
             if q < 0:
                 return None
             continue

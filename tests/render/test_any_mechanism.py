@@ -30,7 +30,8 @@ import numpy as np
 import pytest
 from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
-from strategies import examples, quick_returns, six_bars, slider_cranks
+from strategies import examples, six_bars, slider_cranks
+from strategies_quick import quick_returns
 
 import graphkin
 from graphkin.render import DiagramUnavailable, draw
@@ -250,3 +251,13 @@ def test_animate_turns_the_way_the_drive_turns(name, sense):
     # link colours as `draw` paints them: a plate grey, a bar white (render/style.py)
     fills = {lk["shape"]: lk["fill"] for lk in data["links"]}
     assert fills.get("bar", "#ffffff") == "#ffffff"
+
+
+def test_a_line_with_a_round_off_component_is_clipped_without_overflow():
+    # Found by the random test above (a slider-crank whose assembly hint had y = 1e-191): a
+    # line's direction component of 1e-191 beside 40 made q / p overflow in clip_segment.
+    from graphkin.render.scene import clip_segment
+
+    # (the box's half height 10 over the component 1e-308 is 1e309: beyond a float)
+    a, b = clip_segment(np.array([-50.0, 0.0]), np.array([50.0, 1e-308]), (-1, -10, 1, 10))
+    assert np.allclose(a, [-1.0, 0.0]) and np.allclose(b, [1.0, 0.0])
