@@ -70,7 +70,8 @@ def test_angles_are_drawn_continuous(sw) -> None:
 def test_gaps_where_the_linkage_cannot_be_assembled() -> None:
     sw = graphkin.loads(NON_GRASHOF).sweep(count=72)
     fig = sweep_figure(sw, "omega:4")
-    (line,) = fig.axes[0].get_lines()
+    # the curve (the dotted lines beside it mark the limit and dead-center postures)
+    (line,) = [ln for ln in fig.axes[0].get_lines() if ln.get_gid() == "curve-omega-4"]
     _, y = line.get_data()
     # 93.82° < θ2 < 266.18° cannot be assembled (|BD| > 5 + 7; see test_sweep)
     d = sw.columns["drive"] % 360

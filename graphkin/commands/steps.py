@@ -61,8 +61,11 @@ def run(args: argparse.Namespace) -> int:
         return _forces(sol, args)
     try:
         if args.output is not None:
-            out = write_text(args.output, steps_html(sol, args.diagram, link=args.link),
-                             "--output")
+            from graphkin.progress import bar
+
+            with bar("steps", total=100, unit="%") as b:  # a long page shows its progress
+                page = steps_html(sol, args.diagram, link=args.link, progress=b.fraction)
+            out = write_text(args.output, page, "--output")
             print(f"wrote {out}", file=sys.stderr)
         if args.frames is not None:
             with writing(f"into {args.frames}", "--frames"):

@@ -61,7 +61,7 @@ main { display: grid; grid-template-columns: 1.3fr 1fr 1fr 230px; gap: 8px; padd
 figure { margin: 0; background: #fff; border: 1px solid #ddd; border-radius: 4px;
          display: flex; flex-direction: column; min-width: 0; }
 figcaption { font-weight: bold; font-size: 14px; padding: 4px 8px; }
-figure svg { width: 100%; height: auto; max-height: calc(100vh - 150px); }
+figure svg { width: 100%; height: calc(100vh - 170px); min-height: 240px; }
 #values { font-size: 14px; background: #fff; border: 1px solid #ddd; border-radius: 4px;
           padding: 6px 10px; font-variant-numeric: tabular-nums; }
 #values table { border-collapse: collapse; width: 100%; }
@@ -83,6 +83,7 @@ _JS = r"""
   var errors = [];
   window.addEventListener('error', function (e) { errors.push(String(e.message)); });
   var n = D.n, cur = 0, playing = false, speed = 1, acc = 0, last = null;
+  var sense = D.sense === -1 ? -1 : 1;
   var slider = document.getElementById('drive');
   var valid = D.valid, rvalid = D.rated_valid;
   function val(s, q, i) { var v = s[i]; return v === null || v === undefined ? NaN : v * q; }
@@ -382,8 +383,8 @@ _JS = r"""
   });
   slider.max = n - 1;
   slider.addEventListener('input', function () { show(Number(slider.value)); });
-  document.getElementById('prev').addEventListener('click', function () { stepBy(-1); });
-  document.getElementById('next').addEventListener('click', function () { stepBy(1); });
+  document.getElementById('prev').addEventListener('click', function () { stepBy(-sense); });
+  document.getElementById('next').addEventListener('click', function () { stepBy(sense); });
   var play = document.getElementById('play');
   function setPlaying(p) { playing = p; play.textContent = p ? '❚❚ Pause' : '▶ Play'; last = null; }
   play.addEventListener('click', function () { setPlaying(!playing); });
@@ -398,16 +399,17 @@ _JS = r"""
   document.addEventListener('keydown', function (e) {
     if (e.target === choose) return;
     if (e.key === ' ') { setPlaying(!playing); e.preventDefault(); }
-    else if (e.key === 'ArrowRight') { stepBy(1); e.preventDefault(); }
-    else if (e.key === 'ArrowLeft') { stepBy(-1); e.preventDefault(); }
+    else if (e.key === 'ArrowRight') { stepBy(sense); e.preventDefault(); }
+    else if (e.key === 'ArrowLeft') { stepBy(-sense); e.preventDefault(); }
   });
   var perSecond = Math.max(n / 6, 1);
+  // time runs the way the drive turns: with ω2 cw the crank turns cw (θ2 falls)
   function tick(t) {
     if (playing) {
       if (last !== null) {
         acc += (t - last) / 1000 * perSecond * speed;
         var k = Math.floor(acc);
-        if (k >= 1) { acc -= k; for (var s = 0; s < Math.min(k, n); s++) stepBy(1); }
+        if (k >= 1) { acc -= k; for (var s = 0; s < Math.min(k, n); s++) stepBy(sense); }
       }
       last = t;
     }

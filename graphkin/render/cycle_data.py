@@ -29,7 +29,13 @@ __all__ = ["cycle_data", "QUANTUM"]
 QUANTUM = 2e-5
 """Each series is stored as integers of this fraction of its largest size."""
 
-_LINK_FILLS = ("#9ecae1", "#fdd0a2", "#c7e9c0", "#dadaeb", "#fcbba1", "#d9d9d9")
+
+
+def _fill(shape: str) -> str:
+    """A link's fill as ``draw`` paints it (render/style.py): a plate grey, a bar white."""
+    from graphkin.render.style import STYLES
+
+    return str(STYLES["plate" if shape == "plate" else "link"]["fc"])
 
 
 def _series(a: Any, q: float) -> list[int | None]:
@@ -209,6 +215,12 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     held = [x.label for x in mech.drives[1:] if x.law is None]  # coupled inputs are swept
     data["held"] = (f"{data['drive']['label']} is swept; {', '.join(held)} held at the file's "
                     "value (its rate applies throughout)") if held else ""
+    # the page plays the cycle in time: with the drive's rate negative (ω2 cw, a slider
+    # moving back) the drive's value falls as time goes on (Sec. 3.2: the sense of ω)
+    rate = mech.drives[0].rate if mech.drives else None
+    dv = np.asarray(sw.drive_values, dtype=float)
+    rising = len(dv) < 2 or float(dv[-1] - dv[0]) >= 0.0
+    data["sense"] = 1 if (rate is None or rate >= 0.0) == rising else -1
     data["valid"] = "".join("1" if v else "0" for v in np.asarray(sw.assembled).tolist())
     data["rated_valid"] = "".join("1" if v else "0" for v in np.asarray(sw.valid).tolist())
     events = []
@@ -228,14 +240,14 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     links = []
     pins = [p for p in names if len(mech.point_links[p]) >= 2]
     slider_links = {s.link for s in mech.sliders}
-    for i, lid in enumerate(mech.moving):
+    for lid in mech.moving:
         local = {p: mech.links[lid].points[p] for p in mech.links[lid].points if p in names}
         order = _hull_order(local)
         shape = "plate" if len(order) >= 3 else ("bar" if len(order) == 2 else "point")
         if lid in slider_links and len(order) <= 1:
             shape = "block"
         links.append({"id": lid, "points": order, "all": list(local), "shape": shape,
-                      "fill": _LINK_FILLS[i % len(_LINK_FILLS)]})
+                      "fill": _fill(shape)})
     data["links"] = links
     data["pins"] = pins
     data["frame"] = [p for p in mech.links[FRAME].points if p in names]

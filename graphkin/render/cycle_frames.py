@@ -146,7 +146,8 @@ def write_cycle_frames(mech: Mechanism, directory: str | Path, *, count: int = 3
     out.mkdir(parents=True, exist_ok=True)
     with rc_context():  # real text in the SVG, deterministic ids
         drawer = _Drawer(data)
-        for i, p in enumerate(paths):
+        for k, i in enumerate(_in_time(data)):  # frame k is the k-th posture in time
+            p = paths[k]
             drawer.draw(i).savefig(p, format=fmt,
                                    metadata={"Date": None} if fmt == "svg" else None)
     return paths
@@ -182,9 +183,15 @@ def write_cycle_gif(mech: Mechanism, path: str | Path, *, count: int = 120,
     return p
 
 
+def _in_time(data: dict[str, Any]) -> list[int]:
+    """The postures in the order the drive reaches them: falling θ2 when ω2 is cw."""
+    order = list(range(data["n"]))
+    return order[::-1] if data.get("sense", 1) == -1 else order
+
+
 def _gif(drawer: _Drawer, writer: Any, p: Path, data: dict[str, Any]) -> None:
     with writer.saving(drawer.fig, str(p), dpi=80):
-        for i in range(data["n"]):
+        for i in _in_time(data):
             if data["valid"][i] == "1":
                 drawer.draw(i)
                 writer.grab_frame()

@@ -252,11 +252,13 @@ def _pack(sizes: list[tuple[float, float]], width: float,
         used += (GAP if rows[-1] else 0.0) + w
         rows[-1].append(i)
     heights = [max(sizes[i][1] for i in r) for r in rows]
-    spare = height - sum(heights) - GAP * (len(rows) - 1)
+    # an unbounded height (a forced placement) packs the rows tight: no spare to share out
+    spare = height - sum(heights) - GAP * (len(rows) - 1) if math.isfinite(height) else 0.0
     if spare < 0:
         return None
     gap_y = GAP + spare / (len(rows) + 1)  # the spare height shared out around the rows
-    top = height - spare / (len(rows) + 1)
+    used_h = sum(heights) + GAP * (len(rows) - 1)
+    top = (height if math.isfinite(height) else used_h) - spare / (len(rows) + 1)
     out: list[tuple[float, float]] = [(0.0, 0.0)] * len(sizes)
     y = top
     for r, h in zip(rows, heights):
@@ -347,6 +349,10 @@ def build_paper_sheet(src: Source, diagram: str, paper: str, *, upto: int | None
         # the curvature figures have their own page (-d curvature); the Kennedy circle belongs
         # with the instant centers it finds (Fig. 3.22b), so it is never left off
         drops += [("curvature",)]
+    if "centers" in sheet_diagrams(src, diagram):
+        # the last resort before a page that overflows: the Kennedy circle left off (the
+        # instant centers' panel and table still give every center; issue 24's six-bar)
+        drops += [(*drops[-1], "kennedy")]
     found: tuple[float, list[tuple[float, float]], tuple[str, ...]] | None = None
     all_rows = rows
     sheet: Sheet | None = None
@@ -478,7 +484,7 @@ def place_on_page(sheet: Sheet, page: Page, size: tuple[float, float],
     if spots is None:
         if not force:
             return None
-        spots = _pack(sizes, cw, 1e9) or [(0.0, 0.0)] * len(sizes)
+        spots = _pack(sizes, cw, math.inf) or [(0.0, 0.0)] * len(sizes)
         top = max((y + s[1] for (_, y), s in zip(spots, sizes)), default=0.0)
         spots = [(x, y - top + ch - band - GAP) for x, y in spots]
     for p, (x, y) in zip(sheet.panels, spots):

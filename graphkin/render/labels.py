@@ -23,6 +23,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.6 (lettering a kinematic diagram).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import replace
 from functools import lru_cache
 from typing import Any
@@ -31,6 +32,7 @@ import numpy as np
 
 from graphkin.render.scene import Item, LabelRequest, Panel
 from graphkin.render.style import STYLES
+from graphkin.render.text import shown_size
 
 __all__ = ["place_labels", "text_size", "collisions", "RES"]
 
@@ -40,6 +42,7 @@ INK_WIDTH = 0.03
 """How wide a drawn line counts when a label covers it, in inches."""
 _PRIORITY = {"label": 0, "number": 1, "label-vector": 2, "label-aux": 3, "label-small": 4}
 _DIRS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
+_DIGITS = re.compile(r"[0-9]")
 _PAD = 0.012
 """Clearance kept around a label's glyphs, in inches."""
 
@@ -79,6 +82,11 @@ def text_size(text: str, size_pt: float, style: str = "label") -> tuple[float, f
     True
     """
     st = STYLES.get(style, {})
+    size_pt = shown_size(text, float(size_pt))
+    if "$" in text:
+        # DejaVu's digits share one advance width: "$V_{P123}$" measures as "$V_{P000}$", so
+        # 300 lettered points parse a handful of mathtext strings, not a thousand
+        text = _DIGITS.sub("0", text)
     family = "monospace" if st.get("family") == "monospace" else "sans-serif"
     if "\n" in text:  # matplotlib's own layout of the lines (line spacing, mathtext depths)
         w, h = _block_metrics(text, float(size_pt), family, str(st.get("weight", "normal")),
@@ -463,25 +471,26 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     area_cells = max(w * h * RES * RES, 1.0)
     best: tuple[float, np.ndarray, bool] | None = None
 
-    def score_of(c: np.ndarray, cost: float) -> tuple[float, bool]:
-        b = (c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2)
-        inked = ink.ink_in(b) / RES  # inches of line under the box
-        over = inked * INK_WIDTH / (w * h)
-        lab = ink.taken_in(b) / area_cells
-        cx0, cy0, cx1, cy1 = max(b[0], 0.0), max(b[1], 0.0), min(b[2], pw), min(b[3], ph)
-        inside = max(cx1 - cx0, 0.0) * max(cy1 - cy0, 0.0)
-        out = 1.0 - inside / (w * h)
-        # crossing any line costs more than walking a few rings out
-        score = 4.0 * over + (0.6 if inked > 0 else 0.0) + 25.0 * lab + 40.0 * out + cost
-        return score, over == 0 and lab == 0 and out <= 1e-12
-
-    for rank, c in enumerate(_candidates(req, a, w, h)):
-        sc, clean = score_of(c, 0.04 * rank)
-        if best is None or sc < best[0] - 1e-12:
-            best = (sc, c, clean)
-        if clean:
-            break
-    assert best is not None
+    # every candidate of the ring scored at once (numpy), then taken in rank order up to the
+    # first clean one, as a loop over them would: the best score of that prefix
+    cand = np.array(_candidates(req, a, w, h))
+    cx0, cy0 = cand[:, 0] - w / 2, cand[:, 1] - h / 2
+    cx1, cy1 = cand[:, 0] + w / 2, cand[:, 1] + h / 2
+    inked_all = ink.ink_many(cx0, cy0, cx1, cy1) / RES
+    lab_all = ink.taken_many(cx0, cy0, cx1, cy1) / area_cells
+    ix = np.clip(np.minimum(cx1, pw) - np.maximum(cx0, 0.0), 0, None)
+    iy = np.clip(np.minimum(cy1, ph) - np.maximum(cy0, 0.0), 0, None)
+    over_all = inked_all * INK_WIDTH / (w * h)
+    out_all = 1.0 - ix * iy / (w * h)
+    sc_all = 4.0 * over_all + np.where(inked_all > 0, 0.6, 0.0) + 25.0 * lab_all \
+        + 40.0 * out_all + 0.04 * np.arange(len(cand))
+    clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
+    first = int(np.argmax(clean_all)) if clean_all.any() else len(cand) - 1
+    j = 0
+    for k in range(1, first + 1):  # the first strictly better score, as the loop kept it
+        if sc_all[k] < sc_all[j] - 1e-12:
+            j = k
+    best = (float(sc_all[j]), cand[j].copy(), bool(clean_all[j]))
     if best[2]:
         return best
     # a crowded place: score a fine grid around the anchor at once, nearest clean first
@@ -512,18 +521,17 @@ def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> list[np
     if req.prefer is not None:
         px, py = req.prefer
         dirs.sort(key=lambda d: -(d[0] * px + d[1] * py) / math.hypot(*d))
+    d = np.array(dirs, dtype=float)
+    u = d / np.hypot(d[:, 0], d[:, 1])[:, None]
+    half = d * np.array([w / 2, h / 2])
     out = [a.copy()] if req.center else []
+    # rings close about the anchor, each in the preferred order of directions
     for ring in (1.0, 1.8, 2.8, 4.0):
-        for dx, dy in dirs:
-            n = math.hypot(dx, dy)
-            ux, uy = dx / n, dy / n
-            gap = req.gap * ring + (0.02 * ring if ring > 1 else 0.0)
-            out.append(a + np.array([ux * gap + dx * w / 2, uy * gap + dy * h / 2]))
+        gap = req.gap * ring + (0.02 * ring if ring > 1 else 0.0)
+        out.extend(a + u * gap + half)
     # farther out along the preferred directions, for crowded places
     for ring in (0.14, 0.22, 0.32, 0.45, 0.6, 0.8):
-        for dx, dy in dirs:
-            n = math.hypot(dx, dy)
-            out.append(a + np.array([dx / n * ring + dx * w / 2, dy / n * ring + dy * h / 2]))
+        out.extend(a + u * ring + half)
     return out
 
 
@@ -614,6 +622,11 @@ def collisions(drawing: Any, *, shrink: float = 0.5) -> list[tuple[str, str, str
                 if a.axes is not None:  # what the panel shows: its drawing is clipped there
                     ab = a.axes.bbox
                     axbox = box(ab.x0, ab.y0, ab.x1, ab.y1)
+                    # the panel less its title strip (mpl._add_group): a rectangle clip
+                    # is kept by matplotlib as a clip box
+                    e = a.get_clip_box() if a.get_clip_on() else None
+                    if e is not None:
+                        axbox = axbox.intersection(box(e.x0, e.y0, e.x1, e.y1))
                 for part in parts:
                     part.axes = a.axes
                     for seg in _segments(part):

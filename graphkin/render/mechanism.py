@@ -23,7 +23,7 @@ import shapely
 import shapely.ops
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 
-from graphkin.mechanisms.model import FRAME, Body, Rolling, Slider, Slot
+from graphkin.mechanisms.model import FRAME, Body, Mechanism, Rolling, Slider, Slot
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, point_text, safe_id
 from graphkin.render.sources import Source
 
@@ -97,6 +97,23 @@ def _bar(src: Source, lid: str, guide: Slider | Slot | Rolling, point: str, on: 
     return LineString([tuple(p0 + lo * u), tuple(p0 + hi * u)])
 
 
+def _is_rod(mech: Mechanism, lid: str, pts: dict[str, np.ndarray]) -> bool:
+    """A one-point link sliding on the frame drawn as a rod through its guides.
+
+    A rod pushed along its guides (the drive of Rapson's slide, Fig. 4.23, or
+    of a trammel) or carrying a block that slides on another link is drawn as
+    a rod; a plain piston pinned to a connecting rod is only its block, as
+    Fig. 1.15 draws it (a rod would run off the panel for nothing).
+    """
+    if not any(len(mech.point_links[n]) > 1 for n in pts):
+        return False
+    if any(d.link == lid and d.kind == "position" for d in mech.drives):
+        return True
+    blocks = {s.link for s in mech.sliders if s.on != FRAME}
+    return any(other in blocks and len(mech.links[other].points) <= 1
+               for n in pts for other in mech.point_links[n] if other != lid)
+
+
 def _ring(geom: shapely.Geometry) -> np.ndarray:
     if isinstance(geom, Polygon):
         return np.asarray(geom.exterior.coords)[:-1]
@@ -168,8 +185,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         if distinct.geom_type == "Point" and not bars:
             rod = [sl for sl in mech.sliders if sl.link == lid and sl.on == FRAME]
             lw = _line_world(src, rod[0]) if rod else None
-            pinned = any(len(mech.point_links[n]) > 1 for n in pts)
-            if lw is not None and pinned:
+            if lw is not None and _is_rod(mech, lid, pts):
                 # a rod sliding in frame guides, carrying a pin (Rapson's slide, Fig. 4.23)
                 u = lw[1]
                 # 1.3 in of paper each way, but never longer than half the mechanism: on a

@@ -26,7 +26,7 @@ from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import Sheet, build_sheet
 from graphkin.render.sources import CURVATURE_PANELS, DIAGRAMS, as_source, optional_modules
 from graphkin.render.style import STYLES, item_style, rc_context
-from graphkin.render.text import plain
+from graphkin.render.text import plain, shown_size
 
 __all__ = ["StepGroup", "Vector", "Drawing", "draw", "sheet_figure", "render_sheet"]
 
@@ -222,6 +222,13 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
         out.append(patches.Circle(tuple(xy[0]), it.radius, fill=False,
                                   ec=st.get("color", "k"), lw=st.get("lw", 0.5),
                                   ls=st.get("ls", "-")))
+    elif it.kind == "arc" and abs(it.theta2 - it.theta1) < 1.0:
+        # a sliver of a huge circle (an inflection circle far larger than the panel):
+        # its chord points, so no transform sees the far centre
+        t = np.radians(np.linspace(it.theta1, it.theta2, 17))
+        out.append(Line2D(xy[0, 0] + it.radius * np.cos(t), xy[0, 1] + it.radius * np.sin(t),
+                          color=st.get("color", "k"), lw=st.get("lw", 0.5),
+                          ls=st.get("ls", "-")))
     elif it.kind == "arc":
         out.append(patches.Arc(tuple(xy[0]), 2 * it.radius, 2 * it.radius,
                                theta1=it.theta1, theta2=it.theta2, ec=st.get("color", "k"),
@@ -230,7 +237,8 @@ def _artists(it: Item, highlight: bool) -> list[Artist]:
         out.append(Vector(xy[0], xy[-1], it.head, it.width, color=st.get("color", "k"),
                           lw=st.get("lw", 1.0), ls=st.get("ls", "-")))
     elif it.kind == "text":
-        kw = {"fontsize": st.get("size", 8.0), "color": st.get("color", "k"),
+        kw = {"fontsize": shown_size(it.text, st.get("size", 8.0)),
+              "color": st.get("color", "k"),
               "ha": it.ha, "va": it.va}
         if "family" in st:
             kw["family"] = st["family"]

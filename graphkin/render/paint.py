@@ -34,21 +34,21 @@ import numpy as np
 
 from graphkin.construction import Construction, Role, Step
 from graphkin.mechanisms.model import FRAME, Mechanism
-from graphkin.render.joint_angle import angle_arc, joint_arc
-from graphkin.render.scale import fmt
+from graphkin.render.paint_rates import paint_scalar
 from graphkin.render.scene import (
     Group,
     Item,
     LabelRequest,
     Panel,
+    clip_arc,
     clip_segment,
     construction_text,
+    far_distance,
     far_reference,
     finite_xy,
     inside_spans,
     point_text,
     safe_id,
-    sub_digits,
 )
 from graphkin.render.sources import Source, plane_of
 from graphkin.render.style import style_for_role
@@ -319,8 +319,8 @@ class StepPainter:
         dist = float(np.hypot(*(xy - ref)))
         unit = f" {panel.unit}" if panel.unit else ""
         who = construction_text(ref_name) if panel.plane == "posture" else image_text(ref_name)
-        text = f"{name}, {fmt(dist, 3)}{unit} from {who}" if ref_name else \
-            f"{name}, {fmt(dist, 3)}{unit} off the figure"
+        text = f"{name}, {far_distance(dist)}{unit} from {who}" if ref_name else \
+            f"{name}, {far_distance(dist)}{unit} off the figure"
         # where a crowded edge has no room for one line: the name above its distance
         two = (text.replace(", ", ",\n", 1),)
         d = _unit(xy - ref)
@@ -332,14 +332,14 @@ class StepPainter:
                 # one arrow for points that lie the same way, their names and distances in
                 # one list beside it (a label of its own could drift an inch from the arrow)
                 req.list_also(text, self.prefix + "label-" + safe_id(label), g, label, two,
-                              short=f"{name}, {fmt(dist, 3)}{unit}")
+                              short=f"{name}, {far_distance(dist)}{unit}")
                 return
         n = len(panel.labels)
         self.ideal(panel, g, label, np.array([*(xy - ref), 0.0]), text=text, center=ref,
                    fallback=two)
         if len(panel.labels) > n:
             shown.append((d, panel.labels[-1]))
-            panel.labels[-1].short = [f"{name}, {fmt(dist, 3)}{unit}"]
+            panel.labels[-1].short = [f"{name}, {far_distance(dist)}{unit}"]
             panel.labels[-1].ref = f"from {who}" if ref_name else "off the figure"
 
     def later_points(self, label: str, panel: Panel,
@@ -426,13 +426,13 @@ class StepPainter:
             self.label(panel, g, point_text(label), xy, label,
                        style="label-aux" if helper else "label")
             return
-        if mech is not None and step.role != Role.RESULT and self._on_helper(xy, panel):
+        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
+        if mech is not None and not found and self._on_helper(xy, panel):
             return  # a copy of a helper point (the slot's S1, S2): drawn as the slot
         internal = "#" in label or ":" in label  # a second copy, a slider line's own point
         if internal and step.role != Role.RESULT:
             return  # drawn as the line it defines or the point it copies: no dot, no name
         shown = step.role != Role.AUXILIARY or step.op not in _LAID_OFF
-        found = step.role == Role.RESULT or (self.diagram == "centers" and step.role == Role.GIVEN)
         self.marker(g, xy, style_for_role(step.role, "point") if shown else "aux-point", label)
         if not internal or ("#" not in label and shown and step.op not in _LAID_OFF):
             # a center or a point the construction finds: black, at point-label size; a point
@@ -664,12 +664,19 @@ class StepPainter:
                 self.label(panel, g, label.split("*")[0].replace(" circle", " circle"), top,
                            label, style="label-small", prefer=(0.0, 1.0))
             return
-        half = min(max(6.0, math.degrees(ARC_HALF * panel.k / r)), 170.0)
-        for i, q in enumerate(cuts):
+        # a short arc about each cut: at least 6° of a small circle, never longer than
+        # three times the usual arc on paper (6° of a huge circle would cross the panel)
+        half = min(max(min(6.0, math.degrees(3 * ARC_HALF * panel.k / r)),
+                       math.degrees(ARC_HALF * panel.k / r)), 170.0)
+        spans = inside_spans(center, r, panel.inner or panel.view)
+        n = 0
+        for q in cuts:
             phi = math.degrees(math.atan2(q[1] - center[1], q[0] - center[0]))
-            g.items.append(Item("arc", np.array([center]), style,
-                                key=label if i == 0 else f"{label}:{i}", radius=r,
-                                theta1=phi - half, theta2=phi + half))
+            for t1, t2 in clip_arc(phi - half, phi + half, spans):  # kept out of the title
+                g.items.append(Item("arc", np.array([center]), style,
+                                    key=label if n == 0 else f"{label}:{n}", radius=r,
+                                    theta1=t1, theta2=t2))
+                n += 1
 
     # ---- vectors ------------------------------------------------------
     def vector(self, step: Step, g: Group, panel: Panel) -> None:
@@ -690,64 +697,8 @@ class StepPainter:
 
     # ---- scalars: angles and angular rates on the mechanism -------------
     def scalar(self, step: Step, g: Group, panel: Panel) -> None:
-        """An input angle or an angular rate, drawn on its link."""
-        label = step.outputs[0]
-        mech = self.src.mechanism
-        sol = self.src.solution
-        if mech is None or sol is None or panel.plane != "posture":
-            return
-        v = self.raw(label)
-        if v is None or v.shape != () or not math.isfinite(float(v)):
-            return
-        value = float(v)
-        sym, lid = label[:1], label[1:]
-        if sym == "θ" and step.op == "input" and "/" in lid:
-            joint_arc(self, g, panel, lid, value, label)
-            return
-        if sym in ("ω", "α"):
-            rates = [abs(float(self.values[f"{sym}{x}"])) for x in mech.links
-                     if f"{sym}{x}" in self.values
-                     and np.shape(self.values[f"{sym}{x}"]) == ()]
-            if abs(value) <= 1e-9 * max([1.0, *rates]):
-                value = 0.0  # zero but for round-off: say so
-        if lid not in mech.links or lid == FRAME:
-            return
-        center, direction = _link_center(self.src, lid)
-        if center is None:
-            return
-        k = panel.k
-        if sym == "θ" and step.op == "input":
-            lid = label[1:]
-            angle_arc(self, g, panel, center, 0.0, value, label,
-                      f"θ{sub_digits('x' + lid)[1:]} = {fmt(math.degrees(value), 5)}°")
-        elif sym in ("ω", "α") and not self.quiet_rates and not (
-                value == 0 and step.op in ("add_angle", "scalar")):
-            unit = "rad/s" if sym == "ω" else "rad/s²"
-            text = f"{sym}{sub_digits('x' + lid)[1:]} = {fmt(abs(value), 4)} {unit}"
-            if value != 0:
-                text += " ccw" if value > 0 else " cw"
-            radius = (0.2 if sym == "ω" else 0.3) * k
-            start = direction + math.radians(60 if sym == "ω" else 100)
-            if value == 0:
-                self.label(panel, g, text, center, label, style="label-small", gap=0.25)
-                return
-            sweep = math.radians(250) * (1 if value > 0 else -1)
-            ts = np.linspace(start, start + sweep, 41)
-            pts = center + radius * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
-            g.items.append(Item("path", pts[:-3], "rate", key=label))
-            tan = pts[-1] - pts[-4]
-            self.arrow(panel, g, pts[-1] - tan * 0.01, pts[-1], "rate", key=f"{label}:head")
-            # make the head a fixed size pointing along the arc's end
-            g.items[-1].xy = np.array([pts[-4], pts[-1]])
-            g.items[-1].head = min(0.08 * k, float(np.hypot(*tan)) * 1.5)
-            g.items[-1].width = g.items[-1].head * 0.35
-            mid = center + (radius + 0.02 * k) * np.array([math.cos(start + sweep / 2),
-                                                            math.sin(start + sweep / 2)])
-            # where one line finds no room: the value over its unit and sense
-            two = (text.replace(" = ", " =\n", 1),)
-            self.label(panel, g, text, mid, label, style="label-small", gap=0.05,
-                       prefer=(math.cos(start + sweep / 2), math.sin(start + sweep / 2)),
-                       fallback=two)
+        """An input angle or an angular rate, drawn on its link (:mod:`.paint_rates`)."""
+        paint_scalar(self, step, g, panel)
 
 
 def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:
@@ -764,35 +715,6 @@ def _is_joint_or_named_point(mech: Mechanism, label: str) -> bool:
     if any(s.point == label for s in mech.sliders) or any(s.point == label for s in mech.slots):
         return True
     return links != [FRAME]
-
-
-def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
-    """Where a link's rate is drawn: its frame pivot if it has one, else its centroid.
-
-    Returns the point and the direction (rad) of the link's body from there.
-    """
-    sol = src.solution
-    mech = src.mechanism
-    if sol is None or mech is None:
-        return None, 0.0
-    names = list(mech.links[lid].points)
-    if not names:
-        return None, 0.0
-    pts = {n: np.asarray(sol.position(n, lid), dtype=float) for n in names}
-    frame = mech.links[FRAME].points
-    pivots = [n for n in names if n in frame]
-    if pivots:
-        c = pts[pivots[0]]
-        others = [pts[n] - c for n in names if float(np.hypot(*(pts[n] - c))) > 0]
-    else:
-        c = np.mean(list(pts.values()), axis=0)
-        others = [pts[n] - c for n in names]
-    if others:
-        m = np.mean(others, axis=0)
-        ang = math.atan2(m[1], m[0]) if float(np.hypot(*m)) > 0 else 0.0
-    else:
-        ang = 0.0
-    return c, ang
 
 
 PaintFn = Callable[[Step, Group, Panel], None]

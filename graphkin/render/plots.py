@@ -29,6 +29,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.10 (transmission angle), Sec. 2.13
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 from collections.abc import Sequence
 from pathlib import Path
@@ -236,11 +237,25 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             assert which is not None
             _check_point(sw, which)
             k = "v" if item == "velocity" else "a"
-            y = np.hypot(cols[f"{k}x_{which}"], cols[f"{k}y_{which}"])
-            (line,) = ax.plot(x, y, lw=1.2, label=f"|{k.upper()}_{which}|")
-            line.set_gid(f"curve-{item}-{which}")
             unit = sw.mechanism.length_unit + ("/s" if k == "v" else "/s²")
-            ax.set_ylabel(f"|{k.upper()}_{which}|, {unit}")
+            guide = _guide(sw, which)
+            if guide is not None:
+                # a point that slides on the frame: its signed rate along the guide, so a
+                # ram's cutting and return strokes read apart (Sec. 1.7)
+                u, toward = guide
+                y = np.asarray(cols[f"{k}x_{which}"], dtype=float) * u[0] \
+                    + np.asarray(cols[f"{k}y_{which}"], dtype=float) * u[1]
+                name = f"{k.upper()}_{which} along its guide (+ toward {toward})"
+                zero = ax.axhline(0.0, lw=0.6, color="0.3")
+                zero.set_gid(f"zero-{item}-{which}")
+            else:
+                y = np.hypot(cols[f"{k}x_{which}"], cols[f"{k}y_{which}"])
+                name = f"|{k.upper()}_{which}|"
+            (line,) = ax.plot(x, y, lw=1.2, label=name)
+            line.set_gid(f"curve-{item}-{which}")
+            ax.set_ylabel(f"{name}, {unit}" if guide is None else f"{k.upper()}_{which}, {unit}")
+            if guide is not None:
+                ax.legend(loc="best", fontsize="small", frameon=False)
             ax.set_xlabel(_drive_label(sw))
         elif item == "path":
             assert which is not None
@@ -274,6 +289,7 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
     for ax, (item, _which) in zip(axes, items):
         if item not in ("path", "center", "centrode"):
             _shade_unassembled(ax, x, cols)
+            _mark_special(ax, sw, x)
     fig.suptitle(plain(sw.mechanism.title or "sweep"), fontsize="medium")
     return fig
 
@@ -422,6 +438,51 @@ def _clip_toggles(ax: Any, x: np.ndarray, ys: list[np.ndarray]) -> None:
         mark.set_gid(f"toggle-{at:g}")
         first = False
     ax.legend(loc="best", fontsize="small", frameon=False)
+
+
+def _guide(sw: Sweep, name: str) -> tuple[np.ndarray, str] | None:
+    """The unit direction of the frame line a point slides on, and what its + end is toward.
+
+    A point of a link that slides on the frame (a piston, a ram) moves along
+    the slider's line; None for any other point.
+    """
+    mech = sw.mechanism
+    for s in mech.sliders:
+        if s.on != FRAME or name not in mech.links[s.link].points:
+            continue
+        d = np.array([s.p1[0] - s.p0[0], s.p1[1] - s.p0[1]], dtype=float)
+        n = float(np.hypot(*d))
+        if n <= 0:
+            continue
+        toward = next((q for q, xy in mech.links[FRAME].points.items()
+                       if tuple(map(float, xy)) == tuple(map(float, s.p1))
+                       and q in mech.helper_points), "")
+        deg = math.degrees(math.atan2(d[1], d[0]))
+        return d / n, (toward or f"{deg:.0f}°")
+    return None
+
+
+def _mark_special(ax: Any, sw: Sweep, x: np.ndarray) -> None:
+    """Limit positions and dead centers (Sec. 1.10) as dotted lines across a plot over the drive."""
+    if len(x) < 2:
+        return
+    lo, hi = float(np.nanmin(x)), float(np.nanmax(x))
+    seen: set[str] = set()
+    for sp in getattr(sw, "singular", ()):
+        if sp.kind not in ("limit", "dead-center"):
+            continue
+        v = float(sp.drive)
+        if sw.drive.is_angle:  # the same posture a turn on, where the axis shows it
+            v = lo + (v - lo) % 360.0
+        if not lo - 1e-9 <= v <= hi + 1e-9:
+            continue
+        what = "limit position" if sp.kind == "limit" else "dead center"
+        line = ax.axvline(v, lw=0.9, ls=":", color="#1565c0" if sp.kind == "limit" else
+                          "#c62828", label=what if what not in seen else None)
+        line.set_gid(f"{sp.kind}-{v:g}")
+        seen.add(what)
+    if seen:
+        ax.legend(loc="best", fontsize="small", frameon=False)
 
 
 def _shade_unassembled(ax: Any, x: np.ndarray, cols: Any) -> None:

@@ -26,8 +26,8 @@ from graphkin.render.scale import Scale
 from graphkin.render.text import plain
 
 __all__ = ["Item", "Group", "LabelRequest", "Panel", "finite_xy", "clip_segment", "safe_id",
-           "sub_digits", "point_text", "construction_text", "inside_spans",
-           "far_reference"]
+           "sub_digits", "point_text", "construction_text", "inside_spans", "clip_arc",
+           "far_reference", "far_distance"]
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -120,9 +120,12 @@ def clip_segment(p0: np.ndarray, p1: np.ndarray,
     x0, y0, x1, y1 = rect
     d = p1 - p0
     t0, t1 = 0.0, 1.0
+    # a component round-off of the other (1e-191 beside 40: an assembly hint's y) is zero:
+    # q / p would overflow, and the segment is parallel to that side of the box anyway
+    flat = 1e-15 * max(abs(float(d[0])), abs(float(d[1])))
     for p, q in ((-d[0], p0[0] - x0), (d[0], x1 - p0[0]), (-d[1], p0[1] - y0),
                  (d[1], y1 - p0[1])):
-        if p == 0:
+        if abs(p) <= flat or p == 0:
             if q < 0:
                 return None
             continue
@@ -141,34 +144,109 @@ def inside_spans(center: np.ndarray, r: float, box: tuple[float, float, float, f
 
     A circle that runs out of the panel's drawing area (into the title strip
     or the scale bar's) is drawn as the arcs that stay inside, so no
-    construction line crosses a panel's title.
+    construction line crosses a panel's title.  The arcs end exactly where
+    the circle crosses the box's edges, so a circle of any radius (an
+    inflection circle 10⁷ times the panel, whose arc through the panel spans
+    a microdegree) keeps its arc.
+
+    Examples
+    --------
+    >>> inside_spans(np.array([0.0, 0.0]), 1.0, (-2, -2, 2, 2)) is None
+    True
+    >>> [(round(a), round(b)) for a, b in inside_spans(np.array([0.0, 0.0]), 1.0,
+    ...                                                 (0, -2, 2, 2))]
+    [(-90, 90)]
+    >>> sp = inside_spans(np.array([0.0, -1e7]), 1e7, (-1, -1, 1, 1))
+    >>> len(sp) == 1 and 89.99999 < sp[0][0] < 90 < sp[0][1] < 90.00001
+    True
     """
     x0, y0, x1, y1 = box
-    if (center[0] - r >= x0 and center[0] + r <= x1 and center[1] - r >= y0
-            and center[1] + r <= y1):
+    cx, cy = float(center[0]), float(center[1])
+    if cx - r >= x0 and cx + r <= x1 and cy - r >= y0 and cy + r <= y1:
         return None
-    n = 1440
-    ts = np.linspace(0.0, 360.0, n, endpoint=False)
-    xs = center[0] + r * np.cos(np.radians(ts))
-    ys = center[1] + r * np.sin(np.radians(ts))
-    inside = (xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)
-    if inside.all():
-        return None
-    if not inside.any():
-        return []
-    start = int(np.flatnonzero(~inside)[0])  # begin at a point outside: runs never wrap
-    order = np.roll(np.arange(n), -start)
+    # the angles where the circle crosses the box's four edge lines
+    cuts: list[float] = []
+    for xe in (x0, x1):
+        d = (xe - cx) / r
+        if abs(d) <= 1.0:
+            a = math.acos(d)
+            cuts += [a, -a]
+    for ye in (y0, y1):
+        d = (ye - cy) / r
+        if abs(d) <= 1.0:
+            a = math.asin(d)
+            cuts += [a, math.pi - a]
+    ts = sorted({math.remainder(t, 2 * math.pi) for t in cuts})
+    if not ts:
+        return []  # no crossing: wholly outside the box (the wholly inside case returned above)
+
+    def inside(t: float) -> bool:
+        # tested at the arc's middle in the frame of the centre, exact for any radius
+        px, py = r * math.cos(t), r * math.sin(t)
+        return x0 - cx <= px <= x1 - cx and y0 - cy <= py <= y1 - cy
+
     spans: list[tuple[float, float]] = []
-    run: list[int] = []
-    for i in order:
-        if inside[i]:
-            run.append(int(i))
-        elif run:
-            spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
-            run = []
-    if run:
-        spans.append((float(ts[run[0]]), float(ts[run[0]]) + (len(run) - 1) * 360.0 / n))
-    return spans
+    for i, t in enumerate(ts):
+        t2 = ts[i + 1] if i + 1 < len(ts) else ts[0] + 2 * math.pi
+        if t2 - t > 0 and inside((t + t2) / 2):
+            spans.append((math.degrees(t), math.degrees(t2)))
+    # join arcs that meet at a corner crossing
+    joined: list[tuple[float, float]] = []
+    for a, b in spans:
+        if joined and abs(a - joined[-1][1]) <= 1e-12 * 360:
+            joined[-1] = (joined[-1][0], b)
+        else:
+            joined.append((a, b))
+    if len(joined) > 1 and abs(joined[-1][1] - (joined[0][0] + 360.0)) <= 1e-12 * 360:
+        joined = [(joined[-1][0], joined[0][1] + 360.0)] + joined[1:-1]
+    return joined
+
+
+def clip_arc(t1: float, t2: float, spans: list[tuple[float, float]] | None
+             ) -> list[tuple[float, float]]:
+    """The parts of the arc ``t1..t2`` (degrees, ccw) inside ``spans`` (of :func:`inside_spans`).
+
+    Examples
+    --------
+    >>> clip_arc(-10, 10, None), clip_arc(-10.0, 10.0, [(0.0, 90.0)])
+    ([(-10, 10)], [(0.0, 10.0)])
+    >>> clip_arc(350.0, 370.0, [(-90.0, 5.0)])     # the span -90..5 is 270..365 too
+    [(350.0, 365.0)]
+    """
+    if spans is None:
+        return [(t1, t2)]
+    out: list[tuple[float, float]] = []
+    for a, b in spans:
+        for k in (-360.0, 0.0, 360.0):
+            lo, hi = max(t1, a + k), min(t2, b + k)
+            if hi > lo:
+                out.append((lo, hi))
+    return out
+
+
+def far_distance(dist: float) -> str:
+    """A far point's distance in a label: three figures, a power of ten past five digits.
+
+    A point 10⁷ times the figure away (a pole of a link that nearly
+    translates) reads ``4.47·10⁷``, not a nine-digit integer.
+
+    Examples
+    --------
+    >>> far_distance(254.31), far_distance(44666961.0), far_distance(98765.0)
+    ('254', '4.47·10⁷', '98765')
+    """
+    if not math.isfinite(dist) or dist < 1e5:
+        from graphkin.text import fmt
+
+        return fmt(dist, 3)
+    e = math.floor(math.log10(dist))
+    m = dist / 10.0**e
+    if round(m, 2) >= 10.0:
+        m, e = m / 10.0, e + 1
+    return f"{m:.2f}·10{str(e).translate(_SUP)}"
+
+
+_SUP = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
 def far_reference(panel: Panel, label: str, xy: np.ndarray,

@@ -30,13 +30,20 @@ from shapely.geometry import MultiPoint
 
 from graphkin.construction import Role
 from graphkin.mechanisms.model import FRAME
+from graphkin.render.curvature_notes import link_title, missing_reasons, sheet_note
 from graphkin.render.labels import place_labels, text_size
 from graphkin.render.legend import CURVATURE_SHEETS, legend_cols, legend_entries, legend_size
+from graphkin.render.measurable import (
+    component_magnitudes,
+    room_for,
+    short_components,
+    short_note,
+)
 from graphkin.render.mechanism import mechanism_extent, paint_mechanism
 from graphkin.render.paint import POLES, StepPainter
 from graphkin.render.results import Row, result_rows
 from graphkin.render.scale import NICE, SERIES_125, choose_scale, paper_unit, quantity_unit
-from graphkin.render.scene import Item, Panel, finite_xy, safe_id
+from graphkin.render.scene import Item, LabelRequest, Panel, finite_xy, safe_id
 from graphkin.render.sources import (
     CURVATURE_PANELS,
     DIAGRAMS,
@@ -67,6 +74,9 @@ left off the sheet."""
 FAR_RESULT = 4.0
 """Results and given points are kept on the sheet up to this many mechanism sizes away
 (beyond, an arrow at the edge points to them)."""
+FAR_RESULT_PAPER = 1.5
+"""On a handout page's instant-center panel (small): a center farther than this is an arrow at
+the edge, so that one far center does not shrink the mechanism to a corner of its panel."""
 
 
 @dataclass
@@ -190,10 +200,13 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         subs = split_curvature(src)
         if diagram in CURVATURE_PANELS:
             if diagram not in subs:
+                lc0 = src.extras.get("curvature")
+                why = (missing_reasons(lc0, subs).get(diagram, "") if subs and lc0 is not None
+                       else "the link turns about a frame pivot")
                 raise DiagramUnavailable(
-                    f"no {diagram} figure for this link's curvature (the construction did not "
-                    f"use it{'; the link turns about a frame pivot' if not subs else ''}); "
-                    f"draw --diagram curvature", diagram=diagram)
+                    f"no {diagram} figure for this link's curvature: {why}" + (
+                        f"; draw --diagram curvature for {', '.join(subs)}" if subs else ""),
+                    diagram=diagram)
             subs = [diagram]
         if paper and diagram == "all":
             subs = subs[:1]  # a handout's `all` page: (a) only; -d curvature has them all
@@ -238,6 +251,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
         p = new_panel(d, plane_of(d), False, "")
         (length_of if p.plane == "posture" else polygon_of)[d] = p
 
+    lc_ = src.extras.get("curvature")
     if mech is not None and len(panels) > 1 and main not in length_of.values():
         panels.remove(main)  # a sheet of curvature panels has no separate posture panel
 
@@ -260,7 +274,8 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     # ---- extents and scales -------------------------------------------
     big = max_inches or (4.2 if many else 5.0)
     for p in panels:
-        pts = _content(src, p, painters)
+        pts = _content(src, p, painters,
+                       FAR_RESULT_PAPER if paper and p.name == "centers" else FAR_RESULT)
         if not pts:
             pts = [np.zeros(2)]
         arr = np.array(pts)
@@ -272,6 +287,10 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             room = 6.5
         room *= (grow or {}).get(p.name, 1.0)
         extent = max(float(ex), float(ey), 1e-12)
+        if p.plane in ("velocity", "acceleration") and p.name in painters and not paper:
+            # room enough for the shortest component to be measured (3 mm), up to twice it
+            room = room_for(extent, component_magnitudes(painters[p.name], p.plane), room,
+                            2.0 * room)
         p.scale = choose_scale(extent, room, paper_u, p.unit,
                                SERIES_125 if paper else NICE)
         k = p.k
@@ -323,6 +342,18 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             own = d == diagram or (diagram == "curvature" and d in CURVATURE_PANELS)
             _curvature_extras(src, length_of[d], d,  # type: ignore[arg-type]
                               upto if own else None)
+    firsts = [d for d in diagrams if d in CURVATURE_PANELS and length_of.get(d) is not None]
+    if firsts and lc_ is not None:
+        note = sheet_note(lc_, [d for d in diagrams if d in CURVATURE_PANELS],
+                          mechanism_extent(src), unit, diagram == "curvature",
+                          src.extras.get("conjugates_omitted", []))
+        if note:
+            _caption(length_of[firsts[0]], note)  # type: ignore[arg-type]
+    for p in panels:
+        if p.plane in ("velocity", "acceleration"):
+            note = short_note(p, short_components(p))
+            if note:
+                _caption(p, note, "short-components")
     for p in panels:
         if p.mechanism:
             _hold_anchors(p)
@@ -336,17 +367,54 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
             "curvature" if d in CURVATURE_PANELS else d for d in diagrams)))
         if upto is not None:
             rows = _reached(src, diagram, upto, rows)
-    sheet = Sheet(panels, (0.0, 0.0), title if title is not None else
-                  (mech.title if mech is not None and mech.title else
-                   (next(iter(src.constructions.values())).title if src.constructions
-                    else "")),
+        rows = _few_points(mech, rows)
+    name = title if title is not None else (
+        mech.title if mech is not None and mech.title else
+        (next(iter(src.constructions.values())).title if src.constructions else ""))
+    if name and lc_ is not None and any(p.name in CURVATURE_PANELS or p.name == "curvature"
+                                        for p in panels):
+        name = link_title(name, str(lc_.link))  # the sheet says whose motion it shows
+    sheet = Sheet(panels, (0.0, 0.0), name,
                   diagram, rows, {d: pp.prefix for d, pp in painters.items()}, painters)
     sheet.paper, sheet.width_cap = paper, width_cap
     _layout(sheet, legend)
     return sheet
 
 
-def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np.ndarray]:
+POINT_ROWS = 8
+"""The results table of a sheet lists at most this many coupler points (a coupler with 300
+lettered points would make a table of a thousand rows; the report has them all)."""
+
+
+def _few_points(mech: Any, rows: list[Row]) -> list[Row]:
+    """The rows of the first :data:`POINT_ROWS` coupler points, and one row saying how many more.
+
+    Joints (pins, slider and slot points) always keep their rows.
+    """
+    joints = {s.point for s in (*mech.sliders, *mech.slots)}
+    coupler = [n for n in mech.point_names
+               if len(mech.point_links[n]) == 1 and n not in joints
+               and FRAME not in mech.point_links[n] and n not in mech.helper_points]
+    if len(coupler) <= POINT_ROWS:
+        return rows
+    left = set(coupler[POINT_ROWS:])
+
+    def point_of(key: str) -> str:
+        for pre in ("R_", "V_", "A_"):
+            if key.startswith(pre):
+                return key[len(pre):]
+        if key.startswith("curvature-") and key.endswith("_"):
+            return key[len("curvature-"):-1]
+        return ""
+
+    kept = [r for r in rows if point_of(r.key) not in left]
+    kept.append(Row("more-points", f"… {len(left)} more points: graphkin solve", "", "", "",
+                    None))
+    return kept
+
+
+def _content(src: Source, p: Panel, painters: dict[str, StepPainter],
+             far_result: float = 4.0) -> list[np.ndarray]:
     """Every point a panel must show, in data units (the full construction, not ``upto``)."""
     pts: list[np.ndarray] = []
     allowed: tuple[float, float, float, float] | None = None
@@ -359,7 +427,7 @@ def _content(src: Source, p: Panel, painters: dict[str, StepPainter]) -> list[np
             size = max(float(np.max(hi - lo)), 1e-12)
             reach = FAR * size
             allowed = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
-            reach = FAR_RESULT * size
+            reach = far_result * size
             allowed_result = (lo[0] - reach, lo[1] - reach, hi[0] + reach, hi[1] + reach)
     if p.pole is not None:
         for painter in painters.values():
@@ -437,18 +505,7 @@ def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) ->
         cx = src.constructions.get("curvature")
         note = cx.steps[0].note if cx is not None and len(cx.steps) else ""
         if note:
-            # below the drawing, where the scale bar was (it moves down under the sentence),
-            # wrapped to the panel's width (at least 3 in: a narrow panel grows)
-            vx0, vy0, vx1, vy1 = p.view
-            room = max(p.size[0] - 0.3, 3.0)
-            text = _wrap_to(note, room, STYLES["caption"]["size"])
-            depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
-            grow = max(room + 0.3 - p.size[0], 0.0) * p.k
-            p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
-            g = p.group(f"{p.prefix}curvature-note", 6.0, key="curvature note")
-            g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
-                                "caption", gid=f"{p.prefix}curvature-note-text",
-                                text=text, ha="left", va="top", key="curvature note"))
+            _caption(p, note)
         return
     cubic = getattr(lc, "cubic", None)
     if d != "cubic" or cubic is None:
@@ -483,12 +540,36 @@ def _curvature_extras(src: Source, p: Panel, d: str, upto: int | None = None) ->
     _ball(lc, g, p, upto is None or upto >= found_u)
 
 
+def _caption(p: Panel, note: str, name: str = "curvature-note") -> None:
+    """A sentence below a panel's drawing, where the scale bar was (it moves down under it).
+
+    Wrapped to the panel's width (at least 3 in: a narrow panel grows).
+    """
+    vx0, vy0, vx1, vy1 = p.view
+    room = max(p.size[0] - 0.3, 3.0)
+    text = _wrap_to(note, room, STYLES["caption"]["size"])
+    depth = text_size(text, STYLES["caption"]["size"], "caption")[1]
+    grow = max(room + 0.3 - p.size[0], 0.0) * p.k
+    p.view = (vx0, vy0 - (depth + 0.2) * p.k, vx1 + grow, vy1)
+    key = name.replace("-", " ")
+    g = p.group(f"{p.prefix}{name}", 6.0, key=key)
+    g.items.append(Item("text", np.array([[vx0 + 0.15 * p.k, vy0 + 0.3 * p.k]]),
+                        "caption", gid=f"{p.prefix}{name}-text",
+                        text=text, ha="left", va="top", key=key))
+
+
 def _ball(lc: Any, g: Any, p: Panel, reached: bool) -> None:
     """Ball's point U as a ring (Fig. 4.39), once the construction has found it."""
     ball = getattr(lc, "ball_point", None)
     if reached and ball is not None and np.all(np.isfinite(ball)):
-        g.items.append(Item("marker", np.array([np.asarray(ball, dtype=float)[:2]]), "ball",
+        at = np.asarray(ball, dtype=float)[:2]
+        g.items.append(Item("marker", np.array([at]), "ball",
                             gid=f"{p.prefix}ball-point", key="Ball's point"))
+        x0, y0, x1, y1 = p.inner or p.view
+        if x0 <= at[0] <= x1 and y0 <= at[1] <= y1:  # named in words beside its ring
+            p.labels.append(LabelRequest("Ball's point", at, "label-small",
+                                         f"{p.prefix}label-ball-point", g,
+                                         key="Ball's point:label", gap=0.08))
 
 
 def _hold_anchors(p: Panel, reach: float = 1.0, clear: float = 0.3) -> None:

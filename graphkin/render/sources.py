@@ -99,6 +99,8 @@ def split_curvature(src: Source) -> list[str]:
         if name == "inflection":  # anything unfiled goes to the first panel
             keep |= {s.index for s in cx.steps if s.outputs[0] not in sections}
         keep -= placed
+        if name == "hartmann":
+            keep = _few_conjugates(src, cx, keep, sections)
         if not keep:
             continue
         placed |= keep
@@ -107,6 +109,33 @@ def split_curvature(src: Source) -> list[str]:
         src.extras[name] = lc
         out.append(name)
     return out
+
+
+CONJUGATES_DRAWN = 6
+"""At most this many points of a link have their conjugates constructed on figure (c): a
+coupler carrying 300 lettered points would bury the construction (the rest are in the
+report and the results table)."""
+
+
+def _few_conjugates(src: Source, cx: Construction, keep: set[int],
+                    sections: dict[str, str]) -> set[int]:
+    """The steps of figure (c) for the first :data:`CONJUGATES_DRAWN` points of the link.
+
+    Each point's construction begins with the step that places the point (no
+    inputs); the names of the points left out go to ``src.extras``
+    (``"conjugates_omitted"``) for the sheet's note.
+    """
+    groups: list[tuple[str, set[int]]] = []
+    for st in cx.steps:
+        if st.index not in keep:
+            continue
+        if not st.inputs or not groups:
+            groups.append((st.outputs[0], set()))
+        groups[-1][1].add(st.index)
+    if len(groups) <= CONJUGATES_DRAWN:
+        return keep
+    src.extras["conjugates_omitted"] = [n for n, _ in groups[CONJUGATES_DRAWN:]]
+    return set().union(*(g for _, g in groups[:CONJUGATES_DRAWN]))
 
 
 class DiagramUnavailable(GraphkinError, LookupError):

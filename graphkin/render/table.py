@@ -27,6 +27,7 @@ from typing import Any
 
 from graphkin.render.labels import text_size
 from graphkin.render.style import STYLES
+from graphkin.render.text import shown_size
 
 __all__ = ["Table", "measure", "table_size", "column_widths", "add_table", "folds_for", "ROW_H",
            "PAD"]
@@ -164,7 +165,8 @@ def add_table(fig: Any, t: Table, origin: tuple[float, float], size: tuple[float
 
     def text(xx: float, yy: float, s: str, style: str, tid: str, ha: str = "left") -> None:
         st = STYLES[style]
-        a = Text(xx, yy, s, fontsize=st.get("size", 7.0), family=st.get("family", "sans-serif"),
+        a = Text(xx, yy, s, fontsize=shown_size(s, st.get("size", 7.0)),
+                 family=st.get("family", "sans-serif"),
                  fontweight=st.get("weight", "normal"), ha=ha, va="center",
                  color=st.get("color", "k"))
         a.set_gid(tid)

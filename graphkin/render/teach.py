@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import html
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
@@ -232,8 +232,12 @@ def _classroom_type() -> Iterator[None]:
 
 
 def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
-                max_inches: float = FRAME_INCHES) -> list[str]:
-    """The drawing after each page step, its own construction steps highlighted (SVG texts)."""
+                max_inches: float = FRAME_INCHES,
+                progress: Callable[[float], None] | None = None) -> list[str]:
+    """The drawing after each page step, its own construction steps highlighted (SVG texts).
+
+    ``progress`` is told the fraction of the drawings made (a progress bar's callback).
+    """
     from graphkin.render.mpl import render_sheet
     from graphkin.render.sheet import build_sheet
     from graphkin.render.svg import to_svg
@@ -245,15 +249,26 @@ def page_frames(src: Any, diagram: str, steps: list[PageStep], *,
         src = replace(src, constructions={**src.constructions,
                                           diagram: Construction(kept,
                                                                 src.constructions[diagram].title)})
+    # a curvature page draws each step on its own figure only ((a) to (d), Figs. 4.25-4.39),
+    # a size larger: four figures a step made the figure hard to follow, and slow
+    owner: dict[int, str] = {}
+    if diagram == "curvature":
+        for name in split_curvature(src):
+            for i in getattr(src.constructions[name], "own", ()):
+                owner[i] = name
     out = []
     with _classroom_type():
         for ps in steps:
+            fig = next((owner[i] for i in (ps.main, *ps.steps) if i in owner), diagram)
             # the painter draws the steps numbered up to ps.main (steps keep their numbers)
-            sheet = build_sheet(src, diagram, upto=ps.main, highlight=set(ps.steps),
-                                table=False, legend=False, max_inches=max_inches, title="")
+            sheet = build_sheet(src, fig, upto=ps.main, highlight=set(ps.steps),
+                                table=False, legend=False, title="",
+                                max_inches=max_inches * (1.6 if fig != diagram else 1.0))
             d = render_sheet(sheet)
             assert d.figure is not None
             out.append(to_svg(d.figure))
+            if progress is not None:
+                progress(len(out) / len(steps))
     return out
 
 
@@ -460,7 +475,8 @@ def _step_section(ps: PageStep, k: int, n: int, svg: str) -> str:
 
 
 def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
-               title: str | None = None, max_inches: float = FRAME_INCHES) -> str:
+               title: str | None = None, max_inches: float = FRAME_INCHES,
+               progress: Callable[[float], None] | None = None) -> str:
     """The teaching page of a construction, as one self-contained HTML document.
 
     Every step has a title in words, the vector equation it solves or uses
@@ -490,6 +506,8 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     title : str, optional
     max_inches : float
         The largest side of a panel of the drawings.
+    progress : callable, optional
+        Told the fraction of the step drawings made (``graphkin steps`` shows a bar).
 
     Returns
     -------
@@ -509,7 +527,7 @@ def steps_html(obj: Any, diagram: str = "posture", *, link: str | None = None,
     src, cx = _construction(obj, diagram, link)
     scale = _scale_of(src, diagram, max_inches)
     told = narrate(src, diagram, scale)
-    svgs = page_frames(src, diagram, told, max_inches=max_inches)
+    svgs = page_frames(src, diagram, told, max_inches=max_inches, progress=progress)
     mech = src.mechanism
     name = title or (mech.title if mech is not None and mech.title else cx.title or diagram)
     results = _results_html(src, diagram)

@@ -78,6 +78,29 @@ def is_math(text: str) -> bool:
     return n > 0 and n % 2 == 0
 
 
+MIN_PT = 6.0
+"""The smallest type on any figure, in points (sub- and superscripts included)."""
+SCRIPT = 0.7
+"""mathtext's size of a sub- or superscript relative to its text."""
+
+
+def shown_size(text: str, size: float) -> float:
+    """The size (pt) a text is set at so that no glyph of it is under :data:`MIN_PT`.
+
+    A mathtext label with a subscript (``$R_{A}$``) sets its script at 0.7 of
+    the size: at 7 pt the ``A`` would be 4.9 pt, so such a text is set at
+    6/0.7 = 8.6 pt.
+
+    Examples
+    --------
+    >>> shown_size("B", 9.0), shown_size("B", 5.0), round(shown_size("$R_{A}$", 7.0), 2)
+    (9.0, 6.0, 8.57)
+    """
+    if is_math(text) and ("_" in text or "^" in text) and size * SCRIPT < MIN_PT:
+        return MIN_PT / SCRIPT
+    return max(size, MIN_PT)
+
+
 @lru_cache(maxsize=4096)
 def math_ok(text: str) -> bool:
     """True when a mathtext string parses (cached: the same labels recur on every sheet).

@@ -104,7 +104,20 @@ class _Build:
         return out
 
     def has(self, label: str) -> bool:
-        return label in self.env or any(label in s.outputs for s in self.cx.steps)
+        if label in self.env:
+            return True
+        # the outputs made so far, kept up to date as steps are added (a scan of every step on
+        # every call made 300 coupler points quadratic); rebuilt when the steps changed otherwise
+        steps = self.cx.steps
+        seen = getattr(self, "_made_outputs", None)
+        if seen is None or seen[0] is not self.cx or seen[1] > len(steps) or (
+                seen[1] and steps[seen[1] - 1] is not seen[2]):
+            seen = (self.cx, 0, None, set())
+        outs: set[str] = seen[3]
+        for st in steps[seen[1]:]:
+            outs.update(st.outputs)
+        self._made_outputs = (self.cx, len(steps), steps[-1] if steps else None, outs)
+        return label in outs
 
     def given(self, label: str, xy: Array, note: str) -> str:
         if not self.has(label):
