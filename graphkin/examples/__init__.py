@@ -32,7 +32,7 @@ if TYPE_CHECKING:
 
 __all__ = ["names", "text", "load", "fourbar", "crank_rocker", "slider_crank",
            "inverted_slider_crank", "coriolis_block", "fivebar", "cam_follower", "rapsons_slide",
-           "rolling_wheel", "planetary", "quick_return", "inline_engine"]
+           "rolling_wheel", "planetary", "quick_return", "inline_engine", "watt_sixbar"]
 
 
 def _data():  # type: ignore[no-untyped-def]
@@ -124,3 +124,8 @@ def quick_return() -> Mechanism:
 def inline_engine() -> Mechanism:
     """An in-line slider-crank at 1800 rev/min: crank 2 in, rod 8 in (the tutorial's)."""
     return load("inline_engine")
+
+
+def watt_sixbar() -> Mechanism:
+    """A Watt I six-bar (two adjacent ternary links) whose link 5 nearly translates here."""
+    return load("watt_sixbar")
