@@ -309,9 +309,7 @@ class _Parser:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")
         rolling_links = {r.link for r in mech.rolling}
-        for d in mech.drives:
-            # a drive relative to a rolling link is solved (its rates by the analytic
-            # solver, with a note: tests/kinematics/test_rolling_phase.py)
+        for d in mech.drives:  # (a drive relative to a rolling link is solved)
             if d.kind == "angle" and d.pivot is None and d.link in rolling_links:
                 raise self.fail(f"{d.key}.link", f"link {d.link} rolls and is not pinned to "
                                 "the frame: its absolute angle as the drive is not supported "
