@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from graphkin.render.scale import fmt
+from graphkin.render.stepper import PAGER_JS, frame_section
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
@@ -203,18 +204,9 @@ def forces_steps_html(obj: Any, title: str | None = None) -> str:
     for k, (step, svg) in enumerate(frames):
         eq = "" if step.equation is None else \
             f"<p class='eq'>{html.escape(str(step.equation))}</p>"
-        body = svg[svg.index("<svg"):]
-        parts.append(f"<section class='frame' id='step-{k}' style='display:"
-                     f"{'block' if k == 0 else 'none'}'><h2>Step {k + 1} of {n}: "
-                     f"{html.escape(step.label)}</h2>{eq}<p>{html.escape(step.note)}</p>"
-                     f"<div class='fig'>{body}</div></section>")
-    script = ("let k=0;const f=[...document.querySelectorAll('.frame')];"
-              "function show(i){k=Math.max(0,Math.min(f.length-1,i));"
-              "f.forEach((e,j)=>e.style.display=j===k?'block':'none');}"
-              "document.getElementById('prev').onclick=()=>show(k-1);"
-              "document.getElementById('next').onclick=()=>show(k+1);"
-              "document.addEventListener('keydown',e=>{if(e.key==='ArrowLeft')show(k-1);"
-              "if(e.key==='ArrowRight')show(k+1);});")
+        parts.append(frame_section(k, n, step.label, f"{eq}<p>{html.escape(step.note)}</p>",
+                                   svg))
+    script = PAGER_JS
     return ("<!DOCTYPE html><html><head><meta charset='utf-8'>"
             f"<title>Forces: {head}</title><style>body{{font-family:sans-serif;margin:1em}}"
             ".eq{font-family:monospace}.fig svg{max-width:100%;height:auto}</style></head>"

@@ -36,6 +36,7 @@ from graphkin.render.results import Row
 from graphkin.render.scale import NICE, choose_scale
 from graphkin.render.scene import Item, LabelRequest, Panel, clip_segment, inside_spans
 from graphkin.render.sheet import FOOT_H, MARGIN, TITLE_H, Sheet, _frame, _layout
+from graphkin.render.stepper import PAGER_JS, frame_section
 from graphkin.render.style import STYLES
 from graphkin.text import fmt
 
@@ -298,17 +299,8 @@ def gear_steps_html(lay: MeshLayout) -> str:
     n = len(frames)
     parts = []
     for k, (label, note, svg) in enumerate(frames):
-        parts.append(f"<section class='frame' id='step-{k}' style='display:"
-                     f"{'block' if k == 0 else 'none'}'><h2>Step {k + 1} of {n}: "
-                     f"{html.escape(label)}</h2><p>{html.escape(note)}</p>"
-                     f"<div class='fig'>{svg[svg.index('<svg'):]}</div></section>")
-    script = ("let k=0;const f=[...document.querySelectorAll('.frame')];"
-              "function show(i){k=Math.max(0,Math.min(f.length-1,i));"
-              "f.forEach((e,j)=>e.style.display=j===k?'block':'none');}"
-              "document.getElementById('prev').onclick=()=>show(k-1);"
-              "document.getElementById('next').onclick=()=>show(k+1);"
-              "document.addEventListener('keydown',e=>{if(e.key==='ArrowLeft')show(k-1);"
-              "if(e.key==='ArrowRight')show(k+1);});")
+        parts.append(frame_section(k, n, label, f"<p>{html.escape(note)}</p>", svg))
+    script = PAGER_JS
     return ("<!DOCTYPE html><html><head><meta charset='utf-8'>"
             f"<title>Gears: {head}</title><style>body{{font-family:sans-serif;margin:1em}}"
             ".fig svg{max-width:100%;height:auto}</style></head>"
