@@ -43,11 +43,19 @@ from typing import Any
 from graphkin.files import load_toml
 from graphkin.tolerance import VERDICT_REL
 
-__all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS"]
+__all__ = ["Entry", "discover", "build", "check", "structure", "compact_svg", "FOLDERS", "CHAPTERS"]
 
 FOLDERS = {"mechanisms": None, "centers": "centers", "curvature": "curvature"}
 """Gallery folders of mechanism files, and the diagram drawn by default for each
 (None: ``velocity`` and ``acceleration`` when the file gives rates, else ``posture``)."""
+
+CHAPTERS = {"cams": "graphkin.render.gallery_cams", "gears": "graphkin.render.gallery_gears",
+            "synthesis": "graphkin.render.gallery_synthesis"}
+"""Gallery folders of the design chapters' own files (cam, gear and synthesis files),
+and the module that renders each: ``render_entry(entry) -> (drawings, info)`` with
+``drawings`` name -> compact SVG bytes and ``info`` holding ``title`` and ``solution``
+(the dict the ``[[gallery.book]]`` paths are looked up in). A folder that does not
+exist is skipped, and its module is imported only when the folder has files."""
 
 _NUM = re.compile(r"-?\d+\.\d{3,}")
 _D = re.compile(r'(\sd=")([^"]*)(")')
@@ -98,13 +106,13 @@ def discover(root: str | Path) -> list[Entry]:
 
     root = Path(root)
     out = []
-    for folder in FOLDERS:
+    for folder in [*FOLDERS, *CHAPTERS]:
         for p in sorted((root / folder).glob("*.toml"), key=_natural):
             if not _within(root, p) or not p.is_file():
                 raise InputError("a link out of the gallery folder (or not a regular file); "
                                  "the gallery reads only its own files", file=str(p))
             data = load_toml(p)  # bounded; a malformed file is one InputError naming it
-            if "links" not in data:
+            if folder in FOLDERS and "links" not in data:
                 continue
             out.append(Entry(p, folder, dict(data.get("gallery", {}))))
     return out
@@ -376,7 +384,12 @@ def _generate(root: Path) -> tuple[dict[str, bytes], str, dict[str, Any]]:
     results: dict[str, dict[str, Any]] = {}
     names: dict[str, list[str]] = {}
     for e in track(entries, "gallery", unit="figure"):
-        drawings, info = _render(e)
+        if e.folder in CHAPTERS:
+            import importlib
+
+            drawings, info = importlib.import_module(CHAPTERS[e.folder]).render_entry(e)
+        else:
+            drawings, info = _render(e)
         for k, v in _from_title(info["title"] or "").items():
             e.meta.setdefault(k, v)
         files.update(drawings)
