@@ -51,7 +51,7 @@ from graphkin.check.answers import (
     SheetScale,
     read_scale,
 )
-from graphkin.check.compare import fmt
+from graphkin.check.compare import direction_text, fmt
 from graphkin.check.diagnose import Diagnoser
 from graphkin.check.exact import Evaluator
 from graphkin.check.fit import Fit, fit_factor
@@ -303,10 +303,17 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         prefer = [n for n in names if (on_link[n][1] in drive_links if n in on_link else
                                        set(mech.point_links.get(n, ())) & drive_links)]
 
+        name_of = {label_of[n]: n for n in names}
+
         def fit_now() -> Fit:
-            return fit_factor(names, [complex(*drawn[n]) for n in names],
-                              [complex(*np.asarray(exact_of(n), dtype=float)) for n in names],
-                              relative=tol.relative, sheet=sheet_du, turn=fixed, prefer=prefer)
+            # fitted by the labels as drawn, so that its reasons name them so
+            f = fit_factor([label_of[n] for n in names], [complex(*drawn[n]) for n in names],
+                           [complex(*np.asarray(exact_of(n), dtype=float)) for n in names],
+                           relative=tol.relative, sheet=sheet_du, turn=fixed,
+                           prefer=[label_of[n] for n in prefer])
+            f.used = [name_of[t] for t in f.used]
+            f.left_out = {name_of[t]: why for t, why in f.left_out.items()}
+            return f
 
         fit = fit_now()
         moved = _rematch(poly, label_of, drawn, exact_of, fit.factor, tol, sheet_du)
@@ -316,6 +323,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         turn = fit.factor
         unit, factor = _default(kind, lu), 1.0
         deg = math.degrees(math.atan2(turn.imag, turn.real))
+        turned = direction_text(deg)          # in (-180, 180]: never "-180.00°"
+        turned = turned if turned.startswith("-") else "+" + turned
         used = ", ".join(label_of[n] for n in fit.used)
         out = f" ({', '.join(label_of[n] for n in fit.left_out)} left out)" if fit.left_out \
             else ""
@@ -323,7 +332,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             if len(fit.used) == 1:
                 fitted = fit.used[0]
             how = (f"scale and turn fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} "
-                   f"{unit}, turned {deg:+.2f}°")
+                   f"{unit}, turned {turned}")
             if abs(deg) > 150.0:
                 notes.append("the polygon is turned about 180° to fit: nothing on the sheet "
                              "gives the directions (no scale noted, no mechanism drawn beside "
@@ -332,7 +341,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                              "sheet to have the sense checked")
         else:
             how = (f"scale fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} {unit}, "
-                   + (f"turned {deg:+.2f}° as {whose} directions" if abs(deg) >= 0.005
+                   + (f"turned {turned} as {whose} directions" if abs(deg) >= 0.005
                       else f"not turned ({whose} directions)"))
         for n, why in fit.left_out.items():
             notes.append(f"{label_of[n]} left out of the fit: {why}")
