@@ -19,11 +19,17 @@ images).  What is read:
 The drawing's scale comes from ``--scale "1 in = 20 ft/s"`` or a scale note in
 the drawing; its axes are then the mechanism's and it is **not** turned to fit
 (a polygon drawn for the wrong sense of the input's ω fails).  Without a
-scale, the scale and orientation are fitted by least squares over every
-labelled image point (with one point only, that point is right by
-construction).  Each image point is then read as a vector from the pole and
-checked like a measured answer, within 2 % and 2° or within 0.5 mm on the
-sheet (``--drawing-tolerance``) when the drawing's paper unit is known.
+scale, the scale (and the turn, when nothing on the sheet gives the
+directions) is fitted robustly (:mod:`graphkin.check.fit`): the images that
+agree on one scale fix it, and one or two wrong images are left out of the
+fit, each with the reason in the report.  The mechanism drawn on the same
+sheet (its joints labelled ``A``, ``B`` ...) gives the directions: the
+polygon is then not turned to fit.  A label that stands nearer another line
+end than its own is read at the end near it where the polygon puts its image
+(within the marking tolerance).  Each image point is then read as a vector
+from the pole and checked like a measured answer, within 2 % and 2° or within
+0.5 mm on the sheet (``--drawing-tolerance``) when the drawing's paper unit is
+known.
 
 Limits: a drawing file of at most 20 MB, SVG groups nested at most 200 deep.
 
@@ -144,7 +150,8 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
         ``.dxf`` or ``.svg``.
     scale : str, optional
         ``"1 in = 20 ft/s"``; default: the drawing's own scale note, else
-        scale and orientation fitted by least squares.
+        the scale (and the turn, unless the mechanism drawn on the sheet
+        gives it) fitted robustly to the images that agree.
     tolerance : CheckTolerance, optional
         Its ``drawing`` length (default 0.5 mm) applies when the drawing's
         paper unit is known.
@@ -304,12 +311,14 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                                        set(mech.point_links.get(n, ())) & drive_links)]
 
         name_of = {label_of[n]: n for n in names}
+        # an image agrees with a fit when it would be marked right by it (2 % and 2°)
+        inlier = min(tol.relative, math.sin(math.radians(min(tol.angle, 90.0))))
 
         def fit_now() -> Fit:
             # fitted by the labels as drawn, so that its reasons name them so
             f = fit_factor([label_of[n] for n in names], [complex(*drawn[n]) for n in names],
                            [complex(*np.asarray(exact_of(n), dtype=float)) for n in names],
-                           relative=tol.relative, sheet=sheet_du, turn=fixed,
+                           relative=inlier, sheet=sheet_du, turn=fixed,
                            prefer=[label_of[n] for n in prefer])
             f.used = [name_of[t] for t in f.used]
             f.left_out = {name_of[t]: why for t, why in f.left_out.items()}
