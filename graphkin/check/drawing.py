@@ -302,7 +302,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             raise InputError("give the drawing's scale (--scale \"1 in = 20 ft/s\") or label "
                              "image points away from the pole, to fit it", file=path_s)
         sheet_du = float(tol.drawing or 0.0) / mm_per_unit if mm_per_unit else 0.0
-        given_turn, whose = (poly.turn, "the sheet's") if poly.turn is not None else \
+        given_turn, whose = (poly.turn, "the sheet") if poly.turn is not None else \
             _sheet_turn(poly, sol, notes)
         fixed = None if given_turn is None else complex(math.cos(given_turn),
                                                         -math.sin(given_turn))
@@ -350,8 +350,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                              "sheet to have the sense checked")
         else:
             how = (f"scale fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} {unit}, "
-                   + (f"turned {turned} as {whose} directions" if abs(deg) >= 0.005
-                      else f"not turned ({whose} directions)"))
+                   + (f"turned {turned}" if abs(deg) >= 0.005 else "not turned")
+                   + f": {whose} gives the directions")
         for n, why in fit.left_out.items():
             notes.append(f"{label_of[n]} left out of the fit: {why}")
         if not fit.agreed and len(names) > 1:
