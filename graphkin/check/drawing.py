@@ -311,8 +311,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                                        set(mech.point_links.get(n, ())) & drive_links)]
 
         name_of = {label_of[n]: n for n in names}
-        # an image agrees with a fit when it would be marked right by it (2 % and 2°)
-        inlier = min(tol.relative, math.sin(math.radians(min(tol.angle, 90.0))))
+        inlier = _inlier(tol)
 
         def fit_now() -> Fit:
             # fitted by the labels as drawn, so that its reasons name them so
@@ -330,6 +329,9 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             notes += moved
             fit = fit_now()
         turn = fit.factor
+        if not (math.isfinite(abs(turn)) and abs(turn) > 0.0):
+            raise InputError("the drawing's scale cannot be fitted: its sizes are out of range "
+                             "(give --scale)", file=path_s)
         unit, factor = _default(kind, lu), 1.0
         deg = math.degrees(math.atan2(turn.imag, turn.real))
         turned = direction_text(deg)          # in (-180, 180]: never "-180.00°"
@@ -410,6 +412,15 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
 _MM_PER = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "ft": 304.8}
 
 
+def _inlier(tol: CheckTolerance) -> float:
+    """How near its exact place (a fraction of its size) an image is right by any rule.
+
+    A circle of this radius lies within both 2 % of magnitude and 2° of
+    direction: an image inside it agrees with the fit.
+    """
+    return min(tol.relative, math.sin(math.radians(min(tol.angle, 90.0))))
+
+
 def _sheet_turn(poly: Polygon, sol: Solution, notes: list[str]) -> tuple[float | None, str]:
     """The turn of the sheet's directions, from the mechanism drawn beside the polygon.
 
@@ -459,15 +470,20 @@ def _rematch(poly: Polygon, label_of: dict[str, str], drawn: dict[str, np.ndarra
     """
     notes: list[str] = []
     pole = np.array(poly.pole)
-    taken = {tuple(np.round(v, 12)) for v in drawn.values()}
+    size = max(float(np.hypot(*v)) for v in drawn.values())
+
+    def taken(v: np.ndarray) -> bool:   # the pole, or a line end another label names
+        return float(np.hypot(*v)) <= 1e-9 * size or any(
+            float(np.hypot(*(v - w))) <= 1e-9 * size for w in drawn.values())
+
     for name, lab in label_of.items():
         e = complex(*np.asarray(exact_of(name), dtype=float))
-        radius = max(tol.relative * abs(e), sheet_du * abs(k))
+        radius = max(_inlier(tol) * abs(e), sheet_du * abs(k))
         if abs(k * complex(*drawn[name]) - e) <= radius:
             continue
         for xy in poly.candidates.get(lab, ()):
             v = np.array(xy) - pole
-            if tuple(np.round(v, 12)) in taken or abs(k * complex(*v) - e) > radius:
+            if taken(v) or abs(k * complex(*v) - e) > radius:
                 continue
             notes.append(f"{lab} read at the line end where the polygon puts it (its label "
                          "stands nearer another line end)")

@@ -160,6 +160,9 @@ def fit_factor(names: Sequence[str], drawn: Sequence[complex], exact: Sequence[c
     e = np.asarray(exact, dtype=complex)
     if not (len(d) == len(e) == len(names)) or not len(d):
         raise ValueError("one drawn and one exact vector per image")
+    # fitted on vectors scaled to at most 1 (no squares of 1e200 overflowing), scaled back
+    big_d, big_e = float(np.max(np.abs(d))), float(np.max(np.abs(e)))
+    d, e, sheet = d / big_d, e / big_e, sheet / big_d
     u = None if turn is None else complex(turn) / abs(turn)
     sets = _proposals(len(d))
     k = _least_squares(d, e, sets, u)
@@ -180,7 +183,7 @@ def fit_factor(names: Sequence[str], drawn: Sequence[complex], exact: Sequence[c
         if not len(now) or set(now) == set(used):
             break
         used = now
-    factor = complex(_least_squares(d, e, [tuple(used)], u)[0])
+    factor = complex(_least_squares(d, e, [tuple(used)], u)[0]) * (big_e / big_d)
     fit = Fit(factor, [names[int(i)] for i in used], fixed_turn=u is not None,
               agreed=len(used) >= 2 or len(d) == 1)
     agree = ", ".join(fit.used)
@@ -188,7 +191,8 @@ def fit_factor(names: Sequence[str], drawn: Sequence[complex], exact: Sequence[c
     by = f"that {agree} agree on" if len(used) >= 2 else f"taken from {agree}"
     for i in range(len(d)):
         if i not in set(used.tolist()):
-            fit.left_out[names[i]] = f"{_how_off(factor * d[i], e[i], u is not None)} " \
+            z = complex(_least_squares(d, e, [tuple(used)], u)[0]) * d[i]
+            fit.left_out[names[i]] = f"{_how_off(z, e[i], u is not None)} " \
                                      f"for {what} {by}"
     return fit
 
