@@ -289,3 +289,49 @@ def test_c_labels_standing_away_are_read_at_their_vertices(fourbar: Path,
     rep = check_drawing(mech.solve(), path)
     assert {r.key: r.verdict for r in rep.rows} == marks, rep.text()
     assert "not turned" in rep.title
+
+
+# ---- the pole, two images that disagree, a drawing of huge numbers --------------------------
+
+def test_the_pole_is_where_the_vectors_start() -> None:
+    from graphkin.check.polygon import find_polygons
+    from graphkin.io.dxf import DrawingData
+
+    # o_v at (0, 0) with three vectors out of it; the closing line from b stops 3.6 mm
+    # from the pole, and the pole's label stands nearer that line's end than the pole
+    data = DrawingData(segments=[((0.0, 0.0), (50.0, 0.0)), ((0.0, 0.0), (0.0, 50.0)),
+                                 ((0.0, 0.0), (-40.0, -30.0)), ((50.0, 0.0), (2.0, -3.0))],
+                       labels=[("O_V", (1.0, -2.2)), ("b", (51.0, 1.0)), ("c", (1.0, 51.0))])
+    (poly,) = find_polygons(data, "<sheet>")
+    assert math.hypot(1.0 - 2.0, -2.2 + 3.0) < math.hypot(1.0, -2.2)
+    assert poly.pole == (0.0, 0.0)
+
+
+def test_two_images_that_disagree_take_the_cranks_scale(fourbar: Path,
+                                                        velocities: dict[str, np.ndarray]
+                                                        ) -> None:
+    from graphkin.check.drawing import check_polygons
+    from graphkin.check.polygon import Polygon
+
+    # b drawn right at 1 mm = 10 in/s, c 10 % long: nothing says which is right, so the
+    # scale is the crank's (the student lays off V_B = ω2 R_BA first), c is wrong
+    pts = {"b": tuple(velocities["b"] / 10.0), "c": tuple(1.1 * velocities["c"] / 10.0)}
+    rep = check_polygons(graphkin.load(fourbar).solve(),
+                         [Polygon("velocity", (0.0, 0.0), pts, unit="mm")], "<sheet>")
+    assert [(r.key, r.verdict) for r in rep.rows] == [("V_B", "fit"), ("V_C", "WRONG")]
+    assert "no two image points agree on one scale: it was taken from b, the image of the " \
+           "input link" in rep.notes
+
+
+def test_a_drawing_of_huge_numbers_is_fitted(fourbar: Path,
+                                             velocities: dict[str, np.ndarray]) -> None:
+    from graphkin.check.drawing import check_polygons
+    from graphkin.check.polygon import Polygon
+
+    # 1 drawing unit = 1e-200 in/s: the squares of the coordinates are not floats
+    pts = {k: tuple(v * 1e200) for k, v in velocities.items()}
+    rep = check_polygons(graphkin.load(fourbar).solve(),
+                         [Polygon("velocity", (3e200, -1e200), {
+                             k: (x + 3e200, y - 1e200) for k, (x, y) in pts.items()})],
+                         "<sheet>")
+    assert rep.ok and len(rep.counted) == 4, rep.text()
