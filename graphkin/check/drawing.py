@@ -452,8 +452,9 @@ def _sheet_turn(poly: Polygon, sol: Solution, notes: list[str]) -> tuple[float |
     a = complex(np.sum(np.conj(wc) * dc) / den)
     miss = float(np.sqrt(np.mean(np.abs(dc - a * wc) ** 2)))
     if not miss <= 0.01 * spread:
-        notes.append(f"the mechanism drawn on the sheet ({', '.join(seen)}) does not match "
-                     "the file's posture, so it does not give the polygon's directions")
+        notes.append(f"the mechanism drawn on the sheet ({', '.join(seen)}, each read at the "
+                     "line end nearest its label) does not match the file's posture, so it "
+                     "does not give the polygon's directions: the turn was fitted")
         return None, ""
     return math.atan2(a.imag, a.real), f"the mechanism drawn on the sheet ({', '.join(seen)})"
 

@@ -4,7 +4,12 @@ graphkin's own drawings are read by their group ids (the ``panel-…`` and
 ``step-…`` groups); a drawing made in CAD or by hand by its geometry: the
 vertices are the ends of the polygon's long segments (arrowheads are too
 short to count; a polyline's collinear pieces are one segment), and each
-label names the nearest vertex of the connected polygon that holds the pole.
+label names the nearest vertex of the connected polygon that holds the pole
+(the other vertices near it are kept as its ``candidates``: the check reads
+the label at one of them when that one, not the nearest, is where the
+polygon puts the image).  The pole is the vertex near its label where most
+lines meet; the labels elsewhere on the sheet are kept too (the mechanism
+drawn beside the polygon gives the sheet's directions).
 
 References
 ----------

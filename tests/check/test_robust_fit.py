@@ -25,6 +25,7 @@ import pytest
 
 import graphkin
 from graphkin.check.drawing import check_drawing
+from graphkin.cli import main
 from graphkin.kinematics.analytic import solve_analytic
 
 PAGE_H = 297.0  # mm: an A4 sheet, Inkscape's y axis points down from its top
@@ -131,7 +132,8 @@ def velocities(fourbar: Path) -> dict[str, np.ndarray]:
 
 
 def test_a_one_long_vertex_does_not_move_the_fit(fourbar: Path, tmp_path: Path,
-                                                 velocities: dict[str, np.ndarray]) -> None:
+                                                 velocities: dict[str, np.ndarray],
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
     # c drawn 10 % long (|V_C| = 544.5 in/s drawn as 598.9): b, e, f are exactly right, at
     # 1 mm = 10 in/s, the sheet not turned and no scale written on it
     v = dict(velocities)
@@ -146,6 +148,11 @@ def test_a_one_long_vertex_does_not_move_the_fit(fourbar: Path, tmp_path: Path,
     assert "fitted to b, e, f (c left out): 1 drawing unit = 10 in/s, turned +0.00°" in rep.title
     assert "c left out of the fit: drawn 10.0 % too long for the scale and turn that b, e, f " \
            "agree on" in rep.notes
+    # the command: exit 1 (an answer wrong), the reason on its own line
+    assert main(["check", str(fourbar), "--drawing", str(svg)]) == 1
+    out = capsys.readouterr().out
+    assert "3 of 4 within tolerance, 1 wrong (V_C: unexplained)." in out
+    assert "note: c left out of the fit: drawn 10.0 % too long" in out
     # the other two wrong as well (c 10 % long, e 6 % short): b and f still fix the fit
     v["e"] = 0.94 * velocities["e"]
     sheet = Inkscape()
