@@ -15,12 +15,13 @@ import math
 import numpy as np
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from strategies import RandomMechanism, fourbars
+from strategies import RandomMechanism, fourbars, mechanisms
 
 from graphkin.check import CheckTolerance
 from graphkin.check.drawing import check_polygons
 from graphkin.check.fit import fit_factor
 from graphkin.check.polygon import Polygon
+from graphkin.kinematics.analytic import solve_analytic
 
 SETTINGS = settings(max_examples=20, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
@@ -142,3 +143,50 @@ def test_the_fit_is_the_majoritys_whatever_the_order() -> None:
     # two images that disagree: the input link's image wins the tie
     fit = fit_factor(["b", "c"], [1.0, 1.1], [1.0, 1.0], relative=0.02, prefer=["c"])
     assert fit.used == ["c"] and not fit.agreed
+
+
+@settings(max_examples=20, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@given(mechanisms(), _turns, _lengths, _poles, st.floats(0.05, 0.10), st.data())
+def test_any_mechanisms_polygons_right_and_one_planted_mistake_named(
+        rm: RandomMechanism, turn: float, longest: float, at: tuple[float, float],
+        wrong_by: float, data: st.DataObject) -> None:
+    """Both polygons of any random mechanism, drawn from the analytic solver (loop closure)."""
+    mech = rm.mechanism()
+    if not mech.has_rates:
+        return
+    an = solve_analytic(mech)
+    sol = mech.solve()
+    drive = {d.link for d in mech.drives}
+    moving = [n for n in mech.point_names if n not in mech.helper_points]
+    for diagram, of, prime in (("velocity", an.velocity, ""),
+                               ("acceleration", an.acceleration, "'")):
+        if diagram == "acceleration" and not mech.has_accelerations:
+            continue
+        v = {n: np.asarray(of(n), dtype=float) for n in moving}
+        big = max(float(np.hypot(*x)) for x in v.values())
+        v = {n: x for n, x in v.items() if float(np.hypot(*x)) > 0.05 * big}
+        mm_per = longest / big
+        pole = np.array(at)
+        drawn = _draw(v, turn, mm_per, pole)
+        poly = Polygon(diagram, (float(pole[0]), float(pole[1])),
+                       {n.lower() + prime: xy for n, xy in drawn.items()}, unit="mm")
+        rep = check_polygons(sol, [poly], "<drawn>")
+        assert rep.ok, rep.text()
+        # one image off the input link drawn 5-10 % long, with three or more images drawn
+        free = [n for n in v if not set(mech.point_links.get(n, ())) & drive]
+        if len(v) < 3 or not free:
+            continue
+        bad = data.draw(st.sampled_from(free))
+        # long enough on the sheet that 5 % of it is over the 0.5 mm drawing tolerance
+        grow = max(1.0, 20.0 / (float(np.hypot(*v[bad])) * mm_per))
+        drawn = _draw({n: x * (1.0 + wrong_by) if n == bad else x for n, x in v.items()},
+                      turn, mm_per * grow, pole)
+        poly = Polygon(diagram, (float(pole[0]), float(pole[1])),
+                       {n.lower() + prime: xy for n, xy in drawn.items()}, unit="mm")
+        rep = check_polygons(sol, [poly], "<drawn>")
+        letter = "V" if diagram == "velocity" else "A"
+        for r in rep.rows:
+            right = r.key != f"{letter}_{bad}"
+            assert (r.verdict == "ok") == right, rep.text()
+        assert any(n.startswith(f"{bad.lower()}{prime} left out of the fit") for n in rep.notes)
