@@ -67,7 +67,7 @@ from graphkin.check.svg import _NUM, MAX_DEPTH, read_drawing, read_svg
 from graphkin.errors import InputError
 from graphkin.kinematics.solution import Solution
 
-__all__ = ["read_drawing", "read_svg", "parse_scale", "check_drawing", "Polygon",
+__all__ = ["read_drawing", "read_svg", "parse_scale", "check_drawing", "check_polygons", "Polygon",
            "read_polygons", "find_polygons", "MAX_DEPTH"]
 
 _KIND = {"velocity": "velocity", "acceleration": "acceleration"}

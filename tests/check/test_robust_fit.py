@@ -342,3 +342,35 @@ def test_a_drawing_of_huge_numbers_is_fitted(fourbar: Path,
                              k: (x + 3e200, y - 1e200) for k, (x, y) in pts.items()})],
                          "<sheet>")
     assert rep.ok and len(rep.counted) == 4, rep.text()
+
+
+def test_b_in_a_dxf_the_mechanism_beside_the_polygon_gives_the_directions(
+        fourbar: Path, tmp_path: Path, velocities: dict[str, np.ndarray]) -> None:
+    ezdxf = pytest.importorskip("ezdxf")
+    an = solve_analytic(graphkin.load(fourbar))
+    for sense in (1.0, -1.0):
+        doc = ezdxf.new()
+        doc.header["$INSUNITS"] = 4
+        msp = doc.modelspace()
+        pole = np.array([200.0, 100.0])                   # 1 mm = 10 in/s, not turned
+        for k, x in velocities.items():
+            tip = pole + sense * x / 10.0
+            msp.add_line(tuple(pole), tuple(tip))
+            msp.add_text(k, height=2.5).set_placement(tuple(tip + np.array([1.0, 1.0])))
+        msp.add_text("OV", height=2.5).set_placement(tuple(pole + np.array([-5.0, -2.0])))
+        # the linkage at 1 in = 4 mm, its joints labelled as the book labels them
+        p = {n: np.asarray(an.position(n), dtype=float) * 4.0 for n in "ABCD"}
+        for a, b in (("A", "B"), ("B", "C"), ("C", "D")):
+            msp.add_line(tuple(p[a]), tuple(p[b]))
+        for n, q in p.items():
+            msp.add_text(n, height=2.5).set_placement(tuple(q + np.array([0.7, 0.7])))
+        path = tmp_path / f"v{sense:+.0f}.dxf"
+        doc.saveas(path)
+        rep = check_drawing(graphkin.load(fourbar).solve(), path)
+        codes = {r.key: r.code for r in rep.rows}
+        if sense > 0:
+            assert rep.ok and "not turned: the mechanism drawn on the sheet (A, B, C, D)" \
+                in rep.title, rep.text()
+        else:
+            assert codes == {"V_B": "sense", "V_C": "follows:V_B", "V_E": "follows:V_B",
+                             "V_F": "follows:V_B"}, rep.text()
