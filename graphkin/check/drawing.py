@@ -346,10 +346,10 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                    f"{unit}, turned {turned}")
             if abs(deg) > 150.0:
                 notes.append("the polygon is turned about 180° to fit: nothing on the sheet "
-                             "gives the directions (no scale noted, no mechanism drawn beside "
-                             "it), so a polygon drawn for the reversed sense of the input's ω "
-                             "would fit as well; give --scale or draw the mechanism on the "
-                             "sheet to have the sense checked")
+                             "gives the directions (neither a scale nor the mechanism drawn "
+                             "beside it), so a polygon drawn for the reversed sense of the "
+                             "input's ω would fit as well; give --scale or draw the mechanism "
+                             "on the sheet to have the sense checked")
         else:
             how = (f"scale fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} {unit}, "
                    + (f"turned {turned}" if abs(deg) >= 0.005 else "not turned")
