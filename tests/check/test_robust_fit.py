@@ -141,6 +141,11 @@ def test_a_one_long_vertex_does_not_move_the_fit(fourbar: Path, tmp_path: Path,
     sheet = Inkscape()
     _velocity_polygon(sheet, v, np.array([120.0, 150.0]), 0.1)
     svg = sheet.save(tmp_path / "velocity.svg")
+    # the arrow marker defined in <defs> is drawn at each arrow's end, not at the page's corner
+    from graphkin.check.svg import read_drawing
+
+    drawn = [xy for stroke in read_drawing(svg).strokes for xy in stroke]
+    assert len(drawn) == 2 * 8 and min(x for x, _ in drawn) > 50.0
     rep = check_drawing(graphkin.load(fourbar).solve(), svg)
     marks = {r.key: r.verdict for r in rep.rows}
     assert marks == {"V_B": "ok", "V_C": "WRONG", "V_E": "ok", "V_F": "ok"}
