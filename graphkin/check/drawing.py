@@ -19,11 +19,17 @@ images).  What is read:
 The drawing's scale comes from ``--scale "1 in = 20 ft/s"`` or a scale note in
 the drawing; its axes are then the mechanism's and it is **not** turned to fit
 (a polygon drawn for the wrong sense of the input's ω fails).  Without a
-scale, the scale and orientation are fitted by least squares over every
-labelled image point (with one point only, that point is right by
-construction).  Each image point is then read as a vector from the pole and
-checked like a measured answer, within 2 % and 2° or within 0.5 mm on the
-sheet (``--drawing-tolerance``) when the drawing's paper unit is known.
+scale, the scale (and the turn, when nothing on the sheet gives the
+directions) is fitted robustly (:mod:`graphkin.check.fit`): the images that
+agree on one scale fix it, and one or two wrong images are left out of the
+fit, each with the reason in the report.  The mechanism drawn on the same
+sheet (its joints labelled ``A``, ``B`` ...) gives the directions: the
+polygon is then not turned to fit.  A label that stands nearer another line
+end than its own is read at the end near it where the polygon puts its image
+(within the marking tolerance).  Each image point is then read as a vector
+from the pole and checked like a measured answer, within 2 % and 2° or within
+0.5 mm on the sheet (``--drawing-tolerance``) when the drawing's paper unit is
+known.
 
 Limits: a drawing file of at most 20 MB, SVG groups nested at most 200 deep.
 
@@ -51,16 +57,17 @@ from graphkin.check.answers import (
     SheetScale,
     read_scale,
 )
-from graphkin.check.compare import fmt
+from graphkin.check.compare import direction_text, fmt
 from graphkin.check.diagnose import Diagnoser
 from graphkin.check.exact import Evaluator
+from graphkin.check.fit import Fit, fit_factor
 from graphkin.check.polygon import Polygon, find_polygons, read_polygons
 from graphkin.check.report import FIT, Report, Row, check_given, follow_through, printable
 from graphkin.check.svg import _NUM, MAX_DEPTH, read_drawing, read_svg
 from graphkin.errors import InputError
 from graphkin.kinematics.solution import Solution
 
-__all__ = ["read_drawing", "read_svg", "parse_scale", "check_drawing", "Polygon",
+__all__ = ["read_drawing", "read_svg", "parse_scale", "check_drawing", "check_polygons", "Polygon",
            "read_polygons", "find_polygons", "MAX_DEPTH"]
 
 _KIND = {"velocity": "velocity", "acceleration": "acceleration"}
@@ -143,7 +150,8 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
         ``.dxf`` or ``.svg``.
     scale : str, optional
         ``"1 in = 20 ft/s"``; default: the drawing's own scale note, else
-        scale and orientation fitted by least squares.
+        the scale (and the turn, unless the mechanism drawn on the sheet
+        gives it) fitted robustly to the images that agree.
     tolerance : CheckTolerance, optional
         Its ``drawing`` length (default 0.5 mm) applies when the drawing's
         paper unit is known.
@@ -161,11 +169,48 @@ def check_drawing(sol: Solution, path: str | Path, *, scale: str | None = None,
         Unreadable drawing, no pole label, no image point, no scale and no
         image point to fit.
     """
-    path_s = str(path)
+    polys = read_polygons(path)
+    return check_polygons(sol, polys, path, scale=scale, tolerance=tolerance,
+                          diagnoser=diagnoser)
+
+
+def check_polygons(sol: Solution, polys: list[Polygon], source: str | Path, *,
+                   scale: str | None = None, tolerance: CheckTolerance | None = None,
+                   diagnoser: Diagnoser | None = None) -> Report:
+    """Check polygons already read (a pole and labelled image points each) against the exact ones.
+
+    The marking behind :func:`check_drawing`, for polygons read from anything
+    (a CAD file, a scanned worksheet): each image point is a vector from the
+    pole, the scale and turn are the stated ones or fitted robustly
+    (:func:`graphkin.check.fit.fit_factor`), and each vector is checked like a
+    measured answer, with the usual mistakes named and follow-through.
+
+    Parameters
+    ----------
+    sol : Solution
+    polys : list of Polygon
+        ``Polygon(diagram, pole, points, scale=..., unit=..., turn=...)``:
+        coordinates on paper (y up) in ``unit`` (``"mm"``, ``"in"``...; ``None``
+        when unknown: then the drawing tolerance does not apply); ``turn`` the
+        angle the sheet is drawn turned by, when the sheet gives it.
+    source : str or Path
+        The file named in the report and in errors.
+    scale, tolerance, diagnoser
+        As for :func:`check_drawing`.
+
+    Returns
+    -------
+    Report
+
+    Raises
+    ------
+    InputError
+        No polygon, no image point named, no scale and no image point to fit.
+    """
+    path_s = str(source)
     tol = tolerance or CheckTolerance()
     if tol.drawing is None:
         tol = dataclasses.replace(tol, drawing=0.5)
-    polys = read_polygons(path)
     if not polys:
         raise InputError("label the pole of the polygon O_V (velocity) or O_A (acceleration)",
                          file=path_s)
@@ -201,6 +246,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     pole = np.array(poly.pole)
     drawn: dict[str, np.ndarray] = {}
     on_link: dict[str, tuple[str, str]] = {}
+    label_of: dict[str, str] = {}
     ignored = list(poly.ignored)
     helper_names = {n.upper() for n in helpers}
     for lab, xy in poly.points.items():
@@ -212,8 +258,9 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                 on_link[name] = on
             elif _point_name(lab, {h: h for h in helper_names}) is None:
                 ignored.append(lab)        # slot-definition points are never named
-        if name is not None:
-            drawn.setdefault(name, np.array(xy) - pole)
+        if name is not None and name not in drawn:
+            drawn[name] = np.array(xy) - pole
+            label_of[name] = lab
     if not drawn:
         raise InputError("no image points labelled with the mechanism's point names "
                          f"({', '.join(n.lower() for n in upper.values())}) in the {diagram} "
@@ -230,10 +277,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     lu = mech.length_unit
     fitted: str | None = None
     notes: list[str] = []
-    mm_per_unit: float | None = None
-    if poly.unit is not None:
-        mm_per_unit = 25.4 if poly.unit == "in" else {"mm": 1.0, "cm": 10.0, "m": 1000.0,
-                                                       "ft": 304.8}.get(poly.unit)
+    mm_per_unit = _MM_PER.get(poly.unit or "")
+    order = [n for n in mech.point_names if n in drawn] + [n for n in drawn if n in on_link]
     if stated:
         try:
             per, unit, factor = parse_scale(stated, kind, lu, poly.unit)
@@ -247,23 +292,78 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         if mm_per_unit is None:
             m = re.match(rf"\s*{_NUM}\s*([A-Za-z]+)", stated.split("=", 1)[0])
             if m and m.group(1) in ("mm", "cm", "in"):
-                mm_per_unit = {"mm": 1.0, "cm": 10.0, "in": 25.4}[m.group(1)]
+                mm_per_unit = _MM_PER[m.group(1)]
+        sheet_du = float(tol.drawing or 0.0) / mm_per_unit if mm_per_unit else 0.0
+        notes += _rematch(poly, label_of, drawn, exact_of, turn, tol, sheet_du)
     else:
-        names = [n for n in drawn if float(np.hypot(*exact_of(n))) > ev.floor(kind)
+        names = [n for n in order if float(np.hypot(*exact_of(n))) > ev.floor(kind)
                  and float(np.hypot(*drawn[n])) > 0]
         if not names:
             raise InputError("give the drawing's scale (--scale \"1 in = 20 ft/s\") or label "
                              "image points away from the pole, to fit it", file=path_s)
-        turn, used = _fit(names, drawn, exact_of, tol)
+        sheet_du = float(tol.drawing or 0.0) / mm_per_unit if mm_per_unit else 0.0
+        given_turn, whose = (poly.turn, "the sheet") if poly.turn is not None else \
+            _sheet_turn(poly, sol, notes)
+        fixed = None if given_turn is None else complex(math.cos(given_turn),
+                                                        -math.sin(given_turn))
+        drive_links = {d.link for d in mech.drives} | ({mech.rates.link} if mech.rates else set())
+        prefer = [n for n in names if (on_link[n][1] in drive_links if n in on_link else
+                                       set(mech.point_links.get(n, ())) & drive_links)]
+
+        name_of = {label_of[n]: n for n in names}
+        inlier = _inlier(tol)
+
+        def fit_now() -> Fit:
+            # fitted by the labels as drawn, so that its reasons name them so
+            f = fit_factor([label_of[n] for n in names], [complex(*drawn[n]) for n in names],
+                           [complex(*np.asarray(exact_of(n), dtype=float)) for n in names],
+                           relative=inlier, sheet=sheet_du, turn=fixed,
+                           prefer=[label_of[n] for n in prefer])
+            f.used = [name_of[t] for t in f.used]
+            f.left_out = {name_of[t]: why for t, why in f.left_out.items()}
+            return f
+
+        fit = fit_now()
+        moved = _rematch(poly, label_of, drawn, exact_of, fit.factor, tol, sheet_du)
+        if moved:
+            notes += moved
+            fit = fit_now()
+        turn = fit.factor
+        if not (math.isfinite(abs(turn)) and abs(turn) > 0.0):
+            raise InputError("the drawing's scale cannot be fitted: its sizes are out of range "
+                             "(give --scale)", file=path_s)
         unit, factor = _default(kind, lu), 1.0
-        if len(names) == 1:
-            fitted = names[0]
         deg = math.degrees(math.atan2(turn.imag, turn.real))
-        how = (f"fitted by least squares to {', '.join(n.lower() for n in used)}: 1 drawing "
-               f"unit = {abs(turn):.4g} {unit}, turned {deg:+.2f}°")
-        if abs(deg) > 150.0:
-            notes.append("the polygon is turned about 180° from the mechanism's axes: is the "
-                         "sense of the input's angular velocity reversed?")
+        turned = direction_text(deg)          # in (-180, 180]: never "-180.00°"
+        turned = turned if turned.startswith("-") else "+" + turned
+        used = ", ".join(label_of[n] for n in fit.used)
+        out = f" ({', '.join(label_of[n] for n in fit.left_out)} left out)" if fit.left_out \
+            else ""
+        if fixed is None:
+            if len(fit.used) == 1:
+                fitted = fit.used[0]
+            how = (f"scale and turn fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} "
+                   f"{unit}, turned {turned}")
+            if abs(deg) > 150.0:
+                notes.append("the polygon is turned about 180° to fit: nothing on the sheet "
+                             "gives the directions (neither a scale nor the mechanism drawn "
+                             "beside it), so a polygon drawn for the reversed sense of the "
+                             "input's ω would fit as well; give --scale or draw the mechanism "
+                             "on the sheet to have the sense checked")
+        else:
+            how = (f"scale fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} {unit}, "
+                   + (f"turned {turned}" if abs(deg) >= 0.005 else "not turned")
+                   + f": {whose} gives the directions")
+        for n, why in fit.left_out.items():
+            notes.append(f"{label_of[n]} left out of the fit: {why}")
+        if not fit.agreed and len(names) > 1:
+            one = fit.used[0]
+            notes.append(f"no two image points agree on one scale: it was taken from "
+                         f"{label_of[one]}" + (", the image of the input link"
+                                               if one in prefer else ""))
+        if fixed is not None and len(names) == 1:
+            notes.append(f"{label_of[names[0]]} alone sets the scale: only its direction "
+                         "is marked")
     if mm_per_unit is not None:
         sheet = SheetScale(kind, abs(turn) / mm_per_unit, stated or "fitted")
         tol = dataclasses.replace(tol, scales=(sheet,) + tuple(
@@ -271,7 +371,6 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     rows: list[Row] = []
     givens: list[Given] = []
     letter = "V" if diagram == "velocity" else "A"
-    order = [n for n in mech.point_names if n in drawn] + [n for n in drawn if n in on_link]
     for name in order:
         z = complex(*drawn[name]) * turn
         vec = np.array([z.real, z.imag])
@@ -310,25 +409,85 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
     return rows, title, notes, tol
 
 
-def _fit(names: list[str], drawn: dict[str, np.ndarray], exact_of: Any,
-         tol: CheckTolerance) -> tuple[complex, list[str]]:
-    """Scale and turn (one complex factor) by least squares, leaving out gross misfits.
+_MM_PER = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "in": 25.4, "ft": 304.8}
 
-    ``exact ≈ turn × drawn`` over the labelled image points; a point off by
-    more than five times the tolerance is left out and the fit redone, so one
-    wrong point does not spoil the others (at least two points stay in).
+
+def _inlier(tol: CheckTolerance) -> float:
+    """How near its exact place (a fraction of its size) an image is right by any rule.
+
+    A circle of this radius lies within both 2 % of magnitude and 2° of
+    direction: an image inside it agrees with the fit.
     """
-    used = list(names)
-    zd = {n: complex(*drawn[n]) for n in names}
-    ze = {n: complex(*np.asarray(exact_of(n), dtype=float)) for n in names}
-    while True:
-        num = sum(zd[n].conjugate() * ze[n] for n in used)
-        den = sum(abs(zd[n]) ** 2 for n in used)
-        turn = num / den
-        if len(used) <= 2:
-            return turn, used
-        err = {n: abs(zd[n] * turn - ze[n]) / abs(ze[n]) for n in used}
-        worst = max(used, key=lambda n: err[n])
-        if err[worst] <= 5 * tol.relative:
-            return turn, used
-        used.remove(worst)
+    return min(tol.relative, math.sin(math.radians(min(tol.angle, 90.0))))
+
+
+def _sheet_turn(poly: Polygon, sol: Solution, notes: list[str]) -> tuple[float | None, str]:
+    """The turn of the sheet's directions, from the mechanism drawn beside the polygon.
+
+    The joints labelled with the mechanism's point names (capitals: ``A``,
+    ``B``, ``O2``; the images are small letters) are fitted by a similarity
+    (scale, turn, shift) to the file's posture; when it fits them closely (1 %
+    of their spread), its turn is the polygon's: a student draws both with
+    the same axes.  ``None`` when no mechanism is drawn, or it does not fit
+    (then a note says so).
+    """
+    mech = sol.mechanism
+    upper = {n.upper(): n for n in mech.point_names if n not in mech.helper_points}
+    seen: dict[str, complex] = {}
+    for text, xy in poly.sheet_labels:
+        if not text[:1].isupper() or re.search(r"['′’\"″]", text):
+            continue
+        name = _point_name(text, upper)
+        if name is not None and name not in seen:
+            seen[name] = complex(*xy)
+    if len(seen) < 2:
+        return None, ""
+    w = np.array([complex(*np.asarray(sol.position(n), dtype=float)) for n in seen])
+    d = np.array(list(seen.values()))
+    wc, dc = w - w.mean(), d - d.mean()
+    spread = float(np.sqrt(np.mean(np.abs(dc) ** 2)))
+    den = float(np.sum(np.abs(wc) ** 2))
+    if den <= (1e-9 * float(np.max(np.abs(w)))) ** 2 or spread == 0.0:
+        return None, ""
+    a = complex(np.sum(np.conj(wc) * dc) / den)
+    miss = float(np.sqrt(np.mean(np.abs(dc - a * wc) ** 2)))
+    if not miss <= 0.01 * spread:
+        notes.append(f"the mechanism drawn on the sheet ({', '.join(seen)}, each read at the "
+                     "line end nearest its label) does not match the file's posture, so it "
+                     "does not give the polygon's directions: the turn was fitted")
+        return None, ""
+    return math.atan2(a.imag, a.real), f"the mechanism drawn on the sheet ({', '.join(seen)})"
+
+
+def _rematch(poly: Polygon, label_of: dict[str, str], drawn: dict[str, np.ndarray],
+             exact_of: Any, k: complex, tol: CheckTolerance, sheet_du: float) -> list[str]:
+    """Read a label at another line end near it when its nearest is not where its image is.
+
+    A label standing a little away from its vertex may stand nearer another
+    line end (an arrowhead of the next vector); of the ends near it (the
+    polygon's ``candidates``), the nearest one that lies within the marking
+    tolerance of where the scale puts the image is the vertex it names.
+    Changes ``drawn``; returns a note for each label read so.
+    """
+    notes: list[str] = []
+    pole = np.array(poly.pole)
+    size = max(float(np.hypot(*v)) for v in drawn.values())
+
+    def taken(v: np.ndarray) -> bool:   # the pole, or a line end another label names
+        return float(np.hypot(*v)) <= 1e-9 * size or any(
+            float(np.hypot(*(v - w))) <= 1e-9 * size for w in drawn.values())
+
+    for name, lab in label_of.items():
+        e = complex(*np.asarray(exact_of(name), dtype=float))
+        radius = max(_inlier(tol) * abs(e), sheet_du * abs(k))
+        if abs(k * complex(*drawn[name]) - e) <= radius:
+            continue
+        for xy in poly.candidates.get(lab, ()):
+            v = np.array(xy) - pole
+            if taken(v) or abs(k * complex(*v) - e) > radius:
+                continue
+            notes.append(f"{lab} read at the line end where the polygon puts it (its label "
+                         "stands nearer another line end)")
+            drawn[name] = v
+            break
+    return notes

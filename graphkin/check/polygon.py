@@ -4,7 +4,12 @@ graphkin's own drawings are read by their group ids (the ``panel-…`` and
 ``step-…`` groups); a drawing made in CAD or by hand by its geometry: the
 vertices are the ends of the polygon's long segments (arrowheads are too
 short to count; a polyline's collinear pieces are one segment), and each
-label names the nearest vertex of the connected polygon that holds the pole.
+label names the nearest vertex of the connected polygon that holds the pole
+(the other vertices near it are kept as its ``candidates``: the check reads
+the label at one of them when that one, not the nearest, is where the
+polygon puts the image).  The pole is the vertex near its label where most
+lines meet; the labels elsewhere on the sheet are kept too (the mechanism
+drawn beside the polygon gives the sheet's directions).
 
 References
 ----------
@@ -59,6 +64,19 @@ class Polygon:
         The paper unit of the coordinates (``mm`` for SVG with a sized root).
     ignored : list of str
         Labels near the polygon that name no vertex.
+    turn : float or None
+        When the sheet gives the directions (a printed worksheet): the angle
+        (radians, counterclockwise) the polygon is drawn turned from the
+        mechanism's axes; only the scale is then fitted.  ``None``: found from
+        the mechanism drawn on the same sheet, else fitted.
+    candidates : dict
+        Label -> the other line ends of the polygon near it, nearest first:
+        where the label may stand for when its nearest end is not where the
+        polygon puts its image (a label standing a little away).
+    sheet_labels : list of (str, (x, y))
+        The labels elsewhere on the sheet, each at the line end nearest it
+        (the mechanism's joints ``A``, ``B`` ... when it is drawn beside the
+        polygon: they give the sheet's directions).
     """
 
     diagram: str
@@ -67,6 +85,10 @@ class Polygon:
     scale: str | None = None
     unit: str | None = None
     ignored: list[str] = field(default_factory=list)
+    turn: float | None = None
+    candidates: dict[str, list[tuple[float, float]]] = field(default_factory=dict)
+    sheet_labels: list[tuple[str, tuple[float, float]]] = field(default_factory=list)
+
 
 def _pole_kind(label: str) -> str | None:
     return _POLES.get(re.sub(r"[^0-9A-Za-z]", "", label).lower())
@@ -319,6 +341,7 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
             k = int(np.argmin(np.where(close, d, np.inf)))
         return mine[k], float(d[k])
 
+    degree = np.bincount(index, minlength=len(V))   # how many segments meet at each vertex
     out: list[Polygon] = []
     bare = _bare_pole_kind(data)
     for text, at in data.labels:
@@ -331,11 +354,12 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
         comp = [i for i in range(len(V)) if find(i) == root]
         cv = V[comp]
         size = float(np.hypot(*(cv.max(axis=0) - cv.min(axis=0)))) or longest
-        pxy, _ = nearest_end(at, root)
+        pxy = _pole_vertex(V, comp, degree, at, 0.03 * size)
         poly = Polygon(kind, (float(pxy[0]), float(pxy[1])), scale=data.scale,
                        unit=data.unit)
         best: dict[str, tuple[float, tuple[float, float]]] = {}
         lo, hi = cv.min(axis=0) - 0.1 * size, cv.max(axis=0) + 0.1 * size
+        others = [i for i in range(len(V)) if find(i) != root]
         for t2, at2 in data.labels:
             if _pole_kind(t2):
                 continue
@@ -343,12 +367,32 @@ def find_polygons(data: DrawingData, path: str) -> list[Polygon]:
             if d > 0.12 * size:
                 if np.all(np.asarray(at2) >= lo) and np.all(np.asarray(at2) <= hi):
                     poly.ignored.append(t2)
+                elif others:
+                    oi, _ = nearest(at2, others)
+                    poly.sheet_labels.append((t2, (float(V[oi][0]), float(V[oi][1]))))
                 continue
             if t2 not in best or d < best[t2][0]:
                 best[t2] = (d, (float(exy[0]), float(exy[1])))
+                dl = np.hypot(*(cv - np.asarray(at2)).T)
+                ok = (np.hypot(*(cv - exy).T) > eps) & (dl <= 0.12 * size)
+                order = np.flatnonzero(ok)[np.argsort(dl[ok], kind="stable")]
+                poly.candidates[t2] = [(float(cv[i][0]), float(cv[i][1])) for i in order]
         poly.points = {t2: xy for t2, (_, xy) in best.items()}
         out.append(poly)
     return out
+
+
+def _pole_vertex(V: np.ndarray, comp: list[int], degree: np.ndarray, at: tuple[float, float],
+                 slack: float) -> np.ndarray:
+    """The pole: of the vertices about as near its label as the nearest, where most lines meet.
+
+    The vectors of a polygon start at its pole, so a label that stands a
+    little away, nearer an arrow's tip than the pole, still names the pole.
+    """
+    d = np.hypot(*(V[comp] - np.asarray(at)).T)
+    near = np.flatnonzero(d <= float(d.min()) + slack)
+    k = max(near.tolist(), key=lambda j: (int(degree[comp[j]]), -float(d[j])))
+    return np.asarray(V[comp[k]])
 
 
 def _bare_pole_kind(data: DrawingData) -> str | None:

@@ -30,6 +30,9 @@ MAX_DEPTH = 200
 #: The most elements read from one drawing (a polygon drawing has a few dozen): the check's
 #: work grows with them, so a larger file is refused before it starts.
 MAX_ELEMENTS = 50_000
+#: elements whose content is not drawn where it stands (markers, symbols, clip paths...)
+_NOT_DRAWN = frozenset({"defs", "marker", "symbol", "clipPath", "mask", "pattern", "metadata",
+                        "title", "desc"})
 #: mm per unit of an SVG length
 _SVG_UNITS = {"mm": 1.0, "cm": 10.0, "in": 25.4, "pt": 25.4 / 72.0, "pc": 25.4 / 6.0,
               "px": 25.4 / 96.0, "": 25.4 / 96.0}
@@ -193,6 +196,8 @@ def _walk(el: ET.Element, path: Path, parent: np.ndarray, depth: int = 0):  # ty
         if not np.all(np.isfinite(mat)):
             raise InputError("not a readable SVG file: a transform is not finite",
                              file=str(path))
+        if depth and _local(el.tag) in _NOT_DRAWN:
+            continue                     # definitions (Inkscape's arrow markers) draw nothing here
         yield el, mat, depth
         if _local(el.tag) != "text":
             stack.extend((c, mat, depth + 1) for c in reversed(list(el)))
