@@ -92,6 +92,9 @@ MECHANISM: Schema = {
     "gallery": GALLERY,
     # drawing only (docs/formats/mechanism.md#bodies): a cam's disc, a follower's face
     "bodies": {"link": None, "circle": _CIRCLE, "face": None, "outline": None},
+    # a disk cam and its follower (docs/formats/mechanism.md#cams, Ch. 6)
+    "cams": {"link": None, "follower": None, "file": None, "center": None, "pivot": None,
+             "axis": None, "guide_friction": None, "impending": None},
 }
 """Every key of a mechanism file (the format reference: ``docs/formats/mechanism.md``)."""
 
