@@ -234,6 +234,8 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
             eq = equivalent_linkage(cam, theta)
         except InputError as exc:
             raise _fail(key, exc.message, source) from None
+        if cl not in links:          # a cam written nowhere else: listed after the frame
+            links = {"1": links["1"], cl: {}, **{k: v for k, v in links.items() if k != "1"}}
         for lid in (cl, fl):
             if not isinstance(links.setdefault(lid, {}), dict):
                 raise _fail(f"links.{lid}", "expected a table", source)
@@ -241,26 +243,20 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
         names = {"O2": center, "O4": pivot, "K": f"K{fl}", "T": f"T{fl}", "S1": f"G{fl}a",
                  "S2": f"G{fl}b", "L1": f"F{fl}a", "L2": f"F{fl}b"}
 
-        def frame(p: list[float]) -> list[float]:
-            z = o2 + rot * complex(*p) * scale
-            return [z.real, z.imag]
-
         cam_links = links[cl]
         c_local = complex(*_xy(cam_links.get(center, [0.0, 0.0]), f"links.{cl}.{center}",
                                source))
         cam_links.setdefault(center, [c_local.real, c_local.imag])
-        placed = {"1": lambda p: frame(p), "2": lambda p: _pt(c_local + complex(*p) * scale)}
         ids = {"1": "1", "2": cl, "3": coupler, "4": fl}
         for lid, pts in eq["links"].items():
             target = links.setdefault(ids[lid], {})
             if not isinstance(target, dict):
                 raise _fail(f"links.{ids[lid]}", "expected a table", source)
-            place = placed.get(lid, lambda p: [p[0] * scale, p[1] * scale])
             for name, xy in pts.items():
                 n = names[name]
                 if lid == "2" and name == "O2":
                     continue
-                new = place(xy)
+                new = _place(lid, xy, o2, rot, scale, c_local)
                 if n in target:
                     old = complex(*_xy(target[n], f"links.{ids[lid]}.{n}", source))
                     if abs(old - complex(*new)) > 1e-9 * max(1.0, abs(old)):
@@ -280,7 +276,7 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
                 raise _fail(f"{key}.{k}", "an oscillating follower has no guide (it turns "
                             "on a pin at its pivot)", source)
         for name, xy in eq["assembly"].items():
-            assembly[names[name]] = frame(xy)
+            assembly[names[name]] = _place("1", xy, o2, rot, scale, c_local)
         pr = profile(cam, np.array([theta]))
         bodies += _bodies(cam, cl, fl, names, c_local, scale)
         contact = o2 + rot * cmath.exp(1j * cam.s * theta) * complex(pr.contact[0]) * scale
@@ -298,6 +294,21 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
             data[name] = rows
     data["assembly"] = assembly
     return data, tuple(joints)
+
+
+def _place(lid: str, p: list[float], o2: complex, rot: complex, scale: float,
+           c_local: complex) -> list[float]:
+    """A point of the equivalent linkage (cam-file units and frames) in the mechanism's.
+
+    ``lid`` is the equivalent linkage's link: 1 the frame (turned by the cam's axis about
+    O2), 2 the cam (its own u, v from its center), any other its own coordinates.
+    """
+    z = complex(*p) * scale
+    if lid == "1":
+        z = o2 + rot * z
+    elif lid == "2":
+        z = c_local + z
+    return _pt(z)
 
 
 def _friction(e: Mapping[str, Any]) -> dict[str, Any]:
