@@ -159,6 +159,7 @@ CAM: Schema = {
     "segment": {"motion": None, "lift": None, "angle": None, "rest": None, "name": None,
                 "points": None},
     "limits": {"pressure_angle": None, "radius": None},
+    "dynamics": {"spring": None, "preload": None, "mass": None},   # jump speed (Ex 6.8)
     "gallery": GALLERY,
 }
 """Every key of a cam file (``graphkin cam``, ``docs/formats/cam.md``)."""
