@@ -275,3 +275,20 @@ def test_the_shipped_cam_mechanism_solves_by_the_constructions():
     sol = graphkin.load(EXAMPLES / "cam_mechanism.toml").solve()
     assert sol.method == "construction"
     assert abs(sol.velocity("T4")[1] - 259.8076211) < 1e-6
+
+
+def test_the_report_says_what_the_linkage_stands_for():
+    """solve --json "cams": Ex 6.6 at Θ = 30° with ω2 = 10, α2 = 5 (the hand values of
+    test_example_6_6_in_a_mechanism_at_30_degrees), and the contact (23.473, 29.139) of the
+    cam's frame turned 30° into the frame: (5.758, 36.972)."""
+    from graphkin.output import solution_to_dict
+
+    sol = _mechanism(EXAMPLES / "ex6_6_roller.toml", 30.0, 10.0, 5.0).solve()
+    c = solution_to_dict(sol)["cams"][0]
+    assert abs(c["theta"] - 30) < 1e-9 and abs(c["lift"] - 7.5) < 1e-9
+    assert abs(c["follower_rate"] - 259.8076211) < 1e-6
+    assert abs(c["follower_rate2"] - 3129.9038106) < 1e-6
+    u, v, t = 23.4729, 29.1394, math.radians(30)
+    assert abs(c["contact"][0] - (3 + u * math.cos(t) - v * math.sin(t))) < 1e-3
+    assert abs(c["contact"][1] - (-2 + u * math.sin(t) + v * math.cos(t))) < 1e-3
+    assert abs(c["pressure_angle"] - 28.677) < 1e-3 and abs(c["normal"] + 61.323) < 1e-3
