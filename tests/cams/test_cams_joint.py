@@ -292,3 +292,14 @@ def test_the_report_says_what_the_linkage_stands_for():
     assert abs(c["contact"][0] - (3 + u * math.cos(t) - v * math.sin(t))) < 1e-3
     assert abs(c["contact"][1] - (-2 + u * math.sin(t) + v * math.cos(t))) < 1e-3
     assert abs(c["pressure_angle"] - 28.677) < 1e-3 and abs(c["normal"] + 61.323) < 1e-3
+
+
+def test_live_and_animate_of_a_cam_mechanism_are_refused_in_one_line(tmp_path, capsys):
+    """Both turn the drive away from the cam angle the equivalent linkage holds at."""
+    from graphkin.cli import main
+
+    f = str(EXAMPLES / "cam_mechanism.toml")
+    for verb in ("live", "animate"):
+        assert main([verb, f, "-o", str(tmp_path / f"{verb}.html")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and "cams" in err and "cam angle" in err, err
