@@ -92,6 +92,9 @@ MECHANISM: Schema = {
     "gallery": GALLERY,
     # drawing only (docs/formats/mechanism.md#bodies): a cam's disc, a follower's face
     "bodies": {"link": None, "circle": _CIRCLE, "face": None, "outline": None},
+    # a disk cam and its follower (docs/formats/mechanism.md#cams, Ch. 6)
+    "cams": {"link": None, "follower": None, "file": None, "center": None, "pivot": None,
+             "axis": None, "guide_friction": None, "impending": None},
 }
 """Every key of a mechanism file (the format reference: ``docs/formats/mechanism.md``)."""
 
@@ -156,6 +159,7 @@ CAM: Schema = {
     "segment": {"motion": None, "lift": None, "angle": None, "rest": None, "name": None,
                 "points": None},
     "limits": {"pressure_angle": None, "radius": None},
+    "dynamics": {"spring": None, "preload": None, "mass": None},   # jump speed (Ex 6.8)
     "gallery": GALLERY,
 }
 """Every key of a cam file (``graphkin cam``, ``docs/formats/cam.md``)."""

@@ -50,6 +50,9 @@ class CamFile:
     cam: Cam
     pressure_angle: float | None = None
     radius: float | None = None
+    dynamics: tuple[float, float, float] | None = None
+    """``[dynamics]``: the retaining spring's rate (N/m), its preload (N) and the follower's
+    mass (kg), for the jump speed (Sec. 6.12, Ex 6.8)."""
 
 
 def load_cam(path: str | Path) -> CamFile:
@@ -188,7 +191,39 @@ class _Reader:
         radius = self.length(limits["radius"], "limits.radius") if "radius" in limits else None
         if radius is not None and radius < 0:
             raise self.fail("limits.radius", "a radius of curvature is not negative")
-        return CamFile(cam, pa, radius)
+        return CamFile(cam, pa, radius, self.dynamics())
+
+    def dynamics(self) -> tuple[float, float, float] | None:
+        """``[dynamics]`` in SI: spring rate (N/m), preload (N), mass (kg) (Ex 6.8)."""
+        t = self.table("dynamics", required=False)
+        if not t:
+            return None
+        out = []
+        for name, unit in (("spring", "N/m"), ("preload", "N"), ("mass", "kg")):
+            key = f"dynamics.{name}"
+            if name not in t:
+                raise self.fail(key, "missing: [dynamics] needs spring, preload and mass")
+            v = t[name]
+            if isinstance(v, str):
+                try:
+                    from graphkin.units import check_unit, registry
+
+                    num, _, u = v.strip().partition(" ")
+                    q = registry().Quantity(float(num), check_unit(u.strip() or unit))
+                    val = float(q.to(unit).magnitude)
+                except Exception:  # pint raises several unrelated types
+                    raise self.fail(key, f"{v!r} is not a number in {unit} or a value with "
+                                    f"a unit of that kind") from None
+            elif isinstance(v, (int, float)) and not isinstance(v, bool):
+                val = float(v)
+            else:
+                raise self.fail(key, f"a number in {unit}, not {v!r}")
+            if not (math.isfinite(val) and 0 <= val <= MAX_MAGNITUDE) or \
+                    (name != "preload" and val == 0):
+                raise self.fail(key, f"{'a positive' if name != 'preload' else 'a'} "
+                                f"finite {name}, not {v!r}")
+            out.append(val)
+        return out[0], out[1], out[2]
 
     def follower(self) -> Follower:
         t = self.table("follower")

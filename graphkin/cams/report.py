@@ -23,6 +23,7 @@ from graphkin.cams.model import FollowerKind
 from graphkin.cams.parse import CamFile
 from graphkin.errors import InputError
 from graphkin.text import g6, table
+from graphkin.units import length_factor
 
 __all__ = ["refuse_undercut", "cam_json", "cam_text", "profile_table", "profile_csv",
            "steps_text"]
@@ -106,6 +107,14 @@ def cam_json(cf: CamFile) -> dict[str, Any]:
         out["min_prime_for_radius"] = {
             "radius": cf.radius,
             "prime": _safe(lambda: design.min_prime_for_curvature(cam, cf.radius))}
+    if cf.dynamics is not None:
+        spring, preload, mass = cf.dynamics
+        f = length_factor(cam.unit)       # the program's lengths in metres: SI throughout
+        jump = design.jump_speed(prog, spring * f, preload, mass * f)
+        ok = math.isfinite(jump.value)
+        out["jump"] = {"omega": jump.value if ok else None,
+                       "rev_per_min": jump.value * 30 / math.pi if ok else None,
+                       "at": _deg(jump.theta)}
     if cam.omega is not None:
         k = prog.evaluate(stations(design.GRID))
         v, a, j = k.rates(cam.omega)
@@ -173,6 +182,14 @@ def cam_text(cf: CamFile) -> str:
         m = d["min_prime_for_radius"]
         lines.append(f"  least prime circle for a radius of curvature ≥ {g6(m['radius'])} {u}: "
                      f"R0 = {'—' if m['prime'] is None else g6(m['prime'])} {u}")
+    if "jump" in d:
+        j = d["jump"]
+        lines.append("  jump (Sec. 6.12): " + ("the spring holds the follower at any speed"
+                                               if j["omega"] is None else
+                                               f"the follower leaves the cam above ω = "
+                                               f"{g6(j['omega'])} rad/s = "
+                                               f"{g6(j['rev_per_min'])} rev/min, at Θ = "
+                                               f"{g6(j['at'])}°"))
     if "rates" in d:
         lines += ["", f"Follower at ω = {g6(cam.omega or 0)} rad/s (Eq. 6.11)"]
         lu = "rad" if ang else u

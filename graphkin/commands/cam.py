@@ -111,3 +111,50 @@ def run(args: argparse.Namespace) -> int:
         if args.steps:
             sys.stdout.write("\n" + steps_text(cf))
     return 0
+
+
+def is_cam_file(path: str) -> bool:
+    """True when ``path`` is a cam file (a ``[cam]`` table and no ``[links]``).
+
+    An unreadable file is left to the caller's own reading (False).
+    """
+    from graphkin.errors import GraphkinError
+    from graphkin.files import load_toml
+
+    try:
+        data = load_toml(path)
+    except (GraphkinError, OSError):
+        return False
+    return "cam" in data and "links" not in data
+
+
+def check_answers(args: argparse.Namespace) -> int:
+    """``graphkin check CAMFILE ANSWERS...``: mark cam answers (:mod:`graphkin.cams.answers`).
+
+    Exit status 0 when every answer is within tolerance, 1 when any is not, 2 when
+    a file cannot be read (as for a mechanism's answers).
+    """
+    from graphkin.cams.answers import check_cam
+    from graphkin.cams.parse import load_cam
+    from graphkin.check.answers import parse_degrees, parse_fraction
+    from graphkin.files import read_text
+
+    if args.drawing or not args.answers:
+        raise InputError("a cam file's answers are checked from an answers file (no "
+                         "--drawing)", key="--drawing" if args.drawing else None,
+                         file=args.file)
+    cf = load_cam(args.file)
+    rel = None if args.relative is None else parse_fraction(args.relative, key="--relative")
+    ang = None if args.angle is None else parse_degrees(args.angle, key="--angle")
+    status = 0
+    for path in args.answers:
+        rows, text = check_cam(cf, read_text(path), path, relative=rel, angle=ang)
+        if len(args.answers) > 1:
+            print(f"== {path}")
+        if args.quiet:
+            print(f"{path}: {text.splitlines()[-1]}")
+        else:
+            print(text, end="")
+        if not all(r.ok for r in rows):
+            status = 1
+    return status

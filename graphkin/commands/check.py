@@ -72,6 +72,10 @@ def run(args: argparse.Namespace) -> int:
 
     if not args.answers and not args.drawing:
         raise InputError("give an answers file or --drawing", file=args.file)
+    from graphkin.commands.cam import check_answers, is_cam_file
+
+    if is_cam_file(args.file):  # a cam file's own answers (graphkin.cams.answers)
+        return check_answers(args)
     override: dict[str, float] = {}
     if args.relative is not None:
         override["relative"] = parse_fraction(args.relative, key="--relative")

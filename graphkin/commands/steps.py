@@ -25,11 +25,14 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p = command(sub, "steps", help=HELP, description=DESCRIPTION)
     p.add_argument("--diagram", "-d", default="posture",
                    choices=("posture", "velocity", "acceleration", "centers", "curvature",
-                            "inflection", "bobillier", "hartmann", "cubic", "forces", "gears"),
+                            "inflection", "bobillier", "hartmann", "cubic", "forces", "gears",
+                            "cam"),
                    help="which construction (default: posture); inflection, bobillier, "
                         "hartmann and cubic walk through one figure of the curvature sheet "
                         "(as draw -d does: the inflection and Bresse circles, Bobillier's "
-                        "construction, conjugate points, the cubic of stationary curvature)")
+                        "construction, conjugate points, the cubic of stationary curvature); "
+                        "gears a gear file's pair in mesh; cam a cam file's profile laid out "
+                        "by inversion (Sec. 6.4)")
     page_options(p, "numbered SVG per step")
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
@@ -53,6 +56,8 @@ def run(args: argparse.Namespace) -> int:
         check_output(args.output, [args.file], "--output")
     from graphkin.gears.file import gear_kind
 
+    if args.diagram == "cam":  # a cam file's layout by inversion (graphkin.render.cam_steps)
+        return _cam(args)
     gears = gear_kind(args.file)
     if args.diagram == "gears" or gears is not None:
         return _gears(gears, args)
@@ -128,5 +133,27 @@ def _gears(found: tuple[str, dict] | None, args: argparse.Namespace) -> int:
             frames = gear_frames(lay)
             for k, (_, _, svg) in enumerate(frames):
                 (d / f"gears-{k:02d}.svg").write_text(svg, encoding="utf-8")
+        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
+    return 0
+
+
+def _cam(args: argparse.Namespace) -> int:
+    """The layout of a cam's profile by inversion, one frame per step (Sec. 6.4)."""
+    from pathlib import Path
+
+    from graphkin.cams.parse import load_cam
+    from graphkin.render.cam_steps import cam_frames, cam_steps_html
+
+    cam = load_cam(args.file).cam
+    if args.output is not None:
+        out = write_text(args.output, cam_steps_html(cam), "--output")
+        print(f"wrote {out}", file=sys.stderr)
+    if args.frames is not None:
+        d = Path(args.frames)
+        with writing(f"into {d}", "--frames"):
+            d.mkdir(parents=True, exist_ok=True)
+            frames = cam_frames(cam)
+            for k, (_, _, svg) in enumerate(frames):
+                (d / f"cam-{k:02d}.svg").write_text(svg, encoding="utf-8")
         print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     return 0

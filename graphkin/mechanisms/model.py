@@ -314,6 +314,9 @@ class Mechanism:
     bodies: tuple[Body, ...] = ()
     """What links look like where the equivalent mechanism does not show it
     (``[[bodies]]``: a cam's disc, a follower's face); drawing only."""
+    cams: tuple[Any, ...] = ()
+    """Disk cams (``[[cams]]``, :class:`graphkin.cams.joint.CamJoint`), each replaced by its
+    equivalent linkage through the centers of curvature at the drive (Sec. 4.7)."""
 
     @property
     def has_forces(self) -> bool:

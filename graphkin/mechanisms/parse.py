@@ -15,6 +15,7 @@ from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
+from graphkin.mechanisms.cam_joint import with_cams
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -88,8 +89,8 @@ def loads(text: str, source: str = "<mechanism>") -> Mechanism:
 
 
 def from_dict(data: Mapping[str, Any], source: str = "<mechanism>") -> Mechanism:
-    """Build and validate a :class:`Mechanism` from parsed TOML data."""
-    return _Parser(data, source).mechanism()
+    """Build and validate a :class:`Mechanism` from parsed TOML data ([[cams]]: Sec. 4.7)."""
+    return with_cams(data, source, lambda d: _Parser(d, source).mechanism())
 
 
 class _Parser:

@@ -51,6 +51,7 @@ def _load(name: str) -> Callable[..., Any]:
 
 
 SECTIONS: tuple[Section, ...] = (
+    Section("cams", "Cams", "graphkin.output.cams:cams_json", "graphkin.output.cams:cams_text"),
     Section("joint_angles", "Joint angles", "graphkin.output.joints:joint_angles_json",
             "graphkin.output.joints:joint_angles_text"),
     Section("instant_centers", "Instant centers", "graphkin.output.centers:instant_centers_json",

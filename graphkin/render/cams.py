@@ -48,13 +48,17 @@ def _circle(ax: Any, c: tuple[float, float], r: float, gid: str, **kw: Any) -> N
     ax.add_patch(patch)
 
 
-def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
+def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = None) -> Any:
     """The layout of the profile by inversion, drawn like Figs. 6.8-6.11.
 
     The cam is held still; the follower is drawn at ``n`` stations 0, 1, 2, ...
     turned against the cam's rotation, with its centerline (or arm), its roller
-    or face, and the profile drawn tangent to them all.
+    or face, and the profile drawn tangent to them all.  ``upto`` (``steps -d
+    cam``) draws the first ``upto`` stations only, the newest highlighted, and
+    leaves the profile and the pitch curve out until ``upto > n``; the framing
+    is the whole drawing's in every case.
     """
+    final = upto is None or upto > n
     fig = fig or Figure(figsize=(7.0, 7.4))
     ax = fig.add_axes((0.03, 0.06, 0.94, 0.86))
     ax.set_aspect("equal")
@@ -81,13 +85,16 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
     pitch = None
     if f.kind.roller:
         pitch = _xy(lay.evaluate(fine)["T"])
+    if f.kind.roller and final:
+        assert pitch is not None
         ln, = ax.plot(np.append(pitch[:, 0], pitch[:1, 0]), np.append(pitch[:, 1], pitch[:1, 1]),
                       color=GREY, lw=0.6, ls=DASHDOT)
         ln.set_gid("pitch-curve")
-    ln, = ax.plot(np.append(prof.real, prof.real[:1]), np.append(prof.imag, prof.imag[:1]),
-                  color=INK, lw=1.8, solid_joinstyle="round")
-    ln.set_gid("profile")
-    for j, cut in enumerate(design.undercuts(cam)):     # Figs. 6.25, 6.29: drawn in red
+    if final:
+        ln, = ax.plot(np.append(prof.real, prof.real[:1]), np.append(prof.imag, prof.imag[:1]),
+                      color=INK, lw=1.8, solid_joinstyle="round")
+        ln.set_gid("profile")
+    for j, cut in enumerate(design.undercuts(cam) if final else []):  # Figs. 6.25, 6.29
         th = np.linspace(cut.start, cut.end if cut.end >= cut.start else cut.end + 2 * math.pi,
                          200)
         z = lay.contact(th)
@@ -102,6 +109,10 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
         bold = i == 0
         lw = 1.1 if bold else 0.5
         col = INK if bold else GREY
+        if not final and upto is not None and i >= upto:
+            continue
+        if not final and upto is not None and i == upto - 1:
+            col, lw = HIGHLIGHT, 1.2           # the newest station (steps -d cam)
         t = T[i]
         if f.kind.oscillating:
             o4 = _xy(ev["O4"][i])
@@ -170,7 +181,8 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None) -> Any:
         pts = np.concatenate([pts, _xy(ev["O4"])])
     if drawn:
         pts = np.concatenate([pts, np.asarray(drawn)])
-    _nomenclature(ax, cam, prof, pitch if f.kind.roller else None, n, pts)
+    if final:
+        _nomenclature(ax, cam, prof, pitch if f.kind.roller else None, n, pts)
     lo, hi = np.nanmin(pts, axis=0), np.nanmax(pts, axis=0)
     pad = 0.18 * float(np.max(hi - lo))
     ax.set_xlim(lo[0] - pad, hi[0] + pad)

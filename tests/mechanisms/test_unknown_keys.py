@@ -94,6 +94,7 @@ TABLES = [
     ("gallery/mechanisms/fig3_7_fourbar.toml", "gallery.book[0]", "quanity", "quantity"),
     ("gallery/mechanisms/fig4_18_cam_follower.toml", "bodies[1]", "fase", "face"),
     ("gallery/mechanisms/fig4_18_cam_follower.toml", "bodies[0].circle", "raduis", "radius"),
+    ("examples/cams/cam_mechanism.toml", "cams[0]", "folower", "follower"),
 ]
 
 
