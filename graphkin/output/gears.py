@@ -50,6 +50,7 @@ def _gear(g: Gear, outside: float, operating: float, pair: GearPair) -> dict[str
         "thickness_base": float(g.thickness_at(g.base_radius)),
         "thickness_outside": float(g.thickness_at(outside)),
         "thickness_operating_pitch": float(g.thickness_at(operating)),
+        "involute_angle_outside": math.degrees(math.acos(g.base_radius / outside)),
         "pointed_radius": pointed, "pointed": bool(outside > pointed + tol),
         "undercut_by_rack": bool(g.offset < need - tol),
         "offset_for_no_undercut": need,

@@ -34,8 +34,13 @@ def _fraction(f: Fraction) -> str:
 
 
 def _formulas(train: Train, sol: TrainSolution) -> list[dict[str, Any]]:
-    """Eq. (7.25) for each arm: from its first gear F to each other gear L it carries."""
+    """Eq. (7.25) for each arm: from its first gear F to each other gear L it carries.
+
+    A speed at round-off of the train's largest is printed as 0 (Example 7.4's
+    fixed gear 6 came out 6.7e-13 rev/min).
+    """
     out = []
+    tiny = 1e-9 * max(1.0, *(abs(v) for v in sol.omega.values()))
     carriers = list(dict.fromkeys(m.arm for m in train.meshes))
     for arm in carriers:
         gears = list(dict.fromkeys(g for m in train.meshes if m.arm == arm
@@ -48,7 +53,8 @@ def _formulas(train: Train, sol: TrainSolution) -> list[dict[str, Any]]:
             value, _ = found
             out.append({"arm": arm, "first": first, "last": last,
                         "train_value": float(value), "fraction": _fraction(value),
-                        "omega_last": clean(sol.omega[last] if last in sol.omega else 0.0)})
+                        "omega_last": clean(sol.omega[last] if last in sol.omega else 0.0,
+                                            tiny)})
     return out
 
 
