@@ -45,6 +45,8 @@ def tooth_template(g: Gear, outside: float) -> np.ndarray:
         (the clockwise side), across the top land, down the flank at ``+β``,
         and along the bottom land to ``2π/N − β`` (where the next tooth starts).
     """
+    if g.internal:
+        return _ring_tooth(g, outside)
     rb, rr = g.base_radius, g.root_radius
     tip = min(outside, g.pointed_radius())
     lo = max(rb, rr)
@@ -63,6 +65,28 @@ def tooth_template(g: Gear, outside: float) -> np.ndarray:
     root_t = np.linspace(beta[0], pitch - beta[0], LAND)[1:]
     bottom = np.stack([np.full_like(root_t, rr), root_t], axis=-1)
     return np.concatenate([up, top, down, bottom])
+
+
+def _ring_tooth(g: Gear, inside: float) -> np.ndarray:
+    """One tooth of an internal gear (Fig. 7.11): its tip on the addendum circle ``inside``.
+
+    The teeth point inward and widen outward, ``β'(r) = π/N − β(r)``
+    (:meth:`Gear.half_angle`): from the dedendum circle (outside) down the
+    flank at ``−β'`` to the tip, across the top land, back up the flank at
+    ``+β'`` and along the bottom land to the next tooth.  The whole flank lies
+    outside the base circle (the file refuses a ring whose tips do not).
+    """
+    rr = g.root_radius
+    r = np.linspace(rr, inside, FLANK)
+    beta = np.asarray(g.half_angle(r), dtype=float)
+    down = np.stack([r, -beta], axis=-1)
+    top_t = np.linspace(-beta[-1], beta[-1], LAND)[1:-1]
+    top = np.stack([np.full_like(top_t, inside), top_t], axis=-1)
+    up = np.stack([r[::-1], beta[::-1]], axis=-1)
+    pitch = 2.0 * math.pi / g.teeth
+    root_t = np.linspace(beta[0], pitch - beta[0], LAND)[1:]
+    bottom = np.stack([np.full_like(root_t, rr), root_t], axis=-1)
+    return np.concatenate([down, top, up, bottom])
 
 
 def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float
@@ -97,4 +121,6 @@ def mesh_phases(pair: GearPair) -> tuple[float, float]:
     r2p, r3p = pair.operating_pitch_radii
     b2 = float(pair.driver.half_angle(r2p))
     b3 = float(pair.driven.half_angle(r3p))
+    if pair.driven.internal:   # O3 above P too: the ring's tooth left of P, its flank at P
+        return -math.pi / 2 + b2, -math.pi / 2 - b3
     return -math.pi / 2 + b2, math.pi / 2 + b3

@@ -480,8 +480,13 @@ def _rows(lay: MeshLayout) -> list[Row]:
     ra2, ra3 = pair.outside_radii
     phi = analytic.operating_pressure_angle(pair.standard_center_distance, pair.center,
                                             g2.pressure_angle)
-    cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius, pair.center,
-                                      phi)
+    if g3.internal:
+        r2p, r3p = pair.operating_pitch_radii
+        cp, pd = analytic.approach_recess_internal(ra2, ra3, g2.base_radius, g3.base_radius,
+                                                   r2p, r3p, phi)
+    else:
+        cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius,
+                                          pair.center, phi)
     mc = analytic.contact_ratio(cp, pd, g2.base_pitch)
     u = pair.units
     deg = math.degrees
