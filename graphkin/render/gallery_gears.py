@@ -42,6 +42,10 @@ def render_entry(entry: Any) -> tuple[dict[str, bytes], dict[str, Any]]:
     source = str(entry.path)
     found = gear_kind(entry.path)
     if found is None:
+        from graphkin.files import load_toml
+
+        if "links" in load_toml(entry.path):
+            return _mechanism(entry)
         raise InputError("not a gear file: a pair in mesh has [gears.<name>] tables, a train "
                          "[[mesh]] tables (docs/formats/gears.md)", file=source)
     kind, data = found
@@ -63,3 +67,32 @@ def render_entry(entry: Any) -> tuple[dict[str, bytes], dict[str, Any]]:
     fig = draw_gears(lay).figure
     return ({f"{entry.stem}-gears.svg": compact_svg(to_bytes(fig))},
             {"title": lay.pair.title, "solution": gears_json(lay)})
+
+
+def _mechanism(entry: Any) -> tuple[dict[str, bytes], dict[str, Any]]:
+    """A geared mechanism (a planetary train with loads, Sec. 11.11): its force drawing.
+
+    The solution is ``graphkin solve --json``'s object (with ``forces.gears``,
+    each tooth force's transmitted and radial parts) and ``train``, the train
+    read off its rolling circles (:func:`graphkin.output.trains.mechanism_train_json`).
+    """
+    import graphkin
+    from graphkin.errors import GraphkinError, InputError
+    from graphkin.output import solution_to_dict
+    from graphkin.output.trains import mechanism_train_json
+    from graphkin.render.gallery import compact_svg
+    from graphkin.render.mpl import draw
+    from graphkin.render.svg import to_bytes
+
+    mech = graphkin.load(entry.path)
+    try:
+        sol = mech.solve()
+    except GraphkinError as exc:
+        raise InputError(f"cannot solve it: {exc}", file=str(entry.path)) from None
+    data = solution_to_dict(sol)
+    data["train"] = mechanism_train_json(sol)
+    drawings = {}
+    for d in entry.diagrams(mech.has_rates) if "diagrams" in entry.meta else ["forces"]:
+        fig = draw(sol, d).figure
+        drawings[f"{entry.stem}-{d}.svg"] = compact_svg(to_bytes(fig))
+    return drawings, {"title": mech.title, "solution": data}

@@ -99,3 +99,18 @@ def test_a_gear_file_takes_the_gallery_table_but_refuses_unknown_keys():
     with pytest.raises(InputError) as info:
         loads("center_distanse = 3\n" + text, "x.toml")
     assert info.value.key == "center_distanse"
+
+
+def test_example_11_7_gear_forces_beside_the_book():
+    """Sec. 11.11 in the gallery: every printed force agrees to the book's rounding but
+    the output torque, where the book carries its rounded 200 lb (T13 = 218.75 in·lb by
+    moments and by power, test_gear_forces.py)."""
+    from graphkin.render.gallery_gears import render_entry
+
+    e = _entry("ex11_7")
+    drawings, info = render_entry(e)
+    assert list(drawings) == ["gears-ex11_7-forces.svg"]
+    rows = {r["quantity"]: r for r in _rows(e, info["solution"])}
+    assert rows.pop("T13 (output)")["verdict"] == "**differs**"
+    assert all(r["verdict"] == "agrees" for r in rows.values()), rows
+    assert info["solution"]["forces"]["drives"]["3"]["torque"] == pytest.approx(-218.75)
