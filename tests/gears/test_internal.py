@@ -128,3 +128,13 @@ def test_a_ring_smaller_than_its_pinion_and_tips_inside_the_base_circle_are_refu
     with pytest.raises(InputError) as info:
         loads(RING.format(phi=20, n2=12, n3=30))   # R3 − a = 1.4 < r3 = 1.4095
     assert info.value.key == "gears.ring.addendum"
+
+
+@pytest.mark.parametrize("scale", [1 - 1e-12, 1 + 1e-12])
+def test_verdicts_do_not_move_under_round_off(scale):
+    """20 teeth inside 72 is just clear of interference (CP = 0.33348 < 0.34202 in)."""
+    text = RING.format(phi=20, n2=20, n3=72).replace("diametral_pitch = 10",
+                                                     f"diametral_pitch = {10 * scale!r}")
+    lay = layout(loads(text))
+    assert not lay.interference
+    assert lay.contact_ratio == pytest.approx(_hand(20, 72, 20)[2], rel=1e-9)
