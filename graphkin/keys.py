@@ -133,7 +133,7 @@ GEARS: Schema = {
     "center_distance": None,
     # [gears.<name>]: the first is the driver (link 2), the second the driven gear (link 3)
     "gears": {"*": {"teeth": None, "link": None, "addendum": None, "dedendum": None,
-                    "offset": None, **_GEAR_SIZE}},
+                    "offset": None, "kind": None, **_GEAR_SIZE}},   # kind: external/internal
     "gallery": GALLERY,
 }
 """Every key of a gear file (``graphkin gears``, ``docs/formats/gears.md``)."""

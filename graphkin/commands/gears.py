@@ -8,7 +8,9 @@ recess, the contact ratio by construction and by Eq. (7.9), and
 interference and undercutting (Sec. 7.7). The file format is
 docs/formats/gears.md; draw the pair with graphkin draw FILE -d gears. A
 gear-train file (its [[mesh]] tables) gives every member's angular velocity
-by the formula method (Eq. 7.25) and the book's table (Sec. 7.16).
+by the formula method (Eq. 7.25) and the book's table (Sec. 7.16); so does a
+mechanism file whose [[rolling]] contacts are gears on a frame or an arm (a
+planetary train), checked against its rolling-contact kinematics.
 """
 
 from __future__ import annotations
@@ -36,13 +38,11 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
-    from graphkin.errors import InputError
     from graphkin.gears.file import gear_kind
 
     found = gear_kind(args.file)
     if found is None:
-        raise InputError("not a gear file: a pair in mesh has [gears.<name>] tables, a train "
-                         "[[mesh]] tables (docs/formats/gears.md)", file=args.file)
+        return _mechanism(args)
     return report(found[0], found[1], args.file, as_json=args.json, steps=args.steps)
 
 
@@ -67,6 +67,38 @@ def report(kind: str, data: dict, source: str, *, as_json: bool = False,
     sys.stdout.write(gears_text(lay))
     if steps:
         sys.stdout.write(f"\nLayout construction\n{lay.construction.table()}\n")
+    return 0
+
+
+def _mechanism(args: argparse.Namespace) -> int:
+    """A mechanism file whose rolling contacts are gears: its train (Secs. 7.15-7.16)."""
+    import graphkin
+    from graphkin.errors import InputError
+    from graphkin.files import load_toml
+    from graphkin.output.trains import mechanism_train_json, mechanism_train_text
+
+    not_gears = ("not a gear file: a pair in mesh has [gears.<name>] tables, a train [[mesh]] "
+                 "tables, a mechanism [[rolling]] circles on circles (docs/formats/gears.md)")
+    if "links" not in load_toml(args.file) or args.steps:
+        raise InputError(not_gears, key="--steps" if args.steps else None, file=args.file)
+    mech = graphkin.load(args.file)
+    if not any(not r.on_line for r in mech.rolling):
+        raise InputError(not_gears, key="rolling" if mech.rolling else None, file=args.file)
+    if not mech.has_rates:
+        raise InputError("the train's speeds are multiples of the drive's: give its omega "
+                         "(e.g. omega = \"10 rad/s\")", key="drive.omega", file=args.file)
+    sol = mech.solve()
+    data: dict | str | None = mechanism_train_json(sol) if args.json else \
+        mechanism_train_text(sol)
+    if data is None:
+        raise InputError("its rolling contacts are not a gear train graphkin reads: every "
+                         "contact a circle on a circle, both centers on one link (the frame or "
+                         "an arm), each drive on a gear or an arm", key="rolling",
+                         file=args.file)
+    if isinstance(data, str):
+        sys.stdout.write(data)
+    else:
+        sys.stdout.write(json.dumps(data, ensure_ascii=False, indent=1, allow_nan=False) + "\n")
     return 0
 
 

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.forces.gear_teeth import tooth_forces, tooth_forces_json
 from graphkin.forces.joints import id_order
 from graphkin.forces.solve import ForceSolution
 from graphkin.tolerance import VERDICT_REL, is_zero, sign
@@ -55,6 +56,9 @@ def forces_json(fs: ForceSolution) -> dict[str, Any]:
     sh = fs.shaking
     if sh is not None:
         out["shaking"] = {"force": sh[0].tolist(), "moment": sh[1]}
+    gears = tooth_forces_json(fs)   # gear teeth: transmitted and radial (Sec. 11.11)
+    if gears:
+        out["gears"] = gears
     if fs.notes:
         out["notes"] = list(fs.notes)
     return out
@@ -140,6 +144,7 @@ def forces_text(fs: ForceSolution) -> str:
         if at:
             row += f"  at {at}"
         lines.append(row)
+    lines += _teeth_lines(fs, fu, tu)
     for lid in mech.moving:
         state = _two_force_state(fs, lid)
         if state:
@@ -165,6 +170,23 @@ def forces_text(fs: ForceSolution) -> str:
     elif fs.partials:
         lines.append("  order: " + "; ".join(fs.partials[0].order))
     return "\n".join(lines) + "\n"
+
+
+def _teeth_lines(fs: ForceSolution, fu: str, tu: str) -> list[str]:
+    """Each gear pair's tooth force as Fig. 11.14b resolves it (Sec. 11.11)."""
+    lines = []
+    lu = fs.mechanism.length_unit
+    for t in tooth_forces(fs):
+        name = _name(t.mate, t.gear)
+        toward = "toward" if t.radial >= 0 else "away from"
+        lines.append(f"  gear teeth {t.key} (φ = {math.degrees(t.pressure_angle):g}°): "
+                     f"{name} = {_num(t.force)} {fu} = transmitted {name}^t "
+                     f"{_num(t.tangential)} {fu} + radial {name}^r {_num(abs(t.radial))} {fu} "
+                     f"{toward} the center of {t.gear}")
+        for lid, m in t.torque.items():
+            lines.append(f"    its moment on {lid}: F^t R = {_num(abs(m))} {tu} {fs.sense(m)} "
+                         f"(R = {_num(t.radius[lid])} {lu}, Eq. 11.12)".rstrip())
+    return lines
 
 
 def forces_section(sol: Any) -> dict[str, Any] | None:

@@ -23,7 +23,8 @@ __all__ = ["inv", "inv_inverse", "circular_pitch", "base_pitch", "pitch_radius",
            "approach_recess", "contact_ratio", "interference", "operating_pressure_angle",
            "tooth_thickness", "offset_thickness", "modified_pressure_angle",
            "modified_pitch_radius", "offset_for_no_undercut", "minimum_teeth",
-           "minimum_teeth_rack", "involute_point"]
+           "minimum_teeth_rack", "involute_point", "approach_recess_internal",
+           "minimum_teeth_internal"]
 
 
 def inv(phi: Any) -> Any:
@@ -106,6 +107,36 @@ def approach_recess(outside2: float, outside3: float, base2: float, base3: float
     cp = math.sqrt(outside3 ** 2 - base3 ** 2) - r3p * math.sin(phi)
     pd = math.sqrt(outside2 ** 2 - base2 ** 2) - r2p * math.sin(phi)
     return cp, pd
+
+
+def approach_recess_internal(outside2: float, inside3: float, base2: float, base3: float,
+                             pitch2: float, pitch3: float, phi: float) -> tuple[float, float]:
+    """CP and PD for a pinion inside an internal gear (Sec. 7.5, Fig. 7.11).
+
+    Both centers lie on one side of P, so the foot B of the ring's center on
+    the line of action lies beyond A, and the ring's addendum circle (radius
+    ``R_3 − a``, inside its pitch circle) crosses the line of action twice on
+    that side; first contact is the crossing nearer P:
+    ``CP = R_3 sin φ − √((R_3 − a)² − r_3²)``.  The recess is the pinion's, as
+    for external gears: ``PD = √((R_2 + a)² − r_2²) − R_2 sin φ``.
+    """
+    cp = pitch3 * math.sin(phi) - math.sqrt(inside3 ** 2 - base3 ** 2)
+    pd = math.sqrt(outside2 ** 2 - base2 ** 2) - pitch2 * math.sin(phi)
+    return cp, pd
+
+
+def minimum_teeth_internal(k: float, phi: float, ring: int) -> float:
+    """The least pinion teeth that mesh inside a ring of ``ring`` teeth without interference.
+
+    Eq. (7.12)'s first condition, ``CP ≤ R_2 sin φ``, with the internal CP
+    (:func:`approach_recess_internal`, addendum ``k m``), squared and
+    divided by ``m²/4``: ``(N_3 − N_2)² sin² φ ≤ N_3² sin² φ − 4k (N_3 − k)``,
+    so ``N_2 ≥ N_3 − √(N_3² − 4k (N_3 − k)/sin² φ)``; NaN when no pinion fits
+    (the ring's tips inside its base circle).
+    """
+    s2 = math.sin(phi) ** 2
+    disc = ring * ring - 4.0 * k * (ring - k) / s2
+    return ring - math.sqrt(disc) if disc >= 0 else math.nan
 
 
 def contact_ratio(cp: float, pd: float, pb: float) -> float:

@@ -34,7 +34,7 @@ from typing import Any
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
 from graphkin.gears.mesh import GearPair
-from graphkin.gears.tooth import ADDENDUM, DEDENDUM, Gear, ToothSystem
+from graphkin.gears.tooth import ADDENDUM, DEDENDUM, Gear, GearKind, ToothSystem
 from graphkin.keys import GEARS, check_keys, read_units
 from graphkin.units import length_factor, parse_quantity
 
@@ -173,6 +173,10 @@ class _Reader:
         dedendum = (self.length(table["dedendum"], f"{key}.dedendum", positive=True)
                     if "dedendum" in table else DEDENDUM[system] * module)
         offset = self.length(table["offset"], f"{key}.offset") if "offset" in table else 0.0
+        kind = self.kind(table.get("kind", "external"), f"{key}.kind")
+        if kind == GearKind.INTERNAL and offset != 0.0:
+            raise self.error("teeth cut with an offset are not modelled inside an internal gear",
+                             f"{key}.offset")
         if module < MIN_MODULE:
             raise self.error(f"a module too small (below {MIN_MODULE:g} {self.unit}): write the "
                              "sizes in a smaller unit",
@@ -182,9 +186,21 @@ class _Reader:
                              f"{key}.offset")
         try:
             return Gear(name, link, teeth, module, phi, addendum, dedendum, offset,
-                        clearance=(DEDENDUM[system] - ADDENDUM[system]) * module)
+                        clearance=(DEDENDUM[system] - ADDENDUM[system]) * module, kind=kind)
         except InputError as exc:
             raise self.error(exc.message, exc.key or key) from None
+
+    def kind(self, value: Any, key: str) -> GearKind:
+        """``external`` (the default) or ``internal`` (an annular gear, Fig. 7.11)."""
+        text = str(value).strip().lower() if isinstance(value, str) else repr(value)
+        if text == "rack":
+            raise self.error("a rack is not a gear-file kind yet: write the pinion and the rack "
+                             "as a mechanism file ([[rolling]] with line = [...], Sec. 3.7)", key)
+        try:
+            return GearKind(text)
+        except ValueError:
+            raise self.error(f"kind is \"external\" or \"internal\", not {value!r}",
+                             key) from None
 
     def whole(self, value: Any, key: str, low: int) -> int:
         if value is None:

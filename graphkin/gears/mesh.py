@@ -93,6 +93,14 @@ class GearPair:
         if not math.isclose(g2.pressure_angle, g3.pressure_angle, rel_tol=1e-9):
             raise InputError(f"gears {g2.name!r} and {g3.name!r} cannot mesh: their pressure "
                              "angles differ", key=f"gears.{g3.name}", file=self.source)
+        if g2.internal:
+            raise InputError(f"the driver {g2.name!r} is the pinion: only the second gear may be "
+                             "internal (kind = \"internal\")", key=f"gears.{g2.name}.kind",
+                             file=self.source)
+        if g3.internal and g3.teeth <= g2.teeth:
+            raise InputError(f"a pinion of {g2.teeth} teeth cannot mesh inside an internal gear "
+                             f"of {g3.teeth}: the ring needs more teeth than the pinion",
+                             key=f"gears.{g3.name}.teeth", file=self.source)
         c0 = self.tight_center_distance
         c = self.center
         if c < c0 - self.tol.length(c0):
@@ -100,7 +108,13 @@ class GearPair:
                              f"their teeth jam below {c0:.6g} {self.units}, where they touch on "
                              "both flanks", key="center_distance", file=self.source)
         ra2, ra3 = self.outside_radii
-        if c >= ra2 + ra3 or ra2 <= g2.base_radius or ra3 <= g3.base_radius:
+        if g3.internal and ra3 <= g3.base_radius * (1 + 1e-12):
+            raise InputError(f"the addendum circle of the internal gear {g3.name!r} ({ra3:g} "
+                             f"{self.units}) lies inside its base circle ({g3.base_radius:.6g}): "
+                             "its tips would not be involute", key=f"gears.{g3.name}.addendum",
+                             file=self.source)
+        reach = ra2 + ra3 if not g3.internal else math.inf   # inside: the path decides
+        if c >= reach or ra2 <= g2.base_radius or ra3 <= g3.base_radius:
             raise InputError(f"the gears cannot mesh at a center distance of {c:g} {self.units}: "
                              "their addendum circles do not reach the line of action",
                              key="center_distance", file=self.source)
@@ -118,6 +132,9 @@ class GearPair:
         phi = g2.pressure_angle
         if g2.offset == 0.0 and g3.offset == 0.0:
             return phi
+        if g3.internal:
+            raise InputError("teeth cut with an offset are not modelled inside an internal gear",
+                             key=f"gears.{g3.name}.offset", file=self.source)
 
         def gap(x: float) -> float:   # backlash / (2 R'_2), decreasing in x
             b2 = g2.thickness / (2 * g2.pitch_radius) + float(inv(phi)) - float(inv(x))
@@ -139,8 +156,8 @@ class GearPair:
     @property
     def tight_center_distance(self) -> float:
         """Where the teeth touch on both flanks: ``(r_2 + r_3) / cos φ'`` (Eqs. 7.19-7.20)."""
-        return ((self.driver.base_radius + self.driven.base_radius)
-                / math.cos(self.tight_angle))
+        r2, r3 = self.driver.base_radius, self.driven.base_radius
+        return (r3 - r2 if self.driven.internal else r2 + r3) / math.cos(self.tight_angle)
 
     @property
     def center(self) -> float:
@@ -150,7 +167,9 @@ class GearPair:
 
     @property
     def standard_center_distance(self) -> float:
-        """``R_2 + R_3``: the standard pitch circles tangent (Step 1)."""
+        """``R_2 + R_3``: the standard pitch circles tangent (Step 1); ``R_3 − R_2`` inside."""
+        if self.driven.internal:
+            return self.driven.pitch_radius - self.driver.pitch_radius
         return self.driver.pitch_radius + self.driven.pitch_radius
 
     @property
@@ -164,6 +183,8 @@ class GearPair:
         long-and-short-addendum system) ``R + a + e``.
         """
         g2, g3 = self.driver, self.driven
+        if g3.internal:   # no offsets inside a ring: each blank as cut alone
+            return g2.standard_outside_radius, g3.standard_outside_radius
         c0 = self.tight_center_distance
         return (c0 - g3.root_radius - (g3.dedendum - g2.addendum),
                 c0 - g2.root_radius - (g2.dedendum - g3.addendum))
@@ -172,6 +193,8 @@ class GearPair:
     def operating_pitch_radii(self) -> tuple[float, float]:
         """``R'_2, R'_3``: the pitch point divides the center distance as the teeth (Eq. 7.5)."""
         n2, n3 = self.driver.teeth, self.driven.teeth
+        if self.driven.internal:   # both centers on one side of P: R'_3 − R'_2 = C
+            return self.center * n2 / (n3 - n2), self.center * n3 / (n3 - n2)
         return self.center * n2 / (n2 + n3), self.center * n3 / (n2 + n3)
 
 
@@ -253,12 +276,22 @@ def mesh_construction(pair: GearPair) -> Construction:
 
     # Step 1: the centers, the pitch point and the pitch circles
     add("point", (), "O2", "O2, the center of the driver 2", xy=(0.0, r2p), role="given")
-    add("point", (), "O3", f"O3, the center of gear 3, {c:g} from O2", xy=(0.0, r2p - c),
-        role="given")
+    inside = g3.internal
+    if inside:   # Fig. 7.11: both centers on the same side of P
+        add("point", (), "O3", f"O3, the center of the internal gear 3, {c:g} from O2 on the "
+            "same side of the pitch point", xy=(0.0, r2p + c), role="given")
+    else:
+        add("point", (), "O3", f"O3, the center of gear 3, {c:g} from O2", xy=(0.0, r2p - c),
+            role="given")
     add("join", ("O2", "O3"), "O2O3", "the line of centers O2 O3")
-    add("along_ray", ("O2", "O3"), "P", "the pitch point P divides the line of centers in the "
-        f"ratio of the teeth, O2P/O3P = {g2.teeth}/{g3.teeth} (Eq. 7.5)", distance=r2p,
-        role="result")
+    if inside:
+        add("along_ray", ("O2", "O3"), "P", "the pitch point P on the line of centers beyond "
+            f"O2, away from O3, O2P/O3P = {g2.teeth}/{g3.teeth} (Eq. 7.5)", distance=-r2p,
+            role="result")
+    else:
+        add("along_ray", ("O2", "O3"), "P", "the pitch point P divides the line of centers in "
+            f"the ratio of the teeth, O2P/O3P = {g2.teeth}/{g3.teeth} (Eq. 7.5)", distance=r2p,
+            role="result")
     add("circle", ("O2",), "pitch2", "the pitch circle of 2, about O2 through P", radius=r2p)
     add("circle", ("O3",), "pitch3", "the pitch circle of 3, about O3 through P", radius=r3p)
     # Step 2: the common tangent
@@ -271,7 +304,9 @@ def mesh_construction(pair: GearPair) -> Construction:
         "base circle of 2: the foot of the perpendicular from O2 (the interference point)",
         offset=g2.base_radius, branch=Side.LEFT, role="result")
     add("tangent_foot", ("O3", "P"), "B", "B, where the line of action touches the base "
-        "circle of 3: the foot of the perpendicular from O3", offset=g3.base_radius,
+        "circle of 3: the foot of the perpendicular from O3" + (
+            " (on the same side of P as A: the internal gear's interference point lies "
+            "beyond A)" if inside else ""), offset=g3.base_radius,
         branch=Side.LEFT, role="result")
     add("join", ("A", "B"), "AB", "the line of action AB, through P at the pressure angle "
         "from the common tangent")
@@ -279,11 +314,12 @@ def mesh_construction(pair: GearPair) -> Construction:
     add("circle", ("O2",), "addendum2", "the addendum circle of 2", radius=ra2)
     add("circle", ("O3",), "addendum3", "the addendum circle of 3", radius=ra3)
     add("intersect_line_circle", ("AB", "addendum3"), "C", "C, first contact: where the "
-        "addendum circle of the driven gear 3 crosses the line of action",
+        "addendum circle of the driven gear 3 crosses the line of action" + (
+            " (of its two crossings, the one nearer P)" if inside else ""),
         branch=Along.BEHIND, role="result")
     add("intersect_line_circle", ("AB", "addendum2"), "D", "D, last contact: where the "
         "addendum circle of the driver 2 crosses the line of action",
-        branch=Along.AHEAD, role="result")
+        branch=Along.BEHIND if inside else Along.AHEAD, role="result")
     # Step 5: the dedendum circles
     add("circle", ("O2",), "dedendum2", "the dedendum circle of 2", radius=g2.root_radius)
     add("circle", ("O3",), "dedendum3", "the dedendum circle of 3", radius=g3.root_radius)
@@ -307,8 +343,8 @@ def layout(pair: GearPair) -> MeshLayout:
     pts = {k: (float(ev[k][0] / ev[k][2]), float(ev[k][1] / ev[k][2]))
            for k in ("O2", "O3", "P", "A", "B", "C", "D")}
     p = np.array(pts["P"])
-    ab = np.asarray(ev["AB"])
-    u = np.array([ab[1], -ab[0]])               # the direction of AB, A toward B
+    u = p - np.array(pts["A"])
+    u = u / float(np.hypot(*u))                 # along the line of action, A toward P
     tan = np.asarray(ev["tangent"])
     v = np.array([tan[1], -tan[0]])
     phi = math.atan2(abs(float(u[0] * v[1] - u[1] * v[0])), abs(float(u @ v)))
@@ -326,10 +362,12 @@ def layout(pair: GearPair) -> MeshLayout:
                          f"{pair.units}: the addendum circles cross the line of action with no "
                          "path of contact between them", key="center_distance",
                          file=pair.source)
-    beyond_a, beyond_b = t_a - t_c, t_d - t_b
+    beyond_a = t_a - t_c
+    # inside a ring B lies behind A: the recess is not bounded by it (Fig. 7.11)
+    beyond_b = t_d - t_b if not g3.internal else -abs(t_d - t_b)
     start = Contact.INTERFERENCE if beyond_a > tol else Contact.INSIDE
     end = Contact.INTERFERENCE if beyond_b > tol else Contact.INSIDE
-    involute_path = min(t_d, t_b) - max(t_c, t_a)
+    involute_path = (t_d if g3.internal else min(t_d, t_b)) - max(t_c, t_a)
     return MeshLayout(
         pair=pair, construction=cx, points=pts, operating_pressure_angle=phi,
         approach=cp, recess=pd, path=path, contact_ratio=path / g2.base_pitch,

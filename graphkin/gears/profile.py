@@ -27,7 +27,10 @@ import numpy as np
 from graphkin.gears.mesh import GearPair
 from graphkin.gears.tooth import Gear
 
-__all__ = ["tooth_template", "gear_teeth", "mesh_phases"]
+__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "TIP_SAMPLES"]
+
+TIP_SAMPLES = 241
+"""Points along a tip's path relative to the other gear."""
 
 FLANK = 24
 """Points along each involute flank."""
@@ -45,6 +48,8 @@ def tooth_template(g: Gear, outside: float) -> np.ndarray:
         (the clockwise side), across the top land, down the flank at ``+β``,
         and along the bottom land to ``2π/N − β`` (where the next tooth starts).
     """
+    if g.internal:
+        return _ring_tooth(g, outside)
     rb, rr = g.base_radius, g.root_radius
     tip = min(outside, g.pointed_radius())
     lo = max(rb, rr)
@@ -63,6 +68,28 @@ def tooth_template(g: Gear, outside: float) -> np.ndarray:
     root_t = np.linspace(beta[0], pitch - beta[0], LAND)[1:]
     bottom = np.stack([np.full_like(root_t, rr), root_t], axis=-1)
     return np.concatenate([up, top, down, bottom])
+
+
+def _ring_tooth(g: Gear, inside: float) -> np.ndarray:
+    """One tooth of an internal gear (Fig. 7.11): its tip on the addendum circle ``inside``.
+
+    The teeth point inward and widen outward, ``β'(r) = π/N − β(r)``
+    (:meth:`Gear.half_angle`): from the dedendum circle (outside) down the
+    flank at ``−β'`` to the tip, across the top land, back up the flank at
+    ``+β'`` and along the bottom land to the next tooth.  The whole flank lies
+    outside the base circle (the file refuses a ring whose tips do not).
+    """
+    rr = g.root_radius
+    r = np.linspace(rr, inside, FLANK)
+    beta = np.asarray(g.half_angle(r), dtype=float)
+    down = np.stack([r, -beta], axis=-1)
+    top_t = np.linspace(-beta[-1], beta[-1], LAND)[1:-1]
+    top = np.stack([np.full_like(top_t, inside), top_t], axis=-1)
+    up = np.stack([r[::-1], beta[::-1]], axis=-1)
+    pitch = 2.0 * math.pi / g.teeth
+    root_t = np.linspace(beta[0], pitch - beta[0], LAND)[1:]
+    bottom = np.stack([np.full_like(root_t, rr), root_t], axis=-1)
+    return np.concatenate([down, top, up, bottom])
 
 
 def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float
@@ -97,4 +124,58 @@ def mesh_phases(pair: GearPair) -> tuple[float, float]:
     r2p, r3p = pair.operating_pitch_radii
     b2 = float(pair.driver.half_angle(r2p))
     b3 = float(pair.driven.half_angle(r3p))
+    if pair.driven.internal:   # O3 above P too: the ring's tooth left of P, its flank at P
+        return -math.pi / 2 + b2, -math.pi / 2 - b3
     return -math.pi / 2 + b2, math.pi / 2 + b3
+
+
+def tip_path(pair: GearPair, points: dict[str, tuple[float, float]], cutter: int
+             ) -> np.ndarray:
+    """The path of a tooth tip of gear ``cutter`` relative to the other gear (Fig. 7.18).
+
+    Where the teeth interfere (Sec. 7.7), the tip corner of the tooth in mesh
+    at P sweeps through the other gear's flank inside its base circle; a
+    generating cutter shaped like it removes that material: the undercut.
+    The gears turn as in the layout (2 clockwise, 3 with ``ω3/ω2 = ∓N2/N3``);
+    the path is written in the other gear's frame at the drawn posture,
+    ``p = O_o + R(−θ_o)(O_c + R(θ_c)(q − O_c) − O_o)``, over the turns that
+    bring the tip from the path of contact's end through the flank and out.
+
+    Parameters
+    ----------
+    pair : GearPair
+    points : dict
+        The layout's points (``O2``, ``O3``, ``P``).
+    cutter : int
+        2 (the driver's tip cuts gear 3's flank, after B) or 3 (gear 3's tip
+        cuts the driver's flank, before A).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(TIP_SAMPLES, 2)`` points.
+    """
+    g2, g3 = pair.driver, pair.driven
+    ra2, ra3 = pair.outside_radii
+    r2p, r3p = pair.operating_pitch_radii
+    psi2, psi3 = mesh_phases(pair)
+    o2, o3 = np.array(points["O2"]), np.array(points["O3"])
+    k = g2.teeth / g3.teeth * (-1.0 if g3.internal else 1.0)   # θ3 per θ (θ2 = −θ)
+    span = 2.0 * 2.0 * math.pi / g2.teeth                        # two base pitches of 2
+    th = np.linspace(-span, span, TIP_SAMPLES)
+    if cutter == 3:   # the corner of 3's tooth on the flank that touches 2 at P
+        b = float(g3.half_angle(ra3))
+        ang = psi3 + b if g3.internal else psi3 - b
+        q = o3 + ra3 * np.array([math.cos(ang), math.sin(ang)])
+        c_ang, o_ang, oc, oo = k * th, -th, o3, o2
+    else:
+        ang = psi2 - float(g2.half_angle(ra2))
+        q = o2 + ra2 * np.array([math.cos(ang), math.sin(ang)])
+        c_ang, o_ang, oc, oo = -th, k * th, o2, o3
+    qc = q - oc
+    moved = oc + np.stack([np.cos(c_ang) * qc[0] - np.sin(c_ang) * qc[1],
+                           np.sin(c_ang) * qc[0] + np.cos(c_ang) * qc[1]], axis=-1)
+    d = moved - oo
+    back = -o_ang
+    return oo + np.stack([np.cos(back) * d[:, 0] - np.sin(back) * d[:, 1],
+                          np.sin(back) * d[:, 0] + np.cos(back) * d[:, 1]], axis=-1)

@@ -21,7 +21,7 @@ import numpy as np
 
 from graphkin.errors import InputError
 
-__all__ = ["ToothSystem", "Gear", "ADDENDUM", "DEDENDUM", "involute_angle", "inv"]
+__all__ = ["ToothSystem", "GearKind", "Gear", "ADDENDUM", "DEDENDUM", "involute_angle", "inv"]
 
 
 class ToothSystem(StrEnum):
@@ -31,6 +31,16 @@ class ToothSystem(StrEnum):
     """Addendum ``1 m``, dedendum ``1.25 m`` (20°, 22½°, 25°)."""
     STUB = "stub"
     """Stub teeth: addendum ``0.8 m``, dedendum ``1 m`` (20°)."""
+
+
+class GearKind(StrEnum):
+    """Where a gear's teeth stand against its pitch circle (Sec. 7.5, Figs. 7.9, 7.11)."""
+
+    EXTERNAL = "external"
+    """Teeth outside the pitch circle: the addendum circle is R + a."""
+    INTERNAL = "internal"
+    """An internal (annular) gear: teeth inside a ring, the addendum circle R − a inside
+    the pitch circle and the dedendum circle R + d outside it (Fig. 7.11)."""
 
 
 #: Addendum in modules, by tooth system (Table 7.2).
@@ -99,6 +109,12 @@ class Gear:
     dedendum: float
     offset: float = 0.0
     clearance: float = 0.0
+    kind: GearKind = GearKind.EXTERNAL
+
+    @property
+    def internal(self) -> bool:
+        """An internal (annular) gear."""
+        return self.kind == GearKind.INTERNAL
 
     def __post_init__(self) -> None:
         if self.teeth < 3:
@@ -107,7 +123,11 @@ class Gear:
         if not 0.0 < self.pressure_angle < math.pi / 2:
             raise InputError("the pressure angle must lie between 0° and 90°",
                              key="pressure_angle")
-        if self.dedendum >= self.pitch_radius - self.offset:
+        if self.internal and self.addendum >= self.pitch_radius:
+            raise InputError(f"the addendum {self.addendum:g} reaches the center of an internal "
+                             f"gear of pitch radius {self.pitch_radius:g}",
+                             key=f"gears.{self.name}.addendum")
+        if not self.internal and self.dedendum >= self.pitch_radius - self.offset:
             raise InputError(f"the dedendum {self.dedendum:g} reaches the center of a gear of "
                              f"pitch radius {self.pitch_radius:g}",
                              key=f"gears.{self.name}.dedendum")
@@ -139,12 +159,19 @@ class Gear:
 
     @property
     def root_radius(self) -> float:
-        """The dedendum circle: ``R − d + e`` (Step 5 of Sec. 7.5; Example 7.3)."""
+        """The dedendum circle: ``R − d + e`` (Step 5 of Sec. 7.5; Example 7.3).
+
+        ``R + d`` for an internal gear (outside its pitch circle, Fig. 7.11).
+        """
+        if self.internal:
+            return self.pitch_radius + self.dedendum
         return self.pitch_radius - self.dedendum + self.offset
 
     @property
     def standard_outside_radius(self) -> float:
-        """The addendum circle of the gear cut alone: ``R + a + e``."""
+        """The addendum circle of the gear cut alone: ``R + a + e`` (``R − a`` inside a ring)."""
+        if self.internal:
+            return self.pitch_radius - self.addendum
         return self.pitch_radius + self.addendum + self.offset
 
     def half_angle(self, r: Any) -> Any:
@@ -153,7 +180,10 @@ class Gear:
         ``β = β_p + inv φ − inv ϕ`` with ``β_p = t_p / 2R`` and ``cos ϕ = r/r_b``.
         """
         beta_p = self.thickness / (2.0 * self.pitch_radius)
-        return beta_p + inv(self.pressure_angle) - inv(involute_angle(self.base_radius, r))
+        ext = beta_p + inv(self.pressure_angle) - inv(involute_angle(self.base_radius, r))
+        if self.internal:   # the tooth of a ring is the space of the external gear (Fig. 7.11)
+            return math.pi / self.teeth - ext
+        return ext
 
     def thickness_at(self, r: Any) -> Any:
         """The tooth thickness (an arc) at radius ``r`` ≥ the base radius (Eq. 7.16)."""
@@ -162,8 +192,11 @@ class Gear:
     def pointed_radius(self) -> float:
         """The radius at which the two flanks of a tooth meet (β = 0): the tip of a pointed tooth.
 
-        Solved by bisection on ϕ (β decreases as the radius grows).
+        Solved by bisection on ϕ (β decreases as the radius grows).  An internal
+        gear's teeth widen outward and never come to a point: infinity.
         """
+        if self.internal:
+            return math.inf
         target = self.thickness / (2.0 * self.pitch_radius) + float(inv(self.pressure_angle))
         lo, hi = 0.0, math.pi / 2 - 1e-9
         for _ in range(200):

@@ -47,6 +47,10 @@ def forces_json(sol: Solution, units: OutputUnits) -> dict[str, Any] | None:
             f["point"] = [x * k for x in f["point"]]
             f["torque"] *= k
             f["offset"] *= k
+        for g in out.get("gears", {}).values():   # gear teeth (Sec. 11.11)
+            g["point"] = [x * k for x in g["point"]]
+            g["torque"] = {lid: m * k for lid, m in g["torque"].items()}
+            g["radius"] = {lid: r * k for lid, r in g["radius"].items()}
         if "shaking" in out:
             out["shaking"]["moment"] *= k
     return out

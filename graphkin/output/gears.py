@@ -47,12 +47,16 @@ def _gear(g: Gear, outside: float, operating: float, pair: GearPair) -> dict[str
         "offset": g.offset, "outside_radius": outside, "root_radius": g.root_radius,
         "circular_pitch": g.circular_pitch, "base_pitch": g.base_pitch,
         "thickness_pitch": g.thickness,
-        "thickness_base": float(g.thickness_at(g.base_radius)),
+        # inside a ring the base circle lies in the tooth space, not in a tooth
+        "thickness_base": None if g.internal else float(g.thickness_at(g.base_radius)),
         "thickness_outside": float(g.thickness_at(outside)),
         "thickness_operating_pitch": float(g.thickness_at(operating)),
-        "pointed_radius": pointed, "pointed": bool(outside > pointed + tol),
-        "undercut_by_rack": bool(g.offset < need - tol),
-        "offset_for_no_undercut": need,
+        "involute_angle_outside": math.degrees(math.acos(g.base_radius / outside)),
+        "kind": str(g.kind),
+        "pointed_radius": None if g.internal else pointed,
+        "pointed": bool(outside > pointed + tol),
+        "undercut_by_rack": bool(g.offset < need - tol) if not g.internal else False,
+        "offset_for_no_undercut": need if not g.internal else None,
         "minimum_teeth_rack": math.ceil(analytic.minimum_teeth_rack(k, g.pressure_angle)
                                         - 1e-9),
     }
@@ -65,15 +69,22 @@ def gears_json(lay: MeshLayout) -> dict[str, Any]:
     ra2, ra3 = pair.outside_radii
     r2p, r3p = pair.operating_pitch_radii
     phi = lay.operating_pressure_angle
-    cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius, pair.center,
-                                      analytic.operating_pressure_angle(
-                                          pair.standard_center_distance, pair.center,
-                                          g2.pressure_angle))
+    phi_op = analytic.operating_pressure_angle(pair.standard_center_distance, pair.center,
+                                               g2.pressure_angle)
+    if g3.internal:
+        cp, pd = analytic.approach_recess_internal(ra2, ra3, g2.base_radius, g3.base_radius,
+                                                   r2p, r3p, phi_op)
+        least = analytic.minimum_teeth_internal(g3.addendum / g3.module, g2.pressure_angle,
+                                                g3.teeth)
+    else:
+        cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius,
+                                          pair.center, phi_op)
+        k3 = (g3.dedendum - g3.clearance) / g3.module
+        least = analytic.minimum_teeth(k3, g2.pressure_angle, g3.teeth)
     pitch_op = 2.0 * math.pi * r2p / g2.teeth
     backlash = pitch_op - float(g2.thickness_at(r2p)) - float(g3.thickness_at(r3p))
     if backlash < pair.tol.length(pair.center):   # round-off of the thicknesses' sum
         backlash = 0.0
-    k3 = (g3.dedendum - g3.clearance) / g3.module
     return {
         "title": pair.title,
         "units": {"length": pair.units, "angle": "deg"},
@@ -99,8 +110,8 @@ def gears_json(lay: MeshLayout) -> dict[str, Any]:
             "start": str(lay.start), "end": str(lay.end),
             "AC": max(lay.beyond_a, 0.0), "BD": max(lay.beyond_b, 0.0),
             "involute_contact_ratio": lay.involute_contact_ratio,
-            "minimum_driver_teeth": math.ceil(
-                analytic.minimum_teeth(k3, g2.pressure_angle, g3.teeth) - 1e-9),
+            "kind": str(g3.kind),
+            "minimum_driver_teeth": None if math.isnan(least) else math.ceil(least - 1e-9),
         },
     }
 
@@ -128,7 +139,7 @@ def gears_text(lay: MeshLayout) -> str:
         ("operating pitch radius R'", "operating_pitch_radius", u),
     ]
     for name, key, unit in spec:
-        rows.append((name, g6(g2[key]), g6(g3[key]), unit))
+        rows.append((name, *("—" if g[key] is None else g6(g[key]) for g in (g2, g3)), unit))
     rows.append(("undercut by a rack cutter", _yes(g2["undercut_by_rack"]),
                  _yes(g3["undercut_by_rack"]), ""))
     rows.append(("pointed teeth", _yes(g2["pointed"]), _yes(g3["pointed"]), ""))
@@ -137,7 +148,8 @@ def gears_text(lay: MeshLayout) -> str:
     c2, c3 = g2["name"], g3["name"]
     pair_rows = [
         ("speed ratio ω2/ω3 = N3/N2", g6(m["ratio"]), ""),
-        ("standard center distance R2 + R3", g6(m["standard_center_distance"]), u),
+        ("standard center distance R3 − R2" if m["kind"] == "internal" else
+         "standard center distance R2 + R3", g6(m["standard_center_distance"]), u),
         ("center distance", g6(m["center_distance"]), u),
         ("operating pressure angle φ'", g6(m["operating_pressure_angle"]), "°"),
         ("backlash on the pitch circles", g6(m["backlash"]), u),
@@ -164,11 +176,15 @@ def gears_text(lay: MeshLayout) -> str:
         lines.append("  Interference (Sec. 7.7, Eq. 7.12): " + "; ".join(where) + ".")
         lines.append(f"  The involute action (from A or C to D or B) has a contact ratio of "
                      f"{g6(m['involute_contact_ratio'])}.")
+    elif m["kind"] == "internal":
+        lines.append(f"  No interference: C lies between A and P (Eq. 7.12); inside "
+                     f"{c3} the point B lies beyond A and does not bound the recess (Fig. 7.11).")
     else:
         lines.append("  No interference: C and D lie between the interference points A and B "
                      "(Eq. 7.12).")
+    least = m["minimum_driver_teeth"]
     lines.append(f"  The fewest teeth on {c2} that mesh with {g3['teeth']} teeth without "
-                 f"interference: {m['minimum_driver_teeth']}.")
+                 f"interference: {least if least is not None else 'none (no pinion fits)'}.")
     if m["contact_ratio"] < 1.0:
         lines.append("  The contact ratio is below 1: at times no pair of teeth is in contact "
                      "(Sec. 7.9).")

@@ -11,10 +11,12 @@ import re
 from fractions import Fraction
 from typing import Any
 
+from graphkin.errors import InputError
 from graphkin.gears.train import FRAME, Table, Train, TrainSolution, formula, solve, tabular
 from graphkin.text import clean, g6, table
 
-__all__ = ["train_json", "train_text", "member_order"]
+__all__ = ["train_json", "train_text", "member_order", "mechanism_train_json",
+           "mechanism_train_text"]
 
 
 def member_order(train: Train) -> list[str]:
@@ -34,8 +36,13 @@ def _fraction(f: Fraction) -> str:
 
 
 def _formulas(train: Train, sol: TrainSolution) -> list[dict[str, Any]]:
-    """Eq. (7.25) for each arm: from its first gear F to each other gear L it carries."""
+    """Eq. (7.25) for each arm: from its first gear F to each other gear L it carries.
+
+    A speed at round-off of the train's largest is printed as 0 (Example 7.4's
+    fixed gear 6 came out 6.7e-13 rev/min).
+    """
     out = []
+    tiny = 1e-9 * max(1.0, *(abs(v) for v in sol.omega.values()))
     carriers = list(dict.fromkeys(m.arm for m in train.meshes))
     for arm in carriers:
         gears = list(dict.fromkeys(g for m in train.meshes if m.arm == arm
@@ -48,7 +55,8 @@ def _formulas(train: Train, sol: TrainSolution) -> list[dict[str, Any]]:
             value, _ = found
             out.append({"arm": arm, "first": first, "last": last,
                         "train_value": float(value), "fraction": _fraction(value),
-                        "omega_last": clean(sol.omega[last] if last in sol.omega else 0.0)})
+                        "omega_last": clean(sol.omega[last] if last in sol.omega else 0.0,
+                                            tiny)})
     return out
 
 
@@ -116,4 +124,64 @@ def train_text(train: Train) -> str:
         lines.append(f"  {w}{tab['arm']} = {g6(clean(tab['omega_arm']))} {u}, "
                      f"{w}{tab['turned']}/{tab['arm']} = "
                      f"{g6(clean(tab['omega_turned_relative']))} {u}")
+    return "\n".join(lines) + "\n"
+
+
+def mechanism_train_json(sol: Any) -> dict[str, Any] | None:
+    """The train of a solved mechanism's rolling gears, checked against its rolling kinematics.
+
+    The drives' angular velocities are the train's given motions (a fixed gear
+    of the frame is given at rest); the train's answer (the mesh equations,
+    the formula method and the book's table, Secs. 7.15-7.16) is set beside
+    each link's ω from the rolling constructions (``kinematics``), with their
+    difference.  None when the mechanism is not a gear train
+    (:func:`graphkin.gears.mechanism_train.train_of`) or has no rates.
+    """
+    from graphkin.gears.mechanism_train import train_of
+
+    mech = sol.mechanism
+    if not mech.has_rates:
+        return None
+    given = {d.link: float(sol.links[d.link].omega) for d in mech.drives}
+    train = train_of(mech, given)
+    if train is None:
+        return None
+    try:
+        data = train_json(train)
+    except InputError:   # a train the mesh equations do not fix (more inputs than gears)
+        return None
+    scale = max(1.0, *(abs(float(s.omega)) for s in sol.links.values()
+                       if s.omega is not None))
+    check = {}
+    for m, d in data["members"].items():
+        lid = m.rstrip("'")
+        if lid not in sol.links or sol.links[lid].omega is None:
+            continue
+        w = float(sol.links[lid].omega)
+        check[m] = {"rolling": clean(w, 1e-12 * scale), "train": d["omega"],
+                    "difference": clean(d["omega"] - w, 1e-12 * scale)}
+    data["check"] = check
+    return data
+
+
+def mechanism_train_text(sol: Any) -> str | None:
+    """:func:`mechanism_train_json` as text: the train report and the check."""
+    from graphkin.gears.mechanism_train import train_of
+
+    data = mechanism_train_json(sol)
+    if data is None:
+        return None
+    mech = sol.mechanism
+    train = train_of(mech, {d.link: float(sol.links[d.link].omega) for d in mech.drives})
+    assert train is not None
+    lines = [train_text(train).rstrip("\n"), "",
+             "Check against the rolling-contact kinematics (Sec. 3.7; solved by the "
+             f"{'graphic constructions' if sol.method == 'construction' else 'analytic solver'}):"]
+    rows = [("member", "ω (rolling)", "ω (train)", "difference")]
+    for m, c in data["check"].items():
+        rows.append((m, f"{g6(c['rolling'])} rad/s", f"{g6(c['train'])} rad/s",
+                     f"{g6(c['difference'])} rad/s"))
+    lines += table(rows, "  ")
+    worst = max((abs(c["difference"]) for c in data["check"].values()), default=0.0)
+    lines.append("  they agree" if worst == 0.0 else f"  largest difference {g6(worst)} rad/s")
     return "\n".join(lines) + "\n"

@@ -471,6 +471,45 @@ def _interference(lay: MeshLayout, p: Panel) -> None:
         g.items.append(Item("marker", np.array([xa]), "ball", key=f"interference {a}"))
     mid = 0.5 * (np.array(lay.points[spans[0][0]]) + np.array(lay.points[spans[0][1]]))
     _label(p, g, "interference", mid, "words", "label-aux")
+    _undercut(lay, p, spans)
+
+
+def _undercut(lay: MeshLayout, p: Panel, spans: list[tuple[str, str]]) -> None:
+    """The tip's path through the other gear's flank (Fig. 7.18): what a generator cuts away.
+
+    Drawn where it runs inside the cut gear's tooth (between its flanks, above
+    its root circle): the new, undercut flank (``undercut-2`` for gear 2 cut
+    by 3's tip, ``undercut-3``); the tooth's own flank there is cut away.
+    """
+    from graphkin.gears.profile import tip_path
+
+    pair = lay.pair
+    box = p.inner
+    assert box is not None
+    for a, _ in spans:
+        cut, cutter = ("2", 3) if a == "A" else ("3", 2)
+        gear = pair.driver if cut == "2" else pair.driven
+        center = np.array(lay.points[f"O{cut}"])
+        path = tip_path(pair, lay.points, cutter)
+        rel = path - center
+        r = np.hypot(*rel.T)
+        psi = mesh_phases(pair)[0 if cut == "2" else 1]
+        half = np.asarray(gear.half_angle(np.maximum(r, gear.base_radius)), dtype=float)
+        off = (np.arctan2(rel[:, 1], rel[:, 0]) - psi + np.pi) % (2 * np.pi) - np.pi
+        keep = (r >= gear.root_radius) & (np.abs(off) < half)
+        keep = keep | np.roll(keep, 1) | np.roll(keep, -1)   # to the flank on either side
+        keep &= (path[:, 0] >= box[0]) & (path[:, 0] <= box[2]) \
+            & (path[:, 1] >= box[1]) & (path[:, 1] <= box[3])
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], keep.astype(int), [0]])))
+        runs = [(i, j) for i, j in zip(edges[::2], edges[1::2]) if j - i >= 2]
+        if not runs:
+            continue
+        g = p.group(f"{p.prefix}undercut-{cut}", 4.6, key=f"undercut {cut}")
+        for n, (i, j) in enumerate(runs):
+            g.items.append(Item("path", path[i:j], "result-line",
+                                gid=f"{p.prefix}undercut-{cut}-{n}", key=f"undercut {cut}"))
+        i, j = max(runs, key=lambda ij: ij[1] - ij[0])
+        _label(p, g, f"undercut {cut}", path[(i + j) // 2], "words", "label-aux")
 
 
 def _rows(lay: MeshLayout) -> list[Row]:
@@ -480,8 +519,13 @@ def _rows(lay: MeshLayout) -> list[Row]:
     ra2, ra3 = pair.outside_radii
     phi = analytic.operating_pressure_angle(pair.standard_center_distance, pair.center,
                                             g2.pressure_angle)
-    cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius, pair.center,
-                                      phi)
+    if g3.internal:
+        r2p, r3p = pair.operating_pitch_radii
+        cp, pd = analytic.approach_recess_internal(ra2, ra3, g2.base_radius, g3.base_radius,
+                                                   r2p, r3p, phi)
+    else:
+        cp, pd = analytic.approach_recess(ra2, ra3, g2.base_radius, g3.base_radius,
+                                          pair.center, phi)
     mc = analytic.contact_ratio(cp, pd, g2.base_pitch)
     u = pair.units
     deg = math.degrees

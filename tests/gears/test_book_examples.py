@@ -102,7 +102,7 @@ def test_example_7_3_center_distance_modification(gear_examples):
     lay = layout(pair)
     # CP = 1.883 in, PD = 2.377 in: the book evaluates PD with its rounded 7.286, 5.638,
     # 6.066 and 21.65° (√(7.286² − 5.638²) − 6.066 sin 21.65° = 2.3771); unrounded it is
-    # 2.3776, so the book's last figure is off by one: 1e-3 covers its rounding.
+    # 2.3777, so the book's last figure is off by one: 1e-3 covers its rounding.
     assert lay.approach == pytest.approx(1.883, abs=1e-3)
     assert lay.recess == pytest.approx(2.377, abs=1e-3)
     # m_c = 1.443 teeth average; "undercutting has been completely eliminated"

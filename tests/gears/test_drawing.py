@@ -69,7 +69,8 @@ def _check(lay, drawing) -> dict[str, ET.Element]:
     return ids
 
 
-@pytest.mark.parametrize("name", ["ex7_1.toml", "ex7_3.toml", "fig7_18.toml", "fig7_21.toml"])
+@pytest.mark.parametrize("name", ["ex7_1.toml", "ex7_3.toml", "fig7_18.toml", "fig7_21.toml",
+                                  "fig7_11.toml"])
 def test_book_figures_read_back(gear_examples, name):
     lay = layout(load(gear_examples / name))
     ids = _check(lay, draw_gears(lay))
