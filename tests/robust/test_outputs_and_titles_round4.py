@@ -142,3 +142,21 @@ def test_the_output_check_is_in_the_cli_for_every_command() -> None:
                 writers.add(act.dest)
     assert writers <= set(OUTPUT_OPTIONS) | {"frames"}, writers
     assert os.path.exists(FOURBAR)
+
+
+DESIGN = sorted((ROOT / "tests" / "data" / "hostile" / "design").glob("*.toml"))
+DESIGN_COMMANDS = {"cam": [["cam"], ["cam", "--json"], ["cam", "-o", "{t}/c.svg"]],
+                   "gears": [["gears"], ["gears", "--json"], ["steps", "-o", "{t}/g.html"]],
+                   "synthesis": [["synthesize"], ["synthesize", "--json"],
+                                 ["synthesize", "-o", "{t}/m.toml", "--draw", "{t}/s.svg"]]}
+
+
+@pytest.mark.parametrize("path", DESIGN, ids=[p.stem for p in DESIGN])
+def test_every_hostile_design_file_ends_cleanly(path: Path, tmp_path: Path) -> None:
+    """The design chapters' corpus (tests/data/hostile/design, named by file kind)."""
+    for cmd in DESIGN_COMMANDS[path.stem.split("_")[0]]:
+        rc, out, err = run([cmd[0], str(path), *(a.format(t=tmp_path) for a in cmd[1:])])
+        assert_clean(rc, out, err)
+        assert "cannot handle" not in err, err
+        if "not_table" in path.stem or "singular" in path.stem:
+            assert rc == 2 and f"{path}: function: " in err, err
