@@ -135,7 +135,7 @@ def test_the_output_check_is_in_the_cli_for_every_command() -> None:
     parser = build_parser()
     sub = next(a for a in parser._actions if a.dest == "command" or a.choices)
     writers = set()
-    for name, p in sub.choices.items():  # type: ignore[union-attr]
+    for p in sub.choices.values():  # type: ignore[union-attr]
         for act in p._actions:
             if act.dest in ("output", "csv", "gif", "draw", "frames", "marks") or \
                     (act.metavar or "").upper().startswith("OUT"):
@@ -146,7 +146,7 @@ def test_the_output_check_is_in_the_cli_for_every_command() -> None:
 
 DESIGN = sorted((ROOT / "tests" / "data" / "hostile" / "design").glob("*.toml"))
 DESIGN_COMMANDS = {"cam": [["cam"], ["cam", "--json"], ["cam", "-o", "{t}/c.svg"]],
-                   "gears": [["gears"], ["gears", "--json"], ["steps", "-o", "{t}/g.html"]],
+                   "gears": [["gears"], ["gears", "--json"]],  # steps: in the title test
                    "synthesis": [["synthesize"], ["synthesize", "--json"],
                                  ["synthesize", "-o", "{t}/m.toml", "--draw", "{t}/s.svg"]]}
 
