@@ -45,11 +45,35 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
                              key=f"--{'from' if name == 'start' else 'to'}",
                              file=eng.mech.source)
     a, b, cyclic = _drive_range(eng, start, stop)
+    a, b, cyclic = _within_tables(eng, start, stop, a, b, cyclic)
     _resolvable(eng, a, b, count, "--to" if stop is not None else "--from")
     # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
     # 48.00000000000001
     user = a + ((b - a) * np.arange(count, dtype=float)) / count
     return user, (np.radians(user) if eng.drive.is_angle else user), cyclic
+
+
+def _within_tables(eng: _Engine, start: float | None, stop: float | None, a: float, b: float,
+                   cyclic: bool) -> tuple[float, float, bool]:
+    """The range within the rows of a table law that does not cover a whole turn.
+
+    By default such a sweep runs over the table's rows (first to last); a
+    ``--from`` or ``--to`` outside them is refused naming the table.
+    """
+    f = 180.0 / math.pi if eng.drive.is_angle else 1.0
+    for d in eng.mech.drives:
+        dom = None if d.law is None else d.law.domain
+        if dom is None:
+            continue
+        lo, hi = round(dom[0] * f, 10), round(dom[1] * f, 10)
+        a = lo if start is None else a
+        b = hi if stop is None else b
+        cyclic = False
+        for v, opt in ((a, "--from"), (b, "--to")):
+            if not lo - 1e-9 * max(1.0, abs(lo)) <= v <= hi + 1e-9 * max(1.0, abs(hi)):
+                raise InputError(f"{d.key}.follows.table covers the first drive from {lo:g} "
+                                 f"to {hi:g} only, not {v:g}", key=opt, file=eng.mech.source)
+    return a, b, cyclic
 
 
 #: The largest drive value a sweep takes: degrees, or a travel in sizes of the mechanism.
