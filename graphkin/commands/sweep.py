@@ -62,6 +62,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "the loads and inertia forces of the file (docs/forces.md)")
     p.add_argument("--joint-forces", action="store_true",
                    help="with --torque: also the magnitude of every joint force (F_3-4)")
+    p.add_argument("--turn", action="store_true",
+                   help="from 0° to 360° instead of from the file's angle; a drive that "
+                        "cannot turn fully: from one limit position to the other")
     p.add_argument("--follow", action="store_true",
                    help="keep the motion continuous: where the file's branch would jump (a "
                         "stretched or folded posture), go on along the other branch and say "
@@ -92,7 +95,8 @@ def run(args: argparse.Namespace) -> int:
     with bar("sweep", total=args.count, unit="posture") as b:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=args.transmission, centers=args.centers,
-                   curvature=args.curvature, progress=b.fraction, follow=args.follow)
+                   curvature=args.curvature, progress=b.fraction, follow=args.follow,
+                   turn=args.turn)
     if args.torque or args.joint_forces:
         from graphkin.forces.sweep import force_columns
 

@@ -50,6 +50,9 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
     # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
     # 48.00000000000001
     user = a + ((b - a) * np.arange(count, dtype=float)) / count
+    places = _decimals(a, b, count)
+    if places is not None:  # 0.1 to 0.4 in 3 steps: 0.3, not 0.30000000000000004
+        user = np.round(user, places) + 0.0  # + 0.0: no -0.0
     return user, (np.radians(user) if eng.drive.is_angle else user), cyclic
 
 
@@ -74,6 +77,28 @@ def _within_tables(eng: _Engine, start: float | None, stop: float | None, a: flo
                 raise InputError(f"{d.key}.follows.table covers the first drive from {lo:g} "
                                  f"to {hi:g} only, not {v:g}", key=opt, file=eng.mech.source)
     return a, b, cyclic
+
+
+def _decimals(a: float, b: float, count: int) -> int | None:
+    """The decimals of the drive values when ``a`` and the step are short decimals.
+
+    ``--from 0.1 --to 0.4 --count 3`` steps by 0.1: every value has one decimal,
+    and rounding to it gives the float nearest the decimal the user means.  None
+    when a value needs more than 12 decimals (a step of 1/7, a limit position).
+    """
+    from fractions import Fraction
+
+    try:
+        fa, fb = Fraction(repr(float(a))), Fraction(repr(float(b)))
+    except (ValueError, OverflowError):
+        return None
+    step = (fb - fa) / count
+    for places in range(13):
+        scale = 10**places
+        if (fa * scale).denominator == 1 and (step * scale).denominator == 1:
+            big = max(abs(fa), abs(fb)) * scale
+            return places if big < 2**52 else None
+    return None
 
 
 #: The largest drive value a sweep takes: degrees, or a travel in sizes of the mechanism.
@@ -222,3 +247,58 @@ def _bisect(ok: Callable[[Array], Array], good: Array, bad: Array,
         good = np.where(m, mid, good)
         bad = np.where(m, bad, mid)
     return good, bad
+
+
+def turn_range(eng: _Engine, count: int, start: float | None, stop: float | None
+               ) -> tuple[float, float]:
+    """``--turn``: the drive from 0° to 360°, or from one limit position to the other.
+
+    A drive that turns fully is swept over one turn from 0° (not from the
+    file's angle, the contract's default).  One that cannot -- a rocker, or a
+    crank whose mechanism does not assemble over part of the turn -- is swept
+    over the arc around the file's angle where it assembles, from its first
+    limit position to the other, **both included** (the last posture is the
+    second limit, Sec. 1.7).
+
+    Returns
+    -------
+    start, stop : float
+        Degrees, as ``--from``/``--to`` (``stop`` excluded, so that with a
+        limited range the last posture lands on the second limit).
+
+    Raises
+    ------
+    InputError
+        With ``--from`` or ``--to``, or a drive that is not an angle.
+    """
+    d, mech = eng.drive, eng.mech
+    if start is not None or stop is not None:
+        raise InputError("--turn sets the range: leave out --from and --to", key="--turn",
+                         file=mech.source)
+    if not d.is_angle:
+        raise InputError(f"--turn sweeps an angle; {d.label} is a travel, swept over the range "
+                         "where it assembles by default", key="--turn", file=mech.source)
+    ok = _assembles(eng)
+    x0 = math.radians(round(math.degrees(d.value), 10))
+    xs = x0 + np.linspace(0.0, 2.0 * math.pi, 721)
+    fine = np.asarray(ok(xs), dtype=bool)
+    if fine.all():
+        return 0.0, 360.0
+    if not fine[0]:
+        raise AssemblyError("cannot assemble at the file's drive angle", key="drive",
+                            file=mech.source)
+    bad = np.flatnonzero(~fine)
+    kf, kb = int(bad[0]), int(bad[-1])
+    good = np.array([xs[kf - 1], xs[kb + 1] - 2.0 * math.pi])
+    out = np.array([xs[kf], xs[kb] - 2.0 * math.pi])
+    if eng.method == "analytic":
+        ends = np.array([_narrow(ok, good[i:i + 1], out[i:i + 1])[0] for i in range(2)])
+    else:
+        ends, _ = _bisect(ok, good, out)
+    hi, lo = (float(math.degrees(v)) for v in ends)
+    # a hair inside the limits found (far below the tangency tolerance, ~1e-7°), so that the
+    # round-off of the drive values cannot step past them
+    lo, hi = lo + 1e-9, hi - 1e-9
+    if count < 2:
+        return lo, hi
+    return lo, lo + (hi - lo) * count / (count - 1)
