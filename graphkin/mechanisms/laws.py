@@ -187,7 +187,7 @@ def table_law(x: Array, y: Array, *, angle: bool, follower_angle: bool,
             raise fail("a table over one whole turn repeats every turn: its last row must "
                        "come back to the first (the same value, or whole turns of an angle), "
                        f"not {math.degrees(y[-1] - y[0]) if follower_angle else y[-1] - y[0]:g}"
-                       f"{'°' if follower_angle else ''} on")
+                       f"{'°' if follower_angle else ''} further on")
         slope = rise / TWO_PI
         g = y - slope * (x - x[0])
         g[-1] = g[0]
