@@ -83,3 +83,12 @@ def test_drive_values_are_the_decimals_meant(start: float, stop: float, count: i
     sw = graphkin.examples.crank_rocker().sweep(count=count, start=start, stop=stop)
     got = [repr(float(v)) for v in sw.columns["drive"]]
     assert got == [repr(round(w, 10)) for w in want]
+
+
+def test_turn_of_a_partial_table_law_is_its_rows() -> None:
+    """A follower given by a table over 30°-360° of θ2 moves only there: --turn runs over the
+    rows, both ends included (found by the fuzzer: an index past the turn's last posture)."""
+    text = (ROOT / "examples" / "fivebar_table.toml").read_text(encoding="utf-8")
+    mech = graphkin.loads(text.replace("[0, -315.0000], ", ""))
+    sw = mech.sweep(count=5, turn=True)
+    assert list(sw.columns["drive"]) == [30.0, 112.5, 195.0, 277.5, 360.0]

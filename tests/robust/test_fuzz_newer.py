@@ -40,7 +40,8 @@ BASES = [ROOT / "gallery" / "mechanisms" / f for f in (
     "p5_7_robots.toml", "p5_13_pantograph.toml")] + [
     ROOT / "tests" / "forces" / "data" / "rolling_wheel_loaded.toml",
     ROOT / "tests" / "forces" / "data" / "spur_gears.toml",
-    ROOT / "examples" / "planetary_outside.toml"]
+    ROOT / "examples" / "planetary_outside.toml", ROOT / "examples" / "fivebar_coupled.toml",
+    ROOT / "examples" / "fivebar_table.toml"]
 DATA = {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in BASES if p.exists()}
 for d in DATA.values():
     d.pop("gallery", None)

@@ -45,7 +45,7 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
                              key=f"--{'from' if name == 'start' else 'to'}",
                              file=eng.mech.source)
     a, b, cyclic = _drive_range(eng, start, stop)
-    a, b, cyclic = _within_tables(eng, start, stop, a, b, cyclic)
+    a, b, cyclic = _within_tables(eng, start, stop, a, b, cyclic, count)
     _resolvable(eng, a, b, count, "--to" if stop is not None else "--from")
     # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
     # 48.00000000000001
@@ -57,7 +57,7 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
 
 
 def _within_tables(eng: _Engine, start: float | None, stop: float | None, a: float, b: float,
-                   cyclic: bool) -> tuple[float, float, bool]:
+                   cyclic: bool, count: int) -> tuple[float, float, bool]:
     """The range within the rows of a table law that does not cover a whole turn.
 
     By default such a sweep runs over the table's rows (first to last); a
@@ -72,7 +72,8 @@ def _within_tables(eng: _Engine, start: float | None, stop: float | None, a: flo
         a = lo if start is None else a
         b = hi if stop is None else b
         cyclic = False
-        for v, opt in ((a, "--from"), (b, "--to")):
+        last = a + (b - a) * (count - 1) / count  # the end itself is not swept
+        for v, opt in ((a, "--from"), (last, "--to")):
             if not lo - 1e-9 * max(1.0, abs(lo)) <= v <= hi + 1e-9 * max(1.0, abs(hi)):
                 raise InputError(f"{d.key}.follows.table covers the first drive from {lo:g} "
                                  f"to {hi:g} only, not {v:g}", key=opt, file=eng.mech.source)
@@ -278,9 +279,14 @@ def turn_range(eng: _Engine, count: int, start: float | None, stop: float | None
     if not d.is_angle:
         raise InputError(f"--turn sweeps an angle; {d.label} is a travel, swept over the range "
                          "where it assembles by default", key="--turn", file=mech.source)
+    for x in mech.drives:  # a table law over part of a turn: its rows are the whole motion
+        dom = None if x.law is None else x.law.domain
+        if dom is not None:
+            lo, hi = round(math.degrees(dom[0]), 10), round(math.degrees(dom[1]), 10)
+            return lo, (hi if count < 2 else lo + (hi - lo) * count / (count - 1))
     ok = _assembles(eng)
     x0 = math.radians(round(math.degrees(d.value), 10))
-    xs = x0 + np.linspace(0.0, 2.0 * math.pi, 721)
+    xs = x0 + np.linspace(0.0, 2.0 * math.pi, 721)[:-1]  # once round, x0 + 2π is x0
     fine = np.asarray(ok(xs), dtype=bool)
     if fine.all():
         return 0.0, 360.0
@@ -289,7 +295,8 @@ def turn_range(eng: _Engine, count: int, start: float | None, stop: float | None
                             file=mech.source)
     bad = np.flatnonzero(~fine)
     kf, kb = int(bad[0]), int(bad[-1])
-    good = np.array([xs[kf - 1], xs[kb + 1] - 2.0 * math.pi])
+    after = xs[kb + 1] if kb + 1 < len(xs) else xs[0] + 2.0 * math.pi
+    good = np.array([xs[kf - 1], after - 2.0 * math.pi])
     out = np.array([xs[kf], xs[kb] - 2.0 * math.pi])
     if eng.method == "analytic":
         ends = np.array([_narrow(ok, good[i:i + 1], out[i:i + 1])[0] for i in range(2)])
