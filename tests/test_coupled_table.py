@@ -165,3 +165,19 @@ def test_plot_and_animate_move_the_follower(tmp_path: Path) -> None:
                  str(tmp_path / "p.svg")]) == 0
     assert main(["animate", str(TABLE), "--count", "12", "-o", str(tmp_path / "a.html")]) == 0
     assert "held at the file" not in (tmp_path / "a.html").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("path", [LINEAR, TABLE])
+def test_live_refuses_a_follower_it_cannot_move(path: Path, tmp_path: Path) -> None:
+    """The live page moves one input and held the follower undefined (θ3 missing from its
+    inputs): refused in one line naming the follower, until the page moves it."""
+    import contextlib
+    import io
+
+    from graphkin.cli import main
+
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        rc = main(["live", str(path), "-o", str(tmp_path / "l.html")])
+    assert rc == 2 and "drive[1].follows: no live page" in err.getvalue(), err.getvalue()
+    assert not (tmp_path / "l.html").exists()
