@@ -2,7 +2,8 @@
 
 Solve a mechanism at many values of its (first) drive at once, by the same constructions
 as solve, and write one CSV row per posture. Other drives are held at the file's values,
-except those that follow the first by a law (follows = {link, ratio, offset}).
+except those that follow the first by a law (follows = {link, ratio, offset} or a
+table of pairs). --turn sweeps from 0° (or limit to limit) instead of the file's angle.
 
 The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,

@@ -104,7 +104,8 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     continuity).  With several drives the first is swept and the others are
     held at the file's values (their rates, if given, apply throughout), except
     those that follow the first by a law (``follows``, ``Drive.law``): they move with
-    it, value k · first + c and rates k · ω, k · α.
+    it, value f(first) and rates f′ · ω and f″ · ω² + f′ · α (f linear, k · first + c,
+    or the spline through a table, :mod:`graphkin.mechanisms.laws`).
     Mechanisms that cannot be solved one group at a time are solved by
     :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
     each posture from the one before), and ``method`` and ``notes`` say so.
