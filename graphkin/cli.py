@@ -139,6 +139,9 @@ def _main(argv: Sequence[str] | None) -> int:
         # the user: results are checked for finiteness, and errors are one line each
         with warnings.catch_warnings(), np.errstate(all="ignore"):
             warnings.simplefilter("ignore")
+            from graphkin.files import check_outputs
+
+            check_outputs(vars(args))  # nothing the user gave may be lost, in every command
             return int(args._run(args) or 0)
     except InputError as exc:
         print(f"graphkin: {_clip(exc.one_line())}", file=sys.stderr)

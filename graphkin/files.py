@@ -17,6 +17,7 @@ deep that the parser recurses too far) into an :class:`~graphkin.errors.InputErr
 from __future__ import annotations
 
 import os
+import re
 import stat
 import tomllib
 from pathlib import Path
@@ -24,7 +25,8 @@ from typing import Any
 
 from graphkin.errors import InputError
 
-__all__ = ["MAX_FILE_BYTES", "check_output", "check_file", "read_bytes", "read_text",
+__all__ = ["MAX_FILE_BYTES", "check_output", "check_outputs", "check_file", "read_bytes",
+           "read_text",
            "parse_toml", "load_toml"]
 
 #: The largest file graphkin reads, in bytes (20 MB).
@@ -84,6 +86,56 @@ def check_output(out: str | Path, inputs: list[str | Path], option: str) -> None
             same = False
         if same or o.resolve() == p.resolve():
             raise InputError(f"refusing to write over the input file {p}", key=option)
+
+
+#: The options through which a command writes one file.
+OUTPUT_OPTIONS = ("output", "csv", "gif", "draw")
+#: The names of the frames ``--frames DIR`` writes (steps, forces, gears, animate).
+FRAME_NAME = re.compile(r"^(step|forces|gears|cycle)-\d+\.(svg|png)$")
+
+
+def check_outputs(options: dict[str, Any]) -> None:
+    """Refuse, before any work, an output of a command that is one of its inputs.
+
+    ``options`` are a command's parsed options (``vars(args)``).  Every option
+    that names an existing file and is not an output (``FILE``, an answers
+    file, ``--drawing``) is an input; ``-o``, ``--csv``, ``--gif`` and
+    ``--draw`` must not be one of them (nor a link to one), and ``--frames
+    DIR`` must not hold an input named like a frame (``step-00.svg``).  The
+    class check of every command, new ones included.
+
+    Raises
+    ------
+    InputError
+        Naming the option and the input file.
+    """
+    inputs: list[Path] = []
+    for key, value in options.items():
+        if key.startswith("_") or key in OUTPUT_OPTIONS or key == "frames":
+            continue
+        for v in value if isinstance(value, list) else [value]:
+            if isinstance(v, (str, Path)) and str(v) not in ("", "-"):
+                try:
+                    if Path(v).is_file():
+                        inputs.append(Path(v))
+                except (OSError, ValueError):
+                    continue
+    if not inputs:
+        return
+    for key in OUTPUT_OPTIONS:
+        out = options.get(key)
+        if isinstance(out, (str, Path)) and str(out):
+            check_output(out, list(inputs), f"--{key}")
+    frames = options.get("frames")
+    if isinstance(frames, (str, Path)) and str(frames):
+        for p in inputs:
+            try:
+                inside = Path(frames).is_dir() and os.path.samefile(p.parent, frames)
+            except (OSError, ValueError):
+                inside = False
+            if inside and FRAME_NAME.match(p.name):
+                raise InputError(f"refusing to write frames over the input file {p}",
+                                 key="--frames")
 
 
 def read_bytes(path: str | Path, *, limit: int = MAX_FILE_BYTES) -> bytes:

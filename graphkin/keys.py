@@ -80,7 +80,7 @@ MECHANISM: Schema = {
               "point": None, "x": None, "y": None, "vx": None, "vy": None, "ax": None,
               "ay": None,
               # an input coupled to the first by a law: θ5 = 3 θ2 + 30° (a swept parameter)
-              "follows": {"link": None, "ratio": None, "offset": None}},
+              "follows": {"link": None, "ratio": None, "offset": None, "table": None}},
     "rates": {"link": None, "omega": None, "alpha": None, "velocity": None,
               "acceleration": None},
     "assembly": {"*": None},              # <point> = [x, y]

@@ -26,7 +26,7 @@ from typing import Any, overload
 import numpy as np
 
 __all__ = ["wrap_degrees", "fmt", "g6", "fmt_angle", "direction_degrees", "sense", "polar",
-           "xy", "table", "ROUND_OFF"]
+           "xy", "table", "ROUND_OFF", "toml_string"]
 
 ROUND_OFF = 1e-12
 """Coordinates below this fraction of the mechanism's size are written as 0 (round-off)."""
@@ -242,3 +242,19 @@ def script_json(data: Any) -> str:
     import json
 
     return json.dumps(data, separators=(",", ":"), ensure_ascii=False).translate(_SCRIPT_ESCAPES)
+
+
+def toml_string(text: str) -> str:
+    r"""``text`` as a TOML basic string, quotes included: a user's title written into a file.
+
+    JSON's escapes are TOML's (``\"``, ``\\``, ``\n``, ``\u0007``); DEL, which
+    TOML refuses raw and JSON keeps, is escaped too, so any title reads back as itself.
+
+    Examples
+    --------
+    >>> toml_string('a "b"\nc')
+    '"a \\"b\\"\\nc"'
+    """
+    import json
+
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")

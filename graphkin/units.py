@@ -164,6 +164,57 @@ def length_factor(unit: str) -> float:
     return float(q.to("m").magnitude)
 
 
+#: Radians per unit of the common angle units, and seconds per unit of time, as pint gives
+#: the conversions (a test compares them with pint bit for bit).
+_ANGLES = {"rad": 1.0, "radian": 1.0, "radians": 1.0, "deg": math.pi / 180.0,
+           "degree": math.pi / 180.0, "degrees": math.pi / 180.0, "rev": 2.0 * math.pi,
+           "revolution": 2.0 * math.pi, "revolutions": 2.0 * math.pi}
+_METRIC = ("mm", "cm", "m", "km")
+_IMPERIAL = {"in": 1.0, "inch": 1.0, "ft": 12.0, "yd": 36.0}
+_TIMES = {"s": 1.0, "sec": 1.0, "second": 1.0, "min": 60.0, "minute": 60.0}
+_COMMON_UNIT = re.compile(r"^([A-Za-z]+)(?:\s*/\s*([A-Za-z]+)(\s*(?:\^|\*\*)\s*2|²)?)?$")
+
+
+def _common(text: str, kind: RateKind, length_unit: str) -> float | None:
+    """The usual quantities without pint (``"900 rev/min"``, ``"3 rad/s^2"``, ``"10 in/s"``).
+
+    Angles in rad, deg or rev over s or min, and lengths in the file's own unit
+    over s: the first use of a unit string no longer loads pint's registry
+    (half a second).  Anything else is None, for pint.
+    """
+    try:
+        number, unit = split_number(text)
+    except ValueError:
+        return None
+    m = _COMMON_UNIT.match(unit)
+    if m is None:
+        return None
+    top, per, square = m.group(1), m.group(2), m.group(3)
+    power = 0 if per is None else (2 if square else 1)
+    if per is not None and per not in _TIMES:
+        return None
+    t = 1.0 if per is None else _TIMES[per] ** power
+    if kind in ("omega", "alpha", "angle") and top in _ANGLES:
+        if kind == "angle":
+            return number * (_ANGLES[top] * (180.0 / math.pi)) if power == 0 and \
+                top not in ("deg", "degree", "degrees") else (number if power == 0 else None)
+        if power != (1 if kind == "omega" else 2):
+            return None
+        return number * (_ANGLES[top] / t)
+    want = {"length": 0, "velocity": 1, "acceleration": 2}.get(kind)
+    if want is None or power != want:
+        return None
+    if top == length_unit:
+        return number * (1.0 / t)
+    if top in _METRIC and length_unit in _METRIC and per in (None, "s"):
+        # m/s in a mm file: powers of ten, which pint converts by the same one product
+        return number * (_COMMON_LENGTHS[top] / _COMMON_LENGTHS[length_unit])
+    if top in _IMPERIAL and length_unit in _IMPERIAL and per in (None, "s"):
+        # ft/s in an in file: pint converts within the family by whole ratios of inches
+        return number * (_IMPERIAL[top] / _IMPERIAL[length_unit])
+    return None
+
+
 def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float, str | None]:
     """Parse a number or a unit string into graphkin's internal unit for ``kind``.
 
@@ -200,6 +251,9 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
     if m:
         sense = m.group(1).lower()
         text = text[: m.start()].strip()
+    fast = _common(text, kind, length_unit)
+    if fast is not None:
+        return (-fast if sense == "cw" else fast), sense
     try:
         q = quantity(text)
     except ValueError:

@@ -36,6 +36,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                    help="first drive value (default: the file's)")
     p.add_argument("--to", dest="stop", type=finite_float, default=None, metavar="DEG",
                    help="end of the range, excluded (default: one full turn on)")
+    p.add_argument("--turn", action="store_true",
+                   help="from 0° to 360° instead of from the file's angle; a drive that "
+                        "cannot turn fully: from one limit position to the other")
     p.add_argument("--follow", action="store_true",
                    help="keep the motion continuous through stretched or folded postures "
                         "(as sweep --follow)")
@@ -71,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
     with bar("plot", total=3, unit="stage") as b:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=any(i == "transmission" for i, _ in items),
-                   follow=args.follow)
+                   follow=args.follow, turn=args.turn)
         b.update(1)
         try:
             fig = sweep_figure(sw, [f"{i}:{w}" if w else i for i, w in items])

@@ -2,7 +2,8 @@
 
 Solve a mechanism at many values of its (first) drive at once, by the same constructions
 as solve, and write one CSV row per posture. Other drives are held at the file's values,
-except those that follow the first by a law (follows = {link, ratio, offset}).
+except those that follow the first by a law (follows = {link, ratio, offset} or a
+table of pairs). --turn sweeps from 0° (or limit to limit) instead of the file's angle.
 
 The contract is ``docs/formats/sweep-csv.md``: one CSV row per posture, the drive first,
 then every link's angle, ω and α, then every named point's position,
@@ -62,6 +63,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
                         "the loads and inertia forces of the file (docs/forces.md)")
     p.add_argument("--joint-forces", action="store_true",
                    help="with --torque: also the magnitude of every joint force (F_3-4)")
+    p.add_argument("--turn", action="store_true",
+                   help="from 0° to 360° instead of from the file's angle; a drive that "
+                        "cannot turn fully: from one limit position to the other")
     p.add_argument("--follow", action="store_true",
                    help="keep the motion continuous: where the file's branch would jump (a "
                         "stretched or folded posture), go on along the other branch and say "
@@ -92,7 +96,8 @@ def run(args: argparse.Namespace) -> int:
     with bar("sweep", total=args.count, unit="posture") as b:
         sw = sweep(mech, count=args.count, start=args.start, stop=args.stop,
                    transmission=args.transmission, centers=args.centers,
-                   curvature=args.curvature, progress=b.fraction, follow=args.follow)
+                   curvature=args.curvature, progress=b.fraction, follow=args.follow,
+                   turn=args.turn)
     if args.torque or args.joint_forces:
         from graphkin.forces.sweep import force_columns
 

@@ -148,11 +148,13 @@ def parse_amount(value: Any, unit: str, default_unit: str) -> float:
     number, unit_text = float(m.group(1)), m.group(2)
     if not math.isfinite(number):
         raise ValueError(f"{value!r} is not finite")
-    ureg = registry()
     if not unit_text:
         unit_text = default_unit
     elif re.search(r"\d", _EXPONENT.sub("", unit_text)) or re.search(r"[+]|\s-\s", unit_text):
         raise ValueError(f"cannot read {value!r}: write one number and a unit (no arithmetic)")
+    if unit_text.strip() == unit:
+        return number  # "120 lbf" in a lbf file: no conversion, no pint registry to load
+    ureg = registry()
     try:
         u = ureg.parse_units(unit_text.replace("^", "**"))
         q = ureg.Quantity(number, u)
@@ -276,7 +278,8 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
     if not isinstance(force_unit, str):
         raise fail("units.force", "the force unit must be a string such as \"N\" or \"lbf\"")
     try:
-        parse_amount(1.0, "N", force_unit)
+        if force_unit not in ("N", "kN", "MN", "mN", "lbf", "kip", "kgf"):  # known: no pint
+            parse_amount(1.0, "N", force_unit)
     except ValueError:
         raise fail("units.force", f"{force_unit!r} is not a force unit (such as N, kN, "
                    "lbf)") from None

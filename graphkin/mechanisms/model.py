@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from graphkin.kinematics.solution import Solution
     from graphkin.kinematics.sweep import Sweep
     from graphkin.kinematics.sweep.batch import Batch
+    from graphkin.mechanisms.laws import Law
     from graphkin.mechanisms.loading import Inertia, Load
     from graphkin.tolerance import Tolerance
 
@@ -201,9 +202,10 @@ class Drive:
     key: str = "drive"
     relative_to: str | None = None
     point: str | None = None
-    law: tuple[float, float] | None = None
-    """``(k, c)`` of an input coupled to the first drive: value = k · first + c, in
-    internal units (rad or length), its rates k · ω and k · α (``follows`` in the file)."""
+    law: Law | None = None
+    """The law of an input coupled to the first drive (``follows`` in the file): value =
+    f(first), linear (k · first + c) or a table's spline, in internal units (rad or
+    length); its rates f' · ω and f'' · ω² + f' · α (:mod:`graphkin.mechanisms.laws`)."""
 
     @property
     def is_angle(self) -> bool:

@@ -541,32 +541,11 @@ class _Parser:
         return out
 
     def coupled(self, drive: Drive, leader: Drive, raw: Mapping[str, Any], key: str) -> Drive:
-        """The law ``value = ratio · first + offset`` of a following drive, applied.
+        """The law of a following drive (linear or a table, :mod:`.laws`), applied."""
+        from graphkin.mechanisms.laws import read_follows
 
-        The file writes it in its own units (degrees, lengths): ``θ5 = 3 θ2 + 30°`` is
-        ``follows = { link = 2, ratio = 3, offset = 30 }``; its rates are ratio · ω2 and
-        ratio · α2 (the law is linear).
-        """
-        lead = self.link_id(raw.get("link"), f"{key}.follows.link")
-        if lead != leader.link or leader.kind not in ("angle", "position", "relative") \
-                or leader.law is not None:
-            raise self.fail(f"{key}.follows.link", "a drive follows the first drive, the "
-                            f"swept one (link {leader.link}), not link {lead}")
-        ratio = raw.get("ratio", 1.0)
-        if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) \
-                or not math.isfinite(float(ratio)) or abs(float(ratio)) > 1e6:
-            raise self.fail(f"{key}.follows.ratio", "the ratio is a finite number (at most "
-                            f"1e6 in size), not {_short(ratio)}")
-        kind = "angle" if drive.is_angle else "length"
-        offset = self.rate(raw.get("offset", 0.0), kind, f"{key}.follows.offset")
-        f_f = math.pi / 180.0 if drive.is_angle else 1.0
-        f_l = math.pi / 180.0 if leader.is_angle else 1.0
-        k, c = float(ratio) * f_f / f_l, f_f * offset
-        rate = None if leader.rate is None else k * leader.rate
-        rate2 = None if leader.rate is None else k * (leader.rate2 or 0.0)
-        return Drive(drive.index, drive.link, drive.kind, k * leader.value + c, rate, rate2,
-                     pivot=drive.pivot, slider=drive.slider, key=drive.key,
-                     relative_to=drive.relative_to, point=drive.point, law=(k, c))
+        return read_follows(raw, drive, leader, key, rate=self.rate, fail=self.fail,  # type: ignore[no-any-return]
+                            link_id=self.link_id)
 
     def relative_drive(self, d: Mapping[str, Any], key: str, lid: str, index: int,
                        seen: set[str]) -> Drive:

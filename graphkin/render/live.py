@@ -74,6 +74,11 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     if eng.method != "construction" or eng.pc is None:
         raise InputError("no live page: the mechanism is not solved by a construction",
                          file=source)
+    follower = next((x for x in mech.drives if x.law is not None), None)
+    if follower is not None:  # the page moves one input; holding the other would be wrong
+        raise InputError("no live page: this drive follows the first by a law, which the page "
+                         "does not move with it yet (sweep, plot and animate do)",
+                         key=f"{follower.key}.follows", file=source)
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
     if eng.combined is not None:

@@ -31,6 +31,7 @@ import numpy as np
 from graphkin.construction import Construction
 from graphkin.construction.step import Role
 from graphkin.synthesis.postures import DIAGRAM
+from graphkin.text import toml_string
 
 __all__ = ["Cognates", "cayley"]
 
@@ -66,7 +67,7 @@ class Cognates:
         # pin names of their own per cognate (A_1 would read as an acceleration label)
         n1, n2 = f"{p1}c{which}", f"{p2}c{which}"
         return "\n".join([
-            f'title = "{title or f"Cognate {which} (Roberts-Chebyshev)"}"',
+            f'title = {toml_string(title or f"Cognate {which} (Roberts-Chebyshev)")}',
             f'units = {{ length = "{units}" }}', "",
             "[links.1]", f"{o1} = {xy(z[o1])}", f"{o2} = {xy(z[o2])}", "",
             "[links.2]", f"{o1} = [0.0, 0.0]", f"{n1} = [{abs(z[p1] - z[o1])!r}, 0.0]", "",

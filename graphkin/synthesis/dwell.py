@@ -27,6 +27,7 @@ from graphkin.construction import Construction
 from graphkin.construction.step import Role
 from graphkin.errors import InputError
 from graphkin.synthesis.postures import DIAGRAM
+from graphkin.text import toml_string
 
 __all__ = ["Dwell", "dwell"]
 
@@ -63,7 +64,7 @@ class Dwell:
             return f"[{float(z.real)!r}, {float(z.imag)!r}]"
 
         return "\n".join([
-            f'title = "{title or "Dwell six-bar (Sec. 9.13)"}"',
+            f'title = {toml_string(title or "Dwell six-bar (Sec. 9.13)")}',
             f'units = {{ length = "{units}" }}', "",
             "[links.1]", f"O_A = {xy(self.o_a)}", f"O_B = {xy(self.o_b)}",
             f"O6 = {xy(self.o6)}", "",

@@ -27,6 +27,7 @@ from graphkin.construction.step import Role
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis.postures import DIAGRAM
 from graphkin.synthesis.spec import FunctionSpec
+from graphkin.text import toml_string
 
 __all__ = ["FunctionDesign", "design", "chebyshev_construction"]
 
@@ -52,7 +53,7 @@ class FunctionDesign:
         phi = float(self.phi[j])
         c = complex(r1, 0.0) - r4 * np.exp(1j * float(self.psi[j]))
         return "\n".join([
-            f'title = "{title or "Function generator by Freudenstein"}"',
+            f'title = {toml_string(title or "Function generator by Freudenstein")}',
             f'units = {{ length = "{units}" }}', "",
             "[links.1]", "O2 = [0.0, 0.0]", f"O4 = [{r1!r}, 0.0]", "",
             "[links.2]", "O2 = [0.0, 0.0]", f"B = [{r2!r}, 0.0]", "",

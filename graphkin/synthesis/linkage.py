@@ -24,7 +24,7 @@ import numpy as np
 
 from graphkin.construction.step import Side
 from graphkin.synthesis.postures import Postures
-from graphkin.text import fmt
+from graphkin.text import fmt, toml_string
 
 __all__ = ["Linkage", "Check", "MIN_TRANSMISSION", "grashof_class"]
 
@@ -223,7 +223,7 @@ class Linkage:
         def xy(z: complex) -> str:
             return f"[{float(z.real)!r}, {float(z.imag)!r}]"
 
-        lines = [f'title = "{title or "Four-bar by synthesis"}"',
+        lines = [f'title = {toml_string(title or "Four-bar by synthesis")}',
                  f'units = {{ length = "{units}" }}', "",
                  "[links.1]", f"O_{na} = {xy(self.o_a)}", f"O_{nb} = {xy(self.o_b)}", "",
                  "[links.2]", f"O_{na} = [0.0, 0.0]", f"{na} = [{lg['crank']!r}, 0.0]", "",

@@ -310,7 +310,12 @@ def _function(spec: Spec) -> Result:
     Grashof, toggle and transmission checks are the same as for body guidance.
     """
     assert spec.function is not None
-    fd = design(spec.function)
+    try:
+        fd = design(spec.function)
+    except np.linalg.LinAlgError:
+        raise InputError("Freudenstein's equations (9.24) are singular for these precision "
+                         "points: no linkage (choose another range, start or span)",
+                         key="function", file=spec.source) from None
     r1, r2, r3, r4 = fd.lengths
     if not np.isfinite(r3):
         raise InputError("Freudenstein's equation gives r3² < 0 for these angles: no linkage "

@@ -176,6 +176,9 @@ class _Reader:
         from graphkin.keys import check_keys
 
         check_keys(self.data, SCHEMA, self.source)
+        for k in ("body", "pivots", "function", "path", "cognates", "dwell"):
+            if k in self.data and not isinstance(self.data[k], Mapping):
+                raise self.fail(k, f"expected a table [{k}], not {type(self.data[k]).__name__}")
         units = read_units(self.data.get("units", "mm"), "units", self.source).get("length",
                                                                                    "mm")
         title = str(self.data.get("title", ""))

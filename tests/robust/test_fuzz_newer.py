@@ -9,6 +9,11 @@ fuzzer plus the hostile names and titles of this round.  A ``random.Random``
 with a fixed seed draws the cases, and the loop stops after a few seconds (at
 least 12 cases), so CI runs the same sequence every time.  Only clean ends are
 asserted: exit 0, or 2 with one line; never "cannot handle this input".
+
+The design chapters have their own files and commands, fuzzed the same way
+by a second loop: cam files (``cam``, ``cam --json``, ``cam -o``), gear pairs
+and trains (``gears``, ``gears --json``, ``steps``) and synthesis files
+(``synthesize``, ``synthesize -o``, whose written mechanism must read back).
 """
 
 from __future__ import annotations
@@ -35,9 +40,27 @@ BASES = [ROOT / "gallery" / "mechanisms" / f for f in (
     "p5_7_robots.toml", "p5_13_pantograph.toml")] + [
     ROOT / "tests" / "forces" / "data" / "rolling_wheel_loaded.toml",
     ROOT / "tests" / "forces" / "data" / "spur_gears.toml",
-    ROOT / "examples" / "planetary_outside.toml"]
+    ROOT / "examples" / "planetary_outside.toml", ROOT / "examples" / "fivebar_coupled.toml",
+    ROOT / "examples" / "fivebar_table.toml"]
 DATA = {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in BASES if p.exists()}
 for d in DATA.values():
+    d.pop("gallery", None)
+
+DESIGN_BASES = [ROOT / "examples" / "cams" / f for f in (
+    "ex6_3_flat_face.toml", "ex6_5_roller.toml", "ex6_7_oscillating.toml")] + [
+    ROOT / "examples" / "gears" / "ex7_1.toml", ROOT / "examples" / "gears" / "fig7_18.toml",
+    ROOT / "examples" / "gears" / "trains" / "ex7_4.toml"]
+DESIGN = {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in DESIGN_BASES
+          if p.exists()}
+DESIGN["postures"] = {"title": "Two postures", "units": "in",
+                      "postures": [{"point": [0, 0], "angle": 0},
+                                   {"point": [1, 0.5], "angle": 30}],
+                      "pivots": {"circle_points": [[0.5, -1], [1.5, -1]],
+                                 "center_points": [[0, -3], [3, -3]]}}
+DESIGN["function"] = {"title": "1/x", "function": {
+    "expression": "1/x", "range": [1, 2], "input": {"start": 30, "span": 90},
+    "output": {"start": 240, "span": 90}, "ground": 1.0}}
+for d in DESIGN.values():
     d.pop("gallery", None)
 
 HOSTILE = ["F_43", "P_4", "θ2", "ω3", "n_1-4", "I13", "s4", "x²", "ﬁ", "\u202e", "<!--<script>",
@@ -104,4 +127,39 @@ def test_newer_features_fuzzed_end_cleanly(tmp_path: Path) -> None:
         if rc == 2:
             assert len([ln for ln in err.splitlines() if ln.strip()]) == 1, case
         assert " nan " not in out and "nan°" not in out, case
+        n += 1
+
+
+def _design_commands(name: str, tmp: Path) -> list[list[str]]:
+    if name.startswith(("ex6", "fig6")):
+        return [["cam"], ["cam", "--json"], ["cam", "-o", str(tmp / "c.svg")]]
+    if name in ("postures", "function"):
+        return [["synthesize"], ["synthesize", "--json"],
+                ["synthesize", "-o", str(tmp / "out.toml")]]
+    return [["gears"], ["gears", "--json"], ["steps", "-o", str(tmp / "g.html")]]
+
+
+def test_design_files_fuzzed_end_cleanly(tmp_path: Path) -> None:
+    """Cams, gears and synthesis: the same mutations, their own commands, a fixed budget."""
+    rng = random.Random(SEED + 1)
+    names = sorted(DESIGN)
+    t0, n = time.perf_counter(), 0
+    while n < MIN_CASES or time.perf_counter() - t0 < BUDGET:
+        name = rng.choice(names)
+        data = mutate(rng, DESIGN[name])
+        f = tmp_path / "d.toml"
+        f.write_text(dumps(data), encoding="utf-8")
+        command = rng.choice(_design_commands(name, tmp_path))
+        (tmp_path / "out.toml").unlink(missing_ok=True)
+        rc, out, err = _run([command[0], str(f), *command[1:]])
+        case = f"case {n} ({name}, {' '.join(command)}): {err}\n{dumps(data)}"
+        assert rc in (0, 2), case
+        assert "Traceback" not in err and "cannot handle" not in err, case
+        if rc == 2:
+            assert len([ln for ln in err.splitlines() if ln.strip()]) == 1, case
+        assert " nan " not in out and "nan°" not in out, case
+        if rc == 0 and "-o" in command and command[0] == "synthesize":
+            rc2, _, err2 = _run(["solve", str(tmp_path / "out.toml")])
+            assert rc2 in (0, 2) and "cannot handle" not in err2 and "not valid TOML" \
+                not in err2, case + err2
         n += 1

@@ -50,11 +50,61 @@ def _drive_values(eng: _Engine, count: int, start: float | None,
                              key=f"--{'from' if name == 'start' else 'to'}",
                              file=eng.mech.source)
     a, b, cyclic = _drive_range(eng, start, stop)
+    a, b, cyclic = _within_tables(eng, start, stop, a, b, cyclic, count)
     _resolvable(eng, a, b, count, "--to" if stop is not None else "--from")
     # (b - a) k is exact for whole numbers, so 0 to 360 in 360 steps gives 48.0, not
     # 48.00000000000001
     user = a + ((b - a) * np.arange(count, dtype=float)) / count
+    places = _decimals(a, b, count)
+    if places is not None:  # 0.1 to 0.4 in 3 steps: 0.3, not 0.30000000000000004
+        user = np.round(user, places) + 0.0  # + 0.0: no -0.0
     return user, (np.radians(user) if eng.drive.is_angle else user), cyclic
+
+
+def _within_tables(eng: _Engine, start: float | None, stop: float | None, a: float, b: float,
+                   cyclic: bool, count: int) -> tuple[float, float, bool]:
+    """The range within the rows of a table law that does not cover a whole turn.
+
+    By default such a sweep runs over the table's rows (first to last); a
+    ``--from`` or ``--to`` outside them is refused naming the table.
+    """
+    f = 180.0 / math.pi if eng.drive.is_angle else 1.0
+    for d in eng.mech.drives:
+        dom = None if d.law is None else d.law.domain
+        if dom is None:
+            continue
+        lo, hi = round(dom[0] * f, 10), round(dom[1] * f, 10)
+        a = lo if start is None else a
+        b = hi if stop is None else b
+        cyclic = False
+        last = a + (b - a) * (count - 1) / count  # the end itself is not swept
+        for v, opt in ((a, "--from"), (last, "--to")):
+            if not lo - 1e-9 * max(1.0, abs(lo)) <= v <= hi + 1e-9 * max(1.0, abs(hi)):
+                raise InputError(f"{d.key}.follows.table covers the first drive from {lo:g} "
+                                 f"to {hi:g} only, not {v:g}", key=opt, file=eng.mech.source)
+    return a, b, cyclic
+
+
+def _decimals(a: float, b: float, count: int) -> int | None:
+    """The decimals of the drive values when ``a`` and the step are short decimals.
+
+    ``--from 0.1 --to 0.4 --count 3`` steps by 0.1: every value has one decimal,
+    and rounding to it gives the float nearest the decimal the user means.  None
+    when a value needs more than 12 decimals (a step of 1/7, a limit position).
+    """
+    from fractions import Fraction
+
+    try:
+        fa, fb = Fraction(repr(float(a))), Fraction(repr(float(b)))
+    except (ValueError, OverflowError):
+        return None
+    step = (fb - fa) / count
+    for places in range(13):
+        scale = 10**places
+        if (fa * scale).denominator == 1 and (step * scale).denominator == 1:
+            big = max(abs(fa), abs(fb)) * scale
+            return places if big < 2**52 else None
+    return None
 
 
 #: The largest drive value a sweep takes: degrees, or a travel in sizes of the mechanism.
@@ -112,21 +162,49 @@ def _travel(eng: _Engine) -> tuple[float, float]:
     d, mech = eng.drive, eng.mech
     reach = 4.0 * mech.scale
     ok = _assembles(eng)
-    out = []
+    ends: list[float] = []
+    good: list[float] = []
+    bad: list[float] = []
     for sign in (-1.0, 1.0):
         xs = d.value + sign * reach * np.linspace(0.0, 1.0, 401)
-        good = ok(xs)
-        if not good[0]:
+        fine = ok(xs)
+        if not fine[0]:
             raise AssemblyError(f"cannot assemble at the file's travel {d.value:g}",
                                 key="drive", file=mech.source)
-        bad = np.flatnonzero(~good)
-        if bad.size == 0:
-            out.append(float(xs[-1]))
+        where = np.flatnonzero(~fine)
+        if where.size == 0:
+            ends.append(float(xs[-1]))
             continue
-        k = int(bad[0])
-        lo, hi = _bisect(ok, np.array([xs[k - 1]]), np.array([xs[k]]))
-        out.append(float(lo[0]))
-    return min(out), max(out)
+        k = int(where[0])
+        good.append(float(xs[k - 1]))
+        bad.append(float(xs[k]))
+    if good:
+        # both ends at once; the analytic solver continues every call from the file's
+        # posture, so it gets few calls of many postures instead of 48 halvings
+        if eng.method == "analytic":  # one bracket per call: each call is a continuation
+            lo = np.array([_narrow(ok, np.array([g]), np.array([b]))[0]
+                           for g, b in zip(good, bad, strict=True)])
+        else:
+            lo, _ = _bisect(ok, np.array(good), np.array(bad))
+        ends += [_clean_end(ok, float(x), mech.scale) for x in lo]
+    return min(ends), max(ends)
+
+
+def _clean_end(ok: Callable[[Array], Array], x: float, scale: float) -> float:
+    """An end of the travel written cleanly: ``-60`` rather than ``-59.9999999999266``.
+
+    The end found by bisection lies within round-off of the limit position; the
+    nearest value with six significant digits of the mechanism's size is taken
+    when it is that close and still assembles.
+    """
+    q = 10.0 ** (math.floor(math.log10(scale)) - 6) if scale > 0 else 0.0
+    if not q:
+        return x
+    r = round(x / q) * q
+    r = float(f"{r:.12g}")
+    if r == x or abs(r - x) > 1e-6 * scale or not bool(ok(np.array([r]))[0]):
+        return x
+    return r
 
 
 def _assembles(eng: _Engine) -> Callable[[Array], Array]:
@@ -145,6 +223,26 @@ def _assembles(eng: _Engine) -> Callable[[Array], Array]:
     return ok
 
 
+def _narrow(ok: Callable[[Array], Array], good: Array, bad: Array, parts: int = 40,
+            rounds: int = 6) -> Array:
+    """Like :func:`_bisect` in a few calls: each cuts every bracket into ``parts``.
+
+    Six rounds of 40 leave 2.4e-10 of the first bracket (one call per round).
+    """
+    good, bad = good.astype(float).copy(), bad.astype(float).copy()
+    t = np.linspace(0.0, 1.0, parts + 1)[1:-1]
+    for _ in range(rounds):
+        grid = good[:, None] + (bad - good)[:, None] * t[None, :]
+        fine = np.asarray(ok(grid.ravel())).reshape(grid.shape)
+        # the first posture that fails in each bracket (the brackets stay ordered)
+        first = np.where(fine.all(axis=1), parts - 1, np.argmin(fine, axis=1))
+        idx = np.arange(len(good))
+        new_bad = np.where(fine.all(axis=1), bad, grid[idx, np.minimum(first, parts - 2)])
+        new_good = np.where(first == 0, good, grid[idx, np.maximum(first - 1, 0)])
+        good, bad = new_good, new_bad
+    return good
+
+
 def _bisect(ok: Callable[[Array], Array], good: Array, bad: Array,
             steps: int = 48) -> tuple[Array, Array]:
     """Narrow pairs (good, bad) of drive values around the boundaries of ``ok``."""
@@ -155,3 +253,64 @@ def _bisect(ok: Callable[[Array], Array], good: Array, bad: Array,
         good = np.where(m, mid, good)
         bad = np.where(m, bad, mid)
     return good, bad
+
+
+def turn_range(eng: _Engine, count: int, start: float | None, stop: float | None
+               ) -> tuple[float, float]:
+    """``--turn``: the drive from 0° to 360°, or from one limit position to the other.
+
+    A drive that turns fully is swept over one turn from 0° (not from the
+    file's angle, the contract's default).  One that cannot -- a rocker, or a
+    crank whose mechanism does not assemble over part of the turn -- is swept
+    over the arc around the file's angle where it assembles, from its first
+    limit position to the other, **both included** (the last posture is the
+    second limit, Sec. 1.7).
+
+    Returns
+    -------
+    start, stop : float
+        Degrees, as ``--from``/``--to`` (``stop`` excluded, so that with a
+        limited range the last posture lands on the second limit).
+
+    Raises
+    ------
+    InputError
+        With ``--from`` or ``--to``, or a drive that is not an angle.
+    """
+    d, mech = eng.drive, eng.mech
+    if start is not None or stop is not None:
+        raise InputError("--turn sets the range: leave out --from and --to", key="--turn",
+                         file=mech.source)
+    if not d.is_angle:
+        raise InputError(f"--turn sweeps an angle; {d.label} is a travel, swept over the range "
+                         "where it assembles by default", key="--turn", file=mech.source)
+    for x in mech.drives:  # a table law over part of a turn: its rows are the whole motion
+        dom = None if x.law is None else x.law.domain
+        if dom is not None:
+            lo, hi = round(math.degrees(dom[0]), 10), round(math.degrees(dom[1]), 10)
+            return lo, (hi if count < 2 else lo + (hi - lo) * count / (count - 1))
+    ok = _assembles(eng)
+    x0 = math.radians(round(math.degrees(d.value), 10))
+    xs = x0 + np.linspace(0.0, 2.0 * math.pi, 721)[:-1]  # once round, x0 + 2π is x0
+    fine = np.asarray(ok(xs), dtype=bool)
+    if fine.all():
+        return 0.0, 360.0
+    if not fine[0]:
+        raise AssemblyError("cannot assemble at the file's drive angle", key="drive",
+                            file=mech.source)
+    bad = np.flatnonzero(~fine)
+    kf, kb = int(bad[0]), int(bad[-1])
+    after = xs[kb + 1] if kb + 1 < len(xs) else xs[0] + 2.0 * math.pi
+    good = np.array([xs[kf - 1], after - 2.0 * math.pi])
+    out = np.array([xs[kf], xs[kb] - 2.0 * math.pi])
+    if eng.method == "analytic":
+        ends = np.array([_narrow(ok, good[i:i + 1], out[i:i + 1])[0] for i in range(2)])
+    else:
+        ends, _ = _bisect(ok, good, out)
+    hi, lo = (float(math.degrees(v)) for v in ends)
+    # a hair inside the limits found (far below the tangency tolerance, ~1e-7°), so that the
+    # round-off of the drive values cannot step past them
+    lo, hi = lo + 1e-9, hi - 1e-9
+    if count < 2:
+        return lo, hi
+    return lo, lo + (hi - lo) * count / (count - 1)

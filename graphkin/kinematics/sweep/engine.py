@@ -49,6 +49,14 @@ class _Engine:
         #: the constructions written out as one function (:mod:`.fast`): False until built,
         #: None when they cannot be
         self.fast: Any = False
+        if mech.has_rates and any(x.law is not None and not x.law.linear
+                                  for x in mech.drives) and (mech.rolling or mech.rates):
+            # the analytic solver takes each drive's rates as constants over a sweep
+            bad = next(x for x in mech.drives if x.law is not None and not x.law.linear)
+            raise InputError("a drive that follows by a table is swept with its rates by the "
+                             "constructions only; this mechanism has rolling contact or "
+                             "[rates]: leave out the rates, or give a ratio and an offset",
+                             key=f"{bad.key}.follows.table", file=mech.source)
         if mech.rolling:
             # away from the file's drive a roller's angle follows its travel (the no-slip
             # condition integrated), which no ruler-and-compass step gives
@@ -61,13 +69,21 @@ class _Engine:
         except NotDecomposable as exc:
             self.method = "analytic"
             self.reason = str(exc)
+            if mech.has_rates and any(x.law is not None and not x.law.linear
+                                      for x in mech.drives):
+                raise InputError("a drive that follows by a table is swept with its rates by "
+                                 "the constructions only, and this mechanism has none "
+                                 f"({exc}): leave out the rates, or give a ratio and an offset",
+                                 key="drive", file=mech.source) from None
             return
         d = self.drive
         self.label = d.label
         if self.label not in self.pc.inputs:  # pragma: no cover - the builder names them so
             raise GraphkinError(f"the posture construction has no input {self.label!r}")
-        #: the inputs coupled to the swept one by a law (``follows``): label -> (k, c)
+        #: the inputs coupled to the swept one by a law (``follows``): label -> law
         self.coupled = {dd.label: dd.law for dd in mech.drives if dd.law is not None}
+        #: a table law's follower has rates that change with the posture: rate labels -> drive
+        self.coupled_rates: dict[tuple[str, str], Drive] = {}
         self.held = {k: v for k, v in self.pc.inputs.items()
                      if k != self.label and k not in self.coupled}
         if mech.has_rates:
@@ -86,6 +102,12 @@ class _Engine:
                     w, a = self.pol.rate_inputs[d.index]
                     self.rate_given[w] = 0.0 if d.rate is None else d.rate
                     self.rate_given[a] = 0.0 if d.rate2 is None else d.rate2
+            for d in mech.drives:
+                if d.law is not None and not d.law.linear:
+                    self.coupled_rates[self.pol.rate_inputs[d.index]] = d
+                    if self.combined is not None:
+                        for lab in self.pol.rate_inputs[d.index]:
+                            self.rate_given.pop(lab, None)
 
     def _build(self, mech: Mechanism, tol: Tolerance) -> PostureConstruction:
         """The posture construction, laid out at the file's drive if it assembles there.
@@ -102,7 +124,7 @@ class _Engine:
             for k in range(1, 360):
                 moved = dataclasses.replace(d, value=d.value + math.radians(k))
                 drives = tuple(moved if x is d else x if x.law is None else
-                               dataclasses.replace(x, value=x.law[0] * moved.value + x.law[1])
+                               dataclasses.replace(x, value=x.law.value(moved.value))
                                for x in mech.drives)
                 try:
                     pc = build_posture(dataclasses.replace(mech, drives=drives), tol)
@@ -141,9 +163,32 @@ class _Engine:
     def inputs_at(self, dv: Array) -> dict[str, Array]:
         """The swept input and the inputs coupled to it by a law, at drive values ``dv``."""
         out = {self.label: dv}
-        for lab, (k, c) in self.coupled.items():
-            out[lab] = k * np.asarray(dv, dtype=float) + c
+        for lab, law in self.coupled.items():
+            out[lab] = law.value(np.asarray(dv, dtype=float))
+        if self.combined is not None:
+            out.update(self.rates_at(dv))
         return out
+
+    def rates_at(self, dv: Array) -> dict[str, Array]:
+        """The rates of the inputs that follow by a table, at drive values ``dv``.
+
+        ``ω_f = f'(x) ω`` and ``α_f = f''(x) ω² + f'(x) α``, ``x`` the swept input
+        (the chain rule, as a cam's follower, Sec. 6.3).
+        """
+        d0 = self.drive
+        out: dict[str, Array] = {}
+        for (w, a), d in self.coupled_rates.items():
+            assert d.law is not None
+            out[w], out[a] = d.law.rates(np.asarray(dv, dtype=float), d0.rate or 0.0,
+                                         d0.rate2 or 0.0)
+        return out
+
+    @property
+    def varying(self) -> list[str]:
+        """The inputs that change over a sweep: the swept one, its followers and their rates."""
+        extra = [lab for pair in self.coupled_rates for lab in pair] \
+            if self.combined is not None else []
+        return [self.label, *self.coupled, *extra]
 
     def rates(self, ev: Evaluation, unit: bool = False) -> tuple[Evaluation, Evaluation]:
         """The velocity and acceleration constructions on an evaluated posture.
@@ -159,8 +204,13 @@ class _Engine:
         for d in mech.drives:
             w, a = pol.rate_inputs[d.index]
             if unit:  # the first-order coefficients with respect to the swept input
-                vin[w] = 1.0 if d is self.drive else (d.law[0] if d.law is not None else 0.0)
+                vin[w] = 1.0 if d is self.drive else (
+                    0.0 if d.law is None else d.law.slope(self._swept(ev)))
                 ain[a] = 0.0
+            elif (w, a) in self.coupled_rates:
+                assert d.law is not None
+                vin[w], ain[a] = d.law.rates(self._swept(ev), self.drive.rate or 0.0,
+                                             self.drive.rate2 or 0.0)
             else:
                 vin[w] = 0.0 if d.rate is None else d.rate
                 ain[a] = 0.0 if d.rate2 is None else d.rate2
@@ -169,6 +219,10 @@ class _Engine:
         evv = pol.velocity.evaluate(vin, values=ev.values, tol=self.tol, strict=False)
         eva = pol.acceleration.evaluate(ain, values=evv.values, tol=self.tol, strict=False)
         return evv, eva
+
+    def _swept(self, ev: Evaluation) -> Array:
+        """The swept input's values of an evaluated posture."""
+        return np.asarray(ev.values[self.label], dtype=float)
 
     def _scaled_rates(self, ev: Evaluation, vin: dict[str, Any],
                       ain: dict[str, Any]) -> tuple[Evaluation, Evaluation]:
@@ -229,7 +283,7 @@ class _Engine:
         mech = self.mech
         full = np.empty((len(dv), len(mech.drives)))
         for i, d in enumerate(mech.drives):
-            full[:, i] = dv if i == 0 else d.value if d.law is None else d.law[0] * dv + d.law[1]
+            full[:, i] = dv if i == 0 else d.value if d.law is None else d.law.value(dv)
         sol = solve_analytic_many(mech, full, tol=self.tol)
         return _Block(dv, None, None, None, sol)
 

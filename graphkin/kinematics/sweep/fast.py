@@ -85,7 +85,7 @@ def _build(eng: _Engine) -> _Fast | None:
     layout, requests = plan
     cx = eng.combined if eng.combined is not None else eng.pc.construction  # type: ignore[union-attr]
     try:
-        gen = generate(cx.steps, varying=[eng.label, *eng.coupled], constants=_constants(eng),
+        gen = generate(cx.steps, varying=eng.varying, constants=_constants(eng),
                        requests=requests, tol=eng.tol, name="sweep")
     except Unsupported:
         return None

@@ -38,7 +38,8 @@ BLOCK = 8_192
 def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
           stop: float | None = None, *, tol: Tolerance | None = None,
           transmission: bool = False, centers: bool = False, curvature: bool = False,
-          progress: Callable[[float], None] | None = None, follow: bool = False) -> Sweep:
+          progress: Callable[[float], None] | None = None, follow: bool = False,
+          turn: bool = False) -> Sweep:
     """Solve a mechanism over ``count`` values of its (first) drive, all at once.
 
     Parameters
@@ -77,6 +78,11 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
         would jump (a stretched or folded posture, two centers passing each
         other), go on along the other branch, and say where in ``notes``
         (:func:`graphkin.kinematics.sweep.follow.follow`).
+    turn : bool
+        Sweep from 0° to 360° instead of from the file's angle, or, when the
+        drive cannot turn fully, from its first limit position to the other,
+        both included (``--turn``; :func:`.drive_range.turn_range`).  Not
+        with ``start`` or ``stop``.
 
     Returns
     -------
@@ -98,7 +104,8 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     continuity).  With several drives the first is swept and the others are
     held at the file's values (their rates, if given, apply throughout), except
     those that follow the first by a law (``follows``, ``Drive.law``): they move with
-    it, value k · first + c and rates k · ω, k · α.
+    it, value f(first) and rates f′ · ω and f″ · ω² + f′ · α (f linear, k · first + c,
+    or the spline through a table, :mod:`graphkin.mechanisms.laws`).
     Mechanisms that cannot be solved one group at a time are solved by
     :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
     each posture from the one before), and ``method`` and ``notes`` say so.
@@ -121,6 +128,11 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
     128.6822
     """
+    if turn:
+        from graphkin.kinematics.sweep.drive_range import turn_range
+
+        start, stop = turn_range(_engine(mech, tol or DEFAULT_TOL), _count(count, mech),
+                                 start, stop)
     if follow:
         from graphkin.kinematics.sweep.follow import follow as _follow
 
