@@ -106,6 +106,8 @@ SYNTHESIS: Schema = {
     "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
     "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
     "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
+    # gallery files (graphkin.render.gallery_synthesis)
+    "gallery": GALLERY,
 }
 """Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
 the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by

@@ -33,6 +33,11 @@ def _linkage(link: Linkage) -> dict[str, Any]:
                        for c in link.checks], "ok": link.ok}
 
 
+def _half_turn(deg: float) -> float:
+    """An angle in (-180°, 180°]: a half turn, -180° within round-off, is written 180°."""
+    return 180.0 if deg <= -180.0 + 1e-9 else deg
+
+
 def synthesis_json(res: Result) -> dict[str, Any]:
     """The result as plain data (floats in the file's length unit, angles in degrees)."""
     out: dict[str, Any] = {"title": res.spec.title, "kind": res.kind, "units": res.spec.units}
@@ -47,8 +52,8 @@ def synthesis_json(res: Result) -> dict[str, Any]:
         if post is not None and res.cognates is None and res.function is None:
             # the rotation angle θij of each pole (Eq. 9.2), in (-180°, 180°]
             out["rotation_angles_deg"] = {
-                f"θ{k[1:]}": float(math.degrees(math.remainder(
-                    float(post.angles[int(k[2]) - 1] - post.angles[int(k[1]) - 1]), math.tau)))
+                f"θ{k[1:]}": _half_turn(float(math.degrees(math.remainder(
+                    float(post.angles[int(k[2]) - 1] - post.angles[int(k[1]) - 1]), math.tau))))
                 for k in out["poles"]}
         out["steps"] = res.construction.to_dict()
     if res.burmester:

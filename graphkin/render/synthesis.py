@@ -257,7 +257,29 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             if v.shape != (3,) or not np.all(np.isfinite(v)) or v[2] > 3 * reach:
                 continue
             g = pen.group(s.step_id, 2.0, step=s, key=lab)
-            pen.circle(g, v[:2], float(v[2]), "result-arc" if result else "arc", key=lab)
+            style = "result-arc" if result else "arc"
+            span = _span(v, list(pts.values()))
+            if span is None or s.op != "circle_through":
+                pen.circle(g, v[:2], float(v[2]), style, key=lab)
+            else:   # the arc through the positions it carries, as the book draws it
+                t = np.radians(np.linspace(span[0], span[1], 91))
+                pen.polyline(g, complex(v[0], v[1]) + v[2] * np.exp(1j * t), style, key=lab)
+
+
+def _span(circle: np.ndarray, points: list[np.ndarray]) -> tuple[float, float] | None:
+    """The shortest arc (degrees) of a circle holding every drawn point on it, 12° longer.
+
+    None when fewer than two drawn points lie on the circle.
+    """
+    c, r = circle[:2], float(circle[2])
+    on = [q for q in points if abs(float(np.hypot(*(q - c))) - r) <= 1e-9 * max(r, 1e-300)]
+    if len(on) < 2:
+        return None
+    ang = np.sort(np.degrees(np.arctan2([q[1] - c[1] for q in on], [q[0] - c[0] for q in on])))
+    gaps = np.diff(np.append(ang, ang[0] + 360.0))
+    k = int(np.argmax(gaps))   # the arc runs from the end of the largest gap round to its start
+    start = float(ang[(k + 1) % len(ang)])
+    return start - 12.0, start + 360.0 - float(gaps[k]) + 12.0
 
 
 def _postures_extent(res: Result) -> tuple[np.ndarray, float]:
@@ -302,17 +324,19 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[P
              "3 postures": "(a) three postures: the pole triangle (Figs. 9.8-9.18)",
              "4 postures": "(a) four postures: the center-point curve (Figs. 9.20-9.24)",
              "5 postures": "(a) five postures: the Burmester points (Sec. 9.6)"}.get(
-        res.kind, f"(a) {res.kind}: the linkage through the precision postures")
+        res.kind, "(a) path generation with prescribed timing (Sec. 9.12, Fig. 9.41)")
     p = panel("synthesis", title, res.spec.units, lo, hi, max_inches)
     pen = Pen(p, skip)
     d, e = post.names
     # the postures first: the body as a bar between its two marked points (Fig. 9.7)
     pos_d, pos_e = post.positions((0.0, 0.0)), post.positions(post.second)
+    given = res.spec.postures is not None   # else the body is the coupler, its point the path's
     for j in range(post.n):
         g = pen.group(f"posture-{j + 1}", 4.0, key=f"posture {j + 1}")
-        pen.segment(g, pos_d[j], pos_e[j], "vector-abs", key=f"posture-{j + 1}")
+        if given:
+            pen.segment(g, pos_d[j], pos_e[j], "vector-abs", key=f"posture-{j + 1}")
+            pen.point(g, f"{e}{j + 1}", pos_e[j], "point", optional=True)
         pen.point(g, f"{d}{j + 1}", pos_d[j], "point")
-        pen.point(g, f"{e}{j + 1}", pos_e[j], "point", optional=True)
     marked = {f"{n}{j + 1}" for n in post.names for j in range(post.n)}
     for cx in (res.construction, res.selection):
         if cx is None:
@@ -340,7 +364,7 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[P
     for k, bp in enumerate(res.burmester, 1):
         g = pen.group(f"burmester-{k}", 5.0, key=f"Burmester point {k}")
         if bp.center in used:
-            g.items.append(Item("marker", np.array([_c(bp.center)]), "ball", key=f"M{k}"))
+            g.items.append(Item("marker", np.array([_c(bp.center)]), "ball"))  # lettered O_A
         else:
             pen.point(g, f"M{k}", _c(bp.center), "ball")
             pen.point(g, f"m{k}", _c(bp.circle), "aux-point", optional=True)
@@ -408,20 +432,25 @@ def draw_synthesis(res: Result, *, max_inches: float = 6.0) -> Any:
     the straight-line circles' centers, the body's second point) that find no
     place clear of every line and letter are left out, as the gear drawings
     leave out the names of crowded circles; the letters of poles, pivots and
-    postures always stay.
+    postures always stay, and where one still finds no clean place the figure
+    is drawn larger (1.3, 1.7 and 2.2 times).
     """
     from graphkin.render.labels import collisions
     from graphkin.render.mpl import render_sheet
 
-    skip: frozenset[str] = frozenset()
-    for _ in range(4):
-        sheet, pens = synthesis_sheet(res, max_inches=max_inches, skip=skip)
-        drawing = render_sheet(sheet)
-        optional = set().union(*(pen.optional for pen in pens))
-        bad = {gid for _, gid, _ in collisions(drawing) if gid in optional}
-        if not bad:
+    for grow in (1.0, 1.3, 1.7, 2.2):   # a crowded figure is drawn larger: more room for letters
+        skip: frozenset[str] = frozenset()
+        for _ in range(4):
+            sheet, pens = synthesis_sheet(res, max_inches=grow * max_inches, skip=skip)
+            drawing = render_sheet(sheet)
+            optional = set().union(*(pen.optional for pen in pens))
+            hits = collisions(drawing)
+            bad = {gid for _, gid, _ in hits if gid in optional}
+            if not bad:
+                break
+            skip = skip | bad
+        if not hits:
             break
-        skip = skip | bad
     return drawing
 
 

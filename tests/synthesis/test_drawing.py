@@ -153,3 +153,4 @@ def test_every_step_is_a_group_with_its_step_id_and_the_poles_carry_the_books_le
     assert {"P₁₂", "P₂₃", "P₃₁", "A₁", "A₂", "A₃"} <= shown
     assert any("O_{A}" in t for t in shown)
     check_drawing(res)
+
