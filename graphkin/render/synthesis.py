@@ -262,8 +262,8 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             if span is None or s.op != "circle_through":
                 pen.circle(g, v[:2], float(v[2]), style, key=lab)
             else:   # the arc through the positions it carries, as the book draws it
-                t = np.radians(np.linspace(span[0], span[1], 91))
-                pen.polyline(g, complex(v[0], v[1]) + v[2] * np.exp(1j * t), style, key=lab)
+                arc = np.radians(np.linspace(span[0], span[1], 91))
+                pen.polyline(g, complex(v[0], v[1]) + v[2] * np.exp(1j * arc), style, key=lab)
 
 
 def _span(circle: np.ndarray, points: list[np.ndarray]) -> tuple[float, float] | None:
