@@ -88,6 +88,10 @@ class Pen:
         self.labelled: set[str] = set()
         self.optional: set[str] = set()
         self.points: dict[str, np.ndarray] = {}
+        self.stage: tuple[Construction, int] | None = None
+        """A teaching frame: this construction up to this step (the newest highlighted);
+        the constructions in :attr:`before` whole, nothing else of the result."""
+        self.before: list[Construction] = []
 
     @property
     def box(self) -> tuple[float, float, float, float]:
@@ -210,12 +214,18 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
     center it finds, a line turned about a pole from the pole to the point it
     meets); labels named in ``optional`` may be left out of a crowded figure.
     """
+    last, newest = len(cx.steps), -1
+    if pen.stage is not None:
+        if pen.stage[0] is cx:
+            last = newest = pen.stage[1]
+        elif not any(c is cx for c in pen.before):
+            return
     ev = cx.evaluate({"t": np.array(0.0)} if "t" in cx.labels else None, strict=False)
     pts: dict[str, np.ndarray] = {}
     for s in cx:
         if s.kind == "point" and s.outputs[0] in ev:
             xy = _xy(ev[s.outputs[0]])
-            if xy is not None and float(np.hypot(*(xy - near))) <= reach:
+            if xy is not None and float(np.hypot(*(xy - near))) <= reach and s.index <= last:
                 pts[s.outputs[0]] = xy
     users: dict[str, list[str]] = {}
     for s in cx:
@@ -223,11 +233,12 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             users.setdefault(i, []).extend(o for o in s.outputs if o in pts)
     for s in cx:
         lab = s.outputs[0]
-        if lab in skip or s.label in skip or lab not in ev:
+        if lab in skip or s.label in skip or lab not in ev or s.index > last:
             continue
         result = str(s.role) == "result"
+        hl = s.index == newest
         if s.kind == "point" and lab in pts:
-            g = pen.group(s.step_id, 5.0, step=s, key=lab)
+            g = pen.group(s.step_id, 5.0, step=s, key=lab, highlight=hl)
             style = "pole" if _POLE.match(lab) else (
                 "pin" if lab.startswith("O_") else
                 "aux-point" if str(s.role) == "auxiliary" else "point")
@@ -239,16 +250,18 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
                 on = [(pts[s.inputs[0]] + pts[s.inputs[1]]) / 2] + [
                     pts[o] for o in users.get(lab, [])]
             line = np.asarray(ev[lab], dtype=float)
-            if len(on) < 2 or line.shape != (3,) or not np.all(np.isfinite(line)):
+            if not on or line.shape != (3,) or not np.all(np.isfinite(line)):
                 continue
             d = np.array([line[1], -line[0]])
             d /= max(float(np.hypot(*d)), 1e-300)
             t = [float(np.dot(q - on[0], d)) for q in on]
+            if len(on) == 1:   # nothing found on it yet (a teaching frame): a stretch of it
+                t = [-0.15 * pen.p.diag(), 0.15 * pen.p.diag()]
             lo, hi = min(t), max(t)
             if hi - lo <= 1e-9 * reach:
                 continue
             pad = 0.0 if s.op == "join" else 0.12 * (hi - lo)
-            g = pen.group(s.step_id, 3.0, step=s, key=lab)
+            g = pen.group(s.step_id, 3.0, step=s, key=lab, highlight=hl)
             side = s.op == "join" and all(_POLE.match(i) for i in s.inputs)
             pen.segment(g, on[0] + (lo - pad) * d, on[0] + (hi + pad) * d,
                         "given-line" if side else "aux-line", key=lab)
@@ -256,7 +269,7 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             v = np.asarray(ev[lab], dtype=float)
             if v.shape != (3,) or not np.all(np.isfinite(v)) or v[2] > 3 * reach:
                 continue
-            g = pen.group(s.step_id, 2.0, step=s, key=lab)
+            g = pen.group(s.step_id, 2.0, step=s, key=lab, highlight=hl)
             style = "result-arc" if result else "arc"
             span = _span(v, list(pts.values()))
             if span is None or s.op != "circle_through":
@@ -289,8 +302,28 @@ def _postures_extent(res: Result) -> tuple[np.ndarray, float]:
     return pts.mean(axis=0), max(float(np.max(np.ptp(pts, axis=0))), post.scale)
 
 
-def _body_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[Panel, Pen]:
-    """The postures, poles, constructions, curves and linkage of body guidance (Figs. 9.7-9.24)."""
+def hidden(cx: Construction, post: Any) -> set[str]:
+    """The steps of a body-guidance construction not drawn one by one.
+
+    The curves' own steps (drawn as the curves), the marked points of the
+    postures (drawn as the body's bars) and the bisectors that found the poles
+    (the pole construction of Fig. 9.7, left out where the postures are bars).
+    """
+    marked = {f"{n}{j + 1}" for n in post.names for j in range(post.n)}
+    helpers = {lab for s in cx if s.op == "rigid" and s.inputs and s.inputs[0] in marked
+               for lab in s.outputs}
+    pole_bisectors = {s.label for s in cx if s.op == "bisector"
+                      and set(s.inputs) <= marked | helpers}
+    return _after_t(cx) | marked | pole_bisectors
+
+
+def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
+                stage: tuple[Construction, int] | None = None) -> tuple[Panel, Pen]:
+    """The postures, poles, constructions, curves and linkage of body guidance (Figs. 9.7-9.24).
+
+    ``stage``: a teaching frame (see :attr:`Pen.stage`): the postures and the
+    construction up to that step, no curves and no linkage.
+    """
     post = res.postures
     assert post is not None
     mid, size = _postures_extent(res)
@@ -337,18 +370,18 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[P
             pen.segment(g, pos_d[j], pos_e[j], "vector-abs", key=f"posture-{j + 1}")
             pen.point(g, f"{e}{j + 1}", pos_e[j], "point", optional=True)
         pen.point(g, f"{d}{j + 1}", pos_d[j], "point")
-    marked = {f"{n}{j + 1}" for n in post.names for j in range(post.n)}
+    if stage is not None:
+        pen.stage = stage
+        order = [c for c in (res.construction, res.selection) if c is not None]
+        pen.before = order[:next(i for i, c in enumerate(order) if c is stage[0])]
     for cx in (res.construction, res.selection):
         if cx is None:
             continue
-        helpers = {lab for s in cx if s.op == "rigid" and s.inputs and s.inputs[0] in marked
-                   for lab in s.outputs}
-        pole_bisectors = {s.label for s in cx if s.op == "bisector"
-                          and set(s.inputs) <= marked | helpers}
         optional = {s.outputs[0] for s in cx if s.outputs[0] in ("O", "O1", "O2", "O3", "H")
                     or s.outputs[0].endswith("_I")}
-        paint_construction(pen, cx, _after_t(cx) | marked | pole_bisectors, mid, reach,
-                           optional)
+        paint_construction(pen, cx, hidden(cx, post), mid, reach, optional)
+    if stage is not None:
+        return p, pen
     if res.curves is not None:
         jump = 0.25 * float(max(hi - lo))
         for br in range(2):
@@ -400,21 +433,24 @@ def paint_linkage(pen: Pen, link: Any, postures: bool = True) -> None:
 
 
 def synthesis_sheet(res: Result, *, max_inches: float = 6.0,
-                    skip: frozenset[str] = frozenset()) -> tuple[Sheet, list[Pen]]:
+                    skip: frozenset[str] = frozenset(),
+                    stage: tuple[Construction, int] | None = None) -> tuple[Sheet, list[Pen]]:
     """Lay out the drawing of a synthesis on a sheet (pure data, no matplotlib).
 
-    Returns the sheet and the pens of its panels (their optional labels).
+    ``stage``: one frame of the teaching page (a construction and the step it
+    is drawn up to).  Returns the sheet and the pens of its panels (their
+    optional labels).
     """
     from graphkin.render import synthesis_more as more
 
     if res.function is not None:
-        pairs = more.function_panels(res, max_inches, skip)
+        pairs = more.function_panels(res, max_inches, skip, stage)
     elif res.cognates is not None:
-        pairs = [more.cognates_panel(res, max_inches, skip)]
+        pairs = [more.cognates_panel(res, max_inches, skip, stage)]
     elif res.dwell is not None:
-        pairs = [more.dwell_panel(res, max_inches, skip)]
+        pairs = [more.dwell_panel(res, max_inches, skip, stage)]
     else:
-        pairs = [_body_panel(res, max_inches, skip)]
+        pairs = [_body_panel(res, max_inches, skip, stage)]
     panels = [p for p, _ in pairs]
     for p in panels:
         _frame(p)

@@ -40,9 +40,20 @@ def _box(zs: list[complex], pad: float = 0.06) -> tuple[np.ndarray, np.ndarray]:
     return lo - m, hi + m
 
 
-def function_panels(res: Result, max_inches: float,
-                    skip: frozenset[str]) -> list[tuple[Panel, Pen]]:
-    """Chebyshev spacing, the linkage in its precision postures, the structural error."""
+def _staged(pen: Pen, cx: Any, stage: tuple[Any, int] | None) -> bool:
+    """Set a teaching frame on the pen; True when the frame is one (draw nothing else)."""
+    if stage is None:
+        return False
+    pen.stage = stage
+    return True
+
+
+def function_panels(res: Result, max_inches: float, skip: frozenset[str],
+                    stage: tuple[Any, int] | None = None) -> list[tuple[Panel, Pen]]:
+    """Chebyshev spacing, the linkage in its precision postures, the structural error.
+
+    ``stage``: a teaching frame, Chebyshev's construction up to a step (panel (a) only).
+    """
     f = res.function
     assert f is not None and res.construction is not None
     x0, x1 = f.spec.x_range
@@ -51,10 +62,13 @@ def function_panels(res: Result, max_inches: float,
     hi = np.array([x1 + 0.05 * half, 1.05 * half])
     a = panel("chebyshev", "(a) Chebyshev spacing (Fig. 9.27)", "", lo, hi, 0.55 * max_inches)
     pen_a = Pen(a, skip)
+    framed = _staged(pen_a, res.construction, stage)
     mid = np.array([(x0 + x1) / 2, 0.0])
     paint_construction(pen_a, res.construction, set(), mid, 3 * half + 1e-300,
                        optional={"C", "X0", "X1"})
     out = [(a, pen_a)]
+    if framed:
+        return out
     link = res.chosen
     if link is not None:
         pa, pb = link.pivots
@@ -132,7 +146,8 @@ def _nice(v: float) -> float:
     return 10.0 ** (e + 1)
 
 
-def cognates_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[Panel, Pen]:
+def cognates_panel(res: Result, max_inches: float, skip: frozenset[str],
+                   stage: tuple[Any, int] | None = None) -> tuple[Panel, Pen]:
     """Cayley's diagram: the three cognates and their one coupler curve (Fig. 9.38)."""
     from graphkin.mechanisms import loads
 
@@ -151,6 +166,9 @@ def cognates_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tupl
     pen = Pen(p, skip)
     mid = (lo + hi) / 2
     joins = {s.label for s in cg.construction if s.op == "join"}
+    if _staged(pen, cg.construction, stage):
+        paint_construction(pen, cg.construction, set(), mid, 4 * float(max(hi - lo)))
+        return p, pen
     for w, (o1, p1, p2, o2) in cg.linkages().items():
         g = pen.group(f"cognate-{w}", 4.0, key=f"cognate {w}")
         chain = [z[o1], z[p1], z[p2], z[o2]]
@@ -170,7 +188,8 @@ def cognates_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tupl
     return p, pen
 
 
-def dwell_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[Panel, Pen]:
+def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
+                stage: tuple[Any, int] | None = None) -> tuple[Panel, Pen]:
     """The dwell six-bar (Fig. 9.42a): the coupler curve, its arc, D, links 5 and 6."""
     dw = res.dwell
     assert dw is not None
@@ -184,6 +203,9 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str]) -> tuple[P
     pen = Pen(p, skip)
     g = pen.group("coupler-curve", 0.5, key="coupler curve")
     pen.polyline(g, np.append(curve, curve[:1]), "datum", key="coupler-curve")
+    if _staged(pen, dw.construction, stage):
+        paint_construction(pen, dw.construction, set(), (lo + hi) / 2, 4 * float(max(hi - lo)))
+        return p, pen
     g = pen.group("dwell-arc", 1.0, key="dwell arc")
     pen.polyline(g, curve[np.arange(dw.start, dw.stop + 1) % len(curve)], "vector-abs",
                  key="dwell-arc")
