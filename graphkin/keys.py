@@ -106,6 +106,7 @@ SYNTHESIS: Schema = {
     "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
     "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
     "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
+    "overlay": {"points": None, "closed": None},   # the overlay method (Sec. 9.8)
     # gallery files (graphkin.render.gallery_synthesis)
     "gallery": GALLERY,
 }

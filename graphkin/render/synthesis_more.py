@@ -7,7 +7,9 @@
 * cognates (Sec. 9.10): Cayley's diagram, the three four-bars (Fig. 9.38)
   and the one coupler curve they trace (graphkin's sweep of the first);
 * dwell (Sec. 9.13): the coupler curve, its circular arc, the arc's center
-  D constructed from three of its points, links 5 and 6 (Fig. 9.42a).
+  D constructed from three of its points, links 5 and 6 (Fig. 9.42a);
+* the overlay method (Sec. 9.8): the desired path, the atlas curve laid on
+  it and the four-bar that traces it (Fig. 9.29).
 
 References
 ----------
@@ -27,7 +29,7 @@ from graphkin.render.synthesis import Pen, _c, paint_construction, paint_linkage
 from graphkin.synthesis.run import Result
 from graphkin.text import fmt
 
-__all__ = ["function_panels", "cognates_panel", "dwell_panel"]
+__all__ = ["function_panels", "cognates_panel", "dwell_panel", "overlay_panel"]
 
 _COGNATE_STYLES = {"1": "result-line", "2": "vector-n", "3": "vector-c"}
 """Each cognate its own line (solid, dashed, dash-dotted): the drawing stays black."""
@@ -224,4 +226,38 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
     g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
     for name, zz in (("O_A", dw.o_a), ("O_B", dw.o_b), ("O6", dw.o6)):
         pen.point(g, name, _c(zz), "pin")
+    return p, pen
+
+
+def overlay_panel(res: Result, max_inches: float, skip: frozenset[str],
+                  stage: tuple[Any, int] | None = None) -> tuple[Panel, Pen]:
+    """The overlay (Sec. 9.8, Fig. 9.29): the path, the atlas curve laid on it, its four-bar.
+
+    The four-bar is drawn where the fitting stretch starts.
+    """
+    ov = res.overlay
+    assert ov is not None
+    path = ov.path
+    lo, hi = _box([*path, ov.o2, ov.o4, ov.a, ov.b, ov.p, *ov.curve])
+    p = panel("overlay", "The overlay: the desired path and the atlas curve that fits it "
+              "(Fig. 9.29)", res.spec.units, lo, hi, max_inches)
+    pen = Pen(p, skip)
+    g = pen.group("coupler-curve", 1.0, key="coupler curve")
+    pen.polyline(g, np.append(ov.curve, ov.curve[:1]), "cubic", key="coupler-curve")
+    g = pen.group("desired-path", 2.0, key="desired path")
+    closed = res.spec.closed
+    pen.polyline(g, np.append(path, path[:1]) if closed else path, "vector-abs",
+                 key="desired-path")
+    for z in path:
+        g.items.append(Item("marker", np.array([_c(z)]), "image-point"))
+    g = pen.group("linkage-1", 4.0, key="linkage")
+    for a, b in ((ov.o2, ov.a), (ov.a, ov.b), (ov.b, ov.o4)):
+        pen.segment(g, _c(a), _c(b), "result-line")
+    g.items.append(Item("polygon", np.array([_c(ov.a), _c(ov.b), _c(ov.p)]), "plate"))
+    pen.point(g, "A", _c(ov.a), "pin")
+    pen.point(g, "B", _c(ov.b), "pin")
+    pen.point(g, "P", _c(ov.p), "point")
+    g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
+    pen.point(g, "O2", _c(ov.o2), "pin")
+    pen.point(g, "O4", _c(ov.o4), "pin")
     return p, pen

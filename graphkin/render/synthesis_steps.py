@@ -31,6 +31,8 @@ _DRAWN = ("point", "line", "circle")
 
 def teaching_steps(res: Result) -> list[tuple[Construction, Step]]:
     """The steps a teaching page shows one by one, with their constructions, in order."""
+    if res.overlay is not None:
+        return []   # a search, not a construction: the page is the result alone
     if res.function is not None:
         order = [res.construction]
     elif res.cognates is not None:

@@ -22,6 +22,7 @@ from graphkin.synthesis.dwell import Dwell, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.linkage import Linkage
+from graphkin.synthesis.overlay import Overlay, overlay
 from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles, add_postures
 from graphkin.synthesis.spec import Spec
 
@@ -55,6 +56,8 @@ class Result:
         The Roberts-Chebyshev cognates (Cayley's diagram).
     dwell : Dwell or None
         The dwell six-bar (Sec. 9.13).
+    overlay : Overlay or None
+        The overlay method's fit (Sec. 9.8).
     """
 
     spec: Spec
@@ -68,6 +71,7 @@ class Result:
     dyads: dict[str, complex] = field(default_factory=dict)
     cognates: Cognates | None = None
     dwell: Dwell | None = None
+    overlay: Overlay | None = None
 
     @property
     def postures(self) -> Postures | None:
@@ -90,6 +94,8 @@ class Result:
             return self.function.mechanism_toml(self.spec.title, self.spec.units)
         if self.dwell is not None:
             return self.dwell.mechanism_toml(self.spec.units, self.spec.title)
+        if self.overlay is not None:
+            return self.overlay.mechanism_toml(self.spec.units, self.spec.title)
         if self.cognates is not None:
             return self.cognates.mechanism_toml(self.spec.write, self.spec.units,
                                                 self.spec.title)
@@ -118,6 +124,9 @@ def synthesize(spec: Spec) -> Result:
         return _function(spec)
     if spec.path is not None:
         return _path(spec)
+    if spec.overlay is not None:
+        ov = overlay(spec.overlay, spec.closed, spec.source)
+        return Result(spec, "overlay (Sec. 9.8)", overlay=ov)
     if spec.dwell is not None:
         z = spec.dwell
         try:

@@ -127,8 +127,11 @@ def test_random_posture_sets_draw_cleanly(data: st.DataObject, n: int) -> None:
     'C = [4.97691, -0.19765]\nspan = 60\n',
     '[path]\npoints = [[0.26795, 0], [2.0, 0], [3.73205, 0]]\ncrank = [-6, -45, -84]\n'
     'coupler = [0, -20, -50]\nrocker_pin = 0.5\n',
+    '[overlay]\npoints = [[13.4225, 11.2416], [14.0171, 12.1315], [14.2844, 12.9072], '
+    '[14.2330, 13.5651], [13.9009, 14.0943], [13.3389, 14.4792], [12.6013, 14.7041], '
+    '[11.7421, 14.7581], [10.8131, 14.6370], [9.8628, 14.3445]]\n',
 ])
-def test_function_cognates_dwell_and_path_draw_cleanly(text: str) -> None:
+def test_function_cognates_dwell_path_and_overlay_draw_cleanly(text: str) -> None:
     check_drawing(synthesize(loads_spec('title = "t"\nunits = "in"\n' + text)))
 
 
