@@ -463,7 +463,12 @@ def synthesis_sheet(res: Result, *, max_inches: float = 6.0,
     return sheet, [pen for _, pen in pairs]
 
 
-def draw_synthesis(res: Result, *, max_inches: float = 6.0) -> Any:
+BIG = {"4 postures": 8.5, "5 postures": 8.5}
+"""Room (inches) for the crowded figures: the curves, six or ten poles, two dyads in every
+posture (at 6 in the letters of a figure like Example 9.5's stood away from their points)."""
+
+
+def draw_synthesis(res: Result, *, max_inches: float | None = None) -> Any:
     """The drawing (:class:`~graphkin.render.mpl.Drawing`) of a synthesis.
 
     Words naming a curve and the letters of auxiliary points (the image point,
@@ -476,6 +481,8 @@ def draw_synthesis(res: Result, *, max_inches: float = 6.0) -> Any:
     from graphkin.render.labels import collisions
     from graphkin.render.mpl import render_sheet
 
+    if max_inches is None:
+        max_inches = BIG.get(res.kind, 6.0)
     for grow in (1.0, 1.3, 1.7, 2.2):   # a crowded figure is drawn larger: more room for letters
         skip: frozenset[str] = frozenset()
         for _ in range(4):
