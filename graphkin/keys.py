@@ -107,6 +107,7 @@ SYNTHESIS: Schema = {
     "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
     "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
     "overlay": {"points": None, "closed": None},   # the overlay method (Sec. 9.8)
+    "coupler_curve": {"points": None, "O4": None, "O2": None, "R": None, "r": None},  # 9.9
     # gallery files (graphkin.render.gallery_synthesis)
     "gallery": GALLERY,
 }

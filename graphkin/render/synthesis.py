@@ -104,6 +104,11 @@ class Pen:
         x0, y0, x1, y1 = self.box
         return bool(x0 <= xy[0] <= x1 and y0 <= xy[1] <= y1)
 
+    def found(self, xy: np.ndarray, name: str) -> bool:
+        """Whether a linkage's fixed pivot ``O_...`` is a point lettered under another name."""
+        return name.startswith("O_") and name not in self.points and any(
+            float(np.hypot(*(q - xy))) <= 1e-9 * self.p.diag() for q in self.points.values())
+
     def group(self, gid: str, z: float, **kw: Any) -> Group:
         """A new group of the panel (its gid prefixed with the panel's)."""
         return self.p.group(self.p.prefix + gid, z, **kw)
@@ -112,6 +117,10 @@ class Pen:
               optional: bool = False, text: str | None = None) -> None:
         """A dot and its letter (once per name); off the panel: nothing."""
         if not self.inside(xy):
+            return
+        if self.found(xy, name):
+            # a pivot the construction found already, under the book's name for it (O4)
+            g.items.append(Item("marker", np.array([xy]), style))
             return
         g.items.append(Item("marker", np.array([xy]), style, key=name))
         self.points.setdefault(name, xy)
@@ -356,7 +365,9 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
     title = {"2 postures": "(a) two postures: the pole P₁₂ (Fig. 9.6)",
              "3 postures": "(a) three postures: the pole triangle (Figs. 9.8-9.18)",
              "4 postures": "(a) four postures: the center-point curve (Figs. 9.20-9.24)",
-             "5 postures": "(a) five postures: the Burmester points (Sec. 9.6)"}.get(
+             "5 postures": "(a) five postures: the Burmester points (Sec. 9.6)",
+             "coupler curve (Sec. 9.9)": "(a) a coupler curve through four precision points "
+                                         "(Figs. 9.30-9.32)"}.get(
         res.kind, "(a) path generation with prescribed timing (Sec. 9.12, Fig. 9.41)")
     p = panel("synthesis", title, res.spec.units, lo, hi, max_inches)
     pen = Pen(p, skip)
@@ -377,8 +388,9 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
     for cx in (res.construction, res.selection):
         if cx is None:
             continue
-        optional = {s.outputs[0] for s in cx if s.outputs[0] in ("O", "O1", "O2", "O3", "H")
-                    or s.outputs[0].endswith("_I")}
+        locus = "k_O" in cx.labels    # the straight-line circles of Example 9.4
+        optional = {s.outputs[0] for s in cx if (locus and s.outputs[0] in (
+            "O", "O1", "O2", "O3", "H")) or s.outputs[0].endswith(("_I", "*"))}
         paint_construction(pen, cx, hidden(cx, post), mid, reach, optional)
     if stage is not None:
         return p, pen

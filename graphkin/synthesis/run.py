@@ -124,6 +124,13 @@ def synthesize(spec: Spec) -> Result:
         return _function(spec)
     if spec.path is not None:
         return _path(spec)
+    if spec.coupler is not None:
+        from graphkin.synthesis.coupler import coupler_curve
+
+        f = spec.coupler
+        cc = coupler_curve(f["points"], f["O4"], f["O2"], f["R"], f["r"], spec.source)
+        return Result(spec, "coupler curve (Sec. 9.9)", cc.construction,
+                      candidates=[cc.linkage])
     if spec.overlay is not None:
         ov = overlay(spec.overlay, spec.closed, spec.source)
         return Result(spec, "overlay (Sec. 9.8)", overlay=ov)
