@@ -98,7 +98,7 @@ def posture_sets(draw: st.DrawFn, n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 @given(data=st.data(), n=st.sampled_from([2, 3, 4, 5]))
-@settings(examples(12), phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@settings(examples(8), phases=[Phase.explicit, Phase.reuse, Phase.generate])
 def test_random_posture_sets_draw_cleanly(data: st.DataObject, n: int) -> None:
     pts, ang = data.draw(posture_sets(n))
     c = pts.mean(axis=0)
