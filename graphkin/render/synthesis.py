@@ -392,6 +392,9 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
         optional = {s.outputs[0] for s in cx if (locus and s.outputs[0] in (
             "O", "O1", "O2", "O3", "H")) or s.outputs[0].endswith(("_I", "*"))}
         paint_construction(pen, cx, hidden(cx, post), mid, reach, optional)
+    for cx in (res.construction, res.selection):
+        if cx is not None:
+            far_poles(pen, cx, post.positions((0.0, 0.0))[0], f"{d}1")
     if stage is not None:
         return p, pen
     if res.curves is not None:
@@ -416,6 +419,43 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
     if link is not None:
         paint_linkage(pen, link)
     return p, pen
+
+
+def far_poles(pen: Pen, cx: Construction, ref: np.ndarray, ref_name: str) -> None:
+    """An arrow at the panel's edge toward each finite pole left off the figure.
+
+    Lettered with the pole's distance from the first posture's point
+    (``P₃₄, 11.2 in from D₁``).
+    """
+    from graphkin.render.scene import far_distance
+
+    box = pen.box
+    mid = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
+    k = pen.p.k
+    ev = cx.evaluate({"t": np.array(0.0)} if "t" in cx.labels else None, strict=False)
+    for s in cx:
+        lab = s.outputs[0]
+        if not _POLE.match(lab) or lab in pen.points or lab not in ev:
+            continue
+        xy = _xy(ev[lab])
+        if xy is None or pen.inside(xy):
+            continue
+        seg = clip_segment(mid, xy, box)
+        if seg is None:
+            continue
+        u = (xy - mid) / float(np.hypot(*(xy - mid)))
+        tip = np.asarray(seg[1], dtype=float) - 0.08 * k * u
+        tail = tip - 0.45 * k * u
+        g = pen.group(f"{s.step_id}-far", 5.0, step=s, key=lab)
+        arrow = Item("arrow", np.array([tail, tip]), "vector-aux", key=f"{lab}-arrow",
+                     head=0.08 * k, width=0.028 * k)
+        g.items.append(arrow)
+        pen.points[lab] = tail
+        pen.labelled.add(lab)
+        text = f"{letter(lab)}, {far_distance(float(np.hypot(*(xy - ref))))} " \
+               f"{pen.p.unit} from {letter(ref_name)}"
+        pen.p.labels.append(LabelRequest(text, tail, "label", f"label-{g.gid}-{lab}", g,
+                                         key=lab, arrow=arrow, fallback=(letter(lab),)))
 
 
 def paint_linkage(pen: Pen, link: Any, postures: bool = True) -> None:

@@ -71,6 +71,17 @@ def check_drawing(res) -> None:
         return key.split("-", 1)[1] if key.startswith(panels) else key
 
     lettered = {bare(k) for k in d.texts}
+    # every finite pole is lettered: on the figure, or by an arrow at its edge with its
+    # distance ("P34, 13.3 in from D1")
+    for cx in (res.construction, res.selection):
+        if cx is None or res.spec.postures is None:
+            continue
+        ev = cx.evaluate({"t": np.array(0.0)} if "t" in cx.labels else None, strict=False)
+        for step in cx:
+            if re.fullmatch(r"P\d\d", step.label) and step.label in ev:
+                v = np.asarray(ev[step.label], dtype=float)
+                if np.all(np.isfinite(v)) and abs(v[2]) > 1e-12 * np.max(np.abs(v)):
+                    assert step.label in lettered, (step.label, "pole not lettered")
     for key, art in d.items():
         name = bare(key)
         if _MUST.match(name) and hasattr(art, "get_marker") and art.get_marker() not in (
