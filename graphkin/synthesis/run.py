@@ -7,6 +7,7 @@ Uicker, Pennock & Shigley, 5th ed., Secs. 9.3-9.7, 9.11.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from itertools import combinations
 
@@ -246,7 +247,7 @@ def _four(spec: Spec, post: Postures) -> Result:
             raise InputError("the center-point curve has no finite point", key="postures",
                              file=spec.source)
         b, i = np.unravel_index(np.nanargmin(dist), dist.shape)
-        chosen.append((complex(fine.center[b, i]), complex(fine.circle[b, i])))
+        chosen.append(_nearest_on_curve(cx, post, int(b), fine.t, int(i), target))
     if abs(chosen[0][0] - chosen[1][0]) <= 1e-3 * post.scale:
         raise InputError("both center points fall on the same point of the center-point curve "
                          f"near ({chosen[0][0].real:.4g}, {chosen[0][0].imag:.4g}): choose them "
@@ -263,6 +264,37 @@ def _four(spec: Spec, post: Postures) -> Result:
     link = Linkage(post, chosen[0][0], chosen[1][0], chosen[0][1], chosen[1][1], names)
     link.check()
     return Result(spec, "4 postures", cx, sel, cv, candidates=[link])
+
+
+def _nearest_on_curve(cx: Construction, post: Postures, b: int, t: np.ndarray, i: int,
+                      target: complex) -> tuple[complex, complex]:
+    """The center point of branch ``b`` nearest ``target``, and its circle point.
+
+    Golden-section search in t between the samples either side of the nearest
+    sample ``i`` (each step one evaluation of the construction on two values of t);
+    every point it returns is a point of the curve, exact to round-off.
+    """
+    name = four.letters(post)[b]
+
+    def at(tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        ev = cx.evaluate({"t": np.asarray(tt, dtype=float)}, strict=False)
+        return four._cplx(ev[f"{name}_C"]), four._cplx(ev[f"{name}1"])
+
+    lo, hi = float(t[max(i - 1, 0)]), float(t[min(i + 1, len(t) - 1)])
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(60):
+        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        c, _ = at(np.array([m1, m2]))
+        d1, d2 = (abs(z - target) if np.isfinite(z) else math.inf for z in c)
+        if d1 <= d2:
+            hi = m2
+        else:
+            lo = m1
+        if hi - lo <= 1e-14 * (1.0 + abs(lo)):
+            break
+    c, a = at(np.array([t[i], 0.5 * (lo + hi)]))
+    k = 1 if np.isfinite(c[1]) and abs(c[1] - target) <= abs(c[0] - target) else 0
+    return complex(c[k]), complex(a[k])
 
 
 def _five(spec: Spec, post: Postures) -> Result:
