@@ -109,6 +109,10 @@ SYNTHESIS: Schema = {
     "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
     "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
     "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
+    "overlay": {"points": None, "closed": None},   # the overlay method (Sec. 9.8)
+    "coupler_curve": {"points": None, "O4": None, "O2": None, "R": None, "r": None},  # 9.9
+    # gallery files (graphkin.render.gallery_synthesis)
+    "gallery": GALLERY,
 }
 """Every key of a synthesis file (``graphkin synthesize``, ``docs/formats/synthesis.md``);
 the keys of each ``[[postures]]`` entry depend on ``body.points`` and are checked by

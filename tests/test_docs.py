@@ -49,7 +49,7 @@ def test_every_toml_example_in_the_docs_is_valid(page, block):
 
             loads_cam(block, str(page))            # a whole cam file: it loads
     elif set(data) & {"postures", "function", "pivots", "body", "path", "cognates",
-                        "dwell"}:
+                        "dwell", "overlay", "coupler_curve"}:
         from graphkin.keys import SYNTHESIS
 
         check_keys(data, SYNTHESIS, str(page))      # a synthesis file (docs/formats/synthesis.md)

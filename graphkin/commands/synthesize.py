@@ -4,7 +4,8 @@ Guide a body through two to five postures (poles, pole triangle, center-point
 and circle-point curves, Burmester points), generate a function (Chebyshev
 spacing, Freudenstein's equation) or a path with timing (dyads); report the
 linkage with its checks and write it as a mechanism file that solve, draw and
-sweep take as it is.
+sweep take as it is; ``--draw`` draws it, ``--steps`` writes the construction
+step by step as a web page.
 
 The file format is ``docs/formats/synthesis.md``; the work is done in
 :mod:`graphkin.synthesis` and the report written by
@@ -36,6 +37,9 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", metavar="MECH.toml",
                    help="write the synthesized linkage as a mechanism file")
     p.add_argument("--draw", metavar="FIG.svg", help="draw the construction and the linkage")
+    p.add_argument("--steps", metavar="STEPS.html",
+                   help="write the construction step by step as a web page (one frame per "
+                        "step, the newest highlighted)")
     return p
 
 
@@ -52,6 +56,10 @@ def run(args: argparse.Namespace) -> int:
         from graphkin.render.synthesis import save_synthesis
 
         save_synthesis(res, args.draw)
+    if args.steps:
+        from graphkin.render.synthesis_steps import synthesis_steps_html
+
+        write_text(args.steps, synthesis_steps_html(res), "--steps")
     if args.json:
         json.dump(synthesis_json(res), sys.stdout, ensure_ascii=False, indent=1,
                   allow_nan=False)

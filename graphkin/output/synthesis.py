@@ -33,6 +33,11 @@ def _linkage(link: Linkage) -> dict[str, Any]:
                        for c in link.checks], "ok": link.ok}
 
 
+def _half_turn(deg: float) -> float:
+    """An angle in (-180°, 180°]: a half turn, -180° within round-off, is written 180°."""
+    return 180.0 if deg <= -180.0 + 1e-9 else deg
+
+
 def synthesis_json(res: Result) -> dict[str, Any]:
     """The result as plain data (floats in the file's length unit, angles in degrees)."""
     out: dict[str, Any] = {"title": res.spec.title, "kind": res.kind, "units": res.spec.units}
@@ -47,8 +52,8 @@ def synthesis_json(res: Result) -> dict[str, Any]:
         if post is not None and res.cognates is None and res.function is None:
             # the rotation angle θij of each pole (Eq. 9.2), in (-180°, 180°]
             out["rotation_angles_deg"] = {
-                f"θ{k[1:]}": float(math.degrees(math.remainder(
-                    float(post.angles[int(k[2]) - 1] - post.angles[int(k[1]) - 1]), math.tau)))
+                f"θ{k[1:]}": _half_turn(float(math.degrees(math.remainder(
+                    float(post.angles[int(k[2]) - 1] - post.angles[int(k[1]) - 1]), math.tau))))
                 for k in out["poles"]}
         out["steps"] = res.construction.to_dict()
     if res.burmester:
@@ -62,6 +67,14 @@ def synthesis_json(res: Result) -> dict[str, Any]:
                         "crank_from_deg": float(np.degrees(dw.crank[dw.start]) % 360),
                         "crank_span_deg": float(np.degrees(dw.crank[1] - dw.crank[0])
                                                 * (dw.stop - dw.start))}
+    if res.overlay is not None:
+        ov = res.overlay
+        out["overlay"] = {"O2": _xy(ov.o2), "O4": _xy(ov.o4), "A": _xy(ov.a), "B": _xy(ov.b),
+                          "P": _xy(ov.p), "residual": ov.residual, "reversed": ov.reversed,
+                          "lengths": {"crank": abs(ov.a - ov.o2), "coupler": abs(ov.b - ov.a),
+                                      "rocker": abs(ov.b - ov.o4),
+                                      "ground": abs(ov.o4 - ov.o2)},
+                          "atlas_row": [float(v) for v in ov.dims]}
     if res.cognates is not None:
         z = res.cognates.points
         out["cognates"] = {w: {lab: _xy(z[lab]) for lab in labs}
@@ -102,6 +115,16 @@ def synthesis_text(res: Result) -> str:
                      f"{fmt(d['link_5'])}, link 6 = {fmt(d['link_6'])}; the coupler point "
                      f"stays within {fmt(d['arc_deviation'])} of the arc for "
                      f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
+    if "overlay" in data:
+        o = data["overlay"]
+        lines.append("Overlay (Sec. 9.8): the atlas curve of crank 1, coupler "
+                     f"{fmt(o['atlas_row'][1])}, rocker {fmt(o['atlas_row'][2])}, frame "
+                     f"{fmt(o['atlas_row'][3])}, point ({fmt(o['atlas_row'][4])}, "
+                     f"{fmt(o['atlas_row'][5])}) fits the path to {fmt(100 * o['residual'])} % "
+                     "of its size (RMS)")
+        lines.append("  " + ", ".join(f"{k} = ({fmt(o[k][0])}, {fmt(o[k][1])})"
+                                      for k in ("O2", "O4", "A", "B", "P")))
+        lines.append("  " + ", ".join(f"{k} {fmt(v)}" for k, v in o["lengths"].items()))
     if "cognates" in data:
         for w, labs in data["cognates"].items():
             lines.append(f"Cognate {w}: " + ", ".join(

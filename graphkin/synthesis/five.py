@@ -103,6 +103,10 @@ def _bisect(cx: Construction, branch: str, lo: np.ndarray, hi: np.ndarray,
 
     lo, hi = np.atleast_1d(lo).astype(float), np.atleast_1d(hi).astype(float)
     glo, ghi = g(lo), g(hi)
+    # a defect that grows a thousandfold past both ends is a jump through infinity (A1 at
+    # infinity), not a root: such a bracket is given up (the caller's check refuses it)
+    wild = 1e3 * np.maximum(np.abs(glo), np.abs(ghi))
+    pole = np.zeros(lo.shape, bool)
     side = np.zeros(lo.shape)
     for _ in range(48):
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -118,7 +122,10 @@ def _bisect(cx: Construction, branch: str, lo: np.ndarray, hi: np.ndarray,
         hi = np.where(stay, hi, new)
         side = np.where(stay, 1.0, -1.0)
         done = np.abs(hi - lo) <= 1e-15 * (1.0 + np.abs(lo))
-        if np.all(done | (gn == 0)):
+        # a defect of round-off size (the defect is relative to the figure's size squared)
+        # is a root: the secant steps below it only shuffle the last digits of t
+        pole |= ~(np.abs(gn) <= wild)
+        if np.all(done | pole | (np.abs(gn) <= 1e-15)):
             break
     return np.where(np.abs(glo) < np.abs(ghi), lo, hi)
 

@@ -7,6 +7,7 @@ Uicker, Pennock & Shigley, 5th ed., Secs. 9.3-9.7, 9.11.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from itertools import combinations
 
@@ -22,6 +23,7 @@ from graphkin.synthesis.dwell import Dwell, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.linkage import Linkage
+from graphkin.synthesis.overlay import Overlay, overlay
 from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles, add_postures
 from graphkin.synthesis.spec import Spec
 
@@ -55,6 +57,8 @@ class Result:
         The Roberts-Chebyshev cognates (Cayley's diagram).
     dwell : Dwell or None
         The dwell six-bar (Sec. 9.13).
+    overlay : Overlay or None
+        The overlay method's fit (Sec. 9.8).
     """
 
     spec: Spec
@@ -68,6 +72,7 @@ class Result:
     dyads: dict[str, complex] = field(default_factory=dict)
     cognates: Cognates | None = None
     dwell: Dwell | None = None
+    overlay: Overlay | None = None
 
     @property
     def postures(self) -> Postures | None:
@@ -90,6 +95,8 @@ class Result:
             return self.function.mechanism_toml(self.spec.title, self.spec.units)
         if self.dwell is not None:
             return self.dwell.mechanism_toml(self.spec.units, self.spec.title)
+        if self.overlay is not None:
+            return self.overlay.mechanism_toml(self.spec.units, self.spec.title)
         if self.cognates is not None:
             return self.cognates.mechanism_toml(self.spec.write, self.spec.units,
                                                 self.spec.title)
@@ -118,6 +125,16 @@ def synthesize(spec: Spec) -> Result:
         return _function(spec)
     if spec.path is not None:
         return _path(spec)
+    if spec.coupler is not None:
+        from graphkin.synthesis.coupler import coupler_curve
+
+        f = spec.coupler
+        cc = coupler_curve(f["points"], f["O4"], f["O2"], f["R"], f["r"], spec.source)
+        return Result(spec, "coupler curve (Sec. 9.9)", cc.construction,
+                      candidates=[cc.linkage])
+    if spec.overlay is not None:
+        ov = overlay(spec.overlay, spec.closed, spec.source)
+        return Result(spec, "overlay (Sec. 9.8)", overlay=ov)
     if spec.dwell is not None:
         z = spec.dwell
         try:
@@ -230,7 +247,7 @@ def _four(spec: Spec, post: Postures) -> Result:
             raise InputError("the center-point curve has no finite point", key="postures",
                              file=spec.source)
         b, i = np.unravel_index(np.nanargmin(dist), dist.shape)
-        chosen.append((complex(fine.center[b, i]), complex(fine.circle[b, i])))
+        chosen.append(_nearest_on_curve(cx, post, int(b), fine.t, int(i), target))
     if abs(chosen[0][0] - chosen[1][0]) <= 1e-3 * post.scale:
         raise InputError("both center points fall on the same point of the center-point curve "
                          f"near ({chosen[0][0].real:.4g}, {chosen[0][0].imag:.4g}): choose them "
@@ -247,6 +264,37 @@ def _four(spec: Spec, post: Postures) -> Result:
     link = Linkage(post, chosen[0][0], chosen[1][0], chosen[0][1], chosen[1][1], names)
     link.check()
     return Result(spec, "4 postures", cx, sel, cv, candidates=[link])
+
+
+def _nearest_on_curve(cx: Construction, post: Postures, b: int, t: np.ndarray, i: int,
+                      target: complex) -> tuple[complex, complex]:
+    """The center point of branch ``b`` nearest ``target``, and its circle point.
+
+    Golden-section search in t between the samples either side of the nearest
+    sample ``i`` (each step one evaluation of the construction on two values of t);
+    every point it returns is a point of the curve, exact to round-off.
+    """
+    name = four.letters(post)[b]
+
+    def at(tt: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        ev = cx.evaluate({"t": np.asarray(tt, dtype=float)}, strict=False)
+        return four._cplx(ev[f"{name}_C"]), four._cplx(ev[f"{name}1"])
+
+    lo, hi = float(t[max(i - 1, 0)]), float(t[min(i + 1, len(t) - 1)])
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(60):
+        m1, m2 = hi - g * (hi - lo), lo + g * (hi - lo)
+        c, _ = at(np.array([m1, m2]))
+        d1, d2 = (abs(z - target) if np.isfinite(z) else math.inf for z in c)
+        if d1 <= d2:
+            hi = m2
+        else:
+            lo = m1
+        if hi - lo <= 1e-14 * (1.0 + abs(lo)):
+            break
+    c, a = at(np.array([t[i], 0.5 * (lo + hi)]))
+    k = 1 if np.isfinite(c[1]) and abs(c[1] - target) <= abs(c[0] - target) else 0
+    return complex(c[k]), complex(a[k])
 
 
 def _five(spec: Spec, post: Postures) -> Result:

@@ -79,6 +79,12 @@ class Spec:
     write: str = "1"
     dwell: dict[str, complex] | None = None
     dwell_span: float = math.radians(60.0)
+    overlay: np.ndarray | None = None
+    """The overlay method (Sec. 9.8): the desired path's points (complex)."""
+    closed: bool = False
+    coupler: dict[str, Any] | None = None
+    """Coupler-curve synthesis (Sec. 9.9): ``points`` (4 complex), ``O4``, ``O2`` (complex,
+    near the bisectors), ``R``, ``r``."""
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -192,15 +198,20 @@ class _Reader:
         path = self.path() if "path" in self.data else None
         cog, write = self.cognates() if "cognates" in self.data else (None, "1")
         dw, span = self.dwell() if "dwell" in self.data else (None, math.radians(60.0))
+        ov, closed = self.overlay() if "overlay" in self.data else (None, False)
+        cc = self.coupler_curve() if "coupler_curve" in self.data else None
         kinds = [k for k, v in (("postures", post), ("function", func), ("path", path),
-                                ("cognates", cog), ("dwell", dw)) if v is not None]
+                                ("cognates", cog), ("dwell", dw), ("overlay", ov),
+                                ("coupler_curve", cc)) if v is not None]
         if not kinds:
             raise self.fail("postures", "give [[postures]] (body guidance), [function] "
                                         "(function generation), [path] (path generation) or "
                                         "[cognates]")
         if len(kinds) > 1:
             raise self.fail(kinds[1], "give one of [[postures]], [function], [path], "
-                                      f"[cognates] or [dwell], not {' and '.join(kinds)}")
+                                      f"[cognates], [dwell], [overlay] or [coupler_curve], "
+                                      f"not "
+                                      f"{' and '.join(kinds)}")
         if post is not None:
             if post.n < 2 or post.n > 5:
                 raise self.fail("postures", f"{post.n} postures given: two to five can be "
@@ -212,7 +223,7 @@ class _Reader:
                                 "points (on the center-point curve); give center_points")
             post.check()
         return Spec(self.source, title, units, post, circ, cent, func, path, cog, write, dw,
-                    span)
+                    span, ov, closed, cc)
 
     def fourbar(self, table: str, point: str) -> dict[str, complex]:
         f = self.data[table]
@@ -235,6 +246,47 @@ class _Reader:
         if not 5.0 <= span <= 180.0:
             raise self.fail("dwell.span", "the crank's turn of the dwell, 5° to 180°")
         return pts, math.radians(span)
+
+    def coupler_curve(self) -> dict[str, Any]:
+        f = self.data["coupler_curve"]
+        for k in ("points", "O4", "O2", "R", "r"):
+            if k not in f:
+                raise self.fail(f"coupler_curve.{k}", "missing (coupler-curve synthesis needs "
+                                "four points, O4 and O2 near their bisectors, R and r)")
+        pts = f["points"]
+        if not isinstance(pts, list) or len(pts) != 4:
+            raise self.fail("coupler_curve.points", "expected four precision points "
+                                                    "[[x, y], ...]")
+        z = np.array([complex(*self.xy(v, f"coupler_curve.points[{i}]"))
+                      for i, v in enumerate(pts)])
+        size = float(np.max(np.abs(z - z.mean())))
+        if any(abs(z[i] - z[j]) <= 1e-9 * size for i in range(4) for j in range(i)) \
+                or not size > 0:
+            raise self.fail("coupler_curve.points", "two precision points coincide")
+        out: dict[str, Any] = {"points": z}
+        for k in ("O4", "O2"):
+            out[k] = complex(*self.xy(f[k], f"coupler_curve.{k}"))
+        for k in ("R", "r"):
+            v = self.number(f[k], f"coupler_curve.{k}")
+            if not v > 0:
+                raise self.fail(f"coupler_curve.{k}", f"a radius must be positive, not {v!r}")
+            out[k] = v
+        return out
+
+    def overlay(self) -> tuple[np.ndarray, bool]:
+        f = self.data["overlay"]
+        pts = f.get("points")
+        if not isinstance(pts, list) or len(pts) < 4:
+            raise self.fail("overlay.points", "the desired path: at least four points "
+                                              "[[x, y], ...] in order along it")
+        xy = [self.xy(v, f"overlay.points[{i}]") for i, v in enumerate(pts)]
+        closed = f.get("closed", False)
+        if not isinstance(closed, bool):
+            raise self.fail("overlay.closed", f"true or false, not {closed!r}")
+        z = np.array([complex(x, y) for x, y in xy])
+        if float(np.max(np.abs(z - z.mean()))) <= 1e-12 * max(float(np.max(np.abs(z))), 1e-300):
+            raise self.fail("overlay.points", "the points of the path coincide")
+        return z, closed
 
     def cognates(self) -> tuple[dict[str, complex], str]:
         f = self.data["cognates"]

@@ -93,9 +93,9 @@ def test_cognates_file_cli_and_drawing(tmp_path, capsys) -> None:  # type: ignor
     assert sol.position("P") == pytest.approx([p.real, p.imag], abs=1e-9)
     ids = {e.get("id") for e in ET.parse(svg).iter() if e.get("id")}
     for gid in ("cognate-1", "cognate-2", "cognate-3", "coupler-curve"):
-        assert gid in ids
+        assert f"cognates-{gid}" in ids   # the panel's gids carry its name
     for name in ("O_C", "A2", "B2", "B3", "A3"):
-        assert any(i.startswith("step-") and i.endswith(f"-{name}") for i in ids), name
+        assert any(i.startswith("cognates-step-") and i.endswith(f"-{name}") for i in ids), name
     f.write_text("[cognates]\nO_A = [0, 0]\nA = [0, 0]\nB = [1, 1]\nO_B = [2, 0]\nP = [1, 2]\n")
     assert main(["synthesize", str(f)]) == 2
     assert "cognates.A: O_A and A coincide" in capsys.readouterr().err

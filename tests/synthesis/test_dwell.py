@@ -62,8 +62,8 @@ def test_dwell_file_cli_and_drawing(tmp_path, capsys) -> None:  # type: ignore[n
     assert graphkin.load(out).solve() is not None
     ids = {e.get("id") for e in ET.parse(svg).iter() if e.get("id")}
     for gid in ("coupler-curve", "dwell-arc", "link-5", "link-6", "linkage-1", "fixed-pivots"):
-        assert gid in ids
-    assert any(i.startswith("step-") and i.endswith("-D") for i in ids)
+        assert f"dwell-{gid}" in ids   # the panel's gids carry its name
+    assert any(i.startswith("dwell-step-") and i.endswith("-D") for i in ids)
     f.write_text(f.read_text().replace("span = 60", "span = 400"))
     assert main(["synthesize", str(f)]) == 2
     assert "dwell.span" in capsys.readouterr().err

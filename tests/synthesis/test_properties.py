@@ -142,10 +142,11 @@ def test_cli_writes_mechanism_and_drawing(tmp_path) -> None:  # type: ignore[no-
     ids = {e.get("id") for e in ET.parse(svg).iter()}
     for gid in ("posture-1", "center-point-curve-1", "circle-point-curve-1",
                 "linkage-1", "fixed-pivots"):
-        assert gid in ids
+        assert f"synthesis-{gid}" in ids  # the panel's gids carry its name
     # every pole and every side of the opposite-pole quadrilateral, by its step's id
     for name in ("P12", "P13", "P14", "P23", "P24", "P34", "q_P12P24", "q_P34P13"):
-        assert any(i and i.startswith("step-") and i.endswith(f"-{name}") for i in ids), name
+        assert any(i and i.startswith("synthesis-step-") and i.endswith(f"-{name}")
+                   for i in ids), name
     # the chosen center points' circle points in the four postures
     for name in ("A1", "A4", "B1", "B4", "O_A", "O_B"):
         assert any(i and i.endswith(f"-{name}") for i in ids), name

@@ -139,9 +139,9 @@ def test_three_posture_drawing_read_back(tmp_path) -> None:  # type: ignore[no-u
     # circles of Example 9.4 are drawn only when they fit the figure: not here)
     for name in ("P12", "P23", "P31", "s1", "s2", "s3", "A_I", "B_I", "O_A", "O_B", "A2",
                  "B3", "k_A", "k_B"):
-        assert any(i.startswith("step-") and i.endswith(f"-{name}") for i in ids), name
+        assert any(i.startswith("synthesis-step-") and i.endswith(f"-{name}") for i in ids), name
     for gid in ("posture-1", "posture-3", "linkage-1", "coupler-curve", "fixed-pivots"):
-        assert gid in ids
+        assert f"synthesis-{gid}" in ids  # the panel's gids carry its name
     # the pivots found are the crank-rocker's (Ex 9.1's construction, read from the SVG's
     # own numbers would need the transform: the result object says it)
     assert abs(res.candidates[0].o_a - OA) < 1e-9 and abs(res.candidates[0].o_b - OB) < 1e-9
