@@ -11,7 +11,42 @@ tests and the benchmark the page's state, its drive setter and its TOML.
 
 from __future__ import annotations
 
-__all__ = ["APP_JS", "PAGE_CSS"]
+__all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
+
+LIVE_LIB = r"""
+// The inputs of the written-out centers (Sec. 3.13): each primary center from the posture
+// r, homogeneous: a pin is [x, y, 1]; a slider's center is at infinity normal to its line,
+// [-sin θ, cos θ, 0], θ the angle of the link it slides on plus the line's own (Eq. 3.21).
+function gkCenterInputs(C, r) {
+  const J = {};
+  for (const lab of Object.keys(C.given)) {
+    const g = C.given[lab];
+    if (g.pin !== undefined) {
+      const p = r[g.pin];
+      if (!p) return null;
+      J[lab] = [p[0], p[1], 1];
+    } else {
+      let t = r["\u03b8" + g.slider];
+      if (t === undefined) t = g.slider === "1" ? C.frameAngle : NaN;
+      t += g.angle;
+      J[lab] = [-Math.sin(t), Math.cos(t), 0];
+    }
+  }
+  return J;
+}
+// every center and line of centers of the posture r (null where two lines coincide)
+function gkCenters(C, r) {
+  if (!C || !r) return null;
+  const J = gkCenterInputs(C, r);
+  return J === null ? null : centers(J, C.K);
+}
+// a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
+// graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
+function gkAtInfinity(C, p) {
+  const dx = p[0] - C.origin[0] * p[2], dy = p[1] - C.origin[1] * p[2];
+  return !(Math.abs(p[2]) * C.far > Math.hypot(dx, dy));
+}
+"""
 
 PAGE_CSS = """
 body { font-family: system-ui, sans-serif; margin: 1em; color: #000; }
@@ -50,10 +85,12 @@ const px = (lw) => 1.4 * lw;
 const views = {};
 const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
 const svgs = {};
-for (const name of ["posture", "velocity", "acceleration"]) {
+for (const name of ["posture", "velocity", "acceleration", "kennedy"]) {
   const svg = document.getElementById("gk-" + name);
   svg.setAttribute("viewBox", "0 0 " + W + " " + H);
-  if (panels.indexOf(name) < 0) svg.parentNode.style.display = "none";
+  if (panels.indexOf(name) < 0 && !(name === "kennedy" && D.centers)) {
+    svg.parentNode.style.display = "none";
+  }
   svgs[name] = svg;
 }
 const moving = [];
@@ -68,17 +105,8 @@ for (const lid of Object.keys(D.links)) {
 
 function solve() { I[D.drive.label] = drive; return construction(I, K); }
 
-// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the pins of the posture
-function centersOf(r) {
-  if (!D.centers || !r) return null;
-  const J = {};
-  for (const lab of Object.keys(D.centers.pins)) {
-    const p = r[D.centers.pins[lab]];
-    if (!p) return null;
-    J[lab + ".x"] = p[0]; J[lab + ".y"] = p[1];
-  }
-  return centers(J, D.centers.K);
-}
+// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
+function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
 let ics = null;
 
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
@@ -126,8 +154,10 @@ function fit(panel, r) {
         y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
       }
       const size = Math.hypot(x1 - x0, y1 - y0), o = [(x0 + x1) / 2, (y0 + y1) / 2];
-      for (const lab of Object.keys(c)) {
-        const p = c[lab];
+      for (const lab of D.centers.labels) {
+        const h = c[lab];
+        if (!h || gkAtInfinity(D.centers, h)) continue;
+        const p = [h[0] / h[2], h[1] / h[2]];
         if (Math.hypot(p[0] - o[0], p[1] - o[1]) < 3 * size) pts.push(p);
       }
     }
@@ -231,28 +261,89 @@ function drawPosture(r, stale) {
 }
 
 function drawCenters(g) {
-  // each of Kennedy's lines from the first of its centers to the farthest on it
+  // Kennedy's lines: through their finite centers, to the panel's edge when a center on the
+  // line is at infinity (the line is then the parallel to its direction); a center at
+  // infinity is drawn as its direction, a double arrow with its name (Sec. 3.13)
+  const C = D.centers, v = views.posture;
+  const fin = (h) => !gkAtInfinity(C, h);
+  const xy = (h) => [h[0] / h[2], h[1] / h[2]];
   const on = {};
-  for (const [lab, p, q] of D.centers.joins) on[lab] = [p, q];
-  for (const [lab, l1, l2] of D.centers.meets) { on[l1].push(lab); on[l2].push(lab); }
+  for (const [lab, p, q] of C.joins) on[lab] = [p, q];
+  for (const [lab, l1, l2] of C.meets) { on[l1].push(lab); on[l2].push(lab); }
+  const reach = 2 * Math.hypot(W, H) / v.s;
   for (const lab of Object.keys(on)) {
-    const pts = on[lab].map((c) => ics[c]);
-    const o = pts[0];
-    let far = pts[1], best = -1;
-    for (const p of pts) {
-      const dd = Math.hypot(p[0] - o[0], p[1] - o[1]);
-      if (dd > best) { best = dd; far = p; }
+    const ln = ics[lab];
+    const hs = on[lab].map((c) => ics[c]).filter(Boolean);
+    const finite = hs.filter(fin).map(xy);
+    if (!ln || !finite.length) continue;
+    const d = [ln[1], -ln[0]], o = finite[0];
+    let t0 = 0, t1 = 0;
+    for (const p of finite) {
+      const t = (p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1];
+      t0 = Math.min(t0, t); t1 = Math.max(t1, t);
     }
-    el(g, "line", {x1: X("posture", o), y1: Y("posture", o), x2: X("posture", far),
-                   y2: Y("posture", far), stroke: ink("aux-line", "color"),
+    if (hs.some((h) => !fin(h))) { t0 -= reach; t1 += reach; }
+    const pad = 0.08 * (t1 - t0) + 8 / v.s;
+    const a = [o[0] + (t0 - pad) * d[0], o[1] + (t0 - pad) * d[1]];
+    const b = [o[0] + (t1 + pad) * d[0], o[1] + (t1 + pad) * d[1]];
+    el(g, "line", {x1: X("posture", a), y1: Y("posture", a), x2: X("posture", b),
+                   y2: Y("posture", b), stroke: ink("aux-line", "color"),
                    "stroke-width": "0.8", "stroke-dasharray": "5 3", class: "gk-kennedy"});
   }
-  for (const lab of D.centers.labels) {
-    if (D.centers.pins[lab]) continue;
-    const p = ics[lab];
-    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
-                     stroke: "#000", "stroke-width": "1.2"});
-    label(g, "posture", p, lab);
+  let k = 0;
+  for (const lab of C.labels) {
+    const h = ics[lab];
+    if (!h) continue;
+    if (fin(h)) {
+      if (C.given[lab] && C.given[lab].pin !== undefined) continue;  // the pin is drawn
+      const p = xy(h);
+      el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
+                       stroke: "#000", "stroke-width": "1.2", class: "gk-center"});
+      label(g, "posture", p, lab);
+      continue;
+    }
+    // at infinity: its direction, screen y down, in the panel's lower left corner
+    const n = Math.hypot(h[0], h[1]) || 1, ux = h[0] / n, uy = -h[1] / n;
+    const cx = 42 + 60 * k, cy = H - 40;
+    k++;
+    el(g, "line", {x1: cx - 18 * ux, y1: cy - 18 * uy, x2: cx + 18 * ux, y2: cy + 18 * uy,
+                   stroke: "#000", "stroke-width": "1.2", class: "gk-center-infinity",
+                   "data-name": lab, "marker-start": "url(#gk-posture-arrow)",
+                   "marker-end": "url(#gk-posture-arrow)"});
+    el(g, "text", {x: cx - 16, y: cy + 30, "font-size": "11", "font-style": "italic"},
+       lab + " \u2192 \u221e");
+  }
+}
+
+// the Kennedy circle (Sec. 3.15): the links on a circle, a line for every center: primary
+// centers black, those Kennedy's theorem found in the result colour, none where the page
+// cannot find it at this posture (dashed)
+function drawKennedyCircle() {
+  const svg = svgs.kennedy, C = D.centers;
+  svg.textContent = "";
+  const n = C.links.length, R = 0.36 * Math.min(W, H), ox = W / 2, oy = H / 2;
+  const at = {};
+  C.links.forEach((lid, i) => {
+    const t = Math.PI / 2 - 2 * Math.PI * i / n;
+    at[lid] = [ox + R * Math.cos(t), oy - R * Math.sin(t)];
+  });
+  for (const lab of Object.keys(C.pairs)) {
+    const [i, j] = C.pairs[lab], p = at[i], q = at[j];
+    if (!p || !q) continue;
+    const found = ics && ics[lab];
+    const e = el(svg, "line", {x1: p[0], y1: p[1], x2: q[0], y2: q[1],
+                               stroke: C.given[lab] ? "#000" : ink("result-line", "color"),
+                               "stroke-width": found ? "1.6" : "0.8",
+                               "stroke-dasharray": found ? "none" : "4 3",
+                               class: "gk-kennedy-pair", "data-name": lab});
+    el(e, "title", {}, lab);
+    const m = [p[0] + 0.38 * (q[0] - p[0]), p[1] + 0.38 * (q[1] - p[1])];  // chords cross at 1/2
+    el(svg, "text", {x: m[0] + 3, y: m[1] - 3, "font-size": "10", fill: "#555"}, lab);
+  }
+  for (const lid of C.links) {
+    const p = at[lid];
+    el(svg, "circle", {cx: p[0], cy: p[1], r: 11, fill: "#fff", stroke: "#000"});
+    el(svg, "text", {x: p[0], y: p[1] + 4, "font-size": "12", "text-anchor": "middle"}, lid);
   }
 }
 
@@ -329,6 +420,7 @@ function redraw(refit) {
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
+  if (D.centers) drawKennedyCircle();
   if (ok) table(r);
   status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.";

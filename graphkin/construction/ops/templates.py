@@ -177,9 +177,31 @@ def _add_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.add(t, gen.num(step.params["offset"])))
 
 
+def _join_homogeneous(gen: Gen, step: Step) -> None:
+    """The line through two points, either of them at infinity: ``p × q``, normalized.
+
+    Written only by the centers' JavaScript writer (``gen.homogeneous``):
+    Kennedy's lines through a center at infinity (a slider's) are the
+    parallels through the other center.  Two points at infinity, or two
+    coincident points, have no line (``|(a, b)|`` vanishing against ``|c|``).
+    """
+    px, py, pw = gen.rows(step.inputs[0])
+    qx, qy, qw = gen.rows(step.inputs[1])
+    a = gen.let(gen.sub(gen.mul(py, qw), gen.mul(pw, qy)), "a")
+    b = gen.let(gen.sub(gen.mul(pw, qx), gen.mul(px, qw)), "b")
+    c = gen.let(gen.sub(gen.mul(px, qy), gen.mul(py, qx)), "c")
+    n = gen.let(f"_sqrt({gen.add(gen.mul(a, a), gen.mul(b, b))})", "n")
+    # in the points' own scale: |a, b| against the rel. tolerance of |c| (|p||q| sin)
+    gen.bail_unless(f"{n} > {lit(gen.tol.length_rel)} * _abs({c})")
+    gen.put_rows(step.outputs[0], "line", *(_div(gen, r, n) for r in (a, b, c)))
+
+
 @template("join")
 def _join(gen: Gen, step: Step) -> None:
     p, q = step.inputs
+    if getattr(gen, "homogeneous", False):
+        _join_homogeneous(gen, step)
+        return
     px, py = gen.pt(p)
     qx, qy = gen.pt(q)
     tol = gen.tol
@@ -225,6 +247,14 @@ def _meet(gen: Gen, step: Step) -> None:
     pw = gen.let(gen.sub(gen.mul(a1, b2), gen.mul(b1, a2)), "w")
     px = gen.let(gen.sub(gen.mul(b1, c2), gen.mul(c1, b2)), "x")
     py = gen.let(gen.sub(gen.mul(c1, a2), gen.mul(a1, c2)), "y")
+    if getattr(gen, "homogeneous", False):
+        # the centers' writer (jsgen, homogeneous): parallel lines meet at infinity, kept as
+        # (x, y, 0); only coincident lines (every row zero) have no meet
+        n2 = gen.add(gen.add(gen.mul(px, px), gen.mul(py, py)), gen.mul(pw, pw))
+        n = gen.let(f"_sqrt({n2})", "n")
+        _positive(gen, n)
+        gen.put_rows(step.outputs[0], "point", *(_div(gen, r, n) for r in (px, py, pw)))
+        return
     n2 = gen.add(gen.mul(px, px), gen.mul(py, py))
     # the kernel's clean case: nowhere parallel, coincident or NaN
     gate = lit((gen.tol.angle * (1.0 + 1e-6)) ** 2)
@@ -382,7 +412,18 @@ def _scalar(gen: Gen, step: Step) -> None:
 
 @template("copy_point", python=False)
 def _copy_point(gen: Gen, step: Step) -> None:
+    v = gen.val(step.inputs[0])
+    if v.form == "rows":  # a homogeneous point (the centers' writer): its three rows
+        gen.put_rows(step.outputs[0], "point", *v.ex)
+        return
     gen.put_point(step.outputs[0], *gen.pt(step.inputs[0]))
+
+
+@template("at_infinity_on", python=False)
+def _at_infinity_on(gen: Gen, step: Step) -> None:
+    # the point at infinity of a line (a, b, c): its direction (b, -a), w = 0
+    a, b, _ = gen.rows(step.inputs[0])
+    gen.put_rows(step.outputs[0], "point", b, gen.neg(a), "0.0")
 
 
 template("same_point", python=False)(_copy_point)
