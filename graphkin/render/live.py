@@ -34,7 +34,7 @@ from graphkin.render.live_app import APP_JS, LIVE_LIB, PAGE_CSS
 from graphkin.render.style import STYLES
 from graphkin.tolerance import DEFAULT_TOL
 
-__all__ = ["live_data", "live_html", "script_json"]
+__all__ = ["live_body", "live_data", "live_html", "script_json"]
 
 _BRANCH_OPS = ("intersect_circles", "intersect_line_circle", "tangent_foot")
 
@@ -271,17 +271,10 @@ def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
     return out
 
 
-def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
-    """The whole page, self-contained (one file, no network)."""
-    data, js = live_data(mech, file_data, source)
-    title = html.escape(str(data["title"]))
-    return f"""<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8">
-<meta name="viewport" content="width=device-width, initial-scale=1">
-<title>{title} (live)</title>
-<style>{PAGE_CSS}</style></head>
-<body>
-<header><h1>{title}</h1>
+def live_body(title: str) -> str:
+    """The page's markup inside ``<body>`` (the page and the notebook widget share it)."""
+    t = html.escape(title)
+    return f"""<header><h1>{t}</h1>
 <p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
 the recorded construction, re-solved in the page.</p>
 <div class="controls"><label>drive <input id="gk-drive" type="range"></label>
@@ -298,12 +291,27 @@ the recorded construction, re-solved in the page.</p>
 <figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
 </main>
 <table id="gk-table"></table>
-<script id="gk-data" type="application/json">{script_json(data)}</script>
+"""
+
+
+def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
+    """The whole page, self-contained (one file, no network)."""
+    data, js = live_data(mech, file_data, source)
+    title = html.escape(str(data["title"]))
+    return f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{title} (live)</title>
+<style>{PAGE_CSS}</style></head>
+<body>
+{live_body(str(data["title"]))}<script id="gk-data" type="application/json">
+{script_json(data)}</script>
 <script>
 {js}
 {LIVE_LIB}
-const GK_NAME = {js_string(source)};
 {APP_JS}
+window.graphkinLive = gkLiveApp(document,
+  JSON.parse(document.getElementById("gk-data").textContent), {js_string(source)}, null);
 </script>
 </body></html>
 """

@@ -5,8 +5,12 @@ construction ``construction(I, K)`` on every pointer move and redraws the
 posture and the velocity and acceleration polygons (Secs. 3.4-3.6 and
 4.2-4.6 of Uicker, Pennock & Shigley, 5th ed.) in the colours of ``draw``
 (render/style.py, passed in the data).  Every text it writes goes through
-``textContent`` (never parsed as HTML).  ``window.graphkinLive`` gives the
-tests and the benchmark the page's state, its drive setter and its TOML.
+``textContent`` (never parsed as HTML).  The script is one function,
+``gkLiveApp(root, data, name, onEdit)``, run on the page's document (which
+sets ``window.graphkinLive``: the tests and the benchmark read the page's
+state, its drive setter and its TOML there) or inside a notebook widget's
+element (:mod:`graphkin.render.live_widget`, whose ``onEdit`` sends the
+edited file back to Python).
 """
 
 from __future__ import annotations
@@ -67,9 +71,14 @@ th { background: #f4f4f4; }
 """
 
 APP_JS = r"""
-(function () {
+// the page's script, run inside ``root`` (the document, or a notebook widget's element):
+// D is the page's data, GK_NAME the file's name, onEdit(toml) is told every edit (or null);
+// returns the page's API (state, setDrive, toml, redraw)
+function gkLiveApp(root, D, GK_NAME, onEdit) {
 "use strict";
-const D = JSON.parse(document.getElementById("gk-data").textContent);
+const byId = (id) => root.querySelector("#" + id);
+// markers referenced by url(#...) must be unique in the document (several widgets)
+const UID = "gk" + Math.random().toString(36).slice(2, 9) + "-";
 const NS = "http://www.w3.org/2000/svg";
 const W = 420, H = 360, M = 30;
 const K0 = D.K.slice();
@@ -86,7 +95,7 @@ const views = {};
 const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
 const svgs = {};
 for (const name of ["posture", "velocity", "acceleration", "kennedy"]) {
-  const svg = document.getElementById("gk-" + name);
+  const svg = byId("gk-" + name);
   svg.setAttribute("viewBox", "0 0 " + W + " " + H);
   if (panels.indexOf(name) < 0 && !(name === "kennedy" && D.centers)) {
     svg.parentNode.style.display = "none";
@@ -188,8 +197,9 @@ function el(parent, tag, attrs, text) {
 
 function defs(svg) {
   const d = el(svg, "defs", {});
-  const m = el(d, "marker", {id: svg.id + "-arrow", viewBox: "0 0 10 10", refX: "10", refY: "5",
-                             markerWidth: "7", markerHeight: "7", orient: "auto-start-reverse"});
+  const m = el(d, "marker", {id: UID + svg.id + "-arrow", viewBox: "0 0 10 10", refX: "10",
+                             refY: "5", markerWidth: "7", markerHeight: "7",
+                             orient: "auto-start-reverse"});
   el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: ink("result-line", "color")});
 }
 
@@ -308,8 +318,8 @@ function drawCenters(g) {
     k++;
     el(g, "line", {x1: cx - 18 * ux, y1: cy - 18 * uy, x2: cx + 18 * ux, y2: cy + 18 * uy,
                    stroke: "#000", "stroke-width": "1.2", class: "gk-center-infinity",
-                   "data-name": lab, "marker-start": "url(#gk-posture-arrow)",
-                   "marker-end": "url(#gk-posture-arrow)"});
+                   "data-name": lab, "marker-start": "url(#" + UID + "gk-posture-arrow)",
+                   "marker-end": "url(#" + UID + "gk-posture-arrow)"});
     el(g, "text", {x: cx - 16, y: cy + 30, "font-size": "11", "font-style": "italic"},
        lab + " \u2192 \u221e");
   }
@@ -365,7 +375,7 @@ function drawPolygon(panel, pre, r, stale) {
       el(g, "line", {x1: X(panel, o), y1: Y(panel, o), x2: X(panel, p), y2: Y(panel, p),
                      stroke: ink("result-line", "color"),
                      "stroke-width": px(ink("result-line", "lw")),
-                     "marker-end": "url(#" + svg.id + "-arrow)"});
+                     "marker-end": "url(#" + UID + svg.id + "-arrow)"});
     }
     label(g, panel, p, n.toLowerCase());
   }
@@ -376,7 +386,7 @@ function drawPolygon(panel, pre, r, stale) {
 function fmt(v) { return Number.isFinite(v) ? Number(v.toPrecision(6)).toString() : "\u2014"; }
 
 function table(r) {
-  const t = document.getElementById("gk-table");
+  const t = byId("gk-table");
   t.textContent = "";
   const head = el0(t, "tr");
   for (const h of ["point", "x", "y"].concat(D.rates ? ["|V|", "|A|"] : [])) el0(head, "th", h);
@@ -398,9 +408,9 @@ function el0(parent, tag, text) {
   return e;
 }
 
-const slider = document.getElementById("gk-drive");
-const sval = document.getElementById("gk-drive-val");
-const status = document.getElementById("gk-status");
+const slider = byId("gk-drive");
+const sval = byId("gk-drive-val");
+const status = byId("gk-status");
 const isAngle = D.drive.degrees;
 function showDrive() {
   const v = isAngle ? drive * 180 / Math.PI : drive;
@@ -476,7 +486,9 @@ function dragPoint(c, w) {
     K[im.slots[1]] = (zp1 * zr0 - zp0 * zr1) / den;
   }
 }
-const stop = () => { if (dragging) { dragging = null; redraw(true); } };
+// the edited mechanism, told to the notebook (its widget.mechanism) after every edit
+function notify() { if (onEdit) onEdit(edited()); }
+const stop = () => { if (dragging) { dragging = null; redraw(true); notify(); } };
 svgs.posture.addEventListener("pointerup", stop);
 svgs.posture.addEventListener("pointercancel", stop);
 
@@ -487,13 +499,14 @@ else {
   slider.step = String(span / 500);
 }
 slider.addEventListener("pointerdown", snapshot);
+slider.addEventListener("change", notify);
 slider.addEventListener("input", () => {
   const v = Number(slider.value);
   drive = isAngle ? v * Math.PI / 180 : v;
   redraw(false);
 });
 // the two-way steps (Sec. 2.8, cases 2-4): switch the chosen point's branch
-const branchSel = document.getElementById("gk-branch");
+const branchSel = byId("gk-branch");
 for (const n of Object.keys(D.branches)) {
   const o = document.createElement("option");
   o.value = n; o.textContent = n;
@@ -501,19 +514,19 @@ for (const n of Object.keys(D.branches)) {
 }
 if (!branchSel.options.length) {
   branchSel.parentNode.style.display = "none";
-  document.getElementById("gk-switch").style.display = "none";
+  byId("gk-switch").style.display = "none";
 }
-document.getElementById("gk-switch").addEventListener("click", () => {
+byId("gk-switch").addEventListener("click", () => {
   const k = D.branches[branchSel.value];
   if (k === undefined) return;
-  snapshot(); K[k] = -K[k]; redraw(true);
+  snapshot(); K[k] = -K[k]; redraw(true); notify();
 });
-document.getElementById("gk-undo").addEventListener("click", () => {
+byId("gk-undo").addEventListener("click", () => {
   const s = history.pop(); if (!s) return;
-  K = s[0]; drive = s[1]; redraw(true);
+  K = s[0]; drive = s[1]; redraw(true); notify();
 });
-document.getElementById("gk-reset").addEventListener("click", () => {
-  snapshot(); K = K0.slice(); drive = drive0; redraw(true);
+byId("gk-reset").addEventListener("click", () => {
+  snapshot(); K = K0.slice(); drive = drive0; redraw(true); notify();
 });
 
 function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
@@ -562,7 +575,7 @@ function edited() {
   return out.join("\n").replace(/^\n+/, "") + "\n";
 }
 
-document.getElementById("gk-save").addEventListener("click", () => {
+byId("gk-save").addEventListener("click", () => {
   const blob = new Blob([edited()], {type: "application/toml"});
   const a = document.createElement("a");
   a.href = URL.createObjectURL(blob);
@@ -571,12 +584,12 @@ document.getElementById("gk-save").addEventListener("click", () => {
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 });
 
-window.graphkinLive = {
+redraw(true);
+return {
   state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   toml: edited,
   redraw: redraw,
 };
-redraw(true);
-})();
+}
 """
