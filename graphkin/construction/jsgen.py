@@ -206,7 +206,7 @@ class JSGen(Gen):
 
 def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
                 tol: Tolerance | None = None, name: str = "construction",
-                given: Iterable[str] = ()) -> JSFunction:
+                given: Iterable[str] = (), homogeneous: bool | None = None) -> JSFunction:
     """Write the steps out as one JavaScript function of the inputs and the dimensions.
 
     Parameters
@@ -223,6 +223,11 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
         centers, taken from the posture (Sec. 3.13).  With any, the function
         works in homogeneous coordinates throughout (``join``, ``meet`` of
         parallel lines at infinity) and returns every point as ``[x, y, w]``.
+    homogeneous : bool, optional
+        False: the given points are finite, read as ``[x, y]`` and the
+        function works in Cartesian coordinates (the curvature constructions
+        of a posture, Secs. 4.13-4.17).  Default: homogeneous when any point
+        is given.
 
     Returns
     -------
@@ -239,7 +244,8 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
     tol = tol or DEFAULT_TOL
     requests = tuple(dict.fromkeys(requests))
     given = set(given)
-    gen = JSGen(tol, homogeneous=bool(given))
+    homogeneous = bool(given) if homogeneous is None else homogeneous
+    gen = JSGen(tol, homogeneous=homogeneous)
     inputs: list[str] = []
     need = _live(steps, set(requests))
     for step, needed in zip(steps, need):
@@ -249,8 +255,12 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
             lab = step.outputs[0]
             p = gen.tmp("in")
             gen.lines.append(f"  const {p} = I[{js_string(lab)}];")
-            gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1]) && _fin({p}[2])")
-            gen.put_rows(lab, "point", f"{p}[0]", f"{p}[1]", f"{p}[2]")
+            if homogeneous:
+                gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1]) && _fin({p}[2])")
+                gen.put_rows(lab, "point", f"{p}[0]", f"{p}[1]", f"{p}[2]")
+            else:
+                gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1])")
+                gen.put_point(lab, f"{p}[0]", f"{p}[1]")
             inputs.append(lab)
             continue
         if step.op == "input":

@@ -148,6 +148,13 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     if centers is not None:
         data["centers"], cjs = centers
         js += cjs
+    if rates:
+        from graphkin.render.live_curvature import curvature_data
+
+        curv = curvature_data(mech, points, made)
+        if curv is not None:
+            data["curvature"], vjs = curv
+            js += vjs
     return data, js
 
 
@@ -289,6 +296,7 @@ the recorded construction, re-solved in the page.</p>
 <figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
 <figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
 <figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
+<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
 </main>
 <table id="gk-table"></table>
 """

@@ -44,6 +44,29 @@ function gkCenters(C, r) {
   const J = gkCenterInputs(C, r);
   return J === null ? null : centers(J, C.K);
 }
+// the given points of the curvature construction (Secs. 4.13-4.17) from the posture r: a
+// point's position, or its velocity (acceleration) drawn from it to the scale 1/|ω| (1/ω²)
+function gkCurvatureInputs(V, r) {
+  const J = {}, w = r["\u03c9" + V.link];
+  for (const lab of Object.keys(V.given)) {
+    const g = V.given[lab];
+    const n = g.point !== undefined ? g.point : (g.vtip !== undefined ? g.vtip : g.atip);
+    const p = r[n];
+    if (!p || w === undefined) return null;
+    if (g.point !== undefined) { J[lab] = p; continue; }
+    const pre = g.vtip !== undefined ? "v" : "a", k = pre === "v" ? Math.abs(w) : w * w;
+    const q = r[pre + "(" + n + ")"], o = r["o_" + pre];
+    if (!q || !o) return null;
+    J[lab] = [p[0] + (q[0] - o[0]) / k, p[1] + (q[1] - o[1]) / k];
+  }
+  return J;
+}
+// the curvature construction of the posture r (null where it has no clean answer)
+function gkCurvature(V, r) {
+  if (!V || !r) return null;
+  const J = gkCurvatureInputs(V, r);
+  return J === null ? null : curvature(J, V.K);
+}
 // a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
 // graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
 function gkAtInfinity(C, p) {
@@ -94,10 +117,11 @@ const px = (lw) => 1.4 * lw;
 const views = {};
 const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
 const svgs = {};
-for (const name of ["posture", "velocity", "acceleration", "kennedy"]) {
+for (const name of ["posture", "velocity", "acceleration", "kennedy", "curvature"]) {
   const svg = byId("gk-" + name);
   svg.setAttribute("viewBox", "0 0 " + W + " " + H);
-  if (panels.indexOf(name) < 0 && !(name === "kennedy" && D.centers)) {
+  if (panels.indexOf(name) < 0 && !(name === "kennedy" && D.centers) &&
+      !(name === "curvature" && D.curvature)) {
     svg.parentNode.style.display = "none";
   }
   svgs[name] = svg;
@@ -116,7 +140,7 @@ function solve() { I[D.drive.label] = drive; return construction(I, K); }
 
 // the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
 function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
-let ics = null;
+let ics = null, curv = null;
 
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
 // at 360 drive angles from the current one (null where the posture cannot be assembled)
@@ -176,6 +200,22 @@ function fit(panel, r) {
     x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
     y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
   }
+  let w = x1 - x0, h = y1 - y0;
+  const big = Math.max(w, h) || 1;
+  w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
+  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
+}
+
+// fit a panel to a list of points (the curvature panel's own scale)
+function fitPoints(panel, pts) {
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (const p of pts) {
+    x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
+    y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
+  }
+  if (!pts.length) { x0 = y0 = -1; x1 = y1 = 1; }
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
@@ -357,6 +397,74 @@ function drawKennedyCircle() {
   }
 }
 
+// the curvature of the motion of one link (Secs. 4.13-4.17): its inflection circle on IJ, the
+// centrode normal N and tangent T at I, the conjugates, Hain's G_N and G_T, Ball's point U
+function drawCurvature(r, stale, refit) {
+  const svg = svgs.curvature, V = D.curvature;
+  svg.textContent = "";
+  defs(svg);
+  const cap = svg.parentNode.querySelector("figcaption");
+  if (cap) cap.textContent = "Curvature of the motion " + V.link + "/1 (inflection circle)";
+  if (!curv) {
+    el(svg, "text", {x: 12, y: 24, "font-size": "12", fill: "#c62828"},
+       "No clean construction at this posture (\u03c9" + V.link + " = 0 or a degenerate case).");
+    return;
+  }
+  const g = el(svg, "g", stale ? {class: "gk-stale"} : {});
+  const pts = [];
+  for (const lid of Object.keys(D.links)) for (const n of D.links[lid]) if (r[n]) pts.push(r[n]);
+  const ic = curv["inflection circle"];
+  let size = 1;
+  if (pts.length) {
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const p of pts) {
+      x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]); y0 = Math.min(y0, p[1]);
+      y1 = Math.max(y1, p[1]);
+    }
+    size = Math.hypot(x1 - x0, y1 - y0) || 1;
+  }
+  const near = (p) => p && pts.length && Math.hypot(p[0] - pts[0][0], p[1] - pts[0][1]) < 3 * size;
+  if (ic && ic[2] < 3 * size) {
+    pts.push([ic[0] - ic[2], ic[1] - ic[2]], [ic[0] + ic[2], ic[1] + ic[2]]);
+  }
+  for (const lab of V.labels) {
+    if (V.kinds[lab] === "point" && near(curv[lab])) pts.push(curv[lab]);
+  }
+  if (refit || !views.curvature) fitPoints("curvature", pts);
+  for (const lid of Object.keys(D.links)) {
+    if (lid === "1") continue;
+    outline(g, "curvature", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
+  }
+  if (ic) {
+    el(g, "circle", {cx: X("curvature", ic), cy: Y("curvature", ic),
+                     r: ic[2] * views.curvature.s, fill: "none",
+                     stroke: ink("result-line", "color"), "stroke-width": "1.4",
+                     class: "gk-inflection-circle"});
+  }
+  const I = curv.I, Jp = curv.J;
+  if (I && Jp) {
+    // N from I toward J, T 90° clockwise from N (Sec. 4.12)
+    const d = Math.hypot(Jp[0] - I[0], Jp[1] - I[1]) || 1, u = [(Jp[0] - I[0]) / d,
+                                                                 (Jp[1] - I[1]) / d];
+    const L = Math.max(d, 0.25 * size);
+    for (const [name, e] of [["N", u], ["T", [u[1], -u[0]]]]) {
+      const q = [I[0] + 1.3 * L * e[0], I[1] + 1.3 * L * e[1]];
+      el(g, "line", {x1: X("curvature", I), y1: Y("curvature", I), x2: X("curvature", q),
+                     y2: Y("curvature", q), stroke: ink("aux-line", "color"),
+                     "stroke-width": "1", "marker-end": "url(#" + UID + "gk-curvature-arrow)"});
+      label(g, "curvature", q, name);
+    }
+  }
+  for (const lab of V.labels) {
+    const p = curv[lab];
+    if (V.kinds[lab] !== "point" || !p || !near(p)) continue;
+    el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
+                     fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
+                     "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});
+    label(g, "curvature", p, lab);
+  }
+}
+
 function drawPolygon(panel, pre, r, stale) {
   const svg = svgs[panel];
   svg.textContent = "";
@@ -427,10 +535,12 @@ function redraw(refit) {
   if (r === null) return;
   cycle();
   ics = centersOf(r);
+  curv = D.curvature ? gkCurvature(D.curvature, r) : null;
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
   if (D.centers) drawKennedyCircle();
+  if (D.curvature) drawCurvature(r, !ok, refit);
   if (ok) table(r);
   status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.";
@@ -586,7 +696,8 @@ byId("gk-save").addEventListener("click", () => {
 
 redraw(true);
 return {
-  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics}),
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics,
+                 curvature: curv}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   toml: edited,
   redraw: redraw,

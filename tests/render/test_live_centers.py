@@ -15,15 +15,14 @@ as the direction it is.
 
 from __future__ import annotations
 
-import copy
 import json
-import math
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
+from live_edit import edited
 from strategies import (
     RandomMechanism,
     double_sliders,
@@ -57,23 +56,10 @@ def _page_centers(data: dict, js: str, drive: float) -> dict | None:
     """What the page computes at the drive value ``drive``: the posture and the centers."""
     src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
            "\nconst I = Object.assign({}, D.inputs);"
-           f"\nI[D.drive.label] = {drive!r};"
+           f"\nI[D.drive.label] = {float(drive)!r};"
            "\nconst r = construction(I, D.K);"
            "\nconst RESULT = r === null ? null : {r: r, c: gkCenters(D.centers, r)};")
     return run_js(src)
-
-
-def _edited(data: dict, drive: float, r: dict) -> dict:
-    """The file as the page saves it: the drive moved, assembly hints at the page's points."""
-    f = copy.deepcopy(data["file"])
-    d = data["drive"]
-    dr = f["drive"][d["index"]] if isinstance(f["drive"], list) else f["drive"]
-    dr[d["key"]] = math.degrees(drive) if d["degrees"] else drive
-    if data["assembly"]:
-        f["assembly"] = dict(f.get("assembly", {}))
-        for n in data["assembly"]:
-            f["assembly"][n] = [r[n][0], r[n][1]]
-    return f
 
 
 def _unit(h) -> np.ndarray:
@@ -125,7 +111,7 @@ def _check(rm: RandomMechanism, offset: float) -> None:
         return  # this posture cannot be assembled: the page says so (test_live.py)
     r, c = out["r"], out["c"]
     try:
-        sol = from_dict(_edited(data, drive, r), source="<edited>").solve()
+        sol = from_dict(edited(data, drive, r), source="<edited>").solve()
         ic = instant_centers(sol)
     except GraphkinError:
         return  # graphkin cannot find the centers at this posture either
