@@ -291,6 +291,13 @@ the recorded construction, re-solved in the page.</p>
 <button id="gk-undo" type="button">Undo</button>
 <button id="gk-reset" type="button">Reset</button>
 <button id="gk-save" type="button">Save the edited mechanism</button></div>
+<div class="controls" id="gk-pen-bar"><button id="gk-pen" type="button" aria-pressed="false">Pen:
+draw my velocity polygon</button>
+<label>polygon <select id="gk-pen-panel"><option value="velocity">velocity</option>
+<option value="acceleration">acceleration</option></select></label>
+<label>next point <input id="gk-pen-label" size="4"></label>
+<button id="gk-pen-clear" type="button">Clear my drawing</button>
+<button id="gk-pen-export" type="button">Export my drawing (SVG)</button></div>
 <p id="gk-status" role="status"></p></header>
 <main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
 <figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
