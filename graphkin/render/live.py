@@ -71,10 +71,14 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     try:
         eng = _Engine(mech, DEFAULT_TOL)
     except NotDecomposable as exc:
-        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc})",
-                         file=source) from None
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc}: "
+                         "Newton's method solves it)", file=source) from None
     if eng.method != "construction" or eng.pc is None:
-        raise InputError("no live page: the mechanism is not solved by a construction",
+        why = ("it has a rolling contact, whose roller turns with its travel: Newton's method "
+               "solves it, no ruler-and-compass step" if mech.rolling else
+               f"{eng.reason}: Newton's method solves it" if eng.reason else
+               "Newton's method solves it")
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({why})",
                          file=source)
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}

@@ -312,4 +312,4 @@ def test_the_command_writes_the_page_or_says_why_in_one_line(tmp_path, capsys):
                str(tmp_path / "w.html")])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and "ex3_9_rolling_wheel.toml" in err[0]
-    assert "not solved by a construction" in err[0]
+    assert "not solved by a construction" in err[0] and "rolling contact" in err[0]
