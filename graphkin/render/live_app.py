@@ -50,6 +50,23 @@ function gkCurvatureInputs(V, r) {
   const J = {}, w = r["\u03c9" + V.link];
   for (const lab of Object.keys(V.given)) {
     const g = V.given[lab];
+    if (g.body !== undefined) {
+      // a body point H = P + (Q - P) z of the link, or its velocity (acceleration) drawn
+      // from it: V_H = V_P + (V_Q - V_P) z (Mehmke: the images are similar to the link)
+      const P = r[g.body[0]], Q = r[g.body[1]], z = g.z;
+      if (!P || !Q || w === undefined) return null;
+      const H = [P[0] + (Q[0] - P[0]) * z[0] - (Q[1] - P[1]) * z[1],
+                 P[1] + (Q[0] - P[0]) * z[1] + (Q[1] - P[1]) * z[0]];
+      if (!g.atip && !g.vtip) { J[lab] = H; continue; }
+      const pre = g.vtip ? "v" : "a", k = g.vtip ? Math.abs(w) : w * w;
+      const p = r[pre + "(" + g.body[0] + ")"], q = r[pre + "(" + g.body[1] + ")"];
+      const o = r["o_" + pre];
+      if (!p || !q || !o) return null;
+      const ax = p[0] - o[0] + (q[0] - p[0]) * z[0] - (q[1] - p[1]) * z[1];
+      const ay = p[1] - o[1] + (q[0] - p[0]) * z[1] + (q[1] - p[1]) * z[0];
+      J[lab] = [H[0] + ax / k, H[1] + ay / k];
+      continue;
+    }
     const n = g.point !== undefined ? g.point : (g.vtip !== undefined ? g.vtip : g.atip);
     const p = r[n];
     if (!p || w === undefined) return null;
@@ -461,7 +478,7 @@ function drawCurvature(r, stale, refit) {
     el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
                      fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
                      "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});
-    label(g, "curvature", p, lab);
+    label(g, "curvature", p, lab.replace(" (four circles)", ""));
   }
 }
 

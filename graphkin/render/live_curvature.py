@@ -57,6 +57,43 @@ def _candidates(sol: Any, lid: str, points: list[str]) -> list[tuple[dict[str, A
     return out
 
 
+def _two_points(sol: Any, lid: str, points: list[str]) -> tuple[str, str] | None:
+    """Two points of the link the posture gives, far apart: the frame of its body points."""
+    mine = [n for n in points if n in sol.mechanism.links[lid].points]
+    best, far = None, 0.0
+    for i, p in enumerate(mine):
+        for q in mine[i + 1:]:
+            d = float(np.hypot(*(np.asarray(sol.position(q)) - np.asarray(sol.position(p)))))
+            if d > far:
+                best, far = (p, q), d
+    return best if far > 0.0 else None
+
+
+def _body_given(sol: Any, lid: str, pq: tuple[str, str], label: str, xy: np.ndarray,
+                given: dict[str, dict[str, Any]], size: float) -> dict[str, Any] | None:
+    """An auxiliary point of the link, or its acceleration (velocity) drawn from it.
+
+    Sec. 4.15 ("any point will do"): ``H = P + (Q - P) z`` with the complex
+    ratio ``z`` of the link, and by Mehmke's theorem ``A_H = A_P + (A_Q - A_P) z``
+    (the images are similar to the link).
+    """
+    p, q = (np.asarray(sol.position(n), dtype=float) for n in pq)
+    w = float(sol.links[lid].omega)
+    for pre, key, k in (("A_", "atip", w * w), ("V_", "vtip", abs(w))):
+        body = given.get(label[len(pre):]) if label.startswith(pre) else None
+        if body is not None and "z" in body and "pos" in body and k != 0.0:
+            z = complex(*body["z"])
+            get = sol.acceleration if key == "atip" else sol.velocity
+            ap, aq = (complex(*np.asarray(get(n), dtype=float)) for n in pq)
+            h = complex(*body["pos"]) + (ap + (aq - ap) * z) / k
+            if abs(h - complex(*xy)) <= 1e-9 * size:
+                return {"body": list(pq), "z": body["z"], key: True}
+            return None
+    d = complex(*(q - p))
+    z = complex(*(xy - p)) / d
+    return {"body": list(pq), "z": [z.real, z.imag], "pos": [float(xy[0]), float(xy[1])]}
+
+
 def curvature_data(mech: Mechanism, points: list[str],
                    made: set[str]) -> tuple[dict[str, Any], str] | None:
     """The curvature panel's data and the JavaScript of its construction, or None.
@@ -92,11 +129,14 @@ def curvature_data(mech: Mechanism, points: list[str],
         cands = _candidates(sol, lid, points)
         given: dict[str, dict[str, Any]] = {}
         ok: set[str] = set()
+        pq = _two_points(sol, lid, points)
         for s in cx.steps:
             if s.op == "point" and not s.inputs:
                 xy = np.asarray(s.params["xy"], dtype=float)
                 hit = next((g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size),
                            None)
+                if hit is None and pq is not None:
+                    hit = _body_given(sol, lid, pq, s.outputs[0], xy, given, size)
                 if hit is not None:
                     given[s.outputs[0]] = dict(hit, link=lid)
                     ok.add(s.outputs[0])

@@ -7,8 +7,10 @@ JavaScript numbers at a drive moved from the file's; the file edited as the
 page saves it is solved in Python, and :func:`curvature` (numpy: the
 construction recorded and replayed at the new posture) is the reference for
 every point, circle and line the page shows, to 1e-9 of its size: the
-velocity pole I, the inflection pole J and circle, the conjugates, Hain's
-G_N and G_T, Ball's point U, the centrode normal N and tangent T.
+velocity pole I, the inflection pole J and circle, Γ by the four circles of
+Fig. 4.33 (from auxiliary points of the link and their accelerations), the
+conjugates, Hain's G_N and G_T, Ball's point U, the centrode normal N and
+tangent T.
 """
 
 from __future__ import annotations
@@ -102,7 +104,8 @@ def test_example_3_1_coupler(tmp_path) -> None:
     mech = graphkin.load(path)
     data, js = live_data(mech, load_toml(path), path.name)
     assert data["curvature"]["link"] == "3"
-    assert {"I", "J", "inflection circle", "U"} <= set(data["curvature"]["labels"])
+    assert {"I", "J", "inflection circle", "U", "Γ (four circles)"} <= set(
+        data["curvature"]["labels"])
     for turn in (0.0, np.radians(10.0)):
         out = _page(data, js, data["drive"]["value"] + turn)
         r, v = out["r"], out["v"]
