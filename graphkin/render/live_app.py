@@ -82,7 +82,14 @@ function gkCurvatureInputs(V, r) {
 function gkCurvature(V, r) {
   if (!V || !r) return null;
   const J = gkCurvatureInputs(V, r);
-  return J === null ? null : curvature(J, V.K);
+  if (J === null) return null;
+  // the Bresse diameter's ratio ω²/α of this posture (Eq. 4.48)
+  const K = V.K.slice(), w = r["\u03c9" + V.link], a = r["\u03b1" + V.link];
+  for (const k of V.ratios) {
+    K[k] = w * w / a;
+    if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
+  }
+  return curvature(J, K);
 }
 // a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
 // graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
@@ -421,7 +428,10 @@ function drawCurvature(r, stale, refit) {
   svg.textContent = "";
   defs(svg);
   const cap = svg.parentNode.querySelector("figcaption");
-  if (cap) cap.textContent = "Curvature of the motion " + V.link + "/1 (inflection circle)";
+  if (cap) {
+    cap.textContent = "Curvature of " + V.link + "/1: inflection circle" +
+      (V.labels.indexOf("Bresse circle") >= 0 ? ", Bresse circle (dashed)" : "");
+  }
   if (!curv) {
     el(svg, "text", {x: 12, y: 24, "font-size": "12", fill: "#c62828"},
        "No clean construction at this posture (\u03c9" + V.link + " = 0 or a degenerate case).");
@@ -441,8 +451,8 @@ function drawCurvature(r, stale, refit) {
     size = Math.hypot(x1 - x0, y1 - y0) || 1;
   }
   const near = (p) => p && pts.length && Math.hypot(p[0] - pts[0][0], p[1] - pts[0][1]) < 3 * size;
-  if (ic && ic[2] < 3 * size) {
-    pts.push([ic[0] - ic[2], ic[1] - ic[2]], [ic[0] + ic[2], ic[1] + ic[2]]);
+  for (const c of [ic, curv["Bresse circle"]]) {
+    if (c && c[2] < 3 * size) pts.push([c[0] - c[2], c[1] - c[2]], [c[0] + c[2], c[1] + c[2]]);
   }
   for (const lab of V.labels) {
     if (V.kinds[lab] === "point" && near(curv[lab])) pts.push(curv[lab]);
@@ -457,6 +467,13 @@ function drawCurvature(r, stale, refit) {
                      r: ic[2] * views.curvature.s, fill: "none",
                      stroke: ink("result-line", "color"), "stroke-width": "1.4",
                      class: "gk-inflection-circle"});
+  }
+  const bc = curv["Bresse circle"];
+  if (bc) {  // drawn however large (the panel clips it), fitted only when near
+    el(g, "circle", {cx: X("curvature", bc), cy: Y("curvature", bc),
+                     r: bc[2] * views.curvature.s, fill: "none",
+                     stroke: ink("aux-line", "color"), "stroke-width": "1.2",
+                     "stroke-dasharray": "6 3", class: "gk-bresse-circle"});
   }
   const I = curv.I, Jp = curv.J;
   if (I && Jp) {
@@ -475,6 +492,7 @@ function drawCurvature(r, stale, refit) {
   for (const lab of V.labels) {
     const p = curv[lab];
     if (V.kinds[lab] !== "point" || !p || !near(p)) continue;
+    if (lab === "\u0393 (four circles)" && curv["\u0393"]) continue;  // the same point
     el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
                      fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
                      "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});

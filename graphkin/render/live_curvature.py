@@ -40,7 +40,28 @@ from graphkin.tolerance import DEFAULT_TOL
 __all__ = ["curvature_data"]
 
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
+# (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
 _FIXED_BY_RATES = ("similar", "euler_savary_inflection")
+
+
+def _bresse(step: Any, st: Any) -> str | None:
+    """A ``similar`` step on I, J the page can redo: ``"turn"``, ``"ratio"`` or None.
+
+    The curvature construction lays off along the centrode tangent from I
+    ``(J - I)`` turned 90°, times 1 (the pole velocity's direction) or times
+    ``ω²/α`` (the Bresse diameter, Eq. 4.48: ``local_p = (0, ω²/α)``); the page
+    gives that ratio from the posture's ω and α on every move.
+    """
+    la, lb, lp = (tuple(float(v) for v in step.params[k])
+                  for k in ("local_a", "local_b", "local_p"))
+    if la != (0.0, 0.0) or lb != (1.0, 0.0) or lp[0] != 0.0:
+        return None
+    if lp[1] == 1.0:
+        return "turn"
+    w, a = float(st.omega), float(st.alpha)
+    if a != 0.0 and abs(lp[1] - w * w / a) <= 1e-9 * abs(lp[1]):
+        return "ratio"
+    return None
 
 
 def _candidates(sol: Any, lid: str, points: list[str]) -> list[tuple[dict[str, Any], np.ndarray]]:
@@ -122,13 +143,15 @@ def curvature_data(mech: Mechanism, points: list[str],
     except GraphkinError:
         return None
     size = 1.0 + float(mech.scale)
-    best: tuple[int, str, Any, dict[str, dict[str, Any]], list[str], set[str]] | None = None
+    best: tuple[int, str, Any, dict[str, dict[str, Any]], list[str], set[str],
+                list[str]] | None = None
     for lid, cx in ccs.items():
         if lid == FRAME or f"ω{lid}" not in made:
             continue
         cands = _candidates(sol, lid, points)
         given: dict[str, dict[str, Any]] = {}
         ok: set[str] = set()
+        ratios: list[str] = []
         pq = _two_points(sol, lid, points)
         for s in cx.steps:
             if s.op == "point" and not s.inputs:
@@ -140,6 +163,12 @@ def curvature_data(mech: Mechanism, points: list[str],
                 if hit is not None:
                     given[s.outputs[0]] = dict(hit, link=lid)
                     ok.add(s.outputs[0])
+            elif s.op == "similar" and all(i in ok for i in s.inputs):
+                kind = _bresse(s, sol.links[lid])
+                if kind is not None:
+                    ok.update(s.outputs)
+                    if kind == "ratio":
+                        ratios.append(s.outputs[0])
             elif (s.op in TEMPLATES and s.op not in _FIXED_BY_RATES and s.op != "point"
                   and all(i in ok for i in s.inputs)):
                 ok.update(s.outputs)
@@ -148,10 +177,10 @@ def curvature_data(mech: Mechanism, points: list[str],
         if "J" not in results and "inflection circle" not in results:
             continue
         if best is None or len(results) > best[0]:
-            best = (len(results), lid, cx, given, results, ok)
+            best = (len(results), lid, cx, given, results, ok, ratios)
     if best is None:
         return None
-    _, lid, cx, given, results, ok = best
+    _, lid, cx, given, results, ok, ratios = best
     extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
     requests = results + [lab for lab in extra if lab in ok and lab not in results]
     steps = [s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)]
@@ -161,5 +190,8 @@ def curvature_data(mech: Mechanism, points: list[str],
     except Unsupported:
         return None
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}
+    names = [n for n, _ in fn.slots]
     return ({"link": lid, "given": given, "labels": list(requests), "results": results,
-             "kinds": {lab: kinds[lab] for lab in requests}, "K": fn.values}, fn.source)
+             "kinds": {lab: kinds[lab] for lab in requests}, "K": fn.values,
+             "ratios": [names.index(f"{lab}.1") for lab in ratios if f"{lab}.1" in names]},
+            fn.source)

@@ -7,8 +7,9 @@ JavaScript numbers at a drive moved from the file's; the file edited as the
 page saves it is solved in Python, and :func:`curvature` (numpy: the
 construction recorded and replayed at the new posture) is the reference for
 every point, circle and line the page shows, to 1e-9 of its size: the
-velocity pole I, the inflection pole J and circle, Γ by the four circles of
-Fig. 4.33 (from auxiliary points of the link and their accelerations), the
+velocity pole I, the inflection pole J and circle, the Bresse circle
+(its ratio ω²/α given by the page from the posture) and Γ on it, Γ by the
+four circles of Fig. 4.33 (from auxiliary points of the link and their accelerations), the
 conjugates, Hain's G_N and G_T, Ball's point U, the centrode normal N and
 tangent T.
 """
@@ -104,8 +105,8 @@ def test_example_3_1_coupler(tmp_path) -> None:
     mech = graphkin.load(path)
     data, js = live_data(mech, load_toml(path), path.name)
     assert data["curvature"]["link"] == "3"
-    assert {"I", "J", "inflection circle", "U", "Γ (four circles)"} <= set(
-        data["curvature"]["labels"])
+    assert {"I", "J", "inflection circle", "U", "Γ (four circles)", "Bresse circle",
+            "Γ"} <= set(data["curvature"]["labels"])
     for turn in (0.0, np.radians(10.0)):
         out = _page(data, js, data["drive"]["value"] + turn)
         r, v = out["r"], out["v"]
@@ -121,5 +122,7 @@ def test_example_3_1_coupler(tmp_path) -> None:
         j = np.asarray(v["J"], dtype=float)
         np.testing.assert_allclose((i + j) / 2, circ[:2], rtol=0, atol=1e-9 * 100)
         assert abs(np.hypot(*(j - i)) / 2 - circ[2]) < 1e-9 * 100
+        # Γ where the Bresse circle meets the inflection circle is Γ by the four circles
+        np.testing.assert_allclose(v["Γ"], v["Γ (four circles)"], rtol=0, atol=1e-9 * 100)
         sol = from_dict(edited(data, data["drive"]["value"] + turn, r), source="e").solve()
         _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
