@@ -83,7 +83,7 @@ FAMILIES = {"fourbar": fourbars, "slider-crank": slider_cranks,
 def test_page_centers_equal_graphkins_after_a_drag(family: str) -> None:
     # every family of tests/strategies.py, each with its own examples
 
-    @examples(8)
+    @examples(6)
     @given(rm=FAMILIES[family](), offset=st.floats(-0.08, 0.08))
     def check(rm: RandomMechanism, offset: float) -> None:
         _check(rm, offset)
