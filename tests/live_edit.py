@@ -24,3 +24,30 @@ def edited(data: dict[str, Any], drive: float, r: dict[str, Any]) -> dict[str, A
         for n in data["assembly"]:
             f["assembly"][n] = [r[n][0], r[n][1]]
     return f
+
+
+def same_center(got: Any, ref: Any, lab: str, atol: float = 1e-8) -> None:
+    """Two points of the projective plane are the same: unit vectors equal up to sign."""
+    import numpy as np
+
+    g = np.asarray(got, dtype=float)
+    r = np.asarray(ref, dtype=float)
+    g, r = g / np.linalg.norm(g), r / np.linalg.norm(r)
+    if float(np.dot(g, r)) < 0:
+        g = -g
+    np.testing.assert_allclose(g, r, rtol=0, atol=atol, err_msg=lab)
+
+
+def same_curvature(data: dict[str, Any], got: dict[str, Any], ref: dict[str, Any],
+                   size: float, rel: float = 1e-9) -> None:
+    """The page's curvature values against graphkin's (points Cartesian, circles, lines)."""
+    import numpy as np
+
+    v = data["curvature"]
+    for lab in v["labels"]:
+        g = np.asarray(got[lab], dtype=float)
+        r = np.asarray(ref[lab], dtype=float)
+        if v["kinds"][lab] == "point":
+            r = r[:2] / r[2]
+        scale = max(size, float(np.abs(r).max(initial=0.0)))
+        np.testing.assert_allclose(g, r, rtol=0, atol=rel * scale, err_msg=lab)
