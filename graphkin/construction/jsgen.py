@@ -206,7 +206,8 @@ class JSGen(Gen):
 
 def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
                 tol: Tolerance | None = None, name: str = "construction",
-                given: Iterable[str] = (), homogeneous: bool | None = None) -> JSFunction:
+                given: Iterable[str] = (), homogeneous: bool | None = None,
+                ideal: Iterable[str] = ()) -> JSFunction:
     """Write the steps out as one JavaScript function of the inputs and the dimensions.
 
     Parameters
@@ -228,6 +229,10 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
         function works in Cartesian coordinates (the curvature constructions
         of a posture, Secs. 4.13-4.17).  Default: homogeneous when any point
         is given.
+    ideal : iterable of str
+        Given points read as homogeneous ``[x, y, w]`` even in Cartesian
+        coordinates (a center of curvature at infinity, Sec. 4.13); only a
+        ``join`` may read them (it then takes its homogeneous form).
 
     Returns
     -------
@@ -244,6 +249,7 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
     tol = tol or DEFAULT_TOL
     requests = tuple(dict.fromkeys(requests))
     given = set(given)
+    ideal = set(ideal)
     homogeneous = bool(given) if homogeneous is None else homogeneous
     gen = JSGen(tol, homogeneous=homogeneous)
     inputs: list[str] = []
@@ -255,7 +261,7 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
             lab = step.outputs[0]
             p = gen.tmp("in")
             gen.lines.append(f"  const {p} = I[{js_string(lab)}];")
-            if homogeneous:
+            if homogeneous or lab in ideal:
                 gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1]) && _fin({p}[2])")
                 gen.put_rows(lab, "point", f"{p}[0]", f"{p}[1]", f"{p}[2]")
             else:

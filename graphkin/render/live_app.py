@@ -52,6 +52,14 @@ function gkCurvatureInputs(V, r) {
   const J = {}, w = r["\u03c9" + V.link];
   for (const lab of Object.keys(V.given)) {
     const g = V.given[lab];
+    if (g.slider !== undefined) {
+      // a center of curvature at infinity, normal to a slider's line (Sec. 4.13)
+      let t = r["\u03b8" + g.slider];
+      if (t === undefined) t = g.slider === "1" ? g.frameAngle : NaN;
+      t += g.angle;
+      J[lab] = [-Math.sin(t) * g.sign, Math.cos(t) * g.sign, 0];
+      continue;
+    }
     if (g.body !== undefined) {
       // a body point H = P + (Q - P) z of the link, or its velocity (acceleration) drawn
       // from it: V_H = V_P + (V_Q - V_P) z (Mehmke: the images are similar to the link)

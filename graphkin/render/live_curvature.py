@@ -78,6 +78,25 @@ def _candidates(sol: Any, lid: str, points: list[str]) -> list[tuple[dict[str, A
     return out
 
 
+def _slider_normal(sol: Any, direction: Any) -> dict[str, Any] | None:
+    """A center of curvature at infinity: normal to a slider's line (Sec. 4.13), or None.
+
+    A point held on a straight line of another link moves, relative to it,
+    on that line: its center of curvature is the point at infinity of the
+    line's normal ``±(-sin θ, cos θ)``, ``θ`` the line's angle (the angle of
+    the link it is on plus the line's own).
+    """
+    d = np.asarray(direction, dtype=float)
+    for sl in sol.mechanism.sliders:
+        t = float(np.asarray(sol.links[sl.on].angle, dtype=float)) + float(sl.direction_angle)
+        n = np.array([-np.sin(t), np.cos(t)])
+        for sign in (1.0, -1.0):
+            if float(np.hypot(*(d - sign * n))) <= 1e-9:
+                return {"slider": sl.on, "angle": float(sl.direction_angle), "sign": sign,
+                        "frameAngle": float(np.asarray(sol.links[FRAME].angle, dtype=float))}
+    return None
+
+
 def _two_points(sol: Any, lid: str, points: list[str]) -> tuple[str, str] | None:
     """Two points of the link the posture gives, far apart: the frame of its body points."""
     mine = [n for n in points if n in sol.mechanism.links[lid].points]
@@ -163,6 +182,11 @@ def curvature_data(mech: Mechanism, points: list[str],
                 if hit is not None:
                     given[s.outputs[0]] = dict(hit, link=lid)
                     ok.add(s.outputs[0])
+            elif s.op == "ideal_point":
+                hit = _slider_normal(sol, s.params["direction"])
+                if hit is not None:
+                    given[s.outputs[0]] = dict(hit, link=lid)
+                    ok.add(s.outputs[0])
             elif s.op == "similar" and all(i in ok for i in s.inputs):
                 kind = _bresse(s, sol.links[lid])
                 if kind is not None:
@@ -186,7 +210,8 @@ def curvature_data(mech: Mechanism, points: list[str],
     steps = [s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)]
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
-                         given=given, homogeneous=False)
+                         given=given, homogeneous=False,
+                         ideal=[lab for lab, g in given.items() if "slider" in g])
     except Unsupported:
         return None
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}

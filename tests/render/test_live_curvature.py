@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
 from live_edit import edited
 from spec_data import EXAMPLES
-from strategies import RandomMechanism, examples, fourbars, six_bars
+from strategies import RandomMechanism, examples, fourbars, six_bars, slider_cranks
 
 import graphkin
 from graphkin.errors import GraphkinError, InputError
@@ -91,10 +91,28 @@ def _check(rm: RandomMechanism, offset: float) -> bool:
 
 
 @examples(25)
-@given(rm=st.one_of(fourbars(), six_bars()), offset=st.floats(-0.1, 0.1))
+@given(rm=st.one_of(fourbars(), six_bars(), slider_cranks()), offset=st.floats(-0.1, 0.1))
 def test_page_curvature_equals_graphkins_after_a_drag(rm: RandomMechanism,
                                                       offset: float) -> None:
     _check(rm, offset)
+
+
+def test_example_3_2_coupler_with_a_center_of_curvature_at_infinity() -> None:
+    # Example 3.2 (slider-crank): C slides on the frame's line y = -20, so its center of
+    # curvature C' is at infinity normal to that line (Sec. 4.13); the coupler's I is I13,
+    # the meet of AB and the vertical through C (Sec. 3.15)
+    path = EXAMPLES / "ex3_2_slider_driven.toml"
+    mech = graphkin.load(path)
+    data, js = live_data(mech, load_toml(path), path.name)
+    assert data["curvature"]["given"]["C'"]["slider"] == "1"
+    out = _page(data, js, data["drive"]["value"])
+    r, v = out["r"], out["v"]
+    a, b, c = (np.asarray(r[n], dtype=float) for n in ("A", "B", "C"))
+    i = np.asarray(v["I"], dtype=float)
+    assert abs(i[0] - c[0]) < 1e-9 * 200  # on the vertical through C
+    assert abs((b - a)[0] * (i - a)[1] - (b - a)[1] * (i - a)[0]) < 1e-9 * 200 ** 2
+    sol = mech.solve()
+    _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
 
 
 def test_example_3_1_coupler(tmp_path) -> None:

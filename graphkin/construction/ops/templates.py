@@ -199,7 +199,9 @@ def _join_homogeneous(gen: Gen, step: Step) -> None:
 @template("join")
 def _join(gen: Gen, step: Step) -> None:
     p, q = step.inputs
-    if getattr(gen, "homogeneous", False):
+    # homogeneous rows of a point (a point at infinity) exist only in the JavaScript writer
+    if getattr(gen, "homogeneous", False) or any(
+            gen.val(i).form == "rows" and gen.val(i).kind == "point" for i in (p, q)):
         _join_homogeneous(gen, step)
         return
     px, py = gen.pt(p)
