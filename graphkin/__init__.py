@@ -39,5 +39,16 @@ __all__ = [
     "load", "loads", "from_dict", "solve", "Mechanism", "Solution", "LinkState",
     "Construction", "Step", "Tolerance", "DEFAULT_TOL", "GraphkinError", "InputError",
     "ConstructionError", "NoIntersectionError", "ParallelDirectionsError", "DegenerateError",
-    "IdealPointError", "AssemblyError", "batch", "Batch", "__version__",
+    "IdealPointError", "AssemblyError", "batch", "Batch", "__version__", "live",
 ]
+
+
+def live(mechanism: Mechanism | str) -> object:
+    """The live page of a mechanism as a notebook widget (anywidget; ``graphkin[jupyter]``).
+
+    Drag the crank or a pivot in the cell's output; ``widget.mechanism`` is
+    the edited mechanism.  See :func:`graphkin.render.live_widget.live`.
+    """
+    from graphkin.render.live_widget import live as _live
+
+    return _live(mechanism)

@@ -16,7 +16,7 @@ import json
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import assume, given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
 from strategies import RandomMechanism, examples, mechanisms
@@ -195,3 +195,94 @@ def test_labels_are_escaped_for_a_script() -> None:
     s = js_string('</script><!--"\u2028')
     assert "<" not in s and ">" not in s and "\u2028" not in s
     assert run_js(f"const RESULT = {s};") == '</script><!--"\u2028'
+
+
+@examples(15)
+@given(xy=st.lists(st.floats(-10.0, 10.0), min_size=8, max_size=8))
+def test_the_curvature_templates_equal_the_general_functions(xy: list[float]) -> None:
+    # the JavaScript-only templates of the curvature constructions (Secs. 4.13-4.17) against
+    # the numpy operations (Construction.replay): the circle through three points, the second
+    # meet of two circles through a point, of a line through a point of a circle, and the
+    # fourth vertex of a parallelogram
+    from graphkin.construction import Construction
+
+    cx = Construction()
+    names = ["P", "Q", "R", "S"]
+    for n in names:
+        cx.add("input", (), (f"{n}x",), name=f"{n}x")
+        cx.add("input", (), (f"{n}y",), name=f"{n}y")
+        cx.add("point_xy", (f"{n}x", f"{n}y"), (n,))
+    cx.add("circumcircle", ("P", "Q", "R"), ("c1",))
+    cx.add("circumcircle", ("P", "R", "S"), ("c2",))
+    cx.add("other_intersection", ("c1", "c2", "P"), ("X",))
+    cx.add("join", ("P", "S"), ("PS",))
+    cx.add("second_on_circle", ("PS", "c1", "P"), ("Y",))
+    cx.add("parallelogram", ("P", "Q", "S"), ("G",))
+    inputs = {f"{n}{a}": xy[2 * k + (a == "y")] for k, n in enumerate(names) for a in "xy"}
+    # a well-conditioned figure (points apart, triangles not flat, circles' centers apart):
+    # otherwise both evaluations are right only to the problem's own conditioning
+    pts = np.reshape(xy, (4, 2))
+
+    def area(i: int, j: int, k: int) -> float:
+        u, w = pts[j] - pts[i], pts[k] - pts[i]
+        return abs(float(u[0] * w[1] - u[1] * w[0]))
+
+    assume(min(float(np.hypot(*(pts[i] - pts[j]))) for i in range(4) for j in range(i)) > 1.0)
+    assume(area(0, 1, 2) > 2.0 and area(0, 2, 3) > 2.0)
+    ref = cx.replay(inputs, strict=False)
+    if not bool(np.all(ref.valid)):
+        return
+    c1, c2 = (np.asarray(ref.values[c], dtype=float) for c in ("c1", "c2"))
+    assume(float(np.hypot(*(c1[:2] - c2[:2]))) > 1.0 and max(c1[2], c2[2]) < 100.0)
+    fn = generate_js(cx.steps, requests=["c1", "c2", "X", "Y", "G"])
+    got = _run(fn, [inputs])[0]
+    if got is None:
+        return
+    for lab in fn.requests:
+        r = np.asarray(ref.values[lab], dtype=float)
+        if lab in ("X", "Y", "G"):
+            r = r[:2] / r[2]
+        scale = 1.0 + float(np.abs(r).max())
+        np.testing.assert_allclose(got[lab], r, rtol=0, atol=1e-9 * scale, err_msg=lab)
+
+
+@examples(15)
+@given(xy=st.lists(st.floats(-10.0, 10.0), min_size=6, max_size=6),
+       t=st.floats(-3.0, 3.0))
+def test_the_centers_templates_work_at_infinity(xy: list[float], t: float) -> None:
+    # Kennedy's lines through a center at infinity (a slider's, [-sin t, cos t, 0]) and the
+    # meet of parallel lines, in homogeneous coordinates, against the numpy replay: the same
+    # points of the projective plane (unit vectors, equal up to sign)
+    from graphkin.construction import Construction
+
+    cx = Construction()
+    cx.add("point", (), ("A",), xy=(xy[0], xy[1]))
+    cx.add("point", (), ("B",), xy=(xy[2], xy[3]))
+    cx.add("point", (), ("C",), xy=(xy[4], xy[5]))
+    cx.add("ideal_point", (), ("U",), direction=(-np.sin(t), np.cos(t)))
+    cx.add("join", ("A", "U"), ("AU",))
+    cx.add("join", ("B", "U"), ("BU",))     # parallel to AU: they meet at U
+    cx.add("join", ("B", "C"), ("BC",))
+    cx.add("meet", ("AU", "BC"), ("X",))
+    cx.add("meet", ("AU", "BU"), ("Y",))
+    cx.add("at_infinity_on", ("BC",), ("Z",))
+    ref = cx.replay({}, strict=False)
+    fn = generate_js(cx.steps, requests=["X", "Y", "Z"], given=["A", "B", "C", "U"])
+    src = (RUNTIME + fn.source + "\nconst RESULT = " + fn.name + "(" + json.dumps(
+        {"A": [xy[0], xy[1], 1], "B": [xy[2], xy[3], 1], "C": [xy[4], xy[5], 1],
+         "U": [-np.sin(t), np.cos(t), 0]}) + ", " + json.dumps(fn.values) + ");")
+    got = run_js(src)
+    if got is None:  # two given points coincide (or the line BC is along U): no line
+        return
+    for lab in ("X", "Y", "Z"):
+        g = np.asarray(got[lab], dtype=float)
+        r = np.asarray(ref.values[lab], dtype=float)
+        if not np.all(np.isfinite(r)) or np.linalg.norm(r) == 0:
+            continue
+        g, r = g / np.linalg.norm(g), r / np.linalg.norm(r)
+        if float(np.dot(g, r)) < 0:
+            g = -g
+        np.testing.assert_allclose(g, r, rtol=0, atol=1e-9, err_msg=lab)
+    # Y is the point at infinity U itself
+    y = np.asarray(got["Y"], dtype=float)
+    assert abs(y[2]) <= 1e-12 * np.linalg.norm(y)

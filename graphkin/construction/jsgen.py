@@ -133,8 +133,10 @@ class JSFunction:
 class JSGen(Gen):
     """The generator of :mod:`graphkin.construction.codegen`, writing JavaScript."""
 
-    def __init__(self, tol: Tolerance) -> None:
+    def __init__(self, tol: Tolerance, homogeneous: bool = False) -> None:
         super().__init__(tol)
+        #: points as homogeneous rows ``(x, y, w)``, at infinity too (the instant centers)
+        self.homogeneous = homogeneous
         self.slots: list[tuple[str, float]] = []
         self.owner = "K"
         self.count = 0
@@ -203,7 +205,9 @@ class JSGen(Gen):
 
 
 def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
-                tol: Tolerance | None = None, name: str = "construction") -> JSFunction:
+                tol: Tolerance | None = None, name: str = "construction",
+                given: Iterable[str] = (), homogeneous: bool | None = None,
+                ideal: Iterable[str] = ()) -> JSFunction:
     """Write the steps out as one JavaScript function of the inputs and the dimensions.
 
     Parameters
@@ -214,6 +218,21 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
         The labels the function returns.
     tol : Tolerance, optional
     name : str
+    given : iterable of str
+        Points read from the inputs as homogeneous ``[x, y, w]`` (finite or at
+        infinity) instead of computed by their steps: the primary instant
+        centers, taken from the posture (Sec. 3.13).  With any, the function
+        works in homogeneous coordinates throughout (``join``, ``meet`` of
+        parallel lines at infinity) and returns every point as ``[x, y, w]``.
+    homogeneous : bool, optional
+        False: the given points are finite, read as ``[x, y]`` and the
+        function works in Cartesian coordinates (the curvature constructions
+        of a posture, Secs. 4.13-4.17).  Default: homogeneous when any point
+        is given.
+    ideal : iterable of str
+        Given points read as homogeneous ``[x, y, w]`` even in Cartesian
+        coordinates (a center of curvature at infinity, Sec. 4.13); only a
+        ``join`` may read them (it then takes its homogeneous form).
 
     Returns
     -------
@@ -229,11 +248,26 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
 
     tol = tol or DEFAULT_TOL
     requests = tuple(dict.fromkeys(requests))
-    gen = JSGen(tol)
+    given = set(given)
+    ideal = set(ideal)
+    homogeneous = bool(given) if homogeneous is None else homogeneous
+    gen = JSGen(tol, homogeneous=homogeneous)
     inputs: list[str] = []
     need = _live(steps, set(requests))
     for step, needed in zip(steps, need):
         if not needed:
+            continue
+        if step.outputs and step.outputs[0] in given and not step.inputs:
+            lab = step.outputs[0]
+            p = gen.tmp("in")
+            gen.lines.append(f"  const {p} = I[{js_string(lab)}];")
+            if homogeneous or lab in ideal:
+                gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1]) && _fin({p}[2])")
+                gen.put_rows(lab, "point", f"{p}[0]", f"{p}[1]", f"{p}[2]")
+            else:
+                gen.bail_unless(f"{p} && _fin({p}[0]) && _fin({p}[1])")
+                gen.put_point(lab, f"{p}[0]", f"{p}[1]")
+            inputs.append(lab)
             continue
         if step.op == "input":
             lab = step.outputs[0]

@@ -24,15 +24,17 @@ import math
 import re
 from typing import Any
 
+import numpy as np
+
 from graphkin.construction.codegen import Unsupported
 from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
-from graphkin.render.live_app import APP_JS, PAGE_CSS
+from graphkin.render.live_app import APP_JS, LIVE_LIB, PAGE_CSS
 from graphkin.render.style import STYLES
 from graphkin.tolerance import DEFAULT_TOL
 
-__all__ = ["live_data", "live_html", "script_json"]
+__all__ = ["live_body", "live_data", "live_html", "script_json"]
 
 _BRANCH_OPS = ("intersect_circles", "intersect_line_circle", "tangent_foot")
 
@@ -69,10 +71,14 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     try:
         eng = _Engine(mech, DEFAULT_TOL)
     except NotDecomposable as exc:
-        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc})",
-                         file=source) from None
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc}: "
+                         "Newton's method solves it)", file=source) from None
     if eng.method != "construction" or eng.pc is None:
-        raise InputError("no live page: the mechanism is not solved by a construction",
+        why = ("it has a rolling contact, whose roller turns with its travel: Newton's method "
+               "solves it, no ruler-and-compass step" if mech.rolling else
+               f"{eng.reason}: Newton's method solves it" if eng.reason else
+               "Newton's method solves it")
+        raise InputError(f"no live page: the mechanism is not solved by a construction ({why})",
                          file=source)
     follower = next((x for x in mech.drives if x.law is not None), None)
     if follower is not None:  # the page moves one input; holding the other would be wrong
@@ -151,53 +157,73 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     if centers is not None:
         data["centers"], cjs = centers
         js += cjs
+    if rates:
+        from graphkin.render.live_curvature import curvature_data
+
+        curv = curvature_data(mech, points, made)
+        if curv is not None:
+            data["curvature"], vjs = curv
+            js += vjs
     return data, js
 
 
 def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
-    """The instant centers' construction (Sec. 3.13-3.15) as a second function, of the pins.
+    """The instant centers' construction (Secs. 3.13-3.15) as a second function, of the posture.
 
-    Aronhold-Kennedy's lines are drawn through the primary centers, which are
-    the pins (I23 at B ...): the function takes their positions from the
-    posture (inputs ``I23.x``, ``I23.y``) and returns every center, or
-    ``null`` when two of the lines are parallel (a center at infinity).  A
-    mechanism with a primary center that is not a pin (a slider's, at
-    infinity) gets no centers on the page.
+    The Aronhold-Kennedy steps graphkin records for the file's posture
+    (:func:`~graphkin.kinematics.instant_centers.instant_centers`: joins of
+    two known centers, meets of two lines of centers) are written out in
+    homogeneous coordinates, their primary centers taken from the posture:
+    a pin is its position ``[x, y, 1]`` (I23 at B ...), a slider's center
+    is the point at infinity normal to its line, ``[-sin θ, cos θ, 0]`` with
+    ``θ`` the angle of the link it slides on plus the line's own angle
+    (Eq. 3.21).  A center where two lines of centers are parallel is returned
+    at infinity (``w = 0`` but for round-off), as a direction.  A mechanism
+    whose centers need more than that (a rolling contact, a cam, a center
+    found from velocities) gets no centers on the page (None).
     """
     from itertools import combinations
 
-    from graphkin.construction import Construction
     from graphkin.kinematics.instant_centers import center_label, instant_centers
+    from graphkin.kinematics.instant_centers.primary import FAR_AS_INFINITY
 
     try:
         sol = mech.solve()
         ic = instant_centers(sol)
     except GraphkinError:  # the centers cannot be found here: the page has the rest
         return None
-    pin_of = {center_label(i, j): p.name for p in mech.pins
-              for i, j in combinations(p.links, 2)}
-    cx = Construction()
-    inputs: dict[str, str] = {}
+    prim: dict[str, dict[str, Any]] = {}
+    for p in mech.pins:
+        for i, j in combinations(p.links, 2):
+            prim.setdefault(center_label(i, j), {"pin": p.name})
+    for sl in mech.sliders:
+        prim.setdefault(center_label(sl.link, sl.on), {"slider": sl.on,
+                                                       "angle": float(sl.direction_angle)})
+    given: dict[str, dict[str, Any]] = {}
     for st in ic.construction.steps:
-        if st.op == "point" and st.outputs[0] in pin_of:
-            lab = st.outputs[0]
-            cx.add("input", (), (f"{lab}.x",), name=f"{lab}.x")
-            cx.add("input", (), (f"{lab}.y",), name=f"{lab}.y")
-            cx.add("point_xy", (f"{lab}.x", f"{lab}.y"), (lab,))
-            inputs[lab] = pin_of[lab]
-        elif st.op in ("join", "meet"):
-            cx.add(st.op, st.inputs, st.outputs, **st.params)
-        else:
+        lab = st.outputs[0] if st.outputs else ""
+        if st.op in ("point", "ideal_point") and lab in prim:
+            given[lab] = prim[lab]
+        elif st.op not in ("join", "meet", "at_infinity_on", "same_point", "copy_point"):
             return None
-    labels = [s.outputs[0] for s in cx.steps if s.op in ("point_xy", "meet")]
+    labels = [s.outputs[0] for s in ic.construction.steps
+              if s.op not in ("join",) and s.outputs]
+    lines = [s.outputs[0] for s in ic.construction.steps if s.op == "join"]
     try:
-        fn = generate_js(cx.steps, requests=labels, tol=DEFAULT_TOL, name="centers")
+        fn = generate_js(ic.construction.steps, requests=labels + lines, tol=DEFAULT_TOL,
+                         name="centers", given=given)
     except Unsupported:
         return None
-    joins = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "join"]
-    meets = [[s.outputs[0], *s.inputs] for s in cx.steps if s.op == "meet"]
-    return ({"pins": inputs, "labels": labels, "K": fn.values, "joins": joins,
-             "meets": meets}, fn.source)
+    frame = list(mech.links[FRAME].points.values()) or [(0.0, 0.0)]
+    origin = [sum(float(q[0]) for q in frame) / len(frame),
+              sum(float(q[1]) for q in frame) / len(frame)]
+    joins = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "join"]
+    meets = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "meet"]
+    return ({"given": given, "labels": labels, "lines": lines, "K": fn.values,
+             "joins": joins, "meets": meets, "links": list(ic.links),
+             "pairs": {c.label: list(c.pair) for c in ic.centers.values()},
+             "frameAngle": float(np.asarray(sol.links[FRAME].angle, dtype=float)),
+             "far": FAR_AS_INFINITY * mech.scale, "origin": origin}, fn.source)
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")
@@ -261,6 +287,37 @@ def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
     return out
 
 
+def live_body(title: str) -> str:
+    """The page's markup inside ``<body>`` (the page and the notebook widget share it)."""
+    t = html.escape(title)
+    return f"""<header><h1>{t}</h1>
+<p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
+the recorded construction, re-solved in the page.</p>
+<div class="controls"><label>drive <input id="gk-drive" type="range"></label>
+<output id="gk-drive-val"></output>
+<label>branch at <select id="gk-branch"></select></label>
+<button id="gk-switch" type="button">Switch the branch</button>
+<button id="gk-undo" type="button">Undo</button>
+<button id="gk-reset" type="button">Reset</button>
+<button id="gk-save" type="button">Save the edited mechanism</button></div>
+<div class="controls" id="gk-pen-bar"><button id="gk-pen" type="button" aria-pressed="false">Pen:
+draw my velocity polygon</button>
+<label>polygon <select id="gk-pen-panel"><option value="velocity">velocity</option>
+<option value="acceleration">acceleration</option></select></label>
+<label>next point <input id="gk-pen-label" size="4"></label>
+<button id="gk-pen-clear" type="button">Clear my drawing</button>
+<button id="gk-pen-export" type="button">Export my drawing (SVG)</button></div>
+<p id="gk-status" role="status"></p></header>
+<main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
+<figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
+<figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
+<figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
+<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
+</main>
+<table id="gk-table"></table>
+"""
+
+
 def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
     """The whole page, self-contained (one file, no network)."""
     data, js = live_data(mech, file_data, source)
@@ -271,27 +328,14 @@ def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
 <title>{title} (live)</title>
 <style>{PAGE_CSS}</style></head>
 <body>
-<header><h1>{title}</h1>
-<p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
-the recorded construction, re-solved in the page.</p>
-<div class="controls"><label>drive <input id="gk-drive" type="range"></label>
-<output id="gk-drive-val"></output>
-<label>branch at <select id="gk-branch"></select></label>
-<button id="gk-switch" type="button">Switch the branch</button>
-<button id="gk-undo" type="button">Undo</button>
-<button id="gk-reset" type="button">Reset</button>
-<button id="gk-save" type="button">Save the edited mechanism</button></div>
-<p id="gk-status" role="status"></p></header>
-<main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
-<figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
-<figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
-</main>
-<table id="gk-table"></table>
-<script id="gk-data" type="application/json">{script_json(data)}</script>
+{live_body(str(data["title"]))}<script id="gk-data" type="application/json">
+{script_json(data)}</script>
 <script>
 {js}
-const GK_NAME = {js_string(source)};
+{LIVE_LIB}
 {APP_JS}
+window.graphkinLive = gkLiveApp(document,
+  JSON.parse(document.getElementById("gk-data").textContent), {js_string(source)}, null);
 </script>
 </body></html>
 """

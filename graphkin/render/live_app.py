@@ -5,13 +5,109 @@ construction ``construction(I, K)`` on every pointer move and redraws the
 posture and the velocity and acceleration polygons (Secs. 3.4-3.6 and
 4.2-4.6 of Uicker, Pennock & Shigley, 5th ed.) in the colours of ``draw``
 (render/style.py, passed in the data).  Every text it writes goes through
-``textContent`` (never parsed as HTML).  ``window.graphkinLive`` gives the
-tests and the benchmark the page's state, its drive setter and its TOML.
+``textContent`` (never parsed as HTML).  The script is one function,
+``gkLiveApp(root, data, name, onEdit)``, run on the page's document (which
+sets ``window.graphkinLive``: the tests and the benchmark read the page's
+state, its drive setter and its TOML there) or inside a notebook widget's
+element (:mod:`graphkin.render.live_widget`, whose ``onEdit`` sends the
+edited file back to Python).
 """
 
 from __future__ import annotations
 
-__all__ = ["APP_JS", "PAGE_CSS"]
+from graphkin.render.live_pen import PEN_JS
+
+__all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
+
+LIVE_LIB = r"""
+// The inputs of the written-out centers (Sec. 3.13): each primary center from the posture
+// r, homogeneous: a pin is [x, y, 1]; a slider's center is at infinity normal to its line,
+// [-sin θ, cos θ, 0], θ the angle of the link it slides on plus the line's own (Eq. 3.21).
+function gkCenterInputs(C, r) {
+  const J = {};
+  for (const lab of Object.keys(C.given)) {
+    const g = C.given[lab];
+    if (g.pin !== undefined) {
+      const p = r[g.pin];
+      if (!p) return null;
+      J[lab] = [p[0], p[1], 1];
+    } else {
+      let t = r["\u03b8" + g.slider];
+      if (t === undefined) t = g.slider === "1" ? C.frameAngle : NaN;
+      t += g.angle;
+      J[lab] = [-Math.sin(t), Math.cos(t), 0];
+    }
+  }
+  return J;
+}
+// every center and line of centers of the posture r (null where two lines coincide)
+function gkCenters(C, r) {
+  if (!C || !r) return null;
+  const J = gkCenterInputs(C, r);
+  return J === null ? null : centers(J, C.K);
+}
+// the given points of the curvature construction (Secs. 4.13-4.17) from the posture r: a
+// point's position, or its velocity (acceleration) drawn from it to the scale 1/|ω| (1/ω²)
+function gkCurvatureInputs(V, r) {
+  const J = {}, w = r["\u03c9" + V.link];
+  for (const lab of Object.keys(V.given)) {
+    const g = V.given[lab];
+    if (g.slider !== undefined) {
+      // a center of curvature at infinity, normal to a slider's line (Sec. 4.13)
+      let t = r["\u03b8" + g.slider];
+      if (t === undefined) t = g.slider === "1" ? g.frameAngle : NaN;
+      t += g.angle;
+      J[lab] = [-Math.sin(t) * g.sign, Math.cos(t) * g.sign, 0];
+      continue;
+    }
+    if (g.body !== undefined) {
+      // a body point H = P + (Q - P) z of the link, or its velocity (acceleration) drawn
+      // from it: V_H = V_P + (V_Q - V_P) z (Mehmke: the images are similar to the link)
+      const P = r[g.body[0]], Q = r[g.body[1]], z = g.z;
+      if (!P || !Q || w === undefined) return null;
+      const H = [P[0] + (Q[0] - P[0]) * z[0] - (Q[1] - P[1]) * z[1],
+                 P[1] + (Q[0] - P[0]) * z[1] + (Q[1] - P[1]) * z[0]];
+      if (!g.atip && !g.vtip) { J[lab] = H; continue; }
+      const pre = g.vtip ? "v" : "a", k = g.vtip ? Math.abs(w) : w * w;
+      const p = r[pre + "(" + g.body[0] + ")"], q = r[pre + "(" + g.body[1] + ")"];
+      const o = r["o_" + pre];
+      if (!p || !q || !o) return null;
+      const ax = p[0] - o[0] + (q[0] - p[0]) * z[0] - (q[1] - p[1]) * z[1];
+      const ay = p[1] - o[1] + (q[0] - p[0]) * z[1] + (q[1] - p[1]) * z[0];
+      J[lab] = [H[0] + ax / k, H[1] + ay / k];
+      continue;
+    }
+    const n = g.point !== undefined ? g.point : (g.vtip !== undefined ? g.vtip : g.atip);
+    const p = r[n];
+    if (!p || w === undefined) return null;
+    if (g.point !== undefined) { J[lab] = p; continue; }
+    const pre = g.vtip !== undefined ? "v" : "a", k = pre === "v" ? Math.abs(w) : w * w;
+    const q = r[pre + "(" + n + ")"], o = r["o_" + pre];
+    if (!q || !o) return null;
+    J[lab] = [p[0] + (q[0] - o[0]) / k, p[1] + (q[1] - o[1]) / k];
+  }
+  return J;
+}
+// the curvature construction of the posture r (null where it has no clean answer)
+function gkCurvature(V, r) {
+  if (!V || !r) return null;
+  const J = gkCurvatureInputs(V, r);
+  if (J === null) return null;
+  // the Bresse diameter's ratio ω²/α of this posture (Eq. 4.48)
+  const K = V.K.slice(), w = r["\u03c9" + V.link], a = r["\u03b1" + V.link];
+  for (const k of V.ratios) {
+    K[k] = w * w / a;
+    if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
+  }
+  return curvature(J, K);
+}
+// a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
+// graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
+function gkAtInfinity(C, p) {
+  const dx = p[0] - C.origin[0] * p[2], dy = p[1] - C.origin[1] * p[2];
+  return !(Math.abs(p[2]) * C.far > Math.hypot(dx, dy));
+}
+"""
 
 PAGE_CSS = """
 body { font-family: system-ui, sans-serif; margin: 1em; color: #000; }
@@ -32,9 +128,14 @@ th { background: #f4f4f4; }
 """
 
 APP_JS = r"""
-(function () {
+// the page's script, run inside ``root`` (the document, or a notebook widget's element):
+// D is the page's data, GK_NAME the file's name, onEdit(toml) is told every edit (or null);
+// returns the page's API (state, setDrive, toml, redraw)
+function gkLiveApp(root, D, GK_NAME, onEdit) {
 "use strict";
-const D = JSON.parse(document.getElementById("gk-data").textContent);
+const byId = (id) => root.querySelector("#" + id);
+// markers referenced by url(#...) must be unique in the document (several widgets)
+const UID = "gk" + Math.random().toString(36).slice(2, 9) + "-";
 const NS = "http://www.w3.org/2000/svg";
 const W = 420, H = 360, M = 30;
 const K0 = D.K.slice();
@@ -50,10 +151,13 @@ const px = (lw) => 1.4 * lw;
 const views = {};
 const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
 const svgs = {};
-for (const name of ["posture", "velocity", "acceleration"]) {
-  const svg = document.getElementById("gk-" + name);
+for (const name of ["posture", "velocity", "acceleration", "kennedy", "curvature"]) {
+  const svg = byId("gk-" + name);
   svg.setAttribute("viewBox", "0 0 " + W + " " + H);
-  if (panels.indexOf(name) < 0) svg.parentNode.style.display = "none";
+  if (panels.indexOf(name) < 0 && !(name === "kennedy" && D.centers) &&
+      !(name === "curvature" && D.curvature)) {
+    svg.parentNode.style.display = "none";
+  }
   svgs[name] = svg;
 }
 const moving = [];
@@ -68,18 +172,9 @@ for (const lid of Object.keys(D.links)) {
 
 function solve() { I[D.drive.label] = drive; return construction(I, K); }
 
-// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the pins of the posture
-function centersOf(r) {
-  if (!D.centers || !r) return null;
-  const J = {};
-  for (const lab of Object.keys(D.centers.pins)) {
-    const p = r[D.centers.pins[lab]];
-    if (!p) return null;
-    J[lab + ".x"] = p[0]; J[lab + ".y"] = p[1];
-  }
-  return centers(J, D.centers.K);
-}
-let ics = null;
+// the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
+function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
+let ics = null, curv = null;
 
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
 // at 360 drive angles from the current one (null where the posture cannot be assembled)
@@ -126,8 +221,10 @@ function fit(panel, r) {
         y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
       }
       const size = Math.hypot(x1 - x0, y1 - y0), o = [(x0 + x1) / 2, (y0 + y1) / 2];
-      for (const lab of Object.keys(c)) {
-        const p = c[lab];
+      for (const lab of D.centers.labels) {
+        const h = c[lab];
+        if (!h || gkAtInfinity(D.centers, h)) continue;
+        const p = [h[0] / h[2], h[1] / h[2]];
         if (Math.hypot(p[0] - o[0], p[1] - o[1]) < 3 * size) pts.push(p);
       }
     }
@@ -137,6 +234,22 @@ function fit(panel, r) {
     x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
     y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
   }
+  let w = x1 - x0, h = y1 - y0;
+  const big = Math.max(w, h) || 1;
+  w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
+  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+  views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
+}
+
+// fit a panel to a list of points (the curvature panel's own scale)
+function fitPoints(panel, pts) {
+  let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+  for (const p of pts) {
+    x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]);
+    y0 = Math.min(y0, p[1]); y1 = Math.max(y1, p[1]);
+  }
+  if (!pts.length) { x0 = y0 = -1; x1 = y1 = 1; }
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
@@ -158,8 +271,9 @@ function el(parent, tag, attrs, text) {
 
 function defs(svg) {
   const d = el(svg, "defs", {});
-  const m = el(d, "marker", {id: svg.id + "-arrow", viewBox: "0 0 10 10", refX: "10", refY: "5",
-                             markerWidth: "7", markerHeight: "7", orient: "auto-start-reverse"});
+  const m = el(d, "marker", {id: UID + svg.id + "-arrow", viewBox: "0 0 10 10", refX: "10",
+                             refY: "5", markerWidth: "7", markerHeight: "7",
+                             orient: "auto-start-reverse"});
   el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: ink("result-line", "color")});
 }
 
@@ -231,28 +345,168 @@ function drawPosture(r, stale) {
 }
 
 function drawCenters(g) {
-  // each of Kennedy's lines from the first of its centers to the farthest on it
+  // Kennedy's lines: through their finite centers, to the panel's edge when a center on the
+  // line is at infinity (the line is then the parallel to its direction); a center at
+  // infinity is drawn as its direction, a double arrow with its name (Sec. 3.13)
+  const C = D.centers, v = views.posture;
+  const fin = (h) => !gkAtInfinity(C, h);
+  const xy = (h) => [h[0] / h[2], h[1] / h[2]];
   const on = {};
-  for (const [lab, p, q] of D.centers.joins) on[lab] = [p, q];
-  for (const [lab, l1, l2] of D.centers.meets) { on[l1].push(lab); on[l2].push(lab); }
+  for (const [lab, p, q] of C.joins) on[lab] = [p, q];
+  for (const [lab, l1, l2] of C.meets) { on[l1].push(lab); on[l2].push(lab); }
+  const reach = 2 * Math.hypot(W, H) / v.s;
   for (const lab of Object.keys(on)) {
-    const pts = on[lab].map((c) => ics[c]);
-    const o = pts[0];
-    let far = pts[1], best = -1;
-    for (const p of pts) {
-      const dd = Math.hypot(p[0] - o[0], p[1] - o[1]);
-      if (dd > best) { best = dd; far = p; }
+    const ln = ics[lab];
+    const hs = on[lab].map((c) => ics[c]).filter(Boolean);
+    const finite = hs.filter(fin).map(xy);
+    if (!ln || !finite.length) continue;
+    const d = [ln[1], -ln[0]], o = finite[0];
+    let t0 = 0, t1 = 0;
+    for (const p of finite) {
+      const t = (p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1];
+      t0 = Math.min(t0, t); t1 = Math.max(t1, t);
     }
-    el(g, "line", {x1: X("posture", o), y1: Y("posture", o), x2: X("posture", far),
-                   y2: Y("posture", far), stroke: ink("aux-line", "color"),
+    if (hs.some((h) => !fin(h))) { t0 -= reach; t1 += reach; }
+    const pad = 0.08 * (t1 - t0) + 8 / v.s;
+    const a = [o[0] + (t0 - pad) * d[0], o[1] + (t0 - pad) * d[1]];
+    const b = [o[0] + (t1 + pad) * d[0], o[1] + (t1 + pad) * d[1]];
+    el(g, "line", {x1: X("posture", a), y1: Y("posture", a), x2: X("posture", b),
+                   y2: Y("posture", b), stroke: ink("aux-line", "color"),
                    "stroke-width": "0.8", "stroke-dasharray": "5 3", class: "gk-kennedy"});
   }
-  for (const lab of D.centers.labels) {
-    if (D.centers.pins[lab]) continue;
-    const p = ics[lab];
-    el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
-                     stroke: "#000", "stroke-width": "1.2"});
-    label(g, "posture", p, lab);
+  let k = 0;
+  for (const lab of C.labels) {
+    const h = ics[lab];
+    if (!h) continue;
+    if (fin(h)) {
+      if (C.given[lab] && C.given[lab].pin !== undefined) continue;  // the pin is drawn
+      const p = xy(h);
+      el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
+                       stroke: "#000", "stroke-width": "1.2", class: "gk-center"});
+      label(g, "posture", p, lab);
+      continue;
+    }
+    // at infinity: its direction, screen y down, in the panel's lower left corner
+    const n = Math.hypot(h[0], h[1]) || 1, ux = h[0] / n, uy = -h[1] / n;
+    const cx = 42 + 60 * k, cy = H - 40;
+    k++;
+    el(g, "line", {x1: cx - 18 * ux, y1: cy - 18 * uy, x2: cx + 18 * ux, y2: cy + 18 * uy,
+                   stroke: "#000", "stroke-width": "1.2", class: "gk-center-infinity",
+                   "data-name": lab, "marker-start": "url(#" + UID + "gk-posture-arrow)",
+                   "marker-end": "url(#" + UID + "gk-posture-arrow)"});
+    el(g, "text", {x: cx - 16, y: cy + 30, "font-size": "11", "font-style": "italic"},
+       lab + " \u2192 \u221e");
+  }
+}
+
+// the Kennedy circle (Sec. 3.15): the links on a circle, a line for every center: primary
+// centers black, those Kennedy's theorem found in the result colour, none where the page
+// cannot find it at this posture (dashed)
+function drawKennedyCircle() {
+  const svg = svgs.kennedy, C = D.centers;
+  svg.textContent = "";
+  const n = C.links.length, R = 0.36 * Math.min(W, H), ox = W / 2, oy = H / 2;
+  const at = {};
+  C.links.forEach((lid, i) => {
+    const t = Math.PI / 2 - 2 * Math.PI * i / n;
+    at[lid] = [ox + R * Math.cos(t), oy - R * Math.sin(t)];
+  });
+  for (const lab of Object.keys(C.pairs)) {
+    const [i, j] = C.pairs[lab], p = at[i], q = at[j];
+    if (!p || !q) continue;
+    const found = ics && ics[lab];
+    const e = el(svg, "line", {x1: p[0], y1: p[1], x2: q[0], y2: q[1],
+                               stroke: C.given[lab] ? "#000" : ink("result-line", "color"),
+                               "stroke-width": found ? "1.6" : "0.8",
+                               "stroke-dasharray": found ? "none" : "4 3",
+                               class: "gk-kennedy-pair", "data-name": lab});
+    el(e, "title", {}, lab);
+    const m = [p[0] + 0.38 * (q[0] - p[0]), p[1] + 0.38 * (q[1] - p[1])];  // chords cross at 1/2
+    el(svg, "text", {x: m[0] + 3, y: m[1] - 3, "font-size": "10", fill: "#555"}, lab);
+  }
+  for (const lid of C.links) {
+    const p = at[lid];
+    el(svg, "circle", {cx: p[0], cy: p[1], r: 11, fill: "#fff", stroke: "#000"});
+    el(svg, "text", {x: p[0], y: p[1] + 4, "font-size": "12", "text-anchor": "middle"}, lid);
+  }
+}
+
+// the curvature of the motion of one link (Secs. 4.13-4.17): its inflection circle on IJ, the
+// centrode normal N and tangent T at I, the conjugates, Hain's G_N and G_T, Ball's point U
+function drawCurvature(r, stale, refit) {
+  const svg = svgs.curvature, V = D.curvature;
+  svg.textContent = "";
+  defs(svg);
+  const cap = svg.parentNode.querySelector("figcaption");
+  if (cap) {
+    cap.textContent = "Curvature of " + V.link + "/1: inflection circle" +
+      (V.labels.indexOf("Bresse circle") >= 0 ? ", Bresse circle (dashed)" : "");
+  }
+  if (!curv) {
+    el(svg, "text", {x: 12, y: 24, "font-size": "12", fill: "#c62828"},
+       "No clean construction at this posture (\u03c9" + V.link + " = 0 or a degenerate case).");
+    return;
+  }
+  const g = el(svg, "g", stale ? {class: "gk-stale"} : {});
+  const pts = [];
+  for (const lid of Object.keys(D.links)) for (const n of D.links[lid]) if (r[n]) pts.push(r[n]);
+  const ic = curv["inflection circle"];
+  let size = 1;
+  if (pts.length) {
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (const p of pts) {
+      x0 = Math.min(x0, p[0]); x1 = Math.max(x1, p[0]); y0 = Math.min(y0, p[1]);
+      y1 = Math.max(y1, p[1]);
+    }
+    size = Math.hypot(x1 - x0, y1 - y0) || 1;
+  }
+  const near = (p) => p && pts.length && Math.hypot(p[0] - pts[0][0], p[1] - pts[0][1]) < 3 * size;
+  for (const c of [ic, curv["Bresse circle"]]) {
+    if (c && c[2] < 3 * size) pts.push([c[0] - c[2], c[1] - c[2]], [c[0] + c[2], c[1] + c[2]]);
+  }
+  for (const lab of V.labels) {
+    if (V.kinds[lab] === "point" && near(curv[lab])) pts.push(curv[lab]);
+  }
+  if (refit || !views.curvature) fitPoints("curvature", pts);
+  for (const lid of Object.keys(D.links)) {
+    if (lid === "1") continue;
+    outline(g, "curvature", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
+  }
+  if (ic) {
+    el(g, "circle", {cx: X("curvature", ic), cy: Y("curvature", ic),
+                     r: ic[2] * views.curvature.s, fill: "none",
+                     stroke: ink("result-line", "color"), "stroke-width": "1.4",
+                     class: "gk-inflection-circle"});
+  }
+  const bc = curv["Bresse circle"];
+  if (bc) {  // drawn however large (the panel clips it), fitted only when near
+    el(g, "circle", {cx: X("curvature", bc), cy: Y("curvature", bc),
+                     r: bc[2] * views.curvature.s, fill: "none",
+                     stroke: ink("aux-line", "color"), "stroke-width": "1.2",
+                     "stroke-dasharray": "6 3", class: "gk-bresse-circle"});
+  }
+  const I = curv.I, Jp = curv.J;
+  if (I && Jp) {
+    // N from I toward J, T 90° clockwise from N (Sec. 4.12)
+    const d = Math.hypot(Jp[0] - I[0], Jp[1] - I[1]) || 1, u = [(Jp[0] - I[0]) / d,
+                                                                 (Jp[1] - I[1]) / d];
+    const L = Math.max(d, 0.25 * size);
+    for (const [name, e] of [["N", u], ["T", [u[1], -u[0]]]]) {
+      const q = [I[0] + 1.3 * L * e[0], I[1] + 1.3 * L * e[1]];
+      el(g, "line", {x1: X("curvature", I), y1: Y("curvature", I), x2: X("curvature", q),
+                     y2: Y("curvature", q), stroke: ink("aux-line", "color"),
+                     "stroke-width": "1", "marker-end": "url(#" + UID + "gk-curvature-arrow)"});
+      label(g, "curvature", q, name);
+    }
+  }
+  for (const lab of V.labels) {
+    const p = curv[lab];
+    if (V.kinds[lab] !== "point" || !p || !near(p)) continue;
+    if (lab === "\u0393 (four circles)" && curv["\u0393"]) continue;  // the same point
+    el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
+                     fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
+                     "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});
+    label(g, "curvature", p, lab.replace(" (four circles)", ""));
   }
 }
 
@@ -274,18 +528,19 @@ function drawPolygon(panel, pre, r, stale) {
       el(g, "line", {x1: X(panel, o), y1: Y(panel, o), x2: X(panel, p), y2: Y(panel, p),
                      stroke: ink("result-line", "color"),
                      "stroke-width": px(ink("result-line", "lw")),
-                     "marker-end": "url(#" + svg.id + "-arrow)"});
+                     "marker-end": "url(#" + UID + svg.id + "-arrow)"});
     }
     label(g, panel, p, n.toLowerCase());
   }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
   label(g, panel, o, pre === "v" ? "O_V" : "O_A");
+  if (pen.panel === panel) drawPen(svg, panel);
 }
 
 function fmt(v) { return Number.isFinite(v) ? Number(v.toPrecision(6)).toString() : "\u2014"; }
 
 function table(r) {
-  const t = document.getElementById("gk-table");
+  const t = byId("gk-table");
   t.textContent = "";
   const head = el0(t, "tr");
   for (const h of ["point", "x", "y"].concat(D.rates ? ["|V|", "|A|"] : [])) el0(head, "th", h);
@@ -307,9 +562,9 @@ function el0(parent, tag, text) {
   return e;
 }
 
-const slider = document.getElementById("gk-drive");
-const sval = document.getElementById("gk-drive-val");
-const status = document.getElementById("gk-status");
+const slider = byId("gk-drive");
+const sval = byId("gk-drive-val");
+const status = byId("gk-status");
 const isAngle = D.drive.degrees;
 function showDrive() {
   const v = isAngle ? drive * 180 / Math.PI : drive;
@@ -326,9 +581,12 @@ function redraw(refit) {
   if (r === null) return;
   cycle();
   ics = centersOf(r);
+  curv = D.curvature ? gkCurvature(D.curvature, r) : null;
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
+  if (D.centers) drawKennedyCircle();
+  if (D.curvature) drawCurvature(r, !ok, refit);
   if (ok) table(r);
   status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.";
@@ -384,7 +642,10 @@ function dragPoint(c, w) {
     K[im.slots[1]] = (zp1 * zr0 - zp0 * zr1) / den;
   }
 }
-const stop = () => { if (dragging) { dragging = null; redraw(true); } };
+/*PEN*/
+// the edited mechanism, told to the notebook (its widget.mechanism) after every edit
+function notify() { if (onEdit) onEdit(edited()); }
+const stop = () => { if (dragging) { dragging = null; redraw(true); notify(); } };
 svgs.posture.addEventListener("pointerup", stop);
 svgs.posture.addEventListener("pointercancel", stop);
 
@@ -395,13 +656,14 @@ else {
   slider.step = String(span / 500);
 }
 slider.addEventListener("pointerdown", snapshot);
+slider.addEventListener("change", notify);
 slider.addEventListener("input", () => {
   const v = Number(slider.value);
   drive = isAngle ? v * Math.PI / 180 : v;
   redraw(false);
 });
 // the two-way steps (Sec. 2.8, cases 2-4): switch the chosen point's branch
-const branchSel = document.getElementById("gk-branch");
+const branchSel = byId("gk-branch");
 for (const n of Object.keys(D.branches)) {
   const o = document.createElement("option");
   o.value = n; o.textContent = n;
@@ -409,19 +671,19 @@ for (const n of Object.keys(D.branches)) {
 }
 if (!branchSel.options.length) {
   branchSel.parentNode.style.display = "none";
-  document.getElementById("gk-switch").style.display = "none";
+  byId("gk-switch").style.display = "none";
 }
-document.getElementById("gk-switch").addEventListener("click", () => {
+byId("gk-switch").addEventListener("click", () => {
   const k = D.branches[branchSel.value];
   if (k === undefined) return;
-  snapshot(); K[k] = -K[k]; redraw(true);
+  snapshot(); K[k] = -K[k]; redraw(true); notify();
 });
-document.getElementById("gk-undo").addEventListener("click", () => {
+byId("gk-undo").addEventListener("click", () => {
   const s = history.pop(); if (!s) return;
-  K = s[0]; drive = s[1]; redraw(true);
+  K = s[0]; drive = s[1]; redraw(true); notify();
 });
-document.getElementById("gk-reset").addEventListener("click", () => {
-  snapshot(); K = K0.slice(); drive = drive0; redraw(true);
+byId("gk-reset").addEventListener("click", () => {
+  snapshot(); K = K0.slice(); drive = drive0; redraw(true); notify();
 });
 
 function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
@@ -470,7 +732,7 @@ function edited() {
   return out.join("\n").replace(/^\n+/, "") + "\n";
 }
 
-document.getElementById("gk-save").addEventListener("click", () => {
+byId("gk-save").addEventListener("click", () => {
   const blob = new Blob([edited()], {type: "application/toml"});
   const a = document.createElement("a");
   a.href = URL.createObjectURL(blob);
@@ -479,12 +741,23 @@ document.getElementById("gk-save").addEventListener("click", () => {
   setTimeout(() => URL.revokeObjectURL(a.href), 1000);
 });
 
-window.graphkinLive = {
-  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics}),
+redraw(true);
+return {
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics,
+                 curvature: curv}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
+  pen: pen,
+  penSVG: penSVG,
+  // client coordinates of a point of a panel (the tests click there)
+  toClient: (panel, p) => {
+    const r = svgs[panel].getBoundingClientRect();
+    return [r.x + X(panel, p) * r.width / W, r.y + Y(panel, p) * r.height / H];
+  },
   toml: edited,
   redraw: redraw,
 };
-redraw(true);
-})();
+}
 """
+
+# the pen mode's part of the script (render/live_pen.py), inside gkLiveApp
+APP_JS = APP_JS.replace("/*PEN*/\n", PEN_JS)

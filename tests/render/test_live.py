@@ -257,7 +257,8 @@ def test_instant_centers_follow_the_drag(browser, tmp_path):
     ic = instant_centers(graphkin.load(tmp_path / "saved.toml").solve())
     for lab in ("I13", "I24", "I23", "I34"):
         ref = np.asarray(ic.values[lab], dtype=float)
-        np.testing.assert_allclose(state["centers"][lab], ref[:2] / ref[2], rtol=0,
+        got = np.asarray(state["centers"][lab], dtype=float)  # homogeneous [x, y, w]
+        np.testing.assert_allclose(got[:2] / got[2], ref[:2] / ref[2], rtol=0,
                                    atol=1e-9 * 30, err_msg=lab)
     assert browser.js("document.querySelectorAll('.gk-kennedy').length") == 4
 
@@ -311,4 +312,4 @@ def test_the_command_writes_the_page_or_says_why_in_one_line(tmp_path, capsys):
                str(tmp_path / "w.html")])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and "ex3_9_rolling_wheel.toml" in err[0]
-    assert "not solved by a construction" in err[0]
+    assert "not solved by a construction" in err[0] and "rolling contact" in err[0]

@@ -177,9 +177,33 @@ def _add_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.add(t, gen.num(step.params["offset"])))
 
 
+def _join_homogeneous(gen: Gen, step: Step) -> None:
+    """The line through two points, either of them at infinity: ``p × q``, normalized.
+
+    Written only by the centers' JavaScript writer (``gen.homogeneous``):
+    Kennedy's lines through a center at infinity (a slider's) are the
+    parallels through the other center.  Two points at infinity, or two
+    coincident points, have no line (``|(a, b)|`` vanishing against ``|c|``).
+    """
+    px, py, pw = gen.rows(step.inputs[0])
+    qx, qy, qw = gen.rows(step.inputs[1])
+    a = gen.let(gen.sub(gen.mul(py, qw), gen.mul(pw, qy)), "a")
+    b = gen.let(gen.sub(gen.mul(pw, qx), gen.mul(px, qw)), "b")
+    c = gen.let(gen.sub(gen.mul(px, qy), gen.mul(py, qx)), "c")
+    n = gen.let(f"_sqrt({gen.add(gen.mul(a, a), gen.mul(b, b))})", "n")
+    # in the points' own scale: |a, b| against the rel. tolerance of |c| (|p||q| sin)
+    gen.bail_unless(f"{n} > {lit(gen.tol.length_rel)} * _abs({c})")
+    gen.put_rows(step.outputs[0], "line", *(_div(gen, r, n) for r in (a, b, c)))
+
+
 @template("join")
 def _join(gen: Gen, step: Step) -> None:
     p, q = step.inputs
+    # homogeneous rows of a point (a point at infinity) exist only in the JavaScript writer
+    if getattr(gen, "homogeneous", False) or any(
+            gen.val(i).form == "rows" and gen.val(i).kind == "point" for i in (p, q)):
+        _join_homogeneous(gen, step)
+        return
     px, py = gen.pt(p)
     qx, qy = gen.pt(q)
     tol = gen.tol
@@ -225,6 +249,14 @@ def _meet(gen: Gen, step: Step) -> None:
     pw = gen.let(gen.sub(gen.mul(a1, b2), gen.mul(b1, a2)), "w")
     px = gen.let(gen.sub(gen.mul(b1, c2), gen.mul(c1, b2)), "x")
     py = gen.let(gen.sub(gen.mul(c1, a2), gen.mul(a1, c2)), "y")
+    if getattr(gen, "homogeneous", False):
+        # the centers' writer (jsgen, homogeneous): parallel lines meet at infinity, kept as
+        # (x, y, 0); only coincident lines (every row zero) have no meet
+        n2 = gen.add(gen.add(gen.mul(px, px), gen.mul(py, py)), gen.mul(pw, pw))
+        n = gen.let(f"_sqrt({n2})", "n")
+        _positive(gen, n)
+        gen.put_rows(step.outputs[0], "point", *(_div(gen, r, n) for r in (px, py, pw)))
+        return
     n2 = gen.add(gen.mul(px, px), gen.mul(py, py))
     # the kernel's clean case: nowhere parallel, coincident or NaN
     gate = lit((gen.tol.angle * (1.0 + 1e-6)) ** 2)
@@ -382,7 +414,18 @@ def _scalar(gen: Gen, step: Step) -> None:
 
 @template("copy_point", python=False)
 def _copy_point(gen: Gen, step: Step) -> None:
+    v = gen.val(step.inputs[0])
+    if v.form == "rows":  # a homogeneous point (the centers' writer): its three rows
+        gen.put_rows(step.outputs[0], "point", *v.ex)
+        return
     gen.put_point(step.outputs[0], *gen.pt(step.inputs[0]))
+
+
+@template("at_infinity_on", python=False)
+def _at_infinity_on(gen: Gen, step: Step) -> None:
+    # the point at infinity of a line (a, b, c): its direction (b, -a), w = 0
+    a, b, _ = gen.rows(step.inputs[0])
+    gen.put_rows(step.outputs[0], "point", b, gen.neg(a), "0.0")
 
 
 template("same_point", python=False)(_copy_point)
@@ -475,3 +518,62 @@ def _tangent_foot(gen: Gen, step: Step) -> None:
     q = gen.let(f"{d} * {t} / {dist}", "q")
     x, y = _turned(gen, p, q, ux, uy, gen.side(step, step.params["branch"] == "left"))
     gen.put_point(step.outputs[0], gen.add(ax, x), gen.add(ay, y))
+
+
+# ---- the curvature constructions' circles (Secs. 4.13-4.17), JavaScript only -------------
+
+@template("circumcircle", python=False)
+def _circumcircle(gen: Gen, step: Step) -> None:
+    # the circle through P, Q, R: with b = Q - P, c = R - P and d = 2 (b × c), the center is
+    # P + (c_y |b|² - b_y |c|², b_x |c|² - c_x |b|²) / d; collinear points have none
+    p, q, r = step.inputs
+    px, py = gen.pt(p)
+    bx, by = _diff(gen, p, q)
+    cx, cy = _diff(gen, p, r)
+    bb = gen.let(gen.add(gen.mul(bx, bx), gen.mul(by, by)), "dd")
+    cc = gen.let(gen.add(gen.mul(cx, cx), gen.mul(cy, cy)), "dd")
+    d = gen.let(gen.mul("2.0", gen.sub(gen.mul(bx, cy), gen.mul(by, cx))), "d")
+    gen.bail_unless(f"_abs({d}) > {lit(gen.tol.angle)} * ({bb} + {cc})")
+    ux = gen.let(_div(gen, gen.sub(gen.mul(cy, bb), gen.mul(by, cc)), d), "x")
+    uy = gen.let(_div(gen, gen.sub(gen.mul(bx, cc), gen.mul(cx, bb)), d), "y")
+    gen.put_rows(step.outputs[0], "circle", gen.add(px, ux), gen.add(py, uy),
+                 f"_sqrt({gen.add(gen.mul(ux, ux), gen.mul(uy, uy))})")
+
+
+@template("other_intersection", python=False)
+def _other_intersection(gen: Gen, step: Step) -> None:
+    # two circles through P meet again at P's mirror in their line of centers O1 O2
+    x1, y1, _ = gen.rows(step.inputs[0])
+    x2, y2, _ = gen.rows(step.inputs[1])
+    px, py = gen.pt(step.inputs[2])
+    ux, uy = gen.let(gen.sub(x2, x1), "dx"), gen.let(gen.sub(y2, y1), "dy")
+    uu = gen.let(gen.add(gen.mul(ux, ux), gen.mul(uy, uy)), "dd")
+    _positive(gen, uu)
+    wx, wy = gen.let(gen.sub(px, x1), "dx"), gen.let(gen.sub(py, y1), "dy")
+    k = gen.let(_div(gen, gen.add(gen.mul(wx, ux), gen.mul(wy, uy)), uu), "k")
+    # P' = 2 (O1 + k u) - P
+    gen.put_point(step.outputs[0], gen.sub(gen.mul("2.0", gen.add(x1, gen.mul(k, ux))), px),
+                  gen.sub(gen.mul("2.0", gen.add(y1, gen.mul(k, uy))), py))
+
+
+@template("second_on_circle", python=False)
+def _second_on_circle(gen: Gen, step: Step) -> None:
+    # a line through a point P of a circle meets it again at 2 F - P, F the foot of the
+    # perpendicular from the circle's center to the line (a, b, c)
+    a, b, c = gen.rows(step.inputs[0])
+    ox, oy, _ = gen.rows(step.inputs[1])
+    px, py = gen.pt(step.inputs[2])
+    nn = gen.let(gen.add(gen.mul(a, a), gen.mul(b, b)), "dd")
+    _positive(gen, nn)
+    s = gen.let(_div(gen, gen.add(gen.add(gen.mul(a, ox), gen.mul(b, oy)), c), nn), "s")
+    gen.put_point(step.outputs[0], gen.sub(gen.mul("2.0", gen.sub(ox, gen.mul(a, s))), px),
+                  gen.sub(gen.mul("2.0", gen.sub(oy, gen.mul(b, s))), py))
+
+
+@template("parallelogram", python=False)
+def _parallelogram(gen: Gen, step: Step) -> None:
+    # complete the parallelogram P, A, G, B: G = A + B - P (finite vertices)
+    px, py = gen.pt(step.inputs[0])
+    ax, ay = gen.pt(step.inputs[1])
+    bx, by = gen.pt(step.inputs[2])
+    gen.put_point(step.outputs[0], gen.sub(gen.add(ax, bx), px), gen.sub(gen.add(ay, by), py))

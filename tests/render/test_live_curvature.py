@@ -1,0 +1,146 @@
+"""The live page's curvature panel equals graphkin's curvature construction after a drag.
+
+The page's curvature function (graphkin's recorded curvature construction of
+one link, Secs. 4.13-4.17, written out from the one table of templates) and
+its glue (``gkCurvature``: the given points from the posture) run on
+JavaScript numbers at a drive moved from the file's; the file edited as the
+page saves it is solved in Python, and :func:`curvature` (numpy: the
+construction recorded and replayed at the new posture) is the reference for
+every point, circle and line the page shows, to 1e-9 of its size: the
+velocity pole I, the inflection pole J and circle, the Bresse circle
+(its ratio ω²/α given by the page from the posture) and Γ on it, Γ by the
+four circles of Fig. 4.33 (from auxiliary points of the link and their accelerations), the
+conjugates, Hain's G_N and G_T, Ball's point U, the centrode normal N and
+tangent T.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from jsrun import close, js_or_skip, run_js
+from live_edit import edited
+from spec_data import EXAMPLES
+from strategies import RandomMechanism, examples, fourbars, six_bars, slider_cranks
+
+import graphkin
+from graphkin.errors import GraphkinError, InputError
+from graphkin.files import load_toml
+from graphkin.kinematics.curvature.link import curvature
+from graphkin.mechanisms import from_dict
+from graphkin.render.live import live_data
+from graphkin.render.live_app import LIVE_LIB
+
+REL = 1e-9
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _js():
+    js_or_skip()
+    yield
+    close()
+
+
+def _page(data: dict, js: str, drive: float):
+    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
+           "\nconst I = Object.assign({}, D.inputs);"
+           f"\nI[D.drive.label] = {float(drive)!r};"
+           "\nconst r = construction(I, D.K);"
+           "\nconst RESULT = r === null ? null : {r: r, v: gkCurvature(D.curvature, r)};")
+    return run_js(src)
+
+
+def _compare(data: dict, got: dict, ref: dict, size: float) -> None:
+    V = data["curvature"]
+    for lab in V["labels"]:
+        g = np.asarray(got[lab], dtype=float)
+        r = np.asarray(ref[lab], dtype=float)
+        if V["kinds"][lab] == "point":
+            r = r[:2] / r[2]
+        scale = max(size, float(np.abs(r).max(initial=0.0)))
+        np.testing.assert_allclose(g, r, rtol=0, atol=REL * scale, err_msg=lab)
+
+
+def _check(rm: RandomMechanism, offset: float) -> bool:
+    """True when the page's curvature was compared with graphkin's."""
+    mech = rm.mechanism()
+    try:
+        data, js = live_data(mech, rm.data, "<random>")
+    except InputError:
+        return False
+    if "curvature" not in data:
+        return False
+    d = data["drive"]
+    drive = d["value"] + offset * (1.0 if d["degrees"] else mech.scale)
+    out = _page(data, js, drive)
+    if out is None or out["v"] is None:
+        return False  # cannot be assembled, or ω of the link is 0 there: said so on the page
+    try:
+        sol = from_dict(edited(data, drive, out["r"]), source="<edited>").solve()
+        lc = curvature(sol)[data["curvature"]["link"]]
+    except (GraphkinError, KeyError):
+        return False
+    if not bool(np.all(sol.valid)):
+        return False
+    _compare(data, out["v"], lc.values, 1.0 + mech.scale)
+    return True
+
+
+@examples(25)
+@given(rm=st.one_of(fourbars(), six_bars(), slider_cranks()), offset=st.floats(-0.1, 0.1))
+def test_page_curvature_equals_graphkins_after_a_drag(rm: RandomMechanism,
+                                                      offset: float) -> None:
+    _check(rm, offset)
+
+
+def test_example_3_2_coupler_with_a_center_of_curvature_at_infinity() -> None:
+    # Example 3.2 (slider-crank): C slides on the frame's line y = -20, so its center of
+    # curvature C' is at infinity normal to that line (Sec. 4.13); the coupler's I is I13,
+    # the meet of AB and the vertical through C (Sec. 3.15)
+    path = EXAMPLES / "ex3_2_slider_driven.toml"
+    mech = graphkin.load(path)
+    data, js = live_data(mech, load_toml(path), path.name)
+    assert data["curvature"]["given"]["C'"]["slider"] == "1"
+    out = _page(data, js, data["drive"]["value"])
+    r, v = out["r"], out["v"]
+    a, b, c = (np.asarray(r[n], dtype=float) for n in ("A", "B", "C"))
+    i = np.asarray(v["I"], dtype=float)
+    assert abs(i[0] - c[0]) < 1e-9 * 200  # on the vertical through C
+    assert abs((b - a)[0] * (i - a)[1] - (b - a)[1] * (i - a)[0]) < 1e-9 * 200 ** 2
+    sol = mech.solve()
+    _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
+
+
+def test_example_3_1_coupler(tmp_path) -> None:
+    # Example 3.1's coupler (link 3): the page's I is I13, the meet of AB and DC (Sec. 3.15),
+    # and J lies on the inflection circle's diameter through I, at the page's posture and after
+    # turning the crank by 10°
+    path = EXAMPLES / "ex3_1_fourbar.toml"
+    mech = graphkin.load(path)
+    data, js = live_data(mech, load_toml(path), path.name)
+    assert data["curvature"]["link"] == "3"
+    assert {"I", "J", "inflection circle", "U", "Γ (four circles)", "Bresse circle",
+            "Γ"} <= set(data["curvature"]["labels"])
+    for turn in (0.0, np.radians(10.0)):
+        out = _page(data, js, data["drive"]["value"] + turn)
+        r, v = out["r"], out["v"]
+        a, b, c, dd = (np.asarray(r[n], dtype=float) for n in ("A", "B", "C", "D"))
+        # I on line AB and on line DC: zero cross products
+        i = np.asarray(v["I"], dtype=float)
+        def cross(u, w):
+            return u[0] * w[1] - u[1] * w[0]
+
+        assert abs(cross(b - a, i - a)) < 1e-9 * 100
+        assert abs(cross(c - dd, i - dd)) < 1e-9 * 100
+        circ = np.asarray(v["inflection circle"], dtype=float)
+        j = np.asarray(v["J"], dtype=float)
+        np.testing.assert_allclose((i + j) / 2, circ[:2], rtol=0, atol=1e-9 * 100)
+        assert abs(np.hypot(*(j - i)) / 2 - circ[2]) < 1e-9 * 100
+        # Γ where the Bresse circle meets the inflection circle is Γ by the four circles
+        np.testing.assert_allclose(v["Γ"], v["Γ (four circles)"], rtol=0, atol=1e-9 * 100)
+        sol = from_dict(edited(data, data["drive"]["value"] + turn, r), source="e").solve()
+        _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
