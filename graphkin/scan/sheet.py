@@ -30,6 +30,8 @@ PX_PER_MM = 5.0
 """Resolution of the rectified sheet: 5 px/mm (127 dpi), a pencil line 2-3 px wide."""
 
 _MAX_PIXELS = 80_000_000
+_FIND_PX = 1300
+"""The markers are looked for on a copy at most this many pixels long (18 mm is ~80 px)."""
 _PDF_DPI = 200.0
 
 
@@ -114,7 +116,6 @@ def read_pages(path: str) -> list[Page]:
 def _detector(cv2: Any) -> Any:
     params = cv2.aruco.DetectorParameters()
     params.cornerRefinementMethod = cv2.aruco.CORNER_REFINE_SUBPIX
-    params.adaptiveThreshWinSizeMax = 53
     return cv2.aruco.ArucoDetector(cv2.aruco.getPredefinedDictionary(cv2.aruco.DICT_4X4_50),
                                    params)
 
@@ -139,11 +140,18 @@ def rectify(page: Page) -> Rectified:
     gray = page.gray
     scale = 1.0
     longest = max(gray.shape)
-    if longest > 3200:                  # markers are large: a phone's 12 Mpx need not be read
-        scale = 3200 / longest
+    if longest > _FIND_PX:              # the markers are large: found on a smaller copy
+        scale = _FIND_PX / longest
         gray = cv2.resize(gray, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
     corners, ids, _ = _detector(cv2).detectMarkers(gray)
     found = [] if ids is None else [int(i) for i in ids.ravel()]
+    if found and scale != 1.0:          # their corners then refined on the full image
+        full = np.concatenate([c.reshape(4, 2) for c in corners]) / scale
+        win = max(3, int(round(2 / scale)))
+        full = cv2.cornerSubPix(page.gray, full.astype(np.float32).reshape(-1, 1, 2),
+                                (win, win), (-1, -1),
+                                (cv2.TERM_CRITERIA_EPS + cv2.TERM_CRITERIA_MAX_ITER, 30, 0.01))
+        corners = [c.reshape(1, 4, 2) * scale for c in full.reshape(-1, 4, 2)]
     what = decode_ids(found)
     if what is None:
         raise InputError("no graphkin worksheet markers found (is the whole sheet in the "

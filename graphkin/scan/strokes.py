@@ -35,6 +35,10 @@ MIN_MM = 5.0
 _ANGLE = math.radians(3.0)
 _ACROSS_MM = 1.3
 _GAP_MM = 3.0
+_SPREAD_DEG = 8.0
+"""Lines meeting at a vertex at more than this angle give it as their meeting point."""
+_RUN_MM = 2.5
+"""An end is run on along its ink at most this far (through an arrowhead to its tip)."""
 
 
 def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, int]
@@ -123,12 +127,12 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
 
 
 def _run_on(end: np.ndarray, u: np.ndarray, ink: np.ndarray) -> np.ndarray:
-    """Walk from ``end`` along ``u`` while there is ink (gaps under 0.8 mm), up to 4 mm."""
+    """Walk from ``end`` along ``u`` while there is ink (gaps under 0.8 mm), up to 2.5 mm."""
     h, w = ink.shape
     step = 0.1 * PX_PER_MM
     last = 0.0
     s = step
-    while s <= 4.0 * PX_PER_MM and s - last <= 0.8 * PX_PER_MM:
+    while s <= _RUN_MM * PX_PER_MM and s - last <= 0.8 * PX_PER_MM:
         x, y = end + s * u
         i, j = int(round(y)), int(round(x))
         if not (0 <= i < h and 0 <= j < w):
@@ -202,24 +206,33 @@ def ends(segs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray:
     """Where the segments ``idx`` that end near ``guess`` meet.
 
-    Two or more segments at clearly different directions (over 15° apart):
-    the least-squares meeting point of their lines (a line overshot or
-    stopped short still points at the vertex); one segment, or parallel
-    ones: the mean of their ends nearest ``guess``.
+    The segments that pass through ``guess`` (within 1 mm of their line,
+    between their ends: an image point in the middle of a straight image,
+    where the lines of a link's collinear points merged) count too.  Lines at
+    clearly different directions (over 8° apart): their least-squares
+    meeting point (a line overshot or stopped short still points at the
+    vertex); else the mean of the ends nearest ``guess``.
     """
-    if len(idx) >= 2:
+    lines = list(idx)
+    for i, (p, q) in enumerate(segs):
+        if i in lines:
+            continue
+        length = float(np.hypot(*(q - p)))
+        u = (q - p) / length
+        t = float((guess - p) @ u)
+        if 1.0 < t < length - 1.0 and abs(float((guess - p) @ np.array([-u[1], u[0]]))) < 1.0:
+            lines.append(i)
+    if len(lines) >= 2:
         A, b = [], []
-        dirs = []
-        for i in idx:
+        for i in lines:
             p, q = segs[i]
             d = (q - p) / np.hypot(*(q - p))
             n = np.array([-d[1], d[0]])
             A.append(n)
             b.append(float(n @ p))
-            dirs.append(d)
         A_ = np.array(A)
         sv = np.linalg.svd(A_, compute_uv=False)
-        if sv[-1] > math.sin(math.radians(15)) * sv[0]:
+        if sv[-1] > math.tan(math.radians(_SPREAD_DEG / 2)) * sv[0]:
             x = np.linalg.lstsq(A_, np.array(b), rcond=None)[0]
             if float(np.hypot(*(x - guess))) < 3.0:
                 return np.asarray(x)

@@ -157,15 +157,47 @@ def photograph(img: np.ndarray, deg: Degradation, rng: np.random.Generator) -> n
     dst += rng.uniform(-1.0, 1.0, (4, 2)) * deg.tilt * np.array([W, H]) * 0.5
     M = cv2.getPerspectiveTransform(src, dst.astype(np.float32))
     photo = cv2.warpPerspective(img, M, (W, H), flags=cv2.INTER_AREA,
-                                borderMode=cv2.BORDER_CONSTANT, borderValue=90).astype(float)
-    yy, xx = np.mgrid[0:H, 0:W]
+                                borderMode=cv2.BORDER_CONSTANT, borderValue=90).astype(np.float32)
+    yy, xx = np.mgrid[0:H, 0:W].astype(np.float32)
     ang = rng.uniform(0, 2 * math.pi)
     ramp = (math.cos(ang) * (xx / W - 0.5) + math.sin(ang) * (yy / H - 0.5)) + 0.5
     photo *= deg.light + (1 - deg.light) * np.clip(ramp, 0, 1)
     if deg.blur > 0:
         photo = cv2.GaussianBlur(photo, (0, 0), deg.blur)
-    photo += rng.normal(0.0, deg.noise, photo.shape)
+    photo += rng.normal(0.0, deg.noise, photo.shape).astype(np.float32)
     ok, buf = cv2.imencode(".jpg", np.clip(photo, 0, 255).astype(np.uint8),
                            [cv2.IMWRITE_JPEG_QUALITY, deg.jpeg])
     assert ok
     return cv2.imdecode(buf, cv2.IMREAD_GRAYSCALE)
+
+
+def exact_images(sol: Any, layout: Layout) -> dict[str, np.ndarray]:
+    """Every image point away from the pole, sheet mm (the analytic solver's values)."""
+    from graphkin.kinematics.analytic import solve_analytic
+
+    an = solve_analytic(sol.mechanism)
+    f = an.velocity if layout.diagram == "velocity" else an.acceleration
+    pole = np.array(layout.pole)
+    mech = sol.mechanism
+    out = {}
+    for n in mech.point_names:
+        if n in mech.helper_points:
+            continue
+        v = np.asarray(f(n), dtype=float) / layout.per_mm
+        if float(np.hypot(*v)) >= 2.5:
+            out[n] = pole + v
+    return out
+
+
+def links_of(sol: Any) -> list[list[str]]:
+    """The point names of each moving link (their images are joined on the sheet)."""
+    mech = sol.mechanism
+    return [[n for n in link.points if n not in mech.helper_points]
+            for lid, link in mech.links.items() if lid != "1"]
+
+
+def hand_photo(sol: Any, layout: Layout, sheet: np.ndarray, images: dict[str, np.ndarray],
+               level: str, seed: int) -> np.ndarray:
+    """The sheet with ``images`` drawn by hand, photographed at ``level``."""
+    rng = np.random.default_rng(seed)
+    return photograph(draw_hand(sheet, layout, images, links_of(sol), rng), LEVELS[level], rng)
