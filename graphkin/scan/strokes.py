@@ -19,6 +19,7 @@ straight lines between image points).
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -35,10 +36,14 @@ MIN_MM = 5.0
 _ANGLE = math.radians(3.0)
 _ACROSS_MM = 1.3
 _GAP_MM = 3.0
-_SPREAD_DEG = 8.0
-"""Lines meeting at a vertex at more than this angle give it as their meeting point."""
+_SPREAD_SIN = math.sin(math.radians(8.0))
+"""Lines meeting at a vertex at more than 8° give it as their meeting point."""
 _RUN_MM = 2.5
 """An end is run on along its ink at most this far (through an arrowhead to its tip)."""
+_MISS_MM = 0.6
+_SIGMA_LINE = 0.15
+_SIGMA_END = 0.4
+"""A line passing farther than this from the others' meeting point is not one of them."""
 
 
 def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, int]
@@ -208,10 +213,13 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray
 
     The segments that pass through ``guess`` (within 1 mm of their line,
     between their ends: an image point in the middle of a straight image,
-    where the lines of a link's collinear points merged) count too.  Lines at
-    clearly different directions (over 8° apart): their least-squares
-    meeting point (a line overshot or stopped short still points at the
-    vertex); else the mean of the ends nearest ``guess``.
+    where the lines of a link's collinear points merged) count too.  The
+    lines that agree on the vertex are those within 0.6 mm of the crossing
+    of two of them (over 8° apart) that most lines agree on (a letter or a
+    barb ending nearby is left out); the vertex is then the least-squares
+    point of those lines (σ 0.15 mm) and of the mean of the ends (σ 0.4 mm):
+    a line overshot or stopped short still points at the vertex, and along
+    lines that meet at a narrow angle the ends decide.
     """
     lines = list(idx)
     for i, (p, q) in enumerate(segs):
@@ -222,19 +230,34 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray
         t = float((guess - p) @ u)
         if 1.0 < t < length - 1.0 and abs(float((guess - p) @ np.array([-u[1], u[0]]))) < 1.0:
             lines.append(i)
-    if len(lines) >= 2:
-        A, b = [], []
-        for i in lines:
-            p, q = segs[i]
-            d = (q - p) / np.hypot(*(q - p))
-            n = np.array([-d[1], d[0]])
-            A.append(n)
-            b.append(float(n @ p))
-        A_ = np.array(A)
-        sv = np.linalg.svd(A_, compute_uv=False)
-        if sv[-1] > math.tan(math.radians(_SPREAD_DEG / 2)) * sv[0]:
-            x = np.linalg.lstsq(A_, np.array(b), rcond=None)[0]
-            if float(np.hypot(*(x - guess))) < 3.0:
-                return np.asarray(x)
-    near = [min(segs[i], key=lambda e: float(np.hypot(*(e - guess)))) for i in idx]
-    return np.mean(near, axis=0)
+    normals, offsets = [], []
+    for i in lines:
+        p, q = segs[i]
+        d = (q - p) / np.hypot(*(q - p))
+        n = np.array([-d[1], d[0]])
+        normals.append(n)
+        offsets.append(float(n @ p))
+    A, b = np.array(normals), np.array(offsets)
+    end = np.mean([min(segs[i], key=lambda e: float(np.hypot(*(e - guess)))) for i in idx],
+                  axis=0)
+    best: tuple[int, float, np.ndarray] | None = None
+    for i, j in itertools.combinations(range(len(lines)), 2):
+        if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < _SPREAD_SIN:
+            continue
+        x = np.linalg.solve(A[[i, j]], b[[i, j]])
+        if float(np.hypot(*(x - guess))) >= 3.0:
+            continue
+        miss = np.abs(A @ x - b)
+        support = int(np.count_nonzero(miss <= _MISS_MM))
+        total = float(miss[miss <= _MISS_MM].sum())
+        if best is None or (support, -total) > (best[0], -best[1]):
+            best = (support, total, x)
+    # the lines that agree on the vertex (a letter or a barb ending nearby does not)
+    ok = np.abs(A @ (best[2] if best is not None else end) - b) <= _MISS_MM
+    if not np.any(ok):
+        return end
+    # least squares of the lines (σ 0.15 mm across) and the ends (σ 0.4 mm): lines at a
+    # wide angle fix the vertex; along lines that meet at a narrow one, the ends do
+    M = A[ok].T @ A[ok] / _SIGMA_LINE**2 + np.eye(2) / _SIGMA_END**2
+    r = A[ok].T @ b[ok] / _SIGMA_LINE**2 + end / _SIGMA_END**2
+    return np.asarray(np.linalg.solve(M, r))

@@ -201,3 +201,17 @@ def hand_photo(sol: Any, layout: Layout, sheet: np.ndarray, images: dict[str, np
     """The sheet with ``images`` drawn by hand, photographed at ``level``."""
     rng = np.random.default_rng(seed)
     return photograph(draw_hand(sheet, layout, images, links_of(sol), rng), LEVELS[level], rng)
+
+
+def class_pdf(path: Any, photos: list[np.ndarray]) -> None:
+    """A PDF of one photo per A4 page, as a scanner of a stack of sheets writes."""
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    with PdfPages(path) as pdf:
+        for ph in photos:
+            fig = Figure(figsize=(8.27, 11.69))
+            ax = fig.add_axes((0, 0, 1, 1))
+            ax.imshow(ph, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
+            ax.set_axis_off()
+            pdf.savefig(fig, dpi=150)
