@@ -151,3 +151,22 @@ def test_random_mechanisms_right_drawings_are_marked_right(rm: Any, level: str, 
     rep = _mark(sol, lay, photo, diag)
     letter = diagram[0].upper()
     assert _verdicts(rep) == {f"{letter}_{n}": (OK, "") for n in images}, rep.text()
+
+
+def test_printed_steps_are_not_read_as_pencil() -> None:
+    # --upto 3 prints o_v, v(B) and the first direction line: masked out, never a vertex
+    sol = graphkin.examples.fourbar().solve()
+    lay = layout_for(sol, "velocity", "fourbar", upto=3)
+    assert lay.upto == 3 and any(m[0] == 19 for m in lay.markers)
+    diag = Diagnoser(Evaluator(sol))
+    images = exact_images(sol, lay)
+    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "mild", seed=19)
+    read = read_sheet(sol, Page("photo", photo), diag, lay.digest)
+    assert read.rect.upto == 3
+    rep = mark_scan(sol, read, "photo", CheckTolerance(), diag)
+    assert _verdicts(rep) == {f"V_{n}": (OK, "") for n in images}, rep.text()
+    # and the printed steps alone are no answer: nothing is found on the blank sheet
+    blank = hand_photo(sol, lay, sheet_pixels(sol, lay), {}, "mild", seed=19)
+    rep = mark_scan(sol, read_sheet(sol, Page("blank", blank), diag, lay.digest), "blank",
+                    CheckTolerance(), diag)
+    assert {r.code for r in rep.rows} == {"not-found"}, rep.text()
