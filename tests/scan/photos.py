@@ -14,11 +14,13 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-import cv2
 import numpy as np
+import pytest
 
 import graphkin
 from graphkin.render.worksheet_layout import Layout, mechanism_hash, worksheet_layout
+
+cv2 = pytest.importorskip("cv2")
 
 PX = 6.0
 """Pixels per mm of the 'printed' sheet before it is photographed."""
