@@ -80,6 +80,8 @@ def run(args: argparse.Namespace) -> int:
 
     if not args.answers and not args.drawing and not args.scan:
         raise InputError("give an answers file, --drawing or --scan", file=args.file)
+    if args.show and not args.scan:
+        raise InputError("--show draws what --scan read: give --scan PHOTO", key="--show")
     if args.scan:
         from graphkin.scan import need_cv2
 

@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.check.answers import CheckTolerance, Given, Key
+from graphkin.check.compare import fmt
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.check.polygon import Polygon
 from graphkin.check.report import WRONG, Report, Row
@@ -201,8 +202,6 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     for n in read.missing:
-        from graphkin.check.compare import fmt
-
         v = np.asarray(f(n), dtype=float)
         rows.append(Row(f"{letter}_{n}", "—", f"{fmt(float(np.hypot(*v)))}", "not found",
                         WRONG, mistake=NOT_FOUND))

@@ -75,3 +75,8 @@ def test_scan_errors_are_one_line(tmp_path: Path, examples: Path,
     assert err.strip().count("\n") == 0 and "not an image" in err
     assert main(["check", src, "--scan", str(tmp_path / "missing.jpg")]) == 2
     assert "no such file" in capsys.readouterr().err
+    answers = tmp_path / "a.toml"
+    answers.write_text('omega2 = "900 rev/min ccw"\n')
+    assert main(["check", src, str(answers), "--show", str(tmp_path / "s.png")]) == 2
+    assert capsys.readouterr().err == \
+        "graphkin: --show: --show draws what --scan read: give --scan PHOTO\n"
