@@ -41,6 +41,8 @@ _SPREAD_SIN = math.sin(math.radians(8.0))
 _RUN_MM = 2.5
 """An end is run on along its ink at most this far (through an arrowhead to its tip)."""
 _MISS_MM = 0.6
+_GROW = int(round(2.2 * PX_PER_MM)) | 1
+"""The printed ink is masked grown to this many pixels across (2.2 mm)."""
 _SIGMA_LINE = 0.15
 _SIGMA_END = 0.4
 """A line passing farther than this from the others' meeting point is not one of them."""
@@ -59,7 +61,7 @@ def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, i
     paper = cv2.GaussianBlur(paper, (0, 0), 2 * PX_PER_MM)
     ratio = np.clip(g / np.maximum(paper, 1.0), 0.0, 1.0)
     grown = cv2.dilate(printed[y0:y1, x0:x1].astype(np.uint8),
-                       cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (11, 11))).astype(bool)
+                       cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (_GROW, _GROW))).astype(bool)
     ratio[grown] = 1.0
     edge = int(round(1.5 * PX_PER_MM))
     ratio[:edge, :] = ratio[-edge:, :] = 1.0
