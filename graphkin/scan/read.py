@@ -35,7 +35,7 @@ from graphkin.check.compare import fmt
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.check.polygon import Polygon
 from graphkin.check.report import WRONG, Report, Row
-from graphkin.errors import GraphkinError
+from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import ends, pencil, segments, vertex_at
@@ -137,6 +137,10 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
     """Rectify one page, find its pencil segments and the image points they end at."""
     from graphkin.render.worksheet_layout import worksheet_layout
 
+    if page.identity is not None and page.identity.get("digest") != digest:
+        raise InputError(f"this worksheet was printed for another mechanism file (its hash "
+                         f"{page.identity.get('digest')}, this file's {digest})",
+                         file=page.name, key="--scan")
     rect = rectify(page)
     layout = worksheet_layout(sol, rect.diagram, rect.paper, digest,
                               rect.upto if rect.upto is not None else upto)

@@ -15,6 +15,7 @@ sheet's millimetres are what the scale is read in).
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -37,10 +38,15 @@ _PDF_DPI = 200.0
 
 @dataclass
 class Page:
-    """One image to read: ``name`` (the file, ``scan.pdf p.3`` for a page) and its grey pixels."""
+    """One image to read: ``name`` (the file, ``scan.pdf p.3`` for a page) and its grey pixels.
+
+    ``identity`` is the worksheet's identity when the file is the PDF that
+    ``graphkin worksheet`` wrote (its ``Subject`` metadata), else None.
+    """
 
     name: str
     gray: np.ndarray
+    identity: dict[str, Any] | None = None
 
 
 @dataclass
@@ -90,6 +96,14 @@ def read_pages(path: str) -> list[Page]:
             doc = pdfium.PdfDocument(str(p))
         except Exception as exc:  # pdfium raises its own PdfiumError
             raise InputError(f"cannot read the PDF: {exc}", file=path, key="--scan") from None
+        identity = None
+        try:
+            subject = doc.get_metadata_dict().get("Subject", "")
+            found = json.loads(subject) if subject.startswith("{") else None
+            if isinstance(found, dict) and "graphkin-worksheet" in found:
+                identity = found
+        except (ValueError, AttributeError):
+            identity = None
         pages = []
         for i in range(len(doc)):
             page = doc[i]
@@ -99,7 +113,7 @@ def read_pages(path: str) -> list[Page]:
             arr = page.render(scale=_PDF_DPI / 72, grayscale=True).to_numpy()
             gray = arr if arr.ndim == 2 else cv2.cvtColor(arr[..., :3], cv2.COLOR_BGR2GRAY)
             pages.append(Page(f"{path} p.{i + 1}" if len(doc) > 1 else path,
-                              np.ascontiguousarray(gray)))
+                              np.ascontiguousarray(gray), identity))
         if not pages:
             raise InputError("the PDF has no pages", file=path, key="--scan")
         return pages

@@ -80,3 +80,24 @@ def test_scan_errors_are_one_line(tmp_path: Path, examples: Path,
     assert main(["check", src, str(answers), "--show", str(tmp_path / "s.png")]) == 2
     assert capsys.readouterr().err == \
         "graphkin: --show: --show draws what --scan read: give --scan PHOTO\n"
+
+
+def test_the_worksheet_pdf_itself_knows_its_mechanism(tmp_path: Path, examples: Path,
+                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    # graphkin worksheet's own PDF (filled in on a tablet, say) carries the file's hash
+    pytest.importorskip("cv2")
+    pytest.importorskip("pypdfium2")
+    src = examples / "ex3_1_fourbar.toml"
+    other = tmp_path / "other.toml"
+    other.write_text(src.read_text() + "\n# another file\n")
+    sheet = tmp_path / "sheet.pdf"
+    assert main(["worksheet", str(src), "-d", "velocity", "-o", str(sheet)]) == 0
+    capsys.readouterr()
+    assert main(["check", str(other), "--scan", str(sheet)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"graphkin: {sheet}: --scan: this worksheet was printed for another "
+                          "mechanism file")
+    # the same file: nothing drawn yet, every image not found
+    assert main(["check", str(src), "--scan", str(sheet), "--quiet"]) == 1
+    assert "4 wrong (V_B: not-found; V_C: not-found; V_E: not-found; V_F: not-found)" in \
+        capsys.readouterr().out
