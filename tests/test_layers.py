@@ -45,9 +45,10 @@ ALLOWED: dict[str, set[str]] = {
     "output": MODEL | {"kinematics", "forces", "gears", "synthesis"},
     "render": MODEL | {"kinematics", "forces", "gears", "cams", "synthesis", "output"},
     "check": MODEL | {"kinematics", "forces", "output", "io"},
+    "scan": MODEL | {"kinematics", "forces", "output", "io", "check"},
     "graphkin": MODEL | {"kinematics", "forces", "examples"},
     "commands": MODEL | {"kinematics", "forces", "gears", "cams", "synthesis", "output",
-                         "render", "check", "io", "examples", "graphkin"},
+                         "render", "check", "scan", "io", "examples", "graphkin"},
     "cli": BASE | {"commands", "graphkin"},
     "__main__": {"cli"},
 }

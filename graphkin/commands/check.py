@@ -1,9 +1,10 @@
-"""``graphkin check FILE ANSWERS... [--drawing D] [--csv OUT]``: mark hand solutions.
+"""``graphkin check FILE ANSWERS... [--drawing D] [--scan P] [--csv OUT]``: mark hand solutions.
 
-Compare the values measured on a hand drawing (an answers file, see the README) or a
-velocity/acceleration polygon drawn in CAD (DXF or SVG with labelled vertices) with the
-exact constructions; name the likely mistake under each wrong answer. Several answers
-files mark a stack of students.
+Compare the values measured on a hand drawing (an answers file, see the README), a
+velocity/acceleration polygon drawn in CAD (DXF or SVG with labelled vertices), or one
+drawn in pencil on a ``graphkin worksheet`` (--scan: a photo or scan) with the exact
+constructions; name the likely mistake under each wrong answer. Several answers
+files (or a PDF of scanned worksheets) mark a stack of students.
 
 Exit status 0 when every answer is within tolerance, 1 when any is not, 2
 when a file cannot be read (``docs/formats/answers.md``).
@@ -47,6 +48,13 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--drawing", action="append", default=[], metavar="DXF_OR_SVG",
                    help="a velocity or acceleration polygon drawn with labelled vertices "
                         "(O_V or O_A, b, c ...); may be repeated")
+    p.add_argument("--scan", action="extend", nargs="+", default=[], metavar="IMAGE_OR_PDF",
+                   help="photos or scans of graphkin worksheets with the polygon drawn in "
+                        "pencil (JPEG, PNG, or a PDF of one page per student); needs the "
+                        "extra graphkin[scan]")
+    p.add_argument("--show", metavar="PNG",
+                   help="with --scan: write the rectified sheet with what was read drawn over "
+                        "it (one file per page: PNG-2.png ...)")
     p.add_argument("--scale", metavar="SCALE",
                    help='drawing scale, e.g. "1 in = 20 ft/s" (default: the scale noted in the '
                         "drawing, else fitted to the input crank's image)")
@@ -70,12 +78,18 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.errors import InputError
     from graphkin.units import parse_quantity
 
-    if not args.answers and not args.drawing:
-        raise InputError("give an answers file or --drawing", file=args.file)
+    if not args.answers and not args.drawing and not args.scan:
+        raise InputError("give an answers file, --drawing or --scan", file=args.file)
+    if args.show and not args.scan:
+        raise InputError("--show draws what --scan read: give --scan PHOTO", key="--show")
     from graphkin.commands.cam import check_answers, is_cam_file
 
     if is_cam_file(args.file):  # a cam file's own answers (graphkin.cams.answers)
         return check_answers(args)
+    if args.scan:
+        from graphkin.scan import need_cv2
+
+        need_cv2()
     override: dict[str, float] = {}
     if args.relative is not None:
         override["relative"] = parse_fraction(args.relative, key="--relative")
@@ -96,7 +110,7 @@ def run(args: argparse.Namespace) -> int:
     mech = graphkin.load(args.file)
     sol = mech.solve()
     diag = Diagnoser(Evaluator(sol))
-    single = len(args.answers) + len(args.drawing) == 1 and not args.csv
+    single = len(args.answers) + len(args.drawing) == 1 and not args.csv and not args.scan
     results: list[tuple[str, Report | None, str]] = []
     status = 0
     out = sys.stdout
@@ -142,13 +156,26 @@ def run(args: argparse.Namespace) -> int:
         _print(rep, args.quiet, path, out)
         results.append((path, rep, ""))
         status = _worse(status, rep)
+    if args.scan:
+        from graphkin.scan.batch import scan_reports
+
+        for name, srep, err in scan_reports(sol, args.file, args.scan, tol_for(CheckTolerance()),
+                                            diag, show=args.show):
+            if srep is None:
+                warn(err)
+                status = 2
+            else:
+                srep.title = f"== {name}: {srep.title}"
+                _print(srep, args.quiet, name, out)
+                status = _worse(status, srep)
+            results.append((name, srep, err))
     if args.csv:
         text = marks_csv(results)
         if args.csv == "-":
             out.write(text)
         else:
             if any(Path(args.csv).resolve() == Path(p).resolve()
-                   for p in [args.file, *args.answers, *args.drawing]):
+                   for p in [args.file, *args.answers, *args.drawing, *args.scan]):
                 raise InputError("the marks would overwrite an input file", file=args.csv)
             try:
                 Path(args.csv).write_text(text, encoding="utf-8")

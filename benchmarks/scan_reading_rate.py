@@ -1,0 +1,134 @@
+"""The reading rate of ``check --scan`` on synthetic photos (the table in docs/checking.md).
+
+Usage::
+
+    python benchmarks/scan_reading_rate.py [--mechanisms 15]
+
+Random four-bars and slider-cranks (``tests/strategies.py``, derandomized:
+the same mechanisms every run), each on a velocity or acceleration
+worksheet, drawn by hand three ways (right; the polygon turned 180°, a
+reversed sense; one image 3-10 % too long or short) and photographed at each
+degradation level of ``tests/scan/photos.py``.  A photo counts as *read* when
+every row is marked as the drawing intends: right rows ``ok``; the reversed
+polygon wrong with ``sense`` (or following through from it); the wrong length
+``WRONG`` and every other row ``ok``.  Mechanisms whose images are closer
+than 5 mm to each other or 6 mm to the pole are left out (and counted).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from collections import defaultdict
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "tests"))
+
+from hypothesis import HealthCheck, Phase, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+from scan.photos import LEVELS, exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from strategies import fourbars, slider_cranks  # noqa: E402
+
+from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
+from graphkin.check.report import OK, WRONG  # noqa: E402
+from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.sheet import Page  # noqa: E402
+
+
+def intended(case: str, rows: list[Any], wrong: str | None) -> bool:
+    if case == "right":
+        return all(r.verdict == OK for r in rows)
+    if case == "reversed":
+        return all(r.code == "sense" or r.code.startswith("follows:") for r in rows) and \
+            any(r.code == "sense" for r in rows)
+    return all((r.verdict == WRONG) if r.key.endswith(f"_{wrong}") else (r.verdict == OK)
+               for r in rows)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--mechanisms", type=int, default=15)
+    ap.add_argument("--levels", nargs="+", choices=list(LEVELS), default=list(LEVELS))
+    ap.add_argument("--show-files", action="store_true",
+                    help="print the mechanism file of every right drawing misread")
+    args = ap.parse_args()
+    n, levels = args.mechanisms, args.levels
+    tally: dict[tuple[str, str], list[int]] = defaultdict(lambda: [0, 0])
+    small: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    false_names = [0]
+    skipped = [0]
+    fails: list[str] = []
+    t0 = time.perf_counter()
+
+    @settings(max_examples=n, derandomize=True, database=None, deadline=None,
+              phases=[Phase.generate],
+              suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+    @given(rm=st.one_of(fourbars(), slider_cranks()),
+           diagram=st.sampled_from(["velocity", "acceleration"]),
+           seed=st.integers(0, 2**16), factor=st.floats(0.03, 0.10),
+           longer=st.booleans())
+    def one(rm: Any, diagram: str, seed: int, factor: float, longer: bool) -> None:
+        sol = rm.mechanism().solve()
+        lay = layout_for(sol, diagram, rm.kind)
+        images = exact_images(sol, lay)
+        pole = np.array(lay.pole)
+        pts = list(images.values())
+        if not images or any(np.hypot(*(p - pole)) < 6 for p in pts) or any(
+                np.hypot(*(p - q)) < 5 for i, p in enumerate(pts) for q in pts[i + 1:]):
+            skipped[0] += 1
+            return
+        diag = Diagnoser(Evaluator(sol))
+        sheet = sheet_pixels(sol, lay)
+        name = sorted(images)[seed % len(images)]
+        f = 1 + factor if longer else 1 - factor
+        cases = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
+                 "length": {**images, name: pole + f * (images[name] - pole)}}
+        for level in levels:
+            for case, drawn in cases.items():
+                photo = hand_photo(sol, lay, sheet, drawn, level, seed)
+                try:
+                    read = read_sheet(sol, Page("p", photo), diag, lay.digest)
+                    rows = mark_scan(sol, read, "p", CheckTolerance(), diag).rows
+                    good = intended(case, rows, name)
+                except Exception as exc:  # noqa: BLE001 - counted as not read
+                    rows, good = [], False
+                    fails.append(f"{rm.kind} {diagram} {level} {case}: {exc}")
+                tally[(level, case)][0] += good
+                tally[(level, case)][1] += 1
+                if case == "length":
+                    band = "3-5 %" if factor < 0.05 else "5-10 %"
+                    small[f"{level} {band}"][0] += good
+                    small[f"{level} {band}"][1] += 1
+                if case == "right" and not good:
+                    # a usual mistake named on a right drawing (not "unexplained", "not-found")
+                    false_names[0] += any(r.verdict != OK and r.code not in
+                                          ("unexplained", "not-found") for r in rows)
+                    fails.append(f"{rm.kind} {diagram} {level} right: " + "; ".join(
+                        f"{r.key} {r.verdict} {r.code} {r.error}" for r in rows
+                        if r.verdict != OK) + (f"\n      {rm.data}" if args.show_files else ""))
+
+    one()
+    print(f"{time.perf_counter() - t0:.0f} s; mechanisms left out (images too close): "
+          f"{skipped[0]}")
+    print("| level | right drawings read right | reversed sense named | wrong length marked "
+          "wrong, rest right |")
+    print("|---|---|---|---|")
+    for level in levels:
+        cells = []
+        for case in ("right", "reversed", "length"):
+            good, total = tally[(level, case)]
+            cells.append(f"{good}/{total} ({100 * good / max(total, 1):.0f} %)")
+        print(f"| {level} | " + " | ".join(cells) + " |")
+    print("wrong length by size:", {k: f"{g}/{t}" for k, (g, t) in sorted(small.items())})
+    print("right drawings with a false mistake name:", false_names[0])
+    for line in fails:
+        print("  ", line if args.show_files else line[:300])
+
+
+if __name__ == "__main__":
+    main()

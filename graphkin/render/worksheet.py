@@ -1,0 +1,143 @@
+"""A worksheet to draw a velocity or acceleration polygon on by hand, and mark from a photo.
+
+One page of A4 or Letter, in millimetres: the mechanism to a round scale
+(top), the polygon area with the pole O_V (or O_A) placed and the polygon's
+scale printed (bottom), four ArUco markers at the corners and a fifth top
+centre (what the sheet is, for ``graphkin check --scan``), and one printed
+identity line (the mechanism file's hash, the diagram, the scale, the pole)
+that is also the PDF's ``Subject`` metadata as JSON.  ``upto=K`` prints the
+construction's first K steps in the polygon area (``draw --upto``).
+
+The layout's numbers are in :mod:`graphkin.render.worksheet_layout`, shared
+with the scan reader.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (the velocity polygon), Sec. 4.3
+(the acceleration polygon).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from graphkin.render.worksheet_layout import MARKER_MM, Layout, marker_bits
+
+__all__ = ["worksheet_figure", "save_worksheet"]
+
+_INK = "black"
+_LIGHT = "0.55"
+
+
+def _markers(ax: Any, layout: Layout) -> None:
+    from matplotlib.patches import Rectangle
+
+    c = MARKER_MM / 6
+    for mid, x0, y0 in layout.markers:
+        cells = marker_bits(mid)
+        for r in range(6):
+            for col in range(6):
+                if cells[r, col]:
+                    ax.add_patch(Rectangle((x0 + col * c, y0 + (5 - r) * c), c, c,
+                                           facecolor=_INK, edgecolor="none", lw=0,
+                                           gid=f"marker-{mid}"))
+
+
+def _mechanism(fig: Any, sol: Any, layout: Layout) -> None:
+    """The posture, drawn into an axes over the mechanism box, 1 mm = mech_per_mm."""
+    from graphkin.render.mpl import draw
+
+    w, h = layout.size
+    x0, y0, x1, y1 = layout.mechanism_box
+    ax = fig.add_axes((x0 / w, y0 / h, (x1 - x0) / w, (y1 - y0) / h))
+    draw(sol, "posture", ax=ax)
+    cx, cy = layout.mech_center
+    k = layout.mech_per_mm
+    ax.set_aspect("auto")
+    ax.set_xlim(cx - (x1 - x0) / 2 * k, cx + (x1 - x0) / 2 * k)
+    ax.set_ylim(cy - (y1 - y0) / 2 * k, cy + (y1 - y0) / 2 * k)
+    ax.set_axis_off()
+
+
+def _given_steps(fig: Any, sol: Any, layout: Layout) -> None:
+    """The construction's first ``upto`` steps, to the polygon's scale about the pole."""
+    from graphkin.render.mpl import draw
+
+    w, h = layout.size
+    x0, y0, x1, y1 = layout.polygon_box
+    ax = fig.add_axes((x0 / w, y0 / h, (x1 - x0) / w, (y1 - y0) / h))
+    d = draw(sol, layout.diagram, ax=ax, upto=layout.upto - 1)
+    for gid, group in d.groups.items():          # the panel's own scale bar: ours is printed
+        if "scale" in gid:
+            group.set_visible(False)
+    for key in [k for k in d if k.startswith("scale")]:
+        d[key].set_visible(False)
+    for t in ax.texts:                            # the panel's title: the sheet has its own
+        if "polygon" in t.get_text().lower():
+            t.set_visible(False)
+    k = layout.per_mm
+    px, py = layout.pole
+    ax.set_aspect("auto")
+    ax.set_xlim((x0 - px) * k, (x1 - px) * k)
+    ax.set_ylim((y0 - py) * k, (y1 - py) * k)
+    ax.set_axis_off()
+
+
+def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:
+    """The worksheet as a matplotlib Figure of the paper's size (axes in mm).
+
+    Parameters
+    ----------
+    sol : Solution
+    layout : Layout
+        From :func:`graphkin.render.worksheet_layout.worksheet_layout`.
+    title : str
+        The mechanism's title, printed under the markers.
+    """
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Circle, Rectangle
+
+    w, h = layout.size
+    fig = Figure(figsize=(w / 25.4, h / 25.4))
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, w)
+    ax.set_ylim(0, h)
+    ax.set_axis_off()
+    _markers(ax, layout)
+    top = layout.mechanism_box[3]
+    letter = "V" if layout.diagram == "velocity" else "A"
+    ax.text(layout.mechanism_box[0], top + 8.0, (title or "Mechanism")[:90], fontsize=9,
+            va="bottom", gid="worksheet-title")
+    ax.text(layout.mechanism_box[0], top + 3.0,
+            f"Mechanism drawn to 1 mm = {layout.mech_per_mm:.6g} {layout.length_unit}.  "
+            f"Draw the {layout.diagram} polygon from O_{letter} below, to the scale printed; "
+            "label the image points.", fontsize=6.5, va="bottom", gid="worksheet-task")
+    _mechanism(fig, sol, layout)
+    x0, y0, x1, y1 = layout.polygon_box
+    ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor=_LIGHT, lw=0.5,
+                           gid="polygon-area"))
+    ax.text(x0, y1 + 2.0, f"{layout.diagram.capitalize()} polygon:  {layout.scale_text}",
+            fontsize=8, va="bottom", gid=f"scale-text-{layout.diagram}")
+    px, py = layout.pole
+    if layout.upto:
+        _given_steps(fig, sol, layout)
+    ax.add_patch(Circle((px, py), 0.7, color=_INK, gid="pole"))
+    if not layout.upto:                           # else the given steps label it
+            ax.text(px - 1.5, py - 1.5, f"O$_{letter}$", fontsize=8, ha="right", va="top",
+                gid="pole-label")
+    ax.text(w / 2, layout.markers[3][2] + MARKER_MM / 2, layout.identity_line(), fontsize=5,
+            ha="center", va="center", color="0.3", gid="worksheet-identity")
+    return fig
+
+
+def save_worksheet(fig: Any, layout: Layout, path: str | Path, dpi: float = 200.0) -> None:
+    """Write the worksheet (PDF, PNG or SVG by the suffix); a PDF carries the identity."""
+    p = Path(path)
+    meta: dict[str, Any] = {}
+    if p.suffix.lower() == ".pdf":
+        meta = {"Title": "graphkin worksheet", "Subject": layout.identity_json(),
+                "Creator": "graphkin", "CreationDate": None}
+    elif p.suffix.lower() == ".svg":
+        meta = {"Date": None, "Description": layout.identity_json()}
+    fig.savefig(p, dpi=dpi, metadata=meta or None)

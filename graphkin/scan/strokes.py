@@ -1,0 +1,265 @@
+"""The pencil line segments in a rectified worksheet's polygon area, in mm on the sheet.
+
+1. The light is flattened: the paper's brightness is estimated by a grey
+   closing (a dilation then an erosion, 4 mm across, which wipes out lines
+   thinner than that) and the page divided by it; ink is where the ratio is
+   below :data:`INK_RATIO`.
+2. Everything the worksheet printed is masked out (its ink drawn again and
+   grown by 1 mm) and everything outside the polygon area.
+3. OpenCV's line segment detector finds straight pieces along each stroke's
+   edges; pieces on one line (within 3° and 1.3 mm, with gaps up to 3 mm)
+   are merged into one segment, and segments shorter than :data:`MIN_MM`
+   (arrowheads, letters, dots) are dropped.
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (the polygon's vectors are
+straight lines between image points).
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+
+from graphkin.scan import need_cv2
+from graphkin.scan.sheet import PX_PER_MM
+
+__all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "ends", "vertex_at"]
+
+INK_RATIO = 0.84
+"""A pixel darker than this fraction of the paper around it is pencil."""
+MIN_MM = 5.0
+"""Shorter segments are arrowheads, letters or dots."""
+_ANGLE = math.radians(3.0)
+_ACROSS_MM = 1.3
+_GAP_MM = 3.0
+_SPREAD_SIN = math.sin(math.radians(8.0))
+"""Lines meeting at a vertex at more than 8° give it as their meeting point."""
+_RUN_MM = 2.5
+"""An end is run on along its ink at most this far (through an arrowhead to its tip)."""
+_MISS_MM = 0.6
+_GROW = int(round(2.2 * PX_PER_MM)) | 1
+"""The printed ink is masked grown to this many pixels across (2.2 mm)."""
+_SIGMA_LINE = 0.15
+_SIGMA_END = 0.4
+"""A line passing farther than this from the others' meeting point is not one of them."""
+
+
+def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, int]
+           ) -> np.ndarray:
+    """The light-flattened page in the polygon area, 1.0 = paper, printed ink set to paper."""
+    cv2 = need_cv2()
+    x0, y0, x1, y1 = box_px
+    g = gray[y0:y1, x0:x1].astype(np.float32)
+    g = cv2.medianBlur(g.astype(np.uint8), 3).astype(np.float32)
+    k = int(round(4 * PX_PER_MM)) | 1
+    kernel = cv2.getStructuringElement(cv2.MORPH_RECT, (k, k))
+    paper = cv2.morphologyEx(g, cv2.MORPH_CLOSE, kernel)
+    paper = cv2.GaussianBlur(paper, (0, 0), 2 * PX_PER_MM)
+    ratio = np.clip(g / np.maximum(paper, 1.0), 0.0, 1.0)
+    grown = cv2.dilate(printed[y0:y1, x0:x1].astype(np.uint8),
+                       cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (_GROW, _GROW))).astype(bool)
+    ratio[grown] = 1.0
+    edge = int(round(1.5 * PX_PER_MM))
+    ratio[:edge, :] = ratio[-edge:, :] = 1.0
+    ratio[:, :edge] = ratio[:, -edge:] = 1.0
+    return ratio
+
+
+def segments(ratio: np.ndarray, origin_px: tuple[int, int], sheet_h_mm: float) -> np.ndarray:
+    """The merged pencil segments, shape (n, 2, 2), in sheet mm (y up)."""
+    cv2 = need_cv2()
+    ink = ratio < INK_RATIO
+    # the strokes, cleaned of specks, as a smooth dark-on-light picture for the detector
+    clean = cv2.morphologyEx(ink.astype(np.uint8), cv2.MORPH_OPEN,
+                             np.ones((2, 2), np.uint8))
+    img = (255 - 255 * clean).astype(np.uint8)
+    img = cv2.GaussianBlur(img, (0, 0), 0.8)
+    lsd = cv2.createLineSegmentDetector(cv2.LSD_REFINE_STD)
+    found = lsd.detect(img)[0]
+    if found is None or not len(merge(found.reshape(-1, 2, 2) / PX_PER_MM)):
+        return np.zeros((0, 2, 2))
+    px = merge(found.reshape(-1, 2, 2).astype(float) / PX_PER_MM) * PX_PER_MM
+    px = np.array([_refine(sg, ratio, ink) for sg in px]).reshape(-1, 2, 2)
+    x0, y0 = origin_px
+    mm = np.empty_like(px)
+    # pixel centres are whole numbers: pixel j spans j - 0.5 ... j + 0.5, i.e. mm j/PX ... (j+1)/PX
+    mm[..., 0] = (px[..., 0] + x0 + 0.5) / PX_PER_MM
+    mm[..., 1] = sheet_h_mm - (px[..., 1] + y0 + 0.5) / PX_PER_MM
+    return mm
+
+
+def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
+    """A merged segment (px) fitted to its pencil stroke.
+
+    Its line goes through the ink's middle; its ends run on along the ink
+    (through an arrowhead to its tip, over gaps under 0.8 mm).
+
+    The line is the weighted principal axis of the dark pixels within 0.9 mm of
+    it, leaving out 2.5 mm at each end (where other lines join); so the two
+    edges the detector saw give the stroke's centre to a fraction of a pixel.
+    """
+    p, q = seg
+    length = float(np.hypot(*(q - p)))
+    u = (q - p) / length
+    nrm = np.array([-u[1], u[0]])
+    pad = 2.0 * PX_PER_MM
+    h, w = ratio.shape
+    xa = int(max(min(p[0], q[0]) - pad, 0))
+    xb = int(min(max(p[0], q[0]) + pad, w - 1)) + 1
+    ya = int(max(min(p[1], q[1]) - pad, 0))
+    yb = int(min(max(p[1], q[1]) + pad, h - 1)) + 1
+    yy, xx = np.mgrid[ya:yb, xa:xb]
+    wgt = np.clip(0.95 - ratio[ya:yb, xa:xb], 0.0, None)
+    rel = np.stack([xx - p[0], yy - p[1]], axis=-1).astype(float)
+    t = rel @ u
+    o = rel @ nrm
+    trim = 2.5 * PX_PER_MM if length > 8 * PX_PER_MM else 0.2 * length
+    sel = (np.abs(o) < 0.9 * PX_PER_MM) & (t > trim) & (t < length - trim) & (wgt > 0)
+    if np.count_nonzero(sel) >= 6:
+        wv = wgt[sel]
+        pts = np.stack([xx[sel], yy[sel]], axis=-1).astype(float)
+        c = (pts * wv[:, None]).sum(axis=0) / wv.sum()
+        d = pts - c
+        cov = (d * wv[:, None]).T @ d
+        vals, vecs = np.linalg.eigh(cov)
+        v = vecs[:, 1]
+        u = v if float(v @ u) > 0 else -v
+        a, b = float((p - c) @ u), float((q - c) @ u)
+        p, q = c + a * u, c + b * u
+    return np.array([_run_on(p, -u, ink), _run_on(q, u, ink)])
+
+
+def _run_on(end: np.ndarray, u: np.ndarray, ink: np.ndarray) -> np.ndarray:
+    """Walk from ``end`` along ``u`` while there is ink (gaps under 0.8 mm), up to 2.5 mm."""
+    h, w = ink.shape
+    step = 0.1 * PX_PER_MM
+    last = 0.0
+    s = step
+    while s <= _RUN_MM * PX_PER_MM and s - last <= 0.8 * PX_PER_MM:
+        x, y = end + s * u
+        i, j = int(round(y)), int(round(x))
+        if not (0 <= i < h and 0 <= j < w):
+            break
+        if ink[i, j]:
+            last = s
+        s += step
+    return end + last * u
+
+
+def merge(segs: np.ndarray) -> np.ndarray:
+    """Pieces of one straight stroke joined: (n, 2, 2) -> (m, 2, 2), long ones only.
+
+    Two pieces are one when their directions differ by less than 3°, each
+    lies within 1.3 mm of the other's line, and they overlap or leave a gap
+    under 3 mm.  The merged segment spans the pieces' ends projected on the
+    longest piece's line, moved midway between the outermost pieces (the two
+    edges of one pencil line give its middle).  Passes repeat until nothing more joins.
+    """
+    cur = np.asarray(segs, dtype=float).reshape(-1, 2, 2)
+    while True:
+        nxt = _merge_pass(cur)
+        if len(nxt) == len(cur):
+            break
+        cur = nxt
+    keep = np.hypot(*(cur[:, 1] - cur[:, 0]).T) >= MIN_MM if len(cur) else np.zeros(0, bool)
+    return cur[keep] if len(cur) else np.zeros((0, 2, 2))
+
+
+def _merge_pass(segs: np.ndarray) -> np.ndarray:
+    items = [s for s in segs if np.hypot(*(s[1] - s[0])) > 0.4]
+    items.sort(key=lambda s: -float(np.hypot(*(s[1] - s[0]))))
+    groups: list[list[np.ndarray]] = []
+    lines: list[tuple[np.ndarray, np.ndarray, float, float]] = []   # point, dir, t0, t1
+    for s in items:
+        d = s[1] - s[0]
+        d = d / np.hypot(*d)
+        for gi, (p, u, t0, t1) in enumerate(lines):
+            if abs(float(u[0] * d[1] - u[1] * d[0])) > math.sin(_ANGLE):
+                continue
+            n = np.array([-u[1], u[0]])
+            if max(abs(float((s[0] - p) @ n)), abs(float((s[1] - p) @ n))) > _ACROSS_MM:
+                continue
+            a, b = sorted((float((s[0] - p) @ u), float((s[1] - p) @ u)))
+            if a > t1 + _GAP_MM or b < t0 - _GAP_MM:
+                continue
+            groups[gi].append(s)
+            lines[gi] = (p, u, min(t0, a), max(t1, b))
+            break
+        else:
+            groups.append([s])
+            lines.append((s[0].copy(), d, 0.0, float(np.hypot(*(s[1] - s[0])))))
+    out = []
+    for g, (p, u, _t0, _t1) in zip(groups, lines, strict=True):
+        pts = np.concatenate(g)
+        n = np.array([-u[1], u[0]])
+        off = np.array([float((s.mean(axis=0) - p) @ n) for s in g])
+        # the two edges of a pencil line: the middle between them is the line
+        mid = (float(off.min()) + float(off.max())) / 2
+        c = p + mid * n
+        t = (pts - c) @ u
+        out.append(np.array([c + float(t.min()) * u, c + float(t.max()) * u]))
+    return np.array(out) if out else np.zeros((0, 2, 2))
+
+
+def ends(segs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Every segment end (2n, 2) and the index of its segment."""
+    return segs.reshape(-1, 2), np.repeat(np.arange(len(segs)), 2)
+
+
+def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray:
+    """Where the segments ``idx`` that end near ``guess`` meet.
+
+    The segments that pass through ``guess`` (within 1 mm of their line,
+    between their ends: an image point in the middle of a straight image,
+    where the lines of a link's collinear points merged) count too.  The
+    lines that agree on the vertex are those within 0.6 mm of the crossing
+    of two of them (over 8° apart) that most lines agree on (a letter or a
+    barb ending nearby is left out); the vertex is then the least-squares
+    point of those lines (σ 0.15 mm) and of the mean of the ends (σ 0.4 mm):
+    a line overshot or stopped short still points at the vertex, and along
+    lines that meet at a narrow angle the ends decide.
+    """
+    lines = list(idx)
+    for i, (p, q) in enumerate(segs):
+        if i in lines:
+            continue
+        length = float(np.hypot(*(q - p)))
+        u = (q - p) / length
+        t = float((guess - p) @ u)
+        if 1.0 < t < length - 1.0 and abs(float((guess - p) @ np.array([-u[1], u[0]]))) < 1.0:
+            lines.append(i)
+    normals, offsets = [], []
+    for i in lines:
+        p, q = segs[i]
+        d = (q - p) / np.hypot(*(q - p))
+        n = np.array([-d[1], d[0]])
+        normals.append(n)
+        offsets.append(float(n @ p))
+    A, b = np.array(normals), np.array(offsets)
+    end = np.mean([min(segs[i], key=lambda e: float(np.hypot(*(e - guess)))) for i in idx],
+                  axis=0)
+    best: tuple[int, float, np.ndarray] | None = None
+    for i, j in itertools.combinations(range(len(lines)), 2):
+        if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < _SPREAD_SIN:
+            continue
+        x = np.linalg.solve(A[[i, j]], b[[i, j]])
+        if float(np.hypot(*(x - guess))) >= 3.0:
+            continue
+        miss = np.abs(A @ x - b)
+        support = int(np.count_nonzero(miss <= _MISS_MM))
+        total = float(miss[miss <= _MISS_MM].sum())
+        if best is None or (support, -total) > (best[0], -best[1]):
+            best = (support, total, x)
+    # the lines that agree on the vertex (a letter or a barb ending nearby does not)
+    ok = np.abs(A @ (best[2] if best is not None else end) - b) <= _MISS_MM
+    if not np.any(ok):
+        return end
+    # least squares of the lines (σ 0.15 mm across) and the ends (σ 0.4 mm): lines at a
+    # wide angle fix the vertex; along lines that meet at a narrow one, the ends do
+    M = A[ok].T @ A[ok] / _SIGMA_LINE**2 + np.eye(2) / _SIGMA_END**2
+    r = A[ok].T @ b[ok] / _SIGMA_LINE**2 + end / _SIGMA_END**2
+    return np.asarray(np.linalg.solve(M, r))

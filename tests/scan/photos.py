@@ -1,0 +1,219 @@
+"""Synthetic photos of a worksheet with a polygon drawn by hand (numpy and OpenCV only).
+
+``sheet_pixels`` renders the worksheet as ``graphkin worksheet`` prints it;
+``draw_hand`` draws a polygon on it as a student would with a pencil (grey
+strokes with a wobble, ends overshot or short, arrowheads, a construction
+line, small gaps, handwritten-like letters); ``photograph`` takes a photo of
+it (perspective, rotation, uneven light, blur, noise, JPEG).  The degradation
+levels are the ones the reading rate in docs/checking.md is measured at.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import pytest
+
+import graphkin
+from graphkin.render.worksheet_layout import Layout, mechanism_hash, worksheet_layout
+
+cv2 = pytest.importorskip("cv2")
+
+PX = 6.0
+"""Pixels per mm of the 'printed' sheet before it is photographed."""
+
+
+@dataclass(frozen=True)
+class Degradation:
+    """How bad the photo is."""
+
+    tilt: float          # perspective: corner displacement, fraction of the page
+    turn_deg: float      # rotation of the page in the photo
+    light: float         # darkest / brightest paper
+    blur: float          # Gaussian sigma, px of the photo
+    noise: float         # grey levels, sigma
+    jpeg: int            # quality
+    width: int           # photo's width, px
+
+
+LEVELS: dict[str, Degradation] = {
+    "scan": Degradation(0.0, 0.5, 0.95, 0.5, 2.0, 92, 1400),
+    "mild": Degradation(0.04, 4.0, 0.8, 1.0, 4.0, 85, 1700),
+    "phone": Degradation(0.08, 10.0, 0.6, 1.5, 6.0, 75, 1800),
+    "harsh": Degradation(0.12, 25.0, 0.45, 2.2, 9.0, 55, 1500),
+}
+
+
+def solved(text: str) -> Any:
+    return graphkin.loads(text).solve()
+
+
+def layout_for(sol: Any, diagram: str, text: str, paper: str = "a4",
+               upto: int | None = None) -> Layout:
+    return worksheet_layout(sol, diagram, paper, mechanism_hash(text.encode()), upto)
+
+
+def sheet_pixels(sol: Any, layout: Layout, title: str = "") -> np.ndarray:
+    """The printed worksheet, grey, at :data:`PX` px/mm (y down)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from graphkin.render.worksheet import worksheet_figure
+
+    fig = worksheet_figure(sol, layout, title=title)
+    fig.set_dpi(PX * 25.4)
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    rgba = np.asarray(canvas.buffer_rgba())
+    return np.ascontiguousarray(cv2.cvtColor(rgba[..., :3], cv2.COLOR_RGB2GRAY))
+
+
+def _px(layout: Layout, p: np.ndarray) -> np.ndarray:
+    """Sheet mm -> OpenCV pixel coordinates (pixel centres whole numbers) of the printed sheet."""
+    return np.array([p[0] * PX - 0.5, (layout.size[1] - p[1]) * PX - 0.5])
+
+
+def _stroke(img: np.ndarray, layout: Layout, p: np.ndarray, q: np.ndarray,
+            rng: np.random.Generator, grey: int, gap: bool, width: int = 2) -> None:
+    """A pencil line from p to q (mm) with a slow wobble of about 0.1 mm."""
+    n = max(int(np.hypot(*(q - p)) / 2.0), 2)
+    t = np.linspace(0.0, 1.0, n + 1)
+    d = (q - p) / max(float(np.hypot(*(q - p))), 1e-9)
+    nrm = np.array([-d[1], d[0]])
+    wob = np.cumsum(rng.normal(0.0, 0.04, n + 1))
+    wob -= np.linspace(wob[0], wob[-1], n + 1)           # the ends stay where they are meant
+    pts = p + np.outer(t, q - p) + np.outer(np.clip(wob, -0.25, 0.25), nrm)
+    cut = rng.integers(1, n) if gap and n > 6 else -1
+    for i in range(n):
+        if i == cut:
+            continue                                     # a small gap (about 2 mm)
+        a, b = _px(layout, pts[i]), _px(layout, pts[i + 1])
+        cv2.line(img, (int(round(a[0] * 16)), int(round(a[1] * 16))),
+                 (int(round(b[0] * 16)), int(round(b[1] * 16))), grey, width,
+                 cv2.LINE_AA, shift=4)
+
+
+def draw_hand(img: np.ndarray, layout: Layout, images: dict[str, np.ndarray],
+              links: list[list[str]], rng: np.random.Generator, *,
+              construction: bool = True) -> np.ndarray:
+    """Draw a polygon by hand: a vector from the pole to each image, the images of each link.
+
+    ``images`` are the image points (sheet mm) as the student means them;
+    ``links`` the names on each moving link (their images joined, as the
+    velocity images of Sec. 3.5).  Every end is overshot or stopped short by
+    -0.3 to +0.4 mm; each absolute vector has a two-barb arrowhead.
+    """
+    out = img.copy()
+    pole = np.array(layout.pole)
+    grey = int(rng.integers(50, 120))
+
+    def line(a: np.ndarray, b: np.ndarray, arrow: bool) -> None:
+        d = (b - a) / max(float(np.hypot(*(b - a))), 1e-9)
+        a2 = a - d * rng.uniform(-0.3, 0.4)
+        b2 = b + d * rng.uniform(-0.3, 0.4)
+        _stroke(out, layout, a2, b2, rng, grey + int(rng.integers(-15, 15)),
+                gap=bool(rng.random() < 0.3))
+        if arrow:
+            for s in (1.0, -1.0):
+                ang = math.radians(180.0 + s * rng.uniform(15.0, 25.0))
+                rot = np.array([[math.cos(ang), -math.sin(ang)], [math.sin(ang), math.cos(ang)]])
+                _stroke(out, layout, b, b + rot @ d * rng.uniform(2.0, 3.0), rng, grey,
+                        gap=False)
+
+    for p in images.values():
+        line(pole, p, arrow=True)
+    for names in links:
+        there = [n for n in names if n in images]
+        for i in range(len(there)):
+            for j in range(i + 1, len(there)):
+                line(images[there[i]], images[there[j]], arrow=False)
+    for name, p in images.items():
+        off = np.array([2.0, 1.5]) + rng.uniform(-0.5, 0.5, 2)
+        q = _px(layout, p + off)
+        cv2.putText(out, name.lower(), (int(q[0]), int(q[1])), cv2.FONT_HERSHEY_SCRIPT_SIMPLEX,
+                    0.9, grey, 2, cv2.LINE_AA)
+    if construction and images:
+        # a faint construction line through one image, well past it (a direction laid off)
+        name = sorted(images)[int(rng.integers(len(images)))]
+        p = images[name]
+        ang = rng.uniform(0.0, math.pi)
+        d = np.array([math.cos(ang), math.sin(ang)])
+        _stroke(out, layout, p - 25 * d, p + 25 * d, rng, 185, gap=False, width=1)
+    return out
+
+
+def photograph(img: np.ndarray, deg: Degradation, rng: np.random.Generator) -> np.ndarray:
+    """A photo of the sheet: perspective, rotation, uneven light, blur, noise, JPEG."""
+    h, w = img.shape
+    W = deg.width
+    H = int(W * 1.35)
+    src = np.float32([[0, 0], [w, 0], [w, h], [0, h]])
+    # the page, turned, fitted into 80 % of the frame, its corners moved for perspective
+    c = np.array([W / 2, H / 2])
+    k = 0.8 * min(W / w, H / h) / (1 + abs(math.sin(math.radians(deg.turn_deg))) * 0.35)
+    t = math.radians(deg.turn_deg * rng.choice([-1.0, 1.0]))
+    rot = np.array([[math.cos(t), -math.sin(t)], [math.sin(t), math.cos(t)]])
+    dst = np.array([c + rot @ ((q - np.array([w / 2, h / 2])) * k) for q in src])
+    dst += rng.uniform(-1.0, 1.0, (4, 2)) * deg.tilt * np.array([W, H]) * 0.5
+    M = cv2.getPerspectiveTransform(src, dst.astype(np.float32))
+    photo = cv2.warpPerspective(img, M, (W, H), flags=cv2.INTER_AREA,
+                                borderMode=cv2.BORDER_CONSTANT, borderValue=90).astype(np.float32)
+    yy, xx = np.mgrid[0:H, 0:W].astype(np.float32)
+    ang = rng.uniform(0, 2 * math.pi)
+    ramp = (math.cos(ang) * (xx / W - 0.5) + math.sin(ang) * (yy / H - 0.5)) + 0.5
+    photo *= deg.light + (1 - deg.light) * np.clip(ramp, 0, 1)
+    if deg.blur > 0:
+        photo = cv2.GaussianBlur(photo, (0, 0), deg.blur)
+    photo += rng.normal(0.0, deg.noise, photo.shape).astype(np.float32)
+    ok, buf = cv2.imencode(".jpg", np.clip(photo, 0, 255).astype(np.uint8),
+                           [cv2.IMWRITE_JPEG_QUALITY, deg.jpeg])
+    assert ok
+    return cv2.imdecode(buf, cv2.IMREAD_GRAYSCALE)
+
+
+def exact_images(sol: Any, layout: Layout) -> dict[str, np.ndarray]:
+    """Every image point away from the pole, sheet mm (the analytic solver's values)."""
+    from graphkin.kinematics.analytic import solve_analytic
+
+    an = solve_analytic(sol.mechanism)
+    f = an.velocity if layout.diagram == "velocity" else an.acceleration
+    pole = np.array(layout.pole)
+    mech = sol.mechanism
+    out = {}
+    for n in mech.point_names:
+        if n in mech.helper_points:
+            continue
+        v = np.asarray(f(n), dtype=float) / layout.per_mm
+        if float(np.hypot(*v)) >= 2.5:
+            out[n] = pole + v
+    return out
+
+
+def links_of(sol: Any) -> list[list[str]]:
+    """The point names of each moving link (their images are joined on the sheet)."""
+    mech = sol.mechanism
+    return [[n for n in link.points if n not in mech.helper_points]
+            for lid, link in mech.links.items() if lid != "1"]
+
+
+def hand_photo(sol: Any, layout: Layout, sheet: np.ndarray, images: dict[str, np.ndarray],
+               level: str, seed: int) -> np.ndarray:
+    """The sheet with ``images`` drawn by hand, photographed at ``level``."""
+    rng = np.random.default_rng(seed)
+    return photograph(draw_hand(sheet, layout, images, links_of(sol), rng), LEVELS[level], rng)
+
+
+def class_pdf(path: Any, photos: list[np.ndarray]) -> None:
+    """A PDF of one photo per A4 page, as a scanner of a stack of sheets writes."""
+    from matplotlib.backends.backend_pdf import PdfPages
+    from matplotlib.figure import Figure
+
+    with PdfPages(path) as pdf:
+        for ph in photos:
+            fig = Figure(figsize=(8.27, 11.69))
+            ax = fig.add_axes((0, 0, 1, 1))
+            ax.imshow(ph, cmap="gray", vmin=0, vmax=255, interpolation="nearest")
+            ax.set_axis_off()
+            pdf.savefig(fig, dpi=150)
