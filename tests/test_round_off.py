@@ -201,3 +201,29 @@ def test_the_perturbation_moves_the_input() -> None:
     assert abs(moved["links"]["1"]["A"][1] - 10.0) == pytest.approx(1e-11, rel=1e-3)
     assert moved["drive"]["link"] == 2 and moved["drive"]["omega"] != "3.5 rad/s"
     assert json.dumps(perturb(data, random.Random(1), "ulps", 10.0)) != json.dumps(data)
+
+
+_REPO = Path(__file__).resolve().parents[1]
+
+
+@pytest.mark.parametrize("path", sorted((_REPO / "examples").rglob("*.toml")), ids=lambda p: p.name)
+def test_instant_center_table_prints_no_round_off(path: Path) -> None:
+    """A center's coordinate that is zero but for round-off prints as 0, not 1.8e-15.
+
+    The cam mechanism's I46 lies on the y axis: (0, 77.5) mm by construction
+    (P is pinned straight above O2); the intersection left 1.84e-15 in x.
+    """
+    import graphkin
+    from graphkin.output.centers import instant_centers_text
+
+    try:
+        mech = graphkin.load(path)
+        text = instant_centers_text(mech.solve())
+    except (GraphkinError, AttributeError, KeyError, TypeError):
+        pytest.skip("not a mechanism file with instant centers")
+    if text is None:
+        pytest.skip("no instant center table")
+    floor = 1e-9 * mech.scale
+    for m in re.finditer(r"\(([-0-9.e+]+), ([-0-9.e+]+)\)", text):
+        for v in map(float, m.groups()):
+            assert v == 0.0 or abs(v) >= floor, (path.name, m.group(0))

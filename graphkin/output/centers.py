@@ -17,7 +17,7 @@ from graphkin.kinematics.instant_centers import How, center_label, instant_cente
 from graphkin.kinematics.instant_centers.labels import _id_key
 from graphkin.kinematics.solution import Solution
 from graphkin.output.units import OutputUnits
-from graphkin.text import g6, table
+from graphkin.text import clean, g6, table
 from graphkin.tolerance import VERDICT_REL
 
 __all__ = ["instant_centers_json", "instant_centers_text", "is_batch"]
@@ -139,8 +139,10 @@ def instant_centers_text(sol: Solution, units: OutputUnits | None = None) -> str
             dx, dy = _canonical(c.point[:2])
             where = f"at infinity ∠{round(math.degrees(math.atan2(dy, dx)), 2) + 0.0:.2f}°"
         else:
-            where = (f"({g6(float(c.point[0]) * k + 0.0)}, {g6(float(c.point[1]) * k + 0.0)}) "
-                     f"{unit}")
+            # a coordinate that is zero but for the intersections' round-off prints as 0
+            tiny = VERDICT_REL * sol.mechanism.scale * k
+            where = (f"({g6(clean(float(c.point[0]) * k, tiny) + 0.0)}, "
+                     f"{g6(clean(float(c.point[1]) * k, tiny) + 0.0)}) {unit}")
         if c.how is How.KENNEDY:
             by = "Kennedy"
             extra = "on " + " and ".join(_line_words(x) for x in c.lines)
