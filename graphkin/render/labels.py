@@ -391,6 +391,19 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
                 if _arrow_beside(panel, ink, req.arrow, c, w, h):
                     _put(panel, ink, req, text, c, w, h)
                     return True
+        # a panel too small for the name and the distance from its reference point: shorter
+        # texts (without the reference, then the name alone), by the arrow or beside it
+        # anywhere, rather than a label across the construction's lines
+        for text in _shorter(req):
+            w, h = text_size(text, size, req.style)
+            sc, c, clean = _spot(panel, ink, req, w, h)
+            if clean:
+                _put(panel, ink, req, text, c, w, h)
+                return True
+            for c in _clear_spots(panel, ink, panel.to_paper(req.anchor), w, h):
+                if _arrow_beside(panel, ink, req.arrow, c, w, h):
+                    _put(panel, ink, req, text, c, w, h)
+                    return True
         _, c, clean, text, w, h = best
     if not (clean or req.parts):
         panel.crowded += 1
@@ -398,6 +411,16 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
         _arrow_beside(panel, ink, req.arrow, c, w, h)
     _put(panel, ink, req, text, c, w, h)
     return clean
+
+
+def _shorter(req: LabelRequest) -> list[str]:
+    """Shorter texts of a far point's label: its name and distance, then its name alone."""
+    if len(req.short) != 1 or req.parts:
+        return []
+    short = req.short[0]
+    name = short.split(",", 1)[0]
+    out = [f"{short}\n({req.ref})" if req.ref else short, short, name]
+    return [t for t in dict.fromkeys(out) if t and t != req.text and t not in req.fallback]
 
 
 def _clear_spots(panel: Panel, ink: _InkMap, a: np.ndarray, w: float,
