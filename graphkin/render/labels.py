@@ -405,6 +405,15 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
                     _put(panel, ink, req, text, c, w, h)
                     return True
         _, c, clean, text, w, h = best
+    if not clean and req.arrow is None:
+        # a far point of a list placed on its own: its distance without the reference, then
+        # its name alone, rather than a label across a line
+        for short in _shorter(req):
+            sw, sh = text_size(short, size, req.style)
+            _, sc_, ok = _spot(panel, ink, req, sw, sh)
+            if ok:
+                _put(panel, ink, req, short, sc_, sw, sh)
+                return True
     if not (clean or req.parts):
         panel.crowded += 1
     if req.arrow is not None and clean:
@@ -415,11 +424,19 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
 
 def _shorter(req: LabelRequest) -> list[str]:
     """Shorter texts of a far point's label: its name and distance, then its name alone."""
-    if len(req.short) != 1 or req.parts:
+    if req.parts or len(req.short) > 1:
         return []
-    short = req.short[0]
-    name = short.split(",", 1)[0]
-    out = [f"{short}\n({req.ref})" if req.ref else short, short, name]
+    if req.short:
+        short = req.short[0]
+        out = [f"{short}\n({req.ref})" if req.ref else short, short]
+    elif ", " in req.text and "\n" not in req.text and (" from " in req.text
+                                                        or "off the figure" in req.text):
+        # one far point of a list placed on its own ("C_N, 5182 ft from I")
+        short = req.text.rsplit(" from ", 1)[0].replace(" off the figure", "")
+        out = [short]
+    else:
+        return []
+    out.append(short.split(",", 1)[0])
     return [t for t in dict.fromkeys(out) if t and t != req.text and t not in req.fallback]
 
 

@@ -152,7 +152,7 @@ def test_a_random_mechanism_draws_cleanly_in_any_kind_sheet_and_format(rm, kind,
     sol = mech.solve()
     d = _draw_all_ways(sol, kind, sheet, fmt)
     if d is not None:
-        check_drawing(d, mech, far_may_cross=True)
+        check_drawing(d, mech)
 
 
 @pytest.mark.parametrize("name,sheet,fmt", [
