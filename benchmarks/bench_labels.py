@@ -11,6 +11,13 @@ It prints the CPU and wall time of solving, drawing (placing every label) and
 writing the SVG, for the posture, the velocity polygon and the default sheet
 (``all``: what ``graphkin draw FILE -o x.svg`` draws).  Nothing is asserted;
 the target (issues 11 and 24) is under 10 s for 300 points.
+
+Measured for 300 points, ``all``, CPU seconds on the shared 2-core machine
+(loaded): 19.6 s for the whole ``graphkin draw`` before issue 24's second
+round, 10.7 s after it (curvature's choice of two candidate points over all
+pairs at once instead of 46 000 Python iterations, label sizes measured once
+per digit pattern, the ring and grid of label places scored by one look-up,
+one clip box per panel instead of one per artist).
 """
 
 from __future__ import annotations

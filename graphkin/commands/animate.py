@@ -37,6 +37,10 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--centers", action="store_true", help="also draw the instant centers")
     p.add_argument("--inflection", action="store_true",
                    help="also draw each moving link's inflection circle (needs rates)")
+    p.add_argument("--polygons", choices=("cycle", "posture"), default="cycle",
+                   help="size the velocity and acceleration polygons at one scale for the "
+                        "whole cycle (default: lengths compare between postures) or each "
+                        "posture at the round scale that fits it (the page's 'fit polygons')")
     p.add_argument("--frames", default=None, metavar="DIR",
                    help="also write one SVG per posture into DIR (for slides)")
     p.add_argument("--gif", default=None, metavar="FILE",
@@ -73,7 +77,8 @@ def run(args: argparse.Namespace) -> int:
     with bar("animate", total=jobs, unit="file") as progress:
         if args.output is not None:
             text = animate_html(mech, count=args.count, start=args.start, stop=args.stop,
-                                centers=args.centers, inflection=args.inflection)
+                                centers=args.centers, inflection=args.inflection,
+                                polygons=args.polygons)
             out = write_text(args.output, text, "--output")
             print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
             progress.update(1)

@@ -33,6 +33,7 @@ from typing import Any
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.render.cycle_data import QUANTUM, cycle_data
+from graphkin.render.style import STYLES
 from graphkin.text import script_json
 
 __all__ = ["cycle_data", "animate_html", "QUANTUM"]
@@ -124,10 +125,62 @@ _JS = r"""
     return el(g, 'line', {x1: a[0], y1: -a[1], x2: b[0], y2: -b[1], 'class': cls,
                           'stroke-width': w});
   }
+  // labels at draw's size on the screen (render/style.py), each where it overlaps no label
+  // placed before it in the same picture: its usual place first, then around its point
+  var placed = [];
+  function upp(svg) {  // view units per screen pixel (the picture keeps its aspect)
+    var r = svg.getBoundingClientRect(), vb = svg.viewBox && svg.viewBox.baseVal;
+    if (!vb || !(r.width > 0) || !(r.height > 0) || !(vb.width > 0)) return null;
+    return Math.max(vb.width / r.width, vb.height / r.height);
+  }
+  function fontFor(svg, fallback, px) {
+    var u = upp(svg);
+    return u ? (px || D.label_px) * u : fallback;
+  }
+  var AROUND = [[1, 1], [1, -1], [-1, 1], [-1, -1], [1, 0], [-1, 0], [0, 1], [0, -1]];
+  var bounds = null;  // what the picture shows (view units, y up), set before its letters
+  function shown(svg) {
+    var u = upp(svg), r = svg.getBoundingClientRect(), vb = svg.viewBox.baseVal;
+    if (!u) return null;
+    var cx = vb.x + vb.width / 2, cy = vb.y + vb.height / 2;
+    var hw = r.width * u / 2, hh = r.height * u / 2;
+    return [cx - hw, -(cy + hh), cx + hw, -(cy - hh)];
+  }
+  function overlap(b) {  // how much of the box ``b`` other letters cover (or off the picture)
+    var sum = 0;
+    if (bounds && (b[0] < bounds[0] || b[1] < bounds[1] || b[2] > bounds[2] ||
+                   b[3] > bounds[3])) sum += 1e300;
+    placed.forEach(function (q) {
+      var ox = Math.min(b[2], q[2]) - Math.max(b[0], q[0]);
+      var oy = Math.min(b[3], q[3]) - Math.max(b[1], q[1]);
+      if (ox > 0 && oy > 0) sum += ox * oy;
+    });
+    return sum;
+  }
   function label(g, xy, text, size, cls, dx, dy) {
     if (!ok(xy)) return;
-    el(g, 'text', {x: xy[0] + (dx || size * 0.35), y: -xy[1] - (dy || size * 0.35),
-                   'font-size': size, 'class': cls || 'lbl'}, text);
+    // the box as the browser lays the text out: from the descent below the baseline to the
+    // ascent above it (DejaVu Sans: about 0.24 and 0.93 of the size)
+    var w = size * 0.66 * String(text).length + size * 0.15, h = size * 1.25;
+    var x0 = dx || size * 0.35, y0 = dy || size * 0.35, best = null, least = Infinity;
+    // its usual place, then rings around the point, farther out where it is crowded
+    var tries = [[x0, y0]];
+    [0.45, 1.2, 2.2, 3.4].forEach(function (r) {
+      AROUND.forEach(function (d) {
+        tries.push([d[0] * size * r + (d[0] < 0 ? -w : d[0] === 0 ? -w / 2 : 0),
+                    d[1] * size * r + (d[1] < 0 ? -h : d[1] === 0 ? -h * 0.4 : 0)]);
+      });
+    });
+    for (var k = 0; k < tries.length; k++) {
+      var b = [xy[0] + tries[k][0], xy[1] + tries[k][1] - size * 0.27,
+               xy[0] + tries[k][0] + w, xy[1] + tries[k][1] + size * 0.98];
+      var o = overlap(b);
+      if (o < least) { best = b; least = o; }
+      if (o === 0) break;
+    }
+    placed.push(best);
+    el(g, 'text', {x: best[0], y: -(best[1] + size * 0.27), 'font-size': size,
+                   'class': cls || 'lbl'}, text);
   }
   function arrow(g, a, b, w, color, cls) {
     if (!ok(a) || !ok(b)) return;
@@ -143,7 +196,9 @@ _JS = r"""
   }
   function drawMechanism(i) {
     clear(mechSvg);
-    var w = S / 300, fs = S / 28;
+    placed = [];
+    bounds = shown(mechSvg);
+    var w = S / 300, fs = S / 28, fl = fontFor(mechSvg, fs);
     var g = el(mechSvg, 'g', {id: 'mech-layer'});
     D.guides.forEach(function (gd) {
       if (gd.kind === 'line') {
@@ -206,7 +261,7 @@ _JS = r"""
       el(g, 'circle', {cx: xy[0], cy: -xy[1], r: pin ? fs * 0.22 : fs * 0.14,
                        fill: pin ? '#fff' : '#111', stroke: '#111', 'stroke-width': w,
                        'data-point': p});
-      label(g, xy, p, fs, 'lbl');
+      label(g, xy, p, fl, 'lbl');
     });
     if (D.centers && document.getElementById('show-centers') &&
         document.getElementById('show-centers').checked) {
@@ -215,7 +270,7 @@ _JS = r"""
         if (!ok(xy)) return;
         el(g, 'circle', {cx: xy[0], cy: -xy[1], r: fs * 0.15, fill: '#1565c0',
                          'data-center': c});
-        label(g, xy, c, fs * 0.55, 'ic', fs * 0.2, -fs * 0.6);
+        label(g, xy, c, fontFor(mechSvg, fs * 0.55, D.small_px), 'ic');
       });
     }
     if (D.inflection && document.getElementById('show-inflection') &&
@@ -228,16 +283,46 @@ _JS = r"""
                          'stroke-width': w, 'stroke-dasharray': (w * 6) + ' ' + (w * 4),
                          'data-inflection': k});
         var j = [val(ci.jx, D.q.L, i), val(ci.jy, D.q.L, i)];
-        label(g, j, 'J' + k, fs * 0.7, 'inf');
+        label(g, j, 'J' + k, fontFor(mechSvg, fs * 0.7, D.small_px), 'inf');
       });
     }
   }
   function drawPolygon(kind, i) {
     var pg = polys[kind]; if (!pg) return;
     var svg = pg.svg; clear(svg);
-    var S2 = pg.size, w = S2 / 300, fs = S2 / 22;
+    placed = [];
+    var sc = D[kind].scale, v = D[kind].view;
+    var xs = [0], ys = [0];
+    Object.keys(D.points).forEach(function (p) {
+      var q = img(p, i, kind); if (ok(q)) { xs.push(q[0]); ys.push(q[1]); }
+    });
+    var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
+    var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
+    // one scale for the cycle, except where a posture's polygon outgrows it (the cycle's
+    // view holds most postures, not the few largest): that posture at its own scale
+    var outgrows = x0 < v[0] || x1 > v[2] || y0 < v[1] || y1 > v[3];
+    if ((fit && fit.checked) || outgrows) {  // the posture's polygon at a round scale that fits
+      var span = Math.max(x1 - x0, y1 - y0, 1e-12), m = span * 0.12;
+      v = [x0 - m, y0 - m - span * 0.1, x0 + span + m, y0 + span + m];
+      pg.size = setup(svg, v);
+      kind0 = kind; sc = nice(span / 4);
+    } else {
+      pg.size = setup(svg, D[kind].view);
+    }
+    var S2 = pg.size, w = S2 / 300, fs = S2 / 22, fl = fontFor(svg, fs);
+    bounds = shown(svg);
     var g = el(svg, 'g', {id: kind + '-layer'});
     var prime = kind === 'acceleration' ? '′' : '';
+    // the scale bar's text and the pole's letter first: the images' letters keep off them
+    var y = v[1] + (v[3] - v[1]) * 0.04, x = v[0] + (v[2] - v[0]) * 0.05;
+    el(g, 'line', {x1: x, y1: -y, x2: x + sc.bar, y2: -y, stroke: '#111', 'stroke-width': w * 1.5,
+                   'class': 'scalebar'});
+    var fsc = fontFor(svg, fs * 0.75, D.small_px);  // above the bar, from its left end
+    label(g, [x, y], sc.value + ' ' + sc.unit, fsc, 'lbl', fsc * 0.01, fsc * 0.35);
+    el(g, 'circle', {cx: 0, cy: 0, r: fs * 0.18, fill: '#c62828'});
+    var t = el(g, 'text', {x: -fl * 1.5, y: fl * 0.1, 'font-size': fl, 'class': 'lbl'}, 'O');
+    el(t, 'tspan', {'font-size': fl * 0.7, dy: fl * 0.2}, kind === 'velocity' ? 'V' : 'A');
+    placed.push([-fl * 1.6, -fl * 0.4, -fl * 0.1, fl * 1.0]);
     var pole = [0, 0];
     D.links.forEach(function (lk) {
       var pts = lk.points.map(function (p) { return img(p, i, kind); });
@@ -255,7 +340,7 @@ _JS = r"""
       if (D.frame.indexOf(p) < 0) arrow(g, pole, q, w * 1.6, '#111');
       el(g, 'circle', {cx: q[0], cy: -q[1], r: fs * 0.12, fill: '#111', 'data-point': p,
                        'class': 'image'});
-      if (D.frame.indexOf(p) < 0) label(g, q, p.toLowerCase() + prime, fs, 'lbl');
+      if (D.frame.indexOf(p) < 0) label(g, q, p.toLowerCase() + prime, fl, 'lbl');
     });
     (D.coincident || []).forEach(function (cp) {
       var q = kind === 'velocity' ? [val(cp.vx, D.q.V, i), val(cp.vy, D.q.V, i)]
@@ -268,30 +353,8 @@ _JS = r"""
                      'data-apparent': cp.point});
       el(g, 'circle', {cx: q[0], cy: -q[1], r: fs * 0.1, fill: '#1565c0',
                        'data-coincident': cp.point + '@' + cp.on});
-      label(g, q, cp.point.toLowerCase() + prime + cp.on, fs * 0.8, 'lbl');
+      label(g, q, cp.point.toLowerCase() + prime + cp.on, fl, 'lbl');
     });
-    el(g, 'circle', {cx: 0, cy: 0, r: fs * 0.18, fill: '#c62828'});
-    var t = el(g, 'text', {x: -fs * 1.4, y: fs * 0.1, 'font-size': fs * 0.8, 'class': 'lbl'}, 'O');
-    el(t, 'tspan', {'font-size': fs * 0.55, dy: fs * 0.2}, kind === 'velocity' ? 'V' : 'A');
-    var sc = D[kind].scale, v = D[kind].view;
-    if (fit && fit.checked) {
-      var xs = [0], ys = [0];
-      Object.keys(D.points).forEach(function (p) {
-        var q = img(p, i, kind); if (ok(q)) { xs.push(q[0]); ys.push(q[1]); }
-      });
-      var x0 = Math.min.apply(null, xs), x1 = Math.max.apply(null, xs);
-      var y0 = Math.min.apply(null, ys), y1 = Math.max.apply(null, ys);
-      var span = Math.max(x1 - x0, y1 - y0, 1e-12), m = span * 0.12;
-      v = [x0 - m, y0 - m - span * 0.1, x0 + span + m, y0 + span + m];
-      pg.size = setup(svg, v);
-      kind0 = kind; sc = nice(span / 4);
-    } else {
-      pg.size = setup(svg, D[kind].view);
-    }
-    var y = v[1] + (v[3] - v[1]) * 0.04, x = v[0] + (v[2] - v[0]) * 0.05;
-    el(g, 'line', {x1: x, y1: -y, x2: x + sc.bar, y2: -y, stroke: '#111', 'stroke-width': w * 1.5,
-                   'class': 'scalebar'});
-    label(g, [x + sc.bar, y], sc.value + ' ' + sc.unit, fs * 0.75, 'lbl', fs * 0.3, -fs * 0.2);
     var cap = document.getElementById(kind + '-scale');
     if (cap) cap.textContent = 'drawn to scale: bar = ' + sc.value + ' ' + sc.unit;
   }
@@ -352,9 +415,9 @@ _JS = r"""
     i = ((i % n) + n) % n;
     cur = i;
     slider.value = i;
+    values(i);  // first: the table's width settles the pictures' sizes the letters are set to
     drawMechanism(i);
     if (D.rates) { drawPolygon('velocity', i); drawPolygon('acceleration', i); }
-    values(i);
     document.body.setAttribute('data-posture', String(i));
   }
   function stepBy(d) {
@@ -392,6 +455,7 @@ _JS = r"""
     speed = Number(e.target.value);
   });
   choose.addEventListener('change', function () { values(cur); });
+  window.addEventListener('resize', function () { show(cur); });  // letters stay draw's size
   ['show-centers', 'show-inflection', 'fit'].forEach(function (id) {
     var c = document.getElementById(id);
     if (c) c.addEventListener('change', function () { show(cur); });
@@ -429,7 +493,7 @@ _JS = r"""
 
 def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = None,
                  stop: float | None = None, centers: bool = False,
-                 inflection: bool = False) -> str:
+                 inflection: bool = False, polygons: str = "cycle") -> str:
     """The cycle of a mechanism as one self-contained HTML page (no network).
 
     Parameters
@@ -443,6 +507,11 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
         Offer the instant centers (a checkbox on the page).
     inflection : bool
         Offer each moving link's inflection circle (needs rates).
+    polygons : {"cycle", "posture"}
+        ``cycle``: each polygon at one scale for the whole cycle (lengths compare
+        between postures); ``posture``: each posture's polygon at the round scale
+        that fits it (a small acceleration polygon is not a dot).  The page's
+        "fit polygons" box switches between them.
 
     Returns
     -------
@@ -460,8 +529,15 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
     if inflection and not mech.has_rates:
         raise InputError("the inflection circle needs rates (add omega to [drive])",
                          key="--inflection", file=mech.source)
+    if polygons not in ("cycle", "posture"):
+        raise InputError(f"the polygons are sized per 'cycle' or per 'posture', not "
+                         f"{polygons!r}", key="--polygons", file=mech.source)
+    fit_each = polygons == "posture"
     data = cycle_data(mech, count=count, start=start, stop=stop, centers=centers,
                       inflection=inflection)
+    # draw's label sizes (points) as CSS pixels on the screen
+    data["label_px"] = round(STYLES["label"]["size"] * 96 / 72, 3)
+    data["small_px"] = round(STYLES["label-small"]["size"] * 96 / 72, 3)
     title = html.escape(data["title"])
     blob = script_json(data)
     options = "".join(f'<option value="{html.escape(p)}">{html.escape(p)}</option>'
@@ -503,7 +579,8 @@ def animate_html(mech: Mechanism, *, count: int = 360, start: float | None = Non
         'aria-label="drive"><div id="marks"></div></div>'
         f'<span id="status"></span>{toggles}'
         + ('<label title="redraw each polygon at a round scale that fits it">'
-           '<input type="checkbox" id="fit"> fit polygons</label>' if data["rates"] else "")
+           f'<input type="checkbox" id="fit"{" checked" if fit_each else ""}>'
+           ' fit polygons</label>' if data["rates"] else "")
         + "</div>\n"
         '<main><figure><figcaption>Mechanism</figcaption>'
         '<svg id="mechanism" xmlns="http://www.w3.org/2000/svg"></svg></figure>'

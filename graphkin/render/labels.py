@@ -23,7 +23,6 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 1.6 (lettering a kinematic diagram).
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import replace
 from functools import lru_cache
 from typing import Any
@@ -42,7 +41,7 @@ INK_WIDTH = 0.03
 """How wide a drawn line counts when a label covers it, in inches."""
 _PRIORITY = {"label": 0, "number": 1, "label-vector": 2, "label-aux": 3, "label-small": 4}
 _DIRS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
-_DIGITS = re.compile(r"[0-9]")
+_SAME_WIDTH = str.maketrans("123456789₁₂₃₄₅₆₇₈₉¹²³⁴⁵⁶⁷⁸⁹", "000000000₀₀₀₀₀₀₀₀₀⁰⁰⁰⁰⁰⁰⁰⁰⁰")
 _PAD = 0.012
 """Clearance kept around a label's glyphs, in inches."""
 
@@ -83,10 +82,10 @@ def text_size(text: str, size_pt: float, style: str = "label") -> tuple[float, f
     """
     st = STYLES.get(style, {})
     size_pt = shown_size(text, float(size_pt))
-    if "$" in text:
-        # DejaVu's digits share one advance width: "$V_{P123}$" measures as "$V_{P000}$", so
-        # 300 lettered points parse a handful of mathtext strings, not a thousand
-        text = _DIGITS.sub("0", text)
+    # DejaVu's digits share one advance width (and 0, round, is the tallest): "P₁₂₃" measures
+    # as "P₀₀₀" and "$V_{P123}$" as "$V_{P000}$", so 300 lettered points measure a handful of
+    # strings, not a thousand
+    text = text.translate(_SAME_WIDTH)
     family = "monospace" if st.get("family") == "monospace" else "sans-serif"
     if "\n" in text:  # matplotlib's own layout of the lines (line spacing, mathtext depths)
         w, h = _block_metrics(text, float(size_pt), family, str(st.get("weight", "normal")),
@@ -114,6 +113,18 @@ def _block_metrics(text: str, size_pt: float, family: str, weight: str,
     return box.width / 72.0, box.height / 72.0
 
 
+@lru_cache(maxsize=64)
+def _disc(r: float) -> np.ndarray:
+    """The offsets (inches) of a raster disc of radius ``r`` about its centre."""
+    n = max(int(r * RES), 1)
+    g = np.arange(-n, n + 1) / RES
+    xx, yy = np.meshgrid(g, g)
+    inside = xx**2 + yy**2 <= r * r
+    out = np.stack([xx[inside], yy[inside]], axis=-1)
+    out.flags.writeable = False
+    return out
+
+
 class _InkMap:
     """A raster of a panel's ink with a summed-area table: ink under a box in O(1)."""
 
@@ -138,24 +149,31 @@ class _InkMap:
             return
         seg = np.diff(pts, axis=0)
         lengths = np.hypot(seg[:, 0], seg[:, 1])
-        for p0, d, n in zip(pts[:-1], seg, lengths):
-            if not math.isfinite(n):
-                continue
-            k = max(int(n * RES * 2), 1)
-            ts = np.linspace(0.0, 1.0, k + 1)
-            xs, ys = self._cells(p0 + ts[:, None] * d)
-            if len(xs):
-                cells = np.unique(ys * self.nx + xs)
-                self.ink.flat[cells] += weight
+        ok = np.isfinite(lengths)
+        if not ok.all():
+            pts0, seg, lengths = pts[:-1][ok], seg[ok], lengths[ok]
+        else:
+            pts0 = pts[:-1]
+        if not len(seg):
+            return
+        # every segment sampled at once: k + 1 points each, t = i (1/k) as np.linspace makes
+        # them (the last exactly 1), so that a cell is counted once per segment as before
+        k = np.maximum((lengths * RES * 2).astype(np.int64), 1)
+        which = np.repeat(np.arange(len(k)), k + 1)
+        start = np.cumsum(k + 1) - (k + 1)
+        i = np.arange(len(which)) - start[which]
+        t = i * (1.0 / k)[which]
+        t[start + k] = 1.0
+        q = pts0[which] + t[:, None] * seg[which]
+        ij = np.floor(q * RES).astype(np.int64)
+        inside = (ij[:, 0] >= 0) & (ij[:, 0] < self.nx) & (ij[:, 1] >= 0) & (ij[:, 1] < self.ny)
+        cell = ij[inside, 1] * self.nx + ij[inside, 0]
+        pair = np.unique(which[inside] * (self.nx * self.ny) + cell)
+        np.add.at(self.ink.reshape(-1), pair % (self.nx * self.ny), np.float32(weight))
 
     def disc(self, c: np.ndarray, r: float) -> None:
         """Mark the cells of a small filled disc (a marker)."""
-        n = max(int(r * RES), 1)
-        g = np.arange(-n, n + 1) / RES
-        xx, yy = np.meshgrid(g, g)
-        inside = xx**2 + yy**2 <= r * r
-        pts = np.stack([c[0] + xx[inside], c[1] + yy[inside]], axis=-1)
-        xs, ys = self._cells(pts)
+        xs, ys = self._cells(c + _disc(r))
         self.ink[ys, xs] += 1.0
 
     def rect(self, x0: float, y0: float, x1: float, y1: float) -> None:
@@ -188,31 +206,39 @@ class _InkMap:
 
     def _ranges(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
                 y1: np.ndarray) -> tuple[np.ndarray, ...]:
-        i0 = np.clip(np.floor(x0 * RES).astype(np.int64), 0, self.nx)
-        j0 = np.clip(np.floor(y0 * RES).astype(np.int64), 0, self.ny)
-        i1 = np.clip(np.ceil(x1 * RES).astype(np.int64), 0, self.nx)
-        j1 = np.clip(np.ceil(y1 * RES).astype(np.int64), 0, self.ny)
-        return i0, j0, np.maximum(i1, i0), np.maximum(j1, j0)
+        lo = np.floor(np.stack([x0, y0]) * RES).astype(np.int64)
+        hi = np.ceil(np.stack([x1, y1]) * RES).astype(np.int64)
+        top = np.array([[self.nx], [self.ny]])
+        lo = np.minimum(np.maximum(lo, 0), top)
+        hi = np.maximum(np.minimum(np.maximum(hi, 0), top), lo)
+        return lo[0], lo[1], hi[0], hi[1]
 
     def ink_many(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
                  y1: np.ndarray) -> np.ndarray:
         """:meth:`ink_in` of many boxes at once."""
-        assert self.sat is not None
-        i0, j0, i1, j1 = self._ranges(x0, y0, x1, y1)
-        s = self.sat
-        return s[j1, i1] - s[j0, i1] - s[j1, i0] + s[j0, i0]
+        return self.both_many(x0, y0, x1, y1)[0]
 
     def taken_many(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
                    y1: np.ndarray) -> np.ndarray:
         """:meth:`taken_in` of many boxes at once."""
+        return self.both_many(x0, y0, x1, y1)[1]
+
+    def both_many(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
+                  y1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The ink and the placed labels' cells under many boxes at once."""
+        assert self.sat is not None
         i0, j0, i1, j1 = self._ranges(x0, y0, x1, y1)
-        # a summed-area table of the window these boxes cover only
+        s = self.sat
+        inked = s[j1, i1] - s[j0, i1] - s[j1, i0] + s[j0, i0]
+        # a summed-area table of the window these boxes cover only (the labels change as
+        # they are placed)
         wi, wj = int(i0.min()), int(j0.min())
         win = self.taken[wj:int(j1.max()), wi:int(i1.max())]
-        t = np.zeros((win.shape[0] + 1, win.shape[1] + 1), dtype=np.int64)
-        t[1:, 1:] = np.cumsum(np.cumsum(win, axis=0, dtype=np.int64), axis=1)
+        t = np.zeros((win.shape[0] + 1, win.shape[1] + 1), dtype=np.int32)
+        np.cumsum(win, axis=0, dtype=np.int32, out=t[1:, 1:])
+        np.cumsum(t[1:, 1:], axis=1, out=t[1:, 1:])
         i0, i1, j0, j1 = i0 - wi, i1 - wi, j0 - wj, j1 - wj
-        return (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0]).astype(float)
+        return inked, (t[j1, i1] - t[j0, i1] - t[j1, i0] + t[j0, i0]).astype(float)
 
     def taken_in(self, b: tuple[float, float, float, float]) -> int:
         """Cells of placed labels under a box."""
@@ -296,6 +322,13 @@ def place_labels(panel: Panel) -> None:
     finds none is placed item by item.  ``panel.crowded`` counts the labels
     left without a clean place.
     """
+    from graphkin.render.style import rc_context
+
+    with rc_context():  # once for every label measured
+        _place_all(panel)
+
+
+def _place_all(panel: Panel) -> None:
     ink = _InkMap(panel)
     for g in panel.groups:
         for it in g.items:
@@ -358,13 +391,53 @@ def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
                 if _arrow_beside(panel, ink, req.arrow, c, w, h):
                     _put(panel, ink, req, text, c, w, h)
                     return True
+        # a panel too small for the name and the distance from its reference point: shorter
+        # texts (without the reference, then the name alone), by the arrow or beside it
+        # anywhere, rather than a label across the construction's lines
+        for text in _shorter(req):
+            w, h = text_size(text, size, req.style)
+            sc, c, clean = _spot(panel, ink, req, w, h)
+            if clean:
+                _put(panel, ink, req, text, c, w, h)
+                return True
+            for c in _clear_spots(panel, ink, panel.to_paper(req.anchor), w, h):
+                if _arrow_beside(panel, ink, req.arrow, c, w, h):
+                    _put(panel, ink, req, text, c, w, h)
+                    return True
         _, c, clean, text, w, h = best
+    if not clean and req.arrow is None:
+        # a far point of a list placed on its own: its distance without the reference, then
+        # its name alone, rather than a label across a line
+        for short in _shorter(req):
+            sw, sh = text_size(short, size, req.style)
+            _, sc_, ok = _spot(panel, ink, req, sw, sh)
+            if ok:
+                _put(panel, ink, req, short, sc_, sw, sh)
+                return True
     if not (clean or req.parts):
         panel.crowded += 1
     if req.arrow is not None and clean:
         _arrow_beside(panel, ink, req.arrow, c, w, h)
     _put(panel, ink, req, text, c, w, h)
     return clean
+
+
+def _shorter(req: LabelRequest) -> list[str]:
+    """Shorter texts of a far point's label: its name and distance, then its name alone."""
+    if req.parts or len(req.short) > 1:
+        return []
+    if req.short:
+        short = req.short[0]
+        out = [f"{short}\n({req.ref})" if req.ref else short, short]
+    elif ", " in req.text and "\n" not in req.text and (" from " in req.text
+                                                        or "off the figure" in req.text):
+        # one far point of a list placed on its own ("C_N, 5182 ft from I")
+        short = req.text.rsplit(" from ", 1)[0].replace(" off the figure", "")
+        out = [short]
+    else:
+        return []
+    out.append(short.split(",", 1)[0])
+    return [t for t in dict.fromkeys(out) if t and t != req.text and t not in req.fallback]
 
 
 def _clear_spots(panel: Panel, ink: _InkMap, a: np.ndarray, w: float,
@@ -376,8 +449,7 @@ def _clear_spots(panel: Panel, ink: _InkMap, a: np.ndarray, w: float,
     xs = np.arange(w / 2, pw - w / 2, 0.05)
     ys = np.arange(h / 2, ph - h / 2, 0.05)
     gx, gy = (v.ravel() for v in np.meshgrid(xs, ys))
-    inked = ink.ink_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
-    taken = ink.taken_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
+    inked, taken = ink.both_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
     ok = (inked == 0) & (taken == 0)
     order = np.argsort(np.hypot(gx[ok] - a[0], gy[ok] - a[1]))[:40]
     return [np.array([gx[ok][i], gy[ok][i]]) for i in order]
@@ -469,54 +541,63 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     pw, ph = panel.size
     a = panel.to_paper(req.anchor)
     area_cells = max(w * h * RES * RES, 1.0)
-    best: tuple[float, np.ndarray, bool] | None = None
-
-    # every candidate of the ring scored at once (numpy), then taken in rank order up to the
-    # first clean one, as a loop over them would: the best score of that prefix
-    cand = np.array(_candidates(req, a, w, h))
-    cx0, cy0 = cand[:, 0] - w / 2, cand[:, 1] - h / 2
-    cx1, cy1 = cand[:, 0] + w / 2, cand[:, 1] + h / 2
-    inked_all = ink.ink_many(cx0, cy0, cx1, cy1) / RES
-    lab_all = ink.taken_many(cx0, cy0, cx1, cy1) / area_cells
-    ix = np.clip(np.minimum(cx1, pw) - np.maximum(cx0, 0.0), 0, None)
-    iy = np.clip(np.minimum(cy1, ph) - np.maximum(cy0, 0.0), 0, None)
-    over_all = inked_all * INK_WIDTH / (w * h)
-    out_all = 1.0 - ix * iy / (w * h)
-    sc_all = 4.0 * over_all + np.where(inked_all > 0, 0.6, 0.0) + 25.0 * lab_all \
-        + 40.0 * out_all + 0.04 * np.arange(len(cand))
-    clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
-    first = int(np.argmax(clean_all)) if clean_all.any() else len(cand) - 1
-    j = 0
-    for k in range(1, first + 1):  # the first strictly better score, as the loop kept it
-        if sc_all[k] < sc_all[j] - 1e-12:
-            j = k
-    best = (float(sc_all[j]), cand[j].copy(), bool(clean_all[j]))
-    if best[2]:
-        return best
-    # a crowded place: score a fine grid around the anchor at once, nearest clean first
+    # the ring of candidates, in rank order, and (for a crowded place) a fine grid around the
+    # anchor: every box scored by one look-up of the ink and one of the labels
+    cand = _candidates(req, a, w, h)
+    n = len(cand)
     step = 0.04
     rmax = 0.5 + 1.0 * max(w, h)
-    ring = np.arange(-rmax, rmax + 1e-9, step)
-    gx, gy = (v.ravel() for v in np.meshgrid(ring, ring))
-    dist = np.hypot(gx, gy)
+    gx, gy, dist = _grid(rmax, step)
     keep = (dist <= rmax) & ((np.abs(gx) >= w / 2 + 0.02) | (np.abs(gy) >= h / 2 + 0.02))
-    cxs, cys, dist = a[0] + gx[keep], a[1] + gy[keep], dist[keep]
-    if len(cxs):
-        inked = ink.ink_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) / RES
-        lab = ink.taken_many(cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2) / area_cells
-        ix = np.clip(np.minimum(cxs + w / 2, pw) - np.maximum(cxs - w / 2, 0.0), 0, None)
-        iy = np.clip(np.minimum(cys + h / 2, ph) - np.maximum(cys - h / 2, 0.0), 0, None)
-        out = 1.0 - ix * iy / (w * h)
-        sc = 4.0 * inked * INK_WIDTH / (w * h) + np.where(inked > 0, 0.6, 0.0) \
-            + 25.0 * lab + 40.0 * out + 0.25 + 0.5 * dist
-        j = int(np.argmin(sc))
-        if sc[j] < best[0] - 1e-12:
-            clean = bool(inked[j] == 0 and lab[j] == 0 and out[j] <= 1e-12)
-            best = (float(sc[j]), np.array([cxs[j], cys[j]]), clean)
+    cxs = np.concatenate([cand[:, 0], a[0] + gx[keep]])
+    cys = np.concatenate([cand[:, 1], a[1] + gy[keep]])
+    x0, y0, x1, y1 = cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2
+    inked_all, lab_all = ink.both_many(x0, y0, x1, y1)
+    inked_all, lab_all = inked_all / RES, lab_all / area_cells
+    ix = np.clip(np.minimum(x1, pw) - np.maximum(x0, 0.0), 0, None)
+    iy = np.clip(np.minimum(y1, ph) - np.maximum(y0, 0.0), 0, None)
+    over_all = inked_all * INK_WIDTH / (w * h)
+    out_all = 1.0 - ix * iy / (w * h)
+    mark = np.where(inked_all > 0, 0.6, 0.0)
+    clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
+
+    # the ring taken in rank order up to the first clean one: the best score of that prefix
+    sc = 4.0 * over_all[:n] + mark[:n] + 25.0 * lab_all[:n] + 40.0 * out_all[:n] \
+        + 0.04 * np.arange(n)
+    first = int(np.argmax(clean_all[:n])) if clean_all[:n].any() else n - 1
+    j = 0
+    for k in range(1, first + 1):  # the first strictly better score, as the loop kept it
+        if sc[k] < sc[j] - 1e-12:
+            j = k
+    best = (float(sc[j]), cand[j].copy(), bool(clean_all[j]))
+    if best[2] or len(cxs) == n:
+        return best
+    # a crowded place: the grid, nearest clean first
+    g = 4.0 * inked_all[n:] * INK_WIDTH / (w * h) + mark[n:] + 25.0 * lab_all[n:] \
+        + 40.0 * out_all[n:] + 0.25 + 0.5 * dist[keep]
+    j = int(np.argmin(g))
+    if g[j] < best[0] - 1e-12:
+        best = (float(g[j]), np.array([cxs[n + j], cys[n + j]]), bool(clean_all[n + j]))
     return best
 
 
-def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> list[np.ndarray]:
+@lru_cache(maxsize=256)
+def _grid(rmax: float, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A square grid of offsets (inches) about an anchor and their distances from it."""
+    ring = np.arange(-rmax, rmax + 1e-9, step)
+    gx, gy = (v.ravel() for v in np.meshgrid(ring, ring))
+    dist = np.hypot(gx, gy)
+    for v in (gx, gy, dist):
+        v.flags.writeable = False
+    return gx, gy, dist
+
+
+_GAPS = np.array([1.0, 1.8, 2.8, 4.0])
+_FAR_RINGS = np.array([0.14, 0.22, 0.32, 0.45, 0.6, 0.8])
+
+
+def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> np.ndarray:
+    """Centres (paper inches) a label tries around its anchor ``a``, in rank order."""
     dirs = list(_DIRS)
     if req.prefer is not None:
         px, py = req.prefer
@@ -524,15 +605,12 @@ def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> list[np
     d = np.array(dirs, dtype=float)
     u = d / np.hypot(d[:, 0], d[:, 1])[:, None]
     half = d * np.array([w / 2, h / 2])
-    out = [a.copy()] if req.center else []
-    # rings close about the anchor, each in the preferred order of directions
-    for ring in (1.0, 1.8, 2.8, 4.0):
-        gap = req.gap * ring + (0.02 * ring if ring > 1 else 0.0)
-        out.extend(a + u * gap + half)
-    # farther out along the preferred directions, for crowded places
-    for ring in (0.14, 0.22, 0.32, 0.45, 0.6, 0.8):
-        out.extend(a + u * ring + half)
-    return out
+    # rings close about the anchor, each in the preferred order of directions; then farther
+    # out along the preferred directions, for crowded places
+    gaps = np.concatenate([req.gap * _GAPS + np.where(_GAPS > 1, 0.02 * _GAPS, 0.0),
+                           _FAR_RINGS])
+    out = (a + u[None, :, :] * gaps[:, None, None] + half[None, :, :]).reshape(-1, 2)
+    return np.vstack([a[None, :], out]) if req.center else out
 
 
 # ---------------------------------------------------------------------------

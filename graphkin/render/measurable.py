@@ -97,10 +97,16 @@ def short_note(panel: Panel, shorts: list[tuple[str, float, float]]) -> str:
     --------
     >>> p = Panel("acceleration", "acceleration", "", "mm/s²")
     >>> short_note(p, [("A_DC^t", 29.1, 0.58)])
-    'Too short to draw to scale (under 3 mm): A_DC^t = 29.1 mm/s² (0.6 mm).'
+    'Too short to draw to scale (under 3 mm): $A^{t}_{DC}$ = 29.1 mm/s² (0.6 mm).'
+
+    The components are named as on the polygon (``A^t_DC``, Sec. 4.3), not in the
+    ASCII of the files.
     """
+    from graphkin.render.paint import vector_math
+
     if not shorts:
         return ""
     unit = f" {panel.unit}" if panel.unit else ""
-    items = [f"{name} = {fmt(value, 3)}{unit} ({mm:.1f} mm)" for name, value, mm in shorts]
+    items = [f"{vector_math(name)} = {fmt(value, 3)}{unit} ({mm:.1f} mm)"
+             for name, value, mm in shorts]
     return f"Too short to draw to scale (under {MIN_MM:g} mm): " + "; ".join(items) + "."

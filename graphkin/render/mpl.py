@@ -21,6 +21,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
+from matplotlib.transforms import Bbox, TransformedBbox
 
 from graphkin.render.scene import Group, Item, Panel
 from graphkin.render.sheet import Sheet, build_sheet
@@ -261,13 +262,22 @@ def _add_group(ax: Axes, g: Group, drawing: Drawing,
     line or a large circle stops short of the panel's title.
     """
     children: list[Artist] = []
+    # one clip box per rectangle, not one per artist (300 lettered points made 10 000)
+    clips: dict[int, tuple[Any, Any]] = ax.__dict__.setdefault("_graphkin_clips", {})
     for it in g.items:
         arts = _artists(it, g.highlight)
+        clip = inner if inner is not None and it.kind != "text" else ax.patch
+        if id(clip) not in clips:  # what Artist.set_clip_path makes of a Rectangle
+            clips[id(clip)] = (clip, TransformedBbox(Bbox.unit(), clip.get_transform()))
         for a in arts:
             a.set_transform(ax.transData)
             a.set_figure(ax.figure)
             a.axes = ax
-            a.set_clip_path(inner if inner is not None and it.kind != "text" else ax.patch)
+            if isinstance(a, Vector) or not isinstance(clip, patches.Rectangle):
+                a.set_clip_path(clip)
+            else:
+                a.set_clip_path(None)
+                a.set_clip_box(clips[id(clip)][1])
             children.append(a)
         if it.key is not None and arts:
             main = arts[0]

@@ -382,10 +382,13 @@ class StepPainter:
         self.label(panel, g, text or f"{construction_text(label)} ∞", tail, label, style="label",
                    prefer=(-d[0], -d[1]), fallback=fallback)
         room = float((tail - c) @ d)  # how far the arrow may slide back toward the center
-        if arrow is not None and room > 0:
+        if arrow is not None:
+            # the arrow goes with its label (beside a clear place) even where it cannot slide
+            # back: its reference point near the panel's edge (I15 of the Watt six-bar, from F)
             req = panel.labels[-1]
             req.arrow = arrow
-            req.slides = [tail - d * f * room for f in (0.15, 0.3, 0.45, 0.6)]
+            if room > 0:
+                req.slides = [tail - d * f * room for f in (0.15, 0.3, 0.45, 0.6)]
 
     # ---- points -------------------------------------------------------
     def point(self, step: Step, g: Group, panel: Panel) -> None:

@@ -121,13 +121,28 @@ RC: dict[RcKeyType, Any] = {
 """Matplotlib settings of every graphkin drawing (deterministic SVG with real text)."""
 
 
+_DEPTH = [0]
+"""How many :func:`rc_context` are open (matplotlib's copies every setting on each entry)."""
+
+
 @contextmanager
 def rc_context() -> Iterator[None]:
-    """Apply :data:`RC` for the duration of a drawing or a save."""
+    """Apply :data:`RC` for the duration of a drawing or a save.
+
+    Inside another one it does nothing (graphkin never changes a setting
+    between): measuring 1000 labels entered it 1000 times, 1.5 s of copying.
+    """
     import matplotlib as mpl
 
-    with mpl.rc_context(RC):
+    if _DEPTH[0]:
         yield
+        return
+    with mpl.rc_context(RC):
+        _DEPTH[0] += 1
+        try:
+            yield
+        finally:
+            _DEPTH[0] -= 1
 
 
 def style_for_role(role: Role | str, kind: str) -> str:

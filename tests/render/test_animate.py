@@ -11,6 +11,7 @@ from spec_data import EXAMPLES
 
 import graphkin
 from graphkin.cli import main
+from graphkin.errors import InputError
 from graphkin.render.animate import animate_html, cycle_data
 
 
@@ -63,6 +64,18 @@ def test_cli_animate(tmp_path, capsys):
                  "--count", "36", "--inflection"]) == 0
     assert "graphkinCycle" in out.read_text(encoding="utf-8")
     assert "wrote" in capsys.readouterr().err
+
+
+def test_cli_animate_sizes_polygons_per_posture_when_asked(tmp_path):
+    out = tmp_path / "cycle.html"
+    fit = re.compile(r'<input type="checkbox" id="fit"( checked)?>')
+    for how, checked in (("cycle", None), ("posture", " checked")):
+        assert main(["animate", str(EXAMPLES / "ex3_1_fourbar.toml"), "-o", str(out),
+                     "--count", "12", "--polygons", how]) == 0
+        m = fit.search(out.read_text(encoding="utf-8"))
+        assert m is not None and m.group(1) == checked
+    with pytest.raises(InputError, match="posture"):
+        animate_html(graphkin.examples.fourbar(), count=12, polygons="each")
 
 
 @pytest.mark.parametrize("args, words", [

@@ -12,7 +12,6 @@ from numpy.typing import ArrayLike
 from graphkin.construction import Construction, Role
 from graphkin.errors import ConstructionError, GraphkinError
 from graphkin.geometry import ops as g
-from graphkin.kinematics.curvature._vec import _sin_angle
 from graphkin.kinematics.curvature.conjugates import known_conjugates
 from graphkin.kinematics.curvature.inflection import acceleration_center, inflection_pole
 from graphkin.kinematics.solution import Solution, perp
@@ -236,18 +235,20 @@ class _CurvatureBase(_Build):
         auxiliary ones are labelled ``prefix`` + a number.
         """
         cands = self.candidates(center, prefix)
-        best, best_s = None, -1.0
-        for i in range(len(cands)):
-            for j in range(i + 1, len(cands)):
-                p, q = self.pos(cands[i][1]), self.pos(cands[j][1])
-                far = min(float(np.hypot(*(p - center))), float(np.hypot(*(q - center))))
-                s = _sin_angle(p - center, q - center) if far > _FAR * self.L else 0.0
-                if cands[i][2] and cands[j][2] and s >= 0.5:
-                    s += 0.5
-                if s > best_s:
-                    best, best_s = (cands[i], cands[j]), s
-        assert best is not None
-        return best
+        # every pair at once (300 coupler points are 46 000 pairs); the first best pair in
+        # the order (i, j), i < j, as a loop over them would keep it
+        rel = self.pos(np.array([c[1] for c in cands])) - center
+        d = np.hypot(rel[:, 0], rel[:, 1])
+        cross = np.abs(rel[:, None, 0] * rel[None, :, 1] - rel[:, None, 1] * rel[None, :, 0])
+        nn = d[:, None] * d[None, :]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = np.where(nn > 0.0, cross / np.where(nn > 0.0, nn, 1.0), 0.0)
+        s = np.where(np.minimum(d[:, None], d[None, :]) > _FAR * self.L, s, 0.0)
+        named = np.array([c[2] for c in cands])
+        s = np.where(named[:, None] & named[None, :] & (s >= 0.5), s + 0.5, s)
+        s[np.tril_indices(len(cands))] = -1.0
+        i, j = divmod(int(np.argmax(s)), len(cands))
+        return cands[i], cands[j]
 
     def point_given(self, name: str, loc: Array, named: bool) -> str:
         if named:
