@@ -24,7 +24,7 @@ from graphkin.keys import MECHANISM, check_keys
 if TYPE_CHECKING:
     from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["expand_cams", "with_cams"]
+__all__ = ["expand_cams", "for_sweep", "with_cams"]
 
 
 def expand_cams(data: Mapping[str, Any], source: str) -> tuple[Mapping[str, Any], tuple[Any, ...]]:
@@ -50,3 +50,17 @@ def with_cams(data: Mapping[str, Any], source: str,
     check_keys(data, MECHANISM, source)     # a misspelt key first, before anything is read
     expanded, cams = expand_cams(data, source)
     return dataclasses.replace(build(expanded), cams=cams)
+
+
+def for_sweep(mech: Mechanism) -> Mechanism:
+    """The mechanism a sweep turns: ``mech``, or its cams' followers driven by their programs.
+
+    For a cam mechanism: :func:`graphkin.cams.cycle.swept_mechanism`.  The
+    equivalent linkage holds at the file's cam angle only (Sec. 4.7); over
+    the cycle each follower moves as its cam's displacement diagram says (Sec. 6.3).
+    """
+    if not mech.cams:
+        return mech
+    from graphkin.cams.cycle import swept_mechanism  # the cam layer, above this one
+
+    return swept_mechanism(mech)
