@@ -16,6 +16,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 4.7; Ch. 6.
 from __future__ import annotations
 
 import dataclasses
+import weakref
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -61,6 +62,17 @@ def for_sweep(mech: Mechanism) -> Mechanism:
     """
     if not mech.cams:
         return mech
+    hit = _SWEPT.get(id(mech))
+    if hit is not None and hit[0]() is mech:   # once per mechanism: its sweeps reuse the engine
+        return hit[1]
     from graphkin.cams.cycle import swept_mechanism  # the cam layer, above this one
 
-    return swept_mechanism(mech)
+    twin = swept_mechanism(mech)
+    for k in [k for k, v in _SWEPT.items() if v[0]() is None]:
+        del _SWEPT[k]
+    _SWEPT[id(mech)] = (weakref.ref(mech), twin)
+    return twin
+
+
+_SWEPT: dict[int, tuple[weakref.ref[Mechanism], Mechanism]] = {}
+"""Cam mechanism (by id, while it lives) -> the mechanism its sweeps turn."""
