@@ -245,7 +245,8 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
         for lid in (cl, fl):
             if not isinstance(links.setdefault(lid, {}), dict):
                 raise _fail(f"links.{lid}", "expected a table", source)
-        coupler = "" if cam.follower.kind.flat else _free_id(links)
+        # past every link the entries name: a later cam's follower is not yet in links
+        coupler = "" if cam.follower.kind.flat else _free_id(links, entries)
         names = {"O2": center, "O4": pivot, "K": f"K{fl}", "T": f"T{fl}", "S1": f"G{fl}a",
                  "S2": f"G{fl}b", "L1": f"F{fl}a", "L2": f"F{fl}b"}
 
@@ -360,8 +361,10 @@ def _entries(data: Mapping[str, Any], name: str, source: str) -> list[Any]:
     return list(raw)
 
 
-def _free_id(links: Mapping[str, Any]) -> str:
-    nums = [int(k) for k in links if k.isdigit()]
+def _free_id(links: Mapping[str, Any], entries: list[Any]) -> str:
+    named = [str(e.get(k)) for e in entries if isinstance(e, Mapping)
+             for k in ("link", "follower")]
+    nums = [int(k) for k in [*links, *named] if k.isdigit()]
     return str(max(nums, default=1) + 1)
 
 

@@ -188,6 +188,29 @@ def test_the_rest_of_the_mechanism_is_driven_by_the_follower():
         assert np.allclose([c["ax_Q"][i], c["ay_Q"][i]], sol.acceleration("Q"), atol=1e-7)
 
 
+def test_two_cams_on_one_shaft_each_move_their_follower():
+    """Ex 6.6's cam twice on link 2: follower 4 rising up (axis 90°), follower 5 along +x
+    (axis 0°, so Θ5 = θ2 + 90°). By hand, V_T4 = 30 sin 2θ2 · ω and
+    V_T5 = 30 sin(2θ2 + 180°) · ω = −V_T4 along x; and each equals solve's."""
+    ex = str(EXAMPLES / "ex6_6_roller.toml")
+    data = {"units": "mm", "links": {"1": {"O2": [0, 0]}},
+            "cams": [{"link": 2, "follower": 4, "file": ex},
+                     {"link": 2, "follower": 5, "file": ex, "axis": 0}],
+            "drive": {"link": 2, "angle": 30, "omega": 10, "alpha": 0}}
+    sw = from_dict(data).sweep(count=12)
+    c = sw.columns
+    th = np.radians(np.asarray(c["drive"], dtype=float))
+    assert np.allclose(c["vy_T4"], 300.0 * np.sin(2 * th), atol=1e-9)
+    assert np.allclose(c["vx_T5"], -300.0 * np.sin(2 * th), atol=1e-9)
+    assert np.allclose(c["x_T5"], 40.0 + 15.0 * (1 + np.cos(2 * th)), atol=1e-9)
+    for i in (1, 7):
+        sol = from_dict({**data, "drive": {**data["drive"], "angle": float(c["drive"][i])}}
+                        ).solve()
+        for p in ("T4", "T5"):
+            assert np.allclose([c[f"ax_{p}"][i], c[f"ay_{p}"][i]], sol.acceleration(p),
+                               atol=1e-7)
+
+
 def test_follow_sweeps_a_cam_mechanism_too():
     mech = graphkin.load(EXAMPLES / "cam_mechanism.toml")
     a, b = mech.sweep(count=12), graphkin.kinematics.sweep.sweep(mech, count=12, follow=True)
