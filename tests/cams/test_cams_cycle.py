@@ -169,10 +169,15 @@ def test_the_rest_of_the_mechanism_is_driven_by_the_follower():
     V_Q = V_P (Q_y − P_y) / (Q_x − P_x) with V_P = y'ω = 30 sin 2Θ · 10.
     """
     mech = graphkin.load(EXAMPLES / "cam_mechanism.toml")
-    sw = mech.sweep(count=36, start=0.0)
+    sw = mech.sweep(count=36, start=0.0, centers=True)
     c = sw.columns
     th = np.radians(np.asarray(c["drive"], dtype=float))
     Y = 15.0 * (1.0 - np.cos(2.0 * th))
+    # the instant center of cam and follower: y' from O2, normal to the follower's motion
+    # (Sec. 6.10, Fig. 6.27), where the follower moves (y' = 30 sin 2Θ clear of 0)
+    moving = np.abs(np.sin(2.0 * th)) > 0.1
+    assert np.allclose(np.asarray(c["x_I24"])[moving], 30.0 * np.sin(2.0 * th[moving]))
+    assert np.allclose(np.asarray(c["y_I24"])[moving], 0.0, atol=1e-9)
     py = 70.0 + Y
     qx = np.sqrt(80.0**2 - (80.0 - py) ** 2)
     assert np.allclose(c["y_P"], py, atol=1e-9) and np.allclose(c["x_Q"], qx, atol=1e-9)
