@@ -261,3 +261,35 @@ def test_the_commands(tmp_path, capsys):
         assert main(argv) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and "cam mechanism" in err, err
+
+
+def _edge_distance(p: np.ndarray, poly: np.ndarray) -> float:
+    """The least distance from ``p`` to the closed polygon ``poly`` (its edges)."""
+    a, b = poly, np.roll(poly, -1, axis=0)
+    ab = b - a
+    t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.einsum("ij,ij->i", ab, ab), 0.0, 1.0)
+    return float(np.min(np.hypot(*(a + t[:, None] * ab - p).T)))
+
+
+def test_the_animation_turns_the_cam_under_its_roller():
+    """animate's data: the cam's profile (an outline of link 2) turned with the cam, the roller
+    (a circle about T4, 12 mm) moved with the follower; the roller touches the profile at every
+    posture: T4 stands 12 mm from the turned outline (to within the outline's 144 chords,
+    whose sagitta is ρ(1 − cos(π/144)) < 0.02 mm on Ex 6.6's cam)."""
+    from graphkin.render.cycle_data import cycle_data
+
+    d = cycle_data(graphkin.load(EXAMPLES / "cam_mechanism.toml"), count=24)
+    bodies = {b["kind"]: b for b in d["bodies"]}
+    cam, roller = bodies["outline"], bodies["circle"]
+    assert cam["link"] == "2" and roller["link"] == "4" and roller["r"] == 12.0
+    qL = d["q"]["L"]
+    local = np.array(cam["local"])
+    for i in range(d["n"]):
+        a = math.radians(cam["angle"][i] * 1e-4)
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        world = np.array([cam["ox"][i], cam["oy"][i]]) * qL + local @ rot.T
+        t4 = np.array([d["points"]["T4"]["x"][i], d["points"]["T4"]["y"][i]]) * qL
+        turn = a - math.radians(d["drive"]["values"][i])          # the cam turns with θ2
+        assert abs((turn + math.pi) % (2 * math.pi) - math.pi) < 1e-5
+        gap = _edge_distance(t4, world) - 12.0
+        assert abs(gap) < 0.02, gap
