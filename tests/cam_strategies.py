@@ -72,3 +72,26 @@ def cams(draw, kinds=tuple(FollowerKind)) -> Cam:
     fol = Follower(kind, offset=draw(st.floats(-0.6, 0.6)) * prime,
                    roller=draw(st.floats(0.05, 0.9)) * prime if kind.roller else 0.0)
     return Cam(prog, prime, fol, sense)
+
+
+def cam_toml(cam: Cam) -> str:
+    """A cam file (docs/formats/cam.md) written by hand from a Cam (test-only)."""
+    f = cam.follower
+    osc = f.kind.oscillating
+    lines = ['units = "mm"', "[cam]", f"prime = {cam.prime!r}", f'rotation = "{cam.sense.value}"',
+             "[follower]", f'kind = "{f.kind.value}"']
+    if f.kind.roller:
+        lines.append(f"roller = {f.roller!r}")
+    if osc:
+        lines += [f"pivot = [{f.pivot[0]!r}, {f.pivot[1]!r}]", f'rise = "{f.rise.value}"']
+        lines.append(f"arm = {f.arm!r}" if f.kind.roller else f"face_offset = {f.face_offset!r}")
+    else:
+        lines.append(f"offset = {f.offset!r}")
+    for s in cam.program.segments:
+        lift = f'"{s.lift!r} rad"' if osc else repr(s.lift)
+        lines += ["[[segment]]", f'motion = "{s.motion.value}"', f'angle = "{s.angle!r} rad"']
+        if s.lift != 0.0:
+            lines.append(f"lift = {lift}")
+        if s.rest is not None:
+            lines.append(f'rest = "{s.rest.value}"')
+    return "\n".join(lines) + "\n"

@@ -40,9 +40,10 @@ Uicker, Pennock & Shigley, 5th ed., Secs. 4.7 (Figs. 4.18, 4.20), 6.9-6.10, 6.13
 from __future__ import annotations
 
 import cmath
+import copy
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -88,6 +89,9 @@ class CamJoint:
     contact, normal : tuple of float
         The contact point in the frame and the common normal's unit vector
         (pointing into the cam).
+    data : mapping or None
+        The mechanism file's data as written (with its ``[[cams]]``): what a
+        sweep over the cycle is rebuilt from (:mod:`graphkin.cams.cycle`).
     """
 
     key: str
@@ -103,6 +107,7 @@ class CamJoint:
     pressure: float
     contact: tuple[float, float]
     normal: tuple[float, float]
+    data: Mapping[str, Any] | None = field(default=None, compare=False, repr=False)
 
 
 def _fail(key: str, message: str, source: str) -> InputError:
@@ -172,6 +177,7 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
     >>> j.coupler, round(m.links["5"].points["T4"][0], 3)    # |ρ| of the pitch curve
     ('5', 72.757)
     """
+    written = copy.deepcopy(dict(data))
     data = dict(data)
     raw = data.pop("cams")
     entries = [raw] if isinstance(raw, Mapping) else raw
@@ -239,7 +245,8 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
         for lid in (cl, fl):
             if not isinstance(links.setdefault(lid, {}), dict):
                 raise _fail(f"links.{lid}", "expected a table", source)
-        coupler = "" if cam.follower.kind.flat else _free_id(links)
+        # past every link the entries name: a later cam's follower is not yet in links
+        coupler = "" if cam.follower.kind.flat else _free_id(links, entries)
         names = {"O2": center, "O4": pivot, "K": f"K{fl}", "T": f"T{fl}", "S1": f"G{fl}a",
                  "S2": f"G{fl}b", "L1": f"F{fl}a", "L2": f"F{fl}b"}
 
@@ -287,7 +294,8 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
                                (o2.real, o2.imag), axis, scale, Y * (1.0 if
                                                                      cam.follower.kind.oscillating
                                                                      else scale),
-                               float(pr.pressure[0]), _tuple(contact), _tuple(normal)))
+                               float(pr.pressure[0]), _tuple(contact), _tuple(normal),
+                               written))
     data["links"] = links
     for name, rows in (("sliders", sliders), ("slots", slots), ("bodies", bodies)):
         if rows:
@@ -353,8 +361,10 @@ def _entries(data: Mapping[str, Any], name: str, source: str) -> list[Any]:
     return list(raw)
 
 
-def _free_id(links: Mapping[str, Any]) -> str:
-    nums = [int(k) for k in links if k.isdigit()]
+def _free_id(links: Mapping[str, Any], entries: list[Any]) -> str:
+    named = [str(e.get(k)) for e in entries if isinstance(e, Mapping)
+             for k in ("link", "follower")]
+    nums = [int(k) for k in [*links, *named] if k.isdigit()]
     return str(max(nums, default=1) + 1)
 
 

@@ -71,7 +71,10 @@ def run(args: argparse.Namespace) -> int:
             raise InputError(f"the animated picture is a .gif file, not {args.gif!r}",
                              key="--gif")
         check_output(args.gif, [args.file], "--gif")
-    mech = graphkin.load(args.file)
+    from graphkin.mechanisms.cam_joint import for_sweep
+
+    # a cam mechanism: its followers moved by the cams' programs over the cycle (Sec. 6.3)
+    mech = for_sweep(graphkin.load(args.file))
     # one step per thing written (the page, the frames, the GIF); drawn on a terminal only
     jobs = sum(x is not None for x in (args.output, args.frames, args.gif))
     with bar("animate", total=jobs, unit="file") as progress:

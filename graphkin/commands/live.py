@@ -37,9 +37,9 @@ def run(args: argparse.Namespace) -> int:
     if mech.cams:  # its equivalent linkage holds at the file's cam angle only (Sec. 4.7)
         from graphkin.errors import InputError
 
-        raise InputError("a cam mechanism is solved at the file's cam angle (its equivalent "
-                         "linkage, Sec. 4.7): a live page, which turns the drive, is not "
-                         "supported yet", key="cams", file=args.file)
+        raise InputError("a live page of a cam mechanism is not supported (sweep, plot and "
+                         "animate turn its cam; solve and draw stand at the file's cam angle)",
+                         key="cams", file=args.file)
     text = live_html(mech, load_toml(args.file), str(args.file))
     out = write_text(args.output, text, "--output")
     print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)

@@ -65,7 +65,14 @@ def run(args: argparse.Namespace) -> int:
         items = parse_what(args.what)
     except InputError as exc:
         raise InputError(exc.message, key="--what", file=args.file) from None
-    mech = graphkin.load(args.file)
+    from graphkin.mechanisms.cam_joint import for_sweep
+
+    loaded = graphkin.load(args.file)
+    if loaded.cams and any(i == "torque" for i, _ in items):
+        raise InputError("the drive's torque of a cam mechanism over the cycle is not "
+                         "supported (graphkin solve gives it at the file's cam angle)",
+                         key="--what", file=args.file)
+    mech = for_sweep(loaded)  # its followers moved by the cams' programs (Sec. 6.3)
     _check_items(mech, items)
     if args.count < 2:
         raise InputError(f"--count must be at least 2 to draw a curve, not {args.count}",

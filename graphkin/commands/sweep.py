@@ -88,7 +88,15 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.progress import CountingWriter, bar
 
     check_output(args.csv, [args.file], "--csv")
-    mech = graphkin.load(args.file)
+    from graphkin.mechanisms.cam_joint import for_sweep
+
+    loaded = graphkin.load(args.file)
+    if loaded.cams and (args.torque or args.joint_forces):
+        raise InputError("the forces of a cam mechanism over the cycle are not supported "
+                         "(graphkin solve gives them at the file's cam angle)",
+                         key="--joint-forces" if args.joint_forces and not args.torque
+                         else "--torque", file=args.file)
+    mech = for_sweep(loaded)  # its followers moved by the cams' programs (Sec. 6.3)
     OutputUnits.of(mech.length_unit, args.units)  # a bad --units fails before the sweep runs
     if args.count < 1:
         raise InputError(f"--count must be at least 1, not {args.count}", key="count",

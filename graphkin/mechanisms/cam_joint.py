@@ -16,6 +16,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 4.7; Ch. 6.
 from __future__ import annotations
 
 import dataclasses
+import weakref
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -24,7 +25,7 @@ from graphkin.keys import MECHANISM, check_keys
 if TYPE_CHECKING:
     from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["expand_cams", "with_cams"]
+__all__ = ["expand_cams", "for_sweep", "with_cams"]
 
 
 def expand_cams(data: Mapping[str, Any], source: str) -> tuple[Mapping[str, Any], tuple[Any, ...]]:
@@ -50,3 +51,28 @@ def with_cams(data: Mapping[str, Any], source: str,
     check_keys(data, MECHANISM, source)     # a misspelt key first, before anything is read
     expanded, cams = expand_cams(data, source)
     return dataclasses.replace(build(expanded), cams=cams)
+
+
+def for_sweep(mech: Mechanism) -> Mechanism:
+    """The mechanism a sweep turns: ``mech``, or its cams' followers driven by their programs.
+
+    For a cam mechanism: :func:`graphkin.cams.cycle.swept_mechanism`.  The
+    equivalent linkage holds at the file's cam angle only (Sec. 4.7); over
+    the cycle each follower moves as its cam's displacement diagram says (Sec. 6.3).
+    """
+    if not mech.cams:
+        return mech
+    hit = _SWEPT.get(id(mech))
+    if hit is not None and hit[0]() is mech:   # once per mechanism: its sweeps reuse the engine
+        return hit[1]
+    from graphkin.cams.cycle import swept_mechanism  # the cam layer, above this one
+
+    twin = swept_mechanism(mech)
+    for k in [k for k, v in _SWEPT.items() if v[0]() is None]:
+        del _SWEPT[k]
+    _SWEPT[id(mech)] = (weakref.ref(mech), twin)
+    return twin
+
+
+_SWEPT: dict[int, tuple[weakref.ref[Mechanism], Mechanism]] = {}
+"""Cam mechanism (by id, while it lives) -> the mechanism its sweeps turn."""

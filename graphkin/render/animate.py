@@ -233,6 +233,24 @@ _JS = r"""
       el(g, 'circle', {cx: c[0], cy: -c[1], r: wh.r * D.q.L, fill: '#eef3fa', stroke: '#111',
                        'stroke-width': w});
     });
+    (D.bodies || []).forEach(function (bd) {  // a cam's profile, a roller, a face
+      var o = [val(bd.ox, D.q.L, i), val(bd.oy, D.q.L, i)], a = val(bd.angle, 1e-4, i);
+      if (!ok(o) || !isFinite(a)) return;
+      var c = Math.cos(a * Math.PI / 180), s = Math.sin(a * Math.PI / 180);
+      var xy = bd.local.map(function (q) {
+        return [o[0] + c * q[0] - s * q[1], o[1] + s * q[0] + c * q[1]]; });
+      if (bd.kind === 'circle') {
+        el(g, 'circle', {cx: xy[0][0], cy: -xy[0][1], r: bd.r, fill: '#eef3fa',
+                         stroke: '#111', 'stroke-width': w, 'data-body': bd.link});
+      } else if (bd.kind === 'outline') {
+        el(g, 'polygon', {points: xy.map(function (q) { return q[0] + ',' + (-q[1]); })
+                          .join(' '), fill: '#eef3fa', stroke: '#111', 'stroke-width': w,
+                          'stroke-linejoin': 'round', 'data-body': bd.link});
+      } else {
+        el(g, 'line', {x1: xy[0][0], y1: -xy[0][1], x2: xy[1][0], y2: -xy[1][1],
+                       stroke: '#111', 'stroke-width': w * 3, 'data-body': bd.link});
+      }
+    });
     D.links.forEach(function (lk) {
       var xy = lk.points.map(function (p) { return P(p, i); });
       if (!xy.every(ok)) return;

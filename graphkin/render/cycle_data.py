@@ -192,6 +192,7 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
     """
     sw = mech.sweep(count=count, start=start, stop=stop, centers=centers or inflection,
                     curvature=inflection and mech.has_rates)
+    mech = sw.mechanism  # a cam mechanism's: its followers moved by the cams' programs
     cols = sw.columns
     sol = sw.solution
     rated = mech.has_rates and "vx_" + next(iter(mech.point_links)) in cols
@@ -304,7 +305,8 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
             blocks.append({"point": sl.point, "link": sl.link,
                            "angle": _series(np.degrees(ang), 1e-3)})
     data["blocks"] = blocks
-    lo, hi = _robust_box(xs, ys, keep=100.0)
+    data["bodies"], bx, by = _bodies(mech, sol, n, qL)
+    lo, hi = _robust_box(xs + bx, ys + by, keep=100.0)
     data["view"] = _rounded_view(lo, hi, 0.12)
     if rated:
         vx = [cols[f"vx_{p}"] for p in names]
@@ -353,3 +355,31 @@ def cycle_data(mech: Mechanism, *, count: int = 360, start: float | None = None,
                                 "jy": _series(jy, qL)}
             data["inflection"] = circles
     return data
+
+
+def _bodies(mech: Mechanism, sol: Any, n: int, qL: float
+            ) -> tuple[list[dict[str, Any]], list[np.ndarray], list[np.ndarray]]:
+    """The bodies (``[[bodies]]``: a cam's profile, a roller, a face; drawing only).
+
+    Each in its link's own coordinates, with the link's origin and angle at
+    every posture: the page turns and moves it (a cam turning under its
+    follower, Ch. 6).  Also the x and y that bound them (for the view).
+    """
+    out: list[dict[str, Any]] = []
+    bx: list[np.ndarray] = []
+    by: list[np.ndarray] = []
+    for bd in mech.bodies:
+        st = sol.links.get(bd.link)
+        if st is None:
+            continue
+        o = np.broadcast_to(np.asarray(st.position(np.zeros(2)), dtype=float), (n, 2))
+        ang = np.broadcast_to(np.degrees(np.asarray(st.angle, dtype=float)), (n,))
+        local = [bd.center] if bd.kind == "circle" and bd.center is not None else bd.points
+        out.append({"link": bd.link, "kind": bd.kind,
+                    "local": [[round(float(x), 9), round(float(y), 9)] for x, y in local],
+                    "r": float(bd.radius or 0.0), "ox": _series(o[:, 0], qL),
+                    "oy": _series(o[:, 1], qL), "angle": _series(ang, 1e-4)})
+        reach = max((math.hypot(x, y) for x, y in local), default=0.0) + float(bd.radius or 0.0)
+        bx += [o[:, 0] - reach, o[:, 0] + reach]
+        by += [o[:, 1] - reach, o[:, 1] + reach]
+    return out, bx, by

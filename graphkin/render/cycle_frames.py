@@ -12,6 +12,7 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4, 4.4.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -52,6 +53,25 @@ class _Drawer:
         qq = q["V"] if kind == "velocity" else q["A"]
         return np.array([_val(p[k + "x"], qq, i), _val(p[k + "y"], qq, i)])
 
+    def _bodies(self, ax: Any, i: int) -> None:
+        """The bodies (a cam's profile, a roller, a face), turned and moved with their links."""
+        from matplotlib.patches import Circle, Polygon
+
+        qL = self.d["q"]["L"]
+        for bd in self.d.get("bodies", []):
+            o = np.array([_val(bd["ox"], qL, i), _val(bd["oy"], qL, i)])
+            a = math.radians(_val(bd["angle"], 1e-4, i))
+            if not (np.isfinite(o).all() and math.isfinite(a)):
+                continue
+            c, s = math.cos(a), math.sin(a)
+            xy = np.array([[o[0] + c * x - s * y, o[1] + s * x + c * y] for x, y in bd["local"]])
+            if bd["kind"] == "circle":
+                ax.add_patch(Circle(tuple(xy[0]), bd["r"], fc="#eef3fa", ec="k", lw=0.8))
+            elif bd["kind"] == "outline":
+                ax.add_patch(Polygon(xy, closed=True, fc="#eef3fa", ec="k", lw=0.8))
+            else:
+                ax.plot(xy[:, 0], xy[:, 1], color="k", lw=2.5)
+
     def draw(self, i: int) -> Any:
         d = self.d
         for ax, kind in zip(self.axes, self.kinds):
@@ -70,6 +90,8 @@ class _Drawer:
                 x0, y0 = view[0] + 0.05 * (view[2] - view[0]), view[1] + 0.05 * (view[3] - view[1])
                 ax.plot([x0, x0 + sc["bar"]], [y0, y0], color="k", lw=1.5)
             ax.set_title(title, fontsize=10)
+            if kind == "mechanism":
+                self._bodies(ax, i)
             for lk in d["links"]:
                 pts = [self.point(p, i, kind) for p in lk["points"]]
                 if len(pts) < 2 or not all(np.isfinite(q).all() for q in pts):

@@ -23,11 +23,9 @@ Array = np.ndarray
 
 def _count(count: object, mech: Mechanism) -> int:
     """The number of postures asked for, as an int (a one-line error otherwise)."""
-    if mech.cams:  # its equivalent linkage holds at the file's cam angle only (Sec. 4.7)
-        raise InputError("a cam mechanism is solved at the file's cam angle (its equivalent "
-                         "linkage, Sec. 4.7): sweeping it is not supported yet (change "
-                         "[drive] angle, or graphkin cam for the follower's motion)",
-                         key="cams", file=mech.source)
+    if mech.cams:  # a sweep replaces them first (for_sweep): what is left takes designs
+        raise InputError("a batch of designs of a cam mechanism is not supported (sweep, plot "
+                         "and animate turn its cam)", key="cams", file=mech.source)
     try:
         ok = int(count) == count and int(count) >= 1  # type: ignore[call-overload]
     except (TypeError, ValueError):

@@ -32,6 +32,7 @@ from graphkin.kinematics.sweep.drive_range import _count
 from graphkin.kinematics.sweep.engine import _Engine, _engine
 from graphkin.kinematics.sweep.report import Sweep
 from graphkin.kinematics.sweep.run import _run
+from graphkin.mechanisms.cam_joint import for_sweep
 from graphkin.mechanisms.model import Mechanism
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
@@ -153,6 +154,7 @@ def follow(mech: Mechanism, count: int = 360, start: float | None = None,
         swept by the analytic solver already follows the motion (Newton goes on
         from each posture to the next), and is returned as it is.
     """
+    mech = for_sweep(mech)  # a cam's follower moves by the cam's program (Sec. 6.3)
     count = _count(count, mech)
     tol = tol or DEFAULT_TOL
     base = _engine(mech, tol)

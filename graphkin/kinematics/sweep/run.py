@@ -23,6 +23,7 @@ from graphkin.kinematics.sweep.extra_columns import (
 )
 from graphkin.kinematics.sweep.fast import fast_columns
 from graphkin.kinematics.sweep.report import Sweep
+from graphkin.mechanisms.cam_joint import for_sweep
 from graphkin.mechanisms.model import Mechanism
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
@@ -106,6 +107,9 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     those that follow the first by a law (``follows``, ``Drive.law``): they move with
     it, value f(first) and rates f′ · ω and f″ · ω² + f′ · α (f linear, k · first + c,
     or the spline through a table, :mod:`graphkin.mechanisms.laws`).
+    A cam mechanism (``[[cams]]``) is swept with each follower as such a drive,
+    moved by its cam's program (:func:`graphkin.mechanisms.cam_joint.for_sweep`,
+    Sec. 6.3): the returned sweep's ``mechanism`` is that one.
     Mechanisms that cannot be solved one group at a time are solved by
     :func:`graphkin.kinematics.analytic.solve_analytic_many` (Newton-Raphson,
     each posture from the one before), and ``method`` and ``notes`` say so.
@@ -128,6 +132,7 @@ def sweep(mech: Mechanism, count: int = 360, start: float | None = None,
     >>> round(float(sw.columns["angle_4"][0]), 4)  # 180° - acos((100² + 300² - 250²)/(2·100·300))
     128.6822
     """
+    mech = for_sweep(mech)  # a cam's follower moves by the cam's program (Sec. 6.3)
     if turn:
         from graphkin.kinematics.sweep.drive_range import turn_range
 
