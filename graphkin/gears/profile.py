@@ -27,7 +27,8 @@ import numpy as np
 from graphkin.gears.mesh import GearPair
 from graphkin.gears.tooth import Gear
 
-__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "TIP_SAMPLES"]
+__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "rack_teeth",
+           "TIP_SAMPLES"]
 
 TIP_SAMPLES = 241
 """Points along a tip's path relative to the other gear."""
@@ -113,6 +114,40 @@ def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: floa
     return np.stack([center[0] + r * np.cos(th), center[1] + r * np.sin(th)], axis=-1)
 
 
+def rack_teeth(g: Gear, x_range: tuple[float, float], side: float = 1.0) -> np.ndarray:
+    """The teeth of a rack below a pinion, its pitch line the x axis (Sec. 7.5, Fig. 7.10).
+
+    Straight flanks at φ from the line of centers, the tooth ``p/2`` thick on
+    the pitch line, its top land on the addendum line ``y = a`` (toward the
+    pinion) and its bottom land on the dedendum line ``y = −d``.  The tooth in
+    mesh at P has its flank through P, the tooth itself on the side ``−side``
+    of P (``side``: the sign of x of A, where the line of action leaves P
+    toward the pinion; the flank is normal to the line of action).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(K, n, 2)``: every tooth whose pitch lies in ``x_range``, up one
+        flank, across the top land, down the other flank and along the bottom
+        land to the next tooth.
+    """
+    p, a, d = g.circular_pitch, g.addendum, g.dedendum
+    tan = math.tan(g.pressure_angle)
+    wb = p / 4.0 + d * tan
+    wt, top = p / 4.0 - a * tan, a
+    if wt < 0.0:   # the flanks meet below the addendum line: a pointed tooth
+        wt, top = 0.0, p / (4.0 * tan)
+    corners = np.array([[-wb, -d], [-wt, top], [wt, top], [wb, -d], [p - wb, -d]])
+    t = np.linspace(0.0, 1.0, FLANK)[:-1, None]
+    tpl = np.concatenate([c0 + t * (c1 - c0) for c0, c1 in zip(corners[:-1], corners[1:])]
+                         + [corners[-1:]])
+    x0 = -side * p / 4.0
+    k = np.arange(math.floor((x_range[0] - x0) / p) - 1, math.ceil((x_range[1] - x0) / p) + 2)
+    out = np.broadcast_to(tpl, (k.size, *tpl.shape)).copy()
+    out[..., 0] += (x0 + k * p)[:, None]
+    return out
+
+
 def mesh_phases(pair: GearPair) -> tuple[float, float]:
     """The tooth phases ψ2, ψ3 of the layout of :func:`graphkin.gears.mesh.mesh_construction`.
 
@@ -123,6 +158,8 @@ def mesh_phases(pair: GearPair) -> tuple[float, float]:
     """
     r2p, r3p = pair.operating_pitch_radii
     b2 = float(pair.driver.half_angle(r2p))
+    if pair.driven.rack:   # the rack's teeth are placed by :func:`rack_teeth`, not by a phase
+        return -math.pi / 2 + b2, 0.0
     b3 = float(pair.driven.half_angle(r3p))
     if pair.driven.internal:   # O3 above P too: the ring's tooth left of P, its flank at P
         return -math.pi / 2 + b2, -math.pi / 2 - b3
@@ -156,6 +193,8 @@ def tip_path(pair: GearPair, points: dict[str, tuple[float, float]], cutter: int
         ``(TIP_SAMPLES, 2)`` points.
     """
     g2, g3 = pair.driver, pair.driven
+    if g3.rack:
+        return _rack_tip_path(pair, points)
     ra2, ra3 = pair.outside_radii
     r2p, r3p = pair.operating_pitch_radii
     psi2, psi3 = mesh_phases(pair)
@@ -179,3 +218,22 @@ def tip_path(pair: GearPair, points: dict[str, tuple[float, float]], cutter: int
     back = -o_ang
     return oo + np.stack([np.cos(back) * d[:, 0] - np.sin(back) * d[:, 1],
                           np.sin(back) * d[:, 0] + np.cos(back) * d[:, 1]], axis=-1)
+
+
+def _rack_tip_path(pair: GearPair, points: dict[str, tuple[float, float]]) -> np.ndarray:
+    """The path of the rack's tip corner relative to the pinion (Sec. 7.7, Figs. 7.18, 7.25).
+
+    The pinion turns clockwise by θ while the rack moves ``−R_2 θ`` along its
+    pitch line (rolling at P); in the pinion's frame the corner ``q`` of the
+    tooth in mesh at P is ``O_2 + R(θ)(q − R_2 θ x̂ − O_2)``.
+    """
+    g2, g3 = pair.driver, pair.driven
+    o2 = np.array(points["O2"])
+    side = 1.0 if points["A"][0] >= points["P"][0] else -1.0
+    corner = min(g3.addendum, g3.circular_pitch / (4.0 * math.tan(g3.pressure_angle)))
+    q = np.array([-side * corner * math.tan(g3.pressure_angle), corner])
+    span = 2.0 * 2.0 * math.pi / g2.teeth
+    th = np.linspace(-span, span, TIP_SAMPLES)
+    moved = np.stack([q[0] - g2.pitch_radius * th, np.full_like(th, q[1])], axis=-1) - o2
+    return o2 + np.stack([np.cos(th) * moved[:, 0] - np.sin(th) * moved[:, 1],
+                          np.sin(th) * moved[:, 0] + np.cos(th) * moved[:, 1]], axis=-1)
