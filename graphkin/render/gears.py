@@ -143,7 +143,7 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
     elif lay.interference:
         fig = "interference, Fig. 7.18"
     else:
-        fig = "Fig. 7.9"
+        fig = "Fig. 7.10" if g3.rack else "Fig. 7.9"
     what = (f"(a) a pinion of {g2.teeth} teeth and a rack" if g3.rack
             else f"(a) gears {g2.teeth} and {g3.teeth} teeth in mesh")
     panels = [_panel(lay, "pair", what, lo, hi, 0.62 * max_inches)]
