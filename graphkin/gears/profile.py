@@ -93,8 +93,8 @@ def _ring_tooth(g: Gear, inside: float) -> np.ndarray:
     return np.concatenate([down, top, up, bottom])
 
 
-def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float
-               ) -> np.ndarray:
+def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float,
+               template: np.ndarray | None = None) -> np.ndarray:
     """Every tooth of a gear, shape ``(N, n, 2)`` in Cartesian coordinates.
 
     Parameters
@@ -106,8 +106,12 @@ def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: floa
         The gear's center.
     phase : float
         The polar angle of the center line of tooth 0 (radians).
+    template : numpy.ndarray, optional
+        One tooth, polar as :func:`tooth_template` gives it (a tooth re-cut
+        by its mate, :mod:`graphkin.render.gears_recut`); by default the
+        involute tooth.
     """
-    tpl = tooth_template(g, outside)
+    tpl = tooth_template(g, outside) if template is None else template
     angles = phase + 2.0 * math.pi * np.arange(g.teeth) / g.teeth
     th = tpl[None, :, 1] + angles[:, None]
     r = np.broadcast_to(tpl[None, :, 0], th.shape)

@@ -150,8 +150,9 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
     zlo, zhi = _zone(lay)
     panels.append(_panel(lay, "action", f"(b) the zone of action ({fig})", zlo, zhi,
                          1.2 * max_inches))
+    recut = _recut(lay) if upto is None else {}
     for p in panels:
-        _paint(lay, p, zoom=p.name == "action", upto=upto)
+        _paint(lay, p, zoom=p.name == "action", upto=upto, recut=recut)
     if upto is None:
         panels.append(_involute_panel(lay, 0.9 * max_inches))
     for p in panels:
@@ -198,10 +199,25 @@ def _label(p: Panel, g: Any, text: str, at: np.ndarray, key: str, style: str = "
                                  f"label-{g.gid}-{key}", g, key=key, prefer=prefer))
 
 
-def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> None:
+def _recut(lay: MeshLayout) -> dict[str, np.ndarray]:
+    """The teeth re-cut where they interfere (Fig. 7.18): gear 2 before A, gear 3 after B."""
+    from graphkin.render.gears_recut import recut_template
+
+    out = {}
+    for link, end in (("2", lay.start), ("3", lay.end)):
+        if end == Contact.INTERFERENCE:
+            tpl = recut_template(lay, int(link))
+            if tpl is not None:
+                out[link] = tpl
+    return out
+
+
+def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None,
+           recut: dict[str, np.ndarray] | None = None) -> None:
     """Draw the layout in a panel; ``zoom``: the zone of action, every element lettered.
 
-    ``upto``: the construction's steps up to that one only (the newest highlighted).
+    ``upto``: the construction's steps up to that one only (the newest highlighted);
+    ``recut``: a tooth outline re-cut by the mate (:func:`_recut`) for gear ``"2"`` or ``"3"``.
     """
     pair = lay.pair
     cx = lay.construction
@@ -224,7 +240,8 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> No
             side = 1.0 if lay.points["A"][0] >= lay.points["P"][0] else -1.0
             outline = rack_teeth(gear, (x0, x1), side)
         else:
-            outline = gear_teeth(gear, ra, lay.points[center], psi)
+            outline = gear_teeth(gear, ra, lay.points[center], psi,
+                                 template=(recut or {}).get(link))
         inside = ((outline[..., 0] >= x0) & (outline[..., 0] <= x1)
                   & (outline[..., 1] >= y0) & (outline[..., 1] <= y1))
         for i in np.flatnonzero(inside.any(axis=1)):
