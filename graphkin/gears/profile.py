@@ -27,7 +27,7 @@ import numpy as np
 from graphkin.gears.mesh import GearPair
 from graphkin.gears.tooth import Gear
 
-__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "rack_teeth",
+__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "rack_teeth", "ring_overlap",
            "TIP_SAMPLES"]
 
 TIP_SAMPLES = 241
@@ -241,3 +241,48 @@ def _rack_tip_path(pair: GearPair, points: dict[str, tuple[float, float]]) -> np
     moved = np.stack([q[0] - g2.pitch_radius * th, np.full_like(th, q[1])], axis=-1) - o2
     return o2 + np.stack([np.cos(th) * moved[:, 0] - np.sin(th) * moved[:, 1],
                           np.sin(th) * moved[:, 0] + np.cos(th) * moved[:, 1]], axis=-1)
+
+
+def ring_overlap(pair: GearPair, points: dict[str, tuple[float, float]],
+                 steps: int = TIP_SAMPLES) -> float:
+    """How deep the pinion's teeth enter the ring's over one pitch of motion (tip interference).
+
+    A pinion inside a ring of few more teeth can foul the ring's tips away
+    from the path of contact, where the two addendum circles cross (the book
+    does not treat it; it is the check a designer makes beside Eq. 7.12).
+    Every point of every pinion tooth (its involute flanks, top lands and the
+    radial lines below its base circle) is carried through one circular
+    pitch of the rolling (2 clockwise, the ring ``N2/N3`` as fast, the same
+    sense; the motion repeats after a pitch), written in the ring's frame,
+    and measured against the ring's teeth: a point at ``R_a3 < r < R_root3``
+    whose angle from the nearest ring tooth's center line is below that
+    tooth's half angle ``β'(r)`` is inside it, by ``r (β'(r) − |offset|)``.
+
+    Returns
+    -------
+    float
+        The largest such depth (a length), 0 when no point enters.
+    """
+    g2, g3 = pair.driver, pair.driven
+    if not g3.internal:
+        return 0.0
+    ra2, ra3 = pair.outside_radii
+    psi2, psi3 = mesh_phases(pair)
+    o2, o3 = np.array(points["O2"]), np.array(points["O3"])
+    teeth = gear_teeth(g2, ra2, (float(o2[0]), float(o2[1])), psi2).reshape(-1, 2)
+    th = np.linspace(0.0, 2.0 * math.pi / g2.teeth, steps)
+    d = teeth - o2
+    c, s = np.cos(-th)[:, None], np.sin(-th)[:, None]
+    px = o2[0] + c * d[:, 0] - s * d[:, 1] - o3[0]
+    py = o2[1] + s * d[:, 0] + c * d[:, 1] - o3[1]
+    back = g2.teeth / g3.teeth * th[:, None]          # undo the ring's turn, −(N2/N3) θ
+    qx = np.cos(back) * px - np.sin(back) * py
+    qy = np.sin(back) * px + np.cos(back) * py
+    r = np.hypot(qx, qy)
+    pitch3 = 2.0 * math.pi / g3.teeth
+    off = (np.arctan2(qy, qx) - psi3 + 0.5 * pitch3) % pitch3 - 0.5 * pitch3
+    band = (r > ra3) & (r < g3.root_radius)
+    rr = np.where(band, r, g3.root_radius)
+    half = np.asarray(g3.half_angle(rr), dtype=float)
+    depth = np.where(band, rr * (half - np.abs(off)), 0.0)
+    return float(max(depth.max(), 0.0))

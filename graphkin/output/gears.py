@@ -18,6 +18,7 @@ from typing import Any
 
 from graphkin.gears import analytic
 from graphkin.gears.mesh import Contact, GearPair, MeshLayout
+from graphkin.gears.profile import ring_overlap
 from graphkin.gears.tooth import Gear
 from graphkin.text import g6, table
 
@@ -130,8 +131,22 @@ def gears_json(lay: MeshLayout) -> dict[str, Any]:
             "involute_contact_ratio": lay.involute_contact_ratio,
             "kind": str(g3.kind),
             "minimum_driver_teeth": None if math.isnan(least) else math.ceil(least - 1e-9),
+            **_fouling(lay),
         },
     }
+
+
+#: A pinion tooth entering a ring tooth by less than this many modules touches it (round-off).
+FOULING_FLOOR = 1e-6
+
+
+def _fouling(lay: MeshLayout) -> dict[str, Any]:
+    """``tip_overlap`` and ``tip_interference`` of a ring (null for external gears)."""
+    if not lay.pair.driven.internal:
+        return {"tip_overlap": None, "tip_interference": None}
+    depth = ring_overlap(lay.pair, lay.points)
+    return {"tip_overlap": depth,
+            "tip_interference": bool(depth > FOULING_FLOOR * lay.pair.driver.module)}
 
 
 def _rack_json(lay: MeshLayout) -> dict[str, Any]:
@@ -169,6 +184,7 @@ def _rack_json(lay: MeshLayout) -> dict[str, Any]:
             "kind": str(g3.kind),
             "minimum_driver_teeth": math.ceil(analytic.minimum_teeth_rack(
                 g3.addendum / g3.module, phi) - 1e-9),
+            "tip_overlap": None, "tip_interference": None,
         },
     }
 
@@ -272,6 +288,13 @@ def gears_text(lay: MeshLayout) -> str:
     elif m["kind"] == "internal":
         lines.append(f"  No interference: C lies between A and P (Eq. 7.12); inside "
                      f"{c3} the point B lies beyond A and does not bound the recess (Fig. 7.11).")
+    if m["tip_interference"]:
+        lines.append(f"  Tip interference (fouling): away from the path of contact the teeth of "
+                     f"{c2} enter those of {c3} by up to {g6(m['tip_overlap'])} {u} as they "
+                     "turn; the ring needs more teeth, or stub teeth.")
+    elif m["kind"] == "internal":
+        lines.append(f"  No tip interference: the teeth of {c2} clear those of {c3} through a "
+                     "whole pitch of the motion.")
     else:
         lines.append("  No interference: C and D lie between the interference points A and B "
                      "(Eq. 7.12).")
