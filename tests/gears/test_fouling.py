@@ -79,7 +79,7 @@ def test_known_rings(phi, n2, n3, fouls, tmp_path, capsys):
     assert json.loads(capsys.readouterr().out)["mesh"]["tip_interference"] is fouls
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=8, deadline=None)
 @given(st.sampled_from([20.0, 22.5, 25.0]), st.integers(12, 30), st.integers(1, 30))
 def test_the_verdict_agrees_with_polygon_overlap(phi, n2, more):
     try:
