@@ -24,7 +24,8 @@ __all__ = ["inv", "inv_inverse", "circular_pitch", "base_pitch", "pitch_radius",
            "tooth_thickness", "offset_thickness", "modified_pressure_angle",
            "modified_pitch_radius", "offset_for_no_undercut", "minimum_teeth",
            "minimum_teeth_rack", "involute_point", "approach_recess_internal",
-           "minimum_teeth_internal"]
+           "minimum_teeth_internal",
+           "approach_recess_rack"]
 
 
 def inv(phi: Any) -> Any:
@@ -121,6 +122,21 @@ def approach_recess_internal(outside2: float, inside3: float, base2: float, base
     for external gears: ``PD = √((R_2 + a)² − r_2²) − R_2 sin φ``.
     """
     cp = pitch3 * math.sin(phi) - math.sqrt(inside3 ** 2 - base3 ** 2)
+    pd = math.sqrt(outside2 ** 2 - base2 ** 2) - pitch2 * math.sin(phi)
+    return cp, pd
+
+
+def approach_recess_rack(outside2: float, base2: float, pitch2: float, addendum3: float,
+                         phi: float) -> tuple[float, float]:
+    """CP and PD for a pinion in mesh with a rack (Sec. 7.5, Fig. 7.10).
+
+    Eq. (7.10) as ``R_3 → ∞``: ``√((R_3 + a)² − R_3² cos² φ) − R_3 sin φ =
+    (2 R_3 a + a² ) / (√(...) + R_3 sin φ) → a / sin φ``, which is also read off
+    the figure: C lies on the rack's addendum line, ``a`` from the pitch line,
+    on a line of action at φ to it.  The recess is Eq. (7.11) unchanged:
+    ``PD = √(R_a2² − r_2²) − R_2 sin φ``.
+    """
+    cp = addendum3 / math.sin(phi)
     pd = math.sqrt(outside2 ** 2 - base2 ** 2) - pitch2 * math.sin(phi)
     return cp, pd
 

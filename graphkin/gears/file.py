@@ -132,6 +132,9 @@ class _Reader:
         if g2.link == g3.link:
             raise self.error(f"both gears are link {g2.link}", f"gears.{n3}.link")
         center = None
+        if "center_distance" in data and g3.rack:
+            raise self.error("a pinion and a rack have no center distance: the rack's pitch "
+                             "line is tangent to the pinion's pitch circle", "center_distance")
         if "center_distance" in data:
             center = self.length(data["center_distance"], "center_distance", positive=True)
         return GearPair(g2, g3, center, units=self.unit, title=title, source=self.source)
@@ -139,7 +142,20 @@ class _Reader:
     def gear(self, name: str, table: Mapping[str, Any], top: Mapping[str, Any],
              link: int) -> Gear:
         key = f"gears.{name}"
-        teeth = self.whole(table.get("teeth"), f"{key}.teeth", low=3)
+        kind = self.kind(table.get("kind", "external"), f"{key}.kind")
+        if kind == GearKind.RACK:
+            if link == 2:
+                raise self.error("the driver (the first gear) is the pinion: only the second "
+                                 "may be a rack", f"{key}.kind")
+            if "teeth" in table:
+                raise self.error("a rack has no number of teeth (its pitch radius is "
+                                 "infinite, Sec. 7.5): leave teeth out", f"{key}.teeth")
+            if "offset" in table:
+                raise self.error("a rack cut with an offset is not modelled: leave offset out",
+                                 f"{key}.offset")
+            teeth = 0
+        else:
+            teeth = self.whole(table.get("teeth"), f"{key}.teeth", low=3)
         if "link" in table:
             link = self.whole(table["link"], f"{key}.link", low=2)
 
@@ -173,7 +189,6 @@ class _Reader:
         dedendum = (self.length(table["dedendum"], f"{key}.dedendum", positive=True)
                     if "dedendum" in table else DEDENDUM[system] * module)
         offset = self.length(table["offset"], f"{key}.offset") if "offset" in table else 0.0
-        kind = self.kind(table.get("kind", "external"), f"{key}.kind")
         if kind == GearKind.INTERNAL and offset != 0.0:
             raise self.error("teeth cut with an offset are not modelled inside an internal gear",
                              f"{key}.offset")
@@ -181,7 +196,7 @@ class _Reader:
             raise self.error(f"a module too small (below {MIN_MODULE:g} {self.unit}): write the "
                              "sizes in a smaller unit",
                              f"{where}module" if "module" in level else f"{where}diametral_pitch")
-        if abs(offset) >= teeth * module / 2:
+        if kind != GearKind.RACK and abs(offset) >= teeth * module / 2:
             raise self.error(f"an offset of {offset:g} {self.unit} is larger than the gear",
                              f"{key}.offset")
         try:
@@ -191,15 +206,12 @@ class _Reader:
             raise self.error(exc.message, exc.key or key) from None
 
     def kind(self, value: Any, key: str) -> GearKind:
-        """``external`` (the default) or ``internal`` (an annular gear, Fig. 7.11)."""
+        """``external`` (the default), ``internal`` (an annular gear, Fig. 7.11) or ``rack``."""
         text = str(value).strip().lower() if isinstance(value, str) else repr(value)
-        if text == "rack":
-            raise self.error("a rack is not a gear-file kind yet: write the pinion and the rack "
-                             "as a mechanism file ([[rolling]] with line = [...], Sec. 3.7)", key)
         try:
             return GearKind(text)
         except ValueError:
-            raise self.error(f"kind is \"external\" or \"internal\", not {value!r}",
+            raise self.error(f"kind is \"external\", \"internal\" or \"rack\", not {value!r}",
                              key) from None
 
     def whole(self, value: Any, key: str, low: int) -> int:

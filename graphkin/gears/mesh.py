@@ -97,6 +97,19 @@ class GearPair:
             raise InputError(f"the driver {g2.name!r} is the pinion: only the second gear may be "
                              "internal (kind = \"internal\")", key=f"gears.{g2.name}.kind",
                              file=self.source)
+        if g3.rack:
+            if g2.offset != 0.0:
+                raise InputError("a pinion cut with an offset is not modelled in mesh with a "
+                                 "rack: leave offset out", key=f"gears.{g2.name}.offset",
+                                 file=self.source)
+            if self.center_distance is not None:
+                raise InputError("a pinion and a rack have no center distance",
+                                 key="center_distance", file=self.source)
+            if g2.standard_outside_radius <= g2.base_radius:
+                raise InputError(f"the addendum circle of {g2.name!r} lies inside its base "
+                                 "circle: its teeth do not reach the line of action",
+                                 key=f"gears.{g2.name}.addendum", file=self.source)
+            return
         if g3.internal and g3.teeth <= g2.teeth:
             raise InputError(f"a pinion of {g2.teeth} teeth cannot mesh inside an internal gear "
                              f"of {g3.teeth}: the ring needs more teeth than the pinion",
@@ -157,6 +170,8 @@ class GearPair:
     def tight_center_distance(self) -> float:
         """Where the teeth touch on both flanks: ``(r_2 + r_3) / cos φ'`` (Eqs. 7.19-7.20)."""
         r2, r3 = self.driver.base_radius, self.driven.base_radius
+        if self.driven.rack:
+            return math.inf
         return (r3 - r2 if self.driven.internal else r2 + r3) / math.cos(self.tight_angle)
 
     @property
@@ -164,6 +179,11 @@ class GearPair:
         """The operating center distance."""
         return self.tight_center_distance if self.center_distance is None else \
             self.center_distance
+
+    @property
+    def scale(self) -> float:
+        """The length the tolerances scale with: the center distance, or ``R_2`` with a rack."""
+        return self.driver.pitch_radius if self.driven.rack else self.center
 
     @property
     def standard_center_distance(self) -> float:
@@ -183,6 +203,8 @@ class GearPair:
         long-and-short-addendum system) ``R + a + e``.
         """
         g2, g3 = self.driver, self.driven
+        if g3.rack:   # the rack's addendum line at a above its pitch line: "radius" infinite
+            return g2.standard_outside_radius, math.inf
         if g3.internal:   # no offsets inside a ring: each blank as cut alone
             return g2.standard_outside_radius, g3.standard_outside_radius
         c0 = self.tight_center_distance
@@ -193,6 +215,8 @@ class GearPair:
     def operating_pitch_radii(self) -> tuple[float, float]:
         """``R'_2, R'_3``: the pitch point divides the center distance as the teeth (Eq. 7.5)."""
         n2, n3 = self.driver.teeth, self.driven.teeth
+        if self.driven.rack:   # the pitch circle of 2 rolls on the rack's pitch line
+            return self.driver.pitch_radius, math.inf
         if self.driven.internal:   # both centers on one side of P: R'_3 − R'_2 = C
             return self.center * n2 / (n3 - n2), self.center * n3 / (n3 - n2)
         return self.center * n2 / (n2 + n3), self.center * n3 / (n2 + n3)
@@ -266,6 +290,8 @@ def mesh_construction(pair: GearPair) -> Construction:
         ``dedendum3``.
     """
     g2, g3 = pair.driver, pair.driven
+    if g3.rack:
+        return _rack_construction(pair)
     c = pair.center
     r2p, r3p = pair.operating_pitch_radii
     ra2, ra3 = pair.outside_radii
@@ -326,6 +352,69 @@ def mesh_construction(pair: GearPair) -> Construction:
     return cx
 
 
+def _rack_construction(pair: GearPair) -> Construction:
+    """The layout of a pinion and a rack (Sec. 7.5, Fig. 7.10; Sec. 7.7).
+
+    The rack is a gear of infinite radius: its pitch circle is the pitch line,
+    tangent to the pinion's pitch circle at P; its base circle and B lie at
+    infinity, so the line of action runs from A through P without end; its
+    addendum and dedendum circles are lines parallel to the pitch line, ``a``
+    toward the pinion and ``d`` away from it.  First contact C is where the
+    rack's addendum line crosses the line of action (CP = a / sin φ), last
+    contact D where the pinion's addendum circle does.
+
+    Labels: ``O2``, ``P``, ``O2P`` (the line of centers), ``pitch2``,
+    ``tangent`` (the rack's pitch line), ``base2``, ``A``, ``AB`` (the line of
+    action from A through P), ``addendum2``, ``E3`` and ``addendum3`` (the
+    rack's addendum line), ``C``, ``D``, ``dedendum2``, ``F3`` and
+    ``dedendum3`` (the rack's dedendum line).
+    """
+    g2, g3 = pair.driver, pair.driven
+    r2p = g2.pitch_radius
+    ra2 = pair.outside_radii[0]
+    cx = Construction(title=f"a pinion of {g2.teeth} teeth and a rack in mesh")
+
+    def add(op: str, inputs: tuple[str, ...], out: str, note: str, **kw: object) -> None:
+        cx.add(op, inputs, (out,), note=note, diagram="gears", **kw)  # type: ignore[arg-type]
+
+    # Step 1: the center, the pitch point, the pitch circle and the rack's pitch line
+    add("point", (), "O2", "O2, the center of the pinion 2", xy=(0.0, r2p), role="given")
+    add("point", (), "P", f"the pitch point P, {r2p:g} (the pitch radius R2) below O2",
+        xy=(0.0, 0.0), role="given")
+    add("join", ("O2", "P"), "O2P", "the line of centers through O2 and P, perpendicular to "
+        "the rack")
+    add("circle", ("O2",), "pitch2", "the pitch circle of 2, about O2 through P", radius=r2p)
+    # Step 2: the rack's pitch line is the common tangent
+    add("perpendicular", ("O2P", "P"), "tangent", "the pitch line of the rack 3: the tangent "
+        "to the pitch circle of 2 at P (a rack is a gear of infinite radius, Sec. 7.5)")
+    # Step 3: the base circle and the line of action
+    add("circle", ("O2",), "base2", "the base circle of 2", radius=g2.base_radius)
+    add("tangent_foot", ("O2", "P"), "A", "A, where the line of action through P touches the "
+        "base circle of 2: the foot of the perpendicular from O2 (the interference point)",
+        offset=g2.base_radius, branch=Side.LEFT, role="result")
+    add("join", ("A", "P"), "AB", "the line of action from A through P, at the pressure "
+        "angle from the pitch line, normal to the rack's straight flanks; the rack's base "
+        "circle, and B, lie at infinity")
+    # Step 4: the addendum circle and line, and the ends of the path of contact
+    add("circle", ("O2",), "addendum2", "the addendum circle of 2", radius=ra2)
+    add("along_ray", ("O2", "P"), "E3", f"E3 on the line of centers, the rack's addendum "
+        f"{g3.addendum:g} above P", distance=r2p - g3.addendum)
+    add("parallel", ("tangent", "E3"), "addendum3", "the addendum line of the rack, parallel "
+        "to its pitch line through E3")
+    add("meet", ("AB", "addendum3"), "C", "C, first contact: where the addendum line of the "
+        "rack crosses the line of action", role="result")
+    add("intersect_line_circle", ("AB", "addendum2"), "D", "D, last contact: where the "
+        "addendum circle of the pinion 2 crosses the line of action", branch=Along.AHEAD,
+        role="result")
+    # Step 5: the dedendum circle and line
+    add("circle", ("O2",), "dedendum2", "the dedendum circle of 2", radius=g2.root_radius)
+    add("along_ray", ("O2", "P"), "F3", f"F3 on the line of centers, the rack's dedendum "
+        f"{g3.dedendum:g} below P", distance=r2p + g3.dedendum)
+    add("parallel", ("tangent", "F3"), "dedendum3", "the dedendum line of the rack, parallel "
+        "to its pitch line through F3")
+    return cx
+
+
 def layout(pair: GearPair) -> MeshLayout:
     """Evaluate :func:`mesh_construction` and measure the path of contact on it.
 
@@ -340,8 +429,9 @@ def layout(pair: GearPair) -> MeshLayout:
     except NoIntersectionError as exc:
         raise InputError(f"the gears cannot mesh: {exc}", key="center_distance",
                          file=pair.source) from None
-    pts = {k: (float(ev[k][0] / ev[k][2]), float(ev[k][1] / ev[k][2]))
-           for k in ("O2", "O3", "P", "A", "B", "C", "D")}
+    g2, g3 = pair.driver, pair.driven
+    names = ("O2", "P", "A", "C", "D") if g3.rack else ("O2", "O3", "P", "A", "B", "C", "D")
+    pts = {k: (float(ev[k][0] / ev[k][2]), float(ev[k][1] / ev[k][2])) for k in names}
     p = np.array(pts["P"])
     u = p - np.array(pts["A"])
     u = u / float(np.hypot(*u))                 # along the line of action, A toward P
@@ -352,11 +442,11 @@ def layout(pair: GearPair) -> MeshLayout:
     def along(label: str) -> float:
         return float((np.array(pts[label]) - p) @ u)
 
-    t_a, t_b, t_c, t_d = along("A"), along("B"), along("C"), along("D")
+    t_a, t_c, t_d = along("A"), along("C"), along("D")
+    t_b = math.inf if g3.rack else along("B")   # a rack's base circle is at infinity
     cp, pd = -t_c, t_d
     path = t_d - t_c
-    g2, g3 = pair.driver, pair.driven
-    tol = pair.tol.length(pair.center)
+    tol = pair.tol.length(pair.scale)
     if path <= tol:
         raise InputError(f"the gears cannot mesh at a center distance of {pair.center:g} "
                          f"{pair.units}: the addendum circles cross the line of action with no "

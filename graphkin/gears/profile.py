@@ -27,7 +27,8 @@ import numpy as np
 from graphkin.gears.mesh import GearPair
 from graphkin.gears.tooth import Gear
 
-__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "TIP_SAMPLES"]
+__all__ = ["tooth_template", "gear_teeth", "mesh_phases", "tip_path", "rack_teeth", "ring_overlap",
+           "TIP_SAMPLES"]
 
 TIP_SAMPLES = 241
 """Points along a tip's path relative to the other gear."""
@@ -92,8 +93,8 @@ def _ring_tooth(g: Gear, inside: float) -> np.ndarray:
     return np.concatenate([down, top, up, bottom])
 
 
-def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float
-               ) -> np.ndarray:
+def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: float,
+               template: np.ndarray | None = None) -> np.ndarray:
     """Every tooth of a gear, shape ``(N, n, 2)`` in Cartesian coordinates.
 
     Parameters
@@ -105,12 +106,50 @@ def gear_teeth(g: Gear, outside: float, center: tuple[float, float], phase: floa
         The gear's center.
     phase : float
         The polar angle of the center line of tooth 0 (radians).
+    template : numpy.ndarray, optional
+        One tooth, polar as :func:`tooth_template` gives it (a tooth re-cut
+        by its mate, :mod:`graphkin.render.gears_recut`); by default the
+        involute tooth.
     """
-    tpl = tooth_template(g, outside)
+    tpl = tooth_template(g, outside) if template is None else template
     angles = phase + 2.0 * math.pi * np.arange(g.teeth) / g.teeth
     th = tpl[None, :, 1] + angles[:, None]
     r = np.broadcast_to(tpl[None, :, 0], th.shape)
     return np.stack([center[0] + r * np.cos(th), center[1] + r * np.sin(th)], axis=-1)
+
+
+def rack_teeth(g: Gear, x_range: tuple[float, float], side: float = 1.0) -> np.ndarray:
+    """The teeth of a rack below a pinion, its pitch line the x axis (Sec. 7.5, Fig. 7.10).
+
+    Straight flanks at φ from the line of centers, the tooth ``p/2`` thick on
+    the pitch line, its top land on the addendum line ``y = a`` (toward the
+    pinion) and its bottom land on the dedendum line ``y = −d``.  The tooth in
+    mesh at P has its flank through P, the tooth itself on the side ``−side``
+    of P (``side``: the sign of x of A, where the line of action leaves P
+    toward the pinion; the flank is normal to the line of action).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(K, n, 2)``: every tooth whose pitch lies in ``x_range``, up one
+        flank, across the top land, down the other flank and along the bottom
+        land to the next tooth.
+    """
+    p, a, d = g.circular_pitch, g.addendum, g.dedendum
+    tan = math.tan(g.pressure_angle)
+    wb = p / 4.0 + d * tan
+    wt, top = p / 4.0 - a * tan, a
+    if wt < 0.0:   # the flanks meet below the addendum line: a pointed tooth
+        wt, top = 0.0, p / (4.0 * tan)
+    corners = np.array([[-wb, -d], [-wt, top], [wt, top], [wb, -d], [p - wb, -d]])
+    t = np.linspace(0.0, 1.0, FLANK)[:-1, None]
+    tpl = np.concatenate([c0 + t * (c1 - c0) for c0, c1 in zip(corners[:-1], corners[1:])]
+                         + [corners[-1:]])
+    x0 = -side * p / 4.0
+    k = np.arange(math.floor((x_range[0] - x0) / p) - 1, math.ceil((x_range[1] - x0) / p) + 2)
+    out = np.broadcast_to(tpl, (k.size, *tpl.shape)).copy()
+    out[..., 0] += (x0 + k * p)[:, None]
+    return out
 
 
 def mesh_phases(pair: GearPair) -> tuple[float, float]:
@@ -123,6 +162,8 @@ def mesh_phases(pair: GearPair) -> tuple[float, float]:
     """
     r2p, r3p = pair.operating_pitch_radii
     b2 = float(pair.driver.half_angle(r2p))
+    if pair.driven.rack:   # the rack's teeth are placed by :func:`rack_teeth`, not by a phase
+        return -math.pi / 2 + b2, 0.0
     b3 = float(pair.driven.half_angle(r3p))
     if pair.driven.internal:   # O3 above P too: the ring's tooth left of P, its flank at P
         return -math.pi / 2 + b2, -math.pi / 2 - b3
@@ -156,6 +197,8 @@ def tip_path(pair: GearPair, points: dict[str, tuple[float, float]], cutter: int
         ``(TIP_SAMPLES, 2)`` points.
     """
     g2, g3 = pair.driver, pair.driven
+    if g3.rack:
+        return _rack_tip_path(pair, points)
     ra2, ra3 = pair.outside_radii
     r2p, r3p = pair.operating_pitch_radii
     psi2, psi3 = mesh_phases(pair)
@@ -179,3 +222,67 @@ def tip_path(pair: GearPair, points: dict[str, tuple[float, float]], cutter: int
     back = -o_ang
     return oo + np.stack([np.cos(back) * d[:, 0] - np.sin(back) * d[:, 1],
                           np.sin(back) * d[:, 0] + np.cos(back) * d[:, 1]], axis=-1)
+
+
+def _rack_tip_path(pair: GearPair, points: dict[str, tuple[float, float]]) -> np.ndarray:
+    """The path of the rack's tip corner relative to the pinion (Sec. 7.7, Figs. 7.18, 7.25).
+
+    The pinion turns clockwise by θ while the rack moves ``−R_2 θ`` along its
+    pitch line (rolling at P); in the pinion's frame the corner ``q`` of the
+    tooth in mesh at P is ``O_2 + R(θ)(q − R_2 θ x̂ − O_2)``.
+    """
+    g2, g3 = pair.driver, pair.driven
+    o2 = np.array(points["O2"])
+    side = 1.0 if points["A"][0] >= points["P"][0] else -1.0
+    corner = min(g3.addendum, g3.circular_pitch / (4.0 * math.tan(g3.pressure_angle)))
+    q = np.array([-side * corner * math.tan(g3.pressure_angle), corner])
+    span = 2.0 * 2.0 * math.pi / g2.teeth
+    th = np.linspace(-span, span, TIP_SAMPLES)
+    moved = np.stack([q[0] - g2.pitch_radius * th, np.full_like(th, q[1])], axis=-1) - o2
+    return o2 + np.stack([np.cos(th) * moved[:, 0] - np.sin(th) * moved[:, 1],
+                          np.sin(th) * moved[:, 0] + np.cos(th) * moved[:, 1]], axis=-1)
+
+
+def ring_overlap(pair: GearPair, points: dict[str, tuple[float, float]],
+                 steps: int = TIP_SAMPLES) -> float:
+    """How deep the pinion's teeth enter the ring's over one pitch of motion (tip interference).
+
+    A pinion inside a ring of few more teeth can foul the ring's tips away
+    from the path of contact, where the two addendum circles cross (the book
+    does not treat it; it is the check a designer makes beside Eq. 7.12).
+    Every point of every pinion tooth (its involute flanks, top lands and the
+    radial lines below its base circle) is carried through one circular
+    pitch of the rolling (2 clockwise, the ring ``N2/N3`` as fast, the same
+    sense; the motion repeats after a pitch), written in the ring's frame,
+    and measured against the ring's teeth: a point at ``R_a3 < r < R_root3``
+    whose angle from the nearest ring tooth's center line is below that
+    tooth's half angle ``β'(r)`` is inside it, by ``r (β'(r) − |offset|)``.
+
+    Returns
+    -------
+    float
+        The largest such depth (a length), 0 when no point enters.
+    """
+    g2, g3 = pair.driver, pair.driven
+    if not g3.internal:
+        return 0.0
+    ra2, ra3 = pair.outside_radii
+    psi2, psi3 = mesh_phases(pair)
+    o2, o3 = np.array(points["O2"]), np.array(points["O3"])
+    teeth = gear_teeth(g2, ra2, (float(o2[0]), float(o2[1])), psi2).reshape(-1, 2)
+    th = np.linspace(0.0, 2.0 * math.pi / g2.teeth, steps)
+    d = teeth - o2
+    c, s = np.cos(-th)[:, None], np.sin(-th)[:, None]
+    px = o2[0] + c * d[:, 0] - s * d[:, 1] - o3[0]
+    py = o2[1] + s * d[:, 0] + c * d[:, 1] - o3[1]
+    back = g2.teeth / g3.teeth * th[:, None]          # undo the ring's turn, −(N2/N3) θ
+    qx = np.cos(back) * px - np.sin(back) * py
+    qy = np.sin(back) * px + np.cos(back) * py
+    r = np.hypot(qx, qy)
+    pitch3 = 2.0 * math.pi / g3.teeth
+    off = (np.arctan2(qy, qx) - psi3 + 0.5 * pitch3) % pitch3 - 0.5 * pitch3
+    band = (r > ra3) & (r < g3.root_radius)
+    rr = np.where(band, r, g3.root_radius)
+    half = np.asarray(g3.half_angle(rr), dtype=float)
+    depth = np.where(band, rr * (half - np.abs(off)), 0.0)
+    return float(max(depth.max(), 0.0))

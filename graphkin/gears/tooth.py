@@ -41,6 +41,10 @@ class GearKind(StrEnum):
     INTERNAL = "internal"
     """An internal (annular) gear: teeth inside a ring, the addendum circle R − a inside
     the pitch circle and the dedendum circle R + d outside it (Fig. 7.11)."""
+    RACK = "rack"
+    """A rack: a gear of infinite pitch radius (Sec. 7.5, Fig. 7.10), its teeth straight
+    flanks at the pressure angle from the line of centers, its addendum and dedendum lines
+    parallel to its pitch line; ``teeth`` is 0 (a rack has no count of teeth)."""
 
 
 #: Addendum in modules, by tooth system (Table 7.2).
@@ -116,7 +120,17 @@ class Gear:
         """An internal (annular) gear."""
         return self.kind == GearKind.INTERNAL
 
+    @property
+    def rack(self) -> bool:
+        """A rack (Sec. 7.5, Fig. 7.10): infinite pitch radius, straight flanks."""
+        return self.kind == GearKind.RACK
+
     def __post_init__(self) -> None:
+        if self.rack:
+            if not 0.0 < self.pressure_angle < math.pi / 2:
+                raise InputError("the pressure angle must lie between 0° and 90°",
+                                 key="pressure_angle")
+            return
         if self.teeth < 3:
             raise InputError(f"a gear needs at least 3 teeth, not {self.teeth}",
                              key=f"gears.{self.name}.teeth")
@@ -134,7 +148,9 @@ class Gear:
 
     @property
     def pitch_radius(self) -> float:
-        """R = N m / 2 (Eqs. 7.1, 7.2): the standard pitch circle."""
+        """R = N m / 2 (Eqs. 7.1, 7.2): the standard pitch circle; infinite for a rack."""
+        if self.rack:
+            return math.inf
         return self.teeth * self.module / 2.0
 
     @property
@@ -144,13 +160,17 @@ class Gear:
 
     @property
     def circular_pitch(self) -> float:
-        """The circular pitch p = 2πR/N = π m (Eqs. 7.3, 7.4)."""
-        return 2.0 * math.pi * self.pitch_radius / self.teeth
+        """The circular pitch p = 2πR/N = π m (Eqs. 7.3, 7.4); on a rack's pitch line too."""
+        return math.pi * self.module
 
     @property
     def base_pitch(self) -> float:
-        """p_b = 2π r / N: the pitch measured on the base circle, ``p cos φ`` (Eq. 7.6)."""
-        return 2.0 * math.pi * self.base_radius / self.teeth
+        """p_b = 2π r / N: the pitch measured on the base circle, ``p cos φ`` (Eq. 7.6).
+
+        For a rack, the distance between its parallel flanks along the line of
+        action (Fig. 7.10).
+        """
+        return math.pi * self.module * math.cos(self.pressure_angle)
 
     @property
     def thickness(self) -> float:

@@ -18,6 +18,7 @@ from typing import Any
 
 from graphkin.gears import analytic
 from graphkin.gears.mesh import Contact, GearPair, MeshLayout
+from graphkin.gears.profile import ring_overlap
 from graphkin.gears.tooth import Gear
 from graphkin.text import g6, table
 
@@ -62,6 +63,22 @@ def _gear(g: Gear, outside: float, operating: float, pair: GearPair) -> dict[str
     }
 
 
+def _rack(g: Gear) -> dict[str, Any]:
+    """A rack's entry: its radii are infinite (null), its pitches and thickness those of a gear."""
+    none = ("teeth", "pitch_radius", "operating_pitch_radius", "base_radius", "outside_radius",
+            "root_radius", "thickness_base", "thickness_outside", "thickness_operating_pitch",
+            "involute_angle_outside", "pointed_radius", "offset_for_no_undercut",
+            "minimum_teeth_rack")
+    return {
+        **dict.fromkeys(none), "name": g.name, "link": g.link, "module": g.module,
+        "diametral_pitch": 1.0 / g.module, "pressure_angle": math.degrees(g.pressure_angle),
+        "addendum": g.addendum, "dedendum": g.dedendum, "offset": 0.0,
+        "circular_pitch": g.circular_pitch, "base_pitch": g.base_pitch,
+        "thickness_pitch": g.thickness, "kind": str(g.kind), "pointed": False,
+        "undercut_by_rack": False,
+    }
+
+
 def gears_json(lay: MeshLayout) -> dict[str, Any]:
     """The report as plain data (``graphkin gears --json``; keys in ``docs/formats/gears.md``)."""
     pair = lay.pair
@@ -71,6 +88,8 @@ def gears_json(lay: MeshLayout) -> dict[str, Any]:
     phi = lay.operating_pressure_angle
     phi_op = analytic.operating_pressure_angle(pair.standard_center_distance, pair.center,
                                                g2.pressure_angle)
+    if g3.rack:
+        return _rack_json(lay)
     if g3.internal:
         cp, pd = analytic.approach_recess_internal(ra2, ra3, g2.base_radius, g3.base_radius,
                                                    r2p, r3p, phi_op)
@@ -112,8 +131,94 @@ def gears_json(lay: MeshLayout) -> dict[str, Any]:
             "involute_contact_ratio": lay.involute_contact_ratio,
             "kind": str(g3.kind),
             "minimum_driver_teeth": None if math.isnan(least) else math.ceil(least - 1e-9),
+            **_fouling(lay),
         },
     }
+
+
+#: A pinion tooth entering a ring tooth by less than this many modules touches it (round-off).
+FOULING_FLOOR = 1e-6
+
+
+def _fouling(lay: MeshLayout) -> dict[str, Any]:
+    """``tip_overlap`` and ``tip_interference`` of a ring (null for external gears)."""
+    if not lay.pair.driven.internal:
+        return {"tip_overlap": None, "tip_interference": None}
+    depth = ring_overlap(lay.pair, lay.points)
+    return {"tip_overlap": depth,
+            "tip_interference": bool(depth > FOULING_FLOOR * lay.pair.driver.module)}
+
+
+def _rack_json(lay: MeshLayout) -> dict[str, Any]:
+    """:func:`gears_json` for a pinion and a rack: no center distance, the rack's radii null."""
+    pair = lay.pair
+    g2, g3 = pair.driver, pair.driven
+    ra2 = pair.outside_radii[0]
+    phi = g2.pressure_angle
+    cp, pd = analytic.approach_recess_rack(ra2, g2.base_radius, g2.pitch_radius, g3.addendum,
+                                           phi)
+    cos = math.cos(lay.operating_pressure_angle)
+    return {
+        "title": pair.title,
+        "units": {"length": pair.units, "angle": "deg"},
+        "gears": {g2.name: _gear(g2, ra2, g2.pitch_radius, pair), g3.name: _rack(g3)},
+        "mesh": {
+            "driver": g2.name, "driven": g3.name, "ratio": None,
+            "standard_center_distance": None, "tight_center_distance": None,
+            "center_distance": None,
+            "operating_pressure_angle": math.degrees(lay.operating_pressure_angle),
+            "backlash": 0.0,
+            "points": {k: list(v) for k, v in lay.points.items()},
+            "approach_CP": lay.approach, "recess_PD": lay.recess, "path_CD": lay.path,
+            "contact_ratio": lay.contact_ratio,
+            "contact_ratio_eq_7_9": analytic.contact_ratio(cp, pd, g2.base_pitch),
+            "approach_angles": {"alpha2": math.degrees(lay.approach_angles[0]),
+                                "alpha3": None},
+            "recess_angles": {"beta2": math.degrees(lay.recess_angles[0]), "beta3": None},
+            # the rack moves R2 per radian of 2, the contact r2 = R2 cos φ along AB
+            "rack_approach": lay.approach / cos, "rack_recess": lay.recess / cos,
+            "interference": lay.interference,
+            "start": str(lay.start), "end": str(lay.end),
+            "AC": max(lay.beyond_a, 0.0), "BD": 0.0,
+            "involute_contact_ratio": lay.involute_contact_ratio,
+            "kind": str(g3.kind),
+            "minimum_driver_teeth": math.ceil(analytic.minimum_teeth_rack(
+                g3.addendum / g3.module, phi) - 1e-9),
+            "tip_overlap": None, "tip_interference": None,
+        },
+    }
+
+
+def _rack_text(lay: MeshLayout, data: dict[str, Any]) -> list[str]:
+    """The pair's lines of :func:`gears_text` for a pinion and a rack."""
+    u = data["units"]["length"]
+    m = data["mesh"]
+    c2, c3 = lay.pair.driver.name, lay.pair.driven.name
+    rows = [
+        ("pressure angle φ", g6(m["operating_pressure_angle"]), "°"),
+        ("approach CP = a/sin φ (Eq. 7.10, R3 → ∞)", g6(m["approach_CP"]), u),
+        ("recess PD (Eq. 7.11)", g6(m["recess_PD"]), u),
+        ("path of contact CD", g6(m["path_CD"]), u),
+        ("contact ratio CD/p_b, construction", g6(m["contact_ratio"]), ""),
+        ("contact ratio, Eq. (7.9)", g6(m["contact_ratio_eq_7_9"]), ""),
+        (f"angles of approach α2, recess β2 ({c2})",
+         f"{g6(m['approach_angles']['alpha2'])}, {g6(m['recess_angles']['beta2'])}", "°"),
+        (f"travel of {c3} in approach, in recess",
+         f"{g6(m['rack_approach'])}, {g6(m['rack_recess'])}", u),
+    ]
+    lines = table(rows, "  ") + [""]
+    if lay.interference:
+        lines.append(f"  Interference (Sec. 7.7, Eq. 7.12): contact begins at C, {g6(m['AC'])} "
+                     f"{u} before the interference point A: the rack's addendum line passes "
+                     f"beyond A and its tip digs into the flank of {c2}.")
+    else:
+        lines.append("  No interference: C lies between A and P (Eq. 7.12); the rack's B lies "
+                     "at infinity and does not bound the recess.")
+    lines.append(f"  The fewest teeth on {c2} that mesh with this rack without interference "
+                 f"(N ≥ 2a/(m sin² φ)): {m['minimum_driver_teeth']}.")
+    if m["contact_ratio"] < 1.0:
+        lines.append("  The contact ratio is below 1: at times no pair of teeth is in contact.")
+    return lines
 
 
 def gears_text(lay: MeshLayout) -> str:
@@ -122,7 +227,9 @@ def gears_text(lay: MeshLayout) -> str:
     u = data["units"]["length"]
     m = data["mesh"]
     g2, g3 = (data["gears"][lay.pair.driver.name], data["gears"][lay.pair.driven.name])
-    lines = [data["title"] or f"Gears {g2['teeth']} and {g3['teeth']} teeth in mesh", ""]
+    lines = [data["title"] or (f"Gears {g2['teeth']} and {g3['teeth']} teeth in mesh"
+                               if g3["teeth"] is not None else
+                               f"A pinion of {g2['teeth']} teeth and a rack"), ""]
     rows = [("", f"{g2['name']} ({g2['link']}, driver)", f"{g3['name']} ({g3['link']})", "")]
     spec = [
         ("teeth N", "teeth", ""), ("module m", "module", u),
@@ -145,6 +252,8 @@ def gears_text(lay: MeshLayout) -> str:
     rows.append(("pointed teeth", _yes(g2["pointed"]), _yes(g3["pointed"]), ""))
     lines += table(rows, "  ")
     lines.append("")
+    if lay.pair.driven.rack:
+        return "\n".join(lines + _rack_text(lay, data)) + "\n"
     c2, c3 = g2["name"], g3["name"]
     pair_rows = [
         ("speed ratio ω2/ω3 = N3/N2", g6(m["ratio"]), ""),
@@ -179,6 +288,13 @@ def gears_text(lay: MeshLayout) -> str:
     elif m["kind"] == "internal":
         lines.append(f"  No interference: C lies between A and P (Eq. 7.12); inside "
                      f"{c3} the point B lies beyond A and does not bound the recess (Fig. 7.11).")
+    if m["tip_interference"]:
+        lines.append(f"  Tip interference (fouling): away from the path of contact the teeth of "
+                     f"{c2} enter those of {c3} by up to {g6(m['tip_overlap'])} {u} as they "
+                     "turn; the ring needs more teeth, or stub teeth.")
+    elif m["kind"] == "internal":
+        lines.append(f"  No tip interference: the teeth of {c2} clear those of {c3} through a "
+                     "whole pitch of the motion.")
     else:
         lines.append("  No interference: C and D lie between the interference points A and B "
                      "(Eq. 7.12).")

@@ -61,5 +61,7 @@ SECTIONS: tuple[Section, ...] = (
     Section("paths", "", "graphkin.output.curvature:paths_json"),
     Section("forces", "Forces", "graphkin.output.forces:forces_json",
             "graphkin.output.forces:forces_text"),
+    Section("gear_train", "Gear train (Secs. 7.15-7.16)",
+            "graphkin.output.trains:gear_train_json", "graphkin.output.trains:gear_train_text"),
 )
 """The sections, in the order of the JSON keys and of the text report."""

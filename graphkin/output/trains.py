@@ -16,7 +16,7 @@ from graphkin.gears.train import FRAME, Table, Train, TrainSolution, formula, so
 from graphkin.text import clean, g6, table
 
 __all__ = ["train_json", "train_text", "member_order", "mechanism_train_json",
-           "mechanism_train_text"]
+           "mechanism_train_text", "gear_train_json", "gear_train_text"]
 
 
 def member_order(train: Train) -> list[str]:
@@ -185,3 +185,26 @@ def mechanism_train_text(sol: Any) -> str | None:
     worst = max((abs(c["difference"]) for c in data["check"].values()), default=0.0)
     lines.append("  they agree" if worst == 0.0 else f"  largest difference {g6(worst)} rad/s")
     return "\n".join(lines) + "\n"
+
+
+def gear_train_json(sol: Any, units: Any = None) -> dict[str, Any] | None:
+    """The ``gear_train`` section of ``graphkin solve --json`` (:mod:`graphkin.output.sections`).
+
+    :func:`mechanism_train_json` for a mechanism whose rolling contacts form
+    a gear train (Secs. 7.15-7.16), else None; angular velocities in rad/s
+    whatever the report's units (the train's own unit).  A mechanism with no
+    rolling contact is passed over at once.
+    """
+    if not sol.mechanism.rolling:
+        return None
+    try:
+        return mechanism_train_json(sol)
+    except InputError:   # not a train the book's methods read: `graphkin gears` says why
+        return None
+
+
+def gear_train_text(sol: Any, units: Any = None) -> str | None:
+    """The gear-train part of ``graphkin solve``'s text: the book's table and formula method."""
+    if gear_train_json(sol, units) is None:
+        return None
+    return mechanism_train_text(sol)

@@ -30,7 +30,7 @@ import numpy as np
 
 from graphkin.gears import analytic
 from graphkin.gears.mesh import Contact, MeshLayout
-from graphkin.gears.profile import gear_teeth, mesh_phases
+from graphkin.gears.profile import gear_teeth, mesh_phases, rack_teeth
 from graphkin.render.labels import place_labels, text_size
 from graphkin.render.results import Row
 from graphkin.render.scale import NICE, choose_scale
@@ -47,6 +47,10 @@ CIRCLE_STYLE = {"pitch": "ref-line", "base": "angle-arc", "addendum": "arc",
                 "dedendum": "datum"}
 _CIRCLE_WORDS = {"pitch": "pitch circle", "base": "base circle", "addendum": "addendum circle",
                  "dedendum": "dedendum circle"}
+#: A rack's circles are lines (Sec. 7.5): the step label -> the circle it stands for.
+_RACK_LINES = {"tangent": "pitch", "addendum3": "addendum", "dedendum3": "dedendum"}
+
+
 def _xy(v: Any) -> np.ndarray:
     a = np.asarray(v, dtype=float)
     return a[:2] / a[2]
@@ -60,14 +64,23 @@ def _near(lay: MeshLayout) -> list[str]:
     """
     p = np.array(lay.points["P"])
     reach = max(3.0 * abs(lay.path), 6.0 * lay.pair.driver.module)
-    far = [k for k in ("A", "B") if np.hypot(*(np.array(lay.points[k]) - p)) > reach]
-    return [k for k in ("A", "B", "C", "D", "P") if k not in far]
+    keys = [k for k in ("A", "B", "C", "D", "P") if k in lay.points]   # a rack has no B
+    far = [k for k in ("A", "B") if k in lay.points
+           and np.hypot(*(np.array(lay.points[k]) - p)) > reach]
+    return [k for k in keys if k not in far]
 
 
 def _extent(lay: MeshLayout) -> tuple[np.ndarray, np.ndarray, bool]:
     """The box of the drawing's content; whether gear 3 is drawn whole."""
     pair = lay.pair
     ra2, ra3 = pair.outside_radii
+    if pair.driven.rack:   # the pinion whole and the rack below it, as deep as its teeth
+        pts = np.array([lay.points[k] for k in _near(lay)])
+        o2 = np.array(lay.points["O2"])
+        g3 = pair.driven
+        lo = np.minimum(pts.min(axis=0), [o2[0] - 1.3 * ra2, -g3.dedendum - 2.0 * g3.module])
+        hi = np.maximum(pts.max(axis=0), [o2[0] + 1.3 * ra2, o2[1] + ra2])
+        return lo, hi, False
     o2, o3 = np.array(lay.points["O2"]), np.array(lay.points["O3"])
     r2p, r3p = pair.operating_pitch_radii
     whole = r3p <= 2.6 * r2p
@@ -130,14 +143,16 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
     elif lay.interference:
         fig = "interference, Fig. 7.18"
     else:
-        fig = "Fig. 7.9"
-    panels = [_panel(lay, "pair", f"(a) gears {g2.teeth} and {g3.teeth} teeth in mesh",
-                     lo, hi, 0.62 * max_inches)]
+        fig = "Fig. 7.10" if g3.rack else "Fig. 7.9"
+    what = (f"(a) a pinion of {g2.teeth} teeth and a rack" if g3.rack
+            else f"(a) gears {g2.teeth} and {g3.teeth} teeth in mesh")
+    panels = [_panel(lay, "pair", what, lo, hi, 0.62 * max_inches)]
     zlo, zhi = _zone(lay)
     panels.append(_panel(lay, "action", f"(b) the zone of action ({fig})", zlo, zhi,
                          1.2 * max_inches))
+    recut = _recut(lay) if upto is None else {}
     for p in panels:
-        _paint(lay, p, zoom=p.name == "action", upto=upto)
+        _paint(lay, p, zoom=p.name == "action", upto=upto, recut=recut)
     if upto is None:
         panels.append(_involute_panel(lay, 0.9 * max_inches))
     for p in panels:
@@ -145,7 +160,8 @@ def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,
         _frame(p)
         place_labels(p)
     rows = _rows(lay) if table else []
-    default = (f"Spur gears, {g2.teeth} and {g3.teeth} teeth, module {fmt(g2.module)} "
+    mate = f"{g2.teeth} teeth and a rack" if g3.rack else f"{g2.teeth} and {g3.teeth} teeth"
+    default = (f"Spur gears, {mate}, module {fmt(g2.module)} "
                f"{pair.units}, {fmt(math.degrees(g2.pressure_angle))}°")
     sheet = Sheet(panels, (0.0, 0.0), title if title is not None else (pair.title or default),
                   "gears", rows)
@@ -183,10 +199,25 @@ def _label(p: Panel, g: Any, text: str, at: np.ndarray, key: str, style: str = "
                                  f"label-{g.gid}-{key}", g, key=key, prefer=prefer))
 
 
-def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> None:
+def _recut(lay: MeshLayout) -> dict[str, np.ndarray]:
+    """The teeth re-cut where they interfere (Fig. 7.18): gear 2 before A, gear 3 after B."""
+    from graphkin.render.gears_recut import recut_template
+
+    out = {}
+    for link, end in (("2", lay.start), ("3", lay.end)):
+        if end == Contact.INTERFERENCE:
+            tpl = recut_template(lay, int(link))
+            if tpl is not None:
+                out[link] = tpl
+    return out
+
+
+def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None,
+           recut: dict[str, np.ndarray] | None = None) -> None:
     """Draw the layout in a panel; ``zoom``: the zone of action, every element lettered.
 
-    ``upto``: the construction's steps up to that one only (the newest highlighted).
+    ``upto``: the construction's steps up to that one only (the newest highlighted);
+    ``recut``: a tooth outline re-cut by the mate (:func:`_recut`) for gear ``"2"`` or ``"3"``.
     """
     pair = lay.pair
     cx = lay.construction
@@ -204,8 +235,13 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> No
         g = p.group(f"{p.prefix}teeth-{link}", teeth_z, key=f"teeth {link}")
         if gear.circular_pitch / p.k < MIN_PITCH:   # teeth too fine to see: the circles only
             continue
-        outline = gear_teeth(gear, ra, lay.points[center], psi)
         x0, y0, x1, y1 = box
+        if gear.rack:
+            side = 1.0 if lay.points["A"][0] >= lay.points["P"][0] else -1.0
+            outline = rack_teeth(gear, (x0, x1), side)
+        else:
+            outline = gear_teeth(gear, ra, lay.points[center], psi,
+                                 template=(recut or {}).get(link))
         inside = ((outline[..., 0] >= x0) & (outline[..., 0] <= x1)
                   & (outline[..., 1] >= y0) & (outline[..., 1] <= y1))
         for i in np.flatnonzero(inside.any(axis=1)):
@@ -242,13 +278,22 @@ def _paint(lay: MeshLayout, p: Panel, zoom: bool, upto: int | None = None) -> No
         elif step.kind == "line":
             line = np.asarray(value, dtype=float)
             d = np.array([line[1], -line[0]])
-            through = np.array(lay.points["P"])
+            pp = np.array(lay.points["P"])
+            nn = float(line[0] ** 2 + line[1] ** 2)   # through the foot of P on the line
+            through = pp - (float(line[0] * pp[0] + line[1] * pp[1] + line[2]) / nn) * line[:2]
             seg = clip_segment(through - diag * d, through + diag * d, box)
             if seg is not None:
-                style = "result-line" if step.label == "AB" else "aux-line"
+                rack_line = step.label in _RACK_LINES and pair.driven.rack
+                style = ("result-line" if step.label == "AB" else
+                         CIRCLE_STYLE.get(_RACK_LINES.get(step.label, ""), "aux-line")
+                         if rack_line else "aux-line")
                 g.items.append(Item("path", np.array(seg), style, key=step.label))
+                if zoom and rack_line and step.label != "tangent":
+                    _label(p, g, f"{_RACK_LINES[step.label]} line 3",
+                           through + 0.7 * (seg[1] - through), "line", "label-aux")
                 if zoom and step.label in ("AB", "tangent"):
-                    words = "line of action" if step.label == "AB" else "common tangent"
+                    words = "line of action" if step.label == "AB" else (
+                        "pitch line 3" if pair.driven.rack else "common tangent")
                     end = seg[1] if step.label == "AB" else seg[0]
                     _label(p, g, words, through + 0.82 * (end - through), "line", "label-aux")
         elif step.kind == "point":
@@ -327,8 +372,9 @@ def _involute_panel(lay: MeshLayout, max_inches: float) -> Panel:
     """
     from graphkin.gears.involute import Unwind, involute_construction, involute_xy
 
-    g3 = lay.pair.driven
-    rb, ra = g3.base_radius, lay.pair.outside_radii[1]
+    which = 2 if lay.pair.driven.rack else 3   # a rack's flanks are straight: the pinion's
+    g3 = lay.pair.driver if which == 2 else lay.pair.driven
+    rb, ra = g3.base_radius, lay.pair.outside_radii[which - 2]
     # tan ϕ at the addendum circle (the construction stops at 1.5 rad for a very steep one)
     roll = min(math.sqrt(max((ra / rb) ** 2 - 1.0, 1e-12)), 1.5)
     origin = math.pi / 2 - 0.5 * roll
@@ -340,7 +386,8 @@ def _involute_panel(lay: MeshLayout, max_inches: float) -> Panel:
     lo, hi = near.min(axis=0), near.max(axis=0)
     pad = 0.25 * float(max(hi - lo))
     lo, hi = lo - pad, hi + pad
-    p = _panel(lay, "involute", "(c) the involute of gear 3 (Step 6)", lo, hi, max_inches)
+    p = _panel(lay, "involute", f"(c) the involute of gear {which} (Step 6)", lo, hi,
+               max_inches)
     box = p.inner
     assert box is not None
     o = pts["O"]
@@ -373,7 +420,8 @@ def _involute_panel(lay: MeshLayout, max_inches: float) -> Panel:
             if step.label.startswith("A"):
                 _label(p, g, _letters(step.label), xy, "letter", "label-small",
                        prefer=tuple((xy - o) / np.hypot(*(xy - o)) * -1))
-    for name, r, style in (("base circle 3", rb, "angle-arc"), ("addendum circle 3", ra, "arc")):
+    for name, r, style in ((f"base circle {which}", rb, "angle-arc"),
+                           (f"addendum circle {which}", ra, "arc")):
         g = p.group(f"{p.prefix}{name.replace(' ', '-')}", 1.0, key=name)
         for t1, t2 in inside_spans(o, r, box) or [(0.0, 360.0)]:
             g.items.append(Item("arc", np.array([o]), style, radius=r, theta1=t1, theta2=t2))
@@ -429,6 +477,8 @@ def _angles(lay: MeshLayout, p: Panel) -> None:
     P = np.array(lay.points["P"])
     for link, center, rp, sense in (("2", "O2", pair.operating_pitch_radii[0], -1.0),
                                     ("3", "O3", pair.operating_pitch_radii[1], 1.0)):
+        if center not in lay.points:   # a rack's center is at infinity: it does not turn
+            continue
         o = np.array(lay.points[center])
         if not _in(o, box):
             continue
@@ -517,6 +567,8 @@ def _rows(lay: MeshLayout) -> list[Row]:
     pair = lay.pair
     g2, g3 = pair.driver, pair.driven
     ra2, ra3 = pair.outside_radii
+    if g3.rack:
+        return _rack_rows(lay)
     phi = analytic.operating_pressure_angle(pair.standard_center_distance, pair.center,
                                             g2.pressure_angle)
     if g3.internal:
@@ -542,6 +594,30 @@ def _rows(lay: MeshLayout) -> list[Row]:
         ("beta2", "recess β₂ (7.8)", "°", deg(lay.recess_angles[0]), deg(pd / g2.base_radius)),
         ("beta3", "recess β₃ (7.8)", "°", deg(lay.recess_angles[1]), deg(pd / g3.base_radius)),
     ]
+    return _compare(values)
+
+
+def _rack_rows(lay: MeshLayout) -> list[Row]:
+    """:func:`_rows` for a pinion and a rack: CP = a / sin φ, Eq. (7.10) as R3 → ∞."""
+    g2, g3 = lay.pair.driver, lay.pair.driven
+    phi = g2.pressure_angle
+    cp, pd = analytic.approach_recess_rack(lay.pair.outside_radii[0], g2.base_radius,
+                                           g2.pitch_radius, g3.addendum, phi)
+    u, deg = lay.pair.units, math.degrees
+    return _compare([
+        ("phi", "pressure angle φ", "°", deg(lay.operating_pressure_angle), deg(phi)),
+        ("CP", "approach CP = a/sin φ", u, lay.approach, cp),
+        ("PD", "recess PD (7.11)", u, lay.recess, pd),
+        ("CD", "path of contact CD", u, lay.path, cp + pd),
+        ("m_c", "contact ratio m_c (7.9)", "", lay.contact_ratio,
+         analytic.contact_ratio(cp, pd, g2.base_pitch)),
+        ("alpha2", "approach α₂ (7.7)", "°", deg(lay.approach_angles[0]),
+         deg(cp / g2.base_radius)),
+        ("beta2", "recess β₂ (7.8)", "°", deg(lay.recess_angles[0]), deg(pd / g2.base_radius)),
+    ])
+
+
+def _compare(values: list[tuple[str, str, str, float, float]]) -> list[Row]:
     rows = []
     for key, q, unit, drawn, exact in values:
         diff = abs(drawn - exact) / max(abs(exact), 1e-300)

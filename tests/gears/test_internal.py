@@ -104,7 +104,7 @@ def test_the_ring_is_drawn_with_its_teeth(tmp_path):
 
 @pytest.mark.parametrize(("change", "key"), [
     ('kind = "internal"', None),
-    ('kind = "rack"', "gears.ring.kind"),
+    ('kind = "rack"', "gears.ring.teeth"),   # a rack has no count of teeth
     ('kind = "annular"', "gears.ring.kind"),
     ('kind = "internal"\noffset = 0.01', "gears.ring.offset"),
 ])

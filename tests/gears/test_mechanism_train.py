@@ -232,3 +232,19 @@ def test_random_15_45_pair_stands_at_the_files_angle(drive, angle, w):
     assert math.isclose(math.cos(d), 1.0, abs_tol=1e-12)
     assert float(sol.links["3"].omega) == pytest.approx(-w / 3, rel=1e-12, abs=1e-12)
     analytic_agrees(mech, sol)
+
+
+def test_solve_prints_the_train_of_a_planetary_mechanism(capsys):
+    """`graphkin solve` of a planetary mechanism adds the book's table and formula method
+    (the same numbers as `graphkin gears MECHFILE`, derived in the test above: ω2 = 10/3,
+    ω3 = −10 rad/s), and a mechanism with no gears has no such section."""
+    assert main(["solve", str(RING)]) == 0
+    out = capsys.readouterr().out
+    assert "Gear train (Secs. 7.15-7.16)" in out
+    assert "2. Arm fixed           (20/80)(-40/20)ω4/2" in out and "they agree" in out
+    assert main(["solve", str(RING), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)["gear_train"]
+    assert data["members"]["2"]["omega"] == pytest.approx(10 / 3, rel=1e-12)
+    assert data["members"]["3"]["omega"] == pytest.approx(-10.0, rel=1e-12)
+    assert main(["solve", str(ROOT / "examples" / "fourbar.toml"), "--json"]) == 0
+    assert "gear_train" not in json.loads(capsys.readouterr().out)
