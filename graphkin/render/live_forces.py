@@ -61,7 +61,7 @@ def _why(mech: Mechanism) -> str | None:
     """Why the page cannot redo this mechanism's forces (one line), or None."""
     if mech.friction:
         return ("friction: the senses of its forces come from the frictionless solution "
-                "(Sec. 11.10), which the page does not redo; graphkin forces draws them")
+                "(Sec. 11.10), which the page does not redo; graphkin draw -d forces draws them")
     if mech.pressure or mech.rolling:
         return ("gear teeth or a rolling contact: their force's line is found from the "
                 "frictionless solution, which the page does not redo")
@@ -106,7 +106,7 @@ def forces_data(mech: Mechanism, points: list[str],
     built = fs.built
     if built is None:
         return {"why": "the graphic method finds no link-by-link order here (the matrix "
-                       "method solves it): graphkin forces draws it"}, ""
+                       "method solves it): graphkin draw -d forces draws it"}, ""
     steps = list(built.construction.steps)
     made_f = {o for s in steps for o in s.outputs}
     read = list(dict.fromkeys(i for s in steps for i in s.inputs if i not in made_f))
@@ -206,7 +206,7 @@ function gkForces(F, r) {
 
 FORCES_APP_JS = r"""
 // the force polygons (Secs. 11.6-11.8, 12.5): each moving link's forces head to tail, in the
-// colours of graphkin forces (loads blue, inertia forces red, the drive green, joints black)
+// colours of `draw -d forces` (loads blue, inertia forces red, the drive green, joints black)
 let frc = null;
 const fsvg = byId("gk-forces"), fnote = byId("gk-forces-note");
 fsvg.setAttribute("viewBox", "0 0 " + W + " " + H);

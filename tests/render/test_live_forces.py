@@ -234,3 +234,30 @@ def test_friction_page_says_so_in_the_panel(browser, tmp_path) -> None:
     note = browser.js("document.getElementById('gk-forces-note').textContent")
     assert note.startswith("No live force polygons: friction") and "\n" not in note
     assert browser.js("document.querySelectorAll('#gk-forces .gk-force').length") == 0
+
+
+def test_a_pin_on_the_known_line_is_refused_not_a_number() -> None:
+    # Ex 11.1: link 3 is a two-force member along AB, link 4 a three-force member with its
+    # pin O4; Σ M_O4 = 0 divides by the distance of O4 from AB (Fig. 11.5e).  O4 on AB (or
+    # within round-off of it, 1e-12 of the size) has no clean answer: null, never NaN; 1e-3
+    # of the size away it has one.
+    path = FORCES / "ex11_1_static_fourbar.toml"
+    mech = graphkin.load(path)
+    data, js = live_data(mech, load_toml(path), path.name)
+    size = mech.scale
+    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
+           "\nconst I = Object.assign({}, D.inputs);"
+           "\nI[D.drive.label] = D.drive.value;"
+           "\nconst r = construction(I, D.K);"
+           "\nconst J = gkForceInputs(D.forces, r);"
+           "\nconst A = J.A, B = J.B, dx = B[0] - A[0], dy = B[1] - A[1];"
+           "\nconst n = Math.hypot(dx, dy);"
+           "\nfunction at(h) { const K = Object.assign({}, J);"
+           "\n  K.O4 = [A[0] + 1.7 * dx - h * dy / n, A[1] + 1.7 * dy + h * dx / n];"
+           "\n  return forces(K, D.forces.K); }"
+           f"\nconst RESULT = [at(0), at({1e-12 * size!r}), at({-1e-12 * size!r}),"
+           f" at({1e-3 * size!r})];")
+    on, up, down, away = run_js(src)
+    assert on is None and up is None and down is None
+    assert away is not None and all(np.all(np.isfinite(away[lab]))
+                                    for lab in data["forces"]["joints"].values())
