@@ -588,7 +588,7 @@ function redraw(refit) {
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
   if (D.centers) drawKennedyCircle();
   if (D.curvature) drawCurvature(r, !ok, refit);
-  if (D.forces) drawForces(r, !ok);
+  if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
   status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.";

@@ -149,11 +149,15 @@ def forces_data(mech: Mechanism, points: list[str],
 
     applied = applied_labels(mech, fs.dynamic)
     polygons: dict[str, list[dict[str, Any]]] = {}
+    acting: list[dict[str, Any]] = []  # the applied forces where they act (the free bodies)
     for lid in mech.moving:
         poly: list[dict[str, Any]] = []
-        for lab, kind, _ in applied.get(lid, []):
+        for lab, kind, src in applied.get(lid, []):
             if kind != "couple":
                 poly.append({"label": lab, "name": lab, "sign": 1, "color": colour[kind]})
+                at = src.point if kind == "load" else src.center
+                if at in points:
+                    acting.append({"label": lab, "at": at, "color": colour[kind]})
         for j in fs.joints:
             if lid in (j.lo, j.hi):
                 poly.append({"label": built.forces[j.key], "name": j.label(lid),
@@ -166,7 +170,7 @@ def forces_data(mech: Mechanism, points: list[str],
               for lid, lab in built.drives.items()}
     return ({"given": given, "labels": labels, "K": fn.values,
              "kinds": {lab: kinds.get(lab, "force") for lab in labels},
-             "polygons": polygons, "drives": drives, "drive_color": DRIVE,
+             "polygons": polygons, "acting": acting, "drives": drives, "drive_color": DRIVE,
              "joints": {j.key: built.forces[j.key] for j in fs.joints},
              "frame": FRAME, "notes": list(fs.notes)}, fn.source)
 
@@ -275,9 +279,43 @@ function drawForces(r, stale) {
                      "data-name": f.name});
       label(g, "forces", [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], f.name);
     }
-    const o = chain[0][0];
-    el(g, "text", {x: X("forces", o), y: Y("forces", o) + 16, "font-size": "11"},
-       "link " + lid);
+    // the link's name under its polygon
+    let lo = Infinity, sx = 0;
+    for (const [a, b] of chain) { lo = Math.min(lo, a[1], b[1]); sx += a[0] + b[0]; }
+    const o = [sx / (2 * chain.length), lo];
+    el(g, "text", {x: X("forces", o), y: Y("forces", o) + 18, "font-size": "11",
+                   "text-anchor": "middle"}, "link " + lid);
+  }
+}
+// the applied forces on the posture, where they act (an inertia force offset from G by h so
+// that its moment about G is -I_G α, Eq. 12.18), the largest a quarter of the panel long
+function drawActing(r, stale) {
+  const F = D.forces, v = views.posture;
+  if (!frc || !v || !F.acting.length) return;
+  let big = 0;
+  for (const a of F.acting) { const w = frc[a.label]; big = Math.max(big, Math.hypot(w[0], w[1])); }
+  if (!(big > 0)) return;
+  const k = 0.25 * (W - 2 * M) / v.s / big;
+  const g = el(svgs.posture, "g", stale ? {class: "gk-stale"} : {});
+  const d = el(g, "defs", {});
+  const marks = {};
+  for (const a of F.acting) {
+    const w = frc[a.label], p = r[a.at], f2 = w[0] * w[0] + w[1] * w[1];
+    if (!p || !(f2 > 1e-18 * big * big)) continue;
+    const h = (w[2] - (p[0] * w[1] - p[1] * w[0])) / f2;
+    const tip = [p[0] + h * w[1], p[1] - h * w[0]], tail = [tip[0] - k * w[0], tip[1] - k * w[1]];
+    if (!marks[a.color]) {
+      const id = UID + "gk-acting-arrow-" + Object.keys(marks).length;
+      const m = el(d, "marker", {id: id, viewBox: "0 0 10 10", refX: "10", refY: "5",
+                                 markerWidth: "7", markerHeight: "7", orient: "auto"});
+      el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: a.color});
+      marks[a.color] = id;
+    }
+    el(g, "line", {x1: X("posture", tail), y1: Y("posture", tail), x2: X("posture", tip),
+                   y2: Y("posture", tip), stroke: a.color, "stroke-width": "1.6",
+                   "marker-end": "url(#" + marks[a.color] + ")", class: "gk-acting",
+                   "data-name": a.label});
+    label(g, "posture", tail, a.label);
   }
 }
 function forceTable() {

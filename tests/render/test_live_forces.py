@@ -212,6 +212,14 @@ def test_spec_force_examples_open_with_the_panel_and_follow_a_drag(browser, tmp_
     text = browser.js("document.body.innerText")
     assert "NaN" not in text and "undefined" not in text
     assert "F_23" in browser.js("document.getElementById('gk-force-table').innerText")
+    # the applied forces drawn where they act on the posture (the free bodies' loads)
+    acting = browser.js("[].map.call(document.querySelectorAll('#gk-posture .gk-acting'),"
+                        " function (e) { return [e.getAttribute('data-name'),"
+                        " e.getAttribute('x1'), e.getAttribute('y2')]; })")
+    names = {a[0] for a in acting}
+    assert "P_4" in names and all(math.isfinite(float(v)) for a in acting for v in a[1:])
+    if "12_4" in name:
+        assert {"-m3A_G3", "-m4A_G4"} <= names
     state = browser.js("window.graphkinLive.state()")
     data = json.loads(browser.js("document.getElementById('gk-data').textContent"))
     _same_forces(state["forces"], data["forces"], solve_forces(graphkin.load(path).solve()))
@@ -261,3 +269,42 @@ def test_a_pin_on_the_known_line_is_refused_not_a_number() -> None:
     assert on is None and up is None and down is None
     assert away is not None and all(np.all(np.isfinite(away[lab]))
                                     for lab in data["forces"]["joints"].values())
+
+
+def _drag(browser, kind: str, name: str, by: tuple[float, float]) -> None:
+    """Drag a handle of the posture panel by ``by`` pixels, in six pointer moves."""
+    x0, y0 = browser.js(
+        f"(function () {{ var r = document.querySelector('.gk-handle[data-kind=\"{kind}\"]"
+        f"[data-name=\"{name}\"]').getBoundingClientRect();"
+        " return [r.x + r.width / 2, r.y + r.height / 2]; })()")
+    browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0, y=y0)
+    browser.send("Input.dispatchMouseEvent", type="mousePressed", x=x0, y=y0, button="left",
+                 clickCount=1)
+    for k in range(1, 7):
+        browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0 + by[0] * k / 6,
+                     y=y0 + by[1] * k / 6, button="left", buttons=1)
+    browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=x0 + by[0],
+                 y=y0 + by[1], button="left", clickCount=1)
+
+
+def test_dragging_the_load_point_the_masses_and_a_pivot_moves_the_forces(browser,
+                                                                        tmp_path) -> None:
+    # Ex 12.4: drag the load's point C, the center of mass G3 and the pivot O4: the page's
+    # forces are those of graphkin solve of the file the page saves (C, G3, O4 moved)
+    path = FORCES / "ex12_4_dynamic_fourbar.toml"
+    _open(browser, tmp_path, path)
+    data = json.loads(browser.js("document.getElementById('gk-data').textContent"))
+    before = browser.js("window.graphkinLive.state()")["forces"]
+    for kind, name, by in (("point", "C", (25.0, 15.0)), ("point", "G3", (-20.0, 10.0)),
+                           ("frame", "O4", (15.0, -10.0))):
+        _drag(browser, kind, name, by)
+    state = browser.js("window.graphkinLive.state()")
+    assert state["forces"] is not None and browser.errors() == []
+    saved = tmp_path / "saved.toml"
+    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+    mech = graphkin.load(saved)
+    orig = graphkin.load(path)
+    for lid, n in (("4", "C"), ("3", "G3"), ("1", "O4")):  # the drags reached the file
+        assert not np.allclose(mech.links[lid].points[n], orig.links[lid].points[n]), n
+    _same_forces(state["forces"], data["forces"], solve_forces(mech.solve()))
+    assert not np.allclose(state["forces"]["F_34"], before["F_34"])
