@@ -136,6 +136,15 @@ def forces_data(mech: Mechanism, points: list[str],
         given[lab] = spec
         ins.append(_In("point", (lab,)))
     labels = [o for s in steps if s.op not in _LINES for o in s.outputs]
+    # a slider drive's input force after superposition is its size along the line only
+    # (F_C·u = F_C′·u + F_C″·u, Sec. 12.5): the polygon draws it along the given u
+    along: dict[str, str] = {}
+    for lid, lab in built.drive_forces.items():
+        d = next(x for x in mech.drives if x.link == lid)
+        key = next((j.key for j in fs.joints if j.source is d.slider), None)
+        if lab not in made_f and key is not None and f"u_{key}" in given:
+            along[lid] = f"u_{key}"
+            labels.append(f"u_{key}")
     try:
         fn = generate_js(cast(Any, [*ins, *steps]), requests=labels, tol=DEFAULT_TOL,
                          name="forces", given=[i.outputs[0] for i in ins if i.op == "point"],
@@ -164,7 +173,11 @@ def forces_data(mech: Mechanism, points: list[str],
                              "sign": 1 if lid == j.hi else -1, "color": JOINT})
         if lid in built.drive_forces:
             lab = built.drive_forces[lid]
-            poly.append({"label": lab, "name": lab, "sign": 1, "color": DRIVE})
+            if lid in along:
+                poly.append({"label": built.drives[lid], "along": along[lid], "name": lab,
+                             "sign": 1, "color": DRIVE})
+            elif lab in made_f:
+                poly.append({"label": lab, "name": lab, "sign": 1, "color": DRIVE})
         polygons[lid] = poly
     drives = {lid: {"label": lab, "kind": "torque" if lab.startswith("T_") else "force"}
               for lid, lab in built.drives.items()}
@@ -215,9 +228,13 @@ let frc = null;
 const fsvg = byId("gk-forces"), fnote = byId("gk-forces-note");
 fsvg.setAttribute("viewBox", "0 0 " + W + " " + H);
 if (!D.forces) fsvg.parentNode.style.display = "none";
-function forceVec(lab, sign) {
-  const w = frc[lab];
-  return w ? [sign * w[0], sign * w[1]] : null;
+function forceVec(f) {
+  const w = frc[f.label];
+  if (f.along !== undefined) {  // a size along a given direction (a slider drive's force)
+    const u = frc[f.along];
+    return Number.isFinite(w) && u ? [w * u[0], w * u[1]] : null;
+  }
+  return w ? [f.sign * w[0], f.sign * w[1]] : null;
 }
 function drawForces(r, stale) {
   const F = D.forces;
@@ -232,7 +249,7 @@ function drawForces(r, stale) {
   let big = 0;
   for (const lid of Object.keys(F.polygons)) {
     for (const f of F.polygons[lid]) {
-      const v = forceVec(f.label, f.sign);
+      const v = forceVec(f);
       if (v) big = Math.max(big, Math.hypot(v[0], v[1]));
     }
   }
@@ -244,7 +261,7 @@ function drawForces(r, stale) {
     const chain = [];
     let p = [x0, 0], right = x0;
     for (const f of F.polygons[lid]) {
-      const v = forceVec(f.label, f.sign);
+      const v = forceVec(f);
       if (!v || Math.hypot(v[0], v[1]) <= 1e-9 * big) continue;
       const q = [p[0] + v[0], p[1] + v[1]];
       chain.push([p, q, f]);

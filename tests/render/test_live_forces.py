@@ -126,6 +126,19 @@ def _same_forces(got: dict[str, Any], F: dict[str, Any], fs: Any) -> None:
         assert abs(float(got[d["label"]]) - t) <= REL * size, (lid, got[d["label"]], t)
 
 
+def _polygons_close(got: dict[str, Any], F: dict[str, Any]) -> None:
+    """Each link's force polygon closes (Σ F = 0 with the inertia forces, Sec. 12.4)."""
+    big = max([float(np.hypot(*got[lab][:2])) for lab in F["joints"].values()] + [1e-300])
+    for lid, poly in F["polygons"].items():
+        total = np.zeros(2)
+        for f in poly:
+            if "along" in f:
+                total += float(got[f["label"]]) * np.asarray(got[f["along"]], dtype=float)
+            else:
+                total += f["sign"] * np.asarray(got[f["label"]][:2], dtype=float)
+        assert np.all(np.abs(total) <= REL * big), (lid, total)
+
+
 FAMILIES = {"fourbar": fourbars(other_rates=False), "slider-crank": slider_cranks(),
             "inverted slider-crank": inverted_slider_cranks(), "six-bar": six_bars(),
             "slotted": slotted()}
@@ -176,6 +189,7 @@ def _check(file: dict[str, Any], offset: float) -> None:
         assert big > 1e3 * max(loads + [0.0]), "the page refused a clean posture"
         return
     _same_forces(out["f"], F, fs)
+    _polygons_close(out["f"], F)
 
 
 def test_the_file_posture_is_graphkins_own() -> None:
