@@ -130,6 +130,9 @@ def forces_data(mech: Mechanism, points: list[str],
             ins.append(_In("input", (lab,)))
             given[lab] = {"alpha": lab}
             continue
+        if spec is None and (lab.startswith("A_") or lab.startswith("α")):
+            return {"why": "the inertia forces need the accelerations, which this page does "
+                           "not re-solve (rates given for another link than the drive)"}, ""
         if spec is None:
             return {"why": f"the force construction reads {lab}, which the page does not "
                            "redraw"}, ""

@@ -209,6 +209,11 @@ def test_friction_is_said_in_one_line_not_drawn() -> None:
     why = data["forces"]["why"]
     assert "friction" in why and "\n" not in why
     assert set(data["forces"]) == {"why"}
+    # Ex 12.3's trammel with its rates given for the coupler ([rates]): the page has no
+    # accelerations to make the inertia force from, and says so
+    path = ROOT / "tests" / "data" / "hostile" / "rates_1e8_trammel.toml"
+    data, _ = live_data(graphkin.load(path), load_toml(path), path.name)
+    assert data["forces"]["why"].startswith("the inertia forces need the accelerations")
 
 
 @pytest.fixture(scope="module")
