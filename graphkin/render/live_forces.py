@@ -123,7 +123,7 @@ def forces_data(mech: Mechanism, points: list[str],
             if p0 is not None and p1 is not None and f"θ{src.on}" in made:
                 d = np.subtract(p1, p0).astype(float)
                 spec = {"dir": [float(d[0]), float(d[1])], "link": src.on,
-                        "turn": lab.startswith("n_")}
+                        "as": "normal" if lab.startswith("n_") else "along"}
         elif lab.startswith("A_") and f"a({lab[2:]})" in made and "o_a" in made:
             spec = {"accel": lab[2:]}
         elif lab.startswith("α") and lab in made:
@@ -206,7 +206,7 @@ function gkForceInputs(F, r) {
       let x = c * g.dir[0] - s * g.dir[1], y = s * g.dir[0] + c * g.dir[1];
       const n = Math.hypot(x, y);
       x /= n; y /= n;
-      J[lab] = g.turn ? [-y, x] : [x, y];
+      J[lab] = g.as === "normal" ? [-y, x] : [x, y];  // the normal: turned 90° ccw
     } else if (g.accel !== undefined) {
       const a = r["a(" + g.accel + ")"], o = r.o_a;
       if (!a || !o) return null;
