@@ -297,7 +297,8 @@ function drawForces(r, stale) {
                      "stroke-width": px(ink("result-line", "lw")),
                      "marker-end": "url(#" + marks[f.color] + ")", class: "gk-force",
                      "data-name": f.name});
-      label(g, "forces", [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2], f.name);
+      // two thirds along: a two-force member's F_12 and F_32 (out and back) apart
+      label(g, "forces", [a[0] + 0.65 * (b[0] - a[0]), a[1] + 0.65 * (b[1] - a[1])], f.name);
     }
     // the link's name under its polygon
     let lo = Infinity, sx = 0;
