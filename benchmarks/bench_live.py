@@ -1,6 +1,7 @@
 """Time a drag on the live page (issue 29): re-solve the posture and redraw every panel.
 
-For each spec example, the page of ``graphkin live`` is opened in headless
+For each spec example (the force examples too, whose pages redraw their
+force polygons), the page of ``graphkin live`` is opened in headless
 Chromium and timed inside the page with ``performance.now()``:
 
 * ``solve``: one call of the written-out construction (posture, velocity and
@@ -8,8 +9,8 @@ Chromium and timed inside the page with ``performance.now()``:
   would give;
 * ``drag``: one pointer move's work, re-solve plus redraw of every panel
   (posture with the coupler curves and the instant centers, the velocity and
-  acceleration polygons, the Kennedy circle, the curvature panel) and the
-  table (``graphkinLive.setDrive``), the mean of 300 moves;
+  acceleration polygons, the Kennedy circle, the curvature panel, the force
+  polygons) and the tables (``graphkinLive.setDrive``), the mean of 300 moves;
 * ``cycle``: the coupler curves of the whole turn re-solved, 360 postures
   (the page does this on every move), the mean of 200;
 
@@ -33,7 +34,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests"))
 
 from cdp import Browser  # noqa: E402
-from spec_data import EXAMPLES  # noqa: E402
+from spec_data import EXAMPLES, ROOT  # noqa: E402
 
 import graphkin  # noqa: E402
 from graphkin.files import load_toml  # noqa: E402
@@ -69,7 +70,9 @@ def main() -> int:
     try:
         print(f"{'example':28s} {'KiB':>6s} {'solve µs':>9s} {'drag ms':>8s} {'cycle ms':>9s}")
         with tempfile.TemporaryDirectory() as tmp:
-            for path in sorted(EXAMPLES.glob("ex[0-9]*.toml")):
+            forces = ROOT / "tests" / "data" / "forces"
+            for path in [*sorted(EXAMPLES.glob("ex[0-9]*.toml")),
+                         *sorted(forces.glob("ex[0-9]*.toml"))]:
                 page = Path(tmp) / (path.stem + ".html")
                 text = live_html(graphkin.load(path), load_toml(path), path.name)
                 page.write_text(text, encoding="utf-8")

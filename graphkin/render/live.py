@@ -164,6 +164,12 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         if curv is not None:
             data["curvature"], vjs = curv
             js += vjs
+    from graphkin.render.live_forces import forces_data
+
+    fd = forces_data(mech, points, made)
+    if fd is not None:
+        data["forces"], fjs = fd
+        js += fjs
     return data, js
 
 
@@ -313,8 +319,11 @@ draw my velocity polygon</button>
 <figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
 <figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
 <figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
+<figure><figcaption>Force polygons</figcaption><svg id="gk-forces"></svg>
+<p id="gk-forces-note"></p></figure>
 </main>
 <table id="gk-table"></table>
+<table id="gk-force-table"></table>
 """
 
 

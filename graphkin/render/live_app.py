@@ -15,6 +15,7 @@ edited file back to Python).
 
 from __future__ import annotations
 
+from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
 
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
@@ -587,7 +588,8 @@ function redraw(refit) {
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
   if (D.centers) drawKennedyCircle();
   if (D.curvature) drawCurvature(r, !ok, refit);
-  if (ok) table(r);
+  if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
+  if (ok) { table(r); forceTable(); }
   status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.";
   showDrive();
@@ -643,6 +645,7 @@ function dragPoint(c, w) {
   }
 }
 /*PEN*/
+/*FORCES*/
 // the edited mechanism, told to the notebook (its widget.mechanism) after every edit
 function notify() { if (onEdit) onEdit(edited()); }
 const stop = () => { if (dragging) { dragging = null; redraw(true); notify(); } };
@@ -744,7 +747,7 @@ byId("gk-save").addEventListener("click", () => {
 redraw(true);
 return {
   state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics,
-                 curvature: curv}),
+                 curvature: curv, forces: frc}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   pen: pen,
   penSVG: penSVG,
@@ -760,4 +763,6 @@ return {
 """
 
 # the pen mode's part of the script (render/live_pen.py), inside gkLiveApp
-APP_JS = APP_JS.replace("/*PEN*/\n", PEN_JS)
+APP_JS = APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
+# the force construction's glue (render/live_forces.py) beside the centers' and curvature's
+LIVE_LIB += FORCES_JS

@@ -1,0 +1,363 @@
+"""The force-polygon panel of the live page: graphkin's force construction, of the posture.
+
+graphkin records the graphic force analysis of a posture
+(:func:`graphkin.forces.solve_forces`, Secs. 11.5-11.8 and 12.4-12.5 of
+Uicker, Pennock & Shigley, 5th ed.): the applied forces (loads, couples,
+d'Alembert's inertia forces ``-m A_G`` with ``-I_G α``, weights), the two-,
+three- and four-force members link by link, one analysis per loaded link and
+their superposition.  Its steps are written out here as one more JavaScript
+function, from the force operations' templates
+(:mod:`graphkin.forces.templates`, in the one table of templates), whose
+givens come from the posture function on every pointer move:
+
+* a point of the mechanism (``A``, ``G3``): its position;
+* a slider's line direction ``u_<joint>`` and its normal ``n_<joint>``: the
+  line's local direction turned by the angle ``θ`` of the link it is on;
+* ``A_G``: the acceleration of the center of mass, ``a(G) - o_a``; ``αk``.
+
+The loads, couples, masses and moments are the function's parameters
+(``K``).  The order of the analysis (which link is a two- or three-force
+member) is the file posture's, which a drag does not change away from the
+postures where a line passes through a pin (there the function returns
+``null``: the page says equilibrium cannot be held).
+
+What the page cannot redo says so in one line (``why``): friction (its
+senses are found from the frictionless solution, Sec. 11.10), gear teeth
+(their pressure line is tilted the same way), a pin in a circular slot, and a
+mechanism the graphic method finds no order for (the matrix method solves
+it).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, cast
+
+import numpy as np
+
+from graphkin.construction.codegen import Unsupported
+from graphkin.construction.jsgen import generate_js
+from graphkin.errors import GraphkinError
+from graphkin.mechanisms.model import FRAME, Mechanism, Slider, Slot
+from graphkin.tolerance import DEFAULT_TOL
+
+__all__ = ["forces_data", "FORCES_JS"]
+
+
+@dataclass
+class _In:
+    """A given of the force construction, as a step the JavaScript writer reads from ``I``."""
+
+    op: str
+    outputs: tuple[str, ...]
+    inputs: tuple[str, ...] = ()
+    params: dict[str, Any] = field(default_factory=dict)
+
+
+_LINES = ("join", "force_line", "force_line_of")
+
+
+def _why(mech: Mechanism) -> str | None:
+    """Why the page cannot redo this mechanism's forces (one line), or None."""
+    if mech.friction:
+        return ("friction: the senses of its forces come from the frictionless solution "
+                "(Sec. 11.10), which the page does not redo; graphkin draw -d forces draws them")
+    if mech.pressure or mech.rolling:
+        return ("gear teeth or a rolling contact: their force's line is found from the "
+                "frictionless solution, which the page does not redo")
+    if any(isinstance(s, Slot) and not s.is_line for s in mech.slots):
+        return "a pin in a circular slot: its force's line is not redrawn live yet"
+    return None
+
+
+def forces_data(mech: Mechanism, points: list[str],
+                made: set[str]) -> tuple[dict[str, Any], str] | None:
+    """The force panel's data and the JavaScript of its construction, or None (no loads).
+
+    Parameters
+    ----------
+    mech : Mechanism
+    points : list of str
+        The points the posture function returns (with ``a(X)`` when it has rates).
+    made : set of str
+        Every label the posture function can return (``θk``, ``αk`` among them).
+
+    Returns
+    -------
+    (dict, str) or None
+        None when the file has no loads and no mass properties.  Otherwise
+        ``({"why": line}, "")`` when the page cannot redo the construction,
+        else the panel's data (``given``, ``labels``, ``K``, ``polygons``,
+        ``joints``, ``drives``) and the source of ``forces(I, K)``.
+    """
+    import graphkin.forces.templates  # noqa: F401  (registers the force templates)
+    from graphkin.forces import solve_forces
+    from graphkin.render.forces_sheet import DRIVE, INERTIA, JOINT, LOAD
+
+    if not mech.loads and not mech.inertia:
+        return None
+    why = _why(mech)
+    if why is not None:
+        return {"why": why}, ""
+    try:
+        fs = solve_forces(mech.solve())
+    except GraphkinError as exc:
+        return {"why": f"no force analysis at the file's posture ({exc})"}, ""
+    built = fs.built
+    if built is None:
+        return {"why": "the graphic method finds no link-by-link order here (the matrix "
+                       "method solves it): graphkin draw -d forces draws it"}, ""
+    steps = list(built.construction.steps)
+    made_f = {o for s in steps for o in s.outputs}
+    read = list(dict.fromkeys(i for s in steps for i in s.inputs if i not in made_f))
+    given: dict[str, dict[str, Any]] = {}
+    ins: list[_In] = []
+    sliders = {j.key: j.source for j in fs.joints if isinstance(j.source, (Slider, Slot))}
+    for lab in read:
+        spec: dict[str, Any] | None = None
+        if lab in points:
+            spec = {"point": lab}
+        elif lab[:2] in ("n_", "u_") and lab[2:] in sliders:
+            src = sliders[lab[2:]]
+            p0, p1 = src.p0, src.p1
+            if p0 is not None and p1 is not None and f"θ{src.on}" in made:
+                d = np.subtract(p1, p0).astype(float)
+                spec = {"dir": [float(d[0]), float(d[1])], "link": src.on,
+                        "as": "normal" if lab.startswith("n_") else "along"}
+        elif lab.startswith("A_") and f"a({lab[2:]})" in made and "o_a" in made:
+            spec = {"accel": lab[2:]}
+        elif lab.startswith("α") and lab in made:
+            ins.append(_In("input", (lab,)))
+            given[lab] = {"alpha": lab}
+            continue
+        if spec is None and (lab.startswith("A_") or lab.startswith("α")):
+            return {"why": "the inertia forces need the accelerations, which this page does "
+                           "not re-solve (rates given for another link than the drive)"}, ""
+        if spec is None:
+            return {"why": f"the force construction reads {lab}, which the page does not "
+                           "redraw"}, ""
+        given[lab] = spec
+        ins.append(_In("point", (lab,)))
+    labels = [o for s in steps if s.op not in _LINES for o in s.outputs]
+    # a slider drive's input force after superposition is its size along the line only
+    # (F_C·u = F_C′·u + F_C″·u, Sec. 12.5): the polygon draws it along the given u
+    along: dict[str, str] = {}
+    for lid, lab in built.drive_forces.items():
+        d = next(x for x in mech.drives if x.link == lid)
+        key = next((j.key for j in fs.joints if j.source is d.slider), None)
+        if lab not in made_f and key is not None and f"u_{key}" in given:
+            along[lid] = f"u_{key}"
+            labels.append(f"u_{key}")
+    try:
+        fn = generate_js(cast(Any, [*ins, *steps]), requests=labels, tol=DEFAULT_TOL,
+                         name="forces", given=[i.outputs[0] for i in ins if i.op == "point"],
+                         homogeneous=False)
+    except Unsupported as exc:
+        return {"why": f"the force construction cannot be written for the page ({exc})"}, ""
+    kinds = {o: s.kind for s in steps for o in s.outputs}
+    # each moving link's force polygon: the forces ON it, head to tail (they close, Σ F = 0)
+    colour = {"load": LOAD, "couple": LOAD, "weight": LOAD, "inertia": INERTIA}
+    from graphkin.forces.graphic import applied_labels
+
+    applied = applied_labels(mech, fs.dynamic)
+    polygons: dict[str, list[dict[str, Any]]] = {}
+    acting: list[dict[str, Any]] = []  # the applied forces where they act (the free bodies)
+    for lid in mech.moving:
+        poly: list[dict[str, Any]] = []
+        for lab, kind, src in applied.get(lid, []):
+            if kind != "couple":
+                poly.append({"label": lab, "name": lab, "sign": 1, "color": colour[kind]})
+                at = src.point if kind == "load" else src.center
+                if at in points:
+                    acting.append({"label": lab, "at": at, "color": colour[kind]})
+        for j in fs.joints:
+            if lid in (j.lo, j.hi):
+                poly.append({"label": built.forces[j.key], "name": j.label(lid),
+                             "sign": 1 if lid == j.hi else -1, "color": JOINT})
+        if lid in built.drive_forces:
+            lab = built.drive_forces[lid]
+            if lid in along:
+                poly.append({"label": built.drives[lid], "along": along[lid], "name": lab,
+                             "sign": 1, "color": DRIVE})
+            elif lab in made_f:
+                poly.append({"label": lab, "name": lab, "sign": 1, "color": DRIVE})
+        polygons[lid] = poly
+    drives = {lid: {"label": lab, "kind": "torque" if lab.startswith("T_") else "force"}
+              for lid, lab in built.drives.items()}
+    return ({"given": given, "labels": labels, "K": fn.values,
+             "kinds": {lab: kinds.get(lab, "force") for lab in labels},
+             "polygons": polygons, "acting": acting, "drives": drives, "drive_color": DRIVE,
+             "joints": {j.key: built.forces[j.key] for j in fs.joints},
+             "frame": FRAME, "notes": list(fs.notes)}, fn.source)
+
+
+FORCES_JS = r"""
+// the givens of the force construction (Secs. 11.5-12.5) from the posture r: points, a
+// slider's line direction (or its normal) turned by its link's angle, A_G = a(G) - o_a, α
+function gkForceInputs(F, r) {
+  const J = {};
+  for (const lab of Object.keys(F.given)) {
+    const g = F.given[lab];
+    if (g.point !== undefined) { if (!r[g.point]) return null; J[lab] = r[g.point]; }
+    else if (g.dir !== undefined) {
+      const t = r["\u03b8" + g.link];
+      if (!Number.isFinite(t)) return null;
+      const c = Math.cos(t), s = Math.sin(t);
+      let x = c * g.dir[0] - s * g.dir[1], y = s * g.dir[0] + c * g.dir[1];
+      const n = Math.hypot(x, y);
+      x /= n; y /= n;
+      J[lab] = g.as === "normal" ? [-y, x] : [x, y];  // the normal: turned 90° ccw
+    } else if (g.accel !== undefined) {
+      const a = r["a(" + g.accel + ")"], o = r.o_a;
+      if (!a || !o) return null;
+      J[lab] = [a[0] - o[0], a[1] - o[1]];
+    } else if (g.alpha !== undefined) J[lab] = r[g.alpha];
+  }
+  return J;
+}
+// the force construction of the posture r (null where equilibrium cannot be held cleanly)
+function gkForces(F, r) {
+  if (F.why) return null;
+  const J = gkForceInputs(F, r);
+  return J === null ? null : forces(J, F.K);
+}
+"""
+"""The page's glue of the force construction (in the page's library, beside the centers')."""
+
+FORCES_APP_JS = r"""
+// the force polygons (Secs. 11.6-11.8, 12.5): each moving link's forces head to tail, in the
+// colours of `draw -d forces` (loads blue, inertia forces red, the drive green, joints black)
+let frc = null;
+const fsvg = byId("gk-forces"), fnote = byId("gk-forces-note");
+fsvg.setAttribute("viewBox", "0 0 " + W + " " + H);
+if (!D.forces) fsvg.parentNode.style.display = "none";
+function forceVec(f) {
+  const w = frc[f.label];
+  if (f.along !== undefined) {  // a size along a given direction (a slider drive's force)
+    const u = frc[f.along];
+    return Number.isFinite(w) && u ? [w * u[0], w * u[1]] : null;
+  }
+  return w ? [f.sign * w[0], f.sign * w[1]] : null;
+}
+function drawForces(r, stale) {
+  const F = D.forces;
+  fsvg.textContent = "";
+  frc = F.why ? null : gkForces(F, r);
+  if (F.why) { fnote.textContent = "No live force polygons: " + F.why + "."; return; }
+  if (frc === null) {
+    fnote.textContent = "Equilibrium cannot be held cleanly at this posture (a dead center " +
+      "of the force construction): no force polygon.";
+    return;
+  }
+  let big = 0;
+  for (const lid of Object.keys(F.polygons)) {
+    for (const f of F.polygons[lid]) {
+      const v = forceVec(f);
+      if (v) big = Math.max(big, Math.hypot(v[0], v[1]));
+    }
+  }
+  fnote.textContent = big > 0 ? "" : "No force acts at this posture.";
+  if (!(big > 0)) return;
+  const chains = [], pts = [];
+  let x0 = 0;
+  for (const lid of Object.keys(F.polygons)) {
+    const chain = [];
+    let p = [x0, 0], right = x0;
+    for (const f of F.polygons[lid]) {
+      const v = forceVec(f);
+      if (!v || Math.hypot(v[0], v[1]) <= 1e-9 * big) continue;
+      const q = [p[0] + v[0], p[1] + v[1]];
+      chain.push([p, q, f]);
+      pts.push(p, q);
+      right = Math.max(right, p[0], q[0]);
+      p = q;
+    }
+    if (!chain.length) continue;
+    chains.push([lid, chain]);
+    let left = x0;
+    for (const [a, b] of chain) left = Math.min(left, a[0], b[0]);
+    x0 += (right - left) + 0.35 * big;
+  }
+  fitPoints("forces", pts);
+  const d = el(fsvg, "defs", {});
+  const marks = {};
+  const g = el(fsvg, "g", stale ? {class: "gk-stale"} : {});
+  for (const [lid, chain] of chains) {
+    for (const [a, b, f] of chain) {
+      if (!marks[f.color]) {
+        const id = UID + "gk-forces-arrow-" + Object.keys(marks).length;
+        const m = el(d, "marker", {id: id, viewBox: "0 0 10 10", refX: "10", refY: "5",
+                                   markerWidth: "7", markerHeight: "7",
+                                   orient: "auto-start-reverse"});
+        el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: f.color});
+        marks[f.color] = id;
+      }
+      el(g, "line", {x1: X("forces", a), y1: Y("forces", a), x2: X("forces", b),
+                     y2: Y("forces", b), stroke: f.color,
+                     "stroke-width": px(ink("result-line", "lw")),
+                     "marker-end": "url(#" + marks[f.color] + ")", class: "gk-force",
+                     "data-name": f.name});
+      // two thirds along: a two-force member's F_12 and F_32 (out and back) apart
+      label(g, "forces", [a[0] + 0.65 * (b[0] - a[0]), a[1] + 0.65 * (b[1] - a[1])], f.name);
+    }
+    // the link's name under its polygon
+    let lo = Infinity, sx = 0;
+    for (const [a, b] of chain) { lo = Math.min(lo, a[1], b[1]); sx += a[0] + b[0]; }
+    const o = [sx / (2 * chain.length), lo];
+    el(g, "text", {x: X("forces", o), y: Y("forces", o) + 18, "font-size": "11",
+                   "text-anchor": "middle"}, "link " + lid);
+  }
+}
+// the applied forces on the posture, where they act (an inertia force offset from G by h so
+// that its moment about G is -I_G α, Eq. 12.18), the largest a quarter of the panel long
+function drawActing(r, stale) {
+  const F = D.forces, v = views.posture;
+  if (!frc || !v || !F.acting.length) return;
+  let big = 0;
+  for (const a of F.acting) { const w = frc[a.label]; big = Math.max(big, Math.hypot(w[0], w[1])); }
+  if (!(big > 0)) return;
+  const k = 0.25 * (W - 2 * M) / v.s / big;
+  const g = el(svgs.posture, "g", stale ? {class: "gk-stale"} : {});
+  const d = el(g, "defs", {});
+  const marks = {};
+  for (const a of F.acting) {
+    const w = frc[a.label], p = r[a.at], f2 = w[0] * w[0] + w[1] * w[1];
+    if (!p || !(f2 > 1e-18 * big * big)) continue;
+    const h = (w[2] - (p[0] * w[1] - p[1] * w[0])) / f2;
+    const tip = [p[0] + h * w[1], p[1] - h * w[0]], tail = [tip[0] - k * w[0], tip[1] - k * w[1]];
+    if (!marks[a.color]) {
+      const id = UID + "gk-acting-arrow-" + Object.keys(marks).length;
+      const m = el(d, "marker", {id: id, viewBox: "0 0 10 10", refX: "10", refY: "5",
+                                 markerWidth: "7", markerHeight: "7", orient: "auto"});
+      el(m, "path", {d: "M0,1 L10,5 L0,9 z", fill: a.color});
+      marks[a.color] = id;
+    }
+    el(g, "line", {x1: X("posture", tail), y1: Y("posture", tail), x2: X("posture", tip),
+                   y2: Y("posture", tip), stroke: a.color, "stroke-width": "1.6",
+                   "marker-end": "url(#" + marks[a.color] + ")", class: "gk-acting",
+                   "data-name": a.label});
+    label(g, "posture", tail, a.label);
+  }
+}
+function forceTable() {
+  const t = byId("gk-force-table");
+  t.textContent = "";
+  if (!D.forces || !frc) return;
+  const head = el0(t, "tr");
+  for (const h of ["force", "x", "y", "|F|"]) el0(head, "th", h);
+  for (const key of Object.keys(D.forces.joints)) {
+    const lab = D.forces.joints[key], w = frc[lab];
+    if (!w) continue;
+    const row = el0(t, "tr");
+    el0(row, "th", lab); el0(row, "td", fmt(w[0])); el0(row, "td", fmt(w[1]));
+    el0(row, "td", fmt(Math.hypot(w[0], w[1])));
+  }
+  for (const lid of Object.keys(D.forces.drives)) {
+    const dv = D.forces.drives[lid], v = frc[dv.label];
+    const row = el0(t, "tr");
+    el0(row, "th", dv.label + (dv.kind === "torque" ? " (ccw)" : ""));
+    el0(row, "td", fmt(v)); el0(row, "td", ""); el0(row, "td", "");
+  }
+}
+"""
+"""The panel's part of the page's script, inside ``gkLiveApp`` (``frc``: the forces shown)."""
