@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 import math
 import operator
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,7 +27,8 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import SYNTHESIS, nearest, read_units
 from graphkin.synthesis.postures import Postures
 
-__all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA"]
+__all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA",
+           "is_synthesis_file"]
 
 SCHEMA = SYNTHESIS
 """Every key of a synthesis file (:data:`graphkin.keys.SYNTHESIS`)."""
@@ -85,6 +87,21 @@ class Spec:
     coupler: dict[str, Any] | None = None
     """Coupler-curve synthesis (Sec. 9.9): ``points`` (4 complex), ``O4``, ``O2`` (complex,
     near the bisectors), ``R``, ``r``."""
+
+
+_KIND = re.compile(r"^\s*\[\[?\s*(postures|function|path|cognates|dwell|overlay|coupler_curve|"
+                   r"limits)\s*\]", re.MULTILINE)
+_LINKS = re.compile(r"^\s*\[\s*links\s*\.", re.MULTILINE)
+
+
+def is_synthesis_file(path: str | Path) -> bool:
+    """Whether a file is a synthesis file (a table of its own, no ``[links.<id>]``).
+
+    Only the text's headers are looked at (the file is parsed once, by
+    whoever reads it): ``graphkin steps`` dispatches on this.
+    """
+    text = read_text(Path(path))
+    return bool(_KIND.search(text)) and not _LINKS.search(text)
 
 
 def load_spec(path: str | Path) -> Spec:
