@@ -111,6 +111,8 @@ SYNTHESIS: Schema = {
     "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
     "overlay": {"points": None, "closed": None},   # the overlay method (Sec. 9.8)
     "coupler_curve": {"points": None, "O4": None, "O2": None, "R": None, "r": None},  # 9.9
+    # a crank-rocker from the rocker's two limit postures and Q (Sec. 9.3, Fig. 9.3)
+    "crank_rocker": {"O4": None, "B1": None, "swing": None, "Q": None, "x_angle": None},
     # gallery files (graphkin.render.gallery_synthesis)
     "gallery": GALLERY,
 }

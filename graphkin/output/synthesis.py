@@ -67,6 +67,16 @@ def synthesis_json(res: Result) -> dict[str, Any]:
                         "crank_from_deg": float(np.degrees(dw.crank[dw.start]) % 360),
                         "crank_span_deg": float(np.degrees(dw.crank[1] - dw.crank[0])
                                                 * (dw.stop - dw.start))}
+    if res.crank_rocker is not None:
+        cr = res.crank_rocker
+        adv = float(np.degrees((cr.theta_b - cr.theta_a) % math.tau))
+        out["crank_rocker"] = {
+            "O2": _xy(cr.o2), "O4": _xy(cr.o4), "A1": _xy(cr.a1), "B1": _xy(cr.b1),
+            "B2": _xy(cr.b2), "lengths": {"r1": float(abs(cr.o4 - cr.o2)), "r2": cr.r2,
+                                          "r3": cr.r3, "r4": cr.r4},
+            "advance_deg": adv, "return_deg": 360.0 - adv, "Q": cr.q,
+            "crank_at_B1_deg": float(np.degrees(cr.theta_a)),
+            "crank_at_B2_deg": float(np.degrees(cr.theta_b))}
     if res.overlay is not None:
         ov = res.overlay
         out["overlay"] = {"O2": _xy(ov.o2), "O4": _xy(ov.o4), "A": _xy(ov.a), "B": _xy(ov.b),
@@ -115,6 +125,14 @@ def synthesis_text(res: Result) -> str:
                      f"{fmt(d['link_5'])}, link 6 = {fmt(d['link_6'])}; the coupler point "
                      f"stays within {fmt(d['arc_deviation'])} of the arc for "
                      f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
+    if "crank_rocker" in data:
+        c = data["crank_rocker"]
+        lines.append("Crank-rocker from the limit postures (Sec. 9.3, Fig. 9.3): " + ", ".join(
+            f"{k} = ({fmt(c[k][0])}, {fmt(c[k][1])})" for k in ("O2", "O4", "B1", "B2")))
+        lines.append("  " + ", ".join(f"{k} {fmt(v)}" for k, v in c["lengths"].items())
+                     + f" {res.spec.units}")
+        lines.append(f"  the crank turns {fmt(c['advance_deg'])}° counterclockwise from B1 to "
+                     f"B2 and {fmt(c['return_deg'])}° back: Q = {fmt(c['Q'])} (Eq. 9.1)")
     if "overlay" in data:
         o = data["overlay"]
         lines.append("Overlay (Sec. 9.8): the atlas curve of crank 1, coupler "

@@ -87,10 +87,13 @@ class Spec:
     coupler: dict[str, Any] | None = None
     """Coupler-curve synthesis (Sec. 9.9): ``points`` (4 complex), ``O4``, ``O2`` (complex,
     near the bisectors), ``R``, ``r``."""
+    crank_rocker: dict[str, Any] | None = None
+    """A crank-rocker from two limit postures (Sec. 9.3): ``O4``, ``B1`` (complex),
+    ``swing``, ``x_angle`` (rad) and ``Q``."""
 
 
 _KIND = re.compile(r"^\s*\[\[?\s*(postures|function|path|cognates|dwell|overlay|coupler_curve|"
-                   r"limits)\s*\]", re.MULTILINE)
+                   r"crank_rocker)\s*\]", re.MULTILINE)
 _LINKS = re.compile(r"^\s*\[\s*links\s*\.", re.MULTILINE)
 
 
@@ -199,7 +202,7 @@ class _Reader:
         from graphkin.keys import check_keys
 
         check_keys(self.data, SCHEMA, self.source)
-        for k in ("body", "pivots", "function", "path", "cognates", "dwell"):
+        for k in ("body", "pivots", "function", "path", "cognates", "dwell", "crank_rocker"):
             if k in self.data and not isinstance(self.data[k], Mapping):
                 raise self.fail(k, f"expected a table [{k}], not {type(self.data[k]).__name__}")
         units = read_units(self.data.get("units", "mm"), "units", self.source).get("length",
@@ -217,16 +220,18 @@ class _Reader:
         dw, span = self.dwell() if "dwell" in self.data else (None, math.radians(60.0))
         ov, closed = self.overlay() if "overlay" in self.data else (None, False)
         cc = self.coupler_curve() if "coupler_curve" in self.data else None
+        cr = self.crank_rocker() if "crank_rocker" in self.data else None
         kinds = [k for k, v in (("postures", post), ("function", func), ("path", path),
                                 ("cognates", cog), ("dwell", dw), ("overlay", ov),
-                                ("coupler_curve", cc)) if v is not None]
+                                ("coupler_curve", cc), ("crank_rocker", cr)) if v is not None]
         if not kinds:
             raise self.fail("postures", "give [[postures]] (body guidance), [function] "
                                         "(function generation), [path] (path generation) or "
                                         "[cognates]")
         if len(kinds) > 1:
             raise self.fail(kinds[1], "give one of [[postures]], [function], [path], "
-                                      f"[cognates], [dwell], [overlay] or [coupler_curve], "
+                                      "[cognates], [dwell], [overlay], [coupler_curve] or "
+                                      "[crank_rocker], "
                                       f"not "
                                       f"{' and '.join(kinds)}")
         if post is not None:
@@ -240,7 +245,7 @@ class _Reader:
                                 "points (on the center-point curve); give center_points")
             post.check()
         return Spec(self.source, title, units, post, circ, cent, func, path, cog, write, dw,
-                    span, ov, closed, cc)
+                    span, ov, closed, cc, cr)
 
     def fourbar(self, table: str, point: str) -> dict[str, complex]:
         f = self.data[table]
@@ -263,6 +268,20 @@ class _Reader:
         if not 5.0 <= span <= 180.0:
             raise self.fail("dwell.span", "the crank's turn of the dwell, 5° to 180°")
         return pts, math.radians(span)
+
+    def crank_rocker(self) -> dict[str, Any]:
+        f = self.data["crank_rocker"]
+        for k in ("O4", "B1", "swing", "Q", "x_angle"):
+            if k not in f:
+                raise self.fail(f"crank_rocker.{k}", "missing (a crank-rocker from its limit "
+                                "postures needs O4, B1, swing, Q and x_angle, Fig. 9.3)")
+        o4 = complex(*self.xy(f["O4"], "crank_rocker.O4"))
+        b1 = complex(*self.xy(f["B1"], "crank_rocker.B1"))
+        if o4 == b1:
+            raise self.fail("crank_rocker.B1", "O4 and B1 coincide: a rocker of no length")
+        return {"O4": o4, "B1": b1, "Q": self.number(f["Q"], "crank_rocker.Q"),
+                **{k: math.radians(self.number(f[k], f"crank_rocker.{k}"))
+                   for k in ("swing", "x_angle")}}
 
     def coupler_curve(self) -> dict[str, Any]:
         f = self.data["coupler_curve"]
@@ -399,7 +418,8 @@ class _Reader:
             spread = np.ptp(np.array(pts), axis=0).max() if len(pts) > 1 else 1.0
             second = (float(spread) / 2 or 1.0, 0.0)
         return Postures(np.array(pts, dtype=float), np.array(angs, dtype=float),
-                        (names[0], names[1]), second, self.source, "postures")
+                        (names[0], names[1]), second, self.source, "postures",
+                        second_given=bool(lengths))
 
     def function(self) -> FunctionSpec:
         f = self.data["function"]
