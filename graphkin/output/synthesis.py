@@ -62,8 +62,12 @@ def synthesis_json(res: Result) -> dict[str, Any]:
     out["candidates"] = [_linkage(c) for c in res.candidates]
     if res.dwell is not None:
         dw = res.dwell
-        out["dwell"] = {"D": _xy(dw.d), "O6": _xy(dw.o6), "link_5": dw.radius,
-                        "link_6": float(abs(dw.d - dw.o6)), "arc_deviation": dw.deviation,
+        slider = dw.kind == "slider"
+        out["dwell"] = {"kind": str(dw.kind), "O6": _xy(dw.o6),
+                        **({"slot_at_middle": dw.radius, "line_deviation": dw.deviation}
+                           if slider else
+                           {"D": _xy(dw.d), "link_5": dw.radius,
+                            "link_6": float(abs(dw.d - dw.o6)), "arc_deviation": dw.deviation}),
                         "crank_from_deg": float(np.degrees(dw.crank[dw.start]) % 360),
                         "crank_span_deg": float(np.degrees(dw.crank[1] - dw.crank[0])
                                                 * (dw.stop - dw.start))}
@@ -118,7 +122,14 @@ def synthesis_text(res: Result) -> str:
         for p in res.burmester:
             lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
                          f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
-    if "dwell" in data:
+    if "dwell" in data and data["dwell"]["kind"] == "slider":
+        d = data["dwell"]
+        lines.append(f"Dwell with a slider (Sec. 9.13, Fig. 9.44): O6 = ({fmt(d['O6'][0])}, "
+                     f"{fmt(d['O6'][1])}) on the line of the straight stretch, O6C = "
+                     f"{fmt(d['slot_at_middle'])} at its middle; the coupler point stays "
+                     f"within {fmt(d['line_deviation'])} of the line for "
+                     f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
+    elif "dwell" in data:
         d = data["dwell"]
         lines.append(f"Dwell (Sec. 9.13): D = ({fmt(d['D'][0])}, {fmt(d['D'][1])}), "
                      f"O6 = ({fmt(d['O6'][0])}, {fmt(d['O6'][1])}), link 5 = "

@@ -203,15 +203,17 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
     cz = complex(curve[k])
     az = dw.o_a + dw.lengths[0] * np.exp(1j * float(dw.crank[k]))
     bz = az + (cz - az) / dw.coupler_local
+    slider = dw.kind == "slider"
     lo, hi = _box([dw.o_a, dw.o_b, dw.o6, dw.d, az, bz, *curve])
-    p = panel("dwell", "The dwell six-bar (Fig. 9.42a)", res.spec.units, lo, hi, max_inches)
+    p = panel("dwell", "The dwell six-bar with a slider (Fig. 9.44)" if slider else
+              "The dwell six-bar (Fig. 9.42a)", res.spec.units, lo, hi, max_inches)
     pen = Pen(p, skip)
     g = pen.group("coupler-curve", 0.5, key="coupler curve")
     pen.polyline(g, np.append(curve, curve[:1]), "datum", key="coupler-curve")
     if _staged(pen, dw.construction, stage):
         paint_construction(pen, dw.construction, set(), (lo + hi) / 2, 4 * float(max(hi - lo)))
         return p, pen
-    g = pen.group("dwell-arc", 1.0, key="dwell arc")
+    g = pen.group("dwell-arc", 1.0, key="dwell stretch" if slider else "dwell arc")
     pen.polyline(g, curve[np.arange(dw.start, dw.stop + 1) % len(curve)], "vector-abs",
                  key="dwell-arc")
     paint_construction(pen, dw.construction, set(), (lo + hi) / 2, 4 * float(max(hi - lo)))
@@ -222,10 +224,21 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
     pen.point(g, "A", _c(az), "pin")
     pen.point(g, "B", _c(bz), "pin")
     pen.point(g, "C", _c(cz), "pin")
-    g = pen.group("link-5", 4.2, key="link 5")
-    pen.segment(g, _c(cz), _c(dw.d), "result-line")
-    g = pen.group("link-6", 4.2, key="link 6")
-    pen.segment(g, _c(dw.o6), _c(dw.d), "result-line")
+    if slider:   # the slotted link 6 from O6 past C, the block at C (Fig. 9.44)
+        g = pen.group("link-6", 4.2, key="link 6")
+        far = max(float(np.max(np.abs(curve - dw.o6))), abs(cz - dw.o6))
+        pen.segment(g, _c(dw.o6), _c(dw.o6 + far * (cz - dw.o6) / abs(cz - dw.o6)),
+                    "result-line")
+        u = (cz - dw.o6) / abs(cz - dw.o6) * 0.025 * float(max(hi - lo))
+        g.items.append(Item("polygon", np.array([_c(cz + k * u) for k in
+                                                 (1.6 + 1j, -1.6 + 1j, -1.6 - 1j, 1.6 - 1j)]),
+                            "block"))
+        pen.point(g, "C", _c(cz), "pin")
+    else:
+        g = pen.group("link-5", 4.2, key="link 5")
+        pen.segment(g, _c(cz), _c(dw.d), "result-line")
+        g = pen.group("link-6", 4.2, key="link 6")
+        pen.segment(g, _c(dw.o6), _c(dw.d), "result-line")
     g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
     for name, zz in (("O_A", dw.o_a), ("O_B", dw.o_b), ("O6", dw.o6)):
         pen.point(g, name, _c(zz), "pin")

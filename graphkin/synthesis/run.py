@@ -19,7 +19,7 @@ from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis import four, three
 from graphkin.synthesis.cognates import Cognates, cayley
-from graphkin.synthesis.dwell import Dwell, dwell
+from graphkin.synthesis.dwell import Dwell, DwellKind, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
 from graphkin.synthesis.limits import CrankRocker, crank_rocker
@@ -144,10 +144,12 @@ def synthesize(spec: Spec) -> Result:
     if spec.dwell is not None:
         z = spec.dwell
         try:
-            dw = dwell(z["O_A"], z["A"], z["B"], z["O_B"], z["C"], spec.dwell_span)
+            kind = DwellKind.SLIDER if spec.dwell_slider else DwellKind.ARC
+            dw = dwell(z["O_A"], z["A"], z["B"], z["O_B"], z["C"], spec.dwell_span, kind=kind)
         except InputError as exc:
             raise InputError(exc.message, key="dwell", file=spec.source) from None
-        return Result(spec, "dwell six-bar", dw.construction, dwell=dw)
+        return Result(spec, "dwell six-bar" + (" with a slider" if spec.dwell_slider else ""),
+                      dw.construction, dwell=dw)
     if spec.crank_rocker is not None:
         lim = spec.crank_rocker
         cr = crank_rocker(lim["O4"], lim["B1"], lim["swing"], lim["Q"], lim["x_angle"],

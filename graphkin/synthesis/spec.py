@@ -81,6 +81,8 @@ class Spec:
     write: str = "1"
     dwell: dict[str, complex] | None = None
     dwell_span: float = math.radians(60.0)
+    dwell_slider: bool = False
+    """``[dwell] slider = true``: a straight stretch and a slotted link 6 (Fig. 9.44)."""
     overlay: np.ndarray | None = None
     """The overlay method (Sec. 9.8): the desired path's points (complex)."""
     closed: bool = False
@@ -244,8 +246,11 @@ class _Reader:
                 raise self.fail("pivots.circle_points", "for four postures choose center "
                                 "points (on the center-point curve); give center_points")
             post.check()
+        slider = self.data["dwell"].get("slider", False) if dw is not None else False
+        if not isinstance(slider, bool):
+            raise self.fail("dwell.slider", f"true or false, not {slider!r}")
         return Spec(self.source, title, units, post, circ, cent, func, path, cog, write, dw,
-                    span, ov, closed, cc, cr)
+                    span, slider, ov, closed, cc, cr)
 
     def fourbar(self, table: str, point: str) -> dict[str, complex]:
         f = self.data[table]
