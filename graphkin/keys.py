@@ -108,9 +108,12 @@ SYNTHESIS: Schema = {
                  "output": None, "ground": None},
     "path": {"points": None, "crank": None, "coupler": None, "rocker_pin": None},
     "cognates": {"O_A": None, "A": None, "B": None, "O_B": None, "P": None, "write": None},
-    "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None},
+    "dwell": {"O_A": None, "A": None, "B": None, "O_B": None, "C": None, "span": None,
+              "slider": None},   # slider: a straight stretch and a slotted link (Fig. 9.44)
     "overlay": {"points": None, "closed": None},   # the overlay method (Sec. 9.8)
     "coupler_curve": {"points": None, "O4": None, "O2": None, "R": None, "r": None},  # 9.9
+    # a crank-rocker from the rocker's two limit postures and Q (Sec. 9.3, Fig. 9.3)
+    "crank_rocker": {"O4": None, "B1": None, "swing": None, "Q": None, "x_angle": None},
     # gallery files (graphkin.render.gallery_synthesis)
     "gallery": GALLERY,
 }

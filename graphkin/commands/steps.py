@@ -26,13 +26,14 @@ def add_parser(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     p.add_argument("--diagram", "-d", default="posture",
                    choices=("posture", "velocity", "acceleration", "centers", "curvature",
                             "inflection", "bobillier", "hartmann", "cubic", "forces", "gears",
-                            "cam"),
+                            "cam", "synthesis"),
                    help="which construction (default: posture); inflection, bobillier, "
                         "hartmann and cubic walk through one figure of the curvature sheet "
                         "(as draw -d does: the inflection and Bresse circles, Bobillier's "
                         "construction, conjugate points, the cubic of stationary curvature); "
                         "gears a gear file's pair in mesh; cam a cam file's profile laid out "
-                        "by inversion (Sec. 6.4)")
+                        "by inversion (Sec. 6.4); synthesis a synthesis file's construction "
+                        "(Ch. 9, as synthesize --steps; taken when FILE is one)")
     page_options(p, "numbered SVG per step")
     p.add_argument("--link", default=None, metavar="K",
                    help="curvature: the link whose motion is drawn (default: the coupler)")
@@ -45,7 +46,11 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.errors import InputError
     from graphkin.render import DiagramUnavailable
     from graphkin.render.teach import steps_html, write_frames
+    from graphkin.synthesis.spec import is_synthesis_file
 
+    synth = args.diagram != "cam" and is_synthesis_file(args.file)
+    if synth and args.diagram == "posture":   # the default diagram: the file says which
+        args.diagram = "synthesis"
     if args.output is None and args.frames is None:  # the page beside the user
         from pathlib import Path
 
@@ -58,6 +63,8 @@ def run(args: argparse.Namespace) -> int:
 
     if args.diagram == "cam":  # a cam file's layout by inversion (graphkin.render.cam_steps)
         return _cam(args)
+    if args.diagram == "synthesis" or synth:   # Ch. 9 (graphkin.render.synthesis_steps)
+        return _synthesis(args)
     gears = gear_kind(args.file)
     if args.diagram == "gears" or gears is not None:
         return _gears(gears, args)
@@ -155,5 +162,36 @@ def _cam(args: argparse.Namespace) -> int:
             frames = cam_frames(cam)
             for k, (_, _, svg) in enumerate(frames):
                 (d / f"cam-{k:02d}.svg").write_text(svg, encoding="utf-8")
+        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
+    return 0
+
+
+def _synthesis(args: argparse.Namespace) -> int:
+    """A synthesis file's construction, one frame per step (Ch. 9, ``synthesize --steps``)."""
+    from pathlib import Path
+
+    from graphkin.errors import InputError
+    from graphkin.render.synthesis_steps import synthesis_frames, synthesis_steps_html
+    from graphkin.synthesis.run import synthesize
+    from graphkin.synthesis.spec import is_synthesis_file, load_spec
+
+    if not is_synthesis_file(args.file):
+        raise InputError("-d synthesis walks through a synthesis file's construction: a file "
+                         "with [[postures]], [function], [path], [dwell], [crank_rocker]... "
+                         "(docs/formats/synthesis.md)", key="--diagram", file=args.file)
+    if args.diagram != "synthesis":
+        raise InputError(f"a synthesis file is taught with -d synthesis, not -d {args.diagram}",
+                         key="--diagram", file=args.file)
+    res = synthesize(load_spec(args.file))
+    if args.output is not None:
+        out = write_text(args.output, synthesis_steps_html(res), "--output")
+        print(f"wrote {out}", file=sys.stderr)
+    if args.frames is not None:
+        d = Path(args.frames)
+        with writing(f"into {d}", "--frames"):
+            d.mkdir(parents=True, exist_ok=True)
+            frames = synthesis_frames(res)
+            for k, (_, _, svg) in enumerate(frames):
+                (d / f"synthesis-{k:02d}.svg").write_text(svg, encoding="utf-8")
         print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
     return 0

@@ -62,11 +62,25 @@ def synthesis_json(res: Result) -> dict[str, Any]:
     out["candidates"] = [_linkage(c) for c in res.candidates]
     if res.dwell is not None:
         dw = res.dwell
-        out["dwell"] = {"D": _xy(dw.d), "O6": _xy(dw.o6), "link_5": dw.radius,
-                        "link_6": float(abs(dw.d - dw.o6)), "arc_deviation": dw.deviation,
+        slider = dw.kind == "slider"
+        out["dwell"] = {"kind": str(dw.kind), "O6": _xy(dw.o6),
+                        **({"slot_at_middle": dw.radius, "line_deviation": dw.deviation}
+                           if slider else
+                           {"D": _xy(dw.d), "link_5": dw.radius,
+                            "link_6": float(abs(dw.d - dw.o6)), "arc_deviation": dw.deviation}),
                         "crank_from_deg": float(np.degrees(dw.crank[dw.start]) % 360),
                         "crank_span_deg": float(np.degrees(dw.crank[1] - dw.crank[0])
                                                 * (dw.stop - dw.start))}
+    if res.crank_rocker is not None:
+        cr = res.crank_rocker
+        adv = float(np.degrees((cr.theta_b - cr.theta_a) % math.tau))
+        out["crank_rocker"] = {
+            "O2": _xy(cr.o2), "O4": _xy(cr.o4), "A1": _xy(cr.a1), "B1": _xy(cr.b1),
+            "B2": _xy(cr.b2), "lengths": {"r1": float(abs(cr.o4 - cr.o2)), "r2": cr.r2,
+                                          "r3": cr.r3, "r4": cr.r4},
+            "advance_deg": adv, "return_deg": 360.0 - adv, "Q": cr.q,
+            "crank_at_B1_deg": float(np.degrees(cr.theta_a)),
+            "crank_at_B2_deg": float(np.degrees(cr.theta_b))}
     if res.overlay is not None:
         ov = res.overlay
         out["overlay"] = {"O2": _xy(ov.o2), "O4": _xy(ov.o4), "A": _xy(ov.a), "B": _xy(ov.b),
@@ -108,13 +122,28 @@ def synthesis_text(res: Result) -> str:
         for p in res.burmester:
             lines.append(f"  center ({fmt(p.center.real)}, {fmt(p.center.imag)})  "
                          f"circle ({fmt(p.circle.real)}, {fmt(p.circle.imag)})")
-    if "dwell" in data:
+    if "dwell" in data and data["dwell"]["kind"] == "slider":
+        d = data["dwell"]
+        lines.append(f"Dwell with a slider (Sec. 9.13, Fig. 9.44): O6 = ({fmt(d['O6'][0])}, "
+                     f"{fmt(d['O6'][1])}) on the line of the straight stretch, O6C = "
+                     f"{fmt(d['slot_at_middle'])} at its middle; the coupler point stays "
+                     f"within {fmt(d['line_deviation'])} of the line for "
+                     f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
+    elif "dwell" in data:
         d = data["dwell"]
         lines.append(f"Dwell (Sec. 9.13): D = ({fmt(d['D'][0])}, {fmt(d['D'][1])}), "
                      f"O6 = ({fmt(d['O6'][0])}, {fmt(d['O6'][1])}), link 5 = "
                      f"{fmt(d['link_5'])}, link 6 = {fmt(d['link_6'])}; the coupler point "
                      f"stays within {fmt(d['arc_deviation'])} of the arc for "
                      f"{fmt(d['crank_span_deg'])}° of crank from {fmt(d['crank_from_deg'])}°")
+    if "crank_rocker" in data:
+        c = data["crank_rocker"]
+        lines.append("Crank-rocker from the limit postures (Sec. 9.3, Fig. 9.3): " + ", ".join(
+            f"{k} = ({fmt(c[k][0])}, {fmt(c[k][1])})" for k in ("O2", "O4", "B1", "B2")))
+        lines.append("  " + ", ".join(f"{k} {fmt(v)}" for k, v in c["lengths"].items())
+                     + f" {res.spec.units}")
+        lines.append(f"  the crank turns {fmt(c['advance_deg'])}° counterclockwise from B1 to "
+                     f"B2 and {fmt(c['return_deg'])}° back: Q = {fmt(c['Q'])} (Eq. 9.1)")
     if "overlay" in data:
         o = data["overlay"]
         lines.append("Overlay (Sec. 9.8): the atlas curve of crank 1, coupler "

@@ -503,6 +503,8 @@ def synthesis_sheet(res: Result, *, max_inches: float = 6.0,
         pairs = [more.dwell_panel(res, max_inches, skip, stage)]
     elif res.overlay is not None:
         pairs = [more.overlay_panel(res, max_inches, skip, stage)]
+    elif res.crank_rocker is not None:
+        pairs = [more.crank_rocker_panel(res, max_inches, skip, stage)]
     else:
         pairs = [_body_panel(res, max_inches, skip, stage)]
     panels = [p for p, _ in pairs]

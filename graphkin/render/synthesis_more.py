@@ -9,7 +9,9 @@
 * dwell (Sec. 9.13): the coupler curve, its circular arc, the arc's center
   D constructed from three of its points, links 5 and 6 (Fig. 9.42a);
 * the overlay method (Sec. 9.8): the desired path, the atlas curve laid on
-  it and the four-bar that traces it (Fig. 9.29).
+  it and the four-bar that traces it (Fig. 9.29);
+* the crank-rocker of two limit postures (Sec. 9.3): the construction of
+  Fig. 9.3a and the linkage in both limit postures (Fig. 9.3b).
 
 References
 ----------
@@ -29,7 +31,8 @@ from graphkin.render.synthesis import Pen, _c, paint_construction, paint_linkage
 from graphkin.synthesis.run import Result
 from graphkin.text import fmt
 
-__all__ = ["function_panels", "cognates_panel", "dwell_panel", "overlay_panel"]
+__all__ = ["function_panels", "cognates_panel", "dwell_panel", "overlay_panel",
+           "crank_rocker_panel"]
 
 _COGNATE_STYLES = {"1": "result-line", "2": "vector-n", "3": "vector-c"}
 """Each cognate its own line (solid, dashed, dash-dotted): the drawing stays black."""
@@ -200,15 +203,17 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
     cz = complex(curve[k])
     az = dw.o_a + dw.lengths[0] * np.exp(1j * float(dw.crank[k]))
     bz = az + (cz - az) / dw.coupler_local
+    slider = dw.kind == "slider"
     lo, hi = _box([dw.o_a, dw.o_b, dw.o6, dw.d, az, bz, *curve])
-    p = panel("dwell", "The dwell six-bar (Fig. 9.42a)", res.spec.units, lo, hi, max_inches)
+    p = panel("dwell", "The dwell six-bar with a slider (Fig. 9.44)" if slider else
+              "The dwell six-bar (Fig. 9.42a)", res.spec.units, lo, hi, max_inches)
     pen = Pen(p, skip)
     g = pen.group("coupler-curve", 0.5, key="coupler curve")
     pen.polyline(g, np.append(curve, curve[:1]), "datum", key="coupler-curve")
     if _staged(pen, dw.construction, stage):
         paint_construction(pen, dw.construction, set(), (lo + hi) / 2, 4 * float(max(hi - lo)))
         return p, pen
-    g = pen.group("dwell-arc", 1.0, key="dwell arc")
+    g = pen.group("dwell-arc", 1.0, key="dwell stretch" if slider else "dwell arc")
     pen.polyline(g, curve[np.arange(dw.start, dw.stop + 1) % len(curve)], "vector-abs",
                  key="dwell-arc")
     paint_construction(pen, dw.construction, set(), (lo + hi) / 2, 4 * float(max(hi - lo)))
@@ -219,10 +224,21 @@ def dwell_panel(res: Result, max_inches: float, skip: frozenset[str],
     pen.point(g, "A", _c(az), "pin")
     pen.point(g, "B", _c(bz), "pin")
     pen.point(g, "C", _c(cz), "pin")
-    g = pen.group("link-5", 4.2, key="link 5")
-    pen.segment(g, _c(cz), _c(dw.d), "result-line")
-    g = pen.group("link-6", 4.2, key="link 6")
-    pen.segment(g, _c(dw.o6), _c(dw.d), "result-line")
+    if slider:   # the slotted link 6 from O6 past C, the block at C (Fig. 9.44)
+        g = pen.group("link-6", 4.2, key="link 6")
+        far = max(float(np.max(np.abs(curve - dw.o6))), abs(cz - dw.o6))
+        pen.segment(g, _c(dw.o6), _c(dw.o6 + far * (cz - dw.o6) / abs(cz - dw.o6)),
+                    "result-line")
+        u = (cz - dw.o6) / abs(cz - dw.o6) * 0.025 * float(max(hi - lo))
+        g.items.append(Item("polygon", np.array([_c(cz + k * u) for k in
+                                                 (1.6 + 1j, -1.6 + 1j, -1.6 - 1j, 1.6 - 1j)]),
+                            "block"))
+        pen.point(g, "C", _c(cz), "pin")
+    else:
+        g = pen.group("link-5", 4.2, key="link 5")
+        pen.segment(g, _c(cz), _c(dw.d), "result-line")
+        g = pen.group("link-6", 4.2, key="link 6")
+        pen.segment(g, _c(dw.o6), _c(dw.d), "result-line")
     g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
     for name, zz in (("O_A", dw.o_a), ("O_B", dw.o_b), ("O6", dw.o6)):
         pen.point(g, name, _c(zz), "pin")
@@ -260,4 +276,42 @@ def overlay_panel(res: Result, max_inches: float, skip: frozenset[str],
     g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
     pen.point(g, "O2", _c(ov.o2), "pin")
     pen.point(g, "O4", _c(ov.o4), "pin")
+    return p, pen
+
+
+def crank_rocker_panel(res: Result, max_inches: float, skip: frozenset[str],
+                       stage: tuple[Any, int] | None = None) -> tuple[Panel, Pen]:
+    """Fig. 9.3: lines X and Y meeting at O2, the arc through B2, C and M.
+
+    The linkage is drawn in its two limit postures (extended at B1, folded at B2).
+    """
+    cr = res.crank_rocker
+    assert cr is not None
+    u = (cr.o2 - cr.b2) / abs(cr.o2 - cr.b2)
+    a2 = cr.o2 + cr.r2 * u
+    lo, hi = _box([cr.o2, cr.o4, cr.b1, cr.b2, cr.a1, a2,
+                   cr.o2 + abs(cr.b2 - cr.o2) * (cr.b1 - cr.o2) / abs(cr.b1 - cr.o2)])
+    p = panel("limits", "A crank-rocker from its limit postures (Fig. 9.3)",
+              res.spec.units, lo, hi, max_inches)
+    pen = Pen(p, skip)
+    reach = 4 * float(max(hi - lo))
+    if _staged(pen, cr.construction, stage):
+        paint_construction(pen, cr.construction, set(), (lo + hi) / 2, reach)
+        return p, pen
+    g = pen.group("rocker-swing", 1.0, key="rocker's swing")
+    t1 = math.atan2(cr.b1.imag - cr.o4.imag, cr.b1.real - cr.o4.real)
+    t2 = math.atan2(cr.b2.imag - cr.o4.imag, cr.b2.real - cr.o4.real)
+    t = t1 + np.linspace(0.0, 1.0, 41) * math.remainder(t2 - t1, math.tau)
+    pen.polyline(g, cr.o4 + cr.r4 * np.exp(1j * t), "datum", key="rocker-swing")
+    paint_construction(pen, cr.construction, set(), (lo + hi) / 2, reach)
+    for j, (a, b) in enumerate(((cr.a1, cr.b1), (a2, cr.b2))):
+        g = pen.group(f"linkage-{j + 1}", 4.0 - 0.1 * j, key=f"limit posture {j + 1}")
+        style = "result-line" if j == 0 else "aux-line"
+        for q1, q2 in ((cr.o2, a), (a, b), (b, cr.o4)):
+            pen.segment(g, _c(q1), _c(q2), style)
+        pen.point(g, f"A{j + 1}", _c(a), "pin")
+        pen.point(g, f"B{j + 1}", _c(b), "pin")
+    g = pen.group("fixed-pivots", 5.5, key="fixed pivots")
+    pen.point(g, "O2", _c(cr.o2), "pin")
+    pen.point(g, "O4", _c(cr.o4), "pin")
     return p, pen

@@ -32,6 +32,7 @@ from graphkin.synthesis.cognates import Cognates, cayley
 from graphkin.synthesis.dwell import Dwell, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points, five_construction
 from graphkin.synthesis.four import Curves, burmester_construction, curves
+from graphkin.synthesis.limits import CrankRocker, crank_rocker
 from graphkin.synthesis.postures import Postures
 from graphkin.synthesis.run import Result, synthesize
 from graphkin.synthesis.spec import Spec, load_spec, loads_spec
@@ -46,4 +47,4 @@ __all__ = ["analytic", "Postures", "pole_triangle", "center_from_circle_point",
            "circle_point_from_center", "straight_line_locus", "burmester_construction",
            "curves", "Curves", "five_construction", "burmester_points", "BurmesterPoint",
            "synthesize", "Result", "Spec", "load_spec", "loads_spec", "cayley", "Cognates",
-           "dwell", "Dwell"]
+           "dwell", "Dwell", "crank_rocker", "CrankRocker"]

@@ -135,7 +135,7 @@ def coupler_curve(c: np.ndarray, o4_near: complex, o2_near: complex, big_r: floa
         a = np.array([pts[f"A{j}"] for j in (1, 2, 3, 4)])
         ang = np.angle(a - c)
         post = Postures(np.stack([c.real, c.imag], axis=-1), ang, ("C", "E"),
-                        (0.5 * r, 0.0), source, "coupler_curve")
+                        (0.5 * r, 0.0), source, "coupler_curve", second_given=False)
         link = Linkage(post, pts["O2"], pts["O4"], pts["A1"], pts["B1"], ("A", "B"))
         link.check()
         found.append(CouplerCurve(cx, sides, link))

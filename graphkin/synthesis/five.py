@@ -48,7 +48,7 @@ def five_construction(post: Postures) -> Construction:
     φ15 from it).
     """
     four_post = Postures(post.points[:4], post.angles[:4], post.names, post.second,
-                         post.source, post.key, post.tol)
+                         post.source, post.key, post.tol, post.second_given)
     cx = burmester_construction(four_post)
     cx.title = "Burmester points (five postures)"
     # posture 5 and its pole with posture 1

@@ -203,7 +203,8 @@ class Linkage:
         """The graphkin mechanism file of the linkage assembled in design posture ``k``.
 
         Links: 1 the frame (O_A, O_B), 2 the crank, 3 the coupler (the body,
-        with its two marked points), 4 the rocker; the drive is the crank at
+        with its reference point, and its second point when the postures gave
+        it), 4 the rocker; the drive is the crank at
         its angle in posture ``k``; the assembly hints place B and the body's
         points where they are in that posture, so graphkin takes the design's
         branch.
@@ -223,14 +224,17 @@ class Linkage:
         def xy(z: complex) -> str:
             return f"[{float(z.real)!r}, {float(z.imag)!r}]"
 
+        # the body's second point only when the user gave it (two points per posture);
+        # with a point and an angle it was the construction's alone
+        second = self.post.second_given
         lines = [f'title = {toml_string(title or "Four-bar by synthesis")}',
                  f'units = {{ length = "{units}" }}', "",
                  "[links.1]", f"O_{na} = {xy(self.o_a)}", f"O_{nb} = {xy(self.o_b)}", "",
                  "[links.2]", f"O_{na} = [0.0, 0.0]", f"{na} = [{lg['crank']!r}, 0.0]", "",
                  "[links.3]", f"{na} = [0.0, 0.0]", f"{nb} = [{lg['coupler']!r}, 0.0]",
-                 f"{d} = {xy(dl)}", f"{e} = {xy(el)}", "",
+                 f"{d} = {xy(dl)}", *([f"{e} = {xy(el)}"] if second else []), "",
                  "[links.4]", f"O_{nb} = [0.0, 0.0]", f"{nb} = [{lg['rocker']!r}, 0.0]", "",
                  "[drive]", "link = 2", f"angle = {drive!r}",
                  "", "[assembly]", f"{nb} = {xy(b[k])}", f"{d} = {xy(complex(*dpos[k]))}",
-                 f"{e} = {xy(complex(*epos[k]))}", ""]
+                 *([f"{e} = {xy(complex(*epos[k]))}"] if second else []), ""]
         return "\n".join(lines)

@@ -57,6 +57,11 @@ class Postures:
         origin, the body's x axis at its angle).
     source : str
         The file, for the messages.
+    second_given : bool
+        Whether the second point is the user's (two points of the body given).
+        When the postures were given as a point and an angle, the second point
+        is only the construction's (the bisectors of E_iE_j find the poles): it
+        is drawn without a letter and not written in the mechanism file.
     """
 
     points: np.ndarray
@@ -66,6 +71,7 @@ class Postures:
     source: str = "<synthesis>"
     key: str = "postures"
     tol: Tolerance = field(default=DEFAULT_TOL)
+    second_given: bool = True
 
     @property
     def n(self) -> int:

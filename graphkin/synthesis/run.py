@@ -19,9 +19,10 @@ from graphkin.errors import InputError
 from graphkin.synthesis import analytic as an
 from graphkin.synthesis import four, three
 from graphkin.synthesis.cognates import Cognates, cayley
-from graphkin.synthesis.dwell import Dwell, dwell
+from graphkin.synthesis.dwell import Dwell, DwellKind, dwell
 from graphkin.synthesis.five import BurmesterPoint, burmester_points
 from graphkin.synthesis.function import FunctionDesign, chebyshev_construction, design
+from graphkin.synthesis.limits import CrankRocker, crank_rocker
 from graphkin.synthesis.linkage import Linkage
 from graphkin.synthesis.overlay import Overlay, overlay
 from graphkin.synthesis.postures import DIAGRAM, Postures, add_poles, add_postures
@@ -59,6 +60,8 @@ class Result:
         The dwell six-bar (Sec. 9.13).
     overlay : Overlay or None
         The overlay method's fit (Sec. 9.8).
+    crank_rocker : CrankRocker or None
+        The crank-rocker of two limit postures and a time ratio (Sec. 9.3).
     """
 
     spec: Spec
@@ -73,6 +76,7 @@ class Result:
     cognates: Cognates | None = None
     dwell: Dwell | None = None
     overlay: Overlay | None = None
+    crank_rocker: CrankRocker | None = None
 
     @property
     def postures(self) -> Postures | None:
@@ -95,6 +99,8 @@ class Result:
             return self.function.mechanism_toml(self.spec.title, self.spec.units)
         if self.dwell is not None:
             return self.dwell.mechanism_toml(self.spec.units, self.spec.title)
+        if self.crank_rocker is not None:
+            return self.crank_rocker.mechanism_toml(self.spec.units, self.spec.title)
         if self.overlay is not None:
             return self.overlay.mechanism_toml(self.spec.units, self.spec.title)
         if self.cognates is not None:
@@ -138,10 +144,18 @@ def synthesize(spec: Spec) -> Result:
     if spec.dwell is not None:
         z = spec.dwell
         try:
-            dw = dwell(z["O_A"], z["A"], z["B"], z["O_B"], z["C"], spec.dwell_span)
+            kind = DwellKind.SLIDER if spec.dwell_slider else DwellKind.ARC
+            dw = dwell(z["O_A"], z["A"], z["B"], z["O_B"], z["C"], spec.dwell_span, kind=kind)
         except InputError as exc:
             raise InputError(exc.message, key="dwell", file=spec.source) from None
-        return Result(spec, "dwell six-bar", dw.construction, dwell=dw)
+        return Result(spec, "dwell six-bar" + (" with a slider" if spec.dwell_slider else ""),
+                      dw.construction, dwell=dw)
+    if spec.crank_rocker is not None:
+        lim = spec.crank_rocker
+        cr = crank_rocker(lim["O4"], lim["B1"], lim["swing"], lim["Q"], lim["x_angle"],
+                          spec.source)
+        return Result(spec, "crank-rocker from limit postures (Sec. 9.3)", cr.construction,
+                      crank_rocker=cr)
     if spec.cognates is not None:
         z = spec.cognates
         cg = cayley(z["O_A"], z["A"], z["B"], z["O_B"], z["P"])
@@ -303,7 +317,7 @@ def _five(spec: Spec, post: Postures) -> Result:
         raise InputError(f"{len(pts)} real Burmester point(s): five postures this far apart "
                          "have no four-bar (Sec. 9.6)", key="postures", file=spec.source)
     four_post = Postures(post.points[:4], post.angles[:4], post.names, post.second,
-                         post.source, post.key, post.tol)
+                         post.source, post.key, post.tol, post.second_given)
     cv = four.curves(four_post, cx=cx)
     names = _pivot_names(post)
     cands = []
@@ -342,7 +356,7 @@ def _path(spec: Spec) -> Result:
     r4, r5, b2, b3 = roots[0]
     ang = float(np.angle(r3)) + ps.coupler
     post = Postures(np.stack([ps.points.real, ps.points.imag], axis=-1), ang, ("S", "T"),
-                    (0.0, 0.25 * abs(r3)), spec.source, "path")
+                    (0.0, 0.25 * abs(r3)), spec.source, "path", second_given=False)
     link = Linkage(post, r1, r5, complex(crank_pin[0]), complex(pin[0]), ("A", "B"))
     link.check()
     return Result(spec, "path (3 precision points)", candidates=[link],
@@ -372,7 +386,7 @@ def _function(spec: Spec) -> Result:
     c = complex(r1, 0.0) - r4 * np.exp(1j * fd.psi)
     mid = (b + c) / 2
     post = Postures(np.stack([mid.real, mid.imag], axis=-1), np.angle(c - b), ("M", "N"),
-                    (0.0, 0.25 * r3), spec.source, "function")
+                    (0.0, 0.25 * r3), spec.source, "function", second_given=False)
     link = Linkage(post, 0j, complex(r1, 0.0), complex(b[0]), complex(c[0]), ("B", "C"))
     link.check()
     x0, x1 = spec.function.x_range

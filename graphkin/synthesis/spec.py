@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 import math
 import operator
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -26,7 +27,8 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import SYNTHESIS, nearest, read_units
 from graphkin.synthesis.postures import Postures
 
-__all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA"]
+__all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA",
+           "is_synthesis_file"]
 
 SCHEMA = SYNTHESIS
 """Every key of a synthesis file (:data:`graphkin.keys.SYNTHESIS`)."""
@@ -79,12 +81,32 @@ class Spec:
     write: str = "1"
     dwell: dict[str, complex] | None = None
     dwell_span: float = math.radians(60.0)
+    dwell_slider: bool = False
+    """``[dwell] slider = true``: a straight stretch and a slotted link 6 (Fig. 9.44)."""
     overlay: np.ndarray | None = None
     """The overlay method (Sec. 9.8): the desired path's points (complex)."""
     closed: bool = False
     coupler: dict[str, Any] | None = None
     """Coupler-curve synthesis (Sec. 9.9): ``points`` (4 complex), ``O4``, ``O2`` (complex,
     near the bisectors), ``R``, ``r``."""
+    crank_rocker: dict[str, Any] | None = None
+    """A crank-rocker from two limit postures (Sec. 9.3): ``O4``, ``B1`` (complex),
+    ``swing``, ``x_angle`` (rad) and ``Q``."""
+
+
+_KIND = re.compile(r"^\s*\[\[?\s*(postures|function|path|cognates|dwell|overlay|coupler_curve|"
+                   r"crank_rocker)\s*\]", re.MULTILINE)
+_LINKS = re.compile(r"^\s*\[\s*links\s*\.", re.MULTILINE)
+
+
+def is_synthesis_file(path: str | Path) -> bool:
+    """Whether a file is a synthesis file (a table of its own, no ``[links.<id>]``).
+
+    Only the text's headers are looked at (the file is parsed once, by
+    whoever reads it): ``graphkin steps`` dispatches on this.
+    """
+    text = read_text(Path(path))
+    return bool(_KIND.search(text)) and not _LINKS.search(text)
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -182,7 +204,7 @@ class _Reader:
         from graphkin.keys import check_keys
 
         check_keys(self.data, SCHEMA, self.source)
-        for k in ("body", "pivots", "function", "path", "cognates", "dwell"):
+        for k in ("body", "pivots", "function", "path", "cognates", "dwell", "crank_rocker"):
             if k in self.data and not isinstance(self.data[k], Mapping):
                 raise self.fail(k, f"expected a table [{k}], not {type(self.data[k]).__name__}")
         units = read_units(self.data.get("units", "mm"), "units", self.source).get("length",
@@ -200,16 +222,18 @@ class _Reader:
         dw, span = self.dwell() if "dwell" in self.data else (None, math.radians(60.0))
         ov, closed = self.overlay() if "overlay" in self.data else (None, False)
         cc = self.coupler_curve() if "coupler_curve" in self.data else None
+        cr = self.crank_rocker() if "crank_rocker" in self.data else None
         kinds = [k for k, v in (("postures", post), ("function", func), ("path", path),
                                 ("cognates", cog), ("dwell", dw), ("overlay", ov),
-                                ("coupler_curve", cc)) if v is not None]
+                                ("coupler_curve", cc), ("crank_rocker", cr)) if v is not None]
         if not kinds:
             raise self.fail("postures", "give [[postures]] (body guidance), [function] "
                                         "(function generation), [path] (path generation) or "
                                         "[cognates]")
         if len(kinds) > 1:
             raise self.fail(kinds[1], "give one of [[postures]], [function], [path], "
-                                      f"[cognates], [dwell], [overlay] or [coupler_curve], "
+                                      "[cognates], [dwell], [overlay], [coupler_curve] or "
+                                      "[crank_rocker], "
                                       f"not "
                                       f"{' and '.join(kinds)}")
         if post is not None:
@@ -222,8 +246,11 @@ class _Reader:
                 raise self.fail("pivots.circle_points", "for four postures choose center "
                                 "points (on the center-point curve); give center_points")
             post.check()
+        slider = self.data["dwell"].get("slider", False) if dw is not None else False
+        if not isinstance(slider, bool):
+            raise self.fail("dwell.slider", f"true or false, not {slider!r}")
         return Spec(self.source, title, units, post, circ, cent, func, path, cog, write, dw,
-                    span, ov, closed, cc)
+                    span, slider, ov, closed, cc, cr)
 
     def fourbar(self, table: str, point: str) -> dict[str, complex]:
         f = self.data[table]
@@ -246,6 +273,20 @@ class _Reader:
         if not 5.0 <= span <= 180.0:
             raise self.fail("dwell.span", "the crank's turn of the dwell, 5° to 180°")
         return pts, math.radians(span)
+
+    def crank_rocker(self) -> dict[str, Any]:
+        f = self.data["crank_rocker"]
+        for k in ("O4", "B1", "swing", "Q", "x_angle"):
+            if k not in f:
+                raise self.fail(f"crank_rocker.{k}", "missing (a crank-rocker from its limit "
+                                "postures needs O4, B1, swing, Q and x_angle, Fig. 9.3)")
+        o4 = complex(*self.xy(f["O4"], "crank_rocker.O4"))
+        b1 = complex(*self.xy(f["B1"], "crank_rocker.B1"))
+        if o4 == b1:
+            raise self.fail("crank_rocker.B1", "O4 and B1 coincide: a rocker of no length")
+        return {"O4": o4, "B1": b1, "Q": self.number(f["Q"], "crank_rocker.Q"),
+                **{k: math.radians(self.number(f[k], f"crank_rocker.{k}"))
+                   for k in ("swing", "x_angle")}}
 
     def coupler_curve(self) -> dict[str, Any]:
         f = self.data["coupler_curve"]
@@ -382,7 +423,8 @@ class _Reader:
             spread = np.ptp(np.array(pts), axis=0).max() if len(pts) > 1 else 1.0
             second = (float(spread) / 2 or 1.0, 0.0)
         return Postures(np.array(pts, dtype=float), np.array(angs, dtype=float),
-                        (names[0], names[1]), second, self.source, "postures")
+                        (names[0], names[1]), second, self.source, "postures",
+                        second_given=bool(lengths))
 
     def function(self) -> FunctionSpec:
         f = self.data["function"]

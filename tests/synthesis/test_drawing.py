@@ -143,6 +143,9 @@ def test_random_posture_sets_draw_cleanly(data: st.DataObject, n: int) -> None:
     '[11.7421, 14.7581], [10.8131, 14.6370], [9.8628, 14.3445]]\n',
     '[coupler_curve]\npoints = [[0, 0], [1, 0.6], [2, 0.7], [3, 0.2]]\nO4 = [1.5, -2]\n'
     'O2 = [-1, -1.5]\nR = 2.0\nr = 1.5\n',
+    '[crank_rocker]\nO4 = [0, 0]\nB1 = [0, 4]\nswing = 45\nQ = 2.0\nx_angle = 68\n',
+    '[dwell]\nO_A = [0, 0]\nA = [1.31637, 0.71914]\nB = [4.19693, 3.49446]\nO_B = [4, 0]\n'
+    'C = [2.75665, 2.10680]\nspan = 60\nslider = true\n',
 ])
 def test_function_cognates_dwell_path_and_overlay_draw_cleanly(text: str) -> None:
     check_drawing(synthesize(loads_spec('title = "t"\nunits = "in"\n' + text)))

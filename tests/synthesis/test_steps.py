@@ -45,3 +45,30 @@ def test_two_postures_step_by_step(tmp_path) -> None:  # type: ignore[no-untyped
         assert HIGHLIGHT.lower() in frame.lower()         # the newest step is highlighted
     assert HIGHLIGHT.lower() not in frames[-1].lower()
     assert "synthesis-linkage-1" in frames[-1] and "synthesis-linkage-1" not in frames[0]
+
+
+def test_steps_verb_takes_a_synthesis_file(tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    """``graphkin steps SYNTHFILE`` is ``synthesize --steps``: the same frames, and --frames."""
+    f = tmp_path / "two.toml"
+    f.write_text(TWO, encoding="utf-8")
+    out, frames = tmp_path / "page.html", tmp_path / "frames"
+    assert main(["steps", str(f), "-o", str(out), "--frames", str(frames)]) == 0
+    n = len(teaching_steps(synthesize(load_spec(f)))) + 1   # each step, then the result
+    page = out.read_text(encoding="utf-8")
+    assert len(re.findall(r"<section class='frame'", page)) == n
+    assert sorted(p.name for p in frames.iterdir()) == [f"synthesis-{k:02d}.svg"
+                                                       for k in range(n)]
+    # another diagram of a synthesis file is refused in one line
+    capsys.readouterr()
+    assert main(["steps", str(f), "-d", "velocity", "-o", str(tmp_path / "c.html")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--diagram" in err[0] and "-d synthesis" in err[0]
+
+
+def test_steps_verb_refuses_synthesis_diagram_of_a_mechanism(tmp_path, capsys) -> None:  # type: ignore[no-untyped-def]
+    m = tmp_path / "m.toml"
+    m.write_text('title = "m"\n[links.1]\nO2 = [0, 0]\nO4 = [3, 0]\n[links.2]\nO2 = [0, 0]\n'
+                 'A = [1, 0]\n', encoding="utf-8")
+    assert main(["steps", str(m), "-d", "synthesis", "-o", str(tmp_path / "x.html")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "synthesis file" in err[0]
