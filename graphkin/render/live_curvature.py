@@ -175,8 +175,11 @@ def curvature_data(mech: Mechanism, points: list[str],
         for s in cx.steps:
             if s.op == "point" and not s.inputs:
                 xy = np.asarray(s.params["xy"], dtype=float)
-                hit = next((g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size),
-                           None)
+                # the point of that name first: another point may coincide with it at the
+                # file's posture only (a slider's C on the frame's L1a) and part on a drag
+                same = [g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size]
+                hit = next((g for g in same if g.get("point") == s.outputs[0]),
+                           same[0] if same else None)
                 if hit is None and pq is not None:
                     hit = _body_given(sol, lid, pq, s.outputs[0], xy, given, size)
                 if hit is not None:
