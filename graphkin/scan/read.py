@@ -47,6 +47,9 @@ NOT_FOUND = Mistake("missing", "no pencil line ends near where this image point 
 _NEAR_MM = 4.0
 _NEAR_FRACTION = 0.12
 _POLE_MM = 2.5
+_SHORT_MM = 7.0
+"""A vector shorter than this on the sheet is not read: the printed pole hides its
+first 1.1 mm and a stroke under 5 mm cannot be told from an arrowhead or a letter."""
 _SAME_MM = 2.5
 _CLEAR_MM = 6.0
 _ALTERNATIVE_MM = 1.5
@@ -86,8 +89,9 @@ def _names(sol: Any) -> list[str]:
 def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]]:
     """Where each image point can be on the sheet (mm): exact, reversed, each variant.
 
-    Image points at the pole (less than 2.5 mm from it: fixed points) are
-    left out, as nothing can be read there.  A mistaken place is kept only
+    Image points less than 7 mm from the pole are left out: at the pole
+    (fixed points) nothing can be drawn, and a shorter vector cannot be read
+    (see :func:`too_short`).  A mistaken place is kept only
     inside the polygon area, clear of the pole (where every vector starts)
     and of every other image's exact place (a right neighbour is not read
     as this image's mistake).
@@ -99,7 +103,7 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
     exact: dict[str, np.ndarray] = {}
     for name in _names(sol):
         v = np.asarray(f(name), dtype=float) / layout.per_mm
-        if float(np.hypot(*v)) >= _POLE_MM:
+        if float(np.hypot(*v)) >= _SHORT_MM:
             exact[name] = pole + v
     out: dict[str, list[np.ndarray]] = {}
     for name, e in exact.items():
@@ -130,6 +134,14 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
             keep.append(c)
         out[name] = keep
     return out
+
+
+def too_short(sol: Any, layout: Any) -> list[str]:
+    """The images away from the pole whose vectors are too short to read (not marked)."""
+    f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
+    return [n for n in _names(sol)
+            if _POLE_MM <= float(np.hypot(*np.asarray(f(n), dtype=float))) / layout.per_mm
+            < _SHORT_MM]
 
 
 def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = "",
@@ -213,6 +225,9 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     rows.sort(key=lambda r: order.get(r.key.split("_", 1)[-1], len(order)))
     rep = Report(rows, used, name, title=title.replace("(scale", "(read from the photo; scale"))
     rep.notes += notes
+    for n in too_short(sol, layout):
+        rep.notes.append(f"{letter}_{n} is under {_SHORT_MM:g} mm on the sheet: too short to "
+                         "read from a photo, not marked")
     if read.rect.upto is None:
         rep.notes.append("the marker that says how many construction steps were printed was "
                          "not found: read as if none were")
