@@ -114,8 +114,9 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     ya = int(max(min(p[1], q[1]) - pad, 0))
     yb = int(min(max(p[1], q[1]) + pad, h - 1)) + 1
     yy, xx = np.mgrid[ya:yb, xa:xb]
-    # only ink weighs, by how dark it is (the paper's noise around it does not)
-    wgt = np.clip(INK_RATIO - ratio[ya:yb, xa:xb], 0.0, None)
+    # each pixel weighs by how dark it is, in proportion to how much of it the stroke covers
+    # (no threshold: a threshold would pull the line toward the edge row covered more)
+    wgt = np.clip(1.0 - ratio[ya:yb, xa:xb], 0.0, None)
     trim = 2.5 * PX_PER_MM if length > 8 * PX_PER_MM else 0.2 * length
     c = p.astype(float)
     for band in _BANDS:
