@@ -51,6 +51,10 @@ _SHORT_MM = 7.0
 """A vector shorter than this on the sheet is not read: the printed pole hides its
 first 1.1 mm and a stroke under 5 mm cannot be told from an arrowhead or a letter."""
 _SAME_MM = 2.5
+_UNTOLD_MM = 2.0
+"""A usual mistake is not named for an image read this close to its right place: the
+reading is off by up to about 2 mm (docs/checking.md), so a mistake that moves the
+image less than that cannot be told from a misread."""
 _CLEAR_MM = 6.0
 _ALTERNATIVE_MM = 1.5
 """A mistaken place counts as this much farther than it is (the exact one wins a tie)."""
@@ -216,6 +220,8 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rows, title, notes, used = _check_polygon(sol, poly, name, tol, diag)
     else:
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
+    rows, untold = _untold(read, rows)
+    notes += untold
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     for n in read.missing:
         v = np.asarray(f(n), dtype=float)
@@ -232,6 +238,22 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rep.notes.append("the marker that says how many construction steps were printed was "
                          "not found: read as if none were")
     return rep
+
+
+def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
+    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named."""
+    out, notes = [], []
+    for r in rows:
+        name = r.key.split("_", 1)[-1]
+        p, at = read.points.get(name), read.places.get(name)
+        if (r.verdict == WRONG and r.mistake is not None and p is not None and at
+                and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM):
+            notes.append(f"{r.key} is read {float(np.hypot(*(p - at[0]))):.1f} mm from its "
+                         f"right place, where {r.mistake.code} also puts it: a misread "
+                         "cannot be told from that mistake, so none is named")
+            r = dataclasses.replace(r, mistake=None)
+        out.append(r)
+    return out, notes
 
 
 def _check_polygon(sol: Any, poly: Polygon, name: str, tol: CheckTolerance,
