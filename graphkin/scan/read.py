@@ -47,7 +47,14 @@ NOT_FOUND = Mistake("missing", "no pencil line ends near where this image point 
 _NEAR_MM = 4.0
 _NEAR_FRACTION = 0.12
 _POLE_MM = 2.5
+_SHORT_MM = 7.0
+"""A vector shorter than this on the sheet is not read: the printed pole hides its
+first 1.1 mm and a stroke under 5 mm cannot be told from an arrowhead or a letter."""
 _SAME_MM = 2.5
+_UNTOLD_MM = 2.0
+"""A usual mistake is not named for an image read this close to its right place: the
+reading is off by up to about 2 mm (docs/checking.md), so a mistake that moves the
+image less than that cannot be told from a misread."""
 _CLEAR_MM = 6.0
 _ALTERNATIVE_MM = 1.5
 """A mistaken place counts as this much farther than it is (the exact one wins a tie)."""
@@ -86,8 +93,9 @@ def _names(sol: Any) -> list[str]:
 def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]]:
     """Where each image point can be on the sheet (mm): exact, reversed, each variant.
 
-    Image points at the pole (less than 2.5 mm from it: fixed points) are
-    left out, as nothing can be read there.  A mistaken place is kept only
+    Image points less than 7 mm from the pole are left out: at the pole
+    (fixed points) nothing can be drawn, and a shorter vector cannot be read
+    (see :func:`too_short`).  A mistaken place is kept only
     inside the polygon area, clear of the pole (where every vector starts)
     and of every other image's exact place (a right neighbour is not read
     as this image's mistake).
@@ -99,7 +107,7 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
     exact: dict[str, np.ndarray] = {}
     for name in _names(sol):
         v = np.asarray(f(name), dtype=float) / layout.per_mm
-        if float(np.hypot(*v)) >= _POLE_MM:
+        if float(np.hypot(*v)) >= _SHORT_MM:
             exact[name] = pole + v
     out: dict[str, list[np.ndarray]] = {}
     for name, e in exact.items():
@@ -130,6 +138,14 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
             keep.append(c)
         out[name] = keep
     return out
+
+
+def too_short(sol: Any, layout: Any) -> list[str]:
+    """The images away from the pole whose vectors are too short to read (not marked)."""
+    f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
+    return [n for n in _names(sol)
+            if _POLE_MM <= float(np.hypot(*np.asarray(f(n), dtype=float))) / layout.per_mm
+            < _SHORT_MM]
 
 
 def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = "",
@@ -204,6 +220,8 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rows, title, notes, used = _check_polygon(sol, poly, name, tol, diag)
     else:
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
+    rows, untold = _untold(read, rows)
+    notes += untold
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     for n in read.missing:
         v = np.asarray(f(n), dtype=float)
@@ -213,10 +231,29 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     rows.sort(key=lambda r: order.get(r.key.split("_", 1)[-1], len(order)))
     rep = Report(rows, used, name, title=title.replace("(scale", "(read from the photo; scale"))
     rep.notes += notes
+    for n in too_short(sol, layout):
+        rep.notes.append(f"{letter}_{n} is under {_SHORT_MM:g} mm on the sheet: too short to "
+                         "read from a photo, not marked")
     if read.rect.upto is None:
         rep.notes.append("the marker that says how many construction steps were printed was "
                          "not found: read as if none were")
     return rep
+
+
+def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
+    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named."""
+    out, notes = [], []
+    for r in rows:
+        name = r.key.split("_", 1)[-1]
+        p, at = read.points.get(name), read.places.get(name)
+        if (r.verdict == WRONG and r.mistake is not None and p is not None and at
+                and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM):
+            notes.append(f"{r.key} is read {float(np.hypot(*(p - at[0]))):.1f} mm from its "
+                         f"right place, where {r.mistake.code} also puts it: a misread "
+                         "cannot be told from that mistake, so none is named")
+            r = dataclasses.replace(r, mistake=None)
+        out.append(r)
+    return out, notes
 
 
 def _check_polygon(sol: Any, poly: Polygon, name: str, tol: CheckTolerance,

@@ -44,6 +44,8 @@ _MISS_MM = 0.6
 _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
 _SIGMA_LINE = 0.15
+_BANDS = (0.9, 0.5)
+"""The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
 _SIGMA_END = 0.4
 """A line passing farther than this from the others' meeting point is not one of them."""
 
@@ -105,7 +107,6 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     p, q = seg
     length = float(np.hypot(*(q - p)))
     u = (q - p) / length
-    nrm = np.array([-u[1], u[0]])
     pad = 2.0 * PX_PER_MM
     h, w = ratio.shape
     xa = int(max(min(p[0], q[0]) - pad, 0))
@@ -113,13 +114,18 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     ya = int(max(min(p[1], q[1]) - pad, 0))
     yb = int(min(max(p[1], q[1]) + pad, h - 1)) + 1
     yy, xx = np.mgrid[ya:yb, xa:xb]
-    wgt = np.clip(0.95 - ratio[ya:yb, xa:xb], 0.0, None)
-    rel = np.stack([xx - p[0], yy - p[1]], axis=-1).astype(float)
-    t = rel @ u
-    o = rel @ nrm
+    # each pixel weighs by how dark it is, in proportion to how much of it the stroke covers
+    # (no threshold: a threshold would pull the line toward the edge row covered more)
+    wgt = np.clip(1.0 - ratio[ya:yb, xa:xb], 0.0, None)
     trim = 2.5 * PX_PER_MM if length > 8 * PX_PER_MM else 0.2 * length
-    sel = (np.abs(o) < 0.9 * PX_PER_MM) & (t > trim) & (t < length - trim) & (wgt > 0)
-    if np.count_nonzero(sel) >= 6:
+    c = p.astype(float)
+    for band in _BANDS:
+        rel = np.stack([xx - c[0], yy - c[1]], axis=-1).astype(float)
+        t = rel @ u - float((p - c) @ u)
+        o = rel @ np.array([-u[1], u[0]])
+        sel = (np.abs(o) < band * PX_PER_MM) & (t > trim) & (t < length - trim) & (wgt > 0)
+        if np.count_nonzero(sel) < 6:
+            break
         wv = wgt[sel]
         pts = np.stack([xx[sel], yy[sel]], axis=-1).astype(float)
         c = (pts * wv[:, None]).sum(axis=0) / wv.sum()

@@ -1,0 +1,92 @@
+"""The pencil stroke's line fitted to a fraction of a pixel, and vectors too short to read.
+
+Each expected value is the geometry the test draws itself: a straight band
+of ink symmetric about a known line (so its total-least-squares line is that
+line), and vectors whose lengths on the sheet are their values over the
+printed scale (Uicker, Pennock & Shigley, 5th ed., Sec. 3.4).
+"""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+cv2 = pytest.importorskip("cv2")
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from graphkin.scan.read import too_short  # noqa: E402
+from graphkin.scan.strokes import _refine  # noqa: E402
+
+
+def _band(p: np.ndarray, q: np.ndarray, shape: tuple[int, int], half: float) -> np.ndarray:
+    """The page's ratio (1 = paper) with ink 0.4 within ``half`` px of the line p-q.
+
+    Each pixel is sampled 8 x 8 times, so the band's edge is anti-aliased
+    symmetrically on both sides of the line.
+    """
+    h, w = shape
+    s = (np.arange(8) + 0.5) / 8 - 0.5
+    yy, xx = np.mgrid[0:h, 0:w].astype(float)
+    u = (q - p) / np.hypot(*(q - p))
+    n = np.array([-u[1], u[0]])
+    cover = np.zeros(shape)
+    for dy in s:
+        for dx in s:
+            off = (xx + dx - p[0]) * n[0] + (yy + dy - p[1]) * n[1]
+            cover += np.abs(off) <= half
+    return 1.0 - 0.6 * cover / 64
+
+
+@settings(max_examples=25, deadline=None)
+@given(x0=st.floats(15.0, 25.0), y0=st.floats(20.0, 60.0), x1=st.floats(170.0, 185.0),
+       y1=st.floats(20.0, 60.0), shift=st.floats(-1.2, 1.2), half=st.floats(0.8, 1.6))
+def test_refit_finds_the_strokes_middle(x0: float, y0: float, x1: float, y1: float,
+                                        shift: float, half: float) -> None:
+    # a detector's segment along one edge of the stroke (``shift`` px across it) is moved to
+    # the stroke's middle: both true ends lie within 0.1 px (0.02 mm) of the refitted line
+    # (weights thresholded at the ink level put them up to 0.19 px off)
+    p, q = np.array([x0, y0]), np.array([x1, y1])
+    ratio = _band(p, q, (80, 200), half)
+    u = (q - p) / np.hypot(*(q - p))
+    n = np.array([-u[1], u[0]])
+    seg = np.array([p + shift * n, q + shift * n])
+    a, b = _refine(seg, ratio, ratio < 0.84)
+    d = (b - a) / np.hypot(*(b - a))
+    m = np.array([-d[1], d[0]])
+    assert abs(float((p - a) @ m)) < 0.1
+    assert abs(float((q - a) @ m)) < 0.1
+
+
+def test_vectors_under_7_mm_are_not_read() -> None:
+    # 1 mm = 10 mm/s: V_A 50 mm/s is 5 mm on the sheet (too short), V_B 100 is 10 mm (read),
+    # V_C 20 is 2 mm (at the pole: never marked), the helper point H is never named
+    vel = {"A": (30.0, 40.0), "B": (0.0, 100.0), "C": (20.0, 0.0), "H": (60.0, 0.0)}
+    sol = SimpleNamespace(mechanism=SimpleNamespace(point_names=["A", "B", "C", "H"],
+                                                    helper_points={"H"}),
+                          velocity=lambda name: np.array(vel[name]))
+    layout = SimpleNamespace(diagram="velocity", per_mm=10.0)
+    assert too_short(sol, layout) == ["A"]
+
+
+def test_no_mistake_named_for_an_image_read_near_its_right_place() -> None:
+    # D read 1.0 mm from its right place (under 2 mm): WRONG, its mistake not named;
+    # E read 3.0 mm from it: the mistake stays named; an ok row is left alone
+    from graphkin.check.diagnose import Mistake
+    from graphkin.check.report import OK, WRONG, Row
+    from graphkin.scan.read import SheetRead, _untold
+
+    read = SheetRead(None, None, np.zeros((0, 2, 2)),  # type: ignore[arg-type]
+                     points={"D": np.array([11.0, 20.0]), "E": np.array([40.0, 23.0]),
+                             "F": np.array([5.0, 5.0])},
+                     places={"D": [np.array([10.0, 20.0])], "E": [np.array([40.0, 20.0])],
+                             "F": [np.array([5.0, 5.0])]})
+    m = Mistake("normal", "the normal component drawn outward", "normal-reversed")
+    rows = [Row("A_D", "1", "1", "2 %", WRONG, mistake=m),
+            Row("A_E", "1", "1", "9 %", WRONG, mistake=m), Row("A_F", "1", "1", "0 %", OK)]
+    out, notes = _untold(read, rows)
+    assert [(r.verdict, r.mistake) for r in out] == [(WRONG, None), (WRONG, m), (OK, None)]
+    assert len(notes) == 1 and notes[0].startswith("A_D is read 1.0 mm")
