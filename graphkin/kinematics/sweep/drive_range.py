@@ -17,6 +17,7 @@ from graphkin.errors import AssemblyError, InputError
 from graphkin.kinematics.sweep.columns import _assembled_of
 from graphkin.kinematics.sweep.engine import _Engine
 from graphkin.mechanisms.model import Mechanism
+from graphkin.tolerance import VERDICT_REL
 
 Array = np.ndarray
 
@@ -193,14 +194,16 @@ def _clean_end(ok: Callable[[Array], Array], x: float, scale: float) -> float:
 
     The end found by bisection lies within round-off of the limit position; the
     nearest value with six significant digits of the mechanism's size is taken
-    when it is that close and still assembles.
+    when it is within round-off of it (1e-9 of the size, ``VERDICT_REL``) and
+    still assembles: a limit at 188.94443627691183 stays there, it is not
+    188.9444.
     """
     q = 10.0 ** (math.floor(math.log10(scale)) - 6) if scale > 0 else 0.0
     if not q:
         return x
     r = round(x / q) * q
     r = float(f"{r:.12g}")
-    if r == x or abs(r - x) > 1e-6 * scale or not bool(ok(np.array([r]))[0]):
+    if r == x or abs(r - x) > VERDICT_REL * scale or not bool(ok(np.array([r]))[0]):
         return x
     return r
 
