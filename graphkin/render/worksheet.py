@@ -84,6 +84,48 @@ def _given_steps(fig: Any, sol: Any, layout: Layout) -> None:
     ax.set_axis_off()
 
 
+def _givens(sol: Any, diagram: str) -> str:
+    """The inputs' rates the student starts from, as the book states a problem.
+
+    ``ω2 = 10 rad/s ccw`` (and ``α2`` for the acceleration polygon), or a
+    slider's ``ds4 = 5 in/s``; rates the file gives for another link
+    (``[rates]``) likewise.  Without them no polygon can be drawn.
+    """
+    from graphkin.text import g6, sense
+
+    mech = sol.mechanism
+    length = mech.length_unit
+    parts = []
+    wanted = (0,) if diagram == "velocity" else (0, 1)
+    for d in mech.drives:
+        angle = d.kind in ("angle", "relative")
+        units = ("rad/s", "rad/s²") if angle else (f"{length}/s", f"{length}/s²")
+        for i in wanted:
+            v = d.rate if i == 0 else d.rate2
+            if v is None:
+                continue
+            text = f"{d.rate_labels[i]} = {g6(abs(v) if angle else v)} {units[i]}"
+            parts.append(f"{text} {sense(v)}".rstrip() if angle else text)
+    r = mech.rates
+    if r is not None:
+        for i, v in enumerate((r.rate, r.rate2)[:len(wanted)]):
+            if v is not None:
+                name = ("ω", "α")[i] + r.link if r.kind != "position" else ("v", "a")[i] + r.link
+                unit = ("rad/s", "rad/s²")[i] if r.kind != "position" \
+                    else (f"{length}/s", f"{length}/s²")[i]
+                sign = sense(v) if r.kind != "position" else ""
+                parts.append(f"{name} = {g6(abs(v) if sign else v)} {unit} {sign}".rstrip())
+    import re
+
+    from graphkin.render.scene import sub_digits
+
+    # the book's ω₂, α₃/₂: the link numbers after ω and α as subscripts
+    text = re.sub(r"([ωα])(\d+)(/\d+)?",
+                  lambda m: sub_digits(m[1] + m[2]) + (sub_digits("/" + m[3][1:]) if m[3] else ""),
+                  "Given " + ", ".join(parts) + ".")
+    return text if parts else ""
+
+
 def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:
     """The worksheet as a matplotlib Figure of the paper's size (axes in mm).
 
@@ -111,13 +153,14 @@ def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:
             va="bottom", gid="worksheet-title")
     ax.text(layout.mechanism_box[0], top + 3.0,
             f"Mechanism drawn to 1 mm = {layout.mech_per_mm:.6g} {layout.length_unit}.  "
-            f"Draw the {layout.diagram} polygon from O_{letter} below, to the scale printed; "
-            "label the image points.", fontsize=6.5, va="bottom", gid="worksheet-task")
+            f"{_givens(sol, layout.diagram)}", fontsize=6.5, va="bottom",
+            gid="worksheet-task")
     _mechanism(fig, sol, layout)
     x0, y0, x1, y1 = layout.polygon_box
     ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor=_LIGHT, lw=0.5,
                            gid="polygon-area"))
-    ax.text(x0, y1 + 2.0, f"{layout.diagram.capitalize()} polygon:  {layout.scale_text}",
+    ax.text(x0, y1 + 2.0, f"{layout.diagram.capitalize()} polygon:  {layout.scale_text}."
+            f"  Draw it from O$_{letter}$ below to this scale; label the image points.",
             fontsize=8, va="bottom", gid=f"scale-text-{layout.diagram}")
     px, py = layout.pole
     if layout.upto:

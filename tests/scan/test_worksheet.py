@@ -147,3 +147,19 @@ class _nothing:
 
     def __exit__(self, *exc: object) -> None:
         return None
+
+
+def test_worksheet_states_the_given_rates(tmp_path: Path, examples: Path) -> None:
+    # a polygon cannot be drawn without the input's rates: Example 3.1 gives
+    # ω2 = 900 rev/min ccw = 900 · 2π/60 = 94.2478 rad/s, and α2 = 0 for the acceleration
+    out = tmp_path / "sheet.svg"
+    assert main(["worksheet", str(examples / "ex3_1_fourbar.toml"), "-d", "acceleration",
+                 "--sheet", "a4", "-o", str(out)]) == 0
+    text = out.read_text()
+    assert "Given ω₂ = 94.2478 rad/s ccw, α₂ = 0 rad/s²." in text
+    out_v = tmp_path / "v.svg"
+    assert main(["worksheet", str(examples / "ex3_1_fourbar.toml"), "-d", "velocity",
+                 "-o", str(out_v)]) == 0
+    text = out_v.read_text()
+    assert "Given ω₂ = 94.2478 rad/s ccw." in text and "α₂" not in text
+    assert "from O_V" not in text                    # the pole typeset, not a raw name
