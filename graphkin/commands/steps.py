@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Callable
+from typing import Any
 
 from graphkin.commands._args import about, command, page_options, write_text, writing
 
@@ -115,8 +117,6 @@ def _forces(sol: object, args: argparse.Namespace) -> int:
 
 def _gears(found: tuple[str, dict] | None, args: argparse.Namespace) -> int:
     """The layout of a pair in mesh, one frame per step (Sec. 7.5, Figs. 7.8-7.9)."""
-    from pathlib import Path
-
     from graphkin.errors import InputError
     from graphkin.gears import layout
     from graphkin.gears.file import from_dict
@@ -130,46 +130,20 @@ def _gears(found: tuple[str, dict] | None, args: argparse.Namespace) -> int:
         raise InputError(f"a gear file is taught with -d gears, not -d {args.diagram}",
                          key="--diagram", file=args.file)
     lay = layout(from_dict(found[1], args.file))
-    if args.output is not None:
-        out = write_text(args.output, gear_steps_html(lay), "--output")
-        print(f"wrote {out}", file=sys.stderr)
-    if args.frames is not None:
-        d = Path(args.frames)
-        with writing(f"into {d}", "--frames"):
-            d.mkdir(parents=True, exist_ok=True)
-            frames = gear_frames(lay)
-            for k, (_, _, svg) in enumerate(frames):
-                (d / f"gears-{k:02d}.svg").write_text(svg, encoding="utf-8")
-        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
-    return 0
+    return _pages(args, lambda: gear_steps_html(lay), lambda: gear_frames(lay), "gears")
 
 
 def _cam(args: argparse.Namespace) -> int:
     """The layout of a cam's profile by inversion, one frame per step (Sec. 6.4)."""
-    from pathlib import Path
-
     from graphkin.cams.parse import load_cam
     from graphkin.render.cam_steps import cam_frames, cam_steps_html
 
     cam = load_cam(args.file).cam
-    if args.output is not None:
-        out = write_text(args.output, cam_steps_html(cam), "--output")
-        print(f"wrote {out}", file=sys.stderr)
-    if args.frames is not None:
-        d = Path(args.frames)
-        with writing(f"into {d}", "--frames"):
-            d.mkdir(parents=True, exist_ok=True)
-            frames = cam_frames(cam)
-            for k, (_, _, svg) in enumerate(frames):
-                (d / f"cam-{k:02d}.svg").write_text(svg, encoding="utf-8")
-        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
-    return 0
+    return _pages(args, lambda: cam_steps_html(cam), lambda: cam_frames(cam), "cam")
 
 
 def _synthesis(args: argparse.Namespace) -> int:
     """A synthesis file's construction, one frame per step (Ch. 9, ``synthesize --steps``)."""
-    from pathlib import Path
-
     from graphkin.errors import InputError
     from graphkin.render.synthesis_steps import synthesis_frames, synthesis_steps_html
     from graphkin.synthesis.run import synthesize
@@ -183,15 +157,24 @@ def _synthesis(args: argparse.Namespace) -> int:
         raise InputError(f"a synthesis file is taught with -d synthesis, not -d {args.diagram}",
                          key="--diagram", file=args.file)
     res = synthesize(load_spec(args.file))
+    return _pages(args, lambda: synthesis_steps_html(res), lambda: synthesis_frames(res),
+                  "synthesis")
+
+
+def _pages(args: argparse.Namespace, html: Callable[[], str],
+           frames: Callable[[], list[tuple[Any, Any, str]]], prefix: str) -> int:
+    """Write a design file's step page (``-o``) and its frames (``--frames DIR``)."""
+    from pathlib import Path
+
     if args.output is not None:
-        out = write_text(args.output, synthesis_steps_html(res), "--output")
+        out = write_text(args.output, html(), "--output")
         print(f"wrote {out}", file=sys.stderr)
     if args.frames is not None:
         d = Path(args.frames)
         with writing(f"into {d}", "--frames"):
             d.mkdir(parents=True, exist_ok=True)
-            frames = synthesis_frames(res)
-            for k, (_, _, svg) in enumerate(frames):
-                (d / f"synthesis-{k:02d}.svg").write_text(svg, encoding="utf-8")
-        print(f"wrote {len(frames)} frames into {d}", file=sys.stderr)
+            made = frames()
+            for k, (_, _, svg) in enumerate(made):
+                (d / f"{prefix}-{k:02d}.svg").write_text(svg, encoding="utf-8")
+        print(f"wrote {len(made)} frames into {d}", file=sys.stderr)
     return 0
