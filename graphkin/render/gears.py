@@ -31,13 +31,11 @@ import numpy as np
 from graphkin.gears import analytic
 from graphkin.gears.mesh import Contact, MeshLayout
 from graphkin.gears.profile import gear_teeth, mesh_phases, rack_teeth
-from graphkin.render.labels import place_labels, text_size
+from graphkin.render.labels import place_labels
 from graphkin.render.results import Row
-from graphkin.render.scale import NICE, choose_scale
 from graphkin.render.scene import Item, LabelRequest, Panel, clip_segment, inside_spans
-from graphkin.render.sheet import FOOT_H, MARGIN, TITLE_H, Sheet, _frame, _layout
+from graphkin.render.sheet import Sheet, _frame, _layout, box_panel
 from graphkin.render.stepper import PAGER_JS, frame_section
-from graphkin.render.style import STYLES
 from graphkin.text import fmt
 
 __all__ = ["gear_sheet", "draw_gears", "gear_frames", "gear_steps_html", "CIRCLE_STYLE"]
@@ -108,18 +106,7 @@ def _zone(lay: MeshLayout) -> tuple[np.ndarray, np.ndarray]:
 
 def _panel(lay: MeshLayout, name: str, title: str, lo: np.ndarray, hi: np.ndarray,
            max_inches: float) -> Panel:
-    size = hi - lo
-    scale = choose_scale(float(max(size)), max_inches, "in", lay.pair.units, NICE)
-    p = Panel(name, "gears", title, lay.pair.units, scale=scale, prefix=f"{name}-")
-    k = p.k
-    w = max(float(size[0]), (text_size(title, STYLES["title"]["size"], "title")[0] + 0.25
-                             - 2 * MARGIN) * k)
-    h = float(size[1])
-    cx, cy = (lo + hi) / 2
-    p.view = (cx - w / 2 - MARGIN * k, cy - h / 2 - MARGIN * k - FOOT_H * k,
-              cx + w / 2 + MARGIN * k, cy + h / 2 + MARGIN * k + TITLE_H * k)
-    p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
-    return p
+    return box_panel(name, "gears", title, lay.pair.units, lo, hi, max_inches)
 
 
 def gear_sheet(lay: MeshLayout, *, table: bool = True, max_inches: float = 6.5,

@@ -736,3 +736,23 @@ def _layout(sheet: Sheet, legend: bool = True) -> None:
         sheet.table_origin = positions[k]
         sheet.table_size = boxes[k]
     sheet.size = (float(W), float(H))
+
+
+def box_panel(name: str, kind: str, title: str, unit: str, lo: np.ndarray, hi: np.ndarray,
+              max_inches: float = 6.0) -> Panel:
+    """A panel showing the box ``lo``-``hi`` to a round scale, wide enough for its title.
+
+    The design chapters' drawings (gears, synthesis) lay their panels out so.
+    """
+    size = np.maximum(hi - lo, 1e-9 * max(float(np.max(np.abs(hi))), 1.0))
+    scale = choose_scale(float(max(size)), max_inches, "in", unit, NICE)
+    p = Panel(name, kind, title, unit, scale=scale, prefix=f"{name}-")
+    k = p.k
+    w = max(float(size[0]), (text_size(title, STYLES["title"]["size"], "title")[0] + 0.25
+                             - 2 * MARGIN) * k)
+    h = float(size[1])
+    cx, cy = (lo + hi) / 2
+    p.view = (cx - w / 2 - MARGIN * k, cy - h / 2 - MARGIN * k - FOOT_H * k,
+              cx + w / 2 + MARGIN * k, cy + h / 2 + MARGIN * k + TITLE_H * k)
+    p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
+    return p

@@ -32,8 +32,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.construction import Construction
-from graphkin.render.labels import place_labels, text_size
-from graphkin.render.scale import NICE, choose_scale
+from graphkin.render.labels import place_labels
 from graphkin.render.scene import (
     Group,
     Item,
@@ -44,8 +43,7 @@ from graphkin.render.scene import (
     inside_spans,
     point_text,
 )
-from graphkin.render.sheet import FOOT_H, MARGIN, TITLE_H, Sheet, _frame, _layout
-from graphkin.render.style import STYLES
+from graphkin.render.sheet import Sheet, _frame, _layout, box_panel
 from graphkin.synthesis.run import Result
 
 __all__ = ["synthesis_sheet", "draw_synthesis", "synthesis_figure", "save_synthesis",
@@ -190,18 +188,7 @@ class Pen:
 def panel(name: str, title: str, unit: str, lo: np.ndarray, hi: np.ndarray,
           max_inches: float = 6.0) -> Panel:
     """A panel showing the box ``lo``-``hi`` to a round scale (as the gear drawings' panels)."""
-    size = np.maximum(hi - lo, 1e-9 * max(float(np.max(np.abs(hi))), 1.0))
-    scale = choose_scale(float(max(size)), max_inches, "in", unit, NICE)
-    p = Panel(name, "synthesis", title, unit, scale=scale, prefix=f"{name}-")
-    k = p.k
-    w = max(float(size[0]), (text_size(title, STYLES["title"]["size"], "title")[0] + 0.25
-                             - 2 * MARGIN) * k)
-    h = float(size[1])
-    cx, cy = (lo + hi) / 2
-    p.view = (cx - w / 2 - MARGIN * k, cy - h / 2 - MARGIN * k - FOOT_H * k,
-              cx + w / 2 + MARGIN * k, cy + h / 2 + MARGIN * k + TITLE_H * k)
-    p.inner = (p.view[0], p.view[1] + FOOT_H * k, p.view[2], p.view[3] - TITLE_H * k)
-    return p
+    return box_panel(name, "synthesis", title, unit, lo, hi, max_inches)
 
 
 def _after_t(cx: Construction) -> set[str]:
