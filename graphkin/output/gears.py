@@ -288,6 +288,9 @@ def gears_text(lay: MeshLayout) -> str:
     elif m["kind"] == "internal":
         lines.append(f"  No interference: C lies between A and P (Eq. 7.12); inside "
                      f"{c3} the point B lies beyond A and does not bound the recess (Fig. 7.11).")
+    else:
+        lines.append("  No interference: C and D lie between the interference points A and B "
+                     "(Eq. 7.12).")
     if m["tip_interference"]:
         lines.append(f"  Tip interference (fouling): away from the path of contact the teeth of "
                      f"{c2} enter those of {c3} by up to {g6(m['tip_overlap'])} {u} as they "
@@ -295,9 +298,6 @@ def gears_text(lay: MeshLayout) -> str:
     elif m["kind"] == "internal":
         lines.append(f"  No tip interference: the teeth of {c2} clear those of {c3} through a "
                      "whole pitch of the motion.")
-    else:
-        lines.append("  No interference: C and D lie between the interference points A and B "
-                     "(Eq. 7.12).")
     least = m["minimum_driver_teeth"]
     lines.append(f"  The fewest teeth on {c2} that mesh with {g3['teeth']} teeth without "
                  f"interference: {least if least is not None else 'none (no pinion fits)'}.")

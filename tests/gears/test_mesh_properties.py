@@ -236,3 +236,22 @@ def test_drawn_teeth_are_involutes_touching_at_p(pair):
         t = center + g.base_radius * np.array([math.cos(theta + varphi),
                                                math.sin(theta + varphi)])
         assert np.allclose(t, lay.points[foot], atol=1e-9 * pair.center)
+
+
+@settings(max_examples=25, deadline=None)
+@given(n2=st.integers(3, 60), n3=st.integers(3, 120), phi=st.sampled_from([14.5, 20.0, 25.0]))
+def test_the_report_says_interference_or_none_never_both(n2: int, n3: int, phi: float) -> None:
+    # a report once said "Interference ... after B" and then "No interference: C and D
+    # lie between A and B" for a 20/3-tooth pair (the no-interference line hung on the
+    # tip-interference test). The words follow the layout's own verdict, once.
+    from graphkin.gears import layout
+    from graphkin.gears.file import loads
+    from graphkin.output.gears import gears_text
+
+    lay = layout(loads(f'units = "in"\ndiametral_pitch = 10\npressure_angle = {phi}\n'
+                       f"[gears.pinion]\nteeth = {n2}\n[gears.gear]\nteeth = {n3}\n"))
+    text = gears_text(lay)
+    said_yes = "  Interference (Sec. 7.7" in text
+    said_no = "  No interference:" in text
+    assert said_yes != said_no
+    assert said_yes == bool(lay.interference)
