@@ -246,7 +246,11 @@ def _valid_of(blk: _Block) -> Array:
     if blk.ev is not None and blk.ev is blk.evv and blk.ev.failed_at is None:
         return np.ones(n, dtype=bool)
     if blk.analytic is not None:
-        return np.broadcast_to(np.asarray(blk.analytic.valid), (n,)).copy()
+        ok = np.broadcast_to(np.asarray(blk.analytic.valid), (n,)).copy()
+        for st in blk.analytic.links.values():  # rates left empty at a dead center
+            if st.omega is not None:
+                ok &= np.isfinite(np.broadcast_to(st.omega, (n,)))
+        return ok
     assert blk.ev is not None  # a block is either analytic or has its posture replay
     ok = np.broadcast_to(np.asarray(blk.ev.valid), (n,)).copy()
     for e in (blk.evv, blk.eva):

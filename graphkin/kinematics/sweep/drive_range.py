@@ -185,7 +185,11 @@ def _travel(eng: _Engine) -> tuple[float, float]:
                            for g, b in zip(good, bad, strict=True)])
         else:
             lo, _ = _bisect(ok, np.array(good), np.array(bad))
-        ends += [_clean_end(ok, float(x), mech.scale) for x in lo]
+        limits = [_clean_end(ok, float(x), mech.scale) for x in lo]
+        ends += limits
+        # the limit positions (dead centers, Sec. 1.10), not the ends of the search: at a
+        # drive value within round-off of one the rates are not determined (_Engine.at_limit)
+        eng.extras[("limits", d.value)] = limits
     return min(ends), max(ends)
 
 

@@ -22,7 +22,7 @@ from graphkin.kinematics.polygons import Polygons, build_polygons
 from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import Drive, Mechanism
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import VERDICT_REL, Tolerance
 
 Array = np.ndarray
 
@@ -285,7 +285,29 @@ class _Engine:
         for i, d in enumerate(mech.drives):
             full[:, i] = dv if i == 0 else d.value if d.law is None else d.law.value(dv)
         sol = solve_analytic_many(mech, full, tol=self.tol)
+        near = self.at_limit(dv)
+        if near.any():
+            _blank_rates(sol, near)
         return _Block(dv, None, None, None, sol)
+
+    def at_limit(self, dv: Array) -> Array:
+        """Drive values within round-off of a limit position found by :func:`_travel`.
+
+        At a dead center at the end of a slider drive's travel (Sec. 1.10) the
+        velocity equations are singular: the rates at a drive value within
+        ``VERDICT_REL`` of the size of the mechanism from it are set by the
+        round-off of that value (the end found by bisection lies within ~1e-12
+        of the size of it), not by the mechanism.  The constructions leave such
+        rates empty at their tangency; so does the analytic solver here.
+        """
+        dv = np.asarray(dv, dtype=float)
+        limits = self.extras.get(("limits", self.drive.value), ())
+        near = np.zeros(dv.shape, dtype=bool)
+        if self.drive.is_angle:  # a travel: a slider's, or a point's coordinate
+            return near
+        for x in limits:
+            near |= np.abs(dv - x) <= VERDICT_REL * self.mech.scale
+        return near
 
 
 @dataclass
@@ -333,3 +355,14 @@ def _dyads(pc: PostureConstruction) -> list[tuple[str, str, str]]:
             if not s.label.count(":"):
                 out.append((s.outputs[0], centers[0], centers[1]))
     return out
+
+
+def _blank_rates(sol: Solution, rows: Array) -> None:
+    """NaN rates (velocities and accelerations) at ``rows``; the postures are kept."""
+    for st in sol.links.values():
+        for name in ("omega", "alpha", "origin_velocity", "origin_acceleration"):
+            a = getattr(st, name)
+            if a is not None:
+                a = np.array(a, dtype=float)
+                a[rows] = np.nan
+                setattr(st, name, a)

@@ -163,6 +163,8 @@ def _singular(sw: Sweep) -> list[SingularPosture]:
         #      and a slider drive's dead centers at the ends of its travel ------------
         out.extend(_slider_limits(sw, eng))
         out.extend(_travel_ends(sw, eng))
+    else:
+        out.extend(_travel_limits(sw, eng))
     out.sort(key=lambda s: (s.drive, s.kind))
     return out
 
@@ -454,6 +456,31 @@ def _travel_ends(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
                     "dead-center", u, None, lab,
                     f"dead center at {lab}: its two branches meet at drive {_fmt(eng, u)} "
                     "(an end of the travel over which it assembles)"))
+    return out
+
+
+def _travel_limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
+    """Dead centers at the ends of a travel drive's range, for the analytic solver.
+
+    The limit positions :func:`_travel` found by bisection (Sec. 1.10) that are
+    an end of this sweep (within ``VERDICT_REL`` of the size of the
+    mechanism): there the rates are left empty (:meth:`_Engine.at_limit`).
+    There is no construction to name the point where the branches meet.
+    """
+    dv = sw.values
+    if eng.drive.is_angle or sw._cyclic or len(dv) < 2:
+        return []
+    step = float(dv[1] - dv[0])
+    ends = np.array([float(dv[0]), float(dv[0]) + step * len(dv)])
+    out: list[SingularPosture] = []
+    for end, near in zip(ends, eng.at_limit(ends)):
+        if near:
+            u = _to_user(eng, float(end))
+            out.append(SingularPosture(
+                "dead-center", u, None, "",
+                f"dead center: the two branches of the posture meet at drive {_fmt(eng, u)} "
+                "(an end of the travel over which it assembles; the rates are not "
+                "determined there)"))
     return out
 
 
