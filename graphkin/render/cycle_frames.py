@@ -22,9 +22,72 @@ import numpy as np
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import Mechanism
 from graphkin.render.cycle_data import cycle_data
-from graphkin.render.style import rc_context
+from graphkin.render.style import STYLES, rc_context
 
 __all__ = ["write_cycle_frames", "write_cycle_gif"]
+
+
+LABEL_PT = float(STYLES["label"]["size"])
+"""Point letters at ``draw``'s size (points)."""
+SMALL_PT = float(STYLES["label-small"]["size"])
+TITLE_PT = float(STYLES["title"]["size"])
+_AROUND = ((1, 1), (1, -1), (-1, 1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
+
+
+class _Letters:
+    """Letters of one panel, each where it overlaps no letter placed before it.
+
+    Its usual place (up and right of its point) first, then rings around the
+    point, farther out where it is crowded; inside the panel when it can be.
+    Boxes are on paper (inches), sized from matplotlib's font metrics
+    (:func:`graphkin.render.labels.text_size`), as ``draw`` places its labels.
+    """
+
+    def __init__(self, ax: Any) -> None:
+        ax.apply_aspect()  # the panel's final box (an equal aspect shrinks it when drawn)
+        self.ax = ax
+        dpi = ax.figure.dpi
+        self.frame = np.asarray(ax.get_window_extent().get_points()).ravel() / dpi
+        self.placed: list[np.ndarray] = []
+
+    def _cost(self, b: np.ndarray) -> float:
+        f = self.frame
+        out = max(f[0] - b[0], 0.0) + max(f[1] - b[1], 0.0) + max(b[2] - f[2], 0.0) \
+            + max(b[3] - f[3], 0.0)
+        cost = 1e6 * out
+        for q in self.placed:
+            ox = min(b[2], q[2]) - max(b[0], q[0])
+            oy = min(b[3], q[3]) - max(b[1], q[1])
+            if ox > 0 and oy > 0:
+                cost += ox * oy
+        return cost
+
+    def put(self, xy: np.ndarray, text: str, size: float = LABEL_PT) -> None:
+        """Letter the point ``xy`` (data units) with ``text`` at ``size`` points."""
+        from graphkin.render.labels import text_size
+
+        w, h = text_size(text, size)
+        a = np.asarray(self.ax.transData.transform(xy), dtype=float) / self.ax.figure.dpi
+        gap = 3.0 / 72  # the letter's usual offset: 3 pt up and right of its point
+        tries = [(gap, gap)]
+        for r in (0.5, 1.3, 2.3, 3.5):
+            step = r * h
+            for ux, uy in _AROUND:
+                tries.append((ux * step + (gap if ux > 0 else -w - gap if ux < 0 else -w / 2),
+                              uy * step + (gap if uy > 0 else -h - gap if uy < 0 else -h / 2)))
+        best, least = None, math.inf
+        for dx, dy in tries:
+            b = np.array([a[0] + dx, a[1] + dy, a[0] + dx + w, a[1] + dy + h])
+            c = self._cost(b)
+            if c < least:
+                best, least = b, c
+            if c == 0:
+                break
+        assert best is not None
+        self.placed.append(best)
+        off = (best[:2] - a) * 72  # points
+        self.ax.annotate(text, (xy[0], xy[1]), xytext=(off[0], off[1]),
+                         textcoords="offset points", fontsize=size, ha="left", va="bottom")
 
 
 def _val(series: list[int | None], q: float, i: int) -> float:
@@ -89,7 +152,7 @@ class _Drawer:
                 title += f"  (bar: {sc['value']:g} {sc['unit']})"
                 x0, y0 = view[0] + 0.05 * (view[2] - view[0]), view[1] + 0.05 * (view[3] - view[1])
                 ax.plot([x0, x0 + sc["bar"]], [y0, y0], color="k", lw=1.5)
-            ax.set_title(title, fontsize=10)
+            ax.set_title(title, fontsize=TITLE_PT)
             if kind == "mechanism":
                 self._bodies(ax, i)
             for lk in d["links"]:
@@ -105,26 +168,24 @@ class _Drawer:
                     if len(pts) >= 3:
                         ax.fill(arr[:, 0], arr[:, 1], color=lk["fill"], alpha=0.5, lw=0)
                     ax.plot(arr[:, 0], arr[:, 1], color="#555", lw=0.8)
+            letters = _Letters(ax)
             for name in d["points"]:
                 q = self.point(name, i, kind)
                 if not np.isfinite(q).all():
                     continue
                 if kind == "mechanism":
                     ax.plot(*q, "o", ms=4, mfc="w" if name in d["pins"] else "k", mec="k")
-                    ax.annotate(name, (q[0], q[1]), xytext=(4, 4), textcoords="offset points",
-                                fontsize=9)
+                    letters.put(q, name)
                 elif name not in d["frame"]:
                     ax.annotate("", (q[0], q[1]), (0, 0),
                                 arrowprops={"arrowstyle": "-|>", "lw": 1.2})
-                    ax.annotate(name.lower() + ("′" if kind == "acceleration" else ""),
-                                (q[0], q[1]),
-                                xytext=(4, 4), textcoords="offset points", fontsize=9)
+                    letters.put(q, name.lower() + ("′" if kind == "acceleration" else ""))
             if kind != "mechanism":
                 ax.plot(0, 0, "o", color="#c62828", ms=4)
         unit = "°" if d["drive"]["unit"] == "°" else " " + d["drive"]["unit"]
         state = "" if d["valid"][i] == "1" else "  (cannot be assembled)"
         self.fig.suptitle(f"{d['title']}: {d['drive']['label']} = "
-                          f"{d['drive']['values'][i]:.2f}{unit}{state}", fontsize=10)
+                          f"{d['drive']['values'][i]:.2f}{unit}{state}", fontsize=TITLE_PT)
         return self.fig
 
 

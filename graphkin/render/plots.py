@@ -291,7 +291,64 @@ def sweep_figure(sw: Sweep, what: str | Sequence[str], *, fig: Figure | None = N
             _shade_unassembled(ax, x, cols)
             _mark_special(ax, sw, x)
     fig.suptitle(plain(sw.mechanism.title or "sweep"), fontsize="medium")
+    _legends_off_the_curves(fig, [ax for ax, (item, _w) in zip(axes, items)
+                                  if item not in ("path", "center", "centrode")])
     return fig
+
+
+_CURVES = ("curve-", "transmission-")
+"""The gids of the curves a legend over the drive must not cover."""
+
+
+def legend_covers_curve(ax: Any, renderer: Any) -> bool:
+    """Whether the legend of ``ax``, where it is drawn, covers a stretch of one of its curves.
+
+    The curves are the lines whose gid starts ``curve-`` or ``transmission-``, as
+    drawn (display coordinates, the gaps of postures that cannot be assembled left
+    out), against the legend's box as laid out by ``renderer``.
+    """
+    from shapely import LineString, Point, box
+
+    leg = ax.get_legend()
+    if leg is None:
+        return False
+    b = leg.get_window_extent(renderer)
+    frame = box(b.x0, b.y0, b.x1, b.y1)
+    for line in ax.get_lines():
+        if not str(line.get_gid() or "").startswith(_CURVES):
+            continue
+        xy = np.column_stack([np.asarray(line.get_xdata(), dtype=float),
+                              np.asarray(line.get_ydata(), dtype=float)])
+        ok = np.isfinite(xy).all(axis=1)
+        for sl in _segments(ok):
+            run = ax.transData.transform(xy[sl])
+            if len(run) >= 2 and LineString(run).intersects(frame):
+                return True
+            if len(run) == 1 and frame.intersects(Point(run[0])):
+                return True
+    return False
+
+
+def _legends_off_the_curves(fig: Any, axes: list[Any]) -> None:
+    """Keep every legend of a plot over the drive off its curves (issue 24).
+
+    Matplotlib's ``loc="best"`` picks the corner that covers least; when every
+    corner covers some curve (three ω curves fill the axes), the legend goes out
+    beside the axes, on the right, and the constrained layout makes room for it.
+    """
+    if not any(ax.get_legend() is not None for ax in axes):
+        return
+    fig.draw_without_rendering()  # the layout and each legend's "best" place
+    renderer = fig._get_renderer()
+    for ax in axes:
+        leg = ax.get_legend()
+        if leg is None:
+            continue
+        if legend_covers_curve(ax, renderer):
+            handles, labels = ax.get_legend_handles_labels()
+            leg = ax.legend(handles, labels, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                            borderaxespad=0.0, fontsize="small", frameon=False)
+        leg.set_gid("legend-" + str(ax.get_gid() or "plot").removeprefix("plot-"))
 
 
 def _path_kind(sw: Sweep, name: str) -> str:
