@@ -8,7 +8,8 @@ notebook and Example 3.1's file), opens the notebook in headless Chromium
 (``notebook:run-all-cells`` would re-make the widget, so the cells are run one
 by one with ``notebook:run-cell``), waits for the widget's page in the cell's
 output, drags the crank's handle with pointer events, then runs a second cell
-in the same kernel that prints the edited mechanism's drive and its solved B.
+in the same kernel that prints the edited mechanism's drive and its solved B,
+and shows the widget again in a third cell (a new view: the dragged posture).
 The drive printed is the one the page shows after the drag, and B is the
 crank's tip at that angle: ``A + AB (cos θ₂, sin θ₂)``, AB = 4 in, A = (0, 0)
 (Example 3.1's crank, Uicker Sec. 3.6).  Set GK_JLAB_SHOTS=dir to keep the
@@ -43,6 +44,7 @@ CELLS = [
     'import json, math\nm = w.mechanism\nsol = m.solve()\n'
     'print("GK" + json.dumps({"theta2": math.degrees(m.drives[0].value),'
     ' "B": [float(v) for v in sol.position("B")], "valid": bool(sol.valid.all())}))',
+    'w',
 ]
 
 
@@ -150,7 +152,7 @@ def test_the_widget_renders_in_jupyterlab_and_the_kernel_reads_the_drag(lab):
         b.open(f"{base}/lab/tree/live.ipynb?token={TOKEN}", wait=60)
         # the notebook open and its kernel idle
         _wait(lambda: b.js(f"!!(window.jupyterapp && {NB}"
-                           f" && {NB}.content.widgets.length === 2"
+                           f" && {NB}.content.widgets.length === 3"
                            f" && {NB}.sessionContext.session"
                            f" && {NB}.sessionContext.session.kernel"
                            f" && {NB}.sessionContext.session.kernel.status === 'idle')"),
@@ -199,6 +201,13 @@ def test_the_widget_renders_in_jupyterlab_and_the_kernel_reads_the_drag(lab):
         text = _wait(lambda: "GK{" in _output_text(b, 1) and _output_text(b, 1)
                      or ("Error" in _output_text(b, 1) and _output_text(b, 1)),
                      60, "the second cell printed nothing", b)
+        # the widget shown again (a new view of the same model): the edited posture, not the
+        # file's; a view's edits are kept in the model, not only in the view that made them
+        _run_cell(b, 2)
+        views = ("document.querySelectorAll('.jp-OutputArea .gk-live')")
+        _wait(lambda: b.js(f"{views}.length === 2"), 60, "the widget was not shown again", b)
+        b.pump(0.3)
+        again = b.js(f"{views}[1].parentNode.graphkinLive.state().drive")
         if shots:
             b.js(f"{NB}.content.widgets[1].node.scrollIntoView({{block: 'end'}})")
             b.pump(0.3)
@@ -222,4 +231,5 @@ def test_the_widget_renders_in_jupyterlab_and_the_kernel_reads_the_drag(lab):
     ab = 4.0  # Example 3.1: AB = 4 in, A = (0, 0)
     assert math.dist(got["B"], (ab * math.cos(t), ab * math.sin(t))) < 1e-9 * ab
     assert math.dist(got["B"], after["result"]["B"]) < 1e-9 * ab
+    assert again == after["drive"]
     assert errors == [], errors
