@@ -758,6 +758,9 @@ return {
   },
   toml: edited,
   redraw: redraw,
+  // the edit (K and the drive), kept by the notebook's model and restored in a new view
+  edit: () => ({K: K.slice(), drive: drive}),
+  load: (s) => { if (s.K.length === K.length) { K = s.K.slice(); drive = s.drive; redraw(true); } },
 };
 }
 """

@@ -8,7 +8,11 @@ its ``_css`` the page's style sheet scoped to the widget (``.gk-live``), so
 nothing of the notebook is restyled.  Every edit (a drag released, the
 slider let go, a branch switched, undo, reset) sends the edited mechanism
 file back to Python (the ``toml`` trait, the same TOML the page saves), and
-``widget.mechanism`` parses it: the edited mechanism, readable back.
+``widget.mechanism`` parses it: the edited mechanism, readable back.  The
+edit itself (the page's parameters and drive, the ``edit`` trait) is kept in
+the model too, so a view made later (the widget shown again, the browser's
+page reloaded) and every other view of the widget show the edited
+mechanism, not the file's.
 
 anywidget is an optional extra (``pip install 'graphkin[jupyter]'``),
 imported only when a widget is made.
@@ -63,10 +67,20 @@ function render({ model, el }) {
   root.className = "gk-live";
   root.innerHTML = GK_BODY;  // graphkin's own markup, the title escaped (live_body)
   el.appendChild(root);
-  el.graphkinLive = gkLiveApp(root, GK_DATA, model.get("source"), (toml) => {
+  const app = gkLiveApp(root, GK_DATA, model.get("source"), (toml) => {
     model.set("toml", toml);
+    model.set("edit", JSON.stringify(app.edit()));
     model.save_changes();
   });
+  el.graphkinLive = app;
+  // a view made after an edit (the cell shown again, the browser's page reloaded) and every
+  // other view of the same widget show the edited mechanism, not the file's
+  const follow = () => {
+    const s = model.get("edit");
+    if (s && s !== JSON.stringify(app.edit())) app.load(JSON.parse(s));
+  };
+  follow();
+  model.on("change:edit", follow);
 }
 export default { render };
 """)
@@ -107,6 +121,7 @@ def _widget_class() -> Any:
         _css = traitlets.Unicode("").tag(sync=True)
         toml = traitlets.Unicode("").tag(sync=True)
         source = traitlets.Unicode("").tag(sync=True)
+        edit = traitlets.Unicode("").tag(sync=True)  # the page's edit: {K, drive}, JSON
 
         @property
         def mechanism(self) -> Mechanism:

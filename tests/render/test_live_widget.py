@@ -41,7 +41,7 @@ def test_the_traits_round_trip_and_mechanism_reads_the_edit(tmp_path):
     path = EXAMPLES / "ex3_1_fourbar.toml"
     w = graphkin.live(path)
     state = w.get_state()
-    assert {"_esm", "_css", "toml", "source"} <= set(state)
+    assert {"_esm", "_css", "toml", "source", "edit"} <= set(state)
     text = state["toml"]
     assert text.count("D = [10, 0]") == 1
     w.set_state({"toml": text.replace("D = [10, 0]", "D = [10.5, -0.25]")})
@@ -83,6 +83,7 @@ const model = {{
   get: (k) => state[k],
   set: (k, v) => {{ state[k] = v; }},
   save_changes: () => {{ window.sent.push(state.toml); }},
+  on: () => {{}},
 }};
 const url = URL.createObjectURL(new Blob([esm], {{type: "text/javascript"}}));
 const mod = await import(url);
