@@ -14,20 +14,11 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import time
-from collections.abc import Callable
+
+from timing import best  # benchmarks/timing.py
 
 from graphkin.cams import Follower, FollowerKind, layout, profile, stations
 from graphkin.cams.examples import example_6_6, example_6_7
-
-
-def best(fn: Callable[[], object], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        fn()
-        times.append(time.process_time() - t)
-    return min(times)
 
 
 def main() -> None:

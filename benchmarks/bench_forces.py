@@ -17,8 +17,8 @@ import argparse
 import dataclasses
 import math
 import pathlib
-import time
-from collections.abc import Callable
+
+from timing import best  # benchmarks/timing.py
 
 import graphkin
 from graphkin.forces import solve_forces
@@ -26,15 +26,6 @@ from graphkin.forces.sweep import force_columns
 
 FILE = pathlib.Path(__file__).resolve().parents[1] / "tests" / "data" / "forces" / \
     "ex12_4_dynamic_fourbar.toml"
-
-
-def best(fn: Callable[[], object], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        t = time.process_time()
-        fn()
-        times.append(time.process_time() - t)
-    return min(times)
 
 
 def main() -> None:

@@ -22,23 +22,13 @@ from __future__ import annotations
 import argparse
 import pathlib
 import sys
-import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "tests"))
 
 from chains import driven_cranks, fourbar_chain  # noqa: E402
+from timing import best  # benchmarks/timing.py
 
 import graphkin  # noqa: E402
-
-
-def best_of(fn, repeat: int = 3) -> float:
-    """The best CPU time of ``repeat`` calls."""
-    best = float("inf")
-    for _ in range(repeat):
-        t = time.process_time()
-        fn()
-        best = min(best, time.process_time() - t)
-    return best
 
 
 def main() -> None:
@@ -62,9 +52,9 @@ def main() -> None:
     cases += [(f"{n} driven cranks", driven_cranks(n), 1) for n in args.cranks]
     for name, text, repeat in cases:
         mech = graphkin.loads(text)
-        t = best_of(mech.solve, repeat)
-        r = best_of(lambda x=text: report(x), 1) if args.report else float("nan")
-        j = best_of(lambda x=text: as_json(x), 1) if args.report else float("nan")
+        t = best(mech.solve, repeat)
+        r = best(lambda x=text: report(x), 1) if args.report else float("nan")
+        j = best(lambda x=text: as_json(x), 1) if args.report else float("nan")
         print(f"{name:<28}{len(mech.links):>7}{t:>10.3f}{r:>10.3f}{j:>10.3f}")
 
 
