@@ -90,33 +90,26 @@ class Dwell:
         def xy(z: complex) -> str:
             return f"[{float(z.real)!r}, {float(z.imag)!r}]"
 
-        if self.kind is DwellKind.SLIDER:
-            return "\n".join([
-                f'title = {toml_string(title or "Dwell six-bar with a slider (Sec. 9.13)")}',
-                f'units = {{ length = "{units}" }}', "",
-                "[links.1]", f"O_A = {xy(self.o_a)}", f"O_B = {xy(self.o_b)}",
-                f"O6 = {xy(self.o6)}", "",
-                "[links.2]", "O_A = [0.0, 0.0]", f"A = [{crank!r}, 0.0]", "",
-                "[links.3]", "A = [0.0, 0.0]", f"B = [{coupler!r}, 0.0]",
-                f"C = {xy(self.coupler_local * coupler)}", "",
-                "[links.4]", "O_B = [0.0, 0.0]", f"B = [{rocker!r}, 0.0]", "",
-                "[links.6]", "O6 = [0.0, 0.0]", f"S = [{self.radius!r}, 0.0]", "",
-                "[[slots]]", "link = 3", "on = 6", 'point = "C"', 'line = ["O6", "S"]', "",
-                "[drive]", "link = 2", f"angle = {math.degrees(theta)!r}", "",
-                "[assembly]", f"B = {xy(b)}", f"C = {xy(cz)}", f"S = {xy(cz)}", ""])
-        return "\n".join([
-            f'title = {toml_string(title or "Dwell six-bar (Sec. 9.13)")}',
-            f'units = {{ length = "{units}" }}', "",
+        slider = self.kind is DwellKind.SLIDER
+        name = "Dwell six-bar with a slider (Sec. 9.13)" if slider else "Dwell six-bar (Sec. 9.13)"
+        four_bar = [  # the four-bar whose coupler point C dwells, as both forms share it
+            f'title = {toml_string(title or name)}', f'units = {{ length = "{units}" }}', "",
             "[links.1]", f"O_A = {xy(self.o_a)}", f"O_B = {xy(self.o_b)}",
             f"O6 = {xy(self.o6)}", "",
             "[links.2]", "O_A = [0.0, 0.0]", f"A = [{crank!r}, 0.0]", "",
             "[links.3]", "A = [0.0, 0.0]", f"B = [{coupler!r}, 0.0]",
             f"C = {xy(self.coupler_local * coupler)}", "",
-            "[links.4]", "O_B = [0.0, 0.0]", f"B = [{rocker!r}, 0.0]", "",
-            "[links.5]", "C = [0.0, 0.0]", f"D = [{self.radius!r}, 0.0]", "",
-            "[links.6]", "O6 = [0.0, 0.0]", f"D = [{abs(self.d - self.o6)!r}, 0.0]", "",
-            "[drive]", "link = 2", f"angle = {math.degrees(theta)!r}", "",
-            "[assembly]", f"B = {xy(b)}", f"C = {xy(cz)}", f"D = {xy(self.d)}", ""])
+            "[links.4]", "O_B = [0.0, 0.0]", f"B = [{rocker!r}, 0.0]", ""]
+        drive = ["[drive]", "link = 2", f"angle = {math.degrees(theta)!r}", ""]
+        if slider:  # C slides in the slotted link 6 about O6
+            dyad = ["[links.6]", "O6 = [0.0, 0.0]", f"S = [{self.radius!r}, 0.0]", "",
+                    "[[slots]]", "link = 3", "on = 6", 'point = "C"', 'line = ["O6", "S"]', ""]
+            assembly = ["[assembly]", f"B = {xy(b)}", f"C = {xy(cz)}", f"S = {xy(cz)}", ""]
+        else:       # the dyad C-D, D-O6 of radius R5 from C
+            dyad = ["[links.5]", "C = [0.0, 0.0]", f"D = [{self.radius!r}, 0.0]", "",
+                    "[links.6]", "O6 = [0.0, 0.0]", f"D = [{abs(self.d - self.o6)!r}, 0.0]", ""]
+            assembly = ["[assembly]", f"B = {xy(b)}", f"C = {xy(cz)}", f"D = {xy(self.d)}", ""]
+        return "\n".join(four_bar + dyad + drive + assembly)
 
 
 def _curve(o_a: complex, a: complex, b: complex, o_b: complex, c: complex,
