@@ -40,7 +40,7 @@ from typing import Any
 from graphkin.errors import InputError
 
 __all__ = ["Schema", "UNITS", "MECHANISM", "VECTOR", "GEARS", "TRAIN", "GALLERY", "CAM",
-           "SYNTHESIS", "check_keys", "read_units", "nearest"]
+           "SYNTHESIS", "check_keys", "read_units", "nearest", "design_file"]
 
 Schema = Mapping[str, Any]
 
@@ -291,3 +291,34 @@ def read_units(value: Any, key: str, source: str, schema: Schema = UNITS) -> dic
                              key=f"{key}.{k}", file=source)
         out[str(k)] = v.strip()
     return out
+
+
+#: The top-level keys that make a file one of the design chapters' files, not a
+#: mechanism file (docs/formats/): what it is, the command that reads it.
+_DESIGN_KEYS: tuple[tuple[tuple[str, ...], str, str], ...] = (
+    (("cam", "segment"), "a cam file (docs/formats/cam.md)", "cam"),
+    (("gears", "mesh"), "a gear file (docs/formats/gears.md)", "gears"),
+    (("postures", "function", "path", "cognates", "dwell", "overlay", "coupler_curve",
+      "crank_rocker"), "a synthesis file (docs/formats/synthesis.md)", "synthesize"),
+    (("C",), "a vector file (docs/formats/vector.md)", "vector"),
+)
+
+
+def design_file(data: Mapping[str, Any]) -> tuple[str, str, str] | None:
+    """What a file without links is, when its keys say a design chapter's file.
+
+    Returns ``(what, command, key)``, or None for anything else (a mechanism
+    file, or a file too broken to tell: the mechanism parser names its keys).
+
+    >>> design_file({"title": "Ex 6.1", "cam": {}, "segment": []})[1]
+    'cam'
+    >>> design_file({"links": {}, "cams": []}) is None
+    True
+    """
+    if "links" in data:
+        return None
+    for keys, what, verb in _DESIGN_KEYS:
+        found = [k for k in keys if k in data]
+        if found:
+            return what, verb, found[0]
+    return None

@@ -13,7 +13,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
-from graphkin.keys import MECHANISM, check_keys, nearest, read_units
+from graphkin.keys import MECHANISM, check_keys, design_file, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.cam_joint import with_cams
 from graphkin.mechanisms.loading import force_fields
@@ -90,6 +90,12 @@ def loads(text: str, source: str = "<mechanism>") -> Mechanism:
 
 def from_dict(data: Mapping[str, Any], source: str = "<mechanism>") -> Mechanism:
     """Build and validate a :class:`Mechanism` from parsed TOML data ([[cams]]: Sec. 4.7)."""
+    other = design_file(data)
+    if other is not None:  # not "unknown key 'cam' (did you mean 'cams'?)"
+        what, verb, key = other
+        name = source if not source.startswith("<") else "FILE"
+        raise InputError(f"this is {what}, not a mechanism file: 'graphkin {verb} {name}' "
+                         "reads it", key=key, file=source)
     return with_cams(data, source, lambda d: _Parser(d, source).mechanism())
 
 
