@@ -37,6 +37,7 @@ from strategies import (
     slider_cranks,
     slotted,
 )
+from strategies_rolling import rolling_arrangements
 
 from graphkin.errors import GraphkinError
 from graphkin.mechanisms import from_dict
@@ -227,3 +228,45 @@ def test_instant_center_table_prints_no_round_off(path: Path) -> None:
     for m in re.finditer(r"\(([-0-9.e+]+), ([-0-9.e+]+)\)", text):
         for v in map(float, m.groups()):
             assert v == 0.0 or abs(v) >= floor, (path.name, m.group(0))
+
+
+_ROUND_OFF = re.compile(r"[-+]?\d(?:\.\d+)?e-(?:1[2-9]|[2-9]\d|\d{3})")
+
+
+def _curvature_lines(sol: Any) -> list[str]:
+    from graphkin.output.curvature import curvature_text
+
+    text = curvature_text(sol)
+    return [] if text is None else [ln for ln in text.splitlines() if "Motion" in ln or "γ" in ln]
+
+
+def _no_round_off_in(lines: list[str], where: str) -> None:
+    for ln in lines:
+        # a rate of 1e-12 of its kind's scale or less is what the arithmetic left of a
+        # zero: Example 11.7's crank at constant ω printed α2 = -1.47911e-31 rad/s²
+        assert not _ROUND_OFF.search(ln), (where, ln)
+        assert "γ = -0.00°" not in ln, (where, ln)
+
+
+@pytest.mark.parametrize("path", [p for p in _files()] + sorted((_REPO / "gallery" / "gears")
+                         .glob("ex11_*.toml")), ids=lambda p: p.name)
+def test_curvature_section_prints_no_round_off(path: Path) -> None:
+    """Every Motion line of the curvature section prints a zero rate as 0 (issue 23's rule)."""
+    import graphkin
+
+    try:
+        sol = graphkin.load(path).solve()
+    except GraphkinError:
+        pytest.skip("not solved at its posture")
+    _no_round_off_in(_curvature_lines(sol), path.name)
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=list(HealthCheck))
+@given(rm=rolling_arrangements())
+def test_curvature_of_rolling_trains_prints_no_round_off(rm: Any) -> None:
+    """Gears and wheels at constant input speed: their α is 0 but for the solve's round-off."""
+    try:
+        sol = from_dict(rm.data).solve()
+    except GraphkinError:
+        return
+    _no_round_off_in(_curvature_lines(sol), rm.kind)

@@ -15,8 +15,9 @@ import numpy as np
 from graphkin.kinematics.curvature import curvature, path_curvatures
 from graphkin.kinematics.solution import Solution
 from graphkin.output.centers import is_batch
+from graphkin.output.solution import rate_floors
 from graphkin.output.units import OutputUnits
-from graphkin.text import direction_degrees, g6, xy
+from graphkin.text import clean, direction_degrees, g6, xy
 
 __all__ = ["curvature_json", "paths_json", "curvature_text"]
 
@@ -163,9 +164,14 @@ def curvature_text(sol: Solution, units: OutputUnits | None = None) -> str | Non
     def length(x: float) -> str:
         return "∞" if math.isinf(x) else f"{g6(x * kl)}"
 
+    # what the arithmetic left of a zero rate prints 0, as in the links table (a crank at
+    # constant ω printed α2 = -1.47911e-31 rad/s² and γ = -0.00°), on every machine
+    floors = rate_floors(sol)
     for lid, k in curvature(sol).items():
-        lines.append(f"  Motion {lid}/1: ω{lid} = {g6(k.omega * ou.k_omega)} {ou.text('omega')}, "
-                     f"α{lid} = {g6(k.alpha * ou.k_alpha)} {ou.text('alpha')}; "
+        alpha = clean(k.alpha, floors.alpha)
+        gamma = 0.0 if alpha == 0.0 else math.degrees(k.gamma)
+        lines.append(f"  Motion {lid}/1: ω{lid} = {g6(clean(k.omega, floors.omega) * ou.k_omega)} "
+                     f"{ou.text('omega')}, α{lid} = {g6(alpha * ou.k_alpha)} {ou.text('alpha')}; "
                      f"J by {_HOW[k.method]}")
         lines.append(f"    velocity pole I = {at(k.velocity_pole)}, inflection pole "
                      f"J = {at(k.inflection_pole)}, "
@@ -179,7 +185,7 @@ def curvature_text(sol: Solution, units: OutputUnits | None = None) -> str | Non
                          f"{ou.text('acceleration')}")
         b = "∞ (α = 0)" if k.bresse_diameter is None else f"{g6(k.bresse_diameter * kl)} {u}"
         lines.append(f"    Γ = {at(k.acceleration_center)}, Bresse diameter b = {b}, "
-                     f"γ = {math.degrees(k.gamma):.2f}°")
+                     f"γ = {gamma:.2f}°")
         if k.cubic is not None:
             m = "∞" if math.isinf(k.cubic.M) else f"{length(k.cubic.M)} {u}"
             n = "∞" if math.isinf(k.cubic.N) else f"{length(k.cubic.N)} {u}"
