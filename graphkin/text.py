@@ -182,7 +182,7 @@ def polar(v: Any, unit: str, tiny: float = 0.0) -> str:
     mag = float(np.hypot(float(v[0]), float(v[1])))
     if mag <= tiny:
         return f"0 {unit}"
-    return f"{g6(mag)} {unit} ∠{wrap_degrees(math.atan2(float(v[1]), float(v[0]))):.2f}°"
+    return f"{g6(mag)} {unit} {fmt_angle(math.atan2(float(v[1]), float(v[0])))}"
 
 
 def xy(p: Any, unit: str, scale: float | None = None) -> str:

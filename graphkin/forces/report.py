@@ -29,7 +29,7 @@ def _deg(v: np.ndarray) -> float:
         d -= 360.0
     if d <= -179.995:  # prints as 180.00, never -180.00 (round-off of a half turn)
         d = 180.0
-    return 0.0 if d == 0 else d
+    return 0.0 if abs(d) < 0.005 else d  # prints 0.00, never -0.00 (a sign at round-off)
 
 
 def _units(fs: ForceSolution) -> dict[str, str]:

@@ -17,7 +17,7 @@ from graphkin.kinematics.solution import Solution
 from graphkin.output.centers import is_batch
 from graphkin.output.solution import rate_floors
 from graphkin.output.units import OutputUnits
-from graphkin.text import clean, direction_degrees, g6, xy
+from graphkin.text import clean, direction_degrees, fmt_angle, g6, xy
 
 __all__ = ["curvature_json", "paths_json", "curvature_text"]
 
@@ -34,6 +34,11 @@ def _pair(p: Array | None, k: float = 1.0) -> list[float] | None:
     if p is None or not np.all(np.isfinite(p)):
         return None
     return [float(p[0]) * k + 0.0, float(p[1]) * k + 0.0]
+
+
+def _angle(degrees: float) -> str:
+    """``∠90.00°``; a direction at round-off of the x axis prints ``∠0.00°``, never ``∠-0.00°``."""
+    return fmt_angle(math.radians(degrees))
 
 
 def _units(sol: Solution, units: OutputUnits | None) -> OutputUnits:
@@ -177,8 +182,8 @@ def curvature_text(sol: Solution, units: OutputUnits | None = None) -> str | Non
                      f"J = {at(k.inflection_pole)}, "
                      f"R_JI = {g6(k.inflection_diameter * kl)} {u}")
         if k.tangent is not None:
-            lines.append(f"    centrode tangent T ∠{direction_degrees(k.tangent):.2f}°, normal N "
-                         f"∠{direction_degrees(k.normal):.2f}°; pole velocity "
+            lines.append(f"    centrode tangent T {_angle(direction_degrees(k.tangent))}, normal N "
+                         f"{_angle(direction_degrees(k.normal))}; pole velocity "
                          f"v = {g6(float(np.hypot(*k.pole_velocity)) * ou.k_velocity)} "
                          f"{ou.text('velocity')}, A_I = "
                          f"{g6(float(np.hypot(*k.pole_acceleration)) * ou.k_acceleration)} "
