@@ -64,14 +64,16 @@ def _carrier(mech: Mechanism, r: Rolling) -> str | None:
     return both[0] if len(both) == 1 else None
 
 
-def train_of(mech: Mechanism, given: Mapping[str, float]) -> Train | None:
+def train_of(mech: Mechanism, given: Mapping[str, float], unit: str = "rad/s") -> Train | None:
     """The gear train of a mechanism's rolling circles, or None when it is not one.
 
     Parameters
     ----------
     mech : Mechanism
     given : mapping
-        Link -> its angular velocity (the drives' ω, rad/s).
+        Link -> its angular velocity (the drives' ω, in ``unit``).
+    unit : str
+        The unit of ``given`` and of the train's answers (``rad/s``, ``rev/min``).
 
     Returns
     -------
@@ -105,7 +107,7 @@ def train_of(mech: Mechanism, given: Mapping[str, float]) -> Train | None:
     speeds = {str(k): float(v) for k, v in given.items()}
     if _FRAME_LINK in by_link:
         speeds.setdefault(_FRAME_LINK, 0.0)
-    train = Train(size, meshes, joined, speeds, "rad/s", mech.title, mech.source,
+    train = Train(size, meshes, joined, speeds, unit, mech.title, mech.source,
                   by_teeth=False)
     members = set(train.members)
     if any(m not in members for m in speeds):

@@ -127,7 +127,14 @@ def train_text(train: Train) -> str:
     return "\n".join(lines) + "\n"
 
 
-def mechanism_train_json(sol: Any) -> dict[str, Any] | None:
+def _omega_unit(units: Any) -> tuple[float, str]:
+    """The factor from rad/s to the report's angular-velocity unit, and its name."""
+    if units is None:
+        return 1.0, "rad/s"
+    return float(units.k_omega), str(units.text("omega"))
+
+
+def mechanism_train_json(sol: Any, units: Any = None) -> dict[str, Any] | None:
     """The train of a solved mechanism's rolling gears, checked against its rolling kinematics.
 
     The drives' angular velocities are the train's given motions (a fixed gear
@@ -136,54 +143,59 @@ def mechanism_train_json(sol: Any) -> dict[str, Any] | None:
     each link's ω from the rolling constructions (``kinematics``), with their
     difference.  None when the mechanism is not a gear train
     (:func:`graphkin.gears.mechanism_train.train_of`) or has no rates.
+    Angular velocities in the report's unit (``units``, an
+    :class:`~graphkin.output.units.OutputUnits`; rad/s without one).
     """
     from graphkin.gears.mechanism_train import train_of
 
     mech = sol.mechanism
     if not mech.has_rates:
         return None
-    given = {d.link: float(sol.links[d.link].omega) for d in mech.drives}
-    train = train_of(mech, given)
+    k, unit = _omega_unit(units)
+    given = {d.link: float(sol.links[d.link].omega) * k for d in mech.drives}
+    train = train_of(mech, given, unit)
     if train is None:
         return None
     try:
         data = train_json(train)
     except InputError:   # a train the mesh equations do not fix (more inputs than gears)
         return None
-    scale = max(1.0, *(abs(float(s.omega)) for s in sol.links.values()
-                       if s.omega is not None))
+    scale = k * max(1.0, *(abs(float(s.omega)) for s in sol.links.values()
+                           if s.omega is not None))
     check = {}
     for m, d in data["members"].items():
         lid = m.rstrip("'")
         if lid not in sol.links or sol.links[lid].omega is None:
             continue
-        w = float(sol.links[lid].omega)
+        w = float(sol.links[lid].omega) * k
         check[m] = {"rolling": clean(w, 1e-12 * scale), "train": d["omega"],
                     "difference": clean(d["omega"] - w, 1e-12 * scale)}
     data["check"] = check
     return data
 
 
-def mechanism_train_text(sol: Any) -> str | None:
+def mechanism_train_text(sol: Any, units: Any = None) -> str | None:
     """:func:`mechanism_train_json` as text: the train report and the check."""
     from graphkin.gears.mechanism_train import train_of
 
-    data = mechanism_train_json(sol)
+    data = mechanism_train_json(sol, units)
     if data is None:
         return None
     mech = sol.mechanism
-    train = train_of(mech, {d.link: float(sol.links[d.link].omega) for d in mech.drives})
+    k, unit = _omega_unit(units)
+    train = train_of(mech, {d.link: float(sol.links[d.link].omega) * k for d in mech.drives},
+                     unit)
     assert train is not None
     lines = [train_text(train).rstrip("\n"), "",
              "Check against the rolling-contact kinematics (Sec. 3.7; solved by the "
              f"{'graphic constructions' if sol.method == 'construction' else 'analytic solver'}):"]
     rows = [("member", "ω (rolling)", "ω (train)", "difference")]
     for m, c in data["check"].items():
-        rows.append((m, f"{g6(c['rolling'])} rad/s", f"{g6(c['train'])} rad/s",
-                     f"{g6(c['difference'])} rad/s"))
+        rows.append((m, f"{g6(c['rolling'])} {unit}", f"{g6(c['train'])} {unit}",
+                     f"{g6(c['difference'])} {unit}"))
     lines += table(rows, "  ")
     worst = max((abs(c["difference"]) for c in data["check"].values()), default=0.0)
-    lines.append("  they agree" if worst == 0.0 else f"  largest difference {g6(worst)} rad/s")
+    lines.append("  they agree" if worst == 0.0 else f"  largest difference {g6(worst)} {unit}")
     return "\n".join(lines) + "\n"
 
 
@@ -191,14 +203,14 @@ def gear_train_json(sol: Any, units: Any = None) -> dict[str, Any] | None:
     """The ``gear_train`` section of ``graphkin solve --json`` (:mod:`graphkin.output.sections`).
 
     :func:`mechanism_train_json` for a mechanism whose rolling contacts form
-    a gear train (Secs. 7.15-7.16), else None; angular velocities in rad/s
-    whatever the report's units (the train's own unit).  A mechanism with no
+    a gear train (Secs. 7.15-7.16), else None; angular velocities in the
+    report's unit (``--units``; rad/s by default).  A mechanism with no
     rolling contact is passed over at once.
     """
     if not sol.mechanism.rolling:
         return None
     try:
-        return mechanism_train_json(sol)
+        return mechanism_train_json(sol, units)
     except InputError:   # not a train the book's methods read: `graphkin gears` says why
         return None
 
@@ -207,4 +219,4 @@ def gear_train_text(sol: Any, units: Any = None) -> str | None:
     """The gear-train part of ``graphkin solve``'s text: the book's table and formula method."""
     if gear_train_json(sol, units) is None:
         return None
-    return mechanism_train_text(sol)
+    return mechanism_train_text(sol, units)

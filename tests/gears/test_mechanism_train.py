@@ -248,3 +248,19 @@ def test_solve_prints_the_train_of_a_planetary_mechanism(capsys):
     assert data["members"]["3"]["omega"] == pytest.approx(-10.0, rel=1e-12)
     assert main(["solve", str(ROOT / "examples" / "fourbar.toml"), "--json"]) == 0
     assert "gear_train" not in json.loads(capsys.readouterr().out)
+
+
+def test_solve_gives_the_train_in_the_reports_units(capsys):
+    """`solve --units "mm, rev/min"` gives the train's ω in rev/min too, not rad/s (the
+    links table already did): ω2 = 10/3 rad/s = (10/3)(60/2π) = 31.831 rev/min and the
+    planet ω3 = −10 rad/s = −95.493 rev/min (hand derivation above)."""
+    rpm = 60.0 / (2.0 * math.pi)
+    assert main(["solve", str(RING), "--json", "--units", "mm, rev/min"]) == 0
+    data = json.loads(capsys.readouterr().out)["gear_train"]
+    assert data["unit"] == "rev/min"
+    assert data["members"]["2"]["omega"] == pytest.approx(10 / 3 * rpm, rel=1e-12)
+    assert data["members"]["3"]["omega"] == pytest.approx(-10.0 * rpm, rel=1e-12)
+    assert all(c["difference"] == 0.0 for c in data["check"].values())
+    assert main(["solve", str(RING), "--units", "mm, rev/min"]) == 0
+    out = capsys.readouterr().out.split("Gear train (Secs. 7.15-7.16)")[1]
+    assert "rad/s" not in out and "-95.493 rev/min" in out and "they agree" in out
