@@ -15,7 +15,7 @@ edited file back to Python).
 
 from __future__ import annotations
 
-from graphkin.render.live_centers import CENTERS_JS
+from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
 
@@ -745,3 +745,4 @@ return {
 APP_JS = APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
 # the force construction's glue (render/live_forces.py) beside the centers' and curvature's
 LIVE_LIB += FORCES_JS + CENTERS_JS
+PAGE_CSS += CENTERS_CSS

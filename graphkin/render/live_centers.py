@@ -55,7 +55,7 @@ from graphkin.errors import GraphkinError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import DEFAULT_TOL
 
-__all__ = ["CENTERS_JS", "centers_data", "live_centers_construction"]
+__all__ = ["CENTERS_CSS", "CENTERS_JS", "centers_data", "live_centers_construction"]
 
 #: the steps that make a center from lines of centers (the lines drawn on the posture)
 _CENTER_OPS = ("meet", "at_infinity_on")
@@ -199,9 +199,13 @@ def live_centers_construction(mech: Mechanism, ic: Any, points: list[str], made:
 def _from_velocities(cx: Construction, given: dict[str, dict[str, Any]], mech: Mechanism,
                      lab: str, pair: tuple[str, str], points: list[str], made: set[str]) -> None:
     """``Iij`` where links i and j have the same velocity, from the posture's velocities."""
+    try:
+        rates = [_rates_of(mech, lid, points, made) for lid in pair]
+    except _Drop as exc:
+        raise _Drop(f"{lab} is found from the velocities, and {exc}") from None
     ins: list[str] = []
-    for lid in pair:
-        p, v, w = _rates_of(mech, lid, points, made)
+    # the points are given from the posture on every move (their recorded xy is not read)
+    for lid, (p, v, w) in zip(pair, rates):
         given[f"{lab}:{lid}:P"] = {"at": p}
         given[f"{lab}:{lid}:v"] = {"at": v}
         cx.add("point", (), (f"{lab}:{lid}:P",), xy=(0.0, 0.0), diagram="centers")
@@ -338,3 +342,9 @@ function gkCentersWhy(C, c) {
 }
 """
 """The page's glue of the centers: their inputs from the posture, the function, the note."""
+
+CENTERS_CSS = """
+#gk-centers-note { max-width: 400px; margin: .3em .5em; font-size: .85em; color: #c62828; }
+#gk-centers-note:empty { display: none; }
+"""
+"""The style of the one line under the Kennedy circle (as wide as the panel)."""

@@ -539,9 +539,9 @@ def _equal_velocity_point(gen: Gen, step: Step) -> None:
     dw = gen.let(gen.sub(wi, wj), "w")
     s = gen.num(step.params.get("scale", 1.0))
     sw = gen.mul(s, dw)
-    n = gen.let(f"_sqrt({gen.add(gen.add(gen.mul(dx, dx), gen.mul(dy, dy)), gen.mul(sw, sw))})",
-                "n")
-    _positive(gen, n)  # no relative motion: no center
+    # the largest row scales the point (no square to underflow); zero: no relative motion
+    n = gen.let(f"_maximum(_maximum(_abs({dx}), _abs({dy})), _abs({sw}))", "n")
+    _positive(gen, n)
     gen.put_rows(step.outputs[0], "point", _div(gen, gen.neg(dy), n), _div(gen, dx, n),
                  _div(gen, dw, n))
 
