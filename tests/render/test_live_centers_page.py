@@ -35,6 +35,7 @@ from graphkin.kinematics.instant_centers import instant_centers
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_data, live_html
 from graphkin.render.live_app import LIVE_LIB
+from graphkin.tolerance import DEFAULT_TOL
 
 REL = 1e-9
 
@@ -197,15 +198,18 @@ def test_the_equal_velocity_template_is_the_operation(h, w, same) -> None:
     if float(np.dot(g, r)) < 0:
         g = -g
     np.testing.assert_allclose(g, r, rtol=0, atol=1e-12)
-    # the definition: both links have the same velocity there (finite), or ω's equal
+    # the definition: both links have the same velocity there (finite); or at infinity,
+    # normal to the relative velocity u_i - u_j, the ω's equal but for the angle tolerance
+    pi, vi, pj, vj = (np.asarray(vals[k], dtype=float) for k in ("Pi", "vi", "Pj", "vj"))
+    k = np.array([[0.0, -1.0], [1.0, 0.0]])
     if ref[2] != 0.0:
         x = ref[:2] / ref[2]
-        pi, vi, pj, vj = (np.asarray(vals[k], dtype=float) for k in ("Pi", "vi", "Pj", "vj"))
-        k = np.array([[0.0, -1.0], [1.0, 0.0]])
         np.testing.assert_allclose(vi + wi * k @ (x - pi), vj + wj * k @ (x - pj),
                                    atol=1e-9 * (1 + np.abs(x).max()))
     else:
-        assert wi == wj
+        du = (vi - wi * k @ pi) - (vj - wj * k @ pj)
+        assert abs(float(np.dot(ref[:2], du))) <= 1e-12 * float(np.linalg.norm(du))
+        assert abs(wi - wj) * 3.0 <= DEFAULT_TOL.angle * float(np.linalg.norm(du))
 
 
 @examples(10)
