@@ -162,6 +162,10 @@ def test_centers_the_page_cannot_show_are_said_in_one_line(browser, tmp_path) ->
         "[].filter.call(document.querySelectorAll('#gk-kennedy .gk-kennedy-pair'), (e) =>"
         " e.getAttribute('stroke-dasharray') !== 'none').map((e) => e.dataset.name)"))
     assert dashed == missing
+    # a posture where the recorded route has no clean answer (the function's null) is said too
+    why = browser.js("gkCentersWhy(JSON.parse(document.getElementById('gk-data').textContent)"
+                     ".centers, null)")
+    assert why.startswith("No instant centers at this posture") and "\n" not in why
     # the others are drawn: the pins, by inspection (I12 at O2 ...)
     got = browser.js("window.graphkinLive.state().centers")
     for lab in ("I12", "I24", "I45"):
