@@ -24,11 +24,9 @@ import math
 import re
 from typing import Any
 
-import numpy as np
-
 from graphkin.construction.codegen import Unsupported
 from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
-from graphkin.errors import GraphkinError, InputError
+from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.render.live_app import APP_JS, LIVE_LIB, PAGE_CSS
 from graphkin.render.style import STYLES
@@ -153,10 +151,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
                   if k in STYLES},
     }
     js = RUNTIME + fn.source
-    centers = _centers(mech)
-    if centers is not None:
-        data["centers"], cjs = centers
-        js += cjs
+    from graphkin.render.live_centers import centers_data
+
+    data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
+    js += cjs
     if rates:
         from graphkin.render.live_curvature import curvature_data
 
@@ -171,65 +169,6 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         data["forces"], fjs = fd
         js += fjs
     return data, js
-
-
-def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
-    """The instant centers' construction (Secs. 3.13-3.15) as a second function, of the posture.
-
-    The Aronhold-Kennedy steps graphkin records for the file's posture
-    (:func:`~graphkin.kinematics.instant_centers.instant_centers`: joins of
-    two known centers, meets of two lines of centers) are written out in
-    homogeneous coordinates, their primary centers taken from the posture:
-    a pin is its position ``[x, y, 1]`` (I23 at B ...), a slider's center
-    is the point at infinity normal to its line, ``[-sin θ, cos θ, 0]`` with
-    ``θ`` the angle of the link it slides on plus the line's own angle
-    (Eq. 3.21).  A center where two lines of centers are parallel is returned
-    at infinity (``w = 0`` but for round-off), as a direction.  A mechanism
-    whose centers need more than that (a rolling contact, a cam, a center
-    found from velocities) gets no centers on the page (None).
-    """
-    from itertools import combinations
-
-    from graphkin.kinematics.instant_centers import center_label, instant_centers
-    from graphkin.kinematics.instant_centers.primary import FAR_AS_INFINITY
-
-    try:
-        sol = mech.solve()
-        ic = instant_centers(sol)
-    except GraphkinError:  # the centers cannot be found here: the page has the rest
-        return None
-    prim: dict[str, dict[str, Any]] = {}
-    for p in mech.pins:
-        for i, j in combinations(p.links, 2):
-            prim.setdefault(center_label(i, j), {"pin": p.name})
-    for sl in mech.sliders:
-        prim.setdefault(center_label(sl.link, sl.on), {"slider": sl.on,
-                                                       "angle": float(sl.direction_angle)})
-    given: dict[str, dict[str, Any]] = {}
-    for st in ic.construction.steps:
-        lab = st.outputs[0] if st.outputs else ""
-        if st.op in ("point", "ideal_point") and lab in prim:
-            given[lab] = prim[lab]
-        elif st.op not in ("join", "meet", "at_infinity_on", "same_point", "copy_point"):
-            return None
-    labels = [s.outputs[0] for s in ic.construction.steps
-              if s.op not in ("join",) and s.outputs]
-    lines = [s.outputs[0] for s in ic.construction.steps if s.op == "join"]
-    try:
-        fn = generate_js(ic.construction.steps, requests=labels + lines, tol=DEFAULT_TOL,
-                         name="centers", given=given)
-    except Unsupported:
-        return None
-    frame = list(mech.links[FRAME].points.values()) or [(0.0, 0.0)]
-    origin = [sum(float(q[0]) for q in frame) / len(frame),
-              sum(float(q[1]) for q in frame) / len(frame)]
-    joins = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "join"]
-    meets = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "meet"]
-    return ({"given": given, "labels": labels, "lines": lines, "K": fn.values,
-             "joins": joins, "meets": meets, "links": list(ic.links),
-             "pairs": {c.label: list(c.pair) for c in ic.centers.values()},
-             "frameAngle": float(np.asarray(sol.links[FRAME].angle, dtype=float)),
-             "far": FAR_AS_INFINITY * mech.scale, "origin": origin}, fn.source)
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")
@@ -317,7 +256,8 @@ draw my velocity polygon</button>
 <main><figure><figcaption>Posture</figcaption><svg id="gk-posture"></svg></figure>
 <figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
 <figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
-<figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
+<figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg>
+<p id="gk-centers-note"></p></figure>
 <figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
 <figure><figcaption>Force polygons</figcaption><svg id="gk-forces"></svg>
 <p id="gk-forces-note"></p></figure>

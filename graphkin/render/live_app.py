@@ -15,38 +15,13 @@ edited file back to Python).
 
 from __future__ import annotations
 
+from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
 
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
 
 LIVE_LIB = r"""
-// The inputs of the written-out centers (Sec. 3.13): each primary center from the posture
-// r, homogeneous: a pin is [x, y, 1]; a slider's center is at infinity normal to its line,
-// [-sin θ, cos θ, 0], θ the angle of the link it slides on plus the line's own (Eq. 3.21).
-function gkCenterInputs(C, r) {
-  const J = {};
-  for (const lab of Object.keys(C.given)) {
-    const g = C.given[lab];
-    if (g.pin !== undefined) {
-      const p = r[g.pin];
-      if (!p) return null;
-      J[lab] = [p[0], p[1], 1];
-    } else {
-      let t = r["\u03b8" + g.slider];
-      if (t === undefined) t = g.slider === "1" ? C.frameAngle : NaN;
-      t += g.angle;
-      J[lab] = [-Math.sin(t), Math.cos(t), 0];
-    }
-  }
-  return J;
-}
-// every center and line of centers of the posture r (null where two lines coincide)
-function gkCenters(C, r) {
-  if (!C || !r) return null;
-  const J = gkCenterInputs(C, r);
-  return J === null ? null : centers(J, C.K);
-}
 // the given points of the curvature construction (Secs. 4.13-4.17) from the posture r: a
 // point's position, or its velocity (acceleration) drawn from it to the scale 1/|ω| (1/ω²)
 function gkCurvatureInputs(V, r) {
@@ -587,6 +562,7 @@ function redraw(refit) {
   drawPosture(r, !ok);
   if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
   if (D.centers) drawKennedyCircle();
+  byId("gk-centers-note").textContent = gkCentersWhy(D.centers, ics);
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
@@ -768,4 +744,5 @@ return {
 # the pen mode's part of the script (render/live_pen.py), inside gkLiveApp
 APP_JS = APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
 # the force construction's glue (render/live_forces.py) beside the centers' and curvature's
-LIVE_LIB += FORCES_JS
+LIVE_LIB += FORCES_JS + CENTERS_JS
+PAGE_CSS += CENTERS_CSS

@@ -100,3 +100,32 @@ def _rolling_normal(c: Array, center: Array, omega_i: Array, omega_j: Array, *,
     r = g.xy(center) - g.xy(c)
     w = (np.asarray(omega_i) - np.asarray(omega_j))[..., None]
     return (factor * w**2 * r,)
+
+
+@op("equal_velocity_point")
+def _equal_velocity_point(p_i: Array, img_i: Array, omega_i: Array, p_j: Array, img_j: Array,
+                          omega_j: Array, *, tol: Tolerance, scale: float = 1.0) -> tuple[Array]:
+    """The instant center ``Iij`` from the velocities: where links i and j move alike.
+
+    Each link is given by one of its points ``P``, that point's image in the
+    velocity polygon and the link's ω (the frame: any point, the pole ``o_v``
+    and ω = 0).  The velocity of link k's point at ``X`` is
+    ``V_k(X) = V_Pk + ω_k k × (X - P_k)`` (Eq. 3.4); with ``u_k = V_Pk - ω_k k ×
+    P_k`` both are equal where ``(ω_i - ω_j) k × X = u_j - u_i``, so ``Iij`` is
+    the homogeneous point ``(k × (u_i - u_j), ω_i - ω_j)``: at infinity,
+    perpendicular to the relative velocity, when ``ω_i = ω_j`` (Sec. 3.12;
+    Sec. 5.4 for the speed-dependent centers of two inputs).  The pole cancels
+    from ``u_i - u_j``.  ``scale`` (the mechanism's size) makes the decision
+    "at infinity" an angle, as for the meet of two lines; no relative motion
+    at all gives NaN.
+    """
+    wi = np.asarray(omega_i, dtype=float)
+    wj = np.asarray(omega_j, dtype=float)
+    pi, pj = g.xy(p_i), g.xy(p_j)
+    du = (g.xy(img_i) - g.xy(img_j)
+          - wi[..., None] * np.stack([-pi[..., 1], pi[..., 0]], axis=-1)
+          + wj[..., None] * np.stack([-pj[..., 1], pj[..., 0]], axis=-1))
+    h = np.concatenate([np.stack([-du[..., 1], du[..., 0]], axis=-1) / scale,
+                        (wi - wj)[..., None]], axis=-1)
+    p = g.normalize_point(h, tol)
+    return (np.where(g.is_ideal(p)[..., None], p, p * np.array([scale, scale, 1.0])),)

@@ -520,6 +520,32 @@ def _tangent_foot(gen: Gen, step: Step) -> None:
     gen.put_point(step.outputs[0], gen.add(ax, x), gen.add(ay, y))
 
 
+@template("equal_velocity_point", python=False)
+def _equal_velocity_point(gen: Gen, step: Step) -> None:
+    # Iij from the velocities (Sec. 3.12): with u_k = V_Pk - ω_k k × P_k (the image's pole
+    # cancels), the homogeneous point (k × (u_i - u_j), ω_i - ω_j); points are read as rows
+    # (x, y, w), so the centers' homogeneous writer takes them too
+    xs = []
+    for p in (step.inputs[0], step.inputs[1], step.inputs[3], step.inputs[4]):
+        x, y, w = gen.rows(p)
+        if w != "1.0":
+            gen.bail_unless(f"_abs({w}) > 0.0")
+        xs.append((_div(gen, x, w), _div(gen, y, w)))
+    (pix, piy), (vix, viy), (pjx, pjy), (vjx, vjy) = xs
+    wi, wj = gen.scalar(step.inputs[2]), gen.scalar(step.inputs[5])
+    # du = (v_i - v_j) - ω_i k × P_i + ω_j k × P_j, with k × (x, y) = (-y, x)
+    dx = gen.let(gen.add(gen.sub(gen.sub(vix, vjx), gen.mul(wj, pjy)), gen.mul(wi, piy)), "dx")
+    dy = gen.let(gen.add(gen.sub(gen.sub(viy, vjy), gen.mul(wi, pix)), gen.mul(wj, pjx)), "dy")
+    dw = gen.let(gen.sub(wi, wj), "w")
+    s = gen.num(step.params.get("scale", 1.0))
+    sw = gen.mul(s, dw)
+    # the largest row scales the point (no square to underflow); zero: no relative motion
+    n = gen.let(f"_maximum(_maximum(_abs({dx}), _abs({dy})), _abs({sw}))", "n")
+    _positive(gen, n)
+    gen.put_rows(step.outputs[0], "point", _div(gen, gen.neg(dy), n), _div(gen, dx, n),
+                 _div(gen, dw, n))
+
+
 # ---- the curvature constructions' circles (Secs. 4.13-4.17), JavaScript only -------------
 
 @template("circumcircle", python=False)
