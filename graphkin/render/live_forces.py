@@ -30,6 +30,7 @@ it).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any, cast
 
@@ -57,17 +58,117 @@ class _In:
 _LINES = ("join", "force_line", "force_line_of")
 
 
+class _Why(Exception):
+    """The page cannot redo this mechanism's forces: the one line saying why."""
+
+
 def _why(mech: Mechanism) -> str | None:
     """Why the page cannot redo this mechanism's forces (one line), or None."""
-    if mech.friction:
-        return ("friction: the senses of its forces come from the frictionless solution "
-                "(Sec. 11.10), which the page does not redo; graphkin draw -d forces draws them")
     if mech.pressure or mech.rolling:
         return ("gear teeth or a rolling contact: their force's line is found from the "
                 "frictionless solution, which the page does not redo")
     if any(isinstance(s, Slot) and not s.is_line for s in mech.slots):
         return "a pin in a circular slot: its force's line is not redrawn live yet"
+    for key, (_mu, impending) in mech.friction.items():
+        if impending is None:
+            return (f"friction at {key} with its impending motion found from the velocities: "
+                    "that verdict is not redone live yet (give impending = \"ahead\" or "
+                    "\"behind\"); graphkin draw -d forces draws it")
     return None
+
+
+def _givens(steps: list[Any], points: list[str], made: set[str],
+            sliders: dict[str, Any]) -> tuple[dict[str, dict[str, Any]], list[_In]]:
+    """What a force construction reads from the page, each as a given of its function.
+
+    Raises
+    ------
+    _Why
+        It reads something the page does not redraw.
+    """
+    made_f = {o for st in steps for o in st.outputs}
+    read = list(dict.fromkeys(i for st in steps for i in st.inputs if i not in made_f))
+    given: dict[str, dict[str, Any]] = {}
+    ins: list[_In] = []
+    for lab in read:
+        spec: dict[str, Any] | None = None
+        head, _, key = lab.partition("_")
+        if lab in points:
+            spec = {"point": lab}
+        elif head in ("n", "u", _PLAIN) and key in sliders:
+            src = sliders[key]
+            p0, p1 = src.p0, src.p1
+            if p0 is not None and p1 is not None and f"θ{src.on}" in made:
+                d = np.subtract(p1, p0).astype(float)
+                spec = {"dir": [float(d[0]), float(d[1])], "link": src.on,
+                        "as": "along" if head == "u" else "normal"}
+        elif lab.startswith("A_") and f"a({lab[2:]})" in made and "o_a" in made:
+            spec = {"accel": lab[2:]}
+        elif lab.startswith("α") and lab in made:
+            ins.append(_In("input", (lab,)))
+            given[lab] = {"alpha": lab}
+            continue
+        elif head in (_SENSE, _SCALE0):  # found by the frictionless pass (forces0)
+            ins.append(_In("input", (lab,)))
+            given[lab] = {"prior": lab}
+            continue
+        if spec is None and (lab.startswith("A_") or lab.startswith("α")):
+            raise _Why("the inertia forces need the accelerations, which this page does not "
+                       "re-solve (rates given for another link than the drive)")
+        if spec is None:
+            raise _Why(f"the force construction reads {lab}, which the page does not redraw")
+        given[lab] = spec
+        ins.append(_In("point", (lab,)))
+    return given, ins
+
+
+# the labels of the friction steps (Sec. 11.10): not a name of the mechanism file's kind
+_PLAIN, _SENSE, _TURNED, _SCALE0, _SCALE = "n°", "σ", "τ", "‖F‖0", "‖F‖"
+
+
+def _friction(mech: Mechanism, fs: Any, rough: list[Any]) -> tuple[list[_In], list[_In],
+                                                                     list[_In], Any]:
+    """The friction steps around the force construction, as Sec. 11.10 does it by hand.
+
+    Returns the steps after the frictionless construction (its forces' scale
+    and the sense σ of each rough joint's normal force on the block), those
+    before the construction with friction (each rough joint's line leant by
+    φ = atan μ from the normal against the impending motion: its ``n_``), those
+    after it (τ: 1 where the force found pulls the block instead, the sense to
+    be turned), and the frictionless construction itself.
+    """
+    from graphkin.forces.graphic import NotDecomposable, build_forces
+    from graphkin.forces.joints import geometry
+
+    sol = fs.solution
+    try:  # the frictionless construction: the plain normals (Sec. 11.10, "first without")
+        built0 = build_forces(sol, fs.joints, geometry(sol, fs.joints), fs.dynamic, DEFAULT_TOL)
+    except (NotDecomposable, GraphkinError) as exc:
+        raise _Why(f"friction: no graphic construction without friction here ({exc})") from None
+    couples = {o for st in built0.construction.steps if st.op == "force_couple"
+               for o in st.outputs}
+    applied0 = [lab for labs in built0.applied.values() for lab in labs]
+    joints0 = [built0.forces[j.key] for j in fs.joints]
+    pre = [_In("force_scale", (_SCALE0,), (*applied0, *joints0),
+               {"kinds": tuple("couple" if lab in couples else "force" for lab in applied0)
+                + ("force",) * len(joints0), "size": float(mech.size or 1.0)})]
+    head: list[_In] = []
+    built = fs.built
+    tail = [_In("force_scale", (_SCALE,), (_SCALE0, *(built.forces[j.key] for j in fs.joints)),
+                {"kinds": ("scale",) + ("force",) * len(fs.joints), "size": 1.0})]
+    for j in rough:
+        src, key = j.source, j.key
+        mu, impending = mech.friction[src.key]
+        block = "hi" if src.link == j.hi else "lo"
+        sense = f"{_SENSE}_{key}"
+        pre.append(_In("force_normal_sense", (sense,),
+                       (built0.forces[key], f"n_{key}", _SCALE0), {"block": block}))
+        head.append(_In("force_friction_normal", (f"n_{key}",),
+                        (f"{_PLAIN}_{key}", f"u_{key}", sense),
+                        {"mu": float(mu), "impending": 1.0 if impending == "ahead" else -1.0}))
+        tail.append(_In("force_turned", (f"{_TURNED}_{key}",),
+                        (built.forces[key], f"n_{key}", _SCALE, sense), {"block": block}))
+    return pre, head, tail, built0
 
 
 def forces_data(mech: Mechanism, points: list[str],
@@ -88,8 +189,18 @@ def forces_data(mech: Mechanism, points: list[str],
         None when the file has no loads and no mass properties.  Otherwise
         ``({"why": line}, "")`` when the page cannot redo the construction,
         else the panel's data (``given``, ``labels``, ``K``, ``polygons``,
-        ``joints``, ``drives``) and the source of ``forces(I, K)``.
+        ``joints``, ``drives``; with friction ``given0``, ``K0`` and
+        ``rough``) and the source of ``forces(I, K)`` (and ``forces0(I, K)``,
+        the frictionless pass).
     """
+    try:
+        return _forces_data(mech, points, made)
+    except _Why as why:
+        return {"why": str(why)}, ""
+
+
+def _forces_data(mech: Mechanism, points: list[str],
+                 made: set[str]) -> tuple[dict[str, Any], str] | None:
     import graphkin.forces.templates  # noqa: F401  (registers the force templates)
     from graphkin.forces import solve_forces
     from graphkin.render.forces_sheet import DRIVE, INERTIA, JOINT, LOAD
@@ -98,47 +209,44 @@ def forces_data(mech: Mechanism, points: list[str],
         return None
     why = _why(mech)
     if why is not None:
-        return {"why": why}, ""
+        raise _Why(why)
     try:
         fs = solve_forces(mech.solve())
     except GraphkinError as exc:
-        return {"why": f"no force analysis at the file's posture ({exc})"}, ""
+        raise _Why(f"no force analysis at the file's posture ({exc})") from None
     built = fs.built
     if built is None:
-        return {"why": "the graphic method finds no link-by-link order here (the matrix "
-                       "method solves it): graphkin draw -d forces draws it"}, ""
+        raise _Why("the graphic method finds no link-by-link order here (the matrix "
+                   "method solves it): graphkin draw -d forces draws it")
     steps = list(built.construction.steps)
-    made_f = {o for s in steps for o in s.outputs}
-    read = list(dict.fromkeys(i for s in steps for i in s.inputs if i not in made_f))
-    given: dict[str, dict[str, Any]] = {}
-    ins: list[_In] = []
-    sliders = {j.key: j.source for j in fs.joints if isinstance(j.source, (Slider, Slot))}
-    for lab in read:
-        spec: dict[str, Any] | None = None
-        if lab in points:
-            spec = {"point": lab}
-        elif lab[:2] in ("n_", "u_") and lab[2:] in sliders:
-            src = sliders[lab[2:]]
-            p0, p1 = src.p0, src.p1
-            if p0 is not None and p1 is not None and f"θ{src.on}" in made:
-                d = np.subtract(p1, p0).astype(float)
-                spec = {"dir": [float(d[0]), float(d[1])], "link": src.on,
-                        "as": "normal" if lab.startswith("n_") else "along"}
-        elif lab.startswith("A_") and f"a({lab[2:]})" in made and "o_a" in made:
-            spec = {"accel": lab[2:]}
-        elif lab.startswith("α") and lab in made:
-            ins.append(_In("input", (lab,)))
-            given[lab] = {"alpha": lab}
-            continue
-        if spec is None and (lab.startswith("A_") or lab.startswith("α")):
-            return {"why": "the inertia forces need the accelerations, which this page does "
-                           "not re-solve (rates given for another link than the drive)"}, ""
-        if spec is None:
-            return {"why": f"the force construction reads {lab}, which the page does not "
-                           "redraw"}, ""
-        given[lab] = spec
-        ins.append(_In("point", (lab,)))
-    labels = [o for s in steps if s.op not in _LINES for o in s.outputs]
+    sliders: dict[str, Any] = {j.key: j.source for j in fs.joints
+                               if isinstance(j.source, (Slider, Slot))}
+    rough = [j for j in fs.joints if j.key in sliders and sliders[j.key].key in mech.friction]
+    extra: dict[str, Any] = {}
+    source0 = ""
+    head: list[_In] = []
+    tail: list[_In] = []
+    if rough:
+        pre, head, tail, built0 = _friction(mech, fs, rough)
+        steps0 = [*built0.construction.steps, *pre]
+        given0, ins0 = _givens(steps0, points, made, sliders)
+        try:
+            fn0 = generate_js(cast(Any, [*ins0, *steps0]),
+                              requests=[_SCALE0, *(f"{_SENSE}_{j.key}" for j in rough)],
+                              tol=DEFAULT_TOL, name="forces0",
+                              given=[i.outputs[0] for i in ins0 if i.op == "point"],
+                              homogeneous=False)
+        except Unsupported as exc:
+            raise _Why(f"the frictionless construction cannot be written for the page "
+                       f"({exc})") from None
+        source0 = fn0.source
+        extra = {"given0": given0, "K0": fn0.values,
+                 "rough": [{"key": j.key, "link": sliders[j.key].link,
+                            "phi": math.degrees(math.atan(mech.friction[sliders[j.key].key][0]))}
+                           for j in rough]}
+    made_f = {o for st in [*head, *steps] for o in cast(Any, st).outputs}
+    given, ins = _givens([*head, *steps, *tail], points, made, sliders)
+    labels = [o for st in steps if st.op not in _LINES for o in st.outputs]
     # a slider drive's input force after superposition is its size along the line only
     # (F_C·u = F_C′·u + F_C″·u, Sec. 12.5): the polygon draws it along the given u
     along: dict[str, str] = {}
@@ -149,11 +257,13 @@ def forces_data(mech: Mechanism, points: list[str],
             along[lid] = f"u_{key}"
             labels.append(f"u_{key}")
     try:
-        fn = generate_js(cast(Any, [*ins, *steps]), requests=labels, tol=DEFAULT_TOL,
-                         name="forces", given=[i.outputs[0] for i in ins if i.op == "point"],
+        fn = generate_js(cast(Any, [*ins, *head, *steps, *tail]),
+                         requests=[*labels, *(f"{_TURNED}_{j.key}" for j in rough)],
+                         tol=DEFAULT_TOL, name="forces",
+                         given=[i.outputs[0] for i in ins if i.op == "point"],
                          homogeneous=False)
     except Unsupported as exc:
-        return {"why": f"the force construction cannot be written for the page ({exc})"}, ""
+        raise _Why(f"the force construction cannot be written for the page ({exc})") from None
     kinds = {o: s.kind for s in steps for o in s.outputs}
     # each moving link's force polygon: the forces ON it, head to tail (they close, Σ F = 0)
     colour = {"load": LOAD, "couple": LOAD, "weight": LOAD, "inertia": INERTIA}
@@ -202,11 +312,11 @@ def forces_data(mech: Mechanism, points: list[str],
         d = next(x for x in mech.drives if x.link == lid)
         drives[lid] = {"label": lab, "kind": "torque" if lab.startswith("T_") else "force",
                        "text": _text(lab), "at": d.pivot if d.pivot in points else None}
-    return ({"given": given, "labels": labels, "K": fn.values,
+    return ({**extra, "given": given, "labels": labels, "K": fn.values,
              "kinds": {lab: kinds.get(lab, "force") for lab in labels},
              "polygons": polygons, "couples": couples, "acting": acting, "drives": drives,
              "drive_color": DRIVE, "joints": {j.key: built.forces[j.key] for j in fs.joints},
-             "frame": FRAME, "notes": list(fs.notes)}, fn.source)
+             "frame": FRAME, "notes": list(fs.notes)}, source0 + fn.source)
 
 
 def _text(label: str) -> str:
@@ -228,11 +338,12 @@ def _sliding(src: Any, made: set[str], frame_angle: float) -> dict[str, Any] | N
 
 FORCES_JS = r"""
 // the givens of the force construction (Secs. 11.5-12.5) from the posture r: points, a
-// slider's line direction (or its normal) turned by its link's angle, A_G = a(G) - o_a, α
-function gkForceInputs(F, r) {
-  const J = {};
-  for (const lab of Object.keys(F.given)) {
-    const g = F.given[lab];
+// slider's line direction (or its normal) turned by its link's angle, A_G = a(G) - o_a, α;
+// with friction, what the frictionless pass found (prior: the senses σ, the forces' scale)
+function gkForceInputs(F, r, given, prior) {
+  const J = {}, G = given || F.given;
+  for (const lab of Object.keys(G)) {
+    const g = G[lab];
     if (g.point !== undefined) { if (!r[g.point]) return null; J[lab] = r[g.point]; }
     else if (g.dir !== undefined) {
       const t = r["\u03b8" + g.link];
@@ -247,14 +358,38 @@ function gkForceInputs(F, r) {
       if (!a || !o) return null;
       J[lab] = [a[0] - o[0], a[1] - o[1]];
     } else if (g.alpha !== undefined) J[lab] = r[g.alpha];
+    else if (g.prior !== undefined) J[lab] = prior ? prior[g.prior] : undefined;
   }
   return J;
 }
-// the force construction of the posture r (null where equilibrium cannot be held cleanly)
+// the force construction of the posture r (null where equilibrium cannot be held cleanly).
+// With friction (Sec. 11.10), as the book does it: first without friction (forces0) for the
+// sense σ of each rough joint's normal force, then with each force leant by φ from the
+// normal against the impending motion; where the force found pulls the block instead (τ),
+// that sense is turned and the analysis redone, once; turned twice, the posture is
+// self-locking: {selfLocking: joint} (graphkin.forces.solve's verdict)
 function gkForces(F, r) {
   if (F.why) return null;
-  const J = gkForceInputs(F, r);
-  return J === null ? null : forces(J, F.K);
+  if (!F.rough) {
+    const J = gkForceInputs(F, r);
+    return J === null ? null : forces(J, F.K);
+  }
+  const J0 = gkForceInputs(F, r, F.given0);
+  const r0 = J0 === null ? null : forces0(J0, F.K0);
+  if (r0 === null) return null;
+  const prior = Object.assign({}, r0), tried = {};
+  for (;;) {
+    const J = gkForceInputs(F, r, F.given, prior);
+    const out = J === null ? null : forces(J, F.K);
+    if (out === null) return null;
+    const turned = F.rough.filter((j) => out["\u03c4_" + j.key] > 0);
+    if (!turned.length) return out;
+    for (const j of turned) {
+      if (tried[j.key]) return {selfLocking: j};
+      tried[j.key] = true;
+      prior["\u03c3_" + j.key] = -prior["\u03c3_" + j.key];
+    }
+  }
 }
 """
 """The page's glue of the force construction (in the page's library, beside the centers')."""
@@ -283,6 +418,14 @@ function drawForcePolygons(r, stale) {
   fsvg.textContent = "";
   frc = F.why ? null : gkForces(F, r);
   if (F.why) { fnote.textContent = "No live force polygons: " + F.why + "."; return; }
+  if (frc && frc.selfLocking) {  // Sec. 11.10: no drive moves it (graphkin solve says so)
+    const j = frc.selfLocking;
+    frc = null;
+    fnote.textContent = "Self-locking at this posture: the force on link " + j.link +
+      " lies within the friction angle \u03c6 = " + j.phi.toFixed(2) + "\u00b0 of its " +
+      "guide's normal, so no drive moves it (Sec. 11.10).";
+    return;
+  }
   if (frc === null) {
     fnote.textContent = "Equilibrium cannot be held cleanly at this posture (a dead center " +
       "of the force construction): no force polygon.";
