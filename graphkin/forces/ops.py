@@ -304,15 +304,19 @@ def _add(*ts: Array, tol: Tolerance) -> tuple[Array]:
 def _scale(*xs: Array, tol: Tolerance, kinds: tuple[str, ...], size: float) -> tuple[Array]:
     """The size of the forces (:func:`graphkin.forces.solve.force_scale`).
 
-    The largest ``|F|`` of the inputs of kind ``"force"``, ``|M| / size`` of those
-    of kind ``"couple"`` (a couple over the mechanism's size) and ``|x|`` of those
-    of kind ``"scale"`` (a size found before).
+    The largest ``|F|`` of the inputs of kind ``"force"`` (or ``|V|`` of a
+    velocity), ``|M| / size`` of those of kind ``"couple"`` (a couple over the
+    mechanism's size), ``|ω| size`` of those of kind ``"rate"`` (as
+    :meth:`graphkin.kinematics.Solution.velocity_scale` counts an angular
+    velocity) and ``|x|`` of those of kind ``"scale"`` (a size found before).
     """
     big: Array = np.asarray(0.0)
     for x, kind in zip(xs, kinds):
         a = np.asarray(x, dtype=float)
         if kind == "couple":
             v = np.abs(a[..., 2]) / size
+        elif kind == "rate":
+            v = np.abs(a) * size
         elif kind == "scale":
             v = np.abs(a)
         else:
@@ -341,20 +345,43 @@ def _normal_sense(w: Array, n: Array, scale: Array, *, tol: Tolerance,
     return (np.where(zero, 0.0, np.sign(c)),)
 
 
+@op("force_impending", kind="scalar")
+def _impending(vp: Array, vq: Array, q: Array, p: Array, omega: Array, u: Array,
+               vscale: Array, *, tol: Tolerance) -> tuple[Array]:
+    """The sense of the block's motion along its guide: its impending motion (Sec. 11.10).
+
+    The velocity of the block's point P less that of the guide's point at P,
+    ``V_Q + ω × (P - Q)`` (Q a point of the guide, ω its angular velocity: zero
+    for the frame), along the guide's direction u: ``+1`` ahead, ``-1``
+    behind, ``0`` at rest within round-off of ``vscale`` (the velocities'
+    size), where no verdict may be taken and the file must say which way.
+    """
+    vp = np.asarray(vp, dtype=float)[..., :2]
+    vq = np.asarray(vq, dtype=float)[..., :2]
+    d = np.asarray(p, dtype=float)[..., :2] - np.asarray(q, dtype=float)[..., :2]
+    w = np.asarray(omega, dtype=float)
+    rel = vp - vq - w[..., None] * np.stack([-d[..., 1], d[..., 0]], axis=-1)
+    speed = g.dot2(rel, np.asarray(u, dtype=float)[..., :2])
+    zero = np.abs(speed) <= VERDICT_REL * np.abs(np.asarray(vscale, dtype=float))
+    return (np.where(zero, 0.0, np.sign(speed)),)
+
+
 @op("force_friction_normal", kind="vector")
-def _friction_normal(n: Array, u: Array, sense: Array, *, tol: Tolerance, mu: float,
-                     impending: float) -> tuple[Array]:
+def _friction_normal(n: Array, u: Array, sense: Array, *moving: Array, tol: Tolerance,
+                     mu: float, impending: float | None = None) -> tuple[Array]:
     """The line of a rough joint's force on the block: the normal leant by φ = atan μ.
 
     ``sense · n - μ s u`` made a unit vector, s = ±1 the impending motion of the
-    block along the guide's direction u: the friction force opposes it
+    block along the guide's direction u (the file's ``impending``, or a fourth
+    input: :func:`_impending` of the velocities): the friction force opposes it
     (Sec. 11.10, Fig. 11.11).  With no normal force (``sense`` 0) the normal n
     itself: no friction.
     """
     n = np.asarray(n, dtype=float)[..., :2]
     u = np.asarray(u, dtype=float)[..., :2]
     s = np.asarray(sense, dtype=float)[..., None]
-    d = s * n - mu * impending * u
+    imp = np.asarray(moving[0] if impending is None else impending, dtype=float)[..., None]
+    d = s * n - mu * imp * u
     d = d / np.hypot(d[..., 0], d[..., 1])[..., None]
     return (np.where(s != 0.0, d, n),)
 

@@ -317,15 +317,15 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
                 raise InputError("say which way the slider's motion is impending: impending = "
                                  "\"ahead\" or \"behind\" (a static file has no velocity)",
                                  key=f"{src.key}.impending", file=mech.source)
-            p = src.point
-            v = np.asarray(sol.velocity(p, src.link)) - _velocity_in(sol, src.on,
-                                                                       sol.position(p, src.link))
-            speed = float(v @ u)
-            if is_zero(speed, vscale):
+            pw = np.asarray(sol.position(src.point, src.link), dtype=float)
+            # the block's velocity less the guide's at its point, along u (ops.py: the verdict)
+            s = float(OPS["force_impending"](sol.velocity(src.point, src.link),
+                                             _velocity_in(sol, src.on, pw), pw, pw, 0.0, u,
+                                             vscale, tol=DEFAULT_TOL)[0])
+            if s == 0.0:
                 raise InputError("the slider is at rest relative to its guide at this posture: "
                                  "say impending = \"ahead\" or \"behind\"",
                                  key=f"{src.key}.impending", file=mech.source)
-            s = 1.0 if speed > 0 else -1.0
         else:
             s = 1.0 if impending == "ahead" else -1.0
         if c == 0.0:

@@ -294,6 +294,8 @@ def _scale(gen: Gen, step: Step) -> None:
             parts.append(f"_abs({gen.scalar(lab)})")
         elif kind == "couple":
             parts.append(f"_abs({_force(gen, lab)[2]}) / {size}")
+        elif kind == "rate":
+            parts.append(f"_abs({gen.scalar(lab)}) * {size}")
         else:
             fx, fy, _ = _force(gen, lab)
             parts.append(f"_sqrt({gen.add(gen.mul(fx, fx), gen.mul(fy, fy))})")
@@ -321,7 +323,9 @@ def _friction_normal(gen: Gen, step: Step) -> None:
     nx, ny, *_ = gen.rows(step.inputs[0])
     ux, uy, *_ = gen.rows(step.inputs[1])
     s = gen.scalar(step.inputs[2])
-    k = gen.num(float(step.params["mu"]) * float(step.params["impending"]))
+    mu = gen.num(float(step.params["mu"]))
+    imp = step.params.get("impending")
+    k = gen.mul(mu, gen.scalar(step.inputs[3]) if imp is None else gen.num(float(imp)))
     dx = gen.sub(gen.mul(s, nx), gen.mul(k, ux))
     dy = gen.sub(gen.mul(s, ny), gen.mul(k, uy))
     n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
@@ -336,3 +340,18 @@ def _turned(gen: Gen, step: Step) -> None:
     s = gen.scalar(step.inputs[3])
     gen.put_scalar(step.outputs[0], gen.where(f"{c} < 0.0", gen.where(
         f"_abs({s}) > 0.0", "1.0", "0.0"), "0.0"))
+
+
+@template("force_impending", python=False)
+def _impending(gen: Gen, step: Step) -> None:
+    vpx, vpy, *_ = gen.rows(step.inputs[0])
+    vqx, vqy, *_ = gen.rows(step.inputs[1])
+    qx, qy, *_ = gen.rows(step.inputs[2])
+    px, py, *_ = gen.rows(step.inputs[3])
+    w = gen.scalar(step.inputs[4])
+    ux, uy, *_ = gen.rows(step.inputs[5])
+    dx, dy = gen.sub(px, qx), gen.sub(py, qy)
+    rx = gen.sub(gen.sub(vpx, vqx), gen.neg(gen.mul(w, dy)))
+    ry = gen.sub(gen.sub(vpy, vqy), gen.mul(w, dx))
+    speed = gen.add(gen.mul(rx, ux), gen.mul(ry, uy))
+    gen.put_scalar(step.outputs[0], _sense_expr(gen, speed, gen.scalar(step.inputs[6])))

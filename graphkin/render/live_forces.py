@@ -69,11 +69,6 @@ def _why(mech: Mechanism) -> str | None:
                 "frictionless solution, which the page does not redo")
     if any(isinstance(s, Slot) and not s.is_line for s in mech.slots):
         return "a pin in a circular slot: its force's line is not redrawn live yet"
-    for key, (_mu, impending) in mech.friction.items():
-        if impending is None:
-            return (f"friction at {key} with its impending motion found from the velocities: "
-                    "that verdict is not redone live yet (give impending = \"ahead\" or "
-                    "\"behind\"); graphkin draw -d forces draws it")
     return None
 
 
@@ -108,9 +103,17 @@ def _givens(steps: list[Any], points: list[str], made: set[str],
             ins.append(_In("input", (lab,)))
             given[lab] = {"alpha": lab}
             continue
-        elif head in (_SENSE, _SCALE0):  # found by the frictionless pass (forces0)
+        elif head in (_SENSE, _MOVING, _SCALE0):  # found by the frictionless pass (forces0)
             ins.append(_In("input", (lab,)))
             given[lab] = {"prior": lab}
+            continue
+        elif head == "V" and key in points and f"v({key})" in made and "o_v" in made:
+            spec = {"vel": key}  # a point's velocity V_P = v(P) - o_v
+        elif head == f"V{_AT}":  # the frame's velocity at the block's point: none
+            spec = {"const": [0.0, 0.0]}
+        elif head == f"ω{_AT}" or (lab.startswith("ω") and lab in made):
+            ins.append(_In("input", (lab,)))
+            given[lab] = {"const": 0.0} if head == f"ω{_AT}" else {"scalar": lab}
             continue
         if spec is None and (lab.startswith("A_") or lab.startswith("α")):
             raise _Why("the inertia forces need the accelerations, which this page does not "
@@ -124,10 +127,11 @@ def _givens(steps: list[Any], points: list[str], made: set[str],
 
 # the labels of the friction steps (Sec. 11.10): not a name of the mechanism file's kind
 _PLAIN, _SENSE, _TURNED, _SCALE0, _SCALE = "n°", "σ", "τ", "‖F‖0", "‖F‖"
+_MOVING, _AT, _VSCALE = "ι", "°", "‖V‖"
 
 
-def _friction(mech: Mechanism, fs: Any, rough: list[Any]) -> tuple[list[_In], list[_In],
-                                                                     list[_In], Any]:
+def _friction(mech: Mechanism, fs: Any, rough: list[Any], points: list[str],
+              made: set[str]) -> tuple[list[_In], list[_In], list[_In], Any]:
     """The friction steps around the force construction, as Sec. 11.10 does it by hand.
 
     Returns the steps after the frictionless construction (its forces' scale
@@ -163,12 +167,57 @@ def _friction(mech: Mechanism, fs: Any, rough: list[Any]) -> tuple[list[_In], li
         sense = f"{_SENSE}_{key}"
         pre.append(_In("force_normal_sense", (sense,),
                        (built0.forces[key], f"n_{key}", _SCALE0), {"block": block}))
-        head.append(_In("force_friction_normal", (f"n_{key}",),
-                        (f"{_PLAIN}_{key}", f"u_{key}", sense),
-                        {"mu": float(mu), "impending": 1.0 if impending == "ahead" else -1.0}))
+        if impending is None:  # the block's motion along its guide, from the velocities
+            pre += _impending(mech, src, key, points, made, pre)
+            head.append(_In("force_friction_normal", (f"n_{key}",),
+                            (f"{_PLAIN}_{key}", f"u_{key}", sense, f"{_MOVING}_{key}"),
+                            {"mu": float(mu), "impending": None}))
+        else:
+            head.append(_In("force_friction_normal", (f"n_{key}",),
+                            (f"{_PLAIN}_{key}", f"u_{key}", sense),
+                            {"mu": float(mu),
+                             "impending": 1.0 if impending == "ahead" else -1.0}))
         tail.append(_In("force_turned", (f"{_TURNED}_{key}",),
                         (built.forces[key], f"n_{key}", _SCALE, sense), {"block": block}))
     return pre, head, tail, built0
+
+
+def _impending(mech: Mechanism, src: Any, key: str, points: list[str], made: set[str],
+               pre: list[_In]) -> list[_In]:
+    """The steps finding a block's impending motion from the velocities (ι, Sec. 11.10).
+
+    As :func:`graphkin.forces.solve_forces` does: the block's point's velocity
+    less the guide's at that point (``V_Q + ω × (P - Q)``, Q a point of the
+    guide; none for the frame), along the guide, its sign taken against the
+    velocities' size (every point's |V| and every link's |ω| times the
+    mechanism's size, as :meth:`~graphkin.kinematics.Solution.velocity_scale`).
+    """
+    p = src.point
+    if p not in points or f"v({p})" not in made:
+        raise _Why(f"friction at {src.key}: the page has no velocity of {p} to find its "
+                   "impending motion from (give impending = \"ahead\" or \"behind\")")
+    out: list[_In] = []
+    if not any(st.outputs == (_VSCALE,) for st in pre):
+        vel = [f"V_{n}" for n in points if f"v({n})" in made]
+        rates = [f"ω{lid}" for lid in mech.links if f"ω{lid}" in made]
+        out.append(_In("force_scale", (_VSCALE,), (*vel, *rates),
+                       {"kinds": ("force",) * len(vel) + ("rate",) * len(rates),
+                        "size": float(mech.size)}))
+    if src.on == FRAME:
+        guide = (f"V{_AT}_{key}", p, f"ω{_AT}_{key}")
+    else:
+        pins = mech.links[FRAME].points  # a pivot of the guide has no velocity
+        q = next((n for n in mech.links[src.on].points if n in points and f"v({n})" in made),
+                 None) or next((n for n in mech.links[src.on].points
+                               if n in points and n in pins), None)
+        if q is None or f"ω{src.on}" not in made:
+            raise _Why(f"friction at {src.key}: the page has no velocity of link {src.on} "
+                       "to find the impending motion from (give impending = \"ahead\" or "
+                       "\"behind\")")
+        guide = (f"V_{q}" if f"v({q})" in made else f"V{_AT}_{key}", q, f"ω{src.on}")
+    out.append(_In("force_impending", (f"{_MOVING}_{key}",),
+                   (f"V_{p}", guide[0], guide[1], p, guide[2], f"u_{key}", _VSCALE)))
+    return out
 
 
 def forces_data(mech: Mechanism, points: list[str],
@@ -227,12 +276,15 @@ def _forces_data(mech: Mechanism, points: list[str],
     head: list[_In] = []
     tail: list[_In] = []
     if rough:
-        pre, head, tail, built0 = _friction(mech, fs, rough)
+        pre, head, tail, built0 = _friction(mech, fs, rough, points, made)
         steps0 = [*built0.construction.steps, *pre]
         given0, ins0 = _givens(steps0, points, made, sliders)
+        moving = [f"{_MOVING}_{j.key}" for j in rough if mech.friction[sliders[j.key].key][1]
+                  is None]
         try:
             fn0 = generate_js(cast(Any, [*ins0, *steps0]),
-                              requests=[_SCALE0, *(f"{_SENSE}_{j.key}" for j in rough)],
+                              requests=[_SCALE0, *(f"{_SENSE}_{j.key}" for j in rough),
+                                        *moving],
                               tol=DEFAULT_TOL, name="forces0",
                               given=[i.outputs[0] for i in ins0 if i.op == "point"],
                               homogeneous=False)
@@ -359,6 +411,12 @@ function gkForceInputs(F, r, given, prior) {
       J[lab] = [a[0] - o[0], a[1] - o[1]];
     } else if (g.alpha !== undefined) J[lab] = r[g.alpha];
     else if (g.prior !== undefined) J[lab] = prior ? prior[g.prior] : undefined;
+    else if (g.vel !== undefined) {  // a point's velocity, V_P = v(P) - o_v
+      const v = r["v(" + g.vel + ")"], o = r.o_v;
+      if (!v || !o) return null;
+      J[lab] = [v[0] - o[0], v[1] - o[1]];
+    } else if (g.scalar !== undefined) J[lab] = r[g.scalar];
+    else if (g.const !== undefined) J[lab] = g.const;
   }
   return J;
 }
@@ -377,6 +435,8 @@ function gkForces(F, r) {
   const J0 = gkForceInputs(F, r, F.given0);
   const r0 = J0 === null ? null : forces0(J0, F.K0);
   if (r0 === null) return null;
+  // a block at rest on its guide has no impending motion to oppose: graphkin asks for it
+  for (const j of F.rough) if (r0["\u03b9_" + j.key] === 0) return {atRest: j};
   const prior = Object.assign({}, r0), tried = {};
   for (;;) {
     const J = gkForceInputs(F, r, F.given, prior);
@@ -418,6 +478,14 @@ function drawForcePolygons(r, stale) {
   fsvg.textContent = "";
   frc = F.why ? null : gkForces(F, r);
   if (F.why) { fnote.textContent = "No live force polygons: " + F.why + "."; return; }
+  if (frc && frc.atRest) {  // graphkin solve: "say impending = ahead or behind"
+    const j = frc.atRest;
+    frc = null;
+    fnote.textContent = "The block at " + j.key + " is at rest relative to its guide at this " +
+      "posture: its impending motion is not known (give impending = \"ahead\" or " +
+      "\"behind\" in the file).";
+    return;
+  }
   if (frc && frc.selfLocking) {  // Sec. 11.10: no drive moves it (graphkin solve says so)
     const j = frc.selfLocking;
     frc = null;
