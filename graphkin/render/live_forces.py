@@ -252,7 +252,7 @@ def _forces_data(mech: Mechanism, points: list[str],
                  made: set[str]) -> tuple[dict[str, Any], str] | None:
     import graphkin.forces.templates  # noqa: F401  (registers the force templates)
     from graphkin.forces import solve_forces
-    from graphkin.render.forces_sheet import DRIVE, INERTIA, JOINT, LOAD
+    from graphkin.render.forces_sheet import DRIVE, GREY_INK, INERTIA, JOINT, LOAD
 
     if not mech.loads and not mech.inertia:
         return None
@@ -322,6 +322,10 @@ def _forces_data(mech: Mechanism, points: list[str],
     from graphkin.forces.graphic import applied_labels
 
     applied = applied_labels(mech, fs.dynamic)
+    rough_keys = {j.key for j in rough}
+    # a link solved as a three-force member: its concurrency point (Fig. 11.5e), one analysis
+    concurrency = {lid: f"X_{lid}" for lid in mech.moving
+                   if len(fs.partials) == 1 and f"X_{lid}" in made_f}
     polygons: dict[str, list[dict[str, Any]]] = {}
     couples: dict[str, list[dict[str, Any]]] = {}
     acting: list[dict[str, Any]] = []  # the applied forces where they act (the free bodies)
@@ -347,6 +351,13 @@ def _forces_data(mech: Mechanism, points: list[str],
                 slide = _sliding(j.source, made, frame_angle)
                 if j.kind == "slide" and slide is not None:
                     entry["slide"] = slide  # acts where its line crosses the sliding line
+                if j.key in rough_keys and slide is not None:
+                    # drawn with its normal and friction components (Sec. 11.9, Fig. 11.11b)
+                    by, at = j.other(lid), j.key.partition("@")[2]
+                    where = f" at {at}" if at else ""
+                    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+                    entry.update(rough=slide, parts=[f"Fⁿ{by}{lid}".translate(sub) + where,
+                                                     f"Fᵗ{by}{lid}".translate(sub) + where])
                 poly.append(entry)
         if lid in built.drive_forces:
             lab = built.drive_forces[lid]
@@ -368,6 +379,7 @@ def _forces_data(mech: Mechanism, points: list[str],
              "kinds": {lab: kinds.get(lab, "force") for lab in labels},
              "polygons": polygons, "couples": couples, "acting": acting, "drives": drives,
              "drive_color": DRIVE, "joints": {j.key: built.forces[j.key] for j in fs.joints},
+             "concurrency": concurrency, "grey": GREY_INK, "inertia_color": INERTIA,
              "frame": FRAME, "notes": list(fs.notes)}, source0 + fn.source)
 
 
@@ -597,6 +609,7 @@ function drawActing(r, stale) {
 const bsvg = byId("gk-bodies");
 if (!D.forces || D.forces.why) bsvg.parentNode.style.display = "none";
 const CW = 280, CH = 240, AL = 40, PAD = 14;  // a body's cell, an arrow's length (px)
+const INERTIA_INK = D.forces && D.forces.inertia_color;
 function gkSlideDir(g, r) {  // a slider's line direction, turned by its link's angle
   let t = r["\u03b8" + g.link];
   if (!Number.isFinite(t)) t = g.angle0;
@@ -709,9 +722,38 @@ function drawBodies(r, stale) {
       el(g, "text", {x: sx(p) + 5, y: sy(p) + 13, "font-size": "10",
                      "font-style": "italic"}, n);
     }
+    const X = F.concurrency[b.lid] ? frc[F.concurrency[b.lid]] : null;
+    if (X && Math.abs(X[2]) > 1e-12) {  // the concurrency point of a three-force member
+      const p = [X[0] / X[2], X[1] / X[2]], x = sx(p), y = sy(p);
+      if (x > ox && x < ox + CW && y > oy && y < oy + CH) {
+        el(g, "circle", {cx: x, cy: y, r: 2.5, fill: "#000", class: "gk-body-concurrency"});
+        el(g, "text", {x: x + 5, y: y - 5, "font-size": "11", "font-style": "italic"}, "X");
+      }
+    }
     for (const [f, v, q] of b.forces) {
       const n = Math.hypot(v[0], v[1]), ux = v[0] / n, uy = v[1] / n;
       const hx = sx(q), hy = sy(q), tx = hx - AL * ux, ty = hy + AL * uy;
+      if (f.rough) {  // a rough joint: its normal and friction components (Fig. 11.11b)
+        const u = gkSlideDir(f.rough, r), t = v[0] * u[0] + v[1] * u[1];
+        const comps = [[v[0] - t * u[0], v[1] - t * u[1]], [t * u[0], t * u[1]]];
+        comps.forEach((c, i) => {
+          if (!(Math.hypot(c[0], c[1]) > 1e-9 * n)) return;
+          const x0 = hx - AL * c[0] / n, y0 = hy + AL * c[1] / n;
+          el(g, "line", {x1: x0, y1: y0, x2: hx, y2: hy, stroke: F.grey, "stroke-width": "0.9",
+                         "marker-end": "url(#" + arrowMark(d, marks, F.grey) + ")",
+                         class: "gk-body-component", "data-name": f.name + (i ? "t" : "n")});
+          el(g, "text", {x: (x0 + hx) / 2 + 4, y: (y0 + hy) / 2 - 4, "font-size": "10",
+                         fill: F.grey}, f.parts[i]);
+        });
+      }
+      if (f.color === INERTIA_INK && Math.hypot(q[0] - r[f.at][0], q[1] - r[f.at][1]) > 0) {
+        // the offset h of the inertia force from G (Eq. 12.18, Fig. 12.8c)
+        const G = r[f.at];
+        el(g, "line", {x1: sx(G), y1: sy(G), x2: hx, y2: hy, stroke: f.color,
+                       "stroke-width": "0.8", class: "gk-body-h"});
+        el(g, "text", {x: (sx(G) + hx) / 2 + 3, y: (sy(G) + hy) / 2 - 3, "font-size": "10",
+                       fill: f.color, "font-style": "italic"}, "h");
+      }
       el(g, "line", {x1: hx - 2 * CW * ux, y1: hy + 2 * CW * uy, x2: hx + 2 * CW * ux,
                      y2: hy - 2 * CW * uy, stroke: "#7a7a7a", "stroke-width": "0.5",
                      "stroke-dasharray": "4 3", class: "gk-body-line"});

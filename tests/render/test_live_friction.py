@@ -243,9 +243,19 @@ def test_ex11_4_page_follows_a_drag_and_says_self_locking(browser, tmp_path: Pat
             continue
         assert note == ""
         same_forces(state["forces"], data["forces"], fs)
-        # the rough force drawn on the block's free body where it crosses the sliding line
+        # the rough force drawn on the block's free body where it crosses the sliding line,
+        # with its normal and friction components (Fig. 11.11b): the ground's line S-T is
+        # horizontal, so F^n is vertical and F^t horizontal, and at impending motion
+        # |F^t| = μ |F^n| (Coulomb, Sec. 11.9), μ = 5
         assert browser.js("document.querySelectorAll('#gk-bodies .gk-body-force"
                           "[data-name=\"F_14\"]').length") == 1
+        comp = browser.js("(function () { var o = {}; document.querySelectorAll("
+                          "'#gk-bodies .gk-body-component').forEach(function (l) {"
+                          " o[l.getAttribute('data-name')] = ['x1', 'y1', 'x2', 'y2'].map("
+                          "function (k) { return +l.getAttribute(k); }); }); return o; })()")
+        (nx1, ny1, nx2, ny2), (tx1, ty1, tx2, ty2) = comp["F_14n"], comp["F_14t"]
+        assert abs(nx2 - nx1) < 1e-9 and abs(ty2 - ty1) < 1e-9
+        assert abs(abs(tx2 - tx1) / abs(ny2 - ny1) - 5.0) < 1e-9
     assert "NaN" not in browser.js("document.body.innerText")
     assert browser.errors() == []
 
