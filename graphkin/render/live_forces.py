@@ -21,11 +21,25 @@ member) is the file posture's, which a drag does not change away from the
 postures where a line passes through a pin (there the function returns
 ``null``: the page says equilibrium cannot be held).
 
-What the page cannot redo says so in one line (``why``): friction (its
-senses are found from the frictionless solution, Sec. 11.10), gear teeth
-(their pressure line is tilted the same way), a pin in a circular slot, and a
-mechanism the graphic method finds no order for (the matrix method solves
-it).
+Friction at a slider or a straight slot (Sec. 11.10) is done as the book
+does it by hand and :func:`~graphkin.forces.solve_forces` does it: a second
+function ``forces0``, the construction without friction, gives each rough
+joint's normal force's sense ``σ`` (and, without ``impending`` in the file,
+the block's impending motion ``ι`` from its velocity); the construction with
+friction then starts from each force's line leant by ``φ = atan μ``
+(``n_<joint>``, made from the plain normal ``n°_<joint>``) and ends with the
+check ``τ`` that the force presses the block; the page's glue turns a sense
+over once where it pulls and says self-locking where both fail.  Each act is
+an operation of :mod:`graphkin.forces.ops` with its template.
+
+The free bodies (Fig. 11.5b-d) are drawn from the same values: each force
+where it acts (the foot of its anchor point on its line of action, or a
+slider's crossing of its sliding line).
+
+What the page cannot redo says so in one line (``why``): gear teeth or a
+rolling contact (such a mechanism has no live page at all: Newton's method
+solves its posture), a pin in a circular slot, and a mechanism the graphic
+method finds no order for (the matrix method solves it).
 """
 
 from __future__ import annotations
@@ -65,8 +79,8 @@ class _Why(Exception):
 def _why(mech: Mechanism) -> str | None:
     """Why the page cannot redo this mechanism's forces (one line), or None."""
     if mech.pressure or mech.rolling:
-        return ("gear teeth or a rolling contact: their force's line is found from the "
-                "frictionless solution, which the page does not redo")
+        return ("gear teeth or a rolling contact: the page does not redo their posture "
+                "(Newton's method solves it), so neither their forces")
     if any(isinstance(s, Slot) and not s.is_line for s in mech.slots):
         return "a pin in a circular slot: its force's line is not redrawn live yet"
     return None
