@@ -260,31 +260,46 @@ def test_ex11_4_page_follows_a_drag_and_says_self_locking(browser, tmp_path: Pat
     assert browser.errors() == []
 
 
-def test_friction_templates_compute_the_friction_operations() -> None:
+@examples(20)
+@given(xy=st.lists(st.floats(-5.0, 5.0), min_size=12, max_size=12),
+       torque=st.floats(-9.0, 9.0), mu=st.floats(0.0, 2.0),
+       way=st.sampled_from([-1.0, 1.0]), omega=st.floats(-20.0, 20.0))
+def test_friction_templates_compute_the_friction_operations(xy: list[float], torque: float,
+                                                            mu: float, way: float,
+                                                            omega: float) -> None:
     # the written-out templates against the numpy operations of graphkin.forces.ops on one
-    # small construction: the scale, a sense, the leant line and the turnover check
+    # small construction: the forces' and the velocities' scales, a sense, the impending
+    # motion, the leant line and the turnover check
     import graphkin.forces.templates  # noqa: F401
     from graphkin.construction import Construction
     from graphkin.construction.jsgen import RUNTIME, generate_js
 
-    rng = np.random.default_rng(11)
-    for _ in range(20):
-        cx = Construction()
-        a, b, c = (rng.uniform(-5, 5, 2) for _ in range(3))
-        cx.add("point", (), ("A",), xy=tuple(a))
-        cx.add("force_load", ("A",), ("P",), force=tuple(b))
-        cx.add("force_couple", (), ("M",), torque=float(rng.uniform(-9, 9)))
-        n = c / np.hypot(*c)
-        cx.add("point", (), ("N",), xy=tuple(n))
-        cx.add("point", (), ("U",), xy=(-n[1], n[0]))
-        cx.add("force_scale", ("P", "M"), ("s",), kinds=("force", "couple"), size=3.0)
-        cx.add("force_normal_sense", ("P", "N", "s"), ("σ",), block="lo")
-        cx.add("force_friction_normal", ("N", "U", "σ"), ("d",), mu=0.4, impending=-1.0)
-        cx.add("force_turned", ("P", "d", "s", "σ"), ("τ",), block="hi")
-        ref = cx.replay().values
-        fn = generate_js(cx.steps, requests=["s", "σ", "d", "τ"])
-        got = run_js(RUNTIME + LIVE_LIB + fn.source
-                     + f"\nconst RESULT = construction({{}}, {fn.values});")
-        assert abs(got["s"] - float(ref["s"])) <= 1e-12 * float(ref["s"])
-        assert got["σ"] == float(ref["σ"]) and got["τ"] == float(ref["τ"])
-        assert np.allclose(got["d"], np.asarray(ref["d"])[:2], rtol=0, atol=1e-12)
+    a, b, c, vp, vq, q = (np.asarray(xy[2 * k:2 * k + 2]) for k in range(6))
+    if math.hypot(*c) < 1e-3:
+        return
+    n = c / np.hypot(*c)
+    cx = Construction()
+    for lab, v in (("A", a), ("N", n), ("U", (-n[1], n[0])), ("VP", vp), ("VQ", vq),
+                   ("Q", q)):
+        cx.add("point", (), (lab,), xy=tuple(float(x) for x in v))
+    cx.add("force_load", ("A",), ("P",), force=tuple(float(x) for x in b))
+    cx.add("force_couple", (), ("M",), torque=torque)
+    cx.add("scalar", (), ("w",), value=omega)
+    cx.add("force_scale", ("P", "M"), ("s",), kinds=("force", "couple"), size=3.0)
+    cx.add("force_scale", ("VP", "VQ", "w"), ("v",), kinds=("force", "force", "rate"),
+           size=2.0)
+    cx.add("force_normal_sense", ("P", "N", "s"), ("σ",), block="lo")
+    cx.add("force_impending", ("VP", "VQ", "Q", "A", "w", "U", "v"), ("ι",))
+    cx.add("force_friction_normal", ("N", "U", "σ"), ("d",), mu=mu, impending=way)
+    cx.add("force_friction_normal", ("N", "U", "σ", "ι"), ("e",), mu=mu, impending=None)
+    cx.add("force_turned", ("P", "d", "s", "σ"), ("τ",), block="hi")
+    ref = cx.replay().values
+    fn = generate_js(cx.steps, requests=["s", "v", "σ", "ι", "d", "e", "τ"])
+    got = run_js(RUNTIME + LIVE_LIB + fn.source
+                 + f"\nconst RESULT = construction({{}}, {fn.values});")
+    for lab in ("s", "v"):
+        assert abs(got[lab] - float(ref[lab])) <= 1e-12 * float(ref[lab])
+    for lab in ("σ", "ι", "τ"):  # verdicts: away from their round-off the same
+        assert got[lab] == float(ref[lab]), lab
+    for lab in ("d", "e"):
+        assert np.allclose(got[lab], np.asarray(ref[lab])[:2], rtol=0, atol=1e-12), lab
