@@ -118,7 +118,7 @@ def _givens(steps: list[Any], points: list[str], made: set[str],
             ins.append(_In("input", (lab,)))
             given[lab] = {"alpha": lab}
             continue
-        elif head in (_SENSE, _MOVING, _SCALE0):  # found by the frictionless pass (forces0)
+        elif head in (_SENSE, _MOVING) or lab == _SCALE0:  # found by the pass without friction
             ins.append(_In("input", (lab,)))
             given[lab] = {"prior": lab}
             continue
@@ -140,9 +140,10 @@ def _givens(steps: list[Any], points: list[str], made: set[str],
     return given, ins
 
 
-# the labels of the friction steps (Sec. 11.10): not a name of the mechanism file's kind
-_PLAIN, _SENSE, _TURNED, _SCALE0, _SCALE = "n°", "σ", "τ", "‖F‖0", "‖F‖"
-_MOVING, _AT, _VSCALE = "ι", "°", "‖V‖"
+# the labels of the friction steps (Sec. 11.10), with prefixes a point cannot be named
+# with (graphkin.mechanisms.names.LABEL_PREFIXES): no point is read for them
+_PLAIN, _SENSE, _TURNED, _SCALE0, _SCALE = "n°", "σ", "τ", "F_‖0", "F_‖"
+_MOVING, _AT, _VSCALE = "ι", "°", "V_‖"
 
 
 def _friction(mech: Mechanism, fs: Any, rough: list[Any], points: list[str],
