@@ -25,7 +25,7 @@ import numpy as np
 
 from graphkin.construction.ops import op
 from graphkin.geometry import ops as g
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import VERDICT_REL, Tolerance
 
 __all__ = ["wrench", "line_of", "moment_about", "KIND"]
 
@@ -289,3 +289,111 @@ def _add(*ts: Array, tol: Tolerance) -> tuple[Array]:
     for t in ts[1:]:
         out = out + np.asarray(t, dtype=float)
     return (out,)
+
+
+# ---- friction at a slider or a straight slot (Sec. 11.10) --------------------------------
+# The book solves first without friction to find the sense of each normal force, then leans
+# the force by the friction angle against the impending motion, then checks the sense it
+# was leant from.  These operations are the arithmetic of those three acts (solve.py runs
+# them on the matrix method's forces; the live page writes them out with the graphic
+# construction's, render/live_forces.py).  A sense is a verdict: 0 within
+# :data:`graphkin.tolerance.VERDICT_REL` of the forces' scale, where none may be taken.
+
+
+@op("force_scale", kind="scalar")
+def _scale(*xs: Array, tol: Tolerance, kinds: tuple[str, ...], size: float) -> tuple[Array]:
+    """The size of the forces (:func:`graphkin.forces.solve.force_scale`).
+
+    The largest ``|F|`` of the inputs of kind ``"force"`` (or ``|V|`` of a
+    velocity), ``|M| / size`` of those of kind ``"couple"`` (a couple over the
+    mechanism's size), ``|ω| size`` of those of kind ``"rate"`` (as
+    :meth:`graphkin.kinematics.Solution.velocity_scale` counts an angular
+    velocity) and ``|x|`` of those of kind ``"scale"`` (a size found before).
+    """
+    big: Array = np.asarray(0.0)
+    for x, kind in zip(xs, kinds):
+        a = np.asarray(x, dtype=float)
+        if kind == "couple":
+            v = np.abs(a[..., 2]) / size
+        elif kind == "rate":
+            v = np.abs(a) * size
+        elif kind == "scale":
+            v = np.abs(a)
+        else:
+            v = np.hypot(a[..., 0], a[..., 1])
+        big = np.maximum(big, v)
+    return (big,)
+
+
+def _on_block(w: Array, block: str) -> Array:
+    """The joint force F_lo,hi as the force ON the block (link ``hi``, or ``lo``: reversed)."""
+    f = np.asarray(w, dtype=float)[..., :2]
+    return f if block == "hi" else -f
+
+
+@op("force_normal_sense", kind="scalar")
+def _normal_sense(w: Array, n: Array, scale: Array, *, tol: Tolerance,
+                  block: str) -> tuple[Array]:
+    """The sense of a joint's force on the block along the guide's normal n (Sec. 11.10).
+
+    ``+1`` along n, ``-1`` against it, ``0`` within round-off of ``scale`` (no
+    normal force: no friction, and no verdict on its sense).  ``block`` says
+    which link of the joint F_lo,hi is the block: ``"hi"`` or ``"lo"``.
+    """
+    c = g.dot2(_on_block(w, block), np.asarray(n, dtype=float)[..., :2])
+    zero = np.abs(c) <= VERDICT_REL * np.abs(np.asarray(scale, dtype=float))
+    return (np.where(zero, 0.0, np.sign(c)),)
+
+
+@op("force_impending", kind="scalar")
+def _impending(vp: Array, vq: Array, q: Array, p: Array, omega: Array, u: Array,
+               vscale: Array, *, tol: Tolerance) -> tuple[Array]:
+    """The sense of the block's motion along its guide: its impending motion (Sec. 11.10).
+
+    The velocity of the block's point P less that of the guide's point at P,
+    ``V_Q + ω × (P - Q)`` (Q a point of the guide, ω its angular velocity: zero
+    for the frame), along the guide's direction u: ``+1`` ahead, ``-1``
+    behind, ``0`` at rest within round-off of ``vscale`` (the velocities'
+    size), where no verdict may be taken and the file must say which way.
+    """
+    vp = np.asarray(vp, dtype=float)[..., :2]
+    vq = np.asarray(vq, dtype=float)[..., :2]
+    d = np.asarray(p, dtype=float)[..., :2] - np.asarray(q, dtype=float)[..., :2]
+    w = np.asarray(omega, dtype=float)
+    rel = vp - vq - w[..., None] * np.stack([-d[..., 1], d[..., 0]], axis=-1)
+    speed = g.dot2(rel, np.asarray(u, dtype=float)[..., :2])
+    zero = np.abs(speed) <= VERDICT_REL * np.abs(np.asarray(vscale, dtype=float))
+    return (np.where(zero, 0.0, np.sign(speed)),)
+
+
+@op("force_friction_normal", kind="vector")
+def _friction_normal(n: Array, u: Array, sense: Array, *moving: Array, tol: Tolerance,
+                     mu: float, impending: float | None = None) -> tuple[Array]:
+    """The line of a rough joint's force on the block: the normal leant by φ = atan μ.
+
+    ``sense · n - μ s u`` made a unit vector, s = ±1 the impending motion of the
+    block along the guide's direction u (the file's ``impending``, or a fourth
+    input: :func:`_impending` of the velocities): the friction force opposes it
+    (Sec. 11.10, Fig. 11.11).  With no normal force (``sense`` 0) the normal n
+    itself: no friction.
+    """
+    n = np.asarray(n, dtype=float)[..., :2]
+    u = np.asarray(u, dtype=float)[..., :2]
+    s = np.asarray(sense, dtype=float)[..., None]
+    imp = np.asarray(moving[0] if impending is None else impending, dtype=float)[..., None]
+    d = s * n - mu * imp * u
+    d = d / np.hypot(d[..., 0], d[..., 1])[..., None]
+    return (np.where(s != 0.0, d, n),)
+
+
+@op("force_turned", kind="scalar")
+def _turned(w: Array, d: Array, scale: Array, sense: Array, *, tol: Tolerance,
+            block: str) -> tuple[Array]:
+    """1 where the force found pulls the block along its leant line d instead of pressing.
+
+    Friction turned the sense it was leant from over (near self-locking, Sec.
+    11.10): the other sense is to be tried.  0 where it presses, where it is
+    round-off of ``scale``, and for a joint without friction (``sense`` 0).
+    """
+    (c,) = _normal_sense(w, d, scale, tol=tol, block=block)
+    return (np.where((np.asarray(sense) != 0.0) & (c < 0.0), 1.0, 0.0),)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from graphkin.construction.ops import OPS
 from graphkin.errors import ConstructionError, InputError
 from graphkin.forces.analytic import applied_wrenches, solve_matrix
 from graphkin.forces.graphic import BuiltForces, NotDecomposable, Partial, build_forces
@@ -20,7 +21,7 @@ from graphkin.forces.joints import PIN, SLIDE, SLOT, Geometry, Joint, geometry, 
 from graphkin.forces.ops import line_of
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import Rolling, Slider, Slot
-from graphkin.tolerance import Tolerance, is_zero, sign
+from graphkin.tolerance import DEFAULT_TOL, Tolerance, is_zero, sign
 
 if TYPE_CHECKING:
     from graphkin.construction import Construction
@@ -307,30 +308,32 @@ def _tilt_for_friction(sol: Solution, joints: list[Joint], geo: Geometry, dynami
                              "circular slot cannot have friction = ...",
                              key=f"{src.key}.friction", file=mech.source)
         n, u = geo.normal[j.key], geo.along[j.key]
-        on_block = plain[j.key][:2] if src.link == j.hi else -plain[j.key][:2]
-        c = float(on_block @ n)
+        block = "hi" if src.link == j.hi else "lo"
+        # the sense of the frictionless normal force on the block (0: none, Sec. 11.10)
+        c = float(OPS["force_normal_sense"](plain[j.key], n, fscale, tol=DEFAULT_TOL,
+                                            block=block)[0])
         if impending is None:
             if not sol.has_rates:
                 raise InputError("say which way the slider's motion is impending: impending = "
                                  "\"ahead\" or \"behind\" (a static file has no velocity)",
                                  key=f"{src.key}.impending", file=mech.source)
-            p = src.point
-            v = np.asarray(sol.velocity(p, src.link)) - _velocity_in(sol, src.on,
-                                                                       sol.position(p, src.link))
-            speed = float(v @ u)
-            if is_zero(speed, vscale):
+            pw = np.asarray(sol.position(src.point, src.link), dtype=float)
+            # the block's velocity less the guide's at its point, along u (ops.py: the verdict)
+            s = float(OPS["force_impending"](sol.velocity(src.point, src.link),
+                                             _velocity_in(sol, src.on, pw), pw, pw, 0.0, u,
+                                             vscale, tol=DEFAULT_TOL)[0])
+            if s == 0.0:
                 raise InputError("the slider is at rest relative to its guide at this posture: "
                                  "say impending = \"ahead\" or \"behind\"",
                                  key=f"{src.key}.impending", file=mech.source)
-            s = 1.0 if speed > 0 else -1.0
         else:
             s = 1.0 if impending == "ahead" else -1.0
-        if is_zero(c, fscale):
+        if c == 0.0:
             # a load taken directly by a drive leaves the joint forces at round-off of the
             # loads: the normal force is zero, so is friction (no verdict on its sense)
             notes.append(f"{src.key}: no normal force without friction, so no friction")
             continue
-        rough.append((j, src, n, u, mu, s, float(sign(c, fscale))))
+        rough.append((j, src, n, u, mu, s, c))
         notes.append(f"{src.key}: friction μ = {mu:g}, the force on link {src.link} leans "
                      f"{np.degrees(np.arctan(mu)):.2f}° from the normal against its impending "
                      f"motion {'ahead' if s > 0 else 'behind'} (Sec. 11.10)")
@@ -354,17 +357,19 @@ def _friction_senses(sol: Solution, joints: list[Joint], geo: Geometry, dynamic:
     senses = {j.key: sign for j, _, _, _, _, _, sign in rough}
     tried: dict[str, int] = {j.key: 1 for j, *_ in rough}
     while True:
-        for j, _src, n, u, mu, s, _ in rough:
-            d = senses[j.key] * n - mu * s * u
-            geo.normal[j.key] = d / float(np.hypot(*d))
+        for j, _src, n, u, mu, s, _ in rough:  # the normal leant by φ (one source: ops.py)
+            geo.normal[j.key] = OPS["force_friction_normal"](
+                n, u, senses[j.key], tol=DEFAULT_TOL, mu=mu, impending=s)[0]
         if not rough:
             return
         fw, _, _ = solve_matrix(sol, joints, geo, dynamic)
-        big = max([fscale] + [float(np.hypot(*w[:2])) for w in fw.values()])
+        big = float(OPS["force_scale"](fscale, *fw.values(), tol=DEFAULT_TOL, size=1.0,
+                                       kinds=("scale",) + ("force",) * len(fw))[0])
         turned = []
         for j, src, *_ in rough:
-            on_block = fw[j.key][:2] if src.link == j.hi else -fw[j.key][:2]
-            if sign(float(on_block @ geo.normal[j.key]), big) < 0:
+            block = "hi" if src.link == j.hi else "lo"
+            if OPS["force_turned"](fw[j.key], geo.normal[j.key], big, senses[j.key],
+                                   tol=DEFAULT_TOL, block=block)[0] > 0:
                 turned.append((j, src))
         if not turned:
             return

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from graphkin.construction.codegen import Gen, lit, template
 from graphkin.construction.step import Step
+from graphkin.tolerance import VERDICT_REL
 
 __all__: list[str] = []
 
@@ -273,3 +274,84 @@ def _add_torques(gen: Gen, step: Step) -> None:
     for lab in step.inputs[1:]:
         out = gen.add(out, gen.scalar(lab))
     gen.put_scalar(step.outputs[0], out)
+
+
+# ---- friction (Sec. 11.10): the senses and the leant line, as graphkin.forces.ops ---------
+
+
+def _sense_expr(gen: Gen, c: str, scale: str) -> str:
+    """``sign(c)``, 0 within VERDICT_REL of ``scale`` (graphkin.tolerance.sign)."""
+    zero = f"_abs({c}) <= {lit(VERDICT_REL)} * _abs({scale})"
+    return gen.let(gen.where(zero, "0.0", gen.where(f"{c} > 0.0", "1.0", "-1.0")), "sg")
+
+
+@template("force_scale", python=False)
+def _scale(gen: Gen, step: Step) -> None:
+    size = gen.num(float(step.params["size"]))
+    parts = []
+    for lab, kind in zip(step.inputs, step.params["kinds"]):
+        if kind == "scale":
+            parts.append(f"_abs({gen.scalar(lab)})")
+        elif kind == "couple":
+            parts.append(f"_abs({_force(gen, lab)[2]}) / {size}")
+        elif kind == "rate":
+            parts.append(f"_abs({gen.scalar(lab)}) * {size}")
+        else:
+            fx, fy, _ = _force(gen, lab)
+            parts.append(f"_sqrt({gen.add(gen.mul(fx, fx), gen.mul(fy, fy))})")
+    out = "0.0"
+    for p in parts:
+        out = gen.let(f"_maximum({out}, {p})", "m")
+    gen.put_scalar(step.outputs[0], out)
+
+
+def _on_block_dot(gen: Gen, step: Step) -> str:
+    fx, fy, _ = _force(gen, step.inputs[0])
+    nx, ny, *_ = gen.rows(step.inputs[1])
+    c = gen.add(gen.mul(fx, nx), gen.mul(fy, ny))
+    return c if step.params["block"] == "hi" else gen.neg(c)
+
+
+@template("force_normal_sense", python=False)
+def _normal_sense(gen: Gen, step: Step) -> None:
+    gen.put_scalar(step.outputs[0], _sense_expr(gen, _on_block_dot(gen, step),
+                                                gen.scalar(step.inputs[2])))
+
+
+@template("force_friction_normal", python=False)
+def _friction_normal(gen: Gen, step: Step) -> None:
+    nx, ny, *_ = gen.rows(step.inputs[0])
+    ux, uy, *_ = gen.rows(step.inputs[1])
+    s = gen.scalar(step.inputs[2])
+    mu = gen.num(float(step.params["mu"]))
+    imp = step.params.get("impending")
+    k = gen.mul(mu, gen.scalar(step.inputs[3]) if imp is None else gen.num(float(imp)))
+    dx = gen.sub(gen.mul(s, nx), gen.mul(k, ux))
+    dy = gen.sub(gen.mul(s, ny), gen.mul(k, uy))
+    n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
+    rough = f"_abs({s}) > 0.0"
+    gen.put_rows(step.outputs[0], "vector", gen.where(rough, f"{dx} / {n}", nx),
+                 gen.where(rough, f"{dy} / {n}", ny))
+
+
+@template("force_turned", python=False)
+def _turned(gen: Gen, step: Step) -> None:
+    c = _sense_expr(gen, _on_block_dot(gen, step), gen.scalar(step.inputs[2]))
+    s = gen.scalar(step.inputs[3])
+    gen.put_scalar(step.outputs[0], gen.where(f"{c} < 0.0", gen.where(
+        f"_abs({s}) > 0.0", "1.0", "0.0"), "0.0"))
+
+
+@template("force_impending", python=False)
+def _impending(gen: Gen, step: Step) -> None:
+    vpx, vpy, *_ = gen.rows(step.inputs[0])
+    vqx, vqy, *_ = gen.rows(step.inputs[1])
+    qx, qy, *_ = gen.rows(step.inputs[2])
+    px, py, *_ = gen.rows(step.inputs[3])
+    w = gen.scalar(step.inputs[4])
+    ux, uy, *_ = gen.rows(step.inputs[5])
+    dx, dy = gen.sub(px, qx), gen.sub(py, qy)
+    rx = gen.sub(gen.sub(vpx, vqx), gen.neg(gen.mul(w, dy)))
+    ry = gen.sub(gen.sub(vpy, vqy), gen.mul(w, dx))
+    speed = gen.add(gen.mul(rx, ux), gen.mul(ry, uy))
+    gen.put_scalar(step.outputs[0], _sense_expr(gen, speed, gen.scalar(step.inputs[6])))

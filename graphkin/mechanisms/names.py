@@ -19,9 +19,11 @@ __all__ = ["LABEL_PREFIXES", "LINK_SYMBOLS", "label_like"]
 #: Prefixes of the labels the constructions make from a point name or a link id, followed
 #: by ``_``: forces and their lines (``F_43``, ``P_4``, ``T_12``, ``M_4``, ``W_4``, ``R_4``,
 #: ``l_3``, ``q_4``, ``X_4``, ``n_1-4``, ``u_1-4``), velocities and accelerations (``V_B``,
-#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), and the Greek symbols.
+#: ``A_B``), loci and curvature (``k_B``, ``J_B``, ``Q_B``), the Greek symbols, and the live
+#: page's friction steps (``σ_1-4``, ``τ_1-4``, ``ι_1-4``: a rough joint's sense, turnover and
+#: impending motion; ``n°_1-4``, ``V°_1-4``: its plain normal, its guide's velocity).
 LABEL_PREFIXES = ("F", "P", "T", "M", "W", "R", "l", "q", "X", "n", "u", "V", "A", "k", "J",
-                  "Q", "θ", "ω", "α")
+                  "Q", "θ", "ω", "α", "σ", "τ", "ι", "n°", "V°")
 #: Symbols the constructions put before a link id: ``θ3``, ``ω3``, ``α3``, ``s4``, ``ds4``,
 #: ``dds4`` (a slider's travel and its rates).
 LINK_SYMBOLS = ("θ", "ω", "α", "dds", "ds", "s")

@@ -261,6 +261,7 @@ draw my velocity polygon</button>
 <figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
 <figure><figcaption>Force polygons</figcaption><svg id="gk-forces"></svg>
 <p id="gk-forces-note"></p></figure>
+<figure><figcaption>Free bodies</figcaption><svg id="gk-bodies"></svg></figure>
 </main>
 <table id="gk-table"></table>
 <table id="gk-force-table"></table>

@@ -16,7 +16,6 @@ forces are ``solve`` of the file the page saves.
 
 from __future__ import annotations
 
-import copy
 import json
 import math
 from pathlib import Path
@@ -29,6 +28,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
 from live_edit import edited
+from live_loads import loaded, page_forces, polygons_close, same_forces
 from spec_data import ROOT
 from strategies import (
     examples,
@@ -57,86 +57,6 @@ def _js():
     js_or_skip()
     yield
     close()
-
-
-@st.composite
-def loaded(draw: Any, family: Any) -> dict[str, Any]:
-    """A random mechanism of ``family`` with a force, a couple or mass properties on its links."""
-    rm = draw(family)
-    data = copy.deepcopy(rm.data)
-    s = rm.scale()
-    num = st.floats(-1.0, 1.0, allow_nan=False)
-    loads: list[dict[str, Any]] = []
-    inertia: dict[str, Any] = {}
-    moving = [lid for lid in data["links"] if str(lid) != "1"]
-    for lid in draw(st.lists(st.sampled_from(moving), min_size=1, max_size=len(moving),
-                             unique=True)):
-        pts = list(data["links"][lid].values())
-        what = draw(st.sampled_from(["force", "couple", "inertia", "force+inertia"]))
-        if "force" in what:
-            name = f"Q{lid}"
-            if all(p == pts[0] for p in pts):  # a block: load its own point
-                name = next(iter(data["links"][lid]))
-            else:
-                data["links"][lid][name] = [draw(num) * s, draw(num) * s]
-            loads.append({"link": int(lid), "point": name,
-                          "force": f"{draw(st.floats(1.0, 1000.0))} N at "
-                                   f"{draw(st.floats(-180.0, 180.0))} deg"})
-        if what == "couple":
-            loads.append({"link": int(lid), "torque": draw(st.floats(1.0, 1000.0)) * s
-                          * draw(st.sampled_from([-1, 1]))})
-        if "inertia" in what and not all(p == pts[0] for p in pts):
-            name = f"G{lid}"
-            data["links"][lid][name] = [draw(num) * s, draw(num) * s]
-            inertia[str(lid)] = {"center": name, "mass": f"{draw(st.floats(0.01, 10.0))} kg",
-                                 "moment": f"{draw(st.floats(0.0, 1.0))} kg*m^2"}
-    if not loads and not inertia:  # a block alone drew mass properties: load it instead
-        loads.append({"link": int(moving[-1]), "torque": s * draw(st.floats(1.0, 1000.0))})
-    data["loads"] = loads
-    if inertia:
-        data["inertia"] = inertia
-        if draw(st.booleans()):
-            data["gravity"] = {"acceleration": "9.80665 m/s^2 at -90 deg"}
-    data.setdefault("units", {})["force"] = "N"
-    return data
-
-
-def _page_forces(data: dict, js: str, drive: float) -> dict | None:
-    """What the page computes at the drive ``drive``: the posture and its forces."""
-    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
-           "\nconst I = Object.assign({}, D.inputs);"
-           f"\nI[D.drive.label] = {float(drive)!r};"
-           "\nconst r = construction(I, D.K);"
-           "\nconst RESULT = r === null ? null : {r: r, f: gkForces(D.forces, r)};")
-    return run_js(src)
-
-
-def _same_forces(got: dict[str, Any], F: dict[str, Any], fs: Any) -> None:
-    """Every joint force and drive of the page equals graphkin's, to 1e-9 of their scale."""
-    mech = fs.mechanism
-    big = max([float(np.hypot(*w[:2])) for w in fs.forces.values()] + [1e-300])
-    arm = 1.0 + mech.scale
-    for key, lab in F["joints"].items():
-        w, g = np.asarray(got[lab], dtype=float), fs.forces[key]
-        assert np.all(np.abs(w[:2] - g[:2]) <= REL * big), (key, w, g)
-        assert abs(w[2] - g[2]) <= REL * big * arm, (key, w, g)
-    for lid, d in F["drives"].items():
-        kind, t = fs.drives[lid]
-        size = big * arm if kind == "torque" else big
-        assert abs(float(got[d["label"]]) - t) <= REL * size, (lid, got[d["label"]], t)
-
-
-def _polygons_close(got: dict[str, Any], F: dict[str, Any]) -> None:
-    """Each link's force polygon closes (Σ F = 0 with the inertia forces, Sec. 12.4)."""
-    big = max([float(np.hypot(*got[lab][:2])) for lab in F["joints"].values()] + [1e-300])
-    for lid, poly in F["polygons"].items():
-        total = np.zeros(2)
-        for f in poly:
-            if "along" in f:
-                total += float(got[f["label"]]) * np.asarray(got[f["along"]], dtype=float)
-            else:
-                total += f["sign"] * np.asarray(got[f["label"]][:2], dtype=float)
-        assert np.all(np.abs(total) <= REL * big), (lid, total)
 
 
 FAMILIES = {"fourbar": fourbars(other_rates=False), "slider-crank": slider_cranks(),
@@ -170,7 +90,7 @@ def _check(file: dict[str, Any], offset: float) -> None:
         return
     d = data["drive"]
     drive = d["value"] + offset * (1.0 if d["degrees"] else mech.scale)
-    out = _page_forces(data, js, drive)
+    out = page_forces(data, js, drive)
     if out is None:
         return  # this posture cannot be assembled: the page says so (test_live.py)
     try:
@@ -188,8 +108,8 @@ def _check(file: dict[str, Any], offset: float) -> None:
         big = max(float(np.hypot(*w[:2])) for w in fs.forces.values())
         assert big > 1e3 * max(loads + [0.0]), "the page refused a clean posture"
         return
-    _same_forces(out["f"], F, fs)
-    _polygons_close(out["f"], F)
+    same_forces(out["f"], F, fs)
+    polygons_close(out["f"], F)
 
 
 def test_the_file_posture_is_graphkins_own() -> None:
@@ -198,17 +118,12 @@ def test_the_file_posture_is_graphkins_own() -> None:
     for path in sorted(FORCES.glob("ex[0-9]*.toml")):
         mech = graphkin.load(path)
         data, js = live_data(mech, load_toml(path), path.name)
-        out = _page_forces(data, js, data["drive"]["value"])
+        out = page_forces(data, js, data["drive"]["value"])
         assert out is not None and out["f"] is not None, path.name
-        _same_forces(out["f"], data["forces"], solve_forces(mech.solve()))
+        same_forces(out["f"], data["forces"], solve_forces(mech.solve()))
 
 
-def test_friction_is_said_in_one_line_not_drawn() -> None:
-    mech = graphkin.load(FRICTION)
-    data, _ = live_data(mech, load_toml(FRICTION), FRICTION.name)
-    why = data["forces"]["why"]
-    assert "friction" in why and "\n" not in why
-    assert set(data["forces"]) == {"why"}
+def test_rates_of_another_link_are_said_in_one_line() -> None:
     # Ex 12.3's trammel with its rates given for the coupler ([rates]): the page has no
     # accelerations to make the inertia force from, and says so
     path = ROOT / "tests" / "data" / "hostile" / "rates_1e8_trammel.toml"
@@ -251,26 +166,31 @@ def test_spec_force_examples_open_with_the_panel_and_follow_a_drag(browser, tmp_
         assert {"-m3A_G3", "-m4A_G4"} <= names
     state = browser.js("window.graphkinLive.state()")
     data = json.loads(browser.js("document.getElementById('gk-data').textContent"))
-    _same_forces(state["forces"], data["forces"], solve_forces(graphkin.load(path).solve()))
+    same_forces(state["forces"], data["forces"], solve_forces(graphkin.load(path).solve()))
     # drag the crank by 12°: the page's forces are graphkin's of the file the page saves
     browser.js(f"window.graphkinLive.setDrive({state['drive'] + math.radians(12.0)})")
     after = browser.js("window.graphkinLive.state()")
     assert after["forces"] is not None
     saved = tmp_path / "saved.toml"
     saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
-    _same_forces(after["forces"], data["forces"], solve_forces(graphkin.load(saved).solve()))
+    same_forces(after["forces"], data["forces"], solve_forces(graphkin.load(saved).solve()))
     assert not np.allclose(after["forces"][data["forces"]["joints"]["2-3"]],
                            state["forces"][data["forces"]["joints"]["2-3"]])
     assert "NaN" not in browser.js("document.body.innerText")
     assert browser.errors() == []
 
 
-def test_friction_page_says_so_in_the_panel(browser, tmp_path) -> None:
+def test_a_huge_load_with_friction_is_redone_not_refused(browser, tmp_path) -> None:
+    # issue 25's file: a 1e95 load with friction at the slider (Sec. 11.10, live since the
+    # page redoes friction: tests/render/test_live_friction.py); no NaN, graphkin's forces
     _open(browser, tmp_path, FRICTION)
     assert browser.errors() == []
-    note = browser.js("document.getElementById('gk-forces-note').textContent")
-    assert note.startswith("No live force polygons: friction") and "\n" not in note
-    assert browser.js("document.querySelectorAll('#gk-forces .gk-force').length") == 0
+    assert browser.js("document.getElementById('gk-forces-note').textContent") == ""
+    assert browser.js("document.querySelectorAll('#gk-forces .gk-force').length") > 0
+    state = browser.js("window.graphkinLive.state()")
+    data = json.loads(browser.js("document.getElementById('gk-data').textContent"))
+    same_forces(state["forces"], data["forces"], solve_forces(graphkin.load(FRICTION).solve()))
+    assert "NaN" not in browser.js("document.body.innerText")
 
 
 def test_a_pin_on_the_known_line_is_refused_not_a_number() -> None:
@@ -335,7 +255,7 @@ def test_dragging_the_load_point_the_masses_and_a_pivot_moves_the_forces(browser
     orig = graphkin.load(path)
     for lid, n in (("4", "C"), ("3", "G3"), ("1", "O4")):  # the drags reached the file
         assert not np.allclose(mech.links[lid].points[n], orig.links[lid].points[n]), n
-    _same_forces(state["forces"], data["forces"], solve_forces(mech.solve()))
+    same_forces(state["forces"], data["forces"], solve_forces(mech.solve()))
     assert not np.allclose(state["forces"]["F_34"], before["F_34"])
 
 
