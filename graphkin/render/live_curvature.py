@@ -41,7 +41,10 @@ __all__ = ["curvature_data"]
 
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
 # (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
-_FIXED_BY_RATES = ("similar", "euler_savary_inflection")
+_FIXED_BY_RATES = ("similar",)
+# an identity of the file's posture, not a construction: Γ = J where α = 0 (Sec. 4.15), U = J
+# where the cubic contains the centrode normal (Example 4.16); a drag parts them
+_AT_THIS_POSTURE = ("copy_point",)
 
 
 def _bresse(step: Any, st: Any) -> str | None:
@@ -134,6 +137,59 @@ def _body_given(sol: Any, lid: str, pq: tuple[str, str], label: str, xy: np.ndar
     return {"body": list(pq), "z": [z.real, z.imag], "pos": [float(xy[0]), float(xy[1])]}
 
 
+def _turn_given(sol: Any, lid: str, anchor: str, label: str, xy: np.ndarray,
+                given: dict[str, dict[str, Any]], size: float) -> dict[str, Any] | None:
+    """An auxiliary point of a link with one point only, or its acceleration (velocity) drawn.
+
+    A block has one named point ``P`` (its pin); the link's other points are
+    ``H = P + R(θ) d`` with ``θ`` the link's angle and ``d`` fixed in the link,
+    and, as for any two points of one link (Eqs. 3.4 and 4.5),
+    ``V_H = V_P + ω k × R_HP`` and ``A_H = A_P + α k × R_HP - ω² R_HP``.
+    Each is checked against the construction's own given at the file's posture.
+    """
+    st = sol.links[lid]
+    p = np.asarray(sol.position(anchor), dtype=float)
+    t = float(np.asarray(st.angle, dtype=float))
+    w, al = float(st.omega), float(st.alpha)
+    c, sn = np.cos(t), np.sin(t)
+
+    def turned(d: np.ndarray) -> np.ndarray:
+        return np.array([c * d[0] - sn * d[1], sn * d[0] + c * d[1]])
+
+    for pre, key, k in (("A_", "atip", w * w), ("V_", "vtip", abs(w))):
+        body = given.get(label[len(pre):]) if label.startswith(pre) else None
+        if body is not None and "d" in body and k != 0.0:
+            r = turned(np.asarray(body["d"], dtype=float))
+            if key == "atip":
+                rel = al * np.array([-r[1], r[0]]) - w * w * r
+                base = np.asarray(sol.acceleration(anchor), dtype=float)
+            else:
+                rel = w * np.array([-r[1], r[0]])
+                base = np.asarray(sol.velocity(anchor), dtype=float)
+            h = p + r + (base + rel) / k
+            if float(np.hypot(*(h - xy))) <= 1e-9 * size:
+                return {"turn": anchor, "d": body["d"], key: True}
+            return None
+    d = xy - p
+    return {"turn": anchor, "d": [float(c * d[0] + sn * d[1]), float(-sn * d[0] + c * d[1])]}
+
+
+def _needed(steps: list[Any], requests: list[str]) -> list[Any]:
+    """The steps the requested labels read, directly or not (no other step can fail the page).
+
+    A line drawn for the figure only (the collineation axis IQ, through Q at
+    infinity at Example 4.16's posture) would make the whole function return
+    ``null`` where its meet has no clean answer.
+    """
+    live = set(requests)
+    keep: list[Any] = []
+    for s in reversed(steps):
+        if live & set(s.outputs):
+            keep.append(s)
+            live.update(s.inputs)
+    return keep[::-1]
+
+
 def curvature_data(mech: Mechanism, points: list[str],
                    made: set[str]) -> tuple[dict[str, Any], str] | None:
     """The curvature panel's data and the JavaScript of its construction, or None.
@@ -172,6 +228,9 @@ def curvature_data(mech: Mechanism, points: list[str],
         ok: set[str] = set()
         ratios: list[str] = []
         pq = _two_points(sol, lid, points)
+        # a block (one point): its other points from that point and the link's angle
+        one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
+            if pq is None and f"θ{lid}" in made and f"α{lid}" in made else None
         for s in cx.steps:
             if s.op == "point" and not s.inputs:
                 xy = np.asarray(s.params["xy"], dtype=float)
@@ -182,6 +241,8 @@ def curvature_data(mech: Mechanism, points: list[str],
                            same[0] if same else None)
                 if hit is None and pq is not None:
                     hit = _body_given(sol, lid, pq, s.outputs[0], xy, given, size)
+                elif hit is None and one is not None:
+                    hit = _turn_given(sol, lid, one, s.outputs[0], xy, given, size)
                 if hit is not None:
                     given[s.outputs[0]] = dict(hit, link=lid)
                     ok.add(s.outputs[0])
@@ -196,7 +257,8 @@ def curvature_data(mech: Mechanism, points: list[str],
                     ok.update(s.outputs)
                     if kind == "ratio":
                         ratios.append(s.outputs[0])
-            elif (s.op in TEMPLATES and s.op not in _FIXED_BY_RATES and s.op != "point"
+            elif (s.op in TEMPLATES and s.op not in _FIXED_BY_RATES + _AT_THIS_POSTURE
+                  and s.op != "point"
                   and all(i in ok for i in s.inputs)):
                 ok.update(s.outputs)
         results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
@@ -210,11 +272,12 @@ def curvature_data(mech: Mechanism, points: list[str],
     _, lid, cx, given, results, ok, ratios = best
     extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
     requests = results + [lab for lab in extra if lab in ok and lab not in results]
-    steps = [s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)]
+    steps = _needed([s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)],
+                    requests)
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
                          given=given, homogeneous=False,
-                         ideal=[lab for lab, g in given.items() if "slider" in g])
+                         ideal=[lab for lab, g in given.items() if "slider" in g], soft=True)
     except Unsupported:
         return None
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}

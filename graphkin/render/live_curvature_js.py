@@ -29,6 +29,23 @@ function gkCurvatureInputs(V, r) {
       J[lab] = [-Math.sin(t) * g.sign, Math.cos(t) * g.sign, 0];
       continue;
     }
+    if (g.turn !== undefined) {
+      // a point H = P + R(θ) d of a link with one point P (a block), or its velocity
+      // (acceleration) drawn from it: V_P + ω k × R_HP, A_P + α k × R_HP - ω² R_HP
+      const P = r[g.turn], t = r["\u03b8" + V.link], a = r["\u03b1" + V.link];
+      if (!P || !Number.isFinite(t) || w === undefined) return null;
+      const c = Math.cos(t), s = Math.sin(t);
+      const hx = c * g.d[0] - s * g.d[1], hy = s * g.d[0] + c * g.d[1];
+      const H = [P[0] + hx, P[1] + hy];
+      if (!g.atip && !g.vtip) { J[lab] = H; continue; }
+      const pre = g.vtip ? "v" : "a", p = r[pre + "(" + g.turn + ")"], o = r["o_" + pre];
+      if (!p || !o || (g.atip && a === undefined)) return null;
+      const rx = g.vtip ? -w * hy : -a * hy - w * w * hx;
+      const ry = g.vtip ? w * hx : a * hx - w * w * hy;
+      const k = g.vtip ? Math.abs(w) : w * w;
+      J[lab] = [H[0] + (p[0] - o[0] + rx) / k, H[1] + (p[1] - o[1] + ry) / k];
+      continue;
+    }
     if (g.body !== undefined) {
       // a body point H = P + (Q - P) z of the link, or its velocity (acceleration) drawn
       // from it: V_H = V_P + (V_Q - V_P) z (Mehmke: the images are similar to the link)
@@ -68,7 +85,13 @@ function gkCurvature(V, r) {
     K[k] = w * w / a;
     if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
   }
-  return curvature(J, K);
+  // a result with no clean answer here (Hain's G_T at infinity, Example 4.16) is null, the
+  // others drawn; without the poles I and J there is no panel (said so)
+  const v = curvature(J, K);
+  if (v === null || ["I", "J"].some((lab) => V.labels.indexOf(lab) >= 0 && v[lab] === null)) {
+    return null;
+  }
+  return v;
 }
 """
 """The curvature construction's glue (in the page's library, beside the centers')."""
