@@ -157,13 +157,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     if centers is not None:
         data["centers"], cjs = centers
         js += cjs
-    if rates:
-        from graphkin.render.live_curvature import curvature_data
+    from graphkin.render.live_curvature import curvature_data
 
-        curv = curvature_data(mech, points, made)
-        if curv is not None:
-            data["curvature"], vjs = curv
-            js += vjs
+    data["curvature"], vjs = curvature_data(mech, points, made)
+    js += vjs
     from graphkin.render.live_forces import forces_data
 
     fd = forces_data(mech, points, made)
@@ -318,7 +315,8 @@ draw my velocity polygon</button>
 <figure><figcaption>Velocity polygon</figcaption><svg id="gk-velocity"></svg></figure>
 <figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
 <figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg></figure>
-<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
+<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg>
+<p id="gk-curvature-note"></p></figure>
 <figure><figcaption>Force polygons</figcaption><svg id="gk-forces"></svg>
 <p id="gk-forces-note"></p></figure>
 </main>

@@ -27,6 +27,7 @@ the point ``I``) has no panel.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -109,7 +110,9 @@ def _two_points(sol: Any, lid: str, points: list[str]) -> tuple[str, str] | None
             d = float(np.hypot(*(np.asarray(sol.position(q)) - np.asarray(sol.position(p)))))
             if d > far:
                 best, far = (p, q), d
-    return best if far > 0.0 else None
+    # two points nearly coincident (a block's pin and slider point, apart by round-off) give
+    # the complex ratio of Sec. 4.15 no conditioning: the link's angle does instead
+    return best if far > 1e-6 * (1.0 + float(sol.mechanism.scale)) else None
 
 
 def _body_given(sol: Any, lid: str, pq: tuple[str, str], label: str, xy: np.ndarray,
@@ -190,9 +193,106 @@ def _needed(steps: list[Any], requests: list[str]) -> list[Any]:
     return keep[::-1]
 
 
+@dataclass
+class _Plan:
+    """What the page can redo of one link's curvature construction."""
+
+    lid: str
+    cx: Any
+    given: dict[str, dict[str, Any]]
+    ok: set[str]
+    results: list[str]
+    ratios: list[str]
+
+
+def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
+          size: float) -> _Plan | str:
+    """The steps of link ``lid``'s construction the page can redo, or why it has no panel."""
+    if f"ω{lid}" not in made or f"α{lid}" not in made:
+        return f"the page does not find ω{lid} and α{lid}"
+    cands = _candidates(sol, lid, points)
+    given: dict[str, dict[str, Any]] = {}
+    ok: set[str] = set()
+    why: dict[str, str] = {}  # a label the page cannot redo: the first reason
+    ratios: list[str] = []
+    pq = _two_points(sol, lid, points)
+    # a block (one point): its other points from that point and the link's angle
+    one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
+        if pq is None and f"θ{lid}" in made else None
+    for s in cx.steps:
+        blocked = next((why.get(i, f"{i} is not made") for i in s.inputs if i not in ok), None)
+        hit: dict[str, Any] | None = None
+        if s.op == "point" and not s.inputs:
+            lab = s.outputs[0]
+            xy = np.asarray(s.params["xy"], dtype=float)
+            # what the label says first (the point X, V_X from X, A_X from X): another point
+            # may coincide with it at the file's posture only (a slider's C on the frame's
+            # L1a, A_A on the rod's end R) and part on a drag
+            pre = lab[:2] if lab[:2] in ("A_", "V_") else ""
+            want = {"A_": "atip", "V_": "vtip", "": "point"}[pre]
+            same = [g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size]
+            hit = next((g for g in same if g.get(want) == lab[len(pre):]), None)
+            aux = given.get(lab[len(pre):], {}) if pre else {}
+            if hit is None and not ("z" in aux or "d" in aux):
+                hit = same[0] if same else None
+            if hit is None and pq is not None:
+                hit = _body_given(sol, lid, pq, lab, xy, given, size)
+            elif hit is None and one is not None:
+                hit = _turn_given(sol, lid, one, lab, xy, given, size)
+            blocked = None if hit is not None else (
+                f"its given point {s.outputs[0]} is not one the page finds from the posture")
+        elif s.op == "ideal_point":
+            hit = _slider_normal(sol, s.params["direction"])
+            blocked = None if hit is not None else (
+                f"its given {s.outputs[0]} at infinity is not normal to a slider's line")
+        elif blocked is not None:
+            pass
+        elif s.op == "similar":
+            kind = _bresse(s, sol.links[lid])
+            if kind == "ratio":
+                ratios.append(s.outputs[0])
+            elif kind is None:
+                blocked = f"the step making {s.outputs[0]} carries the file posture's rates"
+        elif s.op in _AT_THIS_POSTURE:
+            blocked = f"{s.outputs[0]} = {s.inputs[0]} holds at the file's posture only"
+        elif s.op not in TEMPLATES or s.op == "point":
+            blocked = f"the operation {s.op!r} has no template"
+        if hit is not None:
+            given[s.outputs[0]] = dict(hit, link=lid)
+        if blocked is None:
+            ok.update(s.outputs)
+        else:
+            why.update({o: blocked for o in s.outputs})
+    results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
+               and s.outputs and s.outputs[0] in ok]
+    if "J" not in results and "inflection circle" not in results:
+        return why.get("J", why.get("inflection circle", "it has no inflection pole J"))
+    return _Plan(lid, cx, given, ok, results, ratios)
+
+
+def _why_none(sol: Any, tol: Any) -> str:
+    """Why no link has a curvature construction (each turns about a pivot, or none turns)."""
+    from graphkin.kinematics.curvature.link import _turning
+
+    mech = sol.mechanism
+    turning = [lid for lid in mech.moving if _turning(sol, lid, tol)]
+    if not turning:
+        return "no link turns at the file's posture (ω = 0): every velocity pole is at infinity"
+    if len(turning) == 1:
+        return (f"link {turning[0]} turns about a frame pivot: its velocity pole I is the "
+                "pivot, and its inflection circle shrinks to that point (Sec. 4.13)")
+    return (f"links {', '.join(turning[:-1])} and {turning[-1]} each turn about a frame "
+            "pivot: the velocity pole I of each is its pivot, and its inflection circle "
+            "shrinks to that point (Sec. 4.13)")
+
+
 def curvature_data(mech: Mechanism, points: list[str],
-                   made: set[str]) -> tuple[dict[str, Any], str] | None:
-    """The curvature panel's data and the JavaScript of its construction, or None.
+                   made: set[str]) -> tuple[dict[str, Any], str]:
+    """The curvature panel's data and the JavaScript of its construction.
+
+    The link is the one ``graphkin draw -d curvature`` draws (the first coupler
+    with a curvature construction) when the page can redo its construction,
+    else the link whose construction it redoes most of.
 
     Parameters
     ----------
@@ -204,85 +304,59 @@ def curvature_data(mech: Mechanism, points: list[str],
 
     Returns
     -------
-    (dict, str) or None
+    (dict, str)
         ``{"link", "given", "labels", "results", "K"}`` and the source of
-        ``curvature(I, K)``; None when no link has a curvature construction the
-        page can redo.
+        ``curvature(I, K)``; or ``({"why": line}, "")`` when the page has no
+        curvature panel, ``line`` saying why in the user's words.
     """
     from graphkin.construction.ops import templates  # noqa: F401  (registers the templates)
     from graphkin.kinematics.curvature.link import curvature_constructions
 
     try:
         sol = mech.solve()
-        ccs = curvature_constructions(sol)
-    except GraphkinError:
-        return None
+        if not sol.has_rates or not sol.has_accelerations:
+            return {"why": "the file gives no rates (the inflection circle needs the angular "
+                           "velocity and acceleration)"}, ""
+        if not any(f"ω{lid}" in made for lid in mech.links if lid != FRAME):
+            rates = getattr(mech, "rates", None)
+            return {"why": (f"the file gives the rates of link {rates.link} ([rates]), not the "
+                            "drive's, and the page redoes the polygons from the drive's"
+                            if rates is not None else
+                            "the page does not construct this mechanism's velocity and "
+                            "acceleration polygons, which the curvature construction reads")}, ""
+        ccs = {lid: cx for lid, cx in curvature_constructions(sol).items()
+               if lid != FRAME and any(s.op != "point" for s in cx.steps)}
+    except GraphkinError as exc:
+        return {"why": f"no curvature construction at the file's posture ({exc})"}, ""
+    if not ccs:
+        return {"why": _why_none(sol, DEFAULT_TOL)}, ""
     size = 1.0 + float(mech.scale)
-    best: tuple[int, str, Any, dict[str, dict[str, Any]], list[str], set[str],
-                list[str]] | None = None
-    for lid, cx in ccs.items():
-        if lid == FRAME or f"ω{lid}" not in made:
-            continue
-        cands = _candidates(sol, lid, points)
-        given: dict[str, dict[str, Any]] = {}
-        ok: set[str] = set()
-        ratios: list[str] = []
-        pq = _two_points(sol, lid, points)
-        # a block (one point): its other points from that point and the link's angle
-        one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
-            if pq is None and f"θ{lid}" in made and f"α{lid}" in made else None
-        for s in cx.steps:
-            if s.op == "point" and not s.inputs:
-                xy = np.asarray(s.params["xy"], dtype=float)
-                # the point of that name first: another point may coincide with it at the
-                # file's posture only (a slider's C on the frame's L1a) and part on a drag
-                same = [g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size]
-                hit = next((g for g in same if g.get("point") == s.outputs[0]),
-                           same[0] if same else None)
-                if hit is None and pq is not None:
-                    hit = _body_given(sol, lid, pq, s.outputs[0], xy, given, size)
-                elif hit is None and one is not None:
-                    hit = _turn_given(sol, lid, one, s.outputs[0], xy, given, size)
-                if hit is not None:
-                    given[s.outputs[0]] = dict(hit, link=lid)
-                    ok.add(s.outputs[0])
-            elif s.op == "ideal_point":
-                hit = _slider_normal(sol, s.params["direction"])
-                if hit is not None:
-                    given[s.outputs[0]] = dict(hit, link=lid)
-                    ok.add(s.outputs[0])
-            elif s.op == "similar" and all(i in ok for i in s.inputs):
-                kind = _bresse(s, sol.links[lid])
-                if kind is not None:
-                    ok.update(s.outputs)
-                    if kind == "ratio":
-                        ratios.append(s.outputs[0])
-            elif (s.op in TEMPLATES and s.op not in _FIXED_BY_RATES + _AT_THIS_POSTURE
-                  and s.op != "point"
-                  and all(i in ok for i in s.inputs)):
-                ok.update(s.outputs)
-        results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
-                   and s.outputs and s.outputs[0] in ok]
-        if "J" not in results and "inflection circle" not in results:
-            continue
-        if best is None or len(results) > best[0]:
-            best = (len(results), lid, cx, given, results, ok, ratios)
-    if best is None:
-        return None
-    _, lid, cx, given, results, ok, ratios = best
+    frame_points = set(mech.links[FRAME].points)
+    couplers = [k for k in ccs if not frame_points & set(mech.links[k].points)]
+    first = (couplers or list(ccs))[0]
+    plans = {lid: _plan(sol, lid, cx, points, made, size) for lid, cx in ccs.items()}
+    good = [p for p in plans.values() if isinstance(p, _Plan)]
+    if not good:
+        return {"why": f"the curvature construction of link {first} cannot be redone on the "
+                       f"page: {plans[first]}"}, ""
+    first_plan = plans[first]
+    plan = first_plan if isinstance(first_plan, _Plan) else max(
+        good, key=lambda p: len(p.results))
+    cx, given, ok = plan.cx, plan.given, plan.ok
     extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
-    requests = results + [lab for lab in extra if lab in ok and lab not in results]
+    requests = plan.results + [lab for lab in extra if lab in ok and lab not in plan.results]
     steps = _needed([s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)],
                     requests)
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
                          given=given, homogeneous=False,
                          ideal=[lab for lab, g in given.items() if "slider" in g], soft=True)
-    except Unsupported:
-        return None
+    except Unsupported as exc:
+        return {"why": f"the curvature construction cannot be written for the page ({exc})"}, ""
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}
     names = [n for n, _ in fn.slots]
-    return ({"link": lid, "given": given, "labels": list(requests), "results": results,
-             "kinds": {lab: kinds[lab] for lab in requests}, "K": fn.values,
-             "ratios": [names.index(f"{lab}.1") for lab in ratios if f"{lab}.1" in names]},
+    return ({"link": plan.lid, "given": given, "labels": list(requests),
+             "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
+             "K": fn.values,
+             "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names]},
             fn.source)

@@ -76,7 +76,7 @@ function gkCurvatureInputs(V, r) {
 }
 // the curvature construction of the posture r (null where it has no clean answer)
 function gkCurvature(V, r) {
-  if (!V || !r) return null;
+  if (!V || !r || V.why) return null;
   const J = gkCurvatureInputs(V, r);
   if (J === null) return null;
   // the Bresse diameter's ratio ω²/α of this posture (Eq. 4.48)
@@ -100,8 +100,14 @@ CURVATURE_APP_JS = r"""// the curvature of the motion of one link
 // (Secs. 4.13-4.17): its inflection circle on IJ, the centrode normal N and tangent T at I,
 // the conjugates, Hain's G_N and G_T, Ball's point U
 function drawCurvature(r, stale, refit) {
-  const svg = svgs.curvature, V = D.curvature;
+  const svg = svgs.curvature, V = D.curvature, note = byId("gk-curvature-note");
   svg.textContent = "";
+  if (V.why) {  // no panel: why, in one line (as the force polygons say theirs)
+    svg.style.display = "none";
+    note.textContent = "No live curvature: " + V.why + ".";
+    return;
+  }
+  note.textContent = "";
   defs(svg);
   const cap = svg.parentNode.querySelector("figcaption");
   if (cap) {
