@@ -386,6 +386,9 @@ def test_the_image_of_a_link_whose_two_points_coincide_is_not_clean() -> None:
     assert not bool(np.all(cx.replay({"θ": 0.3}, strict=False).valid))
     py = generate(cx.steps, varying=["θ"], requests=[("p", "value")])
     assert py.fn(np.array([0.3])) is None
+    # even when nothing asked for reads it: the replay marks the posture, so must the function
+    py = generate(cx.steps, varying=["θ"], requests=[("P", "value")])
+    assert py.fn(np.array([0.3])) is None
     fn = generate_js(cx.steps, requests=["p"])
     assert _run(fn, [{"θ": 0.3}]) == [None]
 
