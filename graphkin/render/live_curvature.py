@@ -3,26 +3,33 @@
 graphkin records, for each moving link, the curvature construction of its
 motion (:func:`graphkin.kinematics.curvature.link.curvature_constructions`,
 Secs. 4.12-4.17 of Uicker, Pennock & Shigley, 5th ed.): the velocity pole
-``I`` from two pairs of conjugate points, Bobillier's construction of the
-inflection pole ``J`` and the inflection circle, ``Γ`` by the four circles of
-Fig. 4.33, the conjugates of Hartmann/Euler-Savary, Hain's construction of
-the cubic of stationary curvature (``G_N``, ``G_T``) and Ball's point ``U``.
-Here those steps are written out as a third JavaScript function whose given
-points are taken from the posture function's results on every pointer move:
+``I``, the inflection pole ``J`` by Bobillier's construction, by the
+Euler-Savary lay-off (Eq. 4.43) or from the acceleration image of the point
+at ``I`` (Sec. 4.15: inverted slider-cranks, Rapson's slide, five-bars), the
+inflection circle, ``Γ`` by the four circles of Fig. 4.33, the conjugates of
+Hartmann/Euler-Savary, Hain's construction of the cubic of stationary
+curvature (``G_N``, ``G_T``) and Ball's point ``U``.  Here those steps are
+written out as a third JavaScript function whose given points are taken
+from the posture function's results on every pointer move:
 
 * a point of the mechanism: its position;
 * ``A_X`` (the acceleration of X drawn from X to the scale ``1/ω²``):
-  ``X + (a(X) - o_a) / ω_k²``; ``V_X`` likewise ``X + (v(X) - o_v) / |ω_k|``.
+  ``X + (a(X) - o_a) / ω_k²``; ``V_X`` likewise ``X + (v(X) - o_v) / |ω_k|``;
+* an auxiliary point of the link (and its ``A_``, ``V_``): from two points of
+  the link by their complex ratio (Mehmke), or from a block's one pin and
+  the link's angle;
+* a center of curvature at infinity: normal to a slider's line.
 
-Which given is which is found by value at the file's posture (each given
-point must be one of those, to 1e-9 of the mechanism's size).  Steps the page
-cannot redo from the posture are left out with everything that depends on
-them: a step whose numbers were fixed by the file's rates (the Bresse
-circle's ``similar`` steps carry ``ω²/α`` of the file's posture; the
-closed-form Euler-Savary step), a given that is not one of the above (an
-auxiliary point, a center of curvature at infinity), an operation with no
-template.  A link that turns about a frame pivot (its inflection circle is
-the point ``I``) has no panel.
+Which given is which is found by value at the file's posture (to 1e-9 of the
+mechanism's size), what its label says first.  The link is the one ``graphkin
+draw -d curvature`` draws when the page can redo it.  Steps the page cannot
+redo are left out with everything that depends on them: a step whose numbers
+were fixed by the file's rates (a ``similar`` step other than the Bresse
+diameter, whose ratio ``ω²/α`` the page gives), an identity of the file's
+posture (``copy_point``: Γ = J where α = 0, U = J), a given that is none of
+the above, an operation with no template.  The function is written
+``soft``: a result with no clean answer at a posture is ``null`` on its own.
+Where no link is left, the panel's data is one line saying why (``why``).
 """
 
 from __future__ import annotations
@@ -49,20 +56,21 @@ _AT_THIS_POSTURE = ("copy_point",)
 
 
 def _bresse(step: Any, st: Any) -> str | None:
-    """A ``similar`` step on I, J the page can redo: ``"turn"``, ``"ratio"`` or None.
+    """A ``similar`` step on I, J the page can redo: ``"sign"``, ``"ratio"`` or None.
 
     The curvature construction lays off along the centrode tangent from I
-    ``(J - I)`` turned 90°, times 1 (the pole velocity's direction) or times
-    ``ω²/α`` (the Bresse diameter, Eq. 4.48: ``local_p = (0, ω²/α)``); the page
-    gives that ratio from the posture's ω and α on every move.
+    ``(J - I)`` turned 90°, times the sign of ω (the pole velocity ``v``, drawn
+    to the scale ``1/|ω|``, Eq. 4.47) or times ``ω²/α`` (the Bresse diameter,
+    Eq. 4.48: ``local_p = (0, ω²/α)``); the page gives that sign or ratio from
+    the posture's ω and α on every move.
     """
     la, lb, lp = (tuple(float(v) for v in step.params[k])
                   for k in ("local_a", "local_b", "local_p"))
     if la != (0.0, 0.0) or lb != (1.0, 0.0) or lp[0] != 0.0:
         return None
-    if lp[1] == 1.0:
-        return "turn"
     w, a = float(st.omega), float(st.alpha)
+    if step.outputs[0].endswith("v") and lp[1] == (1.0 if w > 0 else -1.0):
+        return "sign"
     if a != 0.0 and abs(lp[1] - w * w / a) <= 1e-9 * abs(lp[1]):
         return "ratio"
     return None
@@ -203,6 +211,7 @@ class _Plan:
     ok: set[str]
     results: list[str]
     ratios: list[str]
+    signs: list[str]
 
 
 def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
@@ -215,6 +224,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
     ok: set[str] = set()
     why: dict[str, str] = {}  # a label the page cannot redo: the first reason
     ratios: list[str] = []
+    signs: list[str] = []
     pq = _two_points(sol, lid, points)
     # a block (one point): its other points from that point and the link's angle
     one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
@@ -251,6 +261,8 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
             kind = _bresse(s, sol.links[lid])
             if kind == "ratio":
                 ratios.append(s.outputs[0])
+            elif kind == "sign":
+                signs.append(s.outputs[0])
             elif kind is None:
                 blocked = f"the step making {s.outputs[0]} carries the file posture's rates"
         elif s.op in _AT_THIS_POSTURE:
@@ -267,7 +279,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
                and s.outputs and s.outputs[0] in ok]
     if "J" not in results and "inflection circle" not in results:
         return why.get("J", why.get("inflection circle", "it has no inflection pole J"))
-    return _Plan(lid, cx, given, ok, results, ratios)
+    return _Plan(lid, cx, given, ok, results, ratios, signs)
 
 
 def _why_none(sol: Any, tol: Any) -> str:
@@ -358,5 +370,6 @@ def curvature_data(mech: Mechanism, points: list[str],
     return ({"link": plan.lid, "given": given, "labels": list(requests),
              "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
              "K": fn.values,
-             "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names]},
+             "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],
+             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names]},
             fn.source)

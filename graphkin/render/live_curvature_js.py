@@ -85,6 +85,8 @@ function gkCurvature(V, r) {
     K[k] = w * w / a;
     if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
   }
+  // the pole velocity's sense, v = ω k × R_JI drawn to the scale 1/|ω| (Eq. 4.47)
+  for (const k of V.signs) K[k] = w > 0 ? 1 : -1;
   // a result with no clean answer here (Hain's G_T at infinity, Example 4.16) is null, the
   // others drawn; without the poles I and J there is no panel (said so)
   const v = curvature(J, K);

@@ -238,3 +238,34 @@ def test_example_4_16_leaves_out_only_what_is_at_infinity_there() -> None:
     sol = from_dict(edited(data, turned, out["r"]), source="e").solve()
     assert _compare(data, out["v"], curvature(sol)["3"], 1.0 + mech.scale) == len(
         data["curvature"]["labels"])
+
+
+@pytest.mark.parametrize("name", ["ex3_3_inverted_slider", "ex4_11_rapsons_slide",
+                                  "ex4_16_cubic", "ex5_4_fivebar"])
+def test_the_panel_does_not_move_with_round_off(name: str) -> None:
+    # the page's verdicts (which link, which given is which, which steps it can redo) rest on
+    # values clearly above round-off: at the file's posture and with every point of the file
+    # moved by 1e-12 of the mechanism's size, the page redoes every result of graphkin's
+    # construction of draw's link but an identity of that posture (U = J, Γ = J: copy_point).
+    # (graphkin's construction itself may differ between the two: which auxiliary points
+    # it takes among equally good pairs, whether Example 4.16's four circles are drawn)
+    path = EXAMPLES / f"{name}.toml"
+    data0 = load_toml(path)
+    moved = json.loads(json.dumps(data0))
+    eps = 1e-12 * graphkin.load(path).scale
+    for k, lk in enumerate(moved["links"].values()):
+        for j, n in enumerate(lk):
+            lk[n] = [lk[n][0] + eps * ((k + j) % 3 - 1), lk[n][1] - eps * ((k * j) % 3 - 1)]
+    links = set()
+    for data in (data0, moved):
+        mech = from_dict(data, source=path.name)
+        page, _ = live_data(mech, data, path.name)
+        sol = mech.solve()
+        lid = _draws_link(sol)
+        assert page["curvature"].get("link") == lid
+        links.add(lid)
+        steps = curvature(sol)[lid].construction.steps
+        expected = [st.outputs[0] for st in steps
+                    if st.role.name == "RESULT" and st.op != "copy_point"]
+        assert page["curvature"]["results"] == expected
+    assert len(links) == 1
