@@ -25,7 +25,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
 from live_edit import edited, same_curvature
-from spec_data import EXAMPLES
+from spec_data import EXAMPLES, ROOT
 from strategies import RandomMechanism, examples, fourbars, six_bars, slider_cranks
 
 import graphkin
@@ -176,7 +176,7 @@ def _draws_link(sol: Any) -> str | None:
     return (couplers or links or [None])[0]
 
 
-_GALLERY = EXAMPLES.parents[2] / "gallery"
+_GALLERY = ROOT / "gallery"
 
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("ex[0-9]*.toml")) + sorted(
