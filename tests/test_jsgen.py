@@ -286,3 +286,158 @@ def test_the_centers_templates_work_at_infinity(xy: list[float], t: float) -> No
     # Y is the point at infinity U itself
     y = np.asarray(got["Y"], dtype=float)
     assert abs(y[2]) <= 1e-12 * np.linalg.norm(y)
+
+
+def _moving_points(names: list[str], xy: list[float]):
+    """A construction whose points turn with one input θ: ``X = O_X + R(θ) d_X``.
+
+    Each point is a ``rigid`` step from a fixed point, so it varies with θ and
+    both writers take it in their own Cartesian form (no general function).
+    """
+    from graphkin.construction import Construction
+
+    cx = Construction()
+    cx.add("input", (), ("θ",), name="θ")
+    for k, n in enumerate(names):
+        o = (xy[4 * k], xy[4 * k + 1])
+        cx.add("point", (), (f"O{n}",), xy=o)
+        cx.add("rigid", (f"O{n}", "θ"), (n,), local_p=(0.0, 0.0),
+               local_q=(xy[4 * k + 2], xy[4 * k + 3]))
+    return cx
+
+
+def _both_writers(cx, requests: list[str], th: np.ndarray) -> None:
+    """The Python and the JavaScript function of ``cx`` against its replay, posture by posture."""
+    from graphkin.construction.codegen import generate
+
+    ref = cx.replay({"θ": th}, strict=False)
+    py = generate(cx.steps, varying=["θ"], requests=[(lab, "value") for lab in requests])
+    assert "_op" not in py.source  # the template, not the general function
+    got = py.values(th)
+    if bool(np.all(ref.valid)):
+        assert got is not None
+        for lab in requests:
+            r = np.asarray(ref.values[lab], dtype=float)
+            # a value that does not depend on θ is returned once (the caller broadcasts it)
+            np.testing.assert_allclose(np.broadcast_to(got[lab], r.shape), r, rtol=1e-12,
+                                       atol=1e-12 * (1.0 + np.abs(ref.values[lab]).max()),
+                                       err_msg=lab)
+    fn = generate_js(cx.steps, requests=requests)
+    out = _run(fn, [{"θ": float(t)} for t in th])
+    for k, t in enumerate(th):
+        one = cx.replay({"θ": float(t)}, strict=False)
+        if not bool(np.all(one.valid)):
+            assert out[k] is None  # never a NaN: the page says it cannot construct it
+            continue
+        assert out[k] is not None
+        for lab in requests:
+            r = np.asarray(one.values[lab], dtype=float)
+            r = r[:2] / r[2]
+            np.testing.assert_allclose(out[k][lab], r, rtol=0, atol=REL * (1 + np.abs(r).max()),
+                                       err_msg=lab)
+
+
+@examples(15)
+@given(xy=st.lists(st.floats(-10.0, 10.0), min_size=20, max_size=20),
+       th=st.lists(st.floats(-3.2, 3.2), min_size=1, max_size=4))
+def test_the_image_template_equals_the_general_function(xy: list[float],
+                                                        th: list[float]) -> None:
+    # Mehmke's theorem (Secs. 3.5, 4.3): the image p' of P from the images a', b' of A, B,
+    # p' = a' + (b' - a')(P - A)/(B - A), the step that finds the inflection pole J from the
+    # acceleration images (Sec. 4.15); the one template, written by both writers, against
+    # the numpy operation (Construction.replay) at every posture
+    cx = _moving_points(["A", "B", "a", "b", "P"], xy)
+    cx.add("image", ("A", "B", "a", "b", "P"), ("p",))
+    t = np.asarray(th)
+    v = cx.replay({"θ": t}, strict=False).values
+    # A and B apart (else both evaluations are only as good as the ratio's conditioning)
+    assume(float(np.min(np.hypot(*(v["B"][:, :2] - v["A"][:, :2]).T))) > 0.5)
+    _both_writers(cx, ["p"], t)
+
+
+@examples(15)
+@given(xy=st.lists(st.floats(-10.0, 10.0), min_size=12, max_size=12),
+       th=st.lists(st.floats(-3.2, 3.2), min_size=1, max_size=4))
+def test_the_euler_savary_template_equals_the_general_function(xy: list[float],
+                                                               th: list[float]) -> None:
+    # Eq. 4.43 laid off from A along the ray IA: R_AJ_A = R_AI²/R_AA' (Examples 4.14, 4.16)
+    import graphkin.kinematics.curvature.euler_savary  # noqa: F401  (registers the operation)
+
+    cx = _moving_points(["I", "A", "C"], xy)
+    cx.add("euler_savary_inflection", ("I", "A", "C"), ("J_A",))
+    t = np.asarray(th)
+    v = cx.replay({"θ": t}, strict=False).values
+    i, a, c = (v[n][:, :2] for n in ("I", "A", "C"))
+    xa = np.hypot(*(a - i).T)
+    # a ray of some length, A' apart from A along it (the lay-off divides by x_A' - x_A)
+    assume(float(xa.min()) > 0.5)
+    assume(float(np.min(np.abs(np.sum((c - i) * (a - i), axis=-1) / xa - xa))) > 0.5)
+    _both_writers(cx, ["J_A"], t)
+
+
+def test_the_image_of_a_link_whose_two_points_coincide_is_not_clean() -> None:
+    # A = B: the ratio (P - A)/(B - A) does not exist; the replay marks the posture, the
+    # Python function hands it to the replay (None) and the JavaScript says null, never NaN
+    cx = _moving_points(["A", "B", "a", "b", "P"],
+                        [0, 0, 1, 0, 0, 0, 1, 0, 2, 1, 1, 1, 3, 0, 1, 1, 4, 4, 1, 2])
+    cx.add("image", ("A", "B", "a", "b", "P"), ("p",))
+    from graphkin.construction.codegen import generate
+
+    assert not bool(np.all(cx.replay({"θ": 0.3}, strict=False).valid))
+    py = generate(cx.steps, varying=["θ"], requests=[("p", "value")])
+    assert py.fn(np.array([0.3])) is None
+    # even when nothing asked for reads it: the replay marks the posture, so must the function
+    py = generate(cx.steps, varying=["θ"], requests=[("P", "value")])
+    assert py.fn(np.array([0.3])) is None
+    fn = generate_js(cx.steps, requests=["p"])
+    assert _run(fn, [{"θ": 0.3}]) == [None]
+
+
+@examples(8)
+@given(xy=st.lists(st.floats(-10.0, 10.0), min_size=4, max_size=4), t=st.floats(-3.2, 3.2))
+def test_a_conjugate_at_infinity_lays_off_the_point_itself(xy: list[float], t: float) -> None:
+    # A' at infinity (A moves on a straight line: a slider's point, Sec. 4.13): J_A = A,
+    # with A' given to the JavaScript as the page gives it, [x, y, 0] (Eq. 4.43, R_AA' → ∞)
+    import graphkin.kinematics.curvature.euler_savary  # noqa: F401
+    from graphkin.construction import Construction
+
+    cx = Construction()
+    cx.add("point", (), ("I",), xy=(xy[0], xy[1]))
+    cx.add("point", (), ("A",), xy=(xy[2], xy[3]))
+    cx.add("ideal_point", (), ("C",), direction=(-np.sin(t), np.cos(t)))
+    cx.add("euler_savary_inflection", ("I", "A", "C"), ("J_A",))
+    ref = np.asarray(cx.replay({}).values["J_A"], dtype=float)
+    fn = generate_js(cx.steps, requests=["J_A"], given=["I", "A", "C"], homogeneous=False,
+                     ideal=["C"])
+    src = (RUNTIME + fn.source + "\nconst RESULT = " + fn.name + "(" + json.dumps(
+        {"I": xy[:2], "A": xy[2:], "C": [-np.sin(t), np.cos(t), 0.0]}) + ", []);")
+    got = run_js(src)
+    np.testing.assert_allclose(got["J_A"], ref[:2] / ref[2], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(got["J_A"], xy[2:], rtol=0, atol=1e-12)
+
+
+def test_soft_leaves_out_only_what_reads_a_step_with_no_clean_answer() -> None:
+    # two parallel lines have no Cartesian meet: with soft=True the meet and what reads it
+    # are null, the other results are returned (the curvature panel keeps its inflection
+    # circle where Hain's G_T is at infinity, Example 4.16); without, the whole is null
+    from graphkin.construction import Construction
+
+    cx = Construction()
+    for n, p in (("A", (0.0, 0.0)), ("B", (1.0, 0.0)), ("C", (0.0, 1.0)), ("D", (1.0, 1.0)),
+                 ("E", (0.0, 2.0))):
+        cx.add("point", (), (n,), xy=p)
+    cx.add("join", ("A", "B"), ("AB",))
+    cx.add("join", ("C", "D"), ("CD",))   # parallel to AB
+    cx.add("join", ("A", "D"), ("AD",))
+    cx.add("meet", ("AB", "CD"), ("X",))  # at infinity
+    cx.add("meet", ("CD", "AD"), ("Y",))  # D
+    cx.add("circle_on_diameter", ("X", "E"), ("k",))  # reads X
+    given = ["A", "B", "C", "D", "E"]
+    args = json.dumps({"A": [0, 0], "B": [1, 0], "C": [0, 1], "D": [1, 1], "E": [0, 2]})
+    soft = generate_js(cx.steps, requests=["X", "Y", "k"], given=given, homogeneous=False,
+                       soft=True)
+    got = run_js(RUNTIME + soft.source + f"\nconst RESULT = {soft.name}({args}, []);")
+    assert got["X"] is None and got["k"] is None
+    np.testing.assert_allclose(got["Y"], [1.0, 1.0], rtol=0, atol=1e-12)
+    hard = generate_js(cx.steps, requests=["X", "Y", "k"], given=given, homogeneous=False)
+    assert run_js(RUNTIME + hard.source + f"\nconst RESULT = {hard.name}({args}, []);") is None

@@ -50,7 +50,13 @@ from typing import Any
 import numpy as np
 
 from graphkin.construction.ops import OPS
-from graphkin.construction.ops.runtime import ORIGINATING, _all_finite, tangent_cc, tangent_lc
+from graphkin.construction.ops.runtime import (
+    KERNELS,
+    ORIGINATING,
+    _all_finite,
+    tangent_cc,
+    tangent_lc,
+)
 from graphkin.construction.step import Step
 from graphkin.geometry import ops as g
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
@@ -446,7 +452,10 @@ def _live(steps: Sequence[Step], wanted: set[str]) -> list[bool]:
             need[k] = True
             live.difference_update(s.outputs)
             continue
-        fails = s.op in ORIGINATING or s.op not in TEMPLATES or s.op in PYTHON_GENERIC
+        # a step with no compiled kernel is checked by the replay wherever it runs (an image
+        # of a link whose two points coincide): its template's checks are kept too
+        fails = (s.op in ORIGINATING or s.op not in TEMPLATES or s.op in PYTHON_GENERIC
+                 or (s.op not in KERNELS and bool(s.inputs)))
         if fails or not live.isdisjoint(s.outputs):
             need[k] = True
             live.difference_update(s.outputs)

@@ -141,6 +141,12 @@ class JSGen(Gen):
         self.owner = "K"
         self.count = 0
         self.helpers: set[str] = set()
+        #: soft: a step with no clean answer makes its own outputs (and what reads them) null,
+        #: not the whole function; ``conds`` collects the current step's conditions
+        self.soft = False
+        self.conds: list[str] | None = None
+        self.flags: dict[str, str] = {}
+        self.cse_flags: dict[Any, str] = {}
 
     # the forms that differ from Python
     def let(self, expr: str, hint: str = "t") -> str:
@@ -154,7 +160,11 @@ class JSGen(Gen):
         return name
 
     def bail_unless(self, cond: str) -> None:
-        """Return ``null`` (not clean) unless ``cond`` holds."""
+        """Return ``null`` (not clean) unless ``cond`` holds (soft: the step's outputs only)."""
+        if self.soft and self.conds is not None:
+            if cond not in self.conds:
+                self.conds.append(cond)
+            return
         line = f"  if (!({cond})) return null;"
         if line not in self.memo:
             self.memo[line] = ""
@@ -207,7 +217,7 @@ class JSGen(Gen):
 def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
                 tol: Tolerance | None = None, name: str = "construction",
                 given: Iterable[str] = (), homogeneous: bool | None = None,
-                ideal: Iterable[str] = ()) -> JSFunction:
+                ideal: Iterable[str] = (), soft: bool = False) -> JSFunction:
     """Write the steps out as one JavaScript function of the inputs and the dimensions.
 
     Parameters
@@ -232,7 +242,15 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
     ideal : iterable of str
         Given points read as homogeneous ``[x, y, w]`` even in Cartesian
         coordinates (a center of curvature at infinity, Sec. 4.13); only a
-        ``join`` may read them (it then takes its homogeneous form).
+        ``join`` or an Euler-Savary lay-off may read them (it then takes its
+        homogeneous form).
+    soft : bool
+        Where a step has no clean answer, return ``null`` for its outputs and
+        for every request that reads them, and the other requests' values
+        (the curvature panel: Hain's ``G_T`` at infinity, Example 4.16, leaves
+        the inflection circle drawn).  Default: the whole function returns
+        ``null``.  A given input that is missing or not finite is ``null``
+        either way.
 
     Returns
     -------
@@ -252,6 +270,7 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
     ideal = set(ideal)
     homogeneous = bool(given) if homogeneous is None else homogeneous
     gen = JSGen(tol, homogeneous=homogeneous)
+    gen.soft = soft
     inputs: list[str] = []
     need = _live(steps, set(requests))
     for step, needed in zip(steps, need):
@@ -285,23 +304,33 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
         if key is not None and key in gen.cse:
             for lab, v in zip(step.outputs, gen.cse[key]):
                 gen.vals[lab] = v
+                if key in gen.cse_flags:
+                    gen.flags[lab] = gen.cse_flags[key]
             continue
         tpl = TEMPLATES.get(step.op)
         if tpl is None:
             raise Unsupported(f"the operation {step.op!r} has no template")
         gen.owner, gen.count = (step.outputs[0] if step.outputs else step.op), 0
+        gen.conds = []
         try:
             tpl(gen, step)
         except NeedGeneric as e:
             raise Unsupported(f"the operation {step.op!r} cannot be written for {e}") from e
+        if soft:
+            _flag(gen, step)
+        gen.conds = None
         if key is not None:
             gen.cse[key] = tuple(gen.vals[o] for o in step.outputs)
+            if step.outputs and step.outputs[0] in gen.flags:
+                gen.cse_flags[key] = gen.flags[step.outputs[0]]
     out = []
     for lab in requests:
         got = gen.vals.get(lab)
         if got is None:
             raise Unsupported(f"no step makes {lab!r}")
         ex = got.ex[0] if got.form == "scalar" else f"[{', '.join(got.ex)}]"
+        if lab in gen.flags:
+            ex = f"{gen.flags[lab]} ? {ex} : null"
         out.append(f"    {js_string(lab)}: {ex},")
     fname = _js_ident(name)
     helpers = _helpers_js(tol)
@@ -309,6 +338,23 @@ def generate_js(steps: Sequence[Step], *, requests: Iterable[str],
     src += (f"function {fname}(I, K) {{\n" + "\n".join(gen.lines) + "\n  return {\n"
             + "\n".join(out) + "\n  };\n}\n")
     return JSFunction(src, fname, tuple(inputs), tuple(gen.slots), requests)
+
+
+def _flag(gen: JSGen, step: Step) -> None:
+    """Soft: the name of "this step's outputs are clean" (its conditions and its inputs')."""
+    conds = list(gen.conds or [])
+    for i in step.inputs:
+        f = gen.flags.get(i)
+        if f is not None and f not in conds:
+            conds.append(f)
+    if not conds:
+        return
+    name = conds[0] if len(conds) == 1 and conds[0] in gen.flags.values() else None
+    if name is None:
+        name = gen.tmp("ok")
+        gen.lines.append(f"  const {name} = {' && '.join(f'({c})' for c in conds)};")
+    for o in step.outputs:
+        gen.flags[o] = name
 
 
 def _js_ident(name: str) -> str:

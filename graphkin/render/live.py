@@ -155,13 +155,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
 
     data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
     js += cjs
-    if rates:
-        from graphkin.render.live_curvature import curvature_data
+    from graphkin.render.live_curvature import curvature_data
 
-        curv = curvature_data(mech, points, made)
-        if curv is not None:
-            data["curvature"], vjs = curv
-            js += vjs
+    data["curvature"], vjs = curvature_data(mech, points, made)
+    js += vjs
     from graphkin.render.live_forces import forces_data
 
     fd = forces_data(mech, points, made)
@@ -258,7 +255,8 @@ draw my velocity polygon</button>
 <figure><figcaption>Acceleration polygon</figcaption><svg id="gk-acceleration"></svg></figure>
 <figure><figcaption>Kennedy circle</figcaption><svg id="gk-kennedy"></svg>
 <p id="gk-centers-note"></p></figure>
-<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg></figure>
+<figure><figcaption>Curvature</figcaption><svg id="gk-curvature"></svg>
+<p id="gk-curvature-note"></p></figure>
 <figure><figcaption>Force polygons</figcaption><svg id="gk-forces"></svg>
 <p id="gk-forces-note"></p></figure>
 <figure><figcaption>Free bodies</figcaption><svg id="gk-bodies"></svg></figure>

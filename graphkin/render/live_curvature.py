@@ -3,30 +3,38 @@
 graphkin records, for each moving link, the curvature construction of its
 motion (:func:`graphkin.kinematics.curvature.link.curvature_constructions`,
 Secs. 4.12-4.17 of Uicker, Pennock & Shigley, 5th ed.): the velocity pole
-``I`` from two pairs of conjugate points, Bobillier's construction of the
-inflection pole ``J`` and the inflection circle, ``Γ`` by the four circles of
-Fig. 4.33, the conjugates of Hartmann/Euler-Savary, Hain's construction of
-the cubic of stationary curvature (``G_N``, ``G_T``) and Ball's point ``U``.
-Here those steps are written out as a third JavaScript function whose given
-points are taken from the posture function's results on every pointer move:
+``I``, the inflection pole ``J`` by Bobillier's construction, by the
+Euler-Savary lay-off (Eq. 4.43) or from the acceleration image of the point
+at ``I`` (Sec. 4.15: inverted slider-cranks, Rapson's slide, five-bars), the
+inflection circle, ``Γ`` by the four circles of Fig. 4.33, the conjugates of
+Hartmann/Euler-Savary, Hain's construction of the cubic of stationary
+curvature (``G_N``, ``G_T``) and Ball's point ``U``.  Here those steps are
+written out as a third JavaScript function whose given points are taken
+from the posture function's results on every pointer move:
 
 * a point of the mechanism: its position;
 * ``A_X`` (the acceleration of X drawn from X to the scale ``1/ω²``):
-  ``X + (a(X) - o_a) / ω_k²``; ``V_X`` likewise ``X + (v(X) - o_v) / |ω_k|``.
+  ``X + (a(X) - o_a) / ω_k²``; ``V_X`` likewise ``X + (v(X) - o_v) / |ω_k|``;
+* an auxiliary point of the link (and its ``A_``, ``V_``): from two points of
+  the link by their complex ratio (Mehmke), or from a block's one pin and
+  the link's angle;
+* a center of curvature at infinity: normal to a slider's line.
 
-Which given is which is found by value at the file's posture (each given
-point must be one of those, to 1e-9 of the mechanism's size).  Steps the page
-cannot redo from the posture are left out with everything that depends on
-them: a step whose numbers were fixed by the file's rates (the Bresse
-circle's ``similar`` steps carry ``ω²/α`` of the file's posture; the
-closed-form Euler-Savary step), a given that is not one of the above (an
-auxiliary point, a center of curvature at infinity), an operation with no
-template.  A link that turns about a frame pivot (its inflection circle is
-the point ``I``) has no panel.
+Which given is which is found by value at the file's posture (to 1e-9 of the
+mechanism's size), what its label says first.  The link is the one ``graphkin
+draw -d curvature`` draws when the page can redo it.  Steps the page cannot
+redo are left out with everything that depends on them: a step whose numbers
+were fixed by the file's rates (a ``similar`` step other than the Bresse
+diameter, whose ratio ``ω²/α`` the page gives), an identity of the file's
+posture (``copy_point``: Γ = J where α = 0, U = J), a given that is none of
+the above, an operation with no template.  The function is written
+``soft``: a result with no clean answer at a posture is ``null`` on its own.
+Where no link is left, the panel's data is one line saying why (``why``).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -41,24 +49,28 @@ __all__ = ["curvature_data"]
 
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
 # (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
-_FIXED_BY_RATES = ("similar", "euler_savary_inflection")
+_FIXED_BY_RATES = ("similar",)
+# an identity of the file's posture, not a construction: Γ = J where α = 0 (Sec. 4.15), U = J
+# where the cubic contains the centrode normal (Example 4.16); a drag parts them
+_AT_THIS_POSTURE = ("copy_point",)
 
 
 def _bresse(step: Any, st: Any) -> str | None:
-    """A ``similar`` step on I, J the page can redo: ``"turn"``, ``"ratio"`` or None.
+    """A ``similar`` step on I, J the page can redo: ``"sign"``, ``"ratio"`` or None.
 
     The curvature construction lays off along the centrode tangent from I
-    ``(J - I)`` turned 90°, times 1 (the pole velocity's direction) or times
-    ``ω²/α`` (the Bresse diameter, Eq. 4.48: ``local_p = (0, ω²/α)``); the page
-    gives that ratio from the posture's ω and α on every move.
+    ``(J - I)`` turned 90°, times the sign of ω (the pole velocity ``v``, drawn
+    to the scale ``1/|ω|``, Eq. 4.47) or times ``ω²/α`` (the Bresse diameter,
+    Eq. 4.48: ``local_p = (0, ω²/α)``); the page gives that sign or ratio from
+    the posture's ω and α on every move.
     """
     la, lb, lp = (tuple(float(v) for v in step.params[k])
                   for k in ("local_a", "local_b", "local_p"))
     if la != (0.0, 0.0) or lb != (1.0, 0.0) or lp[0] != 0.0:
         return None
-    if lp[1] == 1.0:
-        return "turn"
     w, a = float(st.omega), float(st.alpha)
+    if step.outputs[0].endswith("v") and lp[1] == (1.0 if w > 0 else -1.0):
+        return "sign"
     if a != 0.0 and abs(lp[1] - w * w / a) <= 1e-9 * abs(lp[1]):
         return "ratio"
     return None
@@ -106,7 +118,9 @@ def _two_points(sol: Any, lid: str, points: list[str]) -> tuple[str, str] | None
             d = float(np.hypot(*(np.asarray(sol.position(q)) - np.asarray(sol.position(p)))))
             if d > far:
                 best, far = (p, q), d
-    return best if far > 0.0 else None
+    # two points nearly coincident (a block's pin and slider point, apart by round-off) give
+    # the complex ratio of Sec. 4.15 no conditioning: the link's angle does instead
+    return best if far > 1e-6 * (1.0 + float(sol.mechanism.scale)) else None
 
 
 def _body_given(sol: Any, lid: str, pq: tuple[str, str], label: str, xy: np.ndarray,
@@ -134,9 +148,163 @@ def _body_given(sol: Any, lid: str, pq: tuple[str, str], label: str, xy: np.ndar
     return {"body": list(pq), "z": [z.real, z.imag], "pos": [float(xy[0]), float(xy[1])]}
 
 
+def _turn_given(sol: Any, lid: str, anchor: str, label: str, xy: np.ndarray,
+                given: dict[str, dict[str, Any]], size: float) -> dict[str, Any] | None:
+    """An auxiliary point of a link with one point only, or its acceleration (velocity) drawn.
+
+    A block has one named point ``P`` (its pin); the link's other points are
+    ``H = P + R(θ) d`` with ``θ`` the link's angle and ``d`` fixed in the link,
+    and, as for any two points of one link (Eqs. 3.4 and 4.5),
+    ``V_H = V_P + ω k × R_HP`` and ``A_H = A_P + α k × R_HP - ω² R_HP``.
+    Each is checked against the construction's own given at the file's posture.
+    """
+    st = sol.links[lid]
+    p = np.asarray(sol.position(anchor), dtype=float)
+    t = float(np.asarray(st.angle, dtype=float))
+    w, al = float(st.omega), float(st.alpha)
+    c, sn = np.cos(t), np.sin(t)
+
+    def turned(d: np.ndarray) -> np.ndarray:
+        return np.array([c * d[0] - sn * d[1], sn * d[0] + c * d[1]])
+
+    for pre, key, k in (("A_", "atip", w * w), ("V_", "vtip", abs(w))):
+        body = given.get(label[len(pre):]) if label.startswith(pre) else None
+        if body is not None and "d" in body and k != 0.0:
+            r = turned(np.asarray(body["d"], dtype=float))
+            if key == "atip":
+                rel = al * np.array([-r[1], r[0]]) - w * w * r
+                base = np.asarray(sol.acceleration(anchor), dtype=float)
+            else:
+                rel = w * np.array([-r[1], r[0]])
+                base = np.asarray(sol.velocity(anchor), dtype=float)
+            h = p + r + (base + rel) / k
+            if float(np.hypot(*(h - xy))) <= 1e-9 * size:
+                return {"turn": anchor, "d": body["d"], key: True}
+            return None
+    d = xy - p
+    return {"turn": anchor, "d": [float(c * d[0] + sn * d[1]), float(-sn * d[0] + c * d[1])]}
+
+
+def _needed(steps: list[Any], requests: list[str]) -> list[Any]:
+    """The steps the requested labels read, directly or not (no other step can fail the page).
+
+    A line drawn for the figure only (the collineation axis IQ, through Q at
+    infinity at Example 4.16's posture) would make the whole function return
+    ``null`` where its meet has no clean answer.
+    """
+    live = set(requests)
+    keep: list[Any] = []
+    for s in reversed(steps):
+        if live & set(s.outputs):
+            keep.append(s)
+            live.update(s.inputs)
+    return keep[::-1]
+
+
+@dataclass
+class _Plan:
+    """What the page can redo of one link's curvature construction."""
+
+    lid: str
+    cx: Any
+    given: dict[str, dict[str, Any]]
+    ok: set[str]
+    results: list[str]
+    ratios: list[str]
+    signs: list[str]
+
+
+def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
+          size: float) -> _Plan | str:
+    """The steps of link ``lid``'s construction the page can redo, or why it has no panel."""
+    if f"ω{lid}" not in made or f"α{lid}" not in made:
+        return f"the page does not find ω{lid} and α{lid}"
+    cands = _candidates(sol, lid, points)
+    given: dict[str, dict[str, Any]] = {}
+    ok: set[str] = set()
+    why: dict[str, str] = {}  # a label the page cannot redo: the first reason
+    ratios: list[str] = []
+    signs: list[str] = []
+    pq = _two_points(sol, lid, points)
+    # a block (one point): its other points from that point and the link's angle
+    one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
+        if pq is None and f"θ{lid}" in made else None
+    for s in cx.steps:
+        blocked = next((why.get(i, f"{i} is not made") for i in s.inputs if i not in ok), None)
+        hit: dict[str, Any] | None = None
+        if s.op == "point" and not s.inputs:
+            lab = s.outputs[0]
+            xy = np.asarray(s.params["xy"], dtype=float)
+            # what the label says first (the point X, V_X from X, A_X from X): another point
+            # may coincide with it at the file's posture only (a slider's C on the frame's
+            # L1a, A_A on the rod's end R) and part on a drag
+            pre = lab[:2] if lab[:2] in ("A_", "V_") else ""
+            want = {"A_": "atip", "V_": "vtip", "": "point"}[pre]
+            same = [g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size]
+            hit = next((g for g in same if g.get(want) == lab[len(pre):]), None)
+            aux = given.get(lab[len(pre):], {}) if pre else {}
+            if hit is None and not ("z" in aux or "d" in aux):
+                hit = same[0] if same else None
+            if hit is None and pq is not None:
+                hit = _body_given(sol, lid, pq, lab, xy, given, size)
+            elif hit is None and one is not None:
+                hit = _turn_given(sol, lid, one, lab, xy, given, size)
+            blocked = None if hit is not None else (
+                f"its given point {s.outputs[0]} is not one the page finds from the posture")
+        elif s.op == "ideal_point":
+            hit = _slider_normal(sol, s.params["direction"])
+            blocked = None if hit is not None else (
+                f"its given {s.outputs[0]} at infinity is not normal to a slider's line")
+        elif blocked is not None:
+            pass
+        elif s.op == "similar":
+            kind = _bresse(s, sol.links[lid])
+            if kind == "ratio":
+                ratios.append(s.outputs[0])
+            elif kind == "sign":
+                signs.append(s.outputs[0])
+            elif kind is None:
+                blocked = f"the step making {s.outputs[0]} carries the file posture's rates"
+        elif s.op in _AT_THIS_POSTURE:
+            blocked = f"{s.outputs[0]} = {s.inputs[0]} holds at the file's posture only"
+        elif s.op not in TEMPLATES or s.op == "point":
+            blocked = f"the operation {s.op!r} has no template"
+        if hit is not None:
+            given[s.outputs[0]] = dict(hit, link=lid)
+        if blocked is None:
+            ok.update(s.outputs)
+        else:
+            why.update({o: blocked for o in s.outputs})
+    results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
+               and s.outputs and s.outputs[0] in ok]
+    if "J" not in results and "inflection circle" not in results:
+        return why.get("J", why.get("inflection circle", "it has no inflection pole J"))
+    return _Plan(lid, cx, given, ok, results, ratios, signs)
+
+
+def _why_none(sol: Any, tol: Any) -> str:
+    """Why no link has a curvature construction (each turns about a pivot, or none turns)."""
+    from graphkin.kinematics.curvature.link import _turning
+
+    mech = sol.mechanism
+    turning = [lid for lid in mech.moving if _turning(sol, lid, tol)]
+    if not turning:
+        return "no link turns at the file's posture (ω = 0): every velocity pole is at infinity"
+    if len(turning) == 1:
+        return (f"link {turning[0]} turns about a frame pivot: its velocity pole I is the "
+                "pivot, and its inflection circle shrinks to that point (Sec. 4.13)")
+    return (f"links {', '.join(turning[:-1])} and {turning[-1]} each turn about a frame "
+            "pivot: the velocity pole I of each is its pivot, and its inflection circle "
+            "shrinks to that point (Sec. 4.13)")
+
+
 def curvature_data(mech: Mechanism, points: list[str],
-                   made: set[str]) -> tuple[dict[str, Any], str] | None:
-    """The curvature panel's data and the JavaScript of its construction, or None.
+                   made: set[str]) -> tuple[dict[str, Any], str]:
+    """The curvature panel's data and the JavaScript of its construction.
+
+    The link is the one ``graphkin draw -d curvature`` draws (the first coupler
+    with a curvature construction) when the page can redo its construction,
+    else the link whose construction it redoes most of.
 
     Parameters
     ----------
@@ -148,78 +316,60 @@ def curvature_data(mech: Mechanism, points: list[str],
 
     Returns
     -------
-    (dict, str) or None
+    (dict, str)
         ``{"link", "given", "labels", "results", "K"}`` and the source of
-        ``curvature(I, K)``; None when no link has a curvature construction the
-        page can redo.
+        ``curvature(I, K)``; or ``({"why": line}, "")`` when the page has no
+        curvature panel, ``line`` saying why in the user's words.
     """
     from graphkin.construction.ops import templates  # noqa: F401  (registers the templates)
     from graphkin.kinematics.curvature.link import curvature_constructions
 
     try:
         sol = mech.solve()
-        ccs = curvature_constructions(sol)
-    except GraphkinError:
-        return None
+        if not sol.has_rates or not sol.has_accelerations:
+            return {"why": "the file gives no rates (the inflection circle needs the angular "
+                           "velocity and acceleration)"}, ""
+        if not any(f"ω{lid}" in made for lid in mech.links if lid != FRAME):
+            rates = getattr(mech, "rates", None)
+            return {"why": (f"the file gives the rates of link {rates.link} ([rates]), not the "
+                            "drive's, and the page redoes the polygons from the drive's"
+                            if rates is not None else
+                            "the page does not construct this mechanism's velocity and "
+                            "acceleration polygons, which the curvature construction reads")}, ""
+        ccs = {lid: cx for lid, cx in curvature_constructions(sol).items()
+               if lid != FRAME and any(s.op != "point" for s in cx.steps)}
+    except GraphkinError as exc:
+        return {"why": f"no curvature construction at the file's posture ({exc})"}, ""
+    if not ccs:
+        return {"why": _why_none(sol, DEFAULT_TOL)}, ""
     size = 1.0 + float(mech.scale)
-    best: tuple[int, str, Any, dict[str, dict[str, Any]], list[str], set[str],
-                list[str]] | None = None
-    for lid, cx in ccs.items():
-        if lid == FRAME or f"ω{lid}" not in made:
-            continue
-        cands = _candidates(sol, lid, points)
-        given: dict[str, dict[str, Any]] = {}
-        ok: set[str] = set()
-        ratios: list[str] = []
-        pq = _two_points(sol, lid, points)
-        for s in cx.steps:
-            if s.op == "point" and not s.inputs:
-                xy = np.asarray(s.params["xy"], dtype=float)
-                # the point of that name first: another point may coincide with it at the
-                # file's posture only (a slider's C on the frame's L1a) and part on a drag
-                same = [g for g, v in cands if float(np.hypot(*(v - xy))) <= 1e-9 * size]
-                hit = next((g for g in same if g.get("point") == s.outputs[0]),
-                           same[0] if same else None)
-                if hit is None and pq is not None:
-                    hit = _body_given(sol, lid, pq, s.outputs[0], xy, given, size)
-                if hit is not None:
-                    given[s.outputs[0]] = dict(hit, link=lid)
-                    ok.add(s.outputs[0])
-            elif s.op == "ideal_point":
-                hit = _slider_normal(sol, s.params["direction"])
-                if hit is not None:
-                    given[s.outputs[0]] = dict(hit, link=lid)
-                    ok.add(s.outputs[0])
-            elif s.op == "similar" and all(i in ok for i in s.inputs):
-                kind = _bresse(s, sol.links[lid])
-                if kind is not None:
-                    ok.update(s.outputs)
-                    if kind == "ratio":
-                        ratios.append(s.outputs[0])
-            elif (s.op in TEMPLATES and s.op not in _FIXED_BY_RATES and s.op != "point"
-                  and all(i in ok for i in s.inputs)):
-                ok.update(s.outputs)
-        results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
-                   and s.outputs and s.outputs[0] in ok]
-        if "J" not in results and "inflection circle" not in results:
-            continue
-        if best is None or len(results) > best[0]:
-            best = (len(results), lid, cx, given, results, ok, ratios)
-    if best is None:
-        return None
-    _, lid, cx, given, results, ok, ratios = best
+    frame_points = set(mech.links[FRAME].points)
+    couplers = [k for k in ccs if not frame_points & set(mech.links[k].points)]
+    first = (couplers or list(ccs))[0]
+    plans = {lid: _plan(sol, lid, cx, points, made, size) for lid, cx in ccs.items()}
+    good = [p for p in plans.values() if isinstance(p, _Plan)]
+    if not good:
+        return {"why": f"the curvature construction of link {first} cannot be redone on the "
+                       f"page: {plans[first]}"}, ""
+    first_plan = plans[first]
+    plan = first_plan if isinstance(first_plan, _Plan) else max(
+        good, key=lambda p: len(p.results))
+    cx, given, ok = plan.cx, plan.given, plan.ok
     extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
-    requests = results + [lab for lab in extra if lab in ok and lab not in results]
-    steps = [s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)]
+    requests = plan.results + [lab for lab in extra if lab in ok and lab not in plan.results]
+    steps = _needed([s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)],
+                    requests)
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
                          given=given, homogeneous=False,
-                         ideal=[lab for lab, g in given.items() if "slider" in g])
-    except Unsupported:
-        return None
+                         ideal=[lab for lab, g in given.items() if "slider" in g], soft=True)
+    except Unsupported as exc:
+        return {"why": f"the curvature construction cannot be written for the page ({exc})"}, ""
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}
     names = [n for n, _ in fn.slots]
-    return ({"link": lid, "given": given, "labels": list(requests), "results": results,
-             "kinds": {lab: kinds[lab] for lab in requests}, "K": fn.values,
-             "ratios": [names.index(f"{lab}.1") for lab in ratios if f"{lab}.1" in names]},
+    return ({"link": plan.lid, "given": given, "labels": list(requests),
+             "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
+             "K": fn.values,
+             "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],
+             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names]},
             fn.source)

@@ -17,14 +17,15 @@ tangent T.
 from __future__ import annotations
 
 import json
+from typing import Any
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
-from live_edit import edited
-from spec_data import EXAMPLES
+from live_edit import edited, same_curvature
+from spec_data import EXAMPLES, ROOT
 from strategies import RandomMechanism, examples, fourbars, six_bars, slider_cranks
 
 import graphkin
@@ -54,15 +55,10 @@ def _page(data: dict, js: str, drive: float):
     return run_js(src)
 
 
-def _compare(data: dict, got: dict, ref: dict, size: float) -> None:
-    V = data["curvature"]
-    for lab in V["labels"]:
-        g = np.asarray(got[lab], dtype=float)
-        r = np.asarray(ref[lab], dtype=float)
-        if V["kinds"][lab] == "point":
-            r = r[:2] / r[2]
-        scale = max(size, float(np.abs(r).max(initial=0.0)))
-        np.testing.assert_allclose(g, r, rtol=0, atol=REL * scale, err_msg=lab)
+def _compare(data: dict, got: dict, ref: Any, size: float) -> int:
+    """The page's values against graphkin's ``LinkCurvature`` (see live_edit.same_curvature)."""
+    steps = ref.construction.steps if ref.construction is not None else ()
+    return same_curvature(data, got, ref.values, size, steps=steps)
 
 
 def _check(rm: RandomMechanism, offset: float) -> bool:
@@ -72,8 +68,8 @@ def _check(rm: RandomMechanism, offset: float) -> bool:
         data, js = live_data(mech, rm.data, "<random>")
     except InputError:
         return False
-    if "curvature" not in data:
-        return False
+    if "link" not in data["curvature"]:
+        return False  # no panel: the page says why (test_the_page_says_why_it_has_no_panel)
     d = data["drive"]
     drive = d["value"] + offset * (1.0 if d["degrees"] else mech.scale)
     out = _page(data, js, drive)
@@ -86,7 +82,7 @@ def _check(rm: RandomMechanism, offset: float) -> bool:
         return False
     if not bool(np.all(sol.valid)):
         return False
-    _compare(data, out["v"], lc.values, 1.0 + mech.scale)
+    _compare(data, out["v"], lc, 1.0 + mech.scale)
     return True
 
 
@@ -112,7 +108,7 @@ def test_example_3_2_coupler_with_a_center_of_curvature_at_infinity() -> None:
     assert abs(i[0] - c[0]) < 1e-9 * 200  # on the vertical through C
     assert abs((b - a)[0] * (i - a)[1] - (b - a)[1] * (i - a)[0]) < 1e-9 * 200 ** 2
     sol = mech.solve()
-    _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
+    _compare(data, v, curvature(sol)["3"], 1.0 + mech.scale)
 
 
 def test_example_3_1_coupler(tmp_path) -> None:
@@ -143,7 +139,7 @@ def test_example_3_1_coupler(tmp_path) -> None:
         # Γ where the Bresse circle meets the inflection circle is Γ by the four circles
         np.testing.assert_allclose(v["Γ"], v["Γ (four circles)"], rtol=0, atol=1e-9 * 100)
         sol = from_dict(edited(data, data["drive"]["value"] + turn, r), source="e").solve()
-        _compare(data, v, curvature(sol)["3"].values, 1.0 + mech.scale)
+        _compare(data, v, curvature(sol)["3"], 1.0 + mech.scale)
 
 
 def test_a_point_that_coincides_with_a_frame_point_only_at_the_files_posture() -> None:
@@ -165,3 +161,111 @@ def test_a_point_that_coincides_with_a_frame_point_only_at_the_files_posture() -
     page, js = live_data(mech, data, "<test>")
     assert page["curvature"]["given"]["C"]["point"] == "C"
     assert _check(RandomMechanism(kind="slider-crank", data=data, truth={}, omega={}), 0.05)
+
+
+def _draws_link(sol: Any) -> str | None:
+    """The link ``graphkin draw -d curvature`` draws (render/sources.py): the first coupler.
+
+    None when each link with a construction turns about a frame pivot (its
+    inflection circle is the pivot: the page has no panel and says why).
+    """
+    links = [k for k, v in curvature(sol).items()
+             if v.construction is not None and v.method != "pivot"]
+    frame = set(sol.mechanism.links["1"].points)
+    couplers = [k for k in links if not frame & set(sol.mechanism.links[k].points)]
+    return (couplers or links or [None])[0]
+
+
+_GALLERY = ROOT / "gallery"
+
+
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("ex[0-9]*.toml")) + sorted(
+    p for d in ("mechanisms", "centers", "curvature") for p in (_GALLERY / d).glob("*.toml")),
+    ids=lambda p: p.stem)
+def test_the_page_has_the_curvature_panel_draw_has(path) -> None:
+    # every spec example and gallery mechanism file: the page draws the curvature of the link
+    # graphkin draw -d curvature draws, at the file's posture to 1e-9 (the values it can
+    # construct there); where draw has none, the page says why in one line
+    try:
+        mech = graphkin.load(path)
+        data, js = live_data(mech, load_toml(path), path.name)
+    except InputError:
+        return  # no live page (not solved by a construction): the command says so
+    V = data["curvature"]
+    try:
+        drawn = _draws_link(mech.solve()) if mech.solve().has_rates else None
+    except GraphkinError:
+        drawn = None
+    if drawn is None or not data["rates"]:
+        # no panel in draw, or no polygons on the page (rates given for a link other than
+        # the drive's, [rates]: the page moves the drive): why, in one line
+        assert V["why"] and "\n" not in V["why"] and "link" not in V
+        return
+    assert V.get("link") == drawn, V.get("why")
+    out = _page(data, js, data["drive"]["value"])
+    assert out is not None and out["v"] is not None
+    assert _compare(data, out["v"], curvature(mech.solve())[drawn], 1.0 + mech.scale) >= 4
+
+
+@pytest.mark.parametrize(("name", "words"), [
+    ("ex2_5_open", "the file gives no rates"),
+    ("ex4_7_cam_follower", "links 2 and 3 each turn about a frame pivot"),
+    ("ex4_14_inflection_bresse", "the file gives the rates of link 3 ([rates])")])
+def test_the_page_says_why_it_has_no_panel(name: str, words: str) -> None:
+    path = EXAMPLES / f"{name}.toml"
+    data, js = live_data(graphkin.load(path), load_toml(path), path.name)
+    assert data["curvature"]["why"].startswith(words)
+    assert "curvature(" not in js
+
+
+def test_example_4_16_leaves_out_only_what_is_at_infinity_there() -> None:
+    # Example 4.16 (Fig. 4.39): at the file's posture Hain's G_T is at infinity (the cubic's
+    # n is infinite) and U = J; the page draws I, J, the circles, Γ and C' there and leaves
+    # out G_T and what it finds through B_T at infinity (G_N): null, never NaN; after a turn
+    # of the crank every value is back and equals graphkin's.  U = J holds at that posture
+    # only (a drag parts them), so the page does not carry U
+    path = EXAMPLES / "ex4_16_cubic.toml"
+    mech = graphkin.load(path)
+    data, js = live_data(mech, load_toml(path), path.name)
+    assert "U" not in data["curvature"]["labels"]
+    out = _page(data, js, data["drive"]["value"])
+    v = out["v"]
+    assert v["G_T"] is None and v["G_N"] is None
+    assert _compare(data, v, curvature(mech.solve())["3"], 1.0 + mech.scale) >= 8
+    turned = data["drive"]["value"] + np.radians(5.0)
+    out = _page(data, js, turned)
+    assert all(out["v"][lab] is not None for lab in data["curvature"]["labels"])
+    sol = from_dict(edited(data, turned, out["r"]), source="e").solve()
+    assert _compare(data, out["v"], curvature(sol)["3"], 1.0 + mech.scale) == len(
+        data["curvature"]["labels"])
+
+
+@pytest.mark.parametrize("name", ["ex3_3_inverted_slider", "ex4_11_rapsons_slide",
+                                  "ex4_16_cubic", "ex5_4_fivebar"])
+def test_the_panel_does_not_move_with_round_off(name: str) -> None:
+    # the page's verdicts (which link, which given is which, which steps it can redo) rest on
+    # values clearly above round-off: at the file's posture and with every point of the file
+    # moved by 1e-12 of the mechanism's size, the page redoes every result of graphkin's
+    # construction of draw's link but an identity of that posture (U = J, Γ = J: copy_point).
+    # (graphkin's construction itself may differ between the two: which auxiliary points
+    # it takes among equally good pairs, whether Example 4.16's four circles are drawn)
+    path = EXAMPLES / f"{name}.toml"
+    data0 = load_toml(path)
+    moved = json.loads(json.dumps(data0))
+    eps = 1e-12 * graphkin.load(path).scale
+    for k, lk in enumerate(moved["links"].values()):
+        for j, n in enumerate(lk):
+            lk[n] = [lk[n][0] + eps * ((k + j) % 3 - 1), lk[n][1] - eps * ((k * j) % 3 - 1)]
+    links = set()
+    for data in (data0, moved):
+        mech = from_dict(data, source=path.name)
+        page, _ = live_data(mech, data, path.name)
+        sol = mech.solve()
+        lid = _draws_link(sol)
+        assert page["curvature"].get("link") == lid
+        links.add(lid)
+        steps = curvature(sol)[lid].construction.steps
+        expected = [st.outputs[0] for st in steps
+                    if st.role.name == "RESULT" and st.op != "copy_point"]
+        assert page["curvature"]["results"] == expected
+    assert len(links) == 1

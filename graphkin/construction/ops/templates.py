@@ -315,6 +315,24 @@ def _similar(gen: Gen, step: Step) -> None:
                   gen.add(gen.add(gen.mul(d0, qi), gen.mul(d1, qr)), ay))
 
 
+@template("image")
+def _image(gen: Gen, step: Step) -> None:
+    # Mehmke's theorem (Secs. 3.5, 4.3): p' = a' + (b' - a') q, the complex ratio
+    # q = (P - A) / (B - A) of the link's points taken from their positions now (the
+    # acceleration image of the point of a link at I, whose tip is J: Sec. 4.15)
+    a, b, ia, ib, p = step.inputs
+    r0, r1 = _diff(gen, a, b)
+    s0, s1 = _diff(gen, a, p)
+    den = gen.let(gen.add(gen.mul(r0, r0), gen.mul(r1, r1)), "dd")
+    _positive(gen, den)  # A and B apart: the general function divides by |B - A|²
+    qr = gen.let(_div(gen, gen.add(gen.mul(s0, r0), gen.mul(s1, r1)), den), "q")
+    qi = gen.let(_div(gen, gen.sub(gen.mul(s1, r0), gen.mul(s0, r1)), den), "q")
+    ax, ay = gen.pt(ia)
+    d0, d1 = _diff(gen, ia, ib)
+    gen.put_point(step.outputs[0], gen.add(ax, gen.sub(gen.mul(d0, qr), gen.mul(d1, qi))),
+                  gen.add(ay, gen.add(gen.mul(d0, qi), gen.mul(d1, qr))))
+
+
 @template("velocity_difference")
 def _velocity_difference(gen: Gen, step: Step) -> None:
     img, omega, a, x_ = step.inputs

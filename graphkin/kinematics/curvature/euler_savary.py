@@ -5,7 +5,9 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from graphkin.construction.codegen import Gen, NeedGeneric, template
 from graphkin.construction.ops import OPS, op
+from graphkin.construction.step import Step
 from graphkin.geometry import ops as g
 from graphkin.kinematics.curvature._vec import _dot, _xy
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
@@ -27,6 +29,39 @@ def _register() -> None:
             return (inflection_points_on_ray(i, a, a_conj),)
 
 _register()
+
+
+@template("euler_savary_inflection")
+def _es_inflection_template(gen: Gen, step: Step) -> None:
+    """The template of the lay-off (one table for both writers: the live page's curvature).
+
+    The arithmetic of :func:`inflection_points_on_ray`, on one posture or rows
+    of postures: ``u`` the unit ray from I through A, ``x_A = |A - I|``,
+    ``x_A' = (A' - I)·u`` and ``J_A = I + u x_A x_A'/(x_A' - x_A)`` (Eq. 4.43);
+    ``J_A = A`` when A' is at infinity (the JavaScript writer's center of
+    curvature normal to a slider's line, given as ``[x, y, 0]``).  A ray of no
+    length or ``A' = A`` (the general function divides by zero) is not clean.
+    """
+    i, a, c = step.inputs
+    if getattr(gen, "homogeneous", False):
+        raise NeedGeneric(c)  # the centers' writer: no curvature there
+    ax, ay = gen.pt(a)
+    cv = gen.val(c)
+    if cv.form == "rows" and cv.kind == "point":
+        gen.bail_unless(f"{cv.ex[2]} == 0.0")
+        gen.put_point(step.outputs[0], ax, ay)
+        return
+    ix, iy = gen.pt(i)
+    cx, cy = gen.pt(c)
+    wx, wy = gen.let(gen.sub(ax, ix), "dx"), gen.let(gen.sub(ay, iy), "dy")
+    xa = gen.let(f"_sqrt({gen.add(gen.mul(wx, wx), gen.mul(wy, wy))})", "n")
+    gen.bail_unless(f"_min({xa}, None) > 0.0")
+    ux, uy = gen.let(f"{wx} / {xa}", "c"), gen.let(f"{wy} / {xa}", "s")
+    xc = gen.add(gen.mul(gen.sub(cx, ix), ux), gen.mul(gen.sub(cy, iy), uy))
+    den = gen.let(gen.sub(xc, xa), "d")
+    gen.bail_unless(f"_min(_abs({den}), None) > 0.0")
+    xj = gen.let(f"{xa} * {xc} / {den}", "k")
+    gen.put_point(step.outputs[0], gen.add(ix, gen.mul(xj, ux)), gen.add(iy, gen.mul(xj, uy)))
 
 
 def euler_savary(pole: ArrayLike, inflection_pole: ArrayLike, point: ArrayLike,
