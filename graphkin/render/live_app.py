@@ -23,7 +23,6 @@ from graphkin.render.live_pen import PEN_JS
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
 
 LIVE_LIB = r"""
-}
 // a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
 // graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
 function gkAtInfinity(C, p) {
