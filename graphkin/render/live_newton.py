@@ -113,12 +113,11 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
     phases = [{"rolling": int(p.key[len("rolling["):-1]), "link": p.link}
               for p in (rolling_phases(mech) if mech.rolling else ()) if p.kind == "angle"]
     rated = eqs.rate_values is not None
-    n = rows.n
     row_scale = [float(v) for v in eqs.row_scale]
     rate_scale = [1.0 if g.kinds[0] == "A" else 1.0 / eqs.size
                   for g in eqs.rate_functions or []]
     gkn = {
-        "m": rows.m, "n": n, "ncons": rows.ncons, "ndrives": rows.ndrives,
+        "m": rows.m, "n": rows.n, "ncons": rows.ncons, "ndrives": rows.ndrives,
         "rateRows": rows.rate_rows, "rowScale": row_scale + rate_scale,
         "colScale": [float(v) for v in eqs.col_scale], "q0": [float(v) for v in q0],
         "A0": anchors, "values": [float(v) for v in values], "drives": drives,
@@ -128,7 +127,7 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "singular": _singular_threshold(DEFAULT_TOL), "phases": phases,
     }
     js = (rows.source + f"const GKN = {_json(gkn)};\n" + NEWTON_JS)
-    hidden = {n for n in frame}
+    hidden = set(frame)
     why = _refused(mech)
     data: dict[str, Any] = {
         "K": [v for _, v in rows.slots],

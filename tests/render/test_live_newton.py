@@ -1,0 +1,158 @@
+"""The live page of a mechanism only Newton's method solves (render/live_newton.py).
+
+Two sliders closing one loop, a rolling contact whose roller turns with its
+travel, a cam follower's linkage: the page runs Newton's method on the
+analytic solver's rows written out as JavaScript (kinematics/analytic/jsrows.py)
+from the previous posture.  After random drags, every value the page shows
+(read in headless Chromium) must be what ``graphkin solve`` says of the file
+the page saves, to 1e-9 of its scale; the rolling contact's saved angle makes
+that file's posture the page's.  Skipped without Chromium.
+"""
+
+from __future__ import annotations
+
+import math
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from cdp import browser_or_skip
+
+import graphkin
+from graphkin.files import load_toml
+from graphkin.render.live import live_html
+
+ROOT = Path(__file__).resolve().parents[2]
+REL = 1e-9
+
+NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
+          "gallery/mechanisms/fig3_18_rolling_wheel.toml",
+          "gallery/mechanisms/fig4_20_roller_follower.toml", "gallery/gears/ex11_7.toml",
+          "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
+          "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
+          "examples/ex3_9_rolling_wheel.toml"]
+
+
+@pytest.fixture(scope="module")
+def browser():
+    b = browser_or_skip(1300, 1000)
+    yield b
+    b.close()
+
+
+def _page(tmp_path: Path, path: Path) -> Path:
+    out = tmp_path / (path.stem + ".html")
+    out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
+    return out
+
+
+def _same_as_solve(browser, tmp_path: Path) -> dict:
+    """Positions, velocities and accelerations of the page against solve of its saved file."""
+    r = browser.js("window.graphkinLive.state()")["result"]
+    assert r is not None
+    saved = tmp_path / "saved.toml"
+    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+    sol = graphkin.load(saved).solve()
+    mech = sol.mechanism
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points]
+    scale = 1.0 + max(abs(v) for n in names for v in r[n])
+    for n in names:
+        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale, err_msg=n)
+    if mech.has_rates:
+        for pre, of in (("v", sol.velocity), ("a", sol.acceleration)):
+            s = 1.0 + max(abs(v) for n in names for v in r[f"{pre}({n})"])
+            for n in names:
+                np.testing.assert_allclose(r[f"{pre}({n})"], of(n), rtol=0, atol=REL * s,
+                                           err_msg=f"{pre}({n})")
+        for lid in mech.links:
+            np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
+                                       atol=REL * (1 + abs(sol.omega(lid))))
+    return r
+
+
+@pytest.mark.parametrize("name", NEWTON)
+def test_random_drags_equal_solve_of_the_saved_file(browser, tmp_path, name):
+    path = ROOT / name
+    browser.open(_page(tmp_path, path))
+    assert browser.errors() == []
+    _same_as_solve(browser, tmp_path)
+    # the panels Python does not draw say why, in Python's words
+    why = browser.js("[].map.call(document.querySelectorAll('.gk-refused'),"
+                     " function (e) { return e.textContent; })")
+    assert len(why) == 2 and all(w.startswith("no ") for w in why)
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    answered = 0
+    for step in rng.uniform(-1.2, 1.2, size=4):  # radians of the drive, from where it is
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        r = browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})")
+        if r is None:  # cannot be assembled there: said so, never NaN
+            assert "cannot be assembled" in browser.js(
+                "document.getElementById('gk-status').textContent")
+            body = browser.js("document.body.innerText")
+            assert "NaN" not in body and "Infinity" not in body
+            browser.js(f"window.graphkinLive.setDrive({d!r})")
+            continue
+        _same_as_solve(browser, tmp_path)
+        answered += 1
+    assert answered >= 1
+    assert browser.errors() == []
+
+
+def test_the_wheel_rolls_its_travel(browser, tmp_path):
+    # Example 3.9 (Fig. 3.18): the wheel of radius 100 rolls on the ground, so its center G
+    # moves along the ground by -ρ Δθ4 (to the left as the wheel turns counterclockwise)
+    browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig3_18_rolling_wheel.toml"))
+    r0 = browser.js("window.graphkinLive.state()")["result"]
+    r1 = browser.js(f"window.graphkinLive.setDrive({math.radians(90.0 - 25.0)!r})")
+    assert r1 is not None
+    dth = r1["θ4"] - r0["θ4"]
+    assert abs(dth) > 0.01
+    np.testing.assert_allclose(r1["G"][0] - r0["G"][0], -100.0 * dth, rtol=0, atol=1e-9 * 300)
+    assert abs(r1["G"][1] - 100.0) < 1e-9 * 300  # the center stays one radius up
+    # back to the file's drive: the wheel is where it was (no slip, the same path back)
+    r2 = browser.js(f"window.graphkinLive.setDrive({math.radians(90.0)!r})")
+    np.testing.assert_allclose(r2["G"], r0["G"], rtol=0, atol=1e-9 * 300)
+
+
+def test_dragging_a_pivot_of_the_scotch_yoke(browser, tmp_path):
+    # Fig. 3.27: drag the crank's pivot O2; Newton follows from the posture before, and the
+    # saved file (O2 moved) solves to the page's posture and rates
+    browser.open(_page(tmp_path, ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"))
+    xy = browser.js("(function () { var r = document.querySelector('.gk-handle[data-kind="
+                    "\"frame\"]').getBoundingClientRect(); return [r.x + r.width / 2,"
+                    " r.y + r.height / 2]; })()")
+    x0, y0 = xy
+    browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0, y=y0)
+    browser.send("Input.dispatchMouseEvent", type="mousePressed", x=x0, y=y0, button="left",
+                 clickCount=1)
+    for k in range(1, 5):
+        browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0 + 3 * k, y=y0 - 2 * k,
+                     button="left", buttons=1)
+    browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=x0 + 12, y=y0 - 8,
+                 button="left", clickCount=1)
+    r = _same_as_solve(browser, tmp_path)
+    saved = load_toml(tmp_path / "saved.toml")
+    assert saved["links"]["1"]["O2"] != [0, 0]
+    assert r["O2"] == saved["links"]["1"]["O2"]
+    assert browser.errors() == []
+
+
+def test_the_coupler_curve_is_the_analytic_sweep(browser, tmp_path):
+    # the scotch yoke's point F over the whole turn, from the page, against graphkin's sweep
+    # (Newton's method in Python, each posture from the one before)
+    path = ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"
+    browser.open(_page(tmp_path, path))
+    state = browser.js("window.graphkinLive.state()")
+    mech = graphkin.load(path)
+    start = math.degrees(state["drive"])
+    sw = mech.sweep(count=360, start=start)
+    for n, curve in state["curves"].items():
+        got = np.array([p if p is not None else [np.nan, np.nan] for p in curve], dtype=float)
+        x, y = sw.columns[f"x_{n}"], sw.columns[f"y_{n}"]
+        assert np.all(np.isfinite(got[:, 0]) == np.isfinite(x))
+        ok = np.isfinite(x)
+        np.testing.assert_allclose(got[ok, 0], x[ok], rtol=0, atol=1e-9 * 200)
+        np.testing.assert_allclose(got[ok, 1], y[ok], rtol=0, atol=1e-9 * 200)
+    # drawing the curves left the posture where it was
+    assert browser.js("window.graphkinLive.state()")["result"] == state["result"]
