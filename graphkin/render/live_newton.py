@@ -222,7 +222,8 @@ function gkNewton(q0, K, V, A) {
   let q = q0.slice(), [r, J] = gkScaled(q, K, V, A), f = gkNorm(r), polish = 0;
   for (let it = 0; it < 40; it++) {
     if (!Number.isFinite(f)) return null;
-    if (f < 1e-11 && ++polish > 2) return q;
+    // converged: one more step polishes it (none needed below 1e-13, far under 1e-9)
+    if (f < 1e-13 || (f < 1e-11 && ++polish > 1)) return q;
     const [dx] = gkLstsq(J, r.map((v) => -v));
     let lam = 1, qn = null, rn = null, Jn = null, fn = Infinity;
     for (let h = 0; h < 12; h++, lam /= 2) {
@@ -237,9 +238,10 @@ function gkNewton(q0, K, V, A) {
   return f < 1e-11 ? q : null;
 }
 let gkNState = {q: GKN.q0.slice(), A: GKN.A0.slice(), V: GKN.values.slice(), K: null};
-// march from the state to the drive values V and numbers K; the posture, or null
-function gkMarch(V, K) {
-  const s = gkNState, K0 = s.K || K, dV = V.map((v, i) => GKN.drives[i].angle ?
+// march from the state s to the drive values V and numbers K: [the posture or null, the last
+// posture reached on the way]
+function gkMarch(s, V, K) {
+  const K0 = s.K || K, dV = V.map((v, i) => GKN.drives[i].angle ?
     _wrap(v - s.V[i]) : v - s.V[i]);
   let steps = 1;
   for (let i = 0; i < dV.length; i++) {
@@ -249,22 +251,40 @@ function gkMarch(V, K) {
   for (let i = 0; i < K.length; i++) {
     steps = Math.max(steps, Math.ceil(Math.abs(K[i] - K0[i]) / (GKN.march[1] * GKN.size)));
   }
-  if (steps > 2000) return null;
-  let q = s.q, A = s.A;
+  if (steps > 2000) return [null, s];
+  let last = s;
   for (let k = 1; k <= steps; k++) {
     const t = k / steps, Vk = s.V.map((v, i) => v + t * dV[i]);
     const Kk = K.map((v, i) => K0[i] + t * (v - K0[i]));
-    const qn = gkNewton(q, Kk, Vk, A);
-    if (qn === null) return null;
+    const qn = gkNewton(last.q, Kk, Vk, last.A);
+    if (qn === null) return [null, last];
     for (let j = 0; j < qn.length; j++) {
-      if (Math.abs(qn[j] - q[j]) / GKN.colScale[j] > GKN.jump) return null;
+      if (Math.abs(qn[j] - last.q[j]) / GKN.colScale[j] > GKN.jump) return [null, last];
     }
-    q = qn;
-    A = gkRowsAnchors(q, Kk, A);
+    last = {q: qn, A: gkRowsAnchors(qn, Kk, last.A), V: Vk, K: Kk};
   }
-  const [, J] = gkScaled(q, K, s.V.map((v, i) => v + dV[i]), A);
-  if (gkLstsq(J, new Array(J.length).fill(0))[1] <= GKN.singular) return null;
-  return {q: q, A: A, V: s.V.map((v, i) => v + dV[i]), K: K.slice()};
+  if (gkCycle) return [last, last];  // a curve's point needs no verdict on the toggle
+  const [, J] = gkScaled(last.q, K, last.V, last.A);
+  if (gkLstsq(J, new Array(J.length).fill(0))[1] <= GKN.singular) return [null, last];
+  return [last, last];
+}
+// the coupler curves (drive + k°, k = 0..359, in order): a forward chain from the posture
+// shown until it cannot be assembled, then a backward chain from the posture shown, so
+// each curve is the branch the posture is on, each posture one step from the one before
+let gkCycle = null;
+function gkCycleState(V, K) {
+  const c = gkCycle, d = _wrap(V[0] - c.mark.V[0]);
+  if (c.fwd !== null) {
+    const [s] = gkMarch(c.fwd, V, K);
+    if (s !== null) { c.fwd = s; return s; }
+    c.fwd = null;
+    return null;
+  }
+  if (d >= 0 || d < c.floor) return null;
+  const [s, last] = gkMarch(c.back, V, K);
+  if (s === null) { c.back = last; c.floor = _wrap(last.V[0] - c.mark.V[0]); return null; }
+  c.back = s;
+  return s;
 }
 // q̇ and q̈ (Secs. 3.9, 4.9): the constraint rows and the known rates, one solve each
 function gkRates(s) {
@@ -316,19 +336,22 @@ function gkNewtonValues(s, qd, qdd) {
 }
 function construction(I, K) {
   const V = GKN.drives.map((d, i) => (I[d.label] !== undefined ? I[d.label] : GKN.values[i]));
-  const s = gkMarch(V, K);
+  const s = gkCycle ? gkCycleState(V, K) : gkMarch(gkNState, V, K)[0];
   if (s === null) return null;
   let qd = null, qdd = null;
-  if (GKN.rates) {
+  if (GKN.rates && !gkCycle) {  // the coupler curves need the positions only
     const got = gkRates(s);
     if (got === null) return null;
     [qd, qdd] = got;
   }
-  gkNState = s;
+  if (!gkCycle) gkNState = s;
   return gkNewtonValues(s, qd, qdd);
 }
-construction.mark = () => gkNState;
-construction.restore = (s) => { gkNState = s; };
+construction.mark = () => {
+  gkCycle = {mark: gkNState, fwd: gkNState, back: gkNState, floor: -Infinity};
+  return gkNState;
+};
+construction.restore = (s) => { gkNState = s; gkCycle = null; };
 construction.reset = () => {
   gkNState = {q: GKN.q0.slice(), A: GKN.A0.slice(), V: GKN.values.slice(), K: null};
 };
