@@ -18,6 +18,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 from cdp import browser_or_skip
+from hypothesis import given
+from hypothesis import strategies as st
+from strategies import examples, newton_mechanisms
 
 import graphkin
 from graphkin.files import load_toml
@@ -156,3 +159,33 @@ def test_the_coupler_curve_is_the_analytic_sweep(browser, tmp_path):
         np.testing.assert_allclose(got[ok, 1], y[ok], rtol=0, atol=1e-9 * 200)
     # drawing the curves left the posture where it was
     assert browser.js("window.graphkinLive.state()")["result"] == state["result"]
+
+
+@examples(8)
+@given(rm=newton_mechanisms(), steps=st.lists(st.floats(-0.6, 0.6), min_size=2, max_size=2))
+def test_random_mechanisms_and_drags_equal_solve(browser, tmp_path_factory, rm, steps):
+    # random rolling wheels and Scotch yokes (tests/strategies.py), dragged by random drive
+    # steps (rad): the page equals solve of its saved file; a wheel's center moves along the
+    # ground by -ρ Δθ4 (no slip, Eq. 3.13 integrated), whatever the solver says
+    tmp = tmp_path_factory.mktemp("newton")
+    mech = rm.mechanism()
+    page = tmp / "random.html"
+    page.write_text(live_html(mech, rm.data, "random.toml"), encoding="utf-8")
+    browser.open(page)
+    assert browser.errors() == []
+    r0 = _same_as_solve(browser, tmp)
+    for step in steps:
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        r = browser.js(f"window.graphkinLive.setDrive({d + step!r})")
+        if r is None:
+            assert "cannot be assembled" in browser.js(
+                "document.getElementById('gk-status').textContent")
+            browser.js(f"window.graphkinLive.setDrive({d!r})")
+            continue
+        _same_as_solve(browser, tmp)
+        if rm.kind == "rolling wheel":
+            rho = rm.data["rolling"][0]["circle"]["radius"]
+            np.testing.assert_allclose(r["G"][0] - r0["G"][0], -rho * (r["θ4"] - r0["θ4"]),
+                                       rtol=0, atol=1e-9 * rm.scale())
+            assert abs(r["G"][1] - rho) < 1e-9 * rm.scale()
+    assert browser.errors() == []
