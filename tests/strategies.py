@@ -774,51 +774,6 @@ def mechanisms(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
 
 
 @st.composite
-def _rolling_wheel(draw: Any, with_rates: bool) -> RandomMechanism:
-    # Example 3.9 (Fig. 3.18): crank 2 about O2, coupler 3 from A to the pin B of wheel 4,
-    # which rolls without slip on the ground y = 0 (its center G one radius above it).  The
-    # wheel is drawn at its angle 0 (the file's phase), so its local axes are the world's.
-    f = lambda lo, hi: draw(st.floats(lo, hi, allow_nan=False))  # noqa: E731
-    o2 = (f(-1.0, 1.0), f(0.5, 2.0))
-    r2, t2 = f(0.3, 0.8), f(-math.pi, math.pi)
-    a = _add(o2, _e(t2), r2)
-    rho = f(0.4, 1.0)
-    g = (f(1.0, 3.0), rho)
-    b_loc = (f(-0.8, 0.8) * rho, f(-0.8, 0.8) * rho)
-    bb = _add(g, b_loc)
-    c = (g[0], 0.0)  # the contact point, the wheel's instant center I14
-    ab, cb = _sub(bb, a), _sub(bb, c)
-    assume(_norm(ab) > 0.5 and _norm(cb) > 0.1)
-    # away from a toggle: A, B and the contact point not in line, nor O2, A and B
-    assume(abs(_cross(ab, cb)) > 0.25 * _norm(ab) * _norm(cb))
-    assume(abs(_cross(_sub(a, o2), ab)) > 0.2 * r2 * _norm(ab))
-    data: dict[str, Any] = {
-        "units": {"length": "m"},
-        "links": {"1": {"O2": list(o2), "L0": [0.0, 0.0], "L1": [1.0, 0.0]},
-                  "2": {"O2": [0.0, 0.0], "A": [r2, 0.0]},
-                  "3": {"A": [0.0, 0.0], "B": [_norm(ab), 0.0]},
-                  "4": {"G": [0.0, 0.0], "B": list(b_loc)}},
-        "rolling": [{"link": 4, "on": 1, "circle": {"center": "G", "radius": rho},
-                     "line": ["L0", "L1"], "side": "left"}],
-        "drive": {"link": 2, "angle": math.degrees(t2)},
-        "assembly": {"B": list(bb)},
-    }
-    if with_rates:
-        data["drive"].update(omega=f(-20.0, 20.0), alpha=f(-50.0, 50.0))
-    truth = {"2": (o2[0], o2[1], t2), "3": (a[0], a[1], _dir(ab)), "4": (g[0], g[1], 0.0)}
-    return RandomMechanism("rolling wheel", data, truth)
-
-
-def rolling_wheels(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
-    """A wheel rolling on the ground, driven by a crank and coupler (Example 3.9).
-
-    Only Newton's method solves it over a drive's range (the wheel's angle
-    follows its travel); ``omega`` is left empty.
-    """
-    return _rolling_wheel(with_rates)
-
-
-@st.composite
 def _scotch_yoke(draw: Any, with_rates: bool) -> RandomMechanism:
     # Fig. 3.27: crank 2 about O2; block 3 pinned at A slides in a straight slot of yoke 4,
     # which slides on a guide of the frame.  Link 4's x axis runs along the guide and 3's
@@ -861,11 +816,6 @@ def scotch_yokes(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
     solves it.  ``omega`` is left empty.
     """
     return _scotch_yoke(with_rates)
-
-
-def newton_mechanisms(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
-    """The families only Newton's method sweeps (not in :func:`mechanisms`)."""
-    return st.one_of(rolling_wheels(with_rates), scotch_yokes(with_rates))
 
 
 def examples(n: int) -> settings:

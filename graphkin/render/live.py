@@ -132,7 +132,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
-    js = RUNTIME + fn.source
+    from graphkin.render.live_newton import roll_edit_js
+
+    js = RUNTIME + fn.source + roll_edit_js(mech, made)
     centers = _centers(mech)
     if centers is not None:
         data["centers"], cjs = centers

@@ -40,7 +40,7 @@ import numpy as np
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 
-__all__ = ["NEWTON_JS", "drive_label", "newton_data"]
+__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "drive_label", "newton_data", "roll_edit_js"]
 
 #: Largest drive step of the march between two postures (rad, and fraction of the size).
 MARCH_ANGLE = math.radians(2.0)
@@ -169,7 +169,47 @@ def _refused(mech: Mechanism) -> dict[str, str]:
     return out
 
 
-NEWTON_JS = r"""
+ROLL_EDIT_JS = r"""
+// the saved file: each rolling contact's link at its angle of the posture shown (degrees), so
+// that graphkin solve places it there (the roller has rolled, not slipped back)
+// (and, with ``hints``, every moving point as an assembly hint: a tangent's branch has none)
+function gkRollEdit(phases, f, r, hints) {
+  if (!r) return;
+  for (const p of phases) {
+    if (Array.isArray(f.rolling) && f.rolling[p.rolling]) {
+      f.rolling[p.rolling].angle = r["\u03b8" + p.link] * 180 / Math.PI;
+    }
+  }
+  if (hints && hints.length) {
+    if (f.assembly === null || typeof f.assembly !== "object" || Array.isArray(f.assembly)) {
+      f.assembly = {};
+    }
+    for (const n of hints) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];
+  }
+}
+"""
+
+
+def roll_edit_js(mech: Mechanism, made: set[str]) -> str:
+    """For a construction page whose rollers turn with their travel (``roll_angle``).
+
+    The saved file then gives each such contact's ``angle`` at the posture
+    shown; empty when the mechanism has no rolling contact.
+    """
+    from graphkin.kinematics.analytic.phase import rolling_phases
+
+    if not mech.rolling:
+        return ""
+    phases = [{"rolling": int(p.key[len("rolling["):-1]), "link": p.link}
+              for p in rolling_phases(mech) if p.kind == "angle" and f"θ{p.link}" in made]
+    frame = set(mech.links[FRAME].points)
+    hints = [n for lid, lk in mech.links.items() if lid != FRAME for n in lk.points
+             if n in made and n not in frame]
+    return (ROLL_EDIT_JS + f"construction.edit = (f, r) => gkRollEdit({_json(phases)}, f, r, "
+            f"{_json(list(dict.fromkeys(hints)))});\n" if phases else "")
+
+
+NEWTON_JS = ROLL_EDIT_JS + r"""
 // Newton's method on the rows above, from the posture before (render/live_newton.py)
 const _wrap = (x) => { const w = x - 2 * Math.PI * Math.round(x / (2 * Math.PI));
                        return w <= -Math.PI ? w + 2 * Math.PI : w; };
@@ -355,12 +395,5 @@ construction.restore = (s) => { gkNState = s; gkCycle = null; };
 construction.reset = () => {
   gkNState = {q: GKN.q0.slice(), A: GKN.A0.slice(), V: GKN.values.slice(), K: null};
 };
-// the saved file: each rolling contact's link at its angle of the posture shown (degrees)
-construction.edit = (f, r) => {
-  for (const p of GKN.phases) {
-    if (r && Array.isArray(f.rolling) && f.rolling[p.rolling]) {
-      f.rolling[p.rolling].angle = r["\u03b8" + p.link] * 180 / Math.PI;
-    }
-  }
-};
+construction.edit = (f, r) => gkRollEdit(GKN.phases, f, r, null);
 """

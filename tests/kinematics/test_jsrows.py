@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from strategies import examples, mechanisms, newton_mechanisms
+from strategies import examples, mechanisms, scotch_yokes
+from strategies_rolling import rolling_arrangements
 
 import graphkin
 from graphkin.kinematics.analytic.jsrows import compile_python, write_rows
@@ -109,12 +110,13 @@ def test_a_pinned_frame_point_is_a_number_of_K():
     assert np.allclose(got, [3.0, -2.0], atol=1e-12) or np.allclose(got, [-3.0, 2.0], atol=1e-12)
 
 
-@examples(20)
-@given(rm=newton_mechanisms(), seed=st.integers(0, 2**16))
+@examples(30)
+@given(rm=st.one_of(rolling_arrangements(), scotch_yokes()), seed=st.integers(0, 2**16))
 def test_random_newton_mechanisms_rows_are_the_solvers(rm, seed):
-    # the families only Newton's method sweeps: rolling wheels (the no-slip row on a line)
-    # and Scotch yokes (two sliders closing one loop); first, the file's posture is the one
-    # the family drew (the solver is the oracle only if it finds that posture)
+    # the families Newton's method sweeps: every rolling arrangement of
+    # tests/strategies_rolling.py (the no-slip rows on a line and on circles) and Scotch
+    # yokes (two sliders closing one loop); first, the file's posture is the one the family
+    # drew (the solver is the oracle only if it finds that posture)
     mech = rm.mechanism()
     sol = mech.solve()
     for name, xy in rm.world_points().items():

@@ -20,7 +20,8 @@ import pytest
 from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
-from strategies import examples, newton_mechanisms
+from strategies import examples, scotch_yokes
+from strategies_rolling import rolling_arrangements
 
 import graphkin
 from graphkin.files import load_toml
@@ -30,8 +31,7 @@ ROOT = Path(__file__).resolve().parents[2]
 REL = 1e-9
 
 NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
-          "gallery/mechanisms/fig3_18_rolling_wheel.toml",
-          "gallery/mechanisms/fig4_20_roller_follower.toml", "gallery/gears/ex11_7.toml",
+          "gallery/mechanisms/fig3_18_rolling_wheel.toml", "gallery/gears/ex11_7.toml",
           "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
           "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
           "examples/ex3_9_rolling_wheel.toml"]
@@ -161,20 +161,47 @@ def test_the_coupler_curve_is_the_analytic_sweep(browser, tmp_path):
     assert browser.js("window.graphkinLive.state()")["result"] == state["result"]
 
 
-@examples(8)
-@given(rm=newton_mechanisms(), steps=st.lists(st.floats(-0.6, 0.6), min_size=2, max_size=2))
-def test_random_mechanisms_and_drags_equal_solve(browser, tmp_path_factory, rm, steps):
-    # random rolling wheels and Scotch yokes (tests/strategies.py), dragged by random drive
-    # steps (rad): the page equals solve of its saved file; a wheel's center moves along the
-    # ground by -ρ Δθ4 (no slip, Eq. 3.13 integrated), whatever the solver says
+def _same_as_sweep(r: dict, mech, path: np.ndarray, tol_scale: float) -> None:
+    """The page's values at the end of ``path`` against graphkin's analytic sweep along it."""
+    from graphkin.kinematics.analytic import solve_analytic_many
+
+    sol = solve_analytic_many(mech, path)
+    assert bool(np.asarray(sol.valid)[-1])
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points]
+    for n in names:
+        np.testing.assert_allclose(r[n], np.asarray(sol.position(n))[-1], rtol=0,
+                                   atol=REL * tol_scale, err_msg=n)
+    if not mech.has_rates:
+        return
+    for pre, of in (("v", sol.velocity), ("a", sol.acceleration)):
+        pole = r["o_" + pre]
+        got = {n: np.subtract(r[f"{pre}({n})"], pole) for n in names if f"{pre}({n})" in r}
+        s = 1.0 + max(abs(v) for x in got.values() for v in x)
+        for n, x in got.items():
+            np.testing.assert_allclose(x, np.asarray(of(n))[-1], rtol=0, atol=REL * s,
+                                       err_msg=f"{pre}({n})")
+
+
+@examples(10)
+@given(rm=st.one_of(rolling_arrangements(), scotch_yokes()),
+       steps=st.lists(st.floats(-0.6, 0.6), min_size=2, max_size=2))
+def test_random_mechanisms_and_drags_equal_the_sweep(browser, tmp_path_factory, rm, steps):
+    # every rolling arrangement of tests/strategies_rolling.py (a construction page when the
+    # roller's angle follows its travel by a step, else Newton's method) and random Scotch
+    # yokes, dragged by random drive steps: the page's values are graphkin's analytic sweep
+    # along the same path of drive values (each posture continuing the one before)
     tmp = tmp_path_factory.mktemp("newton")
     mech = rm.mechanism()
     page = tmp / "random.html"
     page.write_text(live_html(mech, rm.data, "random.toml"), encoding="utf-8")
     browser.open(page)
     assert browser.errors() == []
-    r0 = _same_as_solve(browser, tmp)
+    d0 = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js("window.graphkinLive.state()")["result"] is not None
+    angle = mech.drives[0].kind in ("angle", "relative")
+    done = [d0]
     for step in steps:
+        step = step if angle else step * 0.2 * rm.scale()
         d = browser.js("window.graphkinLive.state()")["drive"]
         r = browser.js(f"window.graphkinLive.setDrive({d + step!r})")
         if r is None:
@@ -182,10 +209,41 @@ def test_random_mechanisms_and_drags_equal_solve(browser, tmp_path_factory, rm, 
                 "document.getElementById('gk-status').textContent")
             browser.js(f"window.graphkinLive.setDrive({d!r})")
             continue
-        _same_as_solve(browser, tmp)
-        if rm.kind == "rolling wheel":
-            rho = rm.data["rolling"][0]["circle"]["radius"]
-            np.testing.assert_allclose(r["G"][0] - r0["G"][0], -rho * (r["θ4"] - r0["θ4"]),
-                                       rtol=0, atol=1e-9 * rm.scale())
-            assert abs(r["G"][1] - rho) < 1e-9 * rm.scale()
+        done.append(d + step)
+        # the same path of drive values, in steps of at most 1° (or 1 % of the size)
+        dense = [d0]
+        for a, b in zip(done, done[1:]):
+            n = max(1, math.ceil(abs(b - a) / (math.radians(1.0) if angle else
+                                               0.01 * rm.scale())))
+            dense += list(np.linspace(a, b, n + 1)[1:])
+        vals = np.array(dense)
+        if len(mech.drives) > 1:
+            vals = np.column_stack([vals] + [np.full_like(vals, x.value)
+                                             for x in mech.drives[1:]])
+        _same_as_sweep(r, mech, vals, rm.scale())
+    assert browser.errors() == []
+
+
+def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tmp_path):
+    # Example 4.8 (Fig. 4.20): the roller 4 is pinned to the crank at its center B, so its
+    # angle follows its travel along the follower's face by one step (roll_angle,
+    # θ4 = θ3 + c - σ s/ρ): the page is the construction with both polygons, and after
+    # drags it equals solve of the saved file (the roller's angle saved with it)
+    browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml"))
+    assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
+    assert browser.js("window.graphkinLive.state()")["result"]["o_v"] is not None
+    for step in (0.4, -1.1, 0.9):
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        assert browser.js(f"window.graphkinLive.setDrive({d + step!r})") is not None
+        r = browser.js("window.graphkinLive.state()")["result"]
+        saved = tmp_path / "saved.toml"
+        saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+        sol = graphkin.load(saved).solve()
+        for n in ("B", "F1", "F2"):
+            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=1e-9 * 10)
+            v = np.subtract(r[f"v({n})"], r["o_v"])
+            a = np.subtract(r[f"a({n})"], r["o_a"])
+            np.testing.assert_allclose(v, sol.velocity(n), rtol=0, atol=1e-9 * 100)
+            np.testing.assert_allclose(a, sol.acceleration(n), rtol=0, atol=1e-9 * 1000)
+        np.testing.assert_allclose(r["θ4"], float(sol.angle_rad("4")), rtol=0, atol=1e-9)
     assert browser.errors() == []

@@ -177,6 +177,21 @@ def _add_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.add(t, gen.num(step.params["offset"])))
 
 
+@template("roll_angle")
+def _roll_angle(gen: Gen, step: Step) -> None:
+    # θ_l = θ_o + c - k u·(P - L0), u the unit direction of L0 L1 (no slip, Sec. 2.19)
+    t = gen.scalar(step.inputs[0])
+    px, py = gen.pt(step.inputs[1])
+    ax, ay = gen.pt(step.inputs[2])
+    bx, by = gen.pt(step.inputs[3])
+    ux, uy = gen.let(gen.sub(bx, ax), "dx"), gen.let(gen.sub(by, ay), "dy")
+    n = gen.let(f"_sqrt({gen.add(gen.mul(ux, ux), gen.mul(uy, uy))})", "n")
+    gen.bail_unless(f"_min({n}, None) > 0.0")
+    s = gen.add(gen.mul(gen.sub(px, ax), ux), gen.mul(gen.sub(py, ay), uy))
+    c, k = gen.num(step.params["c"]), gen.num(step.params["k"])
+    gen.put_scalar(step.outputs[0], gen.sub(gen.add(t, c), gen.mul(k, f"({s} / {n})")))
+
+
 def _join_homogeneous(gen: Gen, step: Step) -> None:
     """The line through two points, either of them at infinity: ``p × q``, normalized.
 
@@ -376,6 +391,16 @@ def _coriolis(gen: Gen, step: Step) -> None:
     v0, v1 = _diff(gen, ipk, ip)
     # 2 ω k × V_rel
     gen.put_rows(step.outputs[0], "vector", gen.mul(gen.neg(w2), v1), gen.mul(w2, v0))
+
+
+@template("rolling_normal")
+def _rolling_normal(gen: Gen, step: Step) -> None:
+    # A^r = factor (ω_i - ω_j)² (P - C): toward the roller's center (Eq. 4.19)
+    c, center, wi, wj = step.inputs
+    r0, r1 = _diff(gen, c, center)
+    w = gen.let(gen.sub(gen.scalar(wi), gen.scalar(wj)), "w")
+    k = gen.let(gen.mul(gen.num(step.params.get("factor", 1.0)), gen.mul(w, w)), "k")
+    gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
 
 
 def _along(gen: Gen, step: Step) -> None:
