@@ -47,8 +47,8 @@ MARCH_ANGLE = math.radians(2.0)
 
 MARCH_LENGTH = 0.02
 
-#: A step of the march that moves any scaled coordinate by more than this has jumped to
-#: another branch (a 2° step moves a link by far less).
+#: A step of the march that moves a link's origin by more than this fraction of the size has
+#: jumped to another branch (a 2° step moves a link by far less).
 JUMP = 0.5
 
 
@@ -298,8 +298,11 @@ function gkMarch(s, V, K) {
     const Kk = K.map((v, i) => K0[i] + t * (v - K0[i]));
     const qn = gkNewton(last.q, Kk, Vk, last.A);
     if (qn === null) return [null, last];
+    // a jump of a link's origin (a roller's angle may turn fast: k = R/ρ times the arm's)
     for (let j = 0; j < qn.length; j++) {
-      if (Math.abs(qn[j] - last.q[j]) / GKN.colScale[j] > GKN.jump) return [null, last];
+      if (j % 3 !== 2 && Math.abs(qn[j] - last.q[j]) / GKN.colScale[j] > GKN.jump) {
+        return [null, last];
+      }
     }
     last = {q: qn, A: gkRowsAnchors(qn, Kk, last.A), V: Vk, K: Kk};
   }

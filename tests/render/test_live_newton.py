@@ -232,9 +232,14 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
     browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml"))
     assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
     assert browser.js("window.graphkinLive.state()")["result"]["o_v"] is not None
-    for step in (0.4, -1.1, 0.9):
-        d = browser.js("window.graphkinLive.state()")["drive"]
-        assert browser.js(f"window.graphkinLive.setDrive({d + step!r})") is not None
+    # near θ2 = 0 the roller cannot reach the face (graphkin's sweep: nothing from -30° to
+    # 30°): the page says so there, like the sweep
+    sw = graphkin.load(ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml").sweep(
+        count=1, start=0.0)
+    assert not bool(sw.assembled[0])
+    assert browser.js("window.graphkinLive.setDrive(0)") is None
+    for deg in (70.0, 130.0, -100.0, 170.0):
+        assert browser.js(f"window.graphkinLive.setDrive({math.radians(deg)!r})") is not None
         r = browser.js("window.graphkinLive.state()")["result"]
         saved = tmp_path / "saved.toml"
         saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
