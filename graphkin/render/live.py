@@ -178,13 +178,12 @@ def _drive_data(mech: Mechanism, label: str, made: set[str]) -> dict[str, Any]:
 def _newton_page(mech: Mechanism, file_data: dict[str, Any],
                  source: str) -> tuple[dict[str, Any], str]:
     """The page of a mechanism only Newton's method solves (:mod:`.live_newton`)."""
-    from graphkin.render.live_newton import drive_label, newton_data
+    from graphkin.render.live_newton import newton_data
 
     data, js = newton_data(mech, source)
     made = {n for lk in mech.links.values() for n in lk.points}
-    label = drive_label(mech.drives[0])
     data.update(title=mech.title or source, unit=mech.length_unit,
-                drive=_drive_data(mech, label, made), file=file_data,
+                drive=_drive_data(mech, mech.drives[0].label, made), file=file_data,
                 style={k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                        if k in STYLES})
     js = RUNTIME + js

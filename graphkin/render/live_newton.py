@@ -40,7 +40,7 @@ import numpy as np
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 
-__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "drive_label", "newton_data", "roll_edit_js"]
+__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "newton_data", "roll_edit_js"]
 
 #: Largest drive step of the march between two postures (rad, and fraction of the size).
 MARCH_ANGLE = math.radians(2.0)
@@ -108,7 +108,7 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
             seen.add(n)
             fs = [slot_of[f"{n}.0"], slot_of[f"{n}.1"]] if f"{n}.0" in slot_of else None
             points.append([n, k, float(x), float(y), fs])
-    drives = [{"label": drive_label(d), "angle": d.kind in ("angle", "relative")}
+    drives = [{"label": d.label, "angle": d.kind in ("angle", "relative")}
               for d in mech.drives]
     phases = [{"rolling": int(p.key[len("rolling["):-1]), "link": p.link}
               for p in (rolling_phases(mech) if mech.rolling else ()) if p.kind == "angle"]
@@ -144,12 +144,6 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "refused": why,
     }
     return data, js
-
-
-def drive_label(d: Any) -> str:
-    """The input's name on the page (the construction's own, ``θ2`` or ``s4``...)."""
-    return {"angle": f"θ{d.link}", "relative": f"θ{d.link}/{d.relative_to}"}.get(
-        d.kind, f"{d.kind}{d.link}")
 
 
 def _refused(mech: Mechanism) -> dict[str, str]:
