@@ -76,7 +76,7 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
     InputError
         The file's posture cannot be solved (the message of the solver).
     """
-    from graphkin.kinematics.analytic.jsrows import write_rows
+    from graphkin.kinematics.analytic.jsrows import JS_RUNTIME, write_rows
     from graphkin.kinematics.analytic.newton import _Search
     from graphkin.kinematics.analytic.phase import rolling_phases
     from graphkin.kinematics.analytic.rates import _singular_threshold
@@ -126,7 +126,7 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "size": float(eqs.size), "march": [MARCH_ANGLE, MARCH_LENGTH], "jump": JUMP,
         "singular": _singular_threshold(DEFAULT_TOL), "phases": phases,
     }
-    js = (rows.source + f"const GKN = {_json(gkn)};\n" + NEWTON_JS)
+    js = JS_RUNTIME + rows.source + f"const GKN = {_json(gkn)};\n" + NEWTON_JS
     hidden = set(frame)
     why = _refused(mech)
     data: dict[str, Any] = {
@@ -205,8 +205,6 @@ def roll_edit_js(mech: Mechanism, made: set[str]) -> str:
 
 NEWTON_JS = ROLL_EDIT_JS + r"""
 // Newton's method on the rows above, from the posture before (render/live_newton.py)
-const _wrap = (x) => { const w = x - 2 * Math.PI * Math.round(x / (2 * Math.PI));
-                       return w <= -Math.PI ? w + 2 * Math.PI : w; };
 // least squares by Householder QR: x minimising |A x - b|, and min |R_ii| / max |R_ii|
 function gkLstsq(A0, b0) {
   const m = A0.length, n = A0[0].length, A = A0.map((r) => r.slice()), b = b0.slice();

@@ -123,3 +123,56 @@ def test_random_newton_mechanisms_rows_are_the_solvers(rm, seed):
         np.testing.assert_allclose(sol.position(name), xy, rtol=0, atol=1e-9 * rm.scale(),
                                    err_msg=name)
     _check(mech, seed)
+
+
+@pytest.fixture(scope="module")
+def _js():
+    from jsrun import close, js_or_skip
+
+    js_or_skip()
+    yield
+    close()
+
+
+@examples(15)
+@given(rm=st.one_of(mechanisms(), rolling_arrangements(), scotch_yokes()),
+       seed=st.integers(0, 2**16))
+def test_the_javascript_rows_are_the_python_rows(_js, rm, seed):
+    # the same table written twice: the JavaScript (node, else Chromium) computes the rows,
+    # the Jacobian, γ and the anchors the Python does, at random states and rates
+    import json
+
+    from jsrun import run_js
+
+    from graphkin.construction.jsgen import RUNTIME
+    from graphkin.kinematics.analytic.jsrows import JS_RUNTIME
+
+    mech = rm.mechanism()
+    eqs = _System(mech, DEFAULT_TOL)
+    values = np.array([d.value for d in mech.drives], dtype=float)
+    q0 = _Search(eqs).solve(values)
+    eqs = eqs.integrated(q0)
+    eqs.follow(q0)
+    frame = dict(mech.links[FRAME].points)
+    py = compile_python(write_rows(eqs, "python", frame))
+    js = write_rows(eqs, "js", frame)
+    K = [v for _, v in js.slots]
+    anchors = [c.anchor for c in eqs.cons if isinstance(c, _RollingCircle)]
+    rng = np.random.default_rng(seed)
+    size = float(eqs.size)
+    qs = [list(q0 + rng.normal(size=q0.shape) * 0.1 * size) for _ in range(3)]
+    qds = [list(rng.normal(size=q0.shape) * size) for _ in range(3)]
+    src = (RUNTIME + JS_RUNTIME + js.source
+           + f"const K = {json.dumps(K)}, V = {json.dumps(list(values))}, "
+           f"A = {json.dumps(anchors)};\n"
+           f"const RESULT = {json.dumps(qs)}.map((q, i) => [gkRowsPhi(q, K, V, A), "
+           f"gkRowsGam(q, {json.dumps(qds)}[i], K, A), gkRowsAnchors(q, K, A)]);")
+    got = run_js(src)
+    for q, qd, (phi, gam, anc) in zip(qs, qds, got):
+        r, J = py["gkRowsPhi"](np.array(q), K, values, anchors)
+        np.testing.assert_allclose(phi[0], r, rtol=0, atol=1e-12 * size)
+        np.testing.assert_allclose(np.array(phi[1]), J, rtol=0, atol=1e-12 * size)
+        g = py["gkRowsGam"](np.array(q), np.array(qd), K, anchors)
+        np.testing.assert_allclose(gam, g, rtol=0, atol=1e-10 * size * size)
+        np.testing.assert_allclose(anc, py["gkRowsAnchors"](np.array(q), K, anchors), rtol=0,
+                                   atol=1e-12)

@@ -54,7 +54,8 @@ from graphkin.kinematics.analytic.constraints import (
 from graphkin.kinematics.analytic.rolling import _Rolling, _RollingCircle
 from graphkin.kinematics.analytic.system import _System
 
-__all__ = ["ROWS", "RowWriter", "PyRowWriter", "JSRowWriter", "WrittenRows", "write_rows"]
+__all__ = ["JS_RUNTIME", "ROWS", "RowWriter", "PyRowWriter", "JSRowWriter", "WrittenRows",
+           "compile_python", "write_rows"]
 
 _Pt = tuple[str, str]
 
@@ -555,6 +556,15 @@ def write_rows(eqs: _System, lang: str, frame_points: dict[str, tuple[float, flo
                 + f"  return [{', '.join(anc)}];\n}}\n")
     return WrittenRows(src, slots, eqs.ncons + len(eqs.drives), n, eqs.ncons,
                        len(eqs.drives), len(rate_fns), angle_rows, len(circles))
+
+
+#: The name the JavaScript rows call beside ``_cos``, ``_sin`` and ``_atan2`` (those are in
+#: :data:`graphkin.construction.jsgen.RUNTIME`; :func:`compile_python` gives the Python all
+#: four): ``_wrap``, ``constraints._wrap``, an angle in (-π, π].
+JS_RUNTIME = """\
+const _wrap = (x) => { const w = x - 2 * Math.PI * Math.round(x / (2 * Math.PI));
+                       return w <= -Math.PI ? w + 2 * Math.PI : w; };
+"""
 
 
 def compile_python(rows: WrittenRows) -> dict[str, Any]:
