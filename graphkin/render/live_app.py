@@ -129,9 +129,6 @@ th { background: #f4f4f4; }
 """
 
 APP_JS = r"""
-// the page's script, run inside ``root`` (the document, or a notebook widget's element):
-// D is the page's data, GK_NAME the file's name, onEdit(toml) is told every edit (or null);
-// returns the page's API (state, setDrive, toml, redraw)
 // a panel not drawn: its figure keeps its caption and says why
 function gkRefuse(svg, why) {
   const f = svg.parentNode, p = document.createElement("p");
@@ -139,6 +136,9 @@ function gkRefuse(svg, why) {
   p.className = "gk-refused"; p.textContent = why;
   f.appendChild(p);
 }
+// the page's script, run inside ``root`` (the document, or a notebook widget's element):
+// D is the page's data, GK_NAME the file's name, onEdit(toml) is told every edit (or null);
+// returns the page's API (state, setDrive, toml, redraw)
 function gkLiveApp(root, D, GK_NAME, onEdit) {
 "use strict";
 const byId = (id) => root.querySelector("#" + id);
