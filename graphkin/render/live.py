@@ -178,7 +178,7 @@ def _drive_data(mech: Mechanism, label: str, made: set[str]) -> dict[str, Any]:
 def _newton_page(mech: Mechanism, file_data: dict[str, Any],
                  source: str) -> tuple[dict[str, Any], str]:
     """The page of a mechanism only Newton's method solves (:mod:`.live_newton`)."""
-    from graphkin.render.live_newton import newton_data
+    from graphkin.render.live_newton import newton_data, newton_points
 
     data, js = newton_data(mech, source)
     made = {n for lk in mech.links.values() for n in lk.points}
@@ -187,14 +187,14 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
                 style={k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                        if k in STYLES})
     js = RUNTIME + js
-    centers = _centers(mech)
+    centers = _centers(mech, named=newton_points(mech))
     if centers is not None:
         data["centers"], cjs = centers
         js += cjs
     return data, js
 
 
-def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
+def _centers(mech: Mechanism, named: Any = None) -> tuple[dict[str, Any], str] | None:
     """The instant centers' construction (Secs. 3.13-3.15) as a second function, of the posture.
 
     The Aronhold-Kennedy steps graphkin records for the file's posture
@@ -231,11 +231,18 @@ def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
         lab = st.outputs[0] if st.outputs else ""
         if st.op in ("point", "ideal_point") and lab in prim:
             given[lab] = prim[lab]
-        elif st.op not in ("join", "meet", "at_infinity_on", "same_point", "copy_point"):
+        elif st.op == "point" and named is not None and named(lab) is not None:
+            given[lab] = named(lab)  # a point of the posture (render/live_newton.py)
+        elif st.op not in ("join", "meet", "at_infinity_on", "same_point", "copy_point") and \
+                (named is None or st.op not in ("perpendicular", "along_ray")):
             return None
     labels = [s.outputs[0] for s in ic.construction.steps
               if s.op not in ("join",) and s.outputs]
     lines = [s.outputs[0] for s in ic.construction.steps if s.op == "join"]
+    if named is not None:  # only the centers and Kennedy's lines, not the paths' points
+        labels = [c for c in labels if c in {x.label for x in ic.centers.values()}]
+        lines = [n for s in ic.construction.steps if s.op == "join"
+                 and set(s.inputs) <= set(labels) for n in s.outputs]
     try:
         fn = generate_js(ic.construction.steps, requests=labels + lines, tol=DEFAULT_TOL,
                          name="centers", given=given)
@@ -246,6 +253,9 @@ def _centers(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
               sum(float(q[1]) for q in frame) / len(frame)]
     joins = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "join"]
     meets = [[s.outputs[0], *s.inputs] for s in ic.construction.steps if s.op == "meet"]
+    if named is not None:
+        joins = [j for j in joins if j[0] in lines]
+        meets = [m for m in meets if set(m[1:]) <= set(lines)]
     return ({"given": given, "labels": labels, "lines": lines, "K": fn.values,
              "joins": joins, "meets": meets, "links": list(ic.links),
              "pairs": {c.label: list(c.pair) for c in ic.centers.values()},

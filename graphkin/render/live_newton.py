@@ -40,7 +40,7 @@ import numpy as np
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 
-__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "newton_data", "roll_edit_js"]
+__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "newton_data", "newton_points", "roll_edit_js"]
 
 #: Largest drive step of the march between two postures (rad, and fraction of the size).
 MARCH_ANGLE = math.radians(2.0)
@@ -108,6 +108,10 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
             seen.add(n)
             fs = [slot_of[f"{n}.0"], slot_of[f"{n}.1"]] if f"{n}.0" in slot_of else None
             points.append([n, k, float(x), float(y), fs])
+    # the paths' points (a slider's or slot's line, a circle's center), which the instant
+    # centers' construction reads from the posture (Sec. 3.13)
+    for lab, lid, (x, y) in _path_points(mech):
+        points.append([lab, eqs.index[lid], float(x), float(y), None])
     drives = [{"label": d.label, "angle": d.kind in ("angle", "relative")}
               for d in mech.drives]
     phases = [{"rolling": int(p.key[len("rolling["):-1]), "link": p.link}
@@ -144,6 +148,40 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "refused": why,
     }
     return data, js
+
+
+def _path_points(mech: Mechanism) -> list[tuple[str, str, tuple[float, float]]]:
+    """The points of the paths (label, the link that carries the path, local coordinates)."""
+    out: list[tuple[str, str, tuple[float, float]]] = []
+    paths: tuple[Any, ...] = (*mech.sliders, *mech.slots, *mech.rolling)
+    for path in paths:
+        p0, p1 = getattr(path, "p0", None), getattr(path, "p1", None)
+        if p0 is not None and p1 is not None:
+            out += [(f"{path.key}:L0", path.on, p0), (f"{path.key}:L1", path.on, p1)]
+        c = getattr(path, "on_center", None) if hasattr(path, "on_center") else \
+            getattr(path, "center", None)
+        if isinstance(c, (tuple, list)):
+            out.append((f"{path.key}:O", path.on, (float(c[0]), float(c[1]))))
+    return out
+
+
+def newton_points(mech: Mechanism) -> Any:
+    """Which given points of the instant centers' construction the Newton page's posture has.
+
+    A named point (``A``, or ``A#2``, the same point again) or a path's point
+    (``slots[0]:L0``, ``rolling[1]:O``): ``{"pin": label}``, read from the
+    posture like a pin; None for any other.
+    """
+    names = {n for lk in mech.links.values() for n in lk.points}
+    paths = {lab for lab, _, _ in _path_points(mech)}
+
+    def named(lab: str) -> dict[str, str] | None:
+        base = lab.split("#")[0]
+        if base in names:
+            return {"pin": base}
+        return {"pin": lab} if lab in paths else None
+
+    return named
 
 
 def _refused(mech: Mechanism) -> dict[str, str]:

@@ -252,3 +252,34 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
             np.testing.assert_allclose(a, sol.acceleration(n), rtol=0, atol=1e-9 * 1000)
         np.testing.assert_allclose(r["θ4"], float(sol.angle_rad("4")), rtol=0, atol=1e-9)
     assert browser.errors() == []
+
+
+@pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
+                                  "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
+                                  "gallery/centers/fig3_27_scotch_yoke.toml"])
+def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
+    # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
+    # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal
+    # to the slot), re-found on the page from Newton's posture after a drag: graphkin's own
+    # centers of the saved file
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    browser.open(_page(tmp_path, ROOT / name))
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 0.3!r})") is not None
+    _same_as_solve(browser, tmp_path)
+    page = browser.js("window.graphkinLive.state()")["centers"]
+    ic = instant_centers(graphkin.load(tmp_path / "saved.toml").solve())
+    labels = [c.label for c in ic.centers.values()]
+    assert labels and set(labels) <= set(page)
+    size = graphkin.load(ROOT / name).scale
+    for lab in labels:
+        got, want = np.asarray(page[lab], dtype=float), np.asarray(ic.values[lab], dtype=float)
+        if abs(want[2]) > 1e-9:  # finite: the same point
+            w = want[:2] / want[2]  # a far center (nearly parallel lines) carries more error
+            np.testing.assert_allclose(got[:2] / got[2], w, rtol=0,
+                                       atol=1e-9 * (size + float(np.hypot(*w))), err_msg=lab)
+        else:  # at infinity: the same direction
+            assert abs(got[2]) < 1e-9 * max(abs(got[0]), abs(got[1]))
+            assert abs(got[0] * want[1] - got[1] * want[0]) < 1e-9, lab
+    assert browser.errors() == []
