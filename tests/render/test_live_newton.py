@@ -256,12 +256,13 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
 
 @pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
                                   "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
-                                  "gallery/centers/fig3_27_scotch_yoke.toml"])
+                                  "gallery/centers/fig3_27_scotch_yoke.toml",
+                                  "gallery/gears/ex11_7.toml"])
 def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
     # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
     # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal
-    # to the slot), re-found on the page from Newton's posture after a drag: graphkin's own
-    # centers of the saved file
+    # to the slot; two gears' center on their line of centers), re-found on the page from
+    # Newton's posture after a drag: graphkin's own centers of the saved file
     from graphkin.kinematics.instant_centers import instant_centers
 
     browser.open(_page(tmp_path, ROOT / name))

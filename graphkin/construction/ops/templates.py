@@ -517,14 +517,34 @@ def _perpendicular_cw(gen: Gen, step: Step) -> None:
     gen.put_rows(step.outputs[0], "line", b, gen.neg(a), _div(gen, c, pw))
 
 
+def _finite_xy(gen: Gen, label: str) -> tuple[str, str]:
+    """A point's x and y; a homogeneous row ``(x, y, w)`` (the centers' writer) divided by w.
+
+    Replay (None) unless ``w`` is clearly nonzero: the point must be finite.
+    """
+    v = gen.val(label)
+    if v.form == "point":
+        return gen.pt(label)
+    x, y, w = gen.rows(label)
+    gen.bail_unless(f"_abs({w}) > 0.0")
+    return gen.let(f"{x} / {w}", "x"), gen.let(f"{y} / {w}", "y")
+
+
 @template("along_ray", python=False)
 def _along_ray(gen: Gen, step: Step) -> None:
-    ax, ay = gen.pt(step.inputs[0])
-    dx, dy = _diff(gen, *step.inputs)
+    # a center at a given distance from a point towards another (two circles touching on
+    # their line of centers, Sec. 3.13): the points finite
+    ax, ay = _finite_xy(gen, step.inputs[0])
+    bx, by = _finite_xy(gen, step.inputs[1])
+    dx, dy = gen.let(gen.sub(bx, ax), "dx"), gen.let(gen.sub(by, ay), "dy")
     n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
     _positive(gen, n)
     k = gen.let(f"{gen.num(step.params['distance'])} / {n}", "k")
-    gen.put_point(step.outputs[0], gen.add(ax, gen.mul(dx, k)), gen.add(ay, gen.mul(dy, k)))
+    x, y = gen.add(ax, gen.mul(dx, k)), gen.add(ay, gen.mul(dy, k))
+    if getattr(gen, "homogeneous", False):  # the centers' writer: every point as (x, y, w)
+        gen.put_rows(step.outputs[0], "point", x, y, "1.0")
+    else:
+        gen.put_point(step.outputs[0], x, y)
 
 
 @template("tangent_foot", python=False)
