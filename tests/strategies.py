@@ -773,6 +773,51 @@ def mechanisms(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
                      double_sliders(with_rates), six_bars(with_rates), five_bars(with_rates))
 
 
+@st.composite
+def _scotch_yoke(draw: Any, with_rates: bool) -> RandomMechanism:
+    # Fig. 3.27: crank 2 about O2; block 3 pinned at A slides in a straight slot of yoke 4,
+    # which slides on a guide of the frame.  Link 4's x axis runs along the guide and 3's
+    # along the slot (a slider's link keeps its axis along its line).
+    f = lambda lo, hi: draw(st.floats(lo, hi, allow_nan=False))  # noqa: E731
+    o2 = (f(-1.0, 1.0), f(-1.0, 1.0))
+    r2, t2 = f(0.3, 1.0), f(-math.pi, math.pi)
+    a = _add(o2, _e(t2), r2)
+    psi, beta = f(-math.pi, math.pi), f(0.5, math.pi - 0.5)  # the guide's and slot's angles
+    g0 = _add(o2, _e(psi + math.pi / 2), f(-2.0, -0.8))
+    s0 = (f(-0.5, 0.5), f(0.2, 1.0))  # the slot's first point, in the yoke's axes
+    u, w = _e(psi), _e(psi + beta)
+    rs0 = _to_world((0.0, 0.0, psi), s0)
+    # the yoke's travel t along the guide puts A on the slot: t u + λ w = A - G0 - R(ψ) S0
+    t, lam = _solve2(u, w, _sub(_sub(a, g0), rs0))
+    f_w = _add(g0, u, t)
+    data: dict[str, Any] = {
+        "units": {"length": "m"},
+        "links": {"1": {"O2": list(o2), "G0": list(g0), "G1": list(_add(g0, u))},
+                  "2": {"O2": [0.0, 0.0], "A": [r2, 0.0]},
+                  "3": {"A": [0.0, 0.0]},
+                  "4": {"F": [0.0, 0.0], "S0": list(s0),
+                        "S1": list(_add(s0, _e(beta)))}},
+        "sliders": [{"link": 3, "on": 4, "point": "A", "line": ["S0", "S1"]},
+                    {"link": 4, "on": 1, "point": "F", "line": ["G0", "G1"]}],
+        "drive": {"link": 2, "angle": math.degrees(t2)},
+        "assembly": {"F": list(f_w)},
+    }
+    if with_rates:
+        data["drive"].update(omega=f(-20.0, 20.0), alpha=f(-50.0, 50.0))
+    truth = {"2": (o2[0], o2[1], t2), "3": (a[0], a[1], psi + beta),
+             "4": (f_w[0], f_w[1], psi)}
+    return RandomMechanism("scotch yoke", data, truth)
+
+
+def scotch_yokes(with_rates: bool = True) -> st.SearchStrategy[RandomMechanism]:
+    """Scotch yokes at any angles (Fig. 3.27): two sliders close one loop.
+
+    The construction cannot find link 4 one group at a time; Newton's method
+    solves it.  ``omega`` is left empty.
+    """
+    return _scotch_yoke(with_rates)
+
+
 def examples(n: int) -> settings:
     """Settings of a property test over random mechanisms: ``n`` examples, no deadline.
 

@@ -125,6 +125,9 @@ class _Builder:
         self.events: list[tuple[object, ...]] = []
         self.forced: dict[str, str] = {}
         self.rolled: list[tuple[Rolling, Slider]] = []
+        #: rolling contact -> the constant c of its roller's angle laid off from its travel
+        #: (a sweep, :func:`rolling_travel`); without it the roller stands at its phase
+        self.travel: dict[str, float] = {}
         self.serial = 0
 
     # ---- steps --------------------------------------------------------
@@ -346,6 +349,7 @@ class _Builder:
                                       f"{r.on_radius:.6g} from the center of link {r.on}'s circle.")
                     self.events.append(("contact", r))
                     changed = True
+            changed = pd.roll_angles(self) or changed
             for lid in self.mech.links:
                 if lid in self.placed:
                     continue
@@ -436,7 +440,11 @@ class _Builder:
             if (slot.link not in self.placed and slot.on in self.placed
                     and self.one_point(slot.link)):
                 out.append(_Group("pin_in_slot", path=slot))
-            if (slot.on not in self.placed and slot.link in self.placed
+            # a roller's center whose angle waits for its travel (roll_angle): its path is
+            # drawn through the center alone, as the roller's angle plays no part in it
+            rolled = slot.point in self.env and any(
+                r.slot_key == slot.key and r.key in self.travel for r in mech.rolling)
+            if (slot.on not in self.placed and (slot.link in self.placed or rolled)
                     and self.one_point(slot.on)):
                 out.append(_Group("slot_through", path=slot))
         out += [_Group("coordinate", pin=lid, drive=d) for d, lid in pd.coordinate_groups(self)]
@@ -734,7 +742,8 @@ def _finish(b: _Builder) -> None:
 
 
 def build_posture(mech: Mechanism, tol: Tolerance | None = None,
-                  branches: dict[str, str] | None = None) -> PostureConstruction:
+                  branches: dict[str, str] | None = None,
+                  travel: dict[str, float] | None = None) -> PostureConstruction:
     """Decompose a mechanism into the book's posture constructions and carry them out.
 
     Parameters
@@ -744,6 +753,11 @@ def build_posture(mech: Mechanism, tol: Tolerance | None = None,
     branches : dict, optional
         Step label -> branch name, to force a branch instead of following the
         assembly hints (e.g. ``{"C": "right"}`` for the other posture of a four-bar).
+    travel : dict, optional
+        Rolling contact -> constant ``c``: its roller's angle is laid off from
+        its travel (``roll_angle``, for a sweep; see
+        :func:`graphkin.kinematics.posture_drives.rolling_travel`) instead of
+        standing at the contact's phase.
 
     Returns
     -------
@@ -759,6 +773,7 @@ def build_posture(mech: Mechanism, tol: Tolerance | None = None,
     from graphkin.tolerance import DEFAULT_TOL
 
     b = _Builder(mech, tol or DEFAULT_TOL)
+    b.travel = dict(travel or {})
     b.forced = dict(branches or {})
     b.start()
     _finish(b)

@@ -28,7 +28,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphkin.construction import Mark, Role, Term, VectorEquation
-from graphkin.mechanisms.model import Drive
+from graphkin.mechanisms.model import Drive, Mechanism
+from graphkin.tolerance import Tolerance
 
 if TYPE_CHECKING:
     from graphkin.kinematics.posture import _Builder
@@ -173,7 +174,7 @@ def start_phases(b: _Builder) -> None:
             b.notes.append(ph.describe(r.angle_given))
         if ph.kind == "angle":
             lid = ph.link
-            if lid in b.angle:
+            if lid in b.angle or r.key in b.travel:  # travel: laid off from the travel
                 continue
             lab = f"θ{lid}"
             who = "rolls" if lid == r.link else f"is turned by the rolling of {r.key}"
@@ -189,3 +190,70 @@ def start_phases(b: _Builder) -> None:
               note=f"The slider {s.link} is moved by the rolling of {r.key}; at this "
                    f"drive it has travelled {ph.value:.6g} along its line (as drawn).")
         b.rolled.append((r, s))
+
+
+def roll_angles(b: _Builder) -> bool:
+    """Lay off each roller's angle from its travel once its center and its line are drawn.
+
+    A circle rolling on a line without slip turns with its travel:
+    ``θ_l = θ_o + c - σ s/ρ`` (Sec. 2.19, Eq. b; Example 3.9), ``s`` the
+    travel of its center along the line, ``c`` the constant of the file's
+    posture (:attr:`_Builder.travel`).  Only a contact whose roller the file
+    places by its angle, on a line.  Returns whether a step was added.
+    """
+    added = False
+    for r in b.mech.rolling:
+        c = b.travel.get(r.key)
+        if c is None or r.link in b.angle or r.center not in b.env or r.on not in b.placed \
+                or f"{r.key}:L0" not in b.env or r.on not in b.angle:
+            continue
+        lab = f"θ{r.link}"
+        sigma = 1.0 if r.side == "left" else -1.0
+        b.add("roll_angle", (b.angle[r.on], r.center, f"{r.key}:L0", f"{r.key}:L1"), (lab,),
+              c=c, k=sigma / float(r.radius), role=Role.RESULT,
+              note=f"Link {r.link} rolls without slip: it turns by -σ s/ρ as its center "
+                   f"{r.center} travels s along the line: {lab}.")
+        b.angle[r.link] = lab
+        b.events.append(("roll_angle", r, r.link))
+        added = True
+    return added
+
+
+def rolling_travel(mech: Mechanism, tol: Tolerance) -> dict[str, float] | None:
+    """The constant ``c`` of every rolling contact, when each roller's angle follows its travel.
+
+    For a sweep (or a live page) away from the file's drive, a circle rolling
+    on a line, placed at the file's drive by its own angle (its phase,
+    :mod:`graphkin.kinematics.analytic.phase`), has the angle
+    ``θ_l = θ_o + c - σ s/ρ``; ``c`` is read from the construction at the
+    file's drive.  None when a contact is not of that kind (on a circle; a
+    phase that places another link) or the file's posture is not constructed.
+    """
+    from graphkin.errors import GraphkinError
+    from graphkin.kinematics.analytic.phase import rolling_phases
+    from graphkin.kinematics.posture import build_posture
+
+    phases = {p.key: p for p in rolling_phases(mech)}
+    for r in mech.rolling:
+        ph = phases.get(r.key)
+        if ph is None or ph.kind != "angle" or ph.link != r.link or not r.on_line:
+            return None
+    try:
+        pc = build_posture(mech, tol)
+    except GraphkinError:
+        return None
+    env = pc.values
+    out: dict[str, float] = {}
+    for r in mech.rolling:
+        th_o = pc.angles.get(r.on)
+        names = (r.center, f"{r.key}:L0", f"{r.key}:L1")
+        if th_o is None or any(n not in env for n in names):
+            return None
+        p, a, bb = (np.asarray(env[n], dtype=float) for n in names)
+        p, a, bb = p[:2] / p[2], a[:2] / a[2], bb[:2] / bb[2]
+        u = (bb - a) / float(np.hypot(*(bb - a)))
+        s = float(np.dot(p - a, u))
+        sigma = 1.0 if r.side == "left" else -1.0
+        out[r.key] = phases[r.key].value - float(np.asarray(env[th_o])) + sigma * s / float(
+            r.radius)
+    return out

@@ -66,23 +66,17 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.kinematics.posture import NotDecomposable
     from graphkin.kinematics.sweep.engine import _Engine
 
-    try:
-        eng = _Engine(mech, DEFAULT_TOL)
-    except NotDecomposable as exc:
-        raise InputError(f"no live page: the mechanism is not solved by a construction ({exc}: "
-                         "Newton's method solves it)", file=source) from None
-    if eng.method != "construction" or eng.pc is None:
-        why = ("it has a rolling contact, whose roller turns with its travel: Newton's method "
-               "solves it, no ruler-and-compass step" if mech.rolling else
-               f"{eng.reason}: Newton's method solves it" if eng.reason else
-               "Newton's method solves it")
-        raise InputError(f"no live page: the mechanism is not solved by a construction ({why})",
-                         file=source)
     follower = next((x for x in mech.drives if x.law is not None), None)
     if follower is not None:  # the page moves one input; holding the other would be wrong
         raise InputError("no live page: this drive follows the first by a law, which the page "
                          "does not move with it yet (sweep, plot and animate do)",
                          key=f"{follower.key}.follows", file=source)
+    try:
+        eng = _Engine(mech, DEFAULT_TOL)
+    except NotDecomposable:  # not one group at a time: Newton's method on the page
+        return _newton_page(mech, file_data, source)
+    if eng.method != "construction" or eng.pc is None:
+        return _newton_page(mech, file_data, source)
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
     if eng.combined is not None:
@@ -102,21 +96,7 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
-    d = mech.drives[0]
-    m = re.fullmatch(r"drive\[(\d+)\]", d.key)
-    # where the file gives the drive's value: its table (or its place in [[drive]]) and key
-    drive: dict[str, Any] = {"label": eng.label, "kind": d.kind, "link": d.link,
-                             "value": float(d.value), "index": int(m.group(1)) if m else 0,
-                             "key": {"relative": "angle"}.get(d.kind, d.kind),
-                             "degrees": d.kind in ("angle", "relative")}
-    link = mech.links.get(d.link)
-    if d.kind == "angle" and link is not None:
-        frame = mech.links[FRAME].points
-        pivot = next((n for n in link.points if n in frame), None)
-        tip = next((n for n in link.points if n != pivot and n in made), None)
-        if pivot is not None and tip is not None:
-            (px, py), (tx, ty) = link.points[pivot], link.points[tip]
-            drive.update(pivot=pivot, tip=tip, phi=math.atan2(ty - py, tx - px))
+    drive = _drive_data(mech, eng.label, made)
     names = [n for n, _ in fn.slots]
     # a frame point where a path of the frame passes (a slider's line, a slot's center) is
     # part of that path, whose direction other steps carry: not draggable
@@ -150,8 +130,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
-    js = RUNTIME + fn.source
     from graphkin.render.live_centers import centers_data
+    from graphkin.render.live_newton import roll_edit_js
+
+    js = RUNTIME + fn.source + roll_edit_js(mech, made)
 
     data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
     js += cjs
@@ -166,6 +148,45 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         data["forces"], fjs = fd
         js += fjs
     return data, js
+
+
+def _drive_data(mech: Mechanism, label: str, made: set[str]) -> dict[str, Any]:
+    """The page's drive: its input's label, kind, value, and the crank's pin to drag."""
+    d = mech.drives[0]
+    m = re.fullmatch(r"drive\[(\d+)\]", d.key)
+    # where the file gives the drive's value: its table (or its place in [[drive]]) and key
+    drive: dict[str, Any] = {"label": label, "kind": d.kind, "link": d.link,
+                             "value": float(d.value), "index": int(m.group(1)) if m else 0,
+                             "key": {"relative": "angle"}.get(d.kind, d.kind),
+                             "degrees": d.kind in ("angle", "relative")}
+    link = mech.links.get(d.link)
+    if d.kind == "angle" and link is not None:
+        frame = mech.links[FRAME].points
+        pivot = next((n for n in link.points if n in frame), None)
+        tip = next((n for n in link.points if n != pivot and n in made), None)
+        if pivot is not None and tip is not None:
+            (px, py), (tx, ty) = link.points[pivot], link.points[tip]
+            drive.update(pivot=pivot, tip=tip, phi=math.atan2(ty - py, tx - px))
+    return drive
+
+
+def _newton_page(mech: Mechanism, file_data: dict[str, Any],
+                 source: str) -> tuple[dict[str, Any], str]:
+    """The page of a mechanism only Newton's method solves (:mod:`.live_newton`)."""
+    from graphkin.render.live_newton import newton_data
+
+    data, js = newton_data(mech, source)
+    made = {n for lk in mech.links.values() for n in lk.points}
+    data.update(title=mech.title or source, unit=mech.length_unit,
+                drive=_drive_data(mech, mech.drives[0].label, made), file=file_data,
+                style={k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
+                       if k in STYLES})
+    js = RUNTIME + js
+    from graphkin.render.live_centers import centers_data
+
+    names = list(made)   # every named point is on the Newton page's posture
+    data["centers"], cjs = centers_data(mech, names, made)
+    return data, js + cjs
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")

@@ -50,6 +50,13 @@ th { background: #f4f4f4; }
 """
 
 APP_JS = r"""
+// a panel not drawn: its figure keeps its caption and says why
+function gkRefuse(svg, why) {
+  const f = svg.parentNode, p = document.createElement("p");
+  svg.style.display = "none"; f.style.display = "";
+  p.className = "gk-refused"; p.textContent = why;
+  f.appendChild(p);
+}
 // the page's script, run inside ``root`` (the document, or a notebook widget's element):
 // D is the page's data, GK_NAME the file's name, onEdit(toml) is told every edit (or null);
 // returns the page's API (state, setDrive, toml, redraw)
@@ -71,7 +78,7 @@ const st = D.style;
 const ink = (k, p) => (st[k] && st[k][p] !== undefined) ? st[k][p] : "#000";
 const px = (lw) => 1.4 * lw;
 const views = {};
-const panels = ["posture"].concat(D.rates ? ["velocity", "acceleration"] : []);
+const panels = ["posture"].concat(D.rates && !D.refused ? ["velocity", "acceleration"] : []);
 const svgs = {};
 for (const name of ["posture", "velocity", "acceleration", "kennedy", "curvature"]) {
   const svg = byId("gk-" + name);
@@ -82,6 +89,8 @@ for (const name of ["posture", "velocity", "acceleration", "kennedy", "curvature
   }
   svgs[name] = svg;
 }
+// a panel Python itself does not draw says why, in its one line (render/live_newton.py)
+for (const name of Object.keys(D.refused || {})) gkRefuse(svgs[name], D.refused[name]);
 const moving = [];
 for (const lid of Object.keys(D.links)) {
   if (lid === "1") continue;
@@ -109,13 +118,14 @@ let curves = {};
 function cycle() {
   curves = {};
   if (D.drive.kind !== "angle" || !traced.length) return curves;
-  const J = Object.assign({}, I);
+  const J = Object.assign({}, I), mark = construction.mark ? construction.mark() : null;
   for (const n of traced) curves[n] = [];
   for (let k = 0; k < 360; k++) {
     J[D.drive.label] = drive + 2 * Math.PI * k / 360;
     const r = construction(J, K);
     for (const n of traced) curves[n].push(r ? r[n] : null);
   }
+  if (mark) construction.restore(mark);
   return curves;
 }
 
@@ -429,7 +439,9 @@ function redraw(refit) {
   curv = D.curvature ? gkCurvature(D.curvature, r) : null;
   if (refit || !views.posture) for (const p of panels) fit(p, r);
   drawPosture(r, !ok);
-  if (D.rates) { drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok); }
+  if (D.rates && !D.refused) {
+    drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok);
+  }
   if (D.centers) drawKennedyCircle();
   byId("gk-centers-note").textContent = gkCentersWhy(D.centers, ics);
   if (D.curvature) drawCurvature(r, !ok, refit);
@@ -531,7 +543,9 @@ byId("gk-undo").addEventListener("click", () => {
   K = s[0]; drive = s[1]; redraw(true); notify();
 });
 byId("gk-reset").addEventListener("click", () => {
-  snapshot(); K = K0.slice(); drive = drive0; redraw(true); notify();
+  snapshot(); K = K0.slice(); drive = drive0;
+  if (construction.reset) construction.reset();
+  redraw(true); notify();
 });
 
 function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
@@ -575,6 +589,7 @@ function edited() {
     f.assembly = isTable(f.assembly) ? f.assembly : {};
     for (const n of D.assembly) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];
   }
+  if (construction.edit) construction.edit(f, r);
   const out = [];
   tomlTable(out, f, []);
   return out.join("\n").replace(/^\n+/, "") + "\n";

@@ -26,7 +26,7 @@ PEN_JS = r"""
 const pen = {on: false, panel: "velocity", pole: null, pts: []};
 const penBtn = byId("gk-pen"), penLabel = byId("gk-pen-label"), penPanel = byId("gk-pen-panel");
 const PEN_MM = %PEN_MM%;  // mm of the exported drawing per pixel of the panel
-if (!D.rates) byId("gk-pen-bar").style.display = "none";
+if (!D.rates || D.refused) byId("gk-pen-bar").style.display = "none";
 function penNext() {
   // the next letter: the first moving point not drawn yet (b, c, ...; b' in the acceleration)
   const used = pen.pts.map((q) => q[0]);

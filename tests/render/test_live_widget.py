@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -68,9 +67,6 @@ def test_a_mechanism_without_its_file_is_refused_in_one_line():
     with pytest.raises(InputError, match="needs the mechanism's file") as e:
         graphkin.live(mech)
     assert "\n" not in str(e.value)
-    with pytest.raises(InputError, match="not solved by a construction"):
-        graphkin.live(Path(__file__).resolve().parents[2] / "examples"
-                      / "ex3_9_rolling_wheel.toml")
 
 
 HOST = """<!DOCTYPE html><html><head><meta charset="utf-8"><style>{css}</style></head>

@@ -44,3 +44,21 @@ def _coordinate_line(s: Array, *, tol: Tolerance, axis: str) -> tuple[Array]:
     if axis == "x":
         return (g.line_through(g.point(s, zero), np.array([0.0, 1.0])),)
     return (g.line_through(g.point(zero, s), np.array([1.0, 0.0])),)
+
+
+@op("roll_angle", kind="scalar")
+def _roll_angle(theta_on: Array, center: Array, l0: Array, l1: Array, *, tol: Tolerance,
+                c: float, k: float) -> tuple[Array]:
+    """The angle of a circle rolling on a line without slip: ``θ_l = θ_o + c - k s``.
+
+    ``s = u·(P - L0)`` is the travel of the circle's center ``P`` along the
+    line ``L0 L1`` (``u`` its unit direction), ``k = σ/ρ`` (``σ = +1`` for a
+    circle on the left of the directed line, ``ρ`` its radius) and ``c`` the
+    constant of the file's posture: no slip, ``ω_l - ω_o = -σ ṡ/ρ`` (Eq.
+    3.13), integrated (Sec. 2.19, Eq. b; Example 3.9).
+    """
+    p, a, b = g.xy(center), g.xy(l0), g.xy(l1)
+    u = b - a
+    n = np.hypot(u[..., 0], u[..., 1])
+    s = ((p[..., 0] - a[..., 0]) * u[..., 0] + (p[..., 1] - a[..., 1]) * u[..., 1]) / n
+    return (np.asarray(theta_on, dtype=float) + c - k * s,)

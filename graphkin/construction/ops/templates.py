@@ -177,6 +177,21 @@ def _add_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.add(t, gen.num(step.params["offset"])))
 
 
+@template("roll_angle")
+def _roll_angle(gen: Gen, step: Step) -> None:
+    # θ_l = θ_o + c - k u·(P - L0), u the unit direction of L0 L1 (no slip, Sec. 2.19)
+    t = gen.scalar(step.inputs[0])
+    px, py = gen.pt(step.inputs[1])
+    ax, ay = gen.pt(step.inputs[2])
+    bx, by = gen.pt(step.inputs[3])
+    ux, uy = gen.let(gen.sub(bx, ax), "dx"), gen.let(gen.sub(by, ay), "dy")
+    n = gen.let(f"_sqrt({gen.add(gen.mul(ux, ux), gen.mul(uy, uy))})", "n")
+    gen.bail_unless(f"_min({n}, None) > 0.0")
+    s = gen.add(gen.mul(gen.sub(px, ax), ux), gen.mul(gen.sub(py, ay), uy))
+    c, k = gen.num(step.params["c"]), gen.num(step.params["k"])
+    gen.put_scalar(step.outputs[0], gen.sub(gen.add(t, c), gen.mul(k, f"({s} / {n})")))
+
+
 def _join_homogeneous(gen: Gen, step: Step) -> None:
     """The line through two points, either of them at infinity: ``p × q``, normalized.
 
@@ -396,6 +411,16 @@ def _coriolis(gen: Gen, step: Step) -> None:
     gen.put_rows(step.outputs[0], "vector", gen.mul(gen.neg(w2), v1), gen.mul(w2, v0))
 
 
+@template("rolling_normal")
+def _rolling_normal(gen: Gen, step: Step) -> None:
+    # A^r = factor (ω_i - ω_j)² (P - C): toward the roller's center (Eq. 4.19)
+    c, center, wi, wj = step.inputs
+    r0, r1 = _diff(gen, c, center)
+    w = gen.let(gen.sub(gen.scalar(wi), gen.scalar(wj)), "w")
+    k = gen.let(gen.mul(gen.num(step.params.get("factor", 1.0)), gen.mul(w, w)), "k")
+    gen.put_rows(step.outputs[0], "vector", gen.mul(k, r0), gen.mul(k, r1))
+
+
 def _along(gen: Gen, step: Step) -> None:
     # add_along (p, p0, p1, s) and along_line (p0, p1, s): from the first input, a signed
     # distance s along the direction p0 → p1
@@ -510,14 +535,34 @@ def _perpendicular_cw(gen: Gen, step: Step) -> None:
     gen.put_rows(step.outputs[0], "line", b, gen.neg(a), _div(gen, c, pw))
 
 
+def _finite_xy(gen: Gen, label: str) -> tuple[str, str]:
+    """A point's x and y; a homogeneous row ``(x, y, w)`` (the centers' writer) divided by w.
+
+    Replay (None) unless ``w`` is clearly nonzero: the point must be finite.
+    """
+    v = gen.val(label)
+    if v.form == "point":
+        return gen.pt(label)
+    x, y, w = gen.rows(label)
+    gen.bail_unless(f"_abs({w}) > 0.0")
+    return gen.let(f"{x} / {w}", "x"), gen.let(f"{y} / {w}", "y")
+
+
 @template("along_ray", python=False)
 def _along_ray(gen: Gen, step: Step) -> None:
-    ax, ay = gen.pt(step.inputs[0])
-    dx, dy = _diff(gen, *step.inputs)
+    # a center at a given distance from a point towards another (two circles touching on
+    # their line of centers, Sec. 3.13): the points finite
+    ax, ay = _finite_xy(gen, step.inputs[0])
+    bx, by = _finite_xy(gen, step.inputs[1])
+    dx, dy = gen.let(gen.sub(bx, ax), "dx"), gen.let(gen.sub(by, ay), "dy")
     n = gen.let(f"_sqrt({gen.add(gen.mul(dx, dx), gen.mul(dy, dy))})", "n")
     _positive(gen, n)
     k = gen.let(f"{gen.num(step.params['distance'])} / {n}", "k")
-    gen.put_point(step.outputs[0], gen.add(ax, gen.mul(dx, k)), gen.add(ay, gen.mul(dy, k)))
+    x, y = gen.add(ax, gen.mul(dx, k)), gen.add(ay, gen.mul(dy, k))
+    if getattr(gen, "homogeneous", False):  # the centers' writer: every point as (x, y, w)
+        gen.put_rows(step.outputs[0], "point", x, y, "1.0")
+    else:
+        gen.put_point(step.outputs[0], x, y)
 
 
 @template("tangent_foot", python=False)

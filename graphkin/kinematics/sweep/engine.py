@@ -57,16 +57,28 @@ class _Engine:
                              "constructions only; this mechanism has rolling contact or "
                              "[rates]: leave out the rates, or give a ratio and an offset",
                              key=f"{bad.key}.follows.table", file=mech.source)
+        travel = None
         if mech.rolling:
             # away from the file's drive a roller's angle follows its travel (the no-slip
-            # condition integrated), which no ruler-and-compass step gives
-            self.method = "analytic"
-            self.reason = ("rolling contact: the roller's angle follows its travel over the "
-                           "sweep, so the analytic solver sweeps it")
-            return
+            # condition integrated): a step when its center and line are drawn before it
+            # (roll_angle); otherwise no ruler-and-compass step gives it
+            from graphkin.kinematics.posture_drives import rolling_travel
+
+            travel = rolling_travel(mech, tol)
+            if travel is None:
+                self.method = "analytic"
+                self.reason = ("rolling contact: the roller's angle follows its travel over "
+                               "the sweep, so the analytic solver sweeps it")
+                return
         try:
-            self.pc = self._build(mech, tol)
+            self.pc = (self._build(mech, tol) if travel is None else
+                       build_posture(mech, tol, travel=travel))
         except NotDecomposable as exc:
+            if travel is not None:
+                self.method = "analytic"
+                self.reason = ("rolling contact: the roller's angle follows its travel over "
+                               "the sweep, so the analytic solver sweeps it")
+                return
             self.method = "analytic"
             self.reason = str(exc)
             if mech.has_rates and any(x.law is not None and not x.law.linear

@@ -1,0 +1,286 @@
+"""The live page of a mechanism only Newton's method solves (render/live_newton.py).
+
+Two sliders closing one loop, a rolling contact whose roller turns with its
+travel, a cam follower's linkage: the page runs Newton's method on the
+analytic solver's rows written out as JavaScript (kinematics/analytic/jsrows.py)
+from the previous posture.  After random drags, every value the page shows
+(read in headless Chromium) must be what ``graphkin solve`` says of the file
+the page saves, to 1e-9 of its scale; the rolling contact's saved angle makes
+that file's posture the page's.  Skipped without Chromium.
+"""
+
+from __future__ import annotations
+
+import math
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from cdp import browser_or_skip
+from hypothesis import given
+from hypothesis import strategies as st
+from strategies import examples, scotch_yokes
+from strategies_rolling import rolling_arrangements
+
+import graphkin
+from graphkin.files import load_toml
+from graphkin.render.live import live_html
+
+ROOT = Path(__file__).resolve().parents[2]
+REL = 1e-9
+
+NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
+          "gallery/mechanisms/fig3_18_rolling_wheel.toml", "gallery/gears/ex11_7.toml",
+          "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
+          "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
+          "examples/ex3_9_rolling_wheel.toml"]
+
+
+@pytest.fixture(scope="module")
+def browser():
+    b = browser_or_skip(1300, 1000)
+    yield b
+    b.close()
+
+
+def _page(tmp_path: Path, path: Path) -> Path:
+    out = tmp_path / (path.stem + ".html")
+    out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
+    return out
+
+
+def _same_as_solve(browser, tmp_path: Path) -> dict:
+    """Positions, velocities and accelerations of the page against solve of its saved file."""
+    r = browser.js("window.graphkinLive.state()")["result"]
+    assert r is not None
+    saved = tmp_path / "saved.toml"
+    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+    sol = graphkin.load(saved).solve()
+    mech = sol.mechanism
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points]
+    scale = 1.0 + max(abs(v) for n in names for v in r[n])
+    for n in names:
+        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale, err_msg=n)
+    if mech.has_rates:
+        for pre, of in (("v", sol.velocity), ("a", sol.acceleration)):
+            s = 1.0 + max(abs(v) for n in names for v in r[f"{pre}({n})"])
+            for n in names:
+                np.testing.assert_allclose(r[f"{pre}({n})"], of(n), rtol=0, atol=REL * s,
+                                           err_msg=f"{pre}({n})")
+        for lid in mech.links:
+            np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
+                                       atol=REL * (1 + abs(sol.omega(lid))))
+    return r
+
+
+@pytest.mark.parametrize("name", NEWTON)
+def test_random_drags_equal_solve_of_the_saved_file(browser, tmp_path, name):
+    path = ROOT / name
+    browser.open(_page(tmp_path, path))
+    assert browser.errors() == []
+    _same_as_solve(browser, tmp_path)
+    # the panels Python does not draw say why, in Python's words
+    why = browser.js("[].map.call(document.querySelectorAll('.gk-refused'),"
+                     " function (e) { return e.textContent; })")
+    assert len(why) == 2 and all(w.startswith("no ") for w in why)
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    answered = 0
+    for step in rng.uniform(-1.2, 1.2, size=4):  # radians of the drive, from where it is
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        r = browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})")
+        if r is None:  # cannot be assembled there: said so, never NaN
+            assert "cannot be assembled" in browser.js(
+                "document.getElementById('gk-status').textContent")
+            body = browser.js("document.body.innerText")
+            assert "NaN" not in body and "Infinity" not in body
+            browser.js(f"window.graphkinLive.setDrive({d!r})")
+            continue
+        _same_as_solve(browser, tmp_path)
+        answered += 1
+    assert answered >= 1
+    assert browser.errors() == []
+
+
+def test_the_wheel_rolls_its_travel(browser, tmp_path):
+    # Example 3.9 (Fig. 3.18): the wheel of radius 100 rolls on the ground, so its center G
+    # moves along the ground by -ρ Δθ4 (to the left as the wheel turns counterclockwise)
+    browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig3_18_rolling_wheel.toml"))
+    r0 = browser.js("window.graphkinLive.state()")["result"]
+    r1 = browser.js(f"window.graphkinLive.setDrive({math.radians(90.0 - 25.0)!r})")
+    assert r1 is not None
+    dth = r1["θ4"] - r0["θ4"]
+    assert abs(dth) > 0.01
+    np.testing.assert_allclose(r1["G"][0] - r0["G"][0], -100.0 * dth, rtol=0, atol=1e-9 * 300)
+    assert abs(r1["G"][1] - 100.0) < 1e-9 * 300  # the center stays one radius up
+    # back to the file's drive: the wheel is where it was (no slip, the same path back)
+    r2 = browser.js(f"window.graphkinLive.setDrive({math.radians(90.0)!r})")
+    np.testing.assert_allclose(r2["G"], r0["G"], rtol=0, atol=1e-9 * 300)
+
+
+def test_dragging_a_pivot_of_the_scotch_yoke(browser, tmp_path):
+    # Fig. 3.27: drag the crank's pivot O2; Newton follows from the posture before, and the
+    # saved file (O2 moved) solves to the page's posture and rates
+    browser.open(_page(tmp_path, ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"))
+    xy = browser.js("(function () { var r = document.querySelector('.gk-handle[data-kind="
+                    "\"frame\"]').getBoundingClientRect(); return [r.x + r.width / 2,"
+                    " r.y + r.height / 2]; })()")
+    x0, y0 = xy
+    browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0, y=y0)
+    browser.send("Input.dispatchMouseEvent", type="mousePressed", x=x0, y=y0, button="left",
+                 clickCount=1)
+    for k in range(1, 5):
+        browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=x0 + 3 * k, y=y0 - 2 * k,
+                     button="left", buttons=1)
+    browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=x0 + 12, y=y0 - 8,
+                 button="left", clickCount=1)
+    r = _same_as_solve(browser, tmp_path)
+    saved = load_toml(tmp_path / "saved.toml")
+    assert saved["links"]["1"]["O2"] != [0, 0]
+    assert r["O2"] == saved["links"]["1"]["O2"]
+    assert browser.errors() == []
+
+
+def test_the_coupler_curve_is_the_analytic_sweep(browser, tmp_path):
+    # the scotch yoke's point F over the whole turn, from the page, against graphkin's sweep
+    # (Newton's method in Python, each posture from the one before)
+    path = ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"
+    browser.open(_page(tmp_path, path))
+    state = browser.js("window.graphkinLive.state()")
+    mech = graphkin.load(path)
+    start = math.degrees(state["drive"])
+    sw = mech.sweep(count=360, start=start)
+    for n, curve in state["curves"].items():
+        got = np.array([p if p is not None else [np.nan, np.nan] for p in curve], dtype=float)
+        x, y = sw.columns[f"x_{n}"], sw.columns[f"y_{n}"]
+        assert np.all(np.isfinite(got[:, 0]) == np.isfinite(x))
+        ok = np.isfinite(x)
+        np.testing.assert_allclose(got[ok, 0], x[ok], rtol=0, atol=1e-9 * 200)
+        np.testing.assert_allclose(got[ok, 1], y[ok], rtol=0, atol=1e-9 * 200)
+    # drawing the curves left the posture where it was
+    assert browser.js("window.graphkinLive.state()")["result"] == state["result"]
+
+
+def _same_as_sweep(r: dict, mech, path: np.ndarray, tol_scale: float) -> None:
+    """The page's values at the end of ``path`` against graphkin's analytic sweep along it."""
+    from graphkin.kinematics.analytic import solve_analytic_many
+
+    sol = solve_analytic_many(mech, path)
+    assert bool(np.asarray(sol.valid)[-1])
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points]
+    for n in names:
+        np.testing.assert_allclose(r[n], np.asarray(sol.position(n))[-1], rtol=0,
+                                   atol=REL * tol_scale, err_msg=n)
+    if not mech.has_rates:
+        return
+    for pre, of in (("v", sol.velocity), ("a", sol.acceleration)):
+        pole = r["o_" + pre]
+        got = {n: np.subtract(r[f"{pre}({n})"], pole) for n in names if f"{pre}({n})" in r}
+        s = 1.0 + max(abs(v) for x in got.values() for v in x)
+        for n, x in got.items():
+            np.testing.assert_allclose(x, np.asarray(of(n))[-1], rtol=0, atol=REL * s,
+                                       err_msg=f"{pre}({n})")
+
+
+@examples(10)
+@given(rm=st.one_of(rolling_arrangements(), scotch_yokes()),
+       steps=st.lists(st.floats(-0.6, 0.6), min_size=2, max_size=2))
+def test_random_mechanisms_and_drags_equal_the_sweep(browser, tmp_path_factory, rm, steps):
+    # every rolling arrangement of tests/strategies_rolling.py (a construction page when the
+    # roller's angle follows its travel by a step, else Newton's method) and random Scotch
+    # yokes, dragged by random drive steps: the page's values are graphkin's analytic sweep
+    # along the same path of drive values (each posture continuing the one before)
+    tmp = tmp_path_factory.mktemp("newton")
+    mech = rm.mechanism()
+    page = tmp / "random.html"
+    page.write_text(live_html(mech, rm.data, "random.toml"), encoding="utf-8")
+    browser.open(page)
+    assert browser.errors() == []
+    d0 = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js("window.graphkinLive.state()")["result"] is not None
+    angle = mech.drives[0].kind in ("angle", "relative")
+    done = [d0]
+    for step in steps:
+        step = step if angle else step * 0.2 * rm.scale()
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        r = browser.js(f"window.graphkinLive.setDrive({d + step!r})")
+        if r is None:
+            assert "cannot be assembled" in browser.js(
+                "document.getElementById('gk-status').textContent")
+            browser.js(f"window.graphkinLive.setDrive({d!r})")
+            continue
+        done.append(d + step)
+        # the same path of drive values, in steps of at most 1° (or 1 % of the size)
+        dense = [d0]
+        for a, b in zip(done, done[1:]):
+            n = max(1, math.ceil(abs(b - a) / (math.radians(1.0) if angle else
+                                               0.01 * rm.scale())))
+            dense += list(np.linspace(a, b, n + 1)[1:])
+        vals = np.array(dense)
+        if len(mech.drives) > 1:
+            vals = np.column_stack([vals] + [np.full_like(vals, x.value)
+                                             for x in mech.drives[1:]])
+        _same_as_sweep(r, mech, vals, rm.scale())
+    assert browser.errors() == []
+
+
+def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tmp_path):
+    # Example 4.8 (Fig. 4.20): the roller 4 is pinned to the crank at its center B, so its
+    # angle follows its travel along the follower's face by one step (roll_angle,
+    # θ4 = θ3 + c - σ s/ρ): the page is the construction with both polygons, and after
+    # drags it equals solve of the saved file (the roller's angle saved with it)
+    browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml"))
+    assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
+    assert browser.js("window.graphkinLive.state()")["result"]["o_v"] is not None
+    # near θ2 = 0 the roller cannot reach the face (graphkin's sweep: nothing from -30° to
+    # 30°): the page says so there, like the sweep
+    sw = graphkin.load(ROOT / "gallery/mechanisms/fig4_20_roller_follower.toml").sweep(
+        count=1, start=0.0)
+    assert not bool(sw.assembled[0])
+    assert browser.js("window.graphkinLive.setDrive(0)") is None
+    for deg in (70.0, 130.0, -100.0, 170.0):
+        assert browser.js(f"window.graphkinLive.setDrive({math.radians(deg)!r})") is not None
+        r = browser.js("window.graphkinLive.state()")["result"]
+        saved = tmp_path / "saved.toml"
+        saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+        sol = graphkin.load(saved).solve()
+        for n in ("B", "F1", "F2"):
+            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=1e-9 * 10)
+            v = np.subtract(r[f"v({n})"], r["o_v"])
+            a = np.subtract(r[f"a({n})"], r["o_a"])
+            np.testing.assert_allclose(v, sol.velocity(n), rtol=0, atol=1e-9 * 100)
+            np.testing.assert_allclose(a, sol.acceleration(n), rtol=0, atol=1e-9 * 1000)
+        np.testing.assert_allclose(r["θ4"], float(sol.angle_rad("4")), rtol=0, atol=1e-9)
+    assert browser.errors() == []
+
+
+@pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
+                                  "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
+                                  "gallery/centers/fig3_27_scotch_yoke.toml",
+                                  "gallery/gears/ex11_7.toml"])
+def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
+    # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
+    # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal
+    # to the slot; two gears' center on their line of centers), re-found on the page from
+    # Newton's posture after a drag: graphkin's own centers of the saved file
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    browser.open(_page(tmp_path, ROOT / name))
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 0.3!r})") is not None
+    _same_as_solve(browser, tmp_path)
+    page = browser.js("window.graphkinLive.state()")["centers"]
+    ic = instant_centers(graphkin.load(tmp_path / "saved.toml").solve())
+    labels = [c.label for c in ic.centers.values()]
+    assert labels and set(labels) <= set(page)
+    size = graphkin.load(ROOT / name).scale
+    for lab in labels:
+        got, want = np.asarray(page[lab], dtype=float), np.asarray(ic.values[lab], dtype=float)
+        if abs(want[2]) > 1e-9:  # finite: the same point
+            w = want[:2] / want[2]  # a far center (nearly parallel lines) carries more error
+            np.testing.assert_allclose(got[:2] / got[2], w, rtol=0,
+                                       atol=1e-9 * (size + float(np.hypot(*w))), err_msg=lab)
+        else:  # at infinity: the same direction
+            assert abs(got[2]) < 1e-9 * max(abs(got[0]), abs(got[1]))
+            assert abs(got[0] * want[1] - got[1] * want[0]) < 1e-9, lab
+    assert browser.errors() == []
