@@ -150,6 +150,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
+    from graphkin.render.live_cams import hold_cams
+
+    hold_cams(data, mech, source)  # a cam: held at the file's angle, where its linkage holds
     js = RUNTIME + fn.source
     from graphkin.render.live_centers import centers_data
 
