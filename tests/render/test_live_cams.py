@@ -26,12 +26,15 @@ from cam_strategies import cam_toml, cams
 from cdp import browser_or_skip
 from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
+from live_edit import same_curvature
 from strategies import examples
 
 import graphkin
 from graphkin.cams import Cam, FollowerKind
 from graphkin.errors import GraphkinError, InputError
 from graphkin.files import load_toml
+from graphkin.kinematics.curvature.link import curvature
+from graphkin.kinematics.instant_centers import instant_centers
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_data, live_html
 from graphkin.render.live_cams import cam_points
@@ -54,13 +57,35 @@ def _state(browser) -> dict:
     return st_
 
 
+def _same_center(got, ref, size: float, lab: str) -> None:
+    """A center of the page (homogeneous) is graphkin's: a point, or a direction at infinity."""
+    g = np.asarray(got, dtype=float)
+    r = np.asarray(ref, dtype=float)
+    if r[2] == 0.0:
+        u, v = g[:2] / np.hypot(*g[:2]), r[:2] / np.hypot(*r[:2])
+        np.testing.assert_allclose(u * np.sign(np.dot(u, v)), v, rtol=0, atol=REL, err_msg=lab)
+        return
+    q = r[:2] / r[2]
+    np.testing.assert_allclose(g[:2] / g[2], q, rtol=0, atol=REL * (size + np.hypot(*q)),
+                               err_msg=lab)
+
+
 def _same_as_solve(browser, tmp_path: Path, mech: graphkin.Mechanism, state: dict) -> None:
-    """Every point, velocity, acceleration and link rate of the page is ``solve``'s."""
+    """Every point, velocity, acceleration, link rate, instant center and curvature is
+    ``solve``'s (the equivalent linkage of the saved file, at its cam angle)."""
     saved = tmp_path / "saved.toml"
     saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
     sol = graphkin.load(saved).solve()
-    r = state["result"]
+    D = browser.js("JSON.parse(document.getElementById('gk-data').textContent)")
     size = 1.0 + mech.scale
+    if state["centers"] is not None:
+        ic = instant_centers(sol)
+        for lab in D["centers"]["labels"]:
+            _same_center(state["centers"][lab], ic.values[lab], size, lab)
+    if state["curvature"] is not None:
+        same_curvature(D, state["curvature"], curvature(sol)[D["curvature"]["link"]].values,
+                       size)
+    r = state["result"]
     checked = 0
     for lk in mech.links.values():
         for n in lk.points:
