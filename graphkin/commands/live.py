@@ -34,12 +34,7 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.render.live import live_html
 
     mech = graphkin.load(args.file)
-    if mech.cams:  # its equivalent linkage holds at the file's cam angle only (Sec. 4.7)
-        from graphkin.errors import InputError
-
-        raise InputError("a live page of a cam mechanism is not supported (sweep, plot and "
-                         "animate turn its cam; solve and draw stand at the file's cam angle)",
-                         key="cams", file=args.file)
+    # a cam mechanism's page is held at the file's cam angle (render/live_cams.py, Sec. 4.7)
     text = live_html(mech, load_toml(args.file), str(args.file))
     out = write_text(args.output, text, "--output")
     print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)

@@ -130,6 +130,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
+    from graphkin.render.live_cams import hold_cams
+
+    hold_cams(data, mech, source)  # a cam: held at the file's angle, where its linkage holds
     from graphkin.render.live_centers import centers_data
     from graphkin.render.live_newton import roll_edit_js
 

@@ -117,7 +117,7 @@ for (const lid of Object.keys(D.links)) {
 let curves = {};
 function cycle() {
   curves = {};
-  if (D.drive.kind !== "angle" || !traced.length) return curves;
+  if (D.drive.kind !== "angle" || D.cam || !traced.length) return curves;
   const J = Object.assign({}, I), mark = construction.mark ? construction.mark() : null;
   for (const n of traced) curves[n] = [];
   for (let k = 0; k < 360; k++) {
@@ -429,6 +429,9 @@ function showDrive() {
 }
 
 function redraw(refit) {
+  // a cam's equivalent linkage holds at the file's cam angle only (Sec. 4.7; live_cams.py)
+  const held = D.cam && drive !== drive0;
+  if (held) drive = drive0;
   res = solve();
   const ok = res !== null;
   if (ok) good = res;
@@ -447,8 +450,9 @@ function redraw(refit) {
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
-  status.textContent = ok ? "" : "This posture cannot be assembled (or is at a dead center, " +
-    "where the construction has no clean answer): drag back.";
+  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" :
+    "This posture cannot be assembled (or is at a dead center, " +
+    "where the construction has no clean answer): drag back.");
   showDrive();
 }
 
