@@ -105,8 +105,8 @@ def _same_as_solve(browser, tmp_path: Path, mech: graphkin.Mechanism, state: dic
         for lab in D["centers"]["labels"]:
             _same_center(state["centers"][lab], ic.values[lab], size, lab)
     if state["curvature"] is not None:
-        same_curvature(D, state["curvature"], curvature(sol)[D["curvature"]["link"]].values,
-                       size)
+        lc = curvature(sol)[D["curvature"]["link"]]
+        same_curvature(D, state["curvature"], lc.values, size, steps=lc.construction.steps)
     r = state["result"]
     checked = 0
     for lk in mech.links.values():
