@@ -136,3 +136,16 @@ def test_reversals_of_a_program_of_strokes_and_dwells(segs) -> None:
             assert gb is None
         else:
             assert gb == pytest.approx(wb, abs=1e-6)
+
+
+def test_time_ratio_is_given_whatever_alpha_the_file_states() -> None:
+    # The offset slider-crank in inches (crank 2, rod 7, offset 1; α7 = 150 rad/s² in the
+    # file) once got no time ratio because of its α.  By hand (Sec. 1.7): the slider
+    # stops with crank and rod in line, extended at θ = asin(1/9) and folded at
+    # θ = 180° + asin(1/5); the crank turns α = 180° + asin(1/5) − asin(1/9) on one
+    # stroke and 360° − α on the other, Q = α/(360° − α) at a constant crank speed.
+    sw = graphkin.load(DATA / "offset_in.toml").sweep(count=360)
+    a = 180.0 + math.degrees(math.asin(1 / 5)) - math.degrees(math.asin(1 / 9))
+    (line,) = [ln for ln in time_ratios(sw) if "slider 12" in ln]
+    assert f"Q = α/β = {a:.2f}°/{360 - a:.2f}° = {a / (360 - a):.3f}" in line
+    assert "at a constant crank speed" in line

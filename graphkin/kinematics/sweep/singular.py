@@ -556,7 +556,8 @@ def time_ratios(sw: Sweep) -> list[str]:
     -------
     list of str
         One line per such output; none when the sweep is not one assembled turn
-        of a revolute drive at constant speed.
+        of a revolute drive (the ratio is that of a constant crank speed, whatever
+        α the file gives at its posture).
     """
     eng = sw._engine
     if eng is None:
@@ -565,9 +566,9 @@ def time_ratios(sw: Sweep) -> list[str]:
     if not (sw._cyclic and d.is_angle) or any(s.kind == "cannot-assemble"
                                               for s in sw.singular):
         return []
-    drive = next((dd for dd in sw.mechanism.drives if dd.link == d.link), None)
-    if drive is not None and drive.rate2 not in (None, 0.0):
-        return []
+    # Q is a property of the geometry at a constant crank speed (Eq. 1.5), said so in
+    # the line; a file's α (the crank's acceleration at its one posture) does not
+    # take it away
     out = []
     by: dict[str, list[float]] = {}
     dwells = set()
