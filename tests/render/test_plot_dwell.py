@@ -27,11 +27,12 @@ def test_a_dwell_at_a_limit_is_drawn_from_its_start_to_its_end() -> None:
                     not a.get_gid().startswith("limit-end-"))
     ends = sorted(float(a.get_xdata()[0]) for a in ax.get_lines()
                   if (a.get_gid() or "").startswith("limit-end-"))
-    # the follower's dwells (drive from the file's 230°): 360°-405° and 540°-570°; the
+    # the follower's dwells (drive from the file's 230°): 360°-405° and 540°-570°, to the
+    # round-off of their edges (2e-3°, tests/test_singular_dwell.py); the
     # rocker 6 it drives rests with it (both are marked, at the same drive values)
     assert sorted({round(v, 2) for v in ends}) == pytest.approx([405.0, 570.0], abs=1e-2)
-    assert 360.0 == pytest.approx(min(starts, key=lambda v: abs(v - 360.0)), abs=1e-3)
-    assert 540.0 == pytest.approx(min(starts, key=lambda v: abs(v - 540.0)), abs=1e-3)
+    assert 360.0 == pytest.approx(min(starts, key=lambda v: abs(v - 360.0)), abs=2e-3)
+    assert 540.0 == pytest.approx(min(starts, key=lambda v: abs(v - 540.0)), abs=2e-3)
     assert len(ax.patches) >= 2                                   # the two bands
 
 

@@ -303,14 +303,16 @@ def _change_points(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     return out
 
 
-def _reversals(dv: Array, speed: Array, ok: Array,
-               speed_at: Callable[[Array], Array]) -> list[tuple[float, float | None]]:
+def _reversals(dv: Array, speed: Array, ok: Array, speed_at: Callable[[Array], Array],
+               scale: float = 0.0) -> list[tuple[float, float | None]]:
     """Where an output stops and turns back: its speed changes sense (Sec. 1.10).
 
     ``speed`` is sampled at the drive values ``dv`` (valid where ``ok``), and
     ``speed_at(x)`` gives it at other drive values.  A speed within round-off
-    of zero (``DEFAULT_TOL.length_rel`` of the largest) is zero, not a sense:
-    a follower at rest through a dwell has ω or V of 1e-17 of either sign.
+    of zero (``DEFAULT_TOL.length_rel`` of the largest, or of ``scale``, the
+    speed's natural size per unit drive rate, whichever is larger) is zero,
+    not a sense: a follower at rest through a dwell has ω or V of 1e-17 of
+    either sign, and an output at rest over the whole sweep has nothing but.
     The sense is compared between consecutive samples that move, across any
     samples at rest between them (no invalid sample between), so
 
@@ -331,7 +333,7 @@ def _reversals(dv: Array, speed: Array, ok: Array,
     moving = ok & np.isfinite(v)
     if not moving.any():
         return []
-    tol = DEFAULT_TOL.length_rel * float(np.max(np.abs(v[moving])))
+    tol = DEFAULT_TOL.length_rel * max(float(np.max(np.abs(v[moving]))), scale)
     if not tol > 0.0:
         return []
 
@@ -402,7 +404,9 @@ def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
         def w_at(mid: Array, lid: str = lid) -> Array:
             return omegas(mid)[0][lid]
 
-        found = _reversals(dv, w_all[lid], ok_all, w_at)
+        # ω per unit drive rate: rad/rad for a crank, rad per length for a slider drive
+        unit = 1.0 if eng.drive.is_angle else 1.0 / mech.size
+        found = _reversals(dv, w_all[lid], ok_all, w_at, unit)
         if not found:
             continue
         x = np.array([f[0] for f in found])
@@ -465,7 +469,9 @@ def _slider_limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
         def v_at(mid: Array, k: int = s.index) -> Array:
             return along(mid)[0][k]
 
-        found = _reversals(dv, speed_all[s.index], ok_all, v_at)
+        # V per unit drive rate: length per rad for a crank, length per length for a slider
+        unit = mech.size if eng.drive.is_angle else 1.0
+        found = _reversals(dv, speed_all[s.index], ok_all, v_at, unit)
         if not found:
             continue
         _s, trav, _ok = along(np.array([f[0] for f in found]))
