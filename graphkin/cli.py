@@ -76,7 +76,9 @@ class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors (``graphkin: sweep: argument --count: ...``)."""
 
     def error(self, message: str) -> Any:  # type: ignore[override]
-        self.exit(2, f"graphkin: {self.prog.split()[-1]}: {_clip(message)}\n")
+        verb = self.prog.split()[-1]
+        where = "" if verb == "graphkin" else f"{verb}: "   # the top level: no verb to name
+        self.exit(2, f"graphkin: {where}{_clip(message)}\n")
 
 
 def _clip(text: str) -> str:

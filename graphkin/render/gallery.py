@@ -180,9 +180,25 @@ def structure(data: bytes) -> str:
 
 
 def _lookup(obj: Any, path: str) -> Any:
+    """The value at ``path`` (dotted keys of ``solve --json``; ``|`` at the end: magnitude).
+
+    Raises
+    ------
+    KeyError
+        With a message naming the first part not found and what is there.
+    """
     mag = path.endswith("|")
+    done: list[str] = []
     for part in path.rstrip("|").split("."):
-        obj = obj[part]
+        try:
+            obj = obj[part] if isinstance(obj, dict) else obj[int(part)]
+        except (KeyError, TypeError, IndexError, ValueError):
+            where = ".".join(done) or "the top"
+            there = ", ".join(map(str, list(obj)[:12])) if isinstance(obj, dict) else \
+                (f"items 0 to {len(obj) - 1}" if isinstance(obj, list) else "a value")
+            raise KeyError(f"no '{part}' at {where} of graphkin solve --json "
+                           f"(there: {there})") from None
+        done.append(part)
     if mag:
         return math.hypot(*obj)
     return obj
@@ -256,11 +272,18 @@ def _compare(book: Any, got: Any) -> tuple[str, float, float]:
 
 def _rows(entry: Entry, data: dict[str, Any]) -> list[dict[str, str]]:
     rows = []
-    for b in entry.meta.get("book", []):
+    from graphkin.errors import InputError
+
+    for i, b in enumerate(entry.meta.get("book", [])):
+        if "path" not in b:
+            raise InputError("a row of the book's numbers needs the path of graphkin's "
+                             "value in graphkin solve --json", key=f"gallery.book[{i}].path",
+                             file=str(entry.path))
         try:
             got = _lookup(data, str(b["path"]))
-        except (KeyError, TypeError, IndexError):
-            got = None
+        except KeyError as exc:   # a misspelt path is the file's mistake, not "differs"
+            raise InputError(str(exc.args[0]), key=f"gallery.book[{i}].path",
+                             file=str(entry.path)) from None
         book = b.get("value")
         diff, rel, dabs = ("—", math.inf, math.inf) if got is None or book is None \
             else _compare(book, got)

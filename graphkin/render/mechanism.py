@@ -264,6 +264,24 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
     frame_group = panel.group(f"{pre}frame", 0.8, key="frame")
     numbered_frame = False
 
+    # ---- rolling contact: the circle it rolls on (a sun, a ring), as an outline ----
+    circles: set[tuple[str, object, float]] = {(r.link, r.center, round(r.radius, 12))
+                                               for r in rolling}
+    for r in rolling:
+        if r.on_center is None or r.on_radius is None:
+            continue
+        oc = r.on_center_point or r.on_center
+        if (r.on, oc, round(r.on_radius, 12)) in circles:
+            continue                      # the same circle rolls on something else too
+        if isinstance(oc, str) and not is_known(oc):
+            continue
+        circles.add((r.on, oc, round(r.on_radius, 12)))
+        c = np.asarray(sol.links[r.on].position(r.on_center), dtype=float)
+        ts = np.linspace(0.0, 2.0 * math.pi, 97)
+        rim = c + r.on_radius * np.column_stack([np.cos(ts), np.sin(ts)])
+        g = panel.group(f"{pre}rolls-on-{safe_id(r.key)}", 1.55, key=f"link {r.on}")
+        g.items.append(Item("path", rim, "link", key=f"circle of link {r.on}"))
+
     # ---- rolling contact: the roller itself, and the ground it rolls on ------
     for r in rolling:
         if not is_known(r.center):
@@ -465,6 +483,10 @@ def mechanism_extent(src: Source) -> list[np.ndarray]:
     for r in mech.rolling:
         c = np.asarray(sol.position(r.center, r.link), dtype=float)
         out.extend([c - r.radius, c + r.radius])
+        if r.on_center is not None and r.on_radius is not None:   # the sun, the ring
+            oc = np.asarray(sol.links[r.on].position(r.on_center), dtype=float)
+            if np.all(np.isfinite(oc)):
+                out.extend([oc - r.on_radius, oc + r.on_radius])
     for body in mech.bodies:
         geom = body_world(src, body)
         if geom is not None:

@@ -534,9 +534,14 @@ def _mark_special(ax: Any, sw: Sweep, x: np.ndarray) -> None:
         if not lo - 1e-9 <= v <= hi + 1e-9:
             continue
         what = "limit position" if sp.kind == "limit" else "dead center"
-        line = ax.axvline(v, lw=0.9, ls=":", color="#1565c0" if sp.kind == "limit" else
-                          "#c62828", label=what if what not in seen else None)
+        color = "#1565c0" if sp.kind == "limit" else "#c62828"
+        line = ax.axvline(v, lw=0.9, ls=":", color=color,
+                          label=what if what not in seen else None)
         line.set_gid(f"{sp.kind}-{v:g}")
+        if sp.kind == "limit" and sp.end is not None:   # held through a dwell: a band
+            w = float(sp.end) - float(sp.drive)
+            ax.axvline(v + w, lw=0.9, ls=":", color=color).set_gid(f"{sp.kind}-end-{v + w:g}")
+            ax.axvspan(min(v, v + w), max(v, v + w), color=color, alpha=0.08, lw=0)
         seen.add(what)
     if seen:
         ax.legend(loc="best", fontsize="small", frameon=False)
@@ -650,13 +655,14 @@ def _center_path(ax: Any, sw: Sweep, which: str) -> None:
     """The path of an instant center over the sweep (Sec. 3.20: I1k traces the fixed centrode)."""
     i, j = _pair(which)
     pts = _broken(_pole_path(sw, i, j), sw)
-    (line,) = ax.plot(pts[:, 0], pts[:, 1], lw=1.2, label=f"I{i}{j}")
-    line.set_gid(f"center-I{i}{j}")
+    name = f"I{i}{j}" if len(i) == 1 and len(j) == 1 else f"I{i}-{j}"   # I24, I7-12
+    (line,) = ax.plot(pts[:, 0], pts[:, 1], lw=1.2, label=name)
+    line.set_gid(f"center-{name}")
     _view(ax, sw)
     unit = sw.mechanism.length_unit
     ax.set_xlabel(f"x, {unit}")
     ax.set_ylabel(f"y, {unit}")
-    ax.set_title(f"path of the instant center I{i}{j}", fontsize="medium")
+    ax.set_title(f"path of the instant center {name}", fontsize="medium")
 
 
 def _centrodes(ax: Any, sw: Sweep, lid: str) -> None:

@@ -745,7 +745,7 @@ def box_panel(name: str, kind: str, title: str, unit: str, lo: np.ndarray, hi: n
     The design chapters' drawings (gears, synthesis) lay their panels out so.
     """
     size = np.maximum(hi - lo, 1e-9 * max(float(np.max(np.abs(hi))), 1.0))
-    scale = choose_scale(float(max(size)), max_inches, "in", unit, NICE)
+    scale = choose_scale(float(max(size)), max_inches, paper_unit(unit), unit, NICE)
     p = Panel(name, kind, title, unit, scale=scale, prefix=f"{name}-")
     k = p.k
     w = max(float(size[0]), (text_size(title, STYLES["title"]["size"], "title")[0] + 0.25

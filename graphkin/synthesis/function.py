@@ -101,7 +101,11 @@ def chebyshev_construction(x0: float, x1: float, n: int) -> Construction:
 
 def _rocker(phi: np.ndarray, lengths: tuple[float, float, float, float],
             branch: float) -> tuple[np.ndarray, np.ndarray]:
-    """θ4 of Freudenstein's loop at crank angles φ on one branch, and the closure margin."""
+    """θ4 of Freudenstein's loop at crank angles φ on one branch, and the closure margin.
+
+    The loop is ``r2 e^{iφ} + r3 e^{iθ3} + r4 e^{iθ4} = r1`` (Fig. 9.39); the
+    lengths of Eqs. 9.25-9.27 carry signs, so θ4 is the angle of ``(O4 − C)/r4``.
+    """
     r1, r2, r3, r4 = lengths
     b = r2 * np.exp(1j * phi)
     o4 = complex(r1, 0.0)
@@ -111,7 +115,9 @@ def _rocker(phi: np.ndarray, lengths: tuple[float, float, float, float],
     h2 = r3 ** 2 - along ** 2
     u = d / dist
     c = b + along * u + branch * np.sqrt(np.maximum(h2, 0.0)) * 1j * u
-    return np.angle(o4 - c), h2
+    # r4 e^{iθ4} = O4 − C: a negative r4 (Eq. 9.25 with K1 < 0) turns the
+    # vector O4 − C half a turn away from θ4, so divide by r4, not by |r4|
+    return np.angle((o4 - c) / r4), h2
 
 
 def design(fs: FunctionSpec, samples: int = 201) -> FunctionDesign:

@@ -106,6 +106,63 @@ def _z(v: np.ndarray) -> complex:
     return complex(v[0] / v[2], v[1] / v[2])
 
 
+def _why_not(o2: complex, o4: complex, b1: complex, b2: complex, alpha: float,
+             r2: float, scale: float) -> str | None:
+    """Why the crank pivot ``o2`` gives no crank-rocker with these limits (None: it does)."""
+    # O2 must see B1B2 under +α (the advance stroke 180° + α, crank counterclockwise)
+    seen = math.remainder(float(np.angle((b2 - o2) / (b1 - o2))), math.tau)
+    r3 = abs(b1 - o2) - r2
+    r1 = abs(o4 - o2)
+    r4 = abs(b1 - o4)
+    lengths = sorted((r1, r2, r3, r4))
+    tiny = 1e-9 * scale
+    if abs(seen - alpha) > 1e-6 or abs(b1 - o2) - abs(b2 - o2) <= tiny:
+        return "O2 does not see B1B2 under +α with O2B1 > O2B2 (swap the sense of φ or " \
+               "turn line X)"
+    if _side(o2, o4, b1) * _side(o2, o4, b2) < 0:
+        return "B1 and B2 fall either side of O2O4: the rocker reaches them on two " \
+               "different branches"
+    if not (r2 <= lengths[0] + tiny and lengths[0] + lengths[3] < lengths[1] + lengths[2]
+            - tiny):
+        return (f"r1 = {r1:.6g}, r2 = {r2:.6g}, r3 = {r3:.6g}, r4 = {r4:.6g} is not a "
+                "crank-rocker (the crank must be the shortest link, s + l < p + q)")
+    return None
+
+
+def _admissible(o4: complex, b1: complex, b2: complex, alpha: float, scale: float) -> str:
+    """The directions of line X (whole degrees, mod 180°) that do give a crank-rocker.
+
+    X through B1 at x and Y through B2 at x + α meet at O2 (Fig. 9.3a); the
+    crank is half of O2B1 − O2B2.  Said in the refusal, so that the designer
+    need not search the free choice blindly.
+    """
+    good = []
+    for deg in range(180):
+        x = math.radians(deg)
+        u, w = complex(math.cos(x), math.sin(x)), complex(math.cos(x + alpha),
+                                                          math.sin(x + alpha))
+        den = u.real * w.imag - u.imag * w.real
+        if abs(den) < 1e-12:
+            continue
+        d = b2 - b1
+        t = (d.real * w.imag - d.imag * w.real) / den
+        o2 = b1 + t * u
+        if abs(o2 - o4) > 1e4 * scale:
+            continue
+        r2 = (abs(b1 - o2) - abs(b2 - o2)) / 2
+        good.append(_why_not(o2, o4, b1, b2, alpha, r2, scale) is None)
+    if not any(good):
+        return "no direction of X does with this swing: give φ the other sense"
+    runs, start = [], None
+    for deg, ok in enumerate([*good, False]):
+        if ok and start is None:
+            start = deg
+        elif not ok and start is not None:
+            runs.append(f"{start}° to {deg - 1}°" if deg - 1 > start else f"{start}°")
+            start = None
+    return "x_angle " + ", ".join(runs) + " (or 180° more) gives one"
+
+
 def crank_rocker(o4: complex, b1: complex, swing: float, q: float, x_angle: float,
                  source: str = "<synthesis>", key: str = "crank_rocker") -> CrankRocker:
     """Construct the crank-rocker of Fig. 9.3.
@@ -174,27 +231,13 @@ def crank_rocker(o4: complex, b1: complex, swing: float, q: float, x_angle: floa
     if not (np.isfinite(o2) and abs(o2 - o4) < 1e4 * scale):
         raise InputError("lines X and Y are parallel for this direction of X: choose "
                          "another x_angle", key=f"{key}.x_angle", file=source)
-    # O2 must see B1B2 under +α (the advance stroke 180° + α, crank counterclockwise)
-    seen = math.remainder(float(np.angle((b2 - o2) / (b1 - o2))), math.tau)
     r2 = abs(m - c)
-    r3 = abs(b1 - o2) - r2
-    r1 = abs(o4 - o2)
-    lengths = sorted((r1, r2, r3, r4))
-    tiny = 1e-9 * scale
-    why = None
-    if abs(seen - alpha) > 1e-6 or abs(b1 - o2) - abs(b2 - o2) <= tiny:
-        why = "O2 does not see B1B2 under +α with O2B1 > O2B2 (swap the sense of φ or " \
-              "turn line X)"
-    elif _side(o2, o4, b1) * _side(o2, o4, b2) < 0:
-        why = "B1 and B2 fall either side of O2O4: the rocker reaches them on two " \
-              "different branches"
-    elif not (r2 <= lengths[0] + tiny and lengths[0] + lengths[3] < lengths[1] + lengths[2]
-              - tiny):
-        why = (f"r1 = {r1:.6g}, r2 = {r2:.6g}, r3 = {r3:.6g}, r4 = {r4:.6g} is not a "
-               "crank-rocker (the crank must be the shortest link, s + l < p + q)")
+    why = _why_not(o2, o4, b1, b2, alpha, r2, scale)
     if why is not None:
-        raise InputError(f"line X at {math.degrees(x_angle):.6g}°: {why}",
+        raise InputError(f"line X at {math.degrees(x_angle):.6g}°: {why}; "
+                         + _admissible(o4, b1, b2, alpha, scale),
                          key=f"{key}.x_angle", file=source)
+    r3 = abs(b1 - o2) - r2
     cx.add("along_ray", ("O2", "B1"), ("A1",), distance=r2, role=Role.RESULT,
            diagram=DIAGRAM, note="A1: the crank pin, r2 (the compass set to CM) from O2 "
                                  "toward B1: crank and coupler in line (Fig. 9.3b).")

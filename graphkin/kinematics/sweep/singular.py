@@ -21,6 +21,7 @@ from graphkin.kinematics.sweep.columns import wrap_degrees
 from graphkin.kinematics.sweep.drive_range import _assembles, _bisect
 from graphkin.kinematics.sweep.engine import _Engine
 from graphkin.mechanisms.model import FRAME
+from graphkin.tolerance import DEFAULT_TOL
 
 if TYPE_CHECKING:
     from graphkin.kinematics.sweep.report import Sweep
@@ -302,22 +303,77 @@ def _change_points(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
     return out
 
 
-def _sign_changes(dv: Array, sign: Array, ok: Array,
-                  sign_at: Callable[[Array], Array]) -> Array:
-    """Drive values where ``sign`` changes between two valid samples, refined by bisection.
+def _reversals(dv: Array, speed: Array, ok: Array, speed_at: Callable[[Array], Array],
+               scale: float = 0.0) -> list[tuple[float, float | None]]:
+    """Where an output stops and turns back: its speed changes sense (Sec. 1.10).
 
-    ``sign_at(x)`` is the sign at other drive values (48 halvings: to round-off).
+    ``speed`` is sampled at the drive values ``dv`` (valid where ``ok``), and
+    ``speed_at(x)`` gives it at other drive values.  A speed within round-off
+    of zero (``DEFAULT_TOL.length_rel`` of the largest, or of ``scale``, the
+    speed's natural size per unit drive rate, whichever is larger) is zero,
+    not a sense: a follower at rest through a dwell has ω or V of 1e-17 of
+    either sign, and an output at rest over the whole sweep has nothing but.
+    The sense is compared between consecutive samples that move, across any
+    samples at rest between them (no invalid sample between), so
+
+    * a sense that flips between two samples is one limit position, located
+      by bisection to round-off (``(x, None)``);
+    * a dwell between two strokes of opposite sense is one limit position held
+      over a range (``(start, end)``, each end bisected);
+    * a dwell inside one stroke (a pause between two rises) is no limit;
+    * a rest shorter than half the sampling step is not resolved: one posture,
+      at its middle.
+
+    Returns
+    -------
+    list of (float, float or None)
+        The limit positions in the order of ``dv``.
     """
-    idx = np.flatnonzero(ok[:-1] & ok[1:] & (sign[:-1] * sign[1:] < 0))
-    lo, hi = dv[idx].astype(float), dv[idx + 1].astype(float)
-    slo = sign[idx]
-    if idx.size:
-        for _ in range(48):
-            mid = 0.5 * (lo + hi)
-            same = sign_at(mid) == slo
-            lo = np.where(same, mid, lo)
-            hi = np.where(same, hi, mid)
-    return 0.5 * (lo + hi)
+    v = np.asarray(speed, dtype=float)
+    moving = ok & np.isfinite(v)
+    if not moving.any():
+        return []
+    tol = DEFAULT_TOL.length_rel * max(float(np.max(np.abs(v[moving]))), scale)
+    if not tol > 0.0:
+        return []
+
+    def sense(x: Array) -> Array:
+        x = np.asarray(x, dtype=float)
+        return np.where(np.abs(x) <= tol, 0.0, np.sign(x))   # NaN -> NaN: no sense
+
+    sg = sense(v)
+    nz = np.flatnonzero(moving & (sg != 0))
+    if nz.size < 2:
+        return []
+    i, j = nz[:-1], nz[1:]
+    bad = np.concatenate([[0], np.cumsum(~ok)])
+    keep = (bad[j] - bad[i + 1] == 0) & (sg[i] != sg[j])
+    i, j = i[keep], j[keep]
+    if i.size == 0:
+        return []
+    d = np.asarray(dv, dtype=float)
+    # start: where the sense of sample i ends, within [dv[i], dv[i+1]];
+    # end: where the sense of sample j begins, within [dv[j-1], dv[j]]
+    lo = np.concatenate([d[i], d[j]])
+    hi = np.concatenate([d[i + 1], d[j - 1]])
+    want = np.concatenate([sg[i], sg[j]])
+    for _ in range(48):                       # to round-off of the drive
+        mid = 0.5 * (lo + hi)
+        same = sense(speed_at(mid)) == want
+        lo = np.where(same, mid, lo)
+        hi = np.where(same, hi, mid)
+    edge = 0.5 * (lo + hi)
+    a, b = edge[:i.size], edge[i.size:]
+    step = float(np.max(np.abs(np.diff(d)))) if d.size > 1 else 1.0
+    out: list[tuple[float, float | None]] = []
+    for ai, bi in zip(a.tolist(), b.tolist()):
+        # a sense flipping at one drive value (its zone of round-off speed is
+        # 2 tol/|v'| wide), or a rest shorter than the sampling resolves
+        if abs(bi - ai) <= 0.5 * step:
+            out.append((0.5 * (ai + bi), None))
+        else:
+            out.append((ai, bi))
+    return out
 
 
 def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
@@ -345,21 +401,25 @@ def _limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
 
     w_all, ok_all = omegas(dv)
     for lid in cands:
-        w = w_all[lid]
+        def w_at(mid: Array, lid: str = lid) -> Array:
+            return omegas(mid)[0][lid]
 
-        def sign_w(mid: Array, lid: str = lid) -> Array:
-            return np.sign(omegas(mid)[0][lid])
-
-        x = _sign_changes(dv, np.sign(w), ok_all, sign_w)
-        if x.size == 0:
+        # ω per unit drive rate: rad/rad for a crank, rad per length for a slider drive
+        unit = 1.0 if eng.drive.is_angle else 1.0 / mech.size
+        found = _reversals(dv, w_all[lid], ok_all, w_at, unit)
+        if not found:
             continue
+        x = np.array([f[0] for f in found])
         ev = eng.posture(x)
         th = np.broadcast_to(np.asarray(ev.values[eng.pc.angles[lid]]), x.shape)
-        for xi, ti in zip(x, th):
+        for (xi, xe), ti in zip(found, th):
             u = _to_user(eng, float(xi))
+            ue = None if xe is None else _to_user(eng, float(xe))
+            at = f"at drive {_fmt(eng, u)}" if ue is None else \
+                f"held from drive {_fmt(eng, u)} to {_fmt(eng, ue)} (a dwell)"
             out.append(SingularPosture(
-                "limit", u, None, lid,
-                f"limit position of link {lid} (ω{lid} = 0) at drive {_fmt(eng, u)}, "
+                "limit", u, ue, lid,
+                f"limit position of link {lid} (ω{lid} = 0) {at}, "
                 f"θ{lid} = {float(wrap_degrees(np.array([ti]))[0]):.2f}°"))
     return out
 
@@ -406,18 +466,23 @@ def _slider_limits(sw: Sweep, eng: _Engine) -> list[SingularPosture]:
         if s.index not in speed_all:
             continue
 
-        def sign_v(mid: Array, k: int = s.index) -> Array:
-            return np.where(along(mid)[0][k] >= 0, 1.0, -1.0)  # a sample exactly at 0 counts +
+        def v_at(mid: Array, k: int = s.index) -> Array:
+            return along(mid)[0][k]
 
-        x = _sign_changes(dv, np.where(speed_all[s.index] >= 0, 1.0, -1.0), ok_all, sign_v)
-        if x.size == 0:
+        # V per unit drive rate: length per rad for a crank, length per length for a slider
+        unit = mech.size if eng.drive.is_angle else 1.0
+        found = _reversals(dv, speed_all[s.index], ok_all, v_at, unit)
+        if not found:
             continue
-        _s, trav, _ok = along(x)
-        for xi, ti in zip(x, trav[s.index]):
+        _s, trav, _ok = along(np.array([f[0] for f in found]))
+        for (xi, xe), ti in zip(found, trav[s.index]):
             u = _to_user(eng, float(xi))
+            ue = None if xe is None else _to_user(eng, float(xe))
+            at = f"at drive {_fmt(eng, u)}" if ue is None else \
+                f"held from drive {_fmt(eng, u)} to {_fmt(eng, ue)} (a dwell)"
             out.append(SingularPosture(
-                "limit", u, None, s.link,
-                f"limit position of slider {s.link} (V_{s.point} = 0) at drive {_fmt(eng, u)}, "
+                "limit", u, ue, s.link,
+                f"limit position of slider {s.link} (V_{s.point} = 0) {at}, "
                 f"{s.point} at {float(ti):.4g} {mech.length_unit} along its line"))
     return out
 
@@ -497,7 +562,8 @@ def time_ratios(sw: Sweep) -> list[str]:
     -------
     list of str
         One line per such output; none when the sweep is not one assembled turn
-        of a revolute drive at constant speed.
+        of a revolute drive (the ratio is that of a constant crank speed, whatever
+        α the file gives at its posture).
     """
     eng = sw._engine
     if eng is None:
@@ -506,16 +572,19 @@ def time_ratios(sw: Sweep) -> list[str]:
     if not (sw._cyclic and d.is_angle) or any(s.kind == "cannot-assemble"
                                               for s in sw.singular):
         return []
-    drive = next((dd for dd in sw.mechanism.drives if dd.link == d.link), None)
-    if drive is not None and drive.rate2 not in (None, 0.0):
-        return []
+    # Q is a property of the geometry at a constant crank speed (Eq. 1.5), said so in
+    # the line; a file's α (the crank's acceleration at its one posture) does not
+    # take it away
     out = []
     by: dict[str, list[float]] = {}
+    dwells = set()
     for s in sw.singular:
         if s.kind == "limit":
             by.setdefault(s.label, []).append(s.drive)
+            if s.end is not None:
+                dwells.add(s.label)
     for lid, us in by.items():
-        if len(us) != 2:
+        if len(us) != 2 or lid in dwells:   # a dwell at a limit: the strokes' times are not α, β
             continue
         a = (us[1] - us[0]) % 360.0
         alpha, beta = max(a, 360.0 - a), min(a, 360.0 - a)
