@@ -464,6 +464,9 @@ def _has_outline(src: Source, lid: str) -> bool:
 
 def _number(panel: Panel, g: Group, lid: str, anchor: np.ndarray, pre: str,
             gap: float = 0.05) -> None:
+    gid = f"{pre}number-{lid}"
+    # a link is numbered once: a planet's pin and its circles give one "4", at the last asked
+    panel.labels[:] = [lab for lab in panel.labels if lab.gid != gid]
     panel.labels.append(LabelRequest(lid, np.asarray(anchor, dtype=float), "number",
                                      f"{pre}number-{lid}", g, key=f"link {lid}",
                                      gap=gap))

@@ -66,3 +66,14 @@ def test_the_panel_is_sized_to_hold_the_ring() -> None:
     # the ring: 70 mm about O = (0, 0) every way
     assert pts.min(axis=0) == pytest.approx([-70.0, -70.0], abs=1e-9)
     assert pts.max(axis=0) == pytest.approx([70.0, 70.0], abs=1e-9)
+
+
+def test_a_compound_planet_is_numbered_once() -> None:
+    """Example 11.7's planet 4 is two circles of one link (radii 1.5 and 0.8 in, each in
+    its own `[[rolling]]` entry): the drawing names link 4 once, not "4 4"."""
+    path = Path(__file__).resolve().parents[2] / "gallery" / "gears" / "ex11_7.toml"
+    mech = graphkin.load(path)
+    assert sum(r.link == "4" for r in mech.rolling) == 2
+    svg = to_bytes(draw(mech.solve(), "posture").figure)
+    ids = [g.get("id") or "" for g in ET.fromstring(svg).iter()]
+    assert len([i for i in ids if re.fullmatch(r"(.*-)?number-4", i)]) == 1, ids
