@@ -146,6 +146,10 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
                      for n in lk.points if n not in hidden],
         "newton": True,
         "refused": why,
+        # the curvature panel says why, in one line, as on every other page without one
+        "curvature": {"why": "the curvature constructions start from the velocity and "
+                             "acceleration polygons, which this page does not redraw (Newton's "
+                             "method solves the mechanism, not a construction)"},
     }
     return data, js
 

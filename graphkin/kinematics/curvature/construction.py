@@ -16,7 +16,7 @@ from graphkin.kinematics.curvature.conjugates import known_conjugates
 from graphkin.kinematics.curvature.inflection import acceleration_center, inflection_pole
 from graphkin.kinematics.solution import Solution, perp
 from graphkin.mechanisms.model import FRAME
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import VERDICT_REL, Tolerance
 
 Array = np.ndarray
 
@@ -245,9 +245,15 @@ class _CurvatureBase(_Build):
             s = np.where(nn > 0.0, cross / np.where(nn > 0.0, nn, 1.0), 0.0)
         s = np.where(np.minimum(d[:, None], d[None, :]) > _FAR * self.L, s, 0.0)
         named = np.array([c[2] for c in cands])
-        s = np.where(named[:, None] & named[None, :] & (s >= 0.5), s + 0.5, s)
+        # 30° is sin = 0.5: a named pair at 30° within round-off is a named pair at 30°
+        s = np.where(named[:, None] & named[None, :] & (s >= 0.5 - VERDICT_REL), s + 0.5, s)
         s[np.tril_indices(len(cands))] = -1.0
-        i, j = divmod(int(np.argmax(s)), len(cands))
+        # the first pair in the order (i, j) whose score is the best but for round-off: two
+        # equally good pairs (Example 3.3's H1/H2 and H3/H4) are not chosen between by the
+        # last digits of the arithmetic, which differ on another CPU
+        flat = s.ravel()
+        first = int(np.flatnonzero(flat >= float(flat.max()) - VERDICT_REL)[0])
+        i, j = divmod(first, len(cands))
         return cands[i], cands[j]
 
     def point_given(self, name: str, loc: Array, named: bool) -> str:
