@@ -193,7 +193,8 @@ def own_follow_through(rows: list[Any], given: Sequence[Given], diag: Any,
     student drew before it (:meth:`Carry.images`).  When it lies there
     within tolerance it is marked ``follows``, from the first wrong image
     it is constructed from; otherwise it stays wrong and is carried on
-    itself.
+    itself.  An image that others already follow (the first of a usual
+    mistake carried through) stays the root of its own.
 
     Parameters
     ----------
@@ -231,7 +232,7 @@ def own_follow_through(rows: list[Any], given: Sequence[Given], diag: Any,
         i = index[name]
         row = rows[i]
         vec = np.asarray(given[i].vector, dtype=float)
-        if row.verdict == WRONG and wrong:
+        if row.verdict == WRONG and wrong and not any(r.follows == row.key for r in rows):
             roots = [w for w in wrong if carry.depends(diagram, name, w)]
             there = carry.images(diagram, drawn).get(name) if roots else None
             if there is not None:

@@ -36,7 +36,7 @@ from graphkin.check.compare import fmt
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.check.drawing import check_polygons
 from graphkin.check.polygon import Polygon
-from graphkin.check.report import WRONG, Report, Row
+from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
@@ -60,6 +60,10 @@ image less than that cannot be told from a misread."""
 _CLEAR_MM = 6.0
 _ALTERNATIVE_MM = 1.5
 """A mistaken place counts as this much farther than it is (the exact one wins a tie)."""
+_CARRIED_MM = 0.5
+"""A place constructed right from the student's own wrong images counts this much farther:
+nearer than a usual mistake's (one mistake carried through is likelier than two), farther
+than the exact one."""
 _OWN_MM = 1.0
 """An image read farther than this from its exact place is carried on as the student drew it
 (follow-through from the student's own images); nearer, it is the reading's own error."""
@@ -67,6 +71,8 @@ _CARRY_ROUNDS = 3
 _CHOICES = 4
 """The nearest vertices (within reach) each name may take in the joint assignment."""
 _TELL_MM = 1.0
+_GAP_MM = 2.0
+_GAP_SIN = math.sin(math.radians(8.0))
 _RAY_LINE_MM = 1.5
 _RAY_START_MM = 10.0
 """A segment end under this far from the pole, on a line through the pole within 1.5 mm,
@@ -90,6 +96,9 @@ class SheetRead:
     missing : list of str
     notes : list of str
         What the reading could not decide (two images that cannot be told apart).
+    carried : dict
+        Name -> where it is when constructed right from the images read before
+        it that are wrong (sheet mm; follow-through from the student's own images).
     """
 
     rect: Rectified
@@ -99,6 +108,7 @@ class SheetRead:
     places: dict[str, list[np.ndarray]] = field(default_factory=dict)
     missing: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    carried: dict[str, list[np.ndarray]] = field(default_factory=dict)
 
 
 def _names(sol: Any) -> list[str]:
@@ -226,9 +236,10 @@ def _carried(read: SheetRead, sol: Any, diag: Diagnoser) -> bool:
         if any(float(np.hypot(*(c - q[0]))) < _CLEAR_MM for n, q in read.places.items()
                if n != name):
             continue
-        if any(float(np.hypot(*(c - q))) < 0.3 for q in at):
+        mine = read.carried.setdefault(name, [])
+        if any(float(np.hypot(*(c - q))) < 0.3 for q in at + mine):
             continue
-        at.append(c)
+        mine.append(c)
         added = True
     return added
 
@@ -237,14 +248,16 @@ def _match(read: SheetRead) -> None:
     """Name the vertices: the best joint assignment of vertices to names (see the module).
 
     Each name may take any segment end within its reach of one of its places
-    (cost: the distance, a mistaken place's plus 1.5 mm) or none (cost: more
-    than any within reach), two names never one vertex (ends within 2.5 mm)
-    unless their exact images coincide; of all such assignments the one of
-    least total cost is taken, so an image nearest to a vertex another image
-    needs more does not take it.  The start of a vector drawn from the pole
-    (the end near the pole of a segment whose line runs through it: the
-    printed pole and its label hide the first millimetres of every vector)
-    is no vertex.  Where another assignment costs hardly more (1 mm) and
+    (cost: the distance; plus 1.5 mm to a usual mistake's place, plus 0.5 mm
+    to a place carried from the student's own wrong images, plus 2 mm for an
+    end that may be a gap in one straight line) or none (cost: more than any
+    within reach), two names never one vertex (ends within 2.5 mm) unless
+    their exact images coincide; of all such assignments the one of least
+    total cost is taken, so an image nearest to a vertex another image needs
+    more does not take it.  The start of a vector drawn from the pole (the
+    end near the pole of a segment whose line runs through it: the printed
+    pole and its label hide the first millimetres of every vector) is no
+    vertex.  Where another assignment costs hardly more (1 mm) and
     swaps two names' vertices, a note says the two cannot be told apart.
     """
     read.points = {}
@@ -253,6 +266,7 @@ def _match(read: SheetRead) -> None:
     pole = np.array(read.layout.pole)
     pts, seg_of = ends(segs)
     ok = _vertex_ends(segs, pts, pole)
+    gap = _gap_ends(segs, pts)
     names = list(read.places)
     cands: dict[str, list[tuple[float, int]]] = {}
     reach: dict[str, float] = {}
@@ -263,7 +277,9 @@ def _match(read: SheetRead) -> None:
             cands[name] = []
             continue
         d = np.min([np.hypot(*(pts - c).T) + (_ALTERNATIVE_MM if i else 0.0)
-                    for i, c in enumerate(at)], axis=0)
+                    for i, c in enumerate(at)]
+                   + [np.hypot(*(pts - c).T) + _CARRIED_MM for c in read.carried.get(name, ())],
+                   axis=0) + np.where(gap, _GAP_MM, 0.0)
         best: list[tuple[float, int]] = []
         for j in np.argsort(d, kind="stable").tolist():
             if not ok[j] or d[j] > reach[name]:
@@ -300,6 +316,49 @@ def _vertex_ends(segs: np.ndarray, pts: np.ndarray, pole: np.ndarray) -> np.ndar
         if float(np.hypot(*(pts[k] - pole))) < _RAY_START_MM:
             ok[k] = False
     return ok
+
+
+def _gap_ends(segs: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """Which segment ends are a gap in one straight line rather than a vertex.
+
+    Exactly two ends there, of two segments within 8° of one line that run
+    on from it to opposite sides, and no other line passing through: the
+    pencil lifted (or a printed line crossed) in the middle of a stroke.
+    An image in the middle of a straight line looks the same, so such an
+    end is not refused, only counted 2 mm farther than it is.
+    """
+    out = np.zeros(len(pts), bool)
+    n = len(segs)
+    if n < 2:
+        return out
+    d = segs[:, 1] - segs[:, 0]
+    u = d / np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-12)[:, None]
+    for k in range(len(pts)):
+        near = np.flatnonzero(np.hypot(*(pts - pts[k]).T) < _SAME_MM)
+        if len(near) != 2 or near[0] // 2 == near[1] // 2:
+            continue
+        i, j = int(near[0] // 2), int(near[1] // 2)
+        if abs(float(u[i, 0] * u[j, 1] - u[i, 1] * u[j, 0])) > _GAP_SIN:
+            continue
+        # each segment runs on from the gap: away from it along its own direction
+        out_i = segs[i, 1 - near[0] % 2] - pts[near[0]]
+        out_j = segs[j, 1 - near[1] % 2] - pts[near[1]]
+        if float(out_i @ out_j) >= 0.0:
+            continue
+        through = False
+        for m in range(n):
+            if m in (i, j):
+                continue
+            p, q = segs[m]
+            length = float(np.hypot(*(q - p)))
+            t = float((pts[k] - p) @ (q - p)) / max(length, 1e-12)
+            off = abs(float((pts[k] - p) @ np.array([-(q - p)[1], (q - p)[0]]))) / max(
+                length, 1e-12)
+            if -1.0 < t < length + 1.0 and off < 1.0:
+                through = True
+                break
+        out[k] = not through
+    return out
 
 
 def _best_assignment(read: SheetRead, names: list[str], cands: dict[str, list[tuple[float, int]]],
@@ -392,7 +451,12 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
 
 
 def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
-    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named."""
+    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named.
+
+    And a row that follows from the student's own earlier images
+    (:mod:`graphkin.check.carry`) from one read within 2 mm of its right
+    place: wrong, not following (that one may only be misread).
+    """
     out, notes = [], []
     for r in rows:
         name = r.key.split("_", 1)[-1]
@@ -403,8 +467,21 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
                          f"right place, where {r.mistake.code} also puts it: a misread "
                          "cannot be told from that mistake, so none is named")
             r = dataclasses.replace(r, mistake=None)
+        elif (r.verdict == FOLLOWS and r.mistake is not None and r.mistake.kind == "carried"
+              and _near_right(read, r.follows.split("_", 1)[-1])):
+            notes.append(f"{r.key} is where drawing it from {r.follows} as read puts it, but "
+                         f"{r.follows} is read within {_UNTOLD_MM:g} mm of its right place: a "
+                         "misread cannot be told from a mistake there, so it is not marked as "
+                         "following")
+            r = dataclasses.replace(r, verdict=WRONG, mistake=None, follows="")
         out.append(r)
     return out, notes
+
+
+def _near_right(read: SheetRead, name: str) -> bool:
+    """Whether image ``name`` is read within 2 mm of its right place (a misread, perhaps)."""
+    p, at = read.points.get(name), read.places.get(name)
+    return p is not None and bool(at) and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM
 
 
 def debug_image(read: SheetRead) -> np.ndarray:
@@ -421,7 +498,7 @@ def debug_image(read: SheetRead) -> np.ndarray:
     for s in read.segments:
         cv2.line(img, px(s[0]), px(s[1]), (255, 80, 0), 2)
     for name, at in read.places.items():
-        for c in at:
+        for c in at + read.carried.get(name, []):
             q = px(c)
             cv2.drawMarker(img, q, (150, 150, 150), cv2.MARKER_CROSS, 8, 1)
         if name in read.points:

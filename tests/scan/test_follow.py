@@ -21,7 +21,7 @@ cv2 = pytest.importorskip("cv2")
 from hypothesis import Phase, assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
-from strategies import fourbars  # noqa: E402
+from strategies import fourbars, slider_cranks  # noqa: E402
 
 import graphkin  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
@@ -98,8 +98,8 @@ def _check_follows(rep: Report, images: dict[str, np.ndarray], exact: dict[str, 
         v, code = got[f"{letter}_{n}"]
         if moved > 2.0:     # well beyond 0.5 mm and the reading's error: not right
             assert (v, code) == (FOLLOWS, f"follows:{letter}_{root}"), (n, rep.text())
-        else:               # near its right place: right, or following
-            assert v in (OK, FOLLOWS), (n, rep.text())
+        else:               # near its right place: right, following, or no mistake named
+            assert v in (OK, FOLLOWS) or code == "unexplained", (n, rep.text())
 
 
 @pytest.mark.parametrize("diagram,factor,turn,level", [
@@ -138,7 +138,9 @@ def _separated(images: dict[str, np.ndarray], pole: np.ndarray) -> bool:
 def test_random_four_bars_follow_through_from_a_wrong_crank_image(
         rm: Any, seed: int, factor: float, diagram: str) -> None:
     """Crank-driven four-bars (O2-A crank, A-B-E coupler, O4-B-F rocker): a drawn 10-12 %
-    too long or short, b, e, f constructed from it: a wrong, the rest following."""
+    too long or short, b, e, f constructed from it: a wrong, the rest following (when a is
+    read where it was drawn: a wrong length is near none of the places a can be, and may
+    be read at another line end within reach of its exact place)."""
     sol = rm.mechanism().solve()
     lay = layout_for(sol, diagram, rm.kind)
     exact = exact_images(sol, lay)
@@ -152,6 +154,71 @@ def test_random_four_bars_follow_through_from_a_wrong_crank_image(
                for p in images.values()))
     assume(_separated(images, pole) and _separated(exact, pole))
     diag = Diagnoser(Evaluator(sol))
-    rep = _mark(sol, lay, hand_photo(sol, lay, sheet_pixels(sol, lay), images, "mild", seed),
-                diag)
-    _check_follows(rep, images, exact, "A", diagram[0].upper())
+    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "mild", seed)
+    read = read_sheet(sol, Page("photo", photo), diag, lay.digest)
+    rep = mark_scan(sol, read, "photo", CheckTolerance(), diag)
+    if "A" in read.points and np.hypot(*(read.points["A"] - images["A"])) < 0.5:
+        _check_follows(rep, images, exact, "A", diagram[0].upper())
+    else:
+        # a read 0.5 mm or more from where it was drawn (its wrong place is near no place it
+        # can be, only within reach of its exact one): the rest are then looked for where
+        # the a read puts them; none that moved 2 mm is ever marked right
+        for r in rep.rows:
+            n = r.key.split("_", 1)[1]
+            if n in images and np.hypot(*(images[n] - exact[n])) > 2.0:
+                assert r.verdict != OK, rep.text()
+
+
+def _thin(images: dict[str, np.ndarray], pole: np.ndarray) -> bool:
+    """Two images within 8 mm of each other, or within 6° of each other seen from the pole."""
+    pts = list(images.values())
+    ang = [np.arctan2(*(p - pole)[::-1]) for p in pts]
+    return any(np.hypot(*(p - q)) < 8.0 or abs((a - b + np.pi) % (2 * np.pi) - np.pi) < 0.105
+               for i, (p, a) in enumerate(zip(pts, ang)) for q, b in zip(pts[i + 1:], ang[i + 1:]))
+
+
+@settings(max_examples=4, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@given(rm=st.one_of(fourbars(), slider_cranks()), seed=st.integers(0, 2**16),
+       diagram=st.sampled_from(["velocity", "acceleration"]))
+def test_thin_polygons_no_vertex_twice_and_no_mistake_named(rm: Any, seed: int,
+                                                             diagram: str) -> None:
+    """Images close together or nearly in line with the pole, drawn right: no two names are
+    read at one vertex (unless their images coincide), and no usual mistake is named."""
+    sol = rm.mechanism().solve()
+    lay = layout_for(sol, diagram, rm.kind)
+    pole = np.array(lay.pole)
+    images = {n: p for n, p in exact_images(sol, lay).items() if np.hypot(*(p - pole)) >= 7.0}
+    assume(len(images) >= 2 and _thin(images, pole))
+    diag = Diagnoser(Evaluator(sol))
+    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "mild", seed)
+    read = read_sheet(sol, Page("photo", photo), diag, lay.digest)
+    got = list(read.points.items())
+    for i, (a, pa) in enumerate(got):
+        for b, pb in got[i + 1:]:
+            assert np.hypot(*(pa - pb)) >= 2.5 or np.hypot(*(images[a] - images[b])) < 2.5
+    rep = mark_scan(sol, read, "photo", CheckTolerance(), diag)
+    assert all(r.code in ("", "unexplained", "not-found") for r in rep.rows), rep.text()
+
+
+@settings(max_examples=4, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@given(rm=st.one_of(fourbars(), slider_cranks()), seed=st.integers(0, 2**16),
+       diagram=st.sampled_from(["velocity", "acceleration"]),
+       level=st.sampled_from(["scan", "mild", "phone"]))
+def test_random_reversed_polygons_are_never_right(rm: Any, seed: int, diagram: str,
+                                                  level: str) -> None:
+    """The polygon turned 180° about the pole (the input's ω taken the wrong way, Sec. 3.4):
+    no image is marked right, and no mistake but the reversed sense is named (an image
+    misread is "no usual mistake explains it"; the others follow from the first)."""
+    sol = rm.mechanism().solve()
+    lay = layout_for(sol, diagram, rm.kind)
+    pole = np.array(lay.pole)
+    images = exact_images(sol, lay)
+    assume(images and _separated(images, pole))
+    diag = Diagnoser(Evaluator(sol))
+    drawn = {n: 2 * pole - p for n, p in images.items()}
+    rep = _mark(sol, lay, hand_photo(sol, lay, sheet_pixels(sol, lay), drawn, level, seed), diag)
+    assert not any(r.verdict == OK for r in rep.rows), rep.text()
+    codes = {r.code for r in rep.rows}
+    assert all(c in ("sense", "unexplained", "not-found") or c.startswith("follows:")
+               for c in codes), rep.text()
+    assert "sense" in codes or not any(c.startswith("follows:") for c in codes), rep.text()
