@@ -481,7 +481,8 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
 def _near_right(read: SheetRead, name: str) -> bool:
     """Whether image ``name`` is read within 2 mm of its right place (a misread, perhaps)."""
     p, at = read.points.get(name), read.places.get(name)
-    return p is not None and bool(at) and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM
+    return p is not None and at is not None and bool(at) and float(
+        np.hypot(*(p - at[0]))) < _UNTOLD_MM
 
 
 def debug_image(read: SheetRead) -> np.ndarray:
