@@ -6,13 +6,17 @@ a reversed sense, and each single mistake of
 :meth:`graphkin.check.diagnose.Diagnoser.candidates`: an image flipped over,
 a relative velocity drawn from the pole, a normal component drawn outward,
 the Coriolis component's mistakes, the other branch, the whole polygon redrawn
-from a slip in the input's rate ...).  The student's image point is taken as the end of the pencil
-segments nearest one of those places (within 4 mm, or 12 % of the vector's
-length on the sheet if that is more), two names never sharing one vertex;
-where two or more segments end there, where their lines meet.  The points,
-in mm on the sheet, with the printed scale and pole, are then marked as
-``check --drawing`` marks a drawing with a stated scale (not turned, within
-the drawing tolerance in mm on the sheet).
+from a slip in the input's rate ...), or where the construction puts it when
+done right from the student's own images read wrong before it
+(follow-through, :class:`graphkin.check.carry.Carry`).  The names are given
+to the pencil segments' ends near those places (within 4 mm, or 12 % of the
+vector's length on the sheet if that is more) all at once, the assignment of
+least total distance, two names never on one vertex; where two or more
+segments end there, the image is where their lines meet.  The points, in mm
+on the sheet, with the printed scale and pole, are then marked as
+``check --drawing`` marks a drawing with a stated scale
+(:func:`graphkin.check.drawing.check_polygons`: not turned, within the
+drawing tolerance in mm on the sheet, follow-through included).
 
 References
 ----------
