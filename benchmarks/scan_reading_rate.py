@@ -14,6 +14,13 @@ polygon wrong with ``sense`` (or following through from it); the wrong length
 ``WRONG`` and every other row ``ok``.  Mechanisms whose images are closer
 than 5 mm to each other or 7 mm to the pole (a vector ``check --scan`` does
 not read) are left out (and counted).
+
+``--follows`` adds a fourth drawing: the first image the construction draws
+6-10 % (and at least 3 mm) too long or short and every later one constructed right from it
+(follow-through from the student's own image): read when that image is
+``WRONG`` and every image it moved by over 2 mm ``follows`` from it.
+``--thin`` draws right the mechanisms left out for two images under 5 mm
+apart (thin polygons) and counts them apart.
 """
 
 from __future__ import annotations
@@ -36,17 +43,36 @@ from scan.photos import LEVELS, exact_images, hand_photo, layout_for, sheet_pixe
 from strategies import fourbars, slider_cranks  # noqa: E402
 
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
+from graphkin.check.carry import Carry  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
 from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 
-def intended(case: str, rows: list[Any], wrong: str | None) -> bool:
-    if case == "right":
+def intended(case: str, rows: list[Any], wrong: str | None,
+             moved: dict[str, float] | None = None) -> bool:
+    if case in ("right", "thin"):
         return all(r.verdict == OK for r in rows)
     if case == "reversed":
         return all(r.code == "sense" or r.code.startswith("follows:") for r in rows) and \
             any(r.code == "sense" for r in rows)
+    if case == "follows":
+        # the first image wrong; every image it moved by over 2 mm follows from it; the
+        # others right, following, or wrong with no mistake named (within the reading's 2 mm)
+        assert moved is not None
+        root = next((r for r in rows if r.key.endswith(f"_{wrong}")), None)
+        if root is None or root.verdict != WRONG:
+            return False
+        for r in rows:
+            name = r.key.split("_", 1)[1]
+            if r is root or name not in moved:
+                continue
+            if moved[name] > 2.0:
+                if r.code != f"follows:{root.key}":
+                    return False
+            elif not (r.verdict == OK or r.code in (f"follows:{root.key}", "unexplained")):
+                return False
+        return True
     return all((r.verdict == WRONG) if r.key.endswith(f"_{wrong}") else (r.verdict == OK)
                for r in rows)
 
@@ -55,6 +81,10 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--mechanisms", type=int, default=15)
     ap.add_argument("--levels", nargs="+", choices=list(LEVELS), default=list(LEVELS))
+    ap.add_argument("--follows", action="store_true",
+                    help="also the first image drawn wrong and the rest constructed from it")
+    ap.add_argument("--thin", action="store_true",
+                    help="also right drawings with two images under 5 mm apart")
     ap.add_argument("--show-files", action="store_true",
                     help="print the mechanism file of every right drawing misread")
     args = ap.parse_args()
@@ -63,6 +93,7 @@ def main() -> None:
     small: dict[str, list[int]] = defaultdict(lambda: [0, 0])
     false_names = [0]
     skipped = [0]
+    follows_root = [""]
     fails: list[str] = []
     t0 = time.perf_counter()
 
@@ -79,23 +110,48 @@ def main() -> None:
         images = exact_images(sol, lay)
         pole = np.array(lay.pole)
         pts = list(images.values())
-        if not images or any(np.hypot(*(p - pole)) < 7 for p in pts) or any(
-                np.hypot(*(p - q)) < 5 for i, p in enumerate(pts) for q in pts[i + 1:]):
+        if not images or any(np.hypot(*(p - pole)) < 7 for p in pts):
             skipped[0] += 1
             return
         diag = Diagnoser(Evaluator(sol))
+        thin = any(np.hypot(*(p - q)) < 5 for i, p in enumerate(pts) for q in pts[i + 1:])
+        if thin:
+            if not args.thin:
+                skipped[0] += 1
+                return
+            cases = {"thin": images}
+            name, moved = None, None
+        else:
+            name, moved = sorted(images)[seed % len(images)], None
+            f = 1 + factor if longer else 1 - factor
+            cases = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
+                     "length": {**images, name: pole + f * (images[name] - pole)}}
+            if args.follows:
+                # the first image the construction draws 6-20 % wrong, the rest constructed
+                # right from it (graphkin.check.carry replays the construction from it)
+                order = [k for k in Carry(sol).order(diagram) if k in images]
+                size = float(np.hypot(*(images[order[0]] - pole))) if order else 0.0
+                # wrong by 6-10 % and at least 3 mm (a mistake the reading can tell from a
+                # misread, 2 mm), within the 12 % a wrong image is looked for in
+                rel = max(min(2 * abs(f - 1), 0.10), 3.0 / max(size, 1e-9))
+                if order and rel <= 0.10:
+                    root = order[0]
+                    v = (images[root] - pole) * lay.per_mm * (1 + (rel if longer else -rel))
+                    carried = Carry(sol).images(diagram, {root: v})
+                    drawn = {k: pole + carried[k] / lay.per_mm if k in carried else p
+                             for k, p in images.items()}
+                    cases["follows"] = drawn
+                    moved = {k: float(np.hypot(*(drawn[k] - images[k]))) for k in images}
+                    follows_root[0] = root
         sheet = sheet_pixels(sol, lay)
-        name = sorted(images)[seed % len(images)]
-        f = 1 + factor if longer else 1 - factor
-        cases = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
-                 "length": {**images, name: pole + f * (images[name] - pole)}}
         for level in levels:
             for case, drawn in cases.items():
                 photo = hand_photo(sol, lay, sheet, drawn, level, seed)
                 try:
                     read = read_sheet(sol, Page("p", photo), diag, lay.digest)
                     rows = mark_scan(sol, read, "p", CheckTolerance(), diag).rows
-                    good = intended(case, rows, name)
+                    good = intended(case, rows, follows_root[0] if case == "follows" else name,
+                                    moved if case == "follows" else None)
                 except Exception as exc:  # noqa: BLE001 - counted as not read
                     rows, good = [], False
                     fails.append(f"{rm.kind} {diagram} {level} {case}: {exc}")
@@ -105,7 +161,7 @@ def main() -> None:
                     band = "3-5 %" if factor < 0.05 else "5-10 %"
                     small[f"{level} {band}"][0] += good
                     small[f"{level} {band}"][1] += 1
-                if case == "right" and not good:
+                if case in ("right", "thin") and not good:
                     # a usual mistake named on a right drawing (not "unexplained", "not-found")
                     false_names[0] += any(r.verdict != OK and r.code not in
                                           ("unexplained", "not-found") for r in rows)
@@ -116,12 +172,15 @@ def main() -> None:
     one()
     print(f"{time.perf_counter() - t0:.0f} s; mechanisms left out (images too close): "
           f"{skipped[0]}")
+    extra = [c for c, on in (("follows", args.follows), ("thin", args.thin)) if on]
     print("| level | right drawings read right | reversed sense named | wrong length marked "
-          "wrong, rest right |")
-    print("|---|---|---|---|")
+          "wrong, rest right |" + "".join(
+              {"follows": " first image wrong, the rest following |",
+               "thin": " thin polygons read right |"}[c] for c in extra))
+    print("|---|---|---|---|" + "---|" * len(extra))
     for level in levels:
         cells = []
-        for case in ("right", "reversed", "length"):
+        for case in ("right", "reversed", "length", *extra):
             good, total = tally[(level, case)]
             cells.append(f"{good}/{total} ({100 * good / max(total, 1):.0f} %)")
         print(f"| {level} | " + " | ".join(cells) + " |")

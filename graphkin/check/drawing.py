@@ -57,12 +57,21 @@ from graphkin.check.answers import (
     SheetScale,
     read_scale,
 )
+from graphkin.check.carry import own_follow_through
 from graphkin.check.compare import direction_text, fmt
 from graphkin.check.diagnose import Diagnoser
 from graphkin.check.exact import Evaluator
 from graphkin.check.fit import Fit, fit_factor
 from graphkin.check.polygon import Polygon, find_polygons, read_polygons
-from graphkin.check.report import FIT, Report, Row, check_given, follow_through, printable
+from graphkin.check.report import (
+    FIT,
+    Report,
+    Row,
+    check_given,
+    follow_through,
+    printable,
+    sheet_allowance,
+)
 from graphkin.check.svg import _NUM, MAX_DEPTH, read_drawing, read_svg
 from graphkin.errors import InputError
 from graphkin.kinematics.solution import Solution
@@ -400,7 +409,10 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         givens.append(given)
     checked = [i for i, r in enumerate(rows) if r.verdict != FIT]
     sub = [rows[i] for i in checked]
-    follow_through(sub, [givens[i] for i in checked], ev, diag, tol)
+    sub_given = [givens[i] for i in checked]
+    follow_through(sub, sub_given, ev, diag, tol)
+    own_follow_through(sub, sub_given, diag, tol, diagram,
+                       [sheet_allowance(ev, gv, tol) for gv in sub_given])
     ignored = [t for t in ignored if len(re.sub(r"[^0-9A-Za-z]", "", t)) <= 3]  # not titles
     if ignored:
         notes.append("labels that name no image point, ignored: "

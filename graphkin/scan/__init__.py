@@ -9,11 +9,13 @@ photo of it (``graphkin check FILE --scan photo.jpg``):
 2. ``strokes.py`` finds the pencil line segments in the polygon area (the
    printed sheet is rendered again and masked out, the light flattened, then
    OpenCV's line segment detector and collinear pieces merged);
-3. ``read.py`` takes as each image point the segment ends near where that
-   image can be (the exact image and the usual mistakes' images of
-   :class:`graphkin.check.diagnose.Diagnoser`), and hands the points, in mm
-   on the sheet, with the printed scale and pole, to the same marking as
-   ``check --drawing``.
+3. ``read.py`` names the segment ends near where each image can be (the
+   exact image, the usual mistakes' images of
+   :class:`graphkin.check.diagnose.Diagnoser`, and where the construction
+   puts it from the student's own images read before it,
+   :class:`graphkin.check.carry.Carry`), all names at once, and hands the
+   points, in mm on the sheet, with the printed scale and pole, to the same
+   marking as ``check --drawing``.
 
 OpenCV (and pypdfium2, for PDF scans) are the optional extra
 ``graphkin[scan]``; they are imported only when a scan is read.

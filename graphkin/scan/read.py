@@ -6,13 +6,17 @@ a reversed sense, and each single mistake of
 :meth:`graphkin.check.diagnose.Diagnoser.candidates`: an image flipped over,
 a relative velocity drawn from the pole, a normal component drawn outward,
 the Coriolis component's mistakes, the other branch, the whole polygon redrawn
-from a slip in the input's rate ...).  The student's image point is taken as the end of the pencil
-segments nearest one of those places (within 4 mm, or 12 % of the vector's
-length on the sheet if that is more), two names never sharing one vertex;
-where two or more segments end there, where their lines meet.  The points,
-in mm on the sheet, with the printed scale and pole, are then marked as
-``check --drawing`` marks a drawing with a stated scale (not turned, within
-the drawing tolerance in mm on the sheet).
+from a slip in the input's rate ...), or where the construction puts it when
+done right from the student's own images read wrong before it
+(follow-through, :class:`graphkin.check.carry.Carry`).  The names are given
+to the pencil segments' ends near those places (within 4 mm, or 12 % of the
+vector's length on the sheet if that is more) all at once, the assignment of
+least total distance, two names never on one vertex; where two or more
+segments end there, the image is where their lines meet.  The points, in mm
+on the sheet, with the printed scale and pole, are then marked as
+``check --drawing`` marks a drawing with a stated scale
+(:func:`graphkin.check.drawing.check_polygons`: not turned, within the
+drawing tolerance in mm on the sheet, follow-through included).
 
 References
 ----------
@@ -31,10 +35,12 @@ from typing import Any
 import numpy as np
 
 from graphkin.check.answers import CheckTolerance, Given, Key
+from graphkin.check.carry import carry_for
 from graphkin.check.compare import fmt
 from graphkin.check.diagnose import Diagnoser, Mistake
+from graphkin.check.drawing import check_polygons
 from graphkin.check.polygon import Polygon
-from graphkin.check.report import WRONG, Report, Row
+from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
@@ -58,6 +64,24 @@ image less than that cannot be told from a misread."""
 _CLEAR_MM = 6.0
 _ALTERNATIVE_MM = 1.5
 """A mistaken place counts as this much farther than it is (the exact one wins a tie)."""
+_CARRIED_MM = 0.5
+"""A place constructed right from the student's own wrong images counts this much farther:
+nearer than a usual mistake's (one mistake carried through is likelier than two), farther
+than the exact one."""
+_OWN_MM = 1.0
+"""An image read farther than this from its exact place is carried on as the student drew it
+(follow-through from the student's own images); nearer, it is the reading's own error."""
+_CARRY_ROUNDS = 3
+_CHOICES = 4
+"""The nearest vertices (within reach) each name may take in the joint assignment."""
+_TELL_MM = 1.0
+_GAP_MM = 2.0
+_STRONG_MM = 0.5
+_GAP_SIN = math.sin(math.radians(8.0))
+_RAY_LINE_MM = 1.5
+_RAY_START_MM = 10.0
+"""A segment end under this far from the pole, on a line through the pole within 1.5 mm,
+is the start of a vector drawn from the pole, not an image point."""
 
 
 @dataclass
@@ -75,6 +99,11 @@ class SheetRead:
     places : dict
         Name -> the places it can be (sheet mm; the exact one first).
     missing : list of str
+    notes : list of str
+        What the reading could not decide (two images that cannot be told apart).
+    carried : dict
+        Name -> where it is when constructed right from the images read before
+        it that are wrong (sheet mm; follow-through from the student's own images).
     """
 
     rect: Rectified
@@ -83,6 +112,8 @@ class SheetRead:
     points: dict[str, np.ndarray] = field(default_factory=dict)
     places: dict[str, list[np.ndarray]] = field(default_factory=dict)
     missing: list[str] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    carried: dict[str, list[np.ndarray]] = field(default_factory=dict)
 
 
 def _names(sol: Any) -> list[str]:
@@ -169,36 +200,237 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
     segs = segments(ratio, (box[0], box[1]), h)
     read = SheetRead(rect, layout, segs, places=places(sol, layout, diag))
     _match(read)
+    for _ in range(_CARRY_ROUNDS):
+        if not _carried(read, sol, diag):
+            break
+        _match(read)
     return read
 
 
+def _carried(read: SheetRead, sol: Any, diag: Diagnoser) -> bool:
+    """Add, for each image, where it is when constructed right from the images read wrong.
+
+    Follow-through from the student's own images (:class:`graphkin.check.carry.Carry`):
+    every image read away from its exact place is put in the construction as
+    read, and each later image's place in the construction replayed from
+    those before it is one more place it can be (kept as the usual
+    mistakes' places are: inside the polygon area, clear of the pole and of
+    every other image's exact place).  Returns whether any place was added.
+    """
+    layout = read.layout
+    pole = np.array(layout.pole)
+    carry = carry_for(diag)
+    drawn = {n: (p - pole) * layout.per_mm for n, p in read.points.items()
+             if float(np.hypot(*(p - read.places[n][0]))) > _OWN_MM}
+    if not drawn:
+        return False
+    x0, y0, x1, y1 = layout.polygon_box
+    added = False
+    order = carry.order(layout.diagram)
+    for i, name in enumerate(order):
+        before = {n: drawn[n] for n in order[:i] if n in drawn}
+        at = read.places.get(name)
+        if at is None or not before:
+            continue
+        v = carry.images(layout.diagram, before).get(name)
+        if v is None:
+            continue
+        c = pole + v / layout.per_mm
+        if not (x0 < c[0] < x1 and y0 < c[1] < y1) or float(np.hypot(*(c - pole))) < _CLEAR_MM:
+            continue
+        if any(float(np.hypot(*(c - q[0]))) < _CLEAR_MM for n, q in read.places.items()
+               if n != name):
+            continue
+        mine = read.carried.setdefault(name, [])
+        if any(float(np.hypot(*(c - q))) < 0.3 for q in at + mine):
+            continue
+        mine.append(c)
+        added = True
+    return added
+
+
 def _match(read: SheetRead) -> None:
-    """Name the vertices: nearest place first, one vertex per name (see the module)."""
+    """Name the vertices: the best joint assignment of vertices to names (see the module).
+
+    Each name may take any segment end within its reach of one of its places
+    (cost: the distance; plus 1.5 mm to a usual mistake's place, plus 0.5 mm
+    to a place carried from the student's own wrong images, plus 2 mm for an
+    end that may be a gap in one straight line, less 0.5 mm for each other
+    segment ending with it, at most 1 mm) or none (cost: more than any
+    within reach), two names never one vertex (ends within 2.5 mm) unless
+    their exact images coincide; of all such assignments the one of least
+    total cost is taken, so an image nearest to a vertex another image needs
+    more does not take it.  The start of a vector drawn from the pole (the
+    end near the pole of a segment whose line runs through it: the printed
+    pole and its label hide the first millimetres of every vector) is no
+    vertex.  Where another assignment costs hardly more (1 mm) and
+    swaps two names' vertices, a note says the two cannot be told apart.
+    """
+    read.points = {}
+    read.notes = []
     segs = read.segments
     pole = np.array(read.layout.pole)
     pts, seg_of = ends(segs)
-    away = np.hypot(*(pts - pole).T) > _POLE_MM if len(pts) else np.zeros(0, bool)
-    pairs: list[tuple[float, str, int]] = []
-    for name, at in read.places.items():
-        reach = max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
-        for jj in np.flatnonzero(away).tolist():
-            d = min(float(np.hypot(*(pts[jj] - c))) + (_ALTERNATIVE_MM if i else 0.0)
-                    for i, c in enumerate(at))
-            if d <= reach:
-                pairs.append((d, name, int(jj)))
-    pairs.sort()
-    taken: list[tuple[np.ndarray, str]] = []
-    for _d, name, j in pairs:
-        if name in read.points:
+    ok = _vertex_ends(segs, pts, pole)
+    gap = _gap_ends(segs, pts)
+    strong = _strength(pts)
+    names = list(read.places)
+    cands: dict[str, list[tuple[float, int]]] = {}
+    reach: dict[str, float] = {}
+    for name in names:
+        at = read.places[name]
+        reach[name] = max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
+        if not len(pts):
+            cands[name] = []
             continue
+        d = np.min([np.hypot(*(pts - c).T) + (_ALTERNATIVE_MM if i else 0.0)
+                    for i, c in enumerate(at)]
+                   + [np.hypot(*(pts - c).T) + _CARRIED_MM for c in read.carried.get(name, ())],
+                   axis=0) + np.where(gap, _GAP_MM, 0.0)
+        best: list[tuple[float, int]] = []
+        for j in np.argsort(d - strong, kind="stable").tolist():
+            if not ok[j] or d[j] > reach[name]:
+                continue
+            if any(float(np.hypot(*(pts[j] - pts[k]))) < _SAME_MM for _, k in best):
+                continue                       # another end of a vertex already listed
+            best.append((float(d[j] - strong[j]), int(j)))
+            if len(best) == _CHOICES:
+                break
+        cands[name] = best
+    chosen = _best_assignment(read, names, cands, reach, pts)
+    for name, j in chosen.items():
         p = pts[j]
-        if any(float(np.hypot(*(p - q))) < _SAME_MM and not _same_image(read, name, other)
-               for q, other in taken):
-            continue
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(pts - p).T) < _SAME_MM)]
         read.points[name] = vertex_at(segs, sorted(set(near)), p)
-        taken.append((p, name))
     read.missing = [n for n in read.places if n not in read.points]
+    read.notes += _untellable(read, chosen, cands, pts)
+
+
+def _vertex_ends(segs: np.ndarray, pts: np.ndarray, pole: np.ndarray) -> np.ndarray:
+    """Which segment ends may be an image: away from the pole, no vector's start."""
+    if not len(pts):
+        return np.zeros(0, bool)
+    ok = np.hypot(*(pts - pole).T) > _POLE_MM
+    for i, (p, q) in enumerate(segs):
+        d = q - p
+        length = float(np.hypot(*d))
+        if length == 0.0:
+            continue
+        off = abs(float(d[0] * (pole - p)[1] - d[1] * (pole - p)[0])) / length
+        if off > _RAY_LINE_MM:
+            continue
+        k = 2 * i if float(np.hypot(*(p - pole))) < float(np.hypot(*(q - pole))) else 2 * i + 1
+        if float(np.hypot(*(pts[k] - pole))) < _RAY_START_MM:
+            ok[k] = False
+    return ok
+
+
+def _strength(pts: np.ndarray) -> np.ndarray:
+    """How much nearer an end counts for the other segments that end with it (mm).
+
+    An image point of a drawn polygon is where its vector from the pole and
+    the lines of its link's image end together; a lone end is more often a
+    stroke run on by a letter or a barb.  0.5 mm for each other segment
+    ending within 2.5 mm, at most 1 mm.
+    """
+    if not len(pts):
+        return np.zeros(0)
+    seg = np.arange(len(pts)) // 2
+    close = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1)) < _SAME_MM
+    close &= seg[:, None] != seg[None, :]
+    return _STRONG_MM * np.minimum(close.sum(axis=1), 2)
+
+
+def _gap_ends(segs: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """Which segment ends are a gap in one straight line rather than a vertex.
+
+    Exactly two ends there, of two segments within 8° of one line that run
+    on from it to opposite sides, and no other line passing through: the
+    pencil lifted (or a printed line crossed) in the middle of a stroke.
+    An image in the middle of a straight line looks the same, so such an
+    end is not refused, only counted 2 mm farther than it is.
+    """
+    out = np.zeros(len(pts), bool)
+    n = len(segs)
+    if n < 2:
+        return out
+    d = segs[:, 1] - segs[:, 0]
+    u = d / np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-12)[:, None]
+    for k in range(len(pts)):
+        near = np.flatnonzero(np.hypot(*(pts - pts[k]).T) < _SAME_MM)
+        if len(near) != 2 or near[0] // 2 == near[1] // 2:
+            continue
+        i, j = int(near[0] // 2), int(near[1] // 2)
+        if abs(float(u[i, 0] * u[j, 1] - u[i, 1] * u[j, 0])) > _GAP_SIN:
+            continue
+        # each segment runs on from the gap: away from it along its own direction
+        out_i = segs[i, 1 - near[0] % 2] - pts[near[0]]
+        out_j = segs[j, 1 - near[1] % 2] - pts[near[1]]
+        if float(out_i @ out_j) >= 0.0:
+            continue
+        through = False
+        for m in range(n):
+            if m in (i, j):
+                continue
+            p, q = segs[m]
+            length = float(np.hypot(*(q - p)))
+            t = float((pts[k] - p) @ (q - p)) / max(length, 1e-12)
+            off = abs(float((pts[k] - p) @ np.array([-(q - p)[1], (q - p)[0]]))) / max(
+                length, 1e-12)
+            if -1.0 < t < length + 1.0 and off < 1.0:
+                through = True
+                break
+        out[k] = not through
+    return out
+
+
+def _best_assignment(read: SheetRead, names: list[str], cands: dict[str, list[tuple[float, int]]],
+                     reach: dict[str, float], pts: np.ndarray) -> dict[str, int]:
+    """The assignment of segment ends to names of least total cost (branch and bound)."""
+    order = sorted(names, key=lambda n: (len(cands[n]), names.index(n)))
+    miss = {n: reach[n] + _ALTERNATIVE_MM + 1.0 for n in names}
+    best: list[Any] = [math.inf, {}]
+    rest = [sum(min([c for c, _ in cands[n]] + [miss[n]]) for n in order[i:])
+            for i in range(len(order) + 1)]
+
+    def clash(name: str, j: int, got: dict[str, int]) -> bool:
+        return any(float(np.hypot(*(pts[j] - pts[k]))) < _SAME_MM
+                   and not _same_image(read, name, other) for other, k in got.items())
+
+    def walk(i: int, cost: float, got: dict[str, int]) -> None:
+        if cost + rest[i] >= best[0] - 1e-12:
+            return
+        if i == len(order):
+            best[0], best[1] = cost, dict(got)
+            return
+        name = order[i]
+        for c, j in cands[name]:
+            if not clash(name, j, got):
+                got[name] = j
+                walk(i + 1, cost + c, got)
+                del got[name]
+        walk(i + 1, cost + miss[name], got)
+
+    walk(0, 0.0, {})
+    return best[1]
+
+
+def _untellable(read: SheetRead, chosen: dict[str, int],
+                cands: dict[str, list[tuple[float, int]]], pts: np.ndarray) -> list[str]:
+    """Notes on pairs of images whose vertices could be swapped at hardly more cost."""
+    notes = []
+    cost = {n: {j: c for c, j in cands[n]} for n in cands}
+    got = sorted(chosen)
+    for i, a in enumerate(got):
+        for b in got[i + 1:]:
+            ja, jb = chosen[a], chosen[b]
+            if _same_image(read, a, b) or jb not in cost[a] or ja not in cost[b]:
+                continue
+            if cost[a][jb] + cost[b][ja] <= cost[a][ja] + cost[b][jb] + _TELL_MM:
+                notes.append(f"{a.lower()} and {b.lower()} cannot be told apart: the vertices "
+                             f"read as {a.lower()} and {b.lower()} are each as near the other's "
+                             "places (within 1 mm); each was taken as the nearer")
+    return notes
 
 
 def _same_image(read: SheetRead, a: str, b: str) -> bool:
@@ -217,7 +449,8 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     if tol.drawing is None:
         tol = dataclasses.replace(tol, drawing=0.5)
     if read.points:
-        rows, title, notes, used = _check_polygon(sol, poly, name, tol, diag)
+        marked = check_polygons(sol, [poly], name, tolerance=tol, diagnoser=diag)
+        rows, title, notes, used = marked.rows, marked.title, marked.notes, marked.tolerance
     else:
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
     rows, untold = _untold(read, rows)
@@ -230,7 +463,7 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     order = {n: i for i, n in enumerate(_names(sol))}
     rows.sort(key=lambda r: order.get(r.key.split("_", 1)[-1], len(order)))
     rep = Report(rows, used, name, title=title.replace("(scale", "(read from the photo; scale"))
-    rep.notes += notes
+    rep.notes += notes + read.notes
     for n in too_short(sol, layout):
         rep.notes.append(f"{letter}_{n} is under {_SHORT_MM:g} mm on the sheet: too short to "
                          "read from a photo, not marked")
@@ -241,7 +474,12 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
 
 
 def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
-    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named."""
+    """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named.
+
+    And a row that follows from the student's own earlier images
+    (:mod:`graphkin.check.carry`) from one read within 2 mm of its right
+    place: wrong, not following (that one may only be misread).
+    """
     out, notes = [], []
     for r in rows:
         name = r.key.split("_", 1)[-1]
@@ -252,21 +490,22 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
                          f"right place, where {r.mistake.code} also puts it: a misread "
                          "cannot be told from that mistake, so none is named")
             r = dataclasses.replace(r, mistake=None)
+        elif (r.verdict == FOLLOWS and r.mistake is not None and r.mistake.kind == "carried"
+              and _near_right(read, r.follows.split("_", 1)[-1])):
+            notes.append(f"{r.key} is where drawing it from {r.follows} as read puts it, but "
+                         f"{r.follows} is read within {_UNTOLD_MM:g} mm of its right place: a "
+                         "misread cannot be told from a mistake there, so it is not marked as "
+                         "following")
+            r = dataclasses.replace(r, verdict=WRONG, mistake=None, follows="")
         out.append(r)
     return out, notes
 
 
-def _check_polygon(sol: Any, poly: Polygon, name: str, tol: CheckTolerance,
-                   diag: Diagnoser) -> tuple[list[Row], str, list[str], CheckTolerance]:
-    """The marking of ``check --drawing`` for a polygon already read (its one entry point).
-
-    A drawing with a stated scale is marked without turning it, each vertex
-    within the drawing tolerance in mm on the sheet.
-    """
-    from graphkin.check import drawing
-
-    rows, title, notes, used = drawing._check_polygon(sol, poly, name, None, tol, diag)
-    return rows, title, notes, used
+def _near_right(read: SheetRead, name: str) -> bool:
+    """Whether image ``name`` is read within 2 mm of its right place (a misread, perhaps)."""
+    p, at = read.points.get(name), read.places.get(name)
+    return p is not None and at is not None and bool(at) and float(
+        np.hypot(*(p - at[0]))) < _UNTOLD_MM
 
 
 def debug_image(read: SheetRead) -> np.ndarray:
@@ -283,7 +522,7 @@ def debug_image(read: SheetRead) -> np.ndarray:
     for s in read.segments:
         cv2.line(img, px(s[0]), px(s[1]), (255, 80, 0), 2)
     for name, at in read.places.items():
-        for c in at:
+        for c in at + read.carried.get(name, []):
             q = px(c)
             cv2.drawMarker(img, q, (150, 150, 150), cv2.MARKER_CROSS, 8, 1)
         if name in read.points:
