@@ -187,8 +187,8 @@ def parse_toml(text: str, source: str) -> dict[str, Any]:
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"not valid TOML (TOML syntax error): {' '.join(str(exc).split())}",
-                         file=source) from None
+        raise InputError(f"not valid TOML (TOML syntax error): {' '.join(str(exc).split())}"
+                         f"{quote_hint(text, exc)}", file=source) from None
     except (ValueError, RecursionError, OverflowError, MemoryError) as exc:
         # ValueError: an integer of more than 4300 digits (sys.int_info)
         raise InputError(f"cannot read the TOML: {' '.join(str(exc).split())[:200]}",
@@ -236,3 +236,35 @@ def _max_depth(text: str) -> int:
             depth = max(0, depth - 1)
         i += 1
     return best
+
+
+_BARE_KEY = re.compile(r"[A-Za-z0-9_-]+")
+_KEY_LINE = re.compile(r"^\s*([^=\s\"'\[#][^=\"]*?)\s*=")
+
+
+def quote_hint(text: str, exc: tomllib.TOMLDecodeError) -> str:
+    """A hint when the line TOML refused starts with a key that must be quoted.
+
+    The book's names are not TOML's bare keys (letters, digits, ``_`` and
+    ``-``): ``ω3 = ...`` or ``A_A^c = ...`` must be written ``"ω3" = ...``.
+
+    >>> try:
+    ...     tomllib.loads('ω3 = 5')
+    ... except tomllib.TOMLDecodeError as e:
+    ...     print(quote_hint('ω3 = 5', e))
+     (quote a key that has characters other than letters, digits, _ and -: "ω3" = ...)
+    """
+    at = re.search(r"at line (\d+)", str(exc))   # tomllib's message (lineno: Python 3.14)
+    lineno = int(at.group(1)) if at else 0
+    lines = text.splitlines()
+    if not 1 <= lineno <= len(lines):
+        return ""
+    m = _KEY_LINE.match(lines[lineno - 1])
+    if m is None:
+        return ""
+    key = m.group(1).strip()
+    parts = [k.strip() for k in key.split(".")]
+    if all(_BARE_KEY.fullmatch(k) for k in parts):
+        return ""
+    return (" (quote a key that has characters other than letters, digits, _ and -: "
+            f"\"{key}\" = ...)")

@@ -152,3 +152,37 @@ def test_the_tutorials_files_ship_with_graphkin(name: str, doc: str) -> None:
     assert graphkin.examples.text(name) == tutorial.read_text(encoding="utf-8")
     assert name in graphkin.examples.names()
     assert getattr(graphkin.examples, name)().title == graphkin.load(tutorial).title
+
+
+# --- a key written as the book writes it must be quoted in TOML (audit7) -------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from graphkin.errors import InputError  # noqa: E402
+from graphkin.files import parse_toml  # noqa: E402
+
+_BOOK_KEYS = st.builds(lambda a, b, c: a + b + c,
+                       st.sampled_from(["ω", "α", "A_A", "V_", "θ", "O"]),
+                       st.sampled_from(["3", "^c", "^n", "₂", "_B", "^t"]),
+                       st.sampled_from(["", "4", "'"]))
+
+
+@settings(max_examples=40, deadline=None)
+@given(key=_BOOK_KEYS, line=st.integers(0, 3))
+def test_an_unquoted_book_key_is_told_to_be_quoted(key: str, line: int) -> None:
+    # TOML's bare keys are A-Za-z0-9_- only (toml.io, "Keys"): ω3 = ... is a syntax error
+    # whose one line must say how to write it, "ω3" = ...
+    if all(c.isascii() and (c.isalnum() or c in "_-") for c in key):
+        return
+    text = "\n".join([f"k{i} = 1" for i in range(line)] + [f'{key} = "5 rad/s"'])
+    with pytest.raises(InputError) as err:
+        parse_toml(text, "a.toml")
+    msg = str(err.value)
+    assert len(msg.splitlines()) == 1 and f'"{key}" = ...' in msg
+
+
+def test_other_toml_errors_get_no_quoting_hint() -> None:
+    for text in ('title = "x\n', "[links.1]\nA = [0, 0\n", "a = = 1\n"):
+        with pytest.raises(InputError) as err:
+            parse_toml(text, "a.toml")
+        assert "quote a key" not in str(err.value)

@@ -42,6 +42,7 @@ from graphkin.check.tolerances import (
     read_scale,
 )
 from graphkin.errors import InputError
+from graphkin.files import quote_hint
 from graphkin.mechanisms.model import Mechanism
 from graphkin.units import parse_quantity
 
@@ -345,7 +346,8 @@ def loads_answers(text: str, mech: Mechanism, *, source: str = "") -> Answers:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"not valid TOML: {exc}", file=source or None) from None
+        raise InputError(f"not valid TOML: {exc}{quote_hint(text, exc)}",
+                         file=source or None) from None
     except RecursionError:
         raise InputError("not valid TOML: nested too deeply", file=source or None) from None
     return answers_from_dict(data, mech, source=source)
