@@ -196,7 +196,7 @@ def _match(read: SheetRead) -> None:
                for q, other in taken):
             continue
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(pts - p).T) < _SAME_MM)]
-        read.points[name] = vertex_at(segs, sorted(set(near)), p)
+        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
         taken.append((p, name))
     read.missing = [n for n in read.places if n not in read.points]
 

@@ -90,3 +90,39 @@ def test_no_mistake_named_for_an_image_read_near_its_right_place() -> None:
     out, notes = _untold(read, rows)
     assert [(r.verdict, r.mistake) for r in out] == [(WRONG, None), (WRONG, m), (OK, None)]
     assert len(notes) == 1 and notes[0].startswith("A_D is read 1.0 mm")
+
+
+def _stub(p: np.ndarray, q: np.ndarray, shape: tuple[int, int], half: float) -> np.ndarray:
+    """The page's ratio with ink 0.4 within ``half`` px of the *segment* p-q (flat ends).
+
+    Sampled 8 x 8 times a pixel, so the band's edges and its end are anti-aliased.
+    """
+    h, w = shape
+    s = (np.arange(8) + 0.5) / 8 - 0.5
+    yy, xx = np.mgrid[0:h, 0:w].astype(float)
+    length = float(np.hypot(*(q - p)))
+    u = (q - p) / length
+    n = np.array([-u[1], u[0]])
+    cover = np.zeros(shape)
+    for dy in s:
+        for dx in s:
+            rx, ry = xx + dx - p[0], yy + dy - p[1]
+            t = rx * u[0] + ry * u[1]
+            cover += (np.abs(rx * n[0] + ry * n[1]) <= half) & (t >= 0) & (t <= length)
+    return 1.0 - 0.6 * cover / 64
+
+
+@settings(max_examples=20, deadline=None)
+@given(x0=st.floats(15.0, 25.0), y0=st.floats(30.0, 50.0), x1=st.floats(120.0, 150.0),
+       y1=st.floats(20.0, 60.0), short=st.floats(0.5, 15.0), half=st.floats(1.0, 1.6))
+def test_a_segment_end_is_the_strokes_tip(x0: float, y0: float, x1: float, y1: float,
+                                          short: float, half: float) -> None:
+    # the detector's segment stops ``short`` px (up to 3 mm) before the stroke's flat end q:
+    # the end refitted is q, where the ink along the middle falls to half (within 0.5 px,
+    # 0.1 mm); the other end p likewise
+    p, q = np.array([x0, y0]), np.array([x1, y1])
+    ratio = _stub(p, q, (80, 180), half)
+    u = (q - p) / np.hypot(*(q - p))
+    a, b = _refine(np.array([p + 3 * u, q - short * u]), ratio, ratio < 0.84)
+    assert float(np.hypot(*(b - q))) < 0.5
+    assert float(np.hypot(*(a - p))) < 0.5
