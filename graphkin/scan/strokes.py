@@ -45,19 +45,22 @@ _RUN_MM = 4.0
 """A tip is looked for at most this far past the detector's end: the detector stops up to
 3.5 mm short of it where arrowhead barbs or another stroke join the line's edges."""
 _MISS_MM = 0.6
-_TIP_GAP_MM = 0.8
+"""A line passing farther than this from the others' meeting point is not one of them."""
+_TIP_GAP_MM = _GAP_MM
+"""A gap in a stroke shorter than this is stepped over when its tip is looked for (as
+the pieces of one stroke are joined over it)."""
 _HALF_MM = 0.3
 """Half a pencil line's width (to half its darkness), blurred by the photo."""
 _COVER_MM = 2.0
-"""A gap in a stroke shorter than this is stepped over when its tip is looked for."""
+"""At most this far does a tip run on over another stroke's ink (lines under 8.6° apart)."""
 _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
-_SIGMA_LINE = 0.1
 _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
+_SIGMA_LINE = 0.1
+"""How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
-"""A line passing farther than this from the others' meeting point is not one of them."""
-
+"""How far (σ, mm) a stroke's tip is from its image point along its line (overshot or short)."""
 
 def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, int]
            ) -> np.ndarray:
@@ -107,7 +110,7 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     """A merged segment (px) fitted to its pencil stroke.
 
     Its line goes through the ink's middle; its ends are the stroke's tips
-    (:func:`_tip`: through an arrowhead to its tip, over gaps under 0.8 mm).
+    (:func:`_tip`: through an arrowhead to its tip, over gaps under 3 mm).
     ``ink`` is unused (kept for callers).
 
     The line is the weighted principal axis of the dark pixels within 0.9 mm of
