@@ -89,12 +89,14 @@ def sample(n: int) -> tuple[list[Drawn], int]:
     one()
     out, skipped, seen = [], 0, set()
     for rm, diagram, seed, factor, longer in draws:
-        if (repr(rm.data), diagram, seed) in seen:    # Hypothesis draws some twice
-            continue
-        seen.add((repr(rm.data), diagram, seed))
         sol = rm.mechanism().solve()
         lay = layout_for(sol, diagram, rm.kind)
         images = exact_images(sol, lay)
+        # Hypothesis draws some mechanisms twice (the same drawing, photographed alike)
+        key = (diagram, seed, tuple(sorted((k, *np.round(v, 2)) for k, v in images.items())))
+        if key in seen:
+            continue
+        seen.add(key)
         pole = np.array(lay.pole)
         pts = list(images.values())
         if not images or any(np.hypot(*(p - pole)) < 7 for p in pts) or any(
