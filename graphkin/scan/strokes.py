@@ -52,6 +52,9 @@ the pieces of one stroke are joined over it)."""
 _HALF_MM = 0.3
 """Half a pencil line's width (to half its darkness), blurred by the photo."""
 _COVER_MM = 2.0
+_LONG_MM = 20.0
+"""A line at least this long is looked for where a stroke ending near the vertex crosses it
+(shorter ones may be pieces of merged strokes, off their lines)."""
 """At most this far does a tip run on over another stroke's ink (lines under 8.6° apart)."""
 _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
@@ -275,7 +278,9 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
 
     The segments that pass through ``guess`` (within 1 mm of their line,
     between their ends: an image point in the middle of a straight image,
-    where the lines of a link's collinear points merged) count too.  The
+    where the lines of a link's collinear points merged) count too, and
+    the long ones (:data:`_LONG_MM`) that the strokes ending there cross
+    within 3 mm of ``guess`` (an end run on over a line's ink is past it).  The
     lines that agree on the vertex are those within 0.6 mm of the crossing
     of two of them (over 8° apart) that most lines agree on (a letter or a
     barb ending nearby is left out); the vertex is then the least-squares
@@ -291,9 +296,17 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
             continue
         length = float(np.hypot(*(q - p)))
         u = (q - p) / length
-        t = float((guess - p) @ u)
-        if 1.0 < t < length - 1.0 and abs(float((guess - p) @ np.array([-u[1], u[0]]))) < 1.0:
-            lines.append(i)
+        n = np.array([-u[1], u[0]])
+        # where it passes nearest the end, or crosses the line of a stroke ending there
+        # (an end run on over its ink is up to 3 mm past it)
+        at = [guess] + ([_cross(p, n, segs[j]) for j in idx] if length >= _LONG_MM else [])
+        for x in at:
+            if x is None or float(np.hypot(*(x - guess))) >= 3.0:
+                continue
+            t = float((x - p) @ u)
+            if 1.0 < t < length - 1.0 and abs(float((x - p) @ n)) < 1.0:
+                lines.append(i)
+                break
     normals, offsets = [], []
     for i in lines:
         p, q = segs[i]
@@ -326,6 +339,15 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         agree.append(np.array([pole, guess], dtype=float))
     return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
                     guess, end)
+
+
+def _cross(p: np.ndarray, n: np.ndarray, sg: np.ndarray) -> np.ndarray | None:
+    """Where the line through ``p`` with unit normal ``n`` crosses the segment's line (>8°)."""
+    d = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
+    m = np.array([-d[1], d[0]])
+    if abs(float(n[0] * m[1] - n[1] * m[0])) < _SPREAD_SIN:
+        return None
+    return np.asarray(np.linalg.solve(np.array([n, m]), np.array([n @ p, m @ sg[0]])))
 
 
 def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:

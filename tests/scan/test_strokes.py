@@ -126,3 +126,26 @@ def test_a_segment_end_is_the_strokes_tip(x0: float, y0: float, x1: float, y1: f
     a, b = _refine(np.array([p + 3 * u, q - short * u]), ratio, ratio < 0.84)
     assert float(np.hypot(*(b - q))) < 0.5
     assert float(np.hypot(*(a - p))) < 0.5
+
+
+@settings(max_examples=30, deadline=None)
+@given(x=st.floats(50.0, 150.0), y=st.floats(50.0, 150.0), turn=st.floats(0.0, 180.0),
+       angle=st.floats(40.0, 140.0), run_on=st.floats(1.8, 3.0), over=st.floats(-0.3, 0.4))
+def test_a_tip_run_on_over_a_crossing_line_does_not_move_the_vertex(
+        x: float, y: float, turn: float, angle: float, run_on: float, over: float) -> None:
+    # V is the crossing of a line drawn through it and a stroke ending at it (``angle``
+    # apart, 40-140°): the vertex is V (the two lines' crossing, which they give exactly
+    # here) even when the stroke's end was read ``run_on`` mm past V along its own line (past
+    # the 0.3 mm / sin(angle) a tip runs on over the line's ink by more than it can be off)
+    from graphkin.scan.strokes import vertex_at
+
+    v = np.array([x, y])
+    a = np.radians(turn)
+    d1 = np.array([np.cos(a), np.sin(a)])
+    d2 = np.array([np.cos(a + np.radians(angle)), np.sin(a + np.radians(angle))])
+    through = np.array([v - 30 * d1, v + 30 * d1])
+    ending = np.array([v - 40 * d2, v + run_on * d2])
+    other = np.array([v - 25 * d1 - 40 * d2, v - 25 * d1 + over * d2])   # far away
+    segs = np.array([through, ending, other])
+    got = vertex_at(segs, [1], ending[1], pole=None)
+    assert float(np.hypot(*(got - v))) < 0.05
