@@ -301,7 +301,7 @@ def _match(read: SheetRead) -> None:
     for name, j in chosen.items():
         p = pts[j]
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(pts - p).T) < _SAME_MM)]
-        read.points[name] = vertex_at(segs, sorted(set(near)), p)
+        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 

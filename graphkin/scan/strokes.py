@@ -10,6 +10,9 @@
    edges; pieces on one line (within 3° and 1.3 mm, with gaps up to 3 mm)
    are merged into one segment, and segments shorter than :data:`MIN_MM`
    (arrowheads, letters, dots) are dropped.
+4. Each segment's line is refitted to the ink's middle, and each end is
+   the stroke's tip: where the darkness along its middle line falls through
+   half the stroke's own (:func:`_tip`), not where the detector stopped.
 
 References
 ----------
@@ -38,17 +41,29 @@ _ACROSS_MM = 1.3
 _GAP_MM = 3.0
 _SPREAD_SIN = math.sin(math.radians(8.0))
 """Lines meeting at a vertex at more than 8° give it as their meeting point."""
-_RUN_MM = 2.5
-"""An end is run on along its ink at most this far (through an arrowhead to its tip)."""
+_RUN_MM = 4.0
+"""A tip is looked for at most this far past the detector's end: the detector stops up to
+3.5 mm short of it where arrowhead barbs or another stroke join the line's edges."""
 _MISS_MM = 0.6
+"""A line passing farther than this from the others' meeting point is not one of them."""
+_TIP_GAP_MM = _GAP_MM
+"""A gap in a stroke shorter than this is stepped over when its tip is looked for (as
+the pieces of one stroke are joined over it)."""
+_HALF_MM = 0.3
+"""Half a pencil line's width (to half its darkness), blurred by the photo."""
+_COVER_MM = 2.0
+_LONG_MM = 20.0
+"""A line at least this long is looked for where a stroke ending near the vertex crosses it
+(shorter ones may be pieces of merged strokes, off their lines)."""
+"""At most this far does a tip run on over another stroke's ink (lines under 8.6° apart)."""
 _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
-_SIGMA_LINE = 0.15
 _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
+_SIGMA_LINE = 0.1
+"""How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
-"""A line passing farther than this from the others' meeting point is not one of them."""
-
+"""How far (σ, mm) a stroke's tip is from its image point along its line (overshot or short)."""
 
 def pencil(gray: np.ndarray, printed: np.ndarray, box_px: tuple[int, int, int, int]
            ) -> np.ndarray:
@@ -97,8 +112,9 @@ def segments(ratio: np.ndarray, origin_px: tuple[int, int], sheet_h_mm: float) -
 def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     """A merged segment (px) fitted to its pencil stroke.
 
-    Its line goes through the ink's middle; its ends run on along the ink
-    (through an arrowhead to its tip, over gaps under 0.8 mm).
+    Its line goes through the ink's middle; its ends are the stroke's tips
+    (:func:`_tip`: through an arrowhead to its tip, over gaps under 3 mm).
+    ``ink`` is unused (kept for callers).
 
     The line is the weighted principal axis of the dark pixels within 0.9 mm of
     it, leaving out 2.5 mm at each end (where other lines join); so the two
@@ -136,24 +152,64 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
         u = v if float(v @ u) > 0 else -v
         a, b = float((p - c) @ u), float((q - c) @ u)
         p, q = c + a * u, c + b * u
-    return np.array([_run_on(p, -u, ink), _run_on(q, u, ink)])
+    dark = _darkness(ratio, p, q)
+    return np.array([_tip(q, p, ratio, dark), _tip(p, q, ratio, dark)])
 
 
-def _run_on(end: np.ndarray, u: np.ndarray, ink: np.ndarray) -> np.ndarray:
-    """Walk from ``end`` along ``u`` while there is ink (gaps under 0.8 mm), up to 2.5 mm."""
-    h, w = ink.shape
+def _sample(ratio: np.ndarray, pts: np.ndarray) -> np.ndarray:
+    """The page's darkness (1 - ratio) at sub-pixel points (bilinear; paper outside)."""
+    h, w = ratio.shape
+    x, y = pts[..., 0], pts[..., 1]
+    x0, y0 = np.floor(x).astype(int), np.floor(y).astype(int)
+    fx, fy = x - x0, y - y0
+    out = np.zeros(x.shape)
+    for dy, wy in ((0, 1 - fy), (1, fy)):
+        for dx, wx in ((0, 1 - fx), (1, fx)):
+            i, j = y0 + dy, x0 + dx
+            inside = (i >= 0) & (i < h) & (j >= 0) & (j < w)
+            val = np.where(inside, 1.0 - ratio[np.clip(i, 0, h - 1), np.clip(j, 0, w - 1)], 0.0)
+            out += wx * wy * val
+    return out
+
+
+def _darkness(ratio: np.ndarray, p: np.ndarray, q: np.ndarray) -> float:
+    """The stroke's own darkness: the median along its middle line (px ends p, q)."""
+    n = max(int(np.hypot(*(q - p)) / 0.5), 2)
+    t = np.linspace(0.15, 0.85, n)
+    return float(np.median(_sample(ratio, p + np.outer(t, q - p))))
+
+
+def _tip(start: np.ndarray, end: np.ndarray, ratio: np.ndarray, dark: float) -> np.ndarray:
+    """The stroke's tip beyond ``end``, walking its middle line from ``start``'s side.
+
+    From 2 mm inside ``end`` the line is walked outward while it is at least
+    half as dark as the stroke's middle (gaps under :data:`_TIP_GAP_MM`
+    stepped over), up to :data:`_RUN_MM` beyond ``end``; the tip is where the
+    darkness falls through half of the stroke's (the edge of a blurred line,
+    to a fraction of a pixel).
+    """
+    length = float(np.hypot(*(end - start)))
+    u = (end - start) / length
     step = 0.1 * PX_PER_MM
-    last = 0.0
-    s = step
-    while s <= _RUN_MM * PX_PER_MM and s - last <= 0.8 * PX_PER_MM:
-        x, y = end + s * u
-        i, j = int(round(y)), int(round(x))
-        if not (0 <= i < h and 0 <= j < w):
+    back = min(2.0 * PX_PER_MM, 0.5 * length)
+    s = np.arange(-back, _RUN_MM * PX_PER_MM + step / 2, step)
+    prof = _sample(ratio, end + np.outer(s, u))
+    n = np.array([-u[1], u[0]])
+    off = 0.12 * PX_PER_MM
+    prof = (prof + _sample(ratio, end + np.outer(s, u) + off * n)
+            + _sample(ratio, end + np.outer(s, u) - off * n)) / 3
+    half = 0.5 * dark
+    last = 0
+    for k in range(1, len(s)):
+        if prof[k] >= half:
+            last = k
+        elif (s[k] - s[last]) > _TIP_GAP_MM * PX_PER_MM:
             break
-        if ink[i, j]:
-            last = s
-        s += step
-    return end + last * u
+    if last + 1 < len(s) and prof[last] > prof[last + 1]:
+        # the half-darkness crossing between the last dark sample and the next
+        frac = (prof[last] - half) / (prof[last] - prof[last + 1])
+        return end + (s[last] + min(max(frac, 0.0), 1.0) * step) * u
+    return end + s[last] * u
 
 
 def merge(segs: np.ndarray) -> np.ndarray:
@@ -216,18 +272,23 @@ def ends(segs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return segs.reshape(-1, 2), np.repeat(np.arange(len(segs)), 2)
 
 
-def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray:
+def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
+              pole: np.ndarray | None = None) -> np.ndarray:
     """Where the segments ``idx`` that end near ``guess`` meet.
 
     The segments that pass through ``guess`` (within 1 mm of their line,
     between their ends: an image point in the middle of a straight image,
-    where the lines of a link's collinear points merged) count too.  The
+    where the lines of a link's collinear points merged) count too, and
+    the long ones (:data:`_LONG_MM`) that the strokes ending there cross
+    within 3 mm of ``guess`` (an end run on over a line's ink is past it).  The
     lines that agree on the vertex are those within 0.6 mm of the crossing
     of two of them (over 8° apart) that most lines agree on (a letter or a
     barb ending nearby is left out); the vertex is then the least-squares
-    point of those lines (σ 0.15 mm) and of the mean of the ends (σ 0.4 mm):
-    a line overshot or stopped short still points at the vertex, and along
-    lines that meet at a narrow angle the ends decide.
+    point of those lines and of the strokes' ends (:func:`_combine`): a line
+    overshot or stopped short still points at the vertex, and along lines
+    that meet at a narrow angle the ends decide.  ``pole``: the vector from
+    it ends here too, found as a segment or not (its direction tells how far
+    the other strokes' tips run on over its ink).
     """
     lines = list(idx)
     for i, (p, q) in enumerate(segs):
@@ -235,9 +296,17 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray
             continue
         length = float(np.hypot(*(q - p)))
         u = (q - p) / length
-        t = float((guess - p) @ u)
-        if 1.0 < t < length - 1.0 and abs(float((guess - p) @ np.array([-u[1], u[0]]))) < 1.0:
-            lines.append(i)
+        n = np.array([-u[1], u[0]])
+        # where it passes nearest the end, or crosses the line of a stroke ending there
+        # (an end run on over its ink is up to 3 mm past it)
+        at = [guess] + ([_cross(p, n, segs[j]) for j in idx] if length >= _LONG_MM else [])
+        for x in at:
+            if x is None or float(np.hypot(*(x - guess))) >= 3.0:
+                continue
+            t = float((x - p) @ u)
+            if 1.0 < t < length - 1.0 and abs(float((x - p) @ n)) < 1.0:
+                lines.append(i)
+                break
     normals, offsets = [], []
     for i in lines:
         p, q = segs[i]
@@ -264,8 +333,80 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray) -> np.ndarray
     ok = np.abs(A @ (best[2] if best is not None else end) - b) <= _MISS_MM
     if not np.any(ok):
         return end
-    # least squares of the lines (σ 0.15 mm across) and the ends (σ 0.4 mm): lines at a
-    # wide angle fix the vertex; along lines that meet at a narrow one, the ends do
-    M = A[ok].T @ A[ok] / _SIGMA_LINE**2 + np.eye(2) / _SIGMA_END**2
-    r = A[ok].T @ b[ok] / _SIGMA_LINE**2 + end / _SIGMA_END**2
+    agree = [segs[i] for i, k in zip(lines, ok, strict=True) if k]
+    if pole is not None and float(np.hypot(*(guess - pole))) > 2.0:
+        # the vector from the pole ends here too, found or not (a short one often is not)
+        agree.append(np.array([pole, guess], dtype=float))
+    return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
+                    guess, end)
+
+
+def _cross(p: np.ndarray, n: np.ndarray, sg: np.ndarray) -> np.ndarray | None:
+    """Where the line through ``p`` with unit normal ``n`` crosses the segment's line (>8°)."""
+    d = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
+    m = np.array([-d[1], d[0]])
+    if abs(float(n[0] * m[1] - n[1] * m[0])) < _SPREAD_SIN:
+        return None
+    return np.asarray(np.linalg.solve(np.array([n, m]), np.array([n @ p, m @ sg[0]])))
+
+
+def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:
+    """How far past the vertex other strokes' ink lies on a stroke's line (mm).
+
+    A stroke arriving along ``d`` is walked on to where the ink ends
+    (:func:`_tip`); past the vertex its line still runs over the ink of a
+    stroke whose body lies on that side (one that goes through the vertex, or
+    comes from the far side), for :data:`_HALF_MM` / sin of their angle, or
+    over another stroke's rounded end only (:data:`_HALF_MM`).
+    """
+    cover = 0.0
+    for sg in others:
+        e = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
+        sin = abs(float(d[0] * e[1] - d[1] * e[0]))
+        ta, tb = sorted((float((sg[0] - at) @ d), float((sg[1] - at) @ d)))
+        # its body reaches past the vertex along d (beyond its own rounded end)
+        beyond = tb > 1.0
+        c = _HALF_MM / max(sin, _HALF_MM / _COVER_MM) if beyond else _HALF_MM
+        cover = max(cover, c)
+    return cover
+
+
+def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list[np.ndarray],
+             guess: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """The vertex from the lines that meet there (rows of ``A``, ``b``) and the strokes' ends.
+
+    Each line holds the vertex across itself (σ :data:`_SIGMA_LINE`); each
+    stroke that ends there holds it along its own line (σ :data:`_SIGMA_END`),
+    unless its end is farther from the lines' crossing than the two can
+    differ by (2.5 σ of the sum): such an end was run on over another
+    stroke's ink, or stopped short where the strokes merge.  Lines that meet
+    at a wide angle fix the vertex by themselves; along lines that meet at a
+    narrow one, the ends do.
+    """
+    M = A.T @ A / _SIGMA_LINE**2
+    r = A.T @ b / _SIGMA_LINE**2
+    tips = []
+    for sg in ending:
+        k = int(np.argmin(np.hypot(*(sg - guess).T)))
+        near, far = sg[k], sg[1 - k]
+        d = (near - far) / np.hypot(*(near - far))
+        cover = _covered(d, guess, [o for o in agree if o is not sg])
+        tips.append((near - cover * d, d, max(_SIGMA_END, cover / 2)))
+    if np.linalg.cond(M) < 1e6:
+        cross = np.linalg.solve(M, r)
+        cov = np.linalg.inv(M)
+        kept = []
+        for near, d, sig in tips:
+            spread = math.sqrt(sig**2 + float(d @ cov @ d))
+            if abs(float((near - cross) @ d)) <= 2.5 * spread:
+                kept.append((near, d, sig))
+        tips = kept
+    else:
+        # one direction only: the ends decide along it
+        tips = tips or [(end, np.array([-A[0, 1], A[0, 0]]), _SIGMA_END)]
+    for near, d, sig in tips:
+        M = M + np.outer(d, d) / sig**2
+        r = r + d * float(d @ near) / sig**2
+    if np.linalg.cond(M) > 1e6:
+        return end
     return np.asarray(np.linalg.solve(M, r))

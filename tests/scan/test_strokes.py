@@ -90,3 +90,62 @@ def test_no_mistake_named_for_an_image_read_near_its_right_place() -> None:
     out, notes = _untold(read, rows)
     assert [(r.verdict, r.mistake) for r in out] == [(WRONG, None), (WRONG, m), (OK, None)]
     assert len(notes) == 1 and notes[0].startswith("A_D is read 1.0 mm")
+
+
+def _stub(p: np.ndarray, q: np.ndarray, shape: tuple[int, int], half: float) -> np.ndarray:
+    """The page's ratio with ink 0.4 within ``half`` px of the *segment* p-q (flat ends).
+
+    Sampled 8 x 8 times a pixel, so the band's edges and its end are anti-aliased.
+    """
+    h, w = shape
+    s = (np.arange(8) + 0.5) / 8 - 0.5
+    yy, xx = np.mgrid[0:h, 0:w].astype(float)
+    length = float(np.hypot(*(q - p)))
+    u = (q - p) / length
+    n = np.array([-u[1], u[0]])
+    cover = np.zeros(shape)
+    for dy in s:
+        for dx in s:
+            rx, ry = xx + dx - p[0], yy + dy - p[1]
+            t = rx * u[0] + ry * u[1]
+            cover += (np.abs(rx * n[0] + ry * n[1]) <= half) & (t >= 0) & (t <= length)
+    return 1.0 - 0.6 * cover / 64
+
+
+@settings(max_examples=20, deadline=None)
+@given(x0=st.floats(15.0, 25.0), y0=st.floats(30.0, 50.0), x1=st.floats(120.0, 150.0),
+       y1=st.floats(20.0, 60.0), short=st.floats(0.5, 15.0), half=st.floats(1.0, 1.6))
+def test_a_segment_end_is_the_strokes_tip(x0: float, y0: float, x1: float, y1: float,
+                                          short: float, half: float) -> None:
+    # the detector's segment stops ``short`` px (up to 3 mm) before the stroke's flat end q:
+    # the end refitted is q, where the ink along the middle falls to half (within 0.5 px,
+    # 0.1 mm); the other end p likewise
+    p, q = np.array([x0, y0]), np.array([x1, y1])
+    ratio = _stub(p, q, (80, 180), half)
+    u = (q - p) / np.hypot(*(q - p))
+    a, b = _refine(np.array([p + 3 * u, q - short * u]), ratio, ratio < 0.84)
+    assert float(np.hypot(*(b - q))) < 0.5
+    assert float(np.hypot(*(a - p))) < 0.5
+
+
+@settings(max_examples=30, deadline=None)
+@given(x=st.floats(50.0, 150.0), y=st.floats(50.0, 150.0), turn=st.floats(0.0, 180.0),
+       angle=st.floats(40.0, 140.0), run_on=st.floats(1.8, 3.0), over=st.floats(-0.3, 0.4))
+def test_a_tip_run_on_over_a_crossing_line_does_not_move_the_vertex(
+        x: float, y: float, turn: float, angle: float, run_on: float, over: float) -> None:
+    # V is the crossing of a line drawn through it and a stroke ending at it (``angle``
+    # apart, 40-140°): the vertex is V (the two lines' crossing, which they give exactly
+    # here) even when the stroke's end was read ``run_on`` mm past V along its own line (past
+    # the 0.3 mm / sin(angle) a tip runs on over the line's ink by more than it can be off)
+    from graphkin.scan.strokes import vertex_at
+
+    v = np.array([x, y])
+    a = np.radians(turn)
+    d1 = np.array([np.cos(a), np.sin(a)])
+    d2 = np.array([np.cos(a + np.radians(angle)), np.sin(a + np.radians(angle))])
+    through = np.array([v - 30 * d1, v + 30 * d1])
+    ending = np.array([v - 40 * d2, v + run_on * d2])
+    other = np.array([v - 25 * d1 - 40 * d2, v - 25 * d1 + over * d2])   # far away
+    segs = np.array([through, ending, other])
+    got = vertex_at(segs, [1], ending[1], pole=None)
+    assert float(np.hypot(*(got - v))) < 0.05
