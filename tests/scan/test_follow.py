@@ -18,7 +18,7 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from hypothesis import Phase, assume, given, settings  # noqa: E402
+from hypothesis import HealthCheck, Phase, assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
 from strategies import fourbars, slider_cranks  # noqa: E402
@@ -130,7 +130,9 @@ def _separated(images: dict[str, np.ndarray], pole: np.ndarray) -> bool:
         np.hypot(*(p - q)) >= 6.0 for i, p in enumerate(pts) for q in pts[i + 1:])
 
 
-@settings(max_examples=3, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+# the layout's assumptions (inside the box, images apart) leave few random four-bars
+@settings(max_examples=3, deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate],
+          suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
 @given(rm=fourbars(other_rates=False), seed=st.integers(0, 2**16),
        factor=st.sampled_from([0.9, 1.1, 1.12, 0.88]),
        diagram=st.sampled_from(["velocity", "acceleration"]))
