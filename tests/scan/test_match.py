@@ -48,8 +48,11 @@ def test_an_image_gives_way_to_one_that_has_no_other_vertex() -> None:
     read = _read([_ray(v1), _ray(v2)], {"B": [(131.0, 104.5), (136.0, 100.5)],
                                         "C": [(128.0, 106.5)]})
     _match(read)
-    assert np.hypot(*(read.points["C"] - v1)) < 0.2
-    assert np.hypot(*(read.points["B"] - v2)) < 0.2
+    # which vertex each name takes (v1 and v2 are 8 mm apart); where on it the point is read
+    # is the strokes' business (tests/scan/test_strokes.py: a lone ray's tip is taken back
+    # by the ink it may have run on over, a few tenths of a millimetre)
+    assert np.hypot(*(read.points["C"] - v1)) < 1.0
+    assert np.hypot(*(read.points["B"] - v2)) < 1.0
     assert read.missing == []
 
 
