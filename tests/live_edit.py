@@ -82,3 +82,14 @@ def same_curvature(data: dict[str, Any], got: dict[str, Any], ref: dict[str, Any
         np.testing.assert_allclose(g, r, rtol=0, atol=rel * scale, err_msg=lab)
         n += 1
     return n
+
+
+def page_file(tmp_path: Any, path: Any) -> Any:
+    """The live page of the mechanism file ``path``, written into ``tmp_path``."""
+    import graphkin
+    from graphkin.files import load_toml
+    from graphkin.render.live import live_html
+
+    out = tmp_path / (path.stem + ".html")
+    out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
+    return out

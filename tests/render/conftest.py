@@ -45,3 +45,16 @@ def gk():
     and saved as SVG, each once per session.
     """
     return SimpleNamespace(solved=_solved, drawn=_drawn, exact=_exact, svg=_svg)
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """Headless Chromium at the live pages' size, one per test module (skips without it).
+
+    A module that wants another size (tests/render/test_browser.py) defines its own.
+    """
+    from cdp import browser_or_skip
+
+    b = browser_or_skip(1300, 1000)
+    yield b
+    b.close()

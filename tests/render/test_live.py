@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
+from live_edit import page_file as _page
 from spec_data import EXAMPLES
 
 import graphkin
@@ -27,17 +27,6 @@ from graphkin.render.live import live_html, script_json
 REL = 1e-9
 
 
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
-
-
-def _page(tmp_path: Path, path: Path) -> Path:
-    out = tmp_path / (path.stem + ".html")
-    out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
-    return out
 
 
 def _handle(browser, kind: str, name: str | None = None) -> tuple[float, float]:

@@ -24,7 +24,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 from cam_strategies import cam_toml, cams
-from cdp import browser_or_skip
 from hypothesis import Phase, assume, given, settings
 from hypothesis import strategies as st
 from live_edit import same_curvature
@@ -43,13 +42,6 @@ from graphkin.render.live_cams import cam_points
 REL = 1e-9
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "cams" / "cam_mechanism.toml"
 _TMP = Path(tempfile.mkdtemp(prefix="graphkin-live-cams-"))
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def _state(browser) -> dict:

@@ -21,7 +21,6 @@ import json
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import run_js
@@ -38,13 +37,6 @@ from graphkin.render.live_app import LIVE_LIB
 from graphkin.tolerance import DEFAULT_TOL
 
 REL = 1e-9
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def same_center(got, ref, C: dict, size: float, lab: str) -> None:

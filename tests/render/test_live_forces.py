@@ -23,7 +23,6 @@ from typing import Any
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
@@ -129,13 +128,6 @@ def test_rates_of_another_link_are_said_in_one_line() -> None:
     path = ROOT / "tests" / "data" / "hostile" / "rates_1e8_trammel.toml"
     data, _ = live_data(graphkin.load(path), load_toml(path), path.name)
     assert data["forces"]["why"].startswith("the inertia forces need the accelerations")
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def _open(browser, tmp_path: Path, path: Path) -> None:

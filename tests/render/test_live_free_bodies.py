@@ -21,7 +21,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from spec_data import ROOT
 
 import graphkin
@@ -55,13 +54,6 @@ READ = """(function () {
   });
   return out;
 })()"""
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def _cross(a, b) -> float:  # type: ignore[no-untyped-def]

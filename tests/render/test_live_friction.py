@@ -26,7 +26,6 @@ from typing import Any
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
@@ -210,13 +209,6 @@ def test_impending_from_the_velocities() -> None:
             continue
         assert angle not in (0.0, 1e-12)
         same_forces(out["f"], F, fs)
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def test_ex11_4_page_follows_a_drag_and_says_self_locking(browser, tmp_path: Path) -> None:

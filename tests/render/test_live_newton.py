@@ -17,9 +17,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
+from live_edit import page_file as _page
 from strategies import examples, scotch_yokes
 from strategies_rolling import rolling_arrangements
 
@@ -37,17 +37,6 @@ NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
           "examples/ex3_9_rolling_wheel.toml"]
 
 
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
-
-
-def _page(tmp_path: Path, path: Path) -> Path:
-    out = tmp_path / (path.stem + ".html")
-    out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
-    return out
 
 
 def _same_as_solve(browser, tmp_path: Path) -> dict:

@@ -12,21 +12,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-from cdp import browser_or_skip
 from spec_data import EXAMPLES
 
 import graphkin
 from graphkin.cli import main
 from graphkin.files import load_toml
 from graphkin.render.live import live_html
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 def _click(browser, xy) -> None:

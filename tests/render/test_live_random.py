@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from cdp import browser_or_skip
 from hypothesis import example, given
 from hypothesis import strategies as st
 from live_edit import same_center, same_curvature
@@ -42,13 +41,6 @@ from graphkin.render.live import live_data, live_html
 FAMILIES = {"fourbar": fourbars, "slider-crank": slider_cranks,
             "inverted slider-crank": inverted_slider_cranks, "slotted": slotted,
             "double slider": double_sliders, "six-bar": six_bars, "five-bar": five_bars}
-
-
-@pytest.fixture(scope="module")
-def browser():
-    b = browser_or_skip(1300, 1000)
-    yield b
-    b.close()
 
 
 @pytest.mark.parametrize("family", sorted(FAMILIES))
