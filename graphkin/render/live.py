@@ -66,17 +66,16 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.kinematics.posture import NotDecomposable
     from graphkin.kinematics.sweep.engine import _Engine
 
-    follower = next((x for x in mech.drives if x.law is not None), None)
-    if follower is not None:  # the page moves one input; holding the other would be wrong
-        raise InputError("no live page: this drive follows the first by a law, which the page "
-                         "does not move with it yet (sweep, plot and animate do)",
-                         key=f"{follower.key}.follows", file=source)
     try:
         eng = _Engine(mech, DEFAULT_TOL)
     except NotDecomposable:  # not one group at a time: Newton's method on the page
         return _newton_page(mech, file_data, source)
     if eng.method != "construction" or eng.pc is None:
         return _newton_page(mech, file_data, source)
+    from graphkin.render.live_laws import BASE_NAME, follow_data, follow_js
+
+    # a drive that follows the first by a law moves with it, as in a sweep (Sec. 5.4)
+    follow = follow_data(eng)
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
     if eng.combined is not None:
@@ -93,7 +92,8 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         requests += [f"{w}{lid}" for w in ("ω", "α") for lid in mech.links if f"{w}{lid}" in made]
         requests += [p for p in ("o_v", "o_a") if p in made]
     try:
-        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
+        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL,
+                         name="construction" if follow is None else BASE_NAME)
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
     drive = _drive_data(mech, eng.label, made)
@@ -137,6 +137,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.render.live_newton import roll_edit_js
 
     js = RUNTIME + fn.source + roll_edit_js(mech, made)
+    if follow is not None:  # every caller of construction(I, K) moves the followers first
+        data["follow"] = follow
+        js += follow_js(script_json(follow))
 
     data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
     js += cjs
@@ -178,6 +181,12 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     """The page of a mechanism only Newton's method solves (:mod:`.live_newton`)."""
     from graphkin.render.live_newton import newton_data
 
+    follower = next((x for x in mech.drives if x.law is not None), None)
+    if follower is not None:  # the page moves one input; holding the other would be wrong
+        raise InputError("no live page: this drive follows the first by a law, and the "
+                         "mechanism is solved by Newton's method, whose page does not move "
+                         "it with the first yet (sweep, plot and animate do)",
+                         key=f"{follower.key}.follows", file=source)
     data, js = newton_data(mech, source)
     made = {n for lk in mech.links.values() for n in lk.points}
     data.update(title=mech.title or source, unit=mech.length_unit,
