@@ -8,7 +8,8 @@ rows).  The page's evaluation of a law's coefficients (render/live_laws.py,
 what a law is by definition (a linear law's ``k x + c``, a spline through its
 rows, a periodic one repeating every turn).  Then the page is dragged in
 headless Chromium (the drive moved, a frame pivot moved) and every value it
-holds (posture, velocity and acceleration polygons, ω and α of every link) is
+holds (posture, velocity and acceleration polygons, ω and α of every link, the
+instant centers and the curvature panel) is
 compared with ``graphkin solve`` of the file the page saves, to 1e-9; the
 saved file keeps the law.
 """
@@ -26,10 +27,13 @@ from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import run_js
+from live_edit import same_center, same_curvature
 from strategies import examples
 
 import graphkin
 from graphkin.files import load_toml
+from graphkin.kinematics.curvature.link import curvature
+from graphkin.kinematics.instant_centers import instant_centers
 from graphkin.mechanisms.laws import linear_law, table_law
 from graphkin.render.live import live_data, live_html
 from graphkin.render.live_laws import LAWS_JS, law_data
@@ -118,8 +122,12 @@ def browser():
     b.close()
 
 
-def _check_saved(browser, tmp_path: Path, state: dict) -> None:
-    """The page's values are ``solve``'s of the file it saves, which keeps the law."""
+def _check_saved(browser, tmp_path: Path, state: dict, data: dict) -> None:
+    """The page's values are ``solve``'s of the file it saves, which keeps the law.
+
+    The posture, polygons, ω and α; the instant centers (I23 from the velocities,
+    Sec. 5.4) and the curvature panel (Sec. 4.15) as graphkin finds them.
+    """
     r = state["result"]
     text = browser.js("window.graphkinLive.toml()")
     saved = tmp_path / "saved.toml"
@@ -155,6 +163,13 @@ def _check_saved(browser, tmp_path: Path, state: dict) -> None:
                     got = ref + math.remainder(got - float(ref), 2 * math.pi)
                 np.testing.assert_allclose(got, ref, rtol=0, atol=REL * (1 + abs(float(ref))),
                                            err_msg=lab)
+    assert state["centers"] is not None
+    ic = instant_centers(sol)
+    for lab in data["centers"]["labels"]:
+        same_center(state["centers"][lab], ic.values[lab], lab)
+    if state.get("curvature") is not None:
+        lc = curvature(sol)[data["curvature"]["link"]]
+        same_curvature(data, state["curvature"], lc.values, size, steps=lc.construction.steps)
 
 
 @pytest.mark.parametrize("name", FILES)
@@ -190,7 +205,7 @@ def test_the_page_moves_the_follower_with_the_drive_as_solve_says(browser, tmp_p
         # θ3 is the law's at the new θ2 (the same direction: whole turns apart)
         ref = float(law.value(drive))
         assert abs(math.remainder(r["θ3"] - ref, 2 * math.pi)) <= 1e-12 * (1 + abs(ref))
-        _check_saved(browser, tmp_path, state)
+        _check_saved(browser, tmp_path, state, data)
         seen.append(turn)
 
     check()
@@ -217,4 +232,5 @@ def test_the_table_page_meets_the_rows_and_the_chain_rule(browser, tmp_path):
     d2 = (th[1]["θ3"] - 2 * th[0]["θ3"] + th[-1]["θ3"]) / h**2
     assert r["ω3"] == pytest.approx(d1 * 10.0, rel=1e-6)
     assert r["α3"] == pytest.approx(d2 * 100.0, rel=1e-4, abs=1e-3)
-    _check_saved(browser, tmp_path, browser.js("window.graphkinLive.state()"))
+    data, _ = live_data(mech, load_toml(path), path.name)
+    _check_saved(browser, tmp_path, browser.js("window.graphkinLive.state()"), data)
