@@ -450,7 +450,9 @@ function redraw(refit) {
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
-  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" :
+  // a drive that follows by a table has no value beyond its rows (render/live_laws.py)
+  const why = ok || !construction.why ? "" : construction.why(drive);
+  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" : why ||
     "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.");
   showDrive();
@@ -589,6 +591,8 @@ function edited() {
   for (const n of Object.keys(D.coupler)) f.links[D.coupler[n].link][n] = localOf(D.coupler[n]);
   const dr = Array.isArray(f.drive) ? f.drive[D.drive.index] : f.drive;
   dr[D.drive.key] = D.drive.degrees ? drive * 180 / Math.PI : drive;
+  // within a table's rows, read back within them (render/live_laws.py)
+  if (construction.saved) dr[D.drive.key] = construction.saved(dr[D.drive.key], drive);
   if (r && D.assembly.length) {
     f.assembly = isTable(f.assembly) ? f.assembly : {};
     for (const n of D.assembly) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];

@@ -34,6 +34,7 @@ derivatives).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from graphkin.mechanisms.laws import Law
@@ -83,6 +84,27 @@ function gkFollow(F, I) {
   }
   return I;
 }
+// why the page has no posture at the first drive's value x: outside a table's rows (a table
+// says nothing beyond them), or "" (render/live_app.py says why otherwise)
+function gkFollowWhy(F, x) {
+  for (const f of F.laws) if (f.outside && !Number.isFinite(gkLaw(f.law, x, 0))) return f.outside;
+  return "";
+}
+// the first drive's angle v (degrees) the page saves at its value x (rad): where x is within a
+// table's rows but v, converted back as graphkin reads it (v · (π/180)), falls a round-off
+// outside them (x at the last row: 300° -> 300.00000000000006°), v moved in by that round-off
+function gkFollowSaved(F, v, x) {
+  if (!F.degrees) return v;
+  for (const f of F.laws) {
+    const L = f.law;
+    if (!L.x || L.period !== null) continue;
+    const lo = L.x[0], hi = L.x[L.x.length - 1], f1 = Math.PI / 180.0;
+    const step = () => Math.max(Math.abs(v) * Number.EPSILON, Number.MIN_VALUE);
+    for (let k = 0; k < 8 && x >= lo && x <= hi && v * f1 > hi; k++) v -= step();
+    for (let k = 0; k < 8 && x >= lo && x <= hi && v * f1 < lo; k++) v += step();
+  }
+  return v;
+}
 """
 """The evaluation of the laws' coefficients and the setting of the followers' inputs."""
 
@@ -125,9 +147,22 @@ def follow_data(eng: Any) -> dict[str, Any] | None:
     rates = {d.label: list(labs) for labs, d in eng.coupled_rates.items()}
     d0 = eng.drive
     return {"label": eng.label, "rate": float(d0.rate or 0.0), "rate2": float(d0.rate2 or 0.0),
+            "degrees": d0.is_angle,
             "laws": [{"label": lab, "law": law_data(law),
-                      "rates": rates.get(lab) if eng.combined is not None else None}
+                      "rates": rates.get(lab) if eng.combined is not None else None,
+                      "outside": _outside(law, d0, lab, eng.mech.length_unit)}
                      for lab, law in eng.coupled.items()]}
+
+
+def _outside(law: Law, lead: Any, label: str, unit: str) -> str:
+    """The page's line where the first drive leaves a table's rows; "" for a law of every value."""
+    dom = law.domain
+    if dom is None:
+        return ""
+    lo, hi = (math.degrees(v) if lead.is_angle else v for v in dom)
+    u = "°" if lead.is_angle else f" {unit}"
+    return (f"{lead.label} is outside the rows of the table {label} follows it by "
+            f"({lo:g}{u} to {hi:g}{u}), which says nothing beyond them: drag back.")
 
 
 def follow_js(follow_json: str) -> str:
@@ -139,4 +174,6 @@ def follow_js(follow_json: str) -> str:
         :func:`follow_data` as JSON safe inside ``<script>``.
     """
     return (LAWS_JS + f"const GK_FOLLOW = {follow_json};\n"
-            f"function construction(I, K) {{ return {BASE_NAME}(gkFollow(GK_FOLLOW, I), K); }}\n")
+            f"function construction(I, K) {{ return {BASE_NAME}(gkFollow(GK_FOLLOW, I), K); }}\n"
+            "construction.why = (x) => gkFollowWhy(GK_FOLLOW, x);\n"
+            "construction.saved = (v, x) => gkFollowSaved(GK_FOLLOW, v, x);\n")

@@ -234,3 +234,34 @@ def test_the_table_page_meets_the_rows_and_the_chain_rule(browser, tmp_path):
     assert r["α3"] == pytest.approx(d2 * 100.0, rel=1e-4, abs=1e-3)
     data, _ = live_data(mech, load_toml(path), path.name)
     _check_saved(browser, tmp_path, browser.js("window.graphkinLive.state()"), data)
+
+
+def test_a_table_over_part_of_a_turn_moves_within_its_rows_and_says_why_beyond(browser,
+                                                                              tmp_path):
+    # fivebar_table.toml without its last two rows: θ3's table covers θ2 from 0° to 300° only
+    # (a natural spline, not periodic); beyond, the page has no posture and says why
+    text = (ROOT / "examples" / "fivebar_table.toml").read_text(encoding="utf-8")
+    cut = text.replace(", [330, 667.5000],\n  [360, 765.0000],", ",")
+    assert cut != text
+    path = tmp_path / "partial.toml"
+    path.write_text(cut, encoding="utf-8")
+    mech = graphkin.load(path)
+    assert mech.drives[1].law.domain == pytest.approx((0.0, math.radians(300.0)))
+    data, _ = live_data(mech, load_toml(path), path.name)
+    page = tmp_path / "partial.html"
+    page.write_text(live_html(mech, load_toml(path), path.name), encoding="utf-8")
+    browser.open(page)
+    for deg, inside in ((210.0, True), (-10.0, False), (330.0, False), (300.0, True),
+                        (45.0, True)):
+        r = browser.js(f"window.graphkinLive.setDrive({math.radians(deg)!r})")
+        status = browser.js("document.getElementById('gk-status').textContent")
+        assert browser.errors() == []
+        if inside:
+            assert r is not None and status == ""
+            if deg == 300.0:  # the last row: θ3 = 572.0096°
+                assert math.degrees(r["θ3"]) % 360 == pytest.approx(572.0096 - 360, abs=1e-9)
+            _check_saved(browser, tmp_path, browser.js("window.graphkinLive.state()"), data)
+        else:
+            assert r is None
+            assert status == ("θ2 is outside the rows of the table θ3 follows it by (0° to "
+                              "300°), which says nothing beyond them: drag back.")
