@@ -72,10 +72,6 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         return _newton_page(mech, file_data, source)
     if eng.method != "construction" or eng.pc is None:
         return _newton_page(mech, file_data, source)
-    from graphkin.render.live_laws import BASE_NAME, follow_data, follow_js
-
-    # a drive that follows the first by a law moves with it, as in a sweep (Sec. 5.4)
-    follow = follow_data(eng)
     cx = eng.combined if eng.combined is not None else eng.pc.construction
     consts: dict[str, float] = {k: float(v) for k, v in eng.held.items()}
     if eng.combined is not None:
@@ -92,8 +88,7 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         requests += [f"{w}{lid}" for w in ("ω", "α") for lid in mech.links if f"{w}{lid}" in made]
         requests += [p for p in ("o_v", "o_a") if p in made]
     try:
-        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL,
-                         name="construction" if follow is None else BASE_NAME)
+        fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
     drive = _drive_data(mech, eng.label, made)
@@ -137,9 +132,8 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.render.live_newton import roll_edit_js
 
     js = RUNTIME + fn.source + roll_edit_js(mech, made)
-    if follow is not None:  # every caller of construction(I, K) moves the followers first
-        data["follow"] = follow
-        js += follow_js(script_json(follow))
+    js += _follow(data, mech, {d.label: list(w) for w, d in eng.coupled_rates.items()}
+                  if rates else None)
 
     data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
     js += cjs
@@ -181,13 +175,10 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     """The page of a mechanism only Newton's method solves (:mod:`.live_newton`)."""
     from graphkin.render.live_newton import newton_data
 
-    follower = next((x for x in mech.drives if x.law is not None), None)
-    if follower is not None:  # the page moves one input; holding the other would be wrong
-        raise InputError("no live page: this drive follows the first by a law, and the "
-                         "mechanism is solved by Newton's method, whose page does not move "
-                         "it with the first yet (sweep, plot and animate do)",
-                         key=f"{follower.key}.follows", file=source)
     data, js = newton_data(mech, source)
+    # Newton's page has no table law's rates: _Engine refuses a table with rates unswept by
+    # the constructions, so a follower's rates here are a linear law's constants
+    js += _follow(data, mech, None)
     made = {n for lk in mech.links.values() for n in lk.points}
     data.update(title=mech.title or source, unit=mech.length_unit,
                 drive=_drive_data(mech, mech.drives[0].label, made), file=file_data,
@@ -199,6 +190,21 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     names = list(made)   # every named point is on the Newton page's posture
     data["centers"], cjs = centers_data(mech, names, made)
     return data, js + cjs
+
+
+def _follow(data: dict[str, Any], mech: Mechanism, rates: dict[str, list[str]] | None) -> str:
+    """The page's followers (``data["follow"]``) and the JavaScript that moves them; "" if none.
+
+    A drive that follows the first by a law moves with it on every drag, as in a
+    sweep (Sec. 5.4; :mod:`graphkin.render.live_laws`).
+    """
+    from graphkin.render.live_laws import LAWS_JS, follow_data
+
+    follow = follow_data(mech, rates)
+    if follow is None:
+        return ""
+    data["follow"] = follow
+    return LAWS_JS
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")

@@ -21,9 +21,10 @@ periodic, the follower's whole turns per turn) and :data:`LAWS_JS` only
 evaluates them, the same arithmetic as ``Law._eval`` (tested against it,
 tests/render/test_live_laws.py).
 
-The script wraps the construction function (``gkConstructionBase``) in the
-``construction(I, K)`` the rest of the page calls, so every caller (a drag,
-the coupler curves of the whole cycle) moves the follower with the drive.
+The page's script (:mod:`graphkin.render.live_app`) calls ``gkFollow`` wherever
+it sets the first drive's input before calling ``construction(I, K)`` (a drag,
+the coupler curves of the whole cycle), the recorded construction's function
+or Newton's method's (:mod:`graphkin.render.live_newton`) alike.
 
 References
 ----------
@@ -38,11 +39,9 @@ import math
 from typing import Any
 
 from graphkin.mechanisms.laws import Law
+from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["BASE_NAME", "LAWS_JS", "law_data", "follow_data", "follow_js"]
-
-BASE_NAME = "gkConstructionBase"
-"""The name of the construction function the page's ``construction`` wraps."""
+__all__ = ["LAWS_JS", "law_data", "follow_data"]
 
 LAWS_JS = """\
 // f(x) (order 0), f'(x) (1) or f''(x) (2) of a law from its coefficients (render/live_laws.py;
@@ -128,30 +127,33 @@ def law_data(law: Law) -> dict[str, Any]:
             "slope": float(law._slope)}
 
 
-def follow_data(eng: Any) -> dict[str, Any] | None:
+def follow_data(mech: Mechanism, rates: dict[str, list[str]] | None) -> dict[str, Any] | None:
     """The page's ``follow``: the first drive's label and rates, and each follower's law.
 
     Parameters
     ----------
-    eng : graphkin.kinematics.sweep.engine._Engine
-        The sweep's engine of the mechanism (its ``coupled`` laws and, with
-        rates, ``coupled_rates``: the rate inputs of a table law's follower).
+    mech : Mechanism
+        The mechanism (its drives after the first with a ``law``).
+    rates : dict or None
+        For each follower by a table whose rates change with the posture, the
+        labels of its rate inputs (``ω3``, ``α3``: the sweep's
+        ``_Engine.coupled_rates``); None when the page has no polygons.
 
     Returns
     -------
     dict or None
         None when no input follows the first.
     """
-    if not getattr(eng, "coupled", None):
+    d0 = mech.drives[0]
+    laws = [(d.label, d.law) for d in mech.drives if d.law is not None]
+    if not laws:
         return None
-    rates = {d.label: list(labs) for labs, d in eng.coupled_rates.items()}
-    d0 = eng.drive
-    return {"label": eng.label, "rate": float(d0.rate or 0.0), "rate2": float(d0.rate2 or 0.0),
+    return {"label": d0.label, "rate": float(d0.rate or 0.0), "rate2": float(d0.rate2 or 0.0),
             "degrees": d0.is_angle,
             "laws": [{"label": lab, "law": law_data(law),
-                      "rates": rates.get(lab) if eng.combined is not None else None,
-                      "outside": _outside(law, d0, lab, eng.mech.length_unit)}
-                     for lab, law in eng.coupled.items()]}
+                      "rates": None if rates is None else rates.get(lab),
+                      "outside": _outside(law, d0, lab, mech.length_unit)}
+                     for lab, law in laws]}
 
 
 def _outside(law: Law, lead: Any, label: str, unit: str) -> str:
@@ -163,17 +165,3 @@ def _outside(law: Law, lead: Any, label: str, unit: str) -> str:
     u = "°" if lead.is_angle else f" {unit}"
     return (f"{lead.label} is outside the rows of the table {label} follows it by "
             f"({lo:g}{u} to {hi:g}{u}), which says nothing beyond them: drag back.")
-
-
-def follow_js(follow_json: str) -> str:
-    """The page's ``construction(I, K)``: the followers set from the drive, then the construction.
-
-    Parameters
-    ----------
-    follow_json : str
-        :func:`follow_data` as JSON safe inside ``<script>``.
-    """
-    return (LAWS_JS + f"const GK_FOLLOW = {follow_json};\n"
-            f"function construction(I, K) {{ return {BASE_NAME}(gkFollow(GK_FOLLOW, I), K); }}\n"
-            "construction.why = (x) => gkFollowWhy(GK_FOLLOW, x);\n"
-            "construction.saved = (v, x) => gkFollowSaved(GK_FOLLOW, v, x);\n")
