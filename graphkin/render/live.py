@@ -66,11 +66,6 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.kinematics.posture import NotDecomposable
     from graphkin.kinematics.sweep.engine import _Engine
 
-    follower = next((x for x in mech.drives if x.law is not None), None)
-    if follower is not None:  # the page moves one input; holding the other would be wrong
-        raise InputError("no live page: this drive follows the first by a law, which the page "
-                         "does not move with it yet (sweep, plot and animate do)",
-                         key=f"{follower.key}.follows", file=source)
     try:
         eng = _Engine(mech, DEFAULT_TOL)
     except NotDecomposable:  # not one group at a time: Newton's method on the page
@@ -137,6 +132,8 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     from graphkin.render.live_newton import roll_edit_js
 
     js = RUNTIME + fn.source + roll_edit_js(mech, made)
+    js += _follow(data, mech, {d.label: list(w) for w, d in eng.coupled_rates.items()}
+                  if rates else None)
 
     data["centers"], cjs = centers_data(mech, points, made, avoid=coupler)
     js += cjs
@@ -179,6 +176,9 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     from graphkin.render.live_newton import newton_data
 
     data, js = newton_data(mech, source)
+    # Newton's page has no table law's rates: _Engine refuses a table with rates unswept by
+    # the constructions, so a follower's rates here are a linear law's constants
+    js += _follow(data, mech, None)
     made = {n for lk in mech.links.values() for n in lk.points}
     data.update(title=mech.title or source, unit=mech.length_unit,
                 drive=_drive_data(mech, mech.drives[0].label, made), file=file_data,
@@ -190,6 +190,21 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     names = list(made)   # every named point is on the Newton page's posture
     data["centers"], cjs = centers_data(mech, names, made)
     return data, js + cjs
+
+
+def _follow(data: dict[str, Any], mech: Mechanism, rates: dict[str, list[str]] | None) -> str:
+    """The page's followers (``data["follow"]``) and the JavaScript that moves them; "" if none.
+
+    A drive that follows the first by a law moves with it on every drag, as in a
+    sweep (Sec. 5.4; :mod:`graphkin.render.live_laws`).
+    """
+    from graphkin.render.live_laws import LAWS_JS, follow_data
+
+    follow = follow_data(mech, rates)
+    if follow is None:
+        return ""
+    data["follow"] = follow
+    return LAWS_JS
 
 
 _DIMENSIONS = ("local_a", "local_b", "local_p", "local_q", "radius", "distance", "offset")

@@ -101,7 +101,9 @@ for (const lid of Object.keys(D.links)) {
   for (const n of D.links[lid]) owners[n] = (owners[n] || 0) + 1;
 }
 
-function solve() { I[D.drive.label] = drive; return construction(I, K); }
+// a drive that follows the first by a law moves with it (render/live_laws.py, Sec. 5.4)
+const follow = (J) => (D.follow ? gkFollow(D.follow, J) : J);
+function solve() { I[D.drive.label] = drive; return construction(follow(I), K); }
 
 // the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
 function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
@@ -122,7 +124,7 @@ function cycle() {
   for (const n of traced) curves[n] = [];
   for (let k = 0; k < 360; k++) {
     J[D.drive.label] = drive + 2 * Math.PI * k / 360;
-    const r = construction(J, K);
+    const r = construction(follow(J), K);
     for (const n of traced) curves[n].push(r ? r[n] : null);
   }
   if (mark) construction.restore(mark);
@@ -450,7 +452,9 @@ function redraw(refit) {
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
-  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" :
+  // a drive that follows by a table has no value beyond its rows (render/live_laws.py)
+  const why = ok || !D.follow ? "" : gkFollowWhy(D.follow, drive);
+  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" : why ||
     "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back.");
   showDrive();
@@ -589,6 +593,8 @@ function edited() {
   for (const n of Object.keys(D.coupler)) f.links[D.coupler[n].link][n] = localOf(D.coupler[n]);
   const dr = Array.isArray(f.drive) ? f.drive[D.drive.index] : f.drive;
   dr[D.drive.key] = D.drive.degrees ? drive * 180 / Math.PI : drive;
+  // within a table's rows, read back within them (render/live_laws.py)
+  if (D.follow) dr[D.drive.key] = gkFollowSaved(D.follow, dr[D.drive.key], drive);
   if (r && D.assembly.length) {
     f.assembly = isTable(f.assembly) ? f.assembly : {};
     for (const n of D.assembly) if (r[n]) f.assembly[n] = [r[n][0], r[n][1]];
