@@ -1,0 +1,127 @@
+"""Compare scan readers on one sample: draw it once, read it with any checkout's code.
+
+Usage::
+
+    python benchmarks/scan_fixed_sample.py save sample.json [--draws 160]
+    python benchmarks/scan_fixed_sample.py read sample.json [--levels scan mild phone harsh]
+
+``save`` writes the raw draws of ``tests/strategies.py`` (four-bars and
+slider-cranks, a diagram, a photo seed, a wrong length) as JSON; ``read``,
+run from any checkout (its ``tests/scan/photos.py`` and its ``graphkin``),
+photographs and reads the same drawings: right, reversed (turned 180°) and
+one image 3-10 % too long or short.  ``scan_reading_rate.py`` draws its
+sample anew each run, and the sample changes with the code (docs/checking.md
+"How well it reads"), so two readers are compared here.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import defaultdict
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+sys.path.insert(0, str(Path.cwd() / "tests"))
+
+
+def save(path: str, draws: int) -> None:
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import strategies as st
+    from strategies import fourbars, slider_cranks
+
+    out: list[dict[str, Any]] = []
+
+    @settings(max_examples=draws, derandomize=True, database=None, deadline=None,
+              phases=[Phase.generate], suppress_health_check=list(HealthCheck))
+    @given(rm=st.one_of(fourbars(), slider_cranks()),
+           diagram=st.sampled_from(["velocity", "acceleration"]),
+           seed=st.integers(0, 2**16), factor=st.floats(0.03, 0.10), longer=st.booleans())
+    def one(rm: Any, diagram: str, seed: int, factor: float, longer: bool) -> None:
+        out.append({"kind": rm.kind, "data": rm.data, "diagram": diagram, "seed": seed,
+                    "factor": factor, "longer": longer})
+
+    one()
+    Path(path).write_text(json.dumps(out), encoding="utf-8")
+    print(f"{len(out)} draws written to {path}")
+
+
+def _intended(case: str, rows: list[Any], wrong: str) -> bool:
+    from graphkin.check.report import OK, WRONG
+
+    if case == "right":
+        return all(r.verdict == OK for r in rows)
+    if case == "reversed":
+        return all(r.code == "sense" or r.code.startswith("follows:") for r in rows) and \
+            any(r.code == "sense" for r in rows)
+    return all((r.verdict == WRONG) if r.key.endswith(f"_{wrong}") else (r.verdict == OK)
+               for r in rows)
+
+
+def read(path: str, levels: list[str]) -> None:
+    from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels
+
+    from graphkin.check import CheckTolerance, Diagnoser, Evaluator
+    from graphkin.check.report import OK
+    from graphkin.mechanisms import from_dict
+    from graphkin.scan.read import mark_scan, read_sheet
+    from graphkin.scan.sheet import Page
+
+    tally: dict[tuple[str, str], list[int]] = defaultdict(lambda: [0, 0])
+    false, n, seen = 0, 0, set()
+    for d in json.loads(Path(path).read_text(encoding="utf-8")):
+        sol = from_dict(d["data"]).solve()
+        lay = layout_for(sol, d["diagram"], d["kind"])
+        images = exact_images(sol, lay)
+        key = (d["diagram"], d["seed"],
+               tuple(sorted((k, *np.round(v, 2)) for k, v in images.items())))
+        pole, pts = np.array(lay.pole), list(images.values())
+        if key in seen or not images or any(np.hypot(*(p - pole)) < 7 for p in pts) or any(
+                np.hypot(*(p - q)) < 5 for i, p in enumerate(pts) for q in pts[i + 1:]):
+            seen.add(key)
+            continue
+        seen.add(key)
+        n += 1
+        name = sorted(images)[d["seed"] % len(images)]
+        f = 1 + d["factor"] if d["longer"] else 1 - d["factor"]
+        cases = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
+                 "length": {**images, name: pole + f * (images[name] - pole)}}
+        diag, sheet = Diagnoser(Evaluator(sol)), sheet_pixels(sol, lay)
+        for level in levels:
+            for case, drawn in cases.items():
+                photo = hand_photo(sol, lay, sheet, drawn, level, d["seed"])
+                try:
+                    got = read_sheet(sol, Page("p", photo), diag, lay.digest)
+                    rows = mark_scan(sol, got, "p", CheckTolerance(), diag).rows
+                    good = _intended(case, rows, name)
+                except Exception:  # noqa: BLE001 - counted as not read
+                    rows, good = [], False
+                tally[(level, case)][0] += good
+                tally[(level, case)][1] += 1
+                false += case == "right" and any(
+                    r.verdict != OK and r.code not in ("unexplained", "not-found") for r in rows)
+    print(f"{n} mechanisms")
+    for level in levels:
+        print(level, "  ".join(f"{c} {tally[(level, c)][0]}/{tally[(level, c)][1]}"
+                               for c in ("right", "reversed", "length")))
+    print("right drawings with a usual mistake named:", false)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("what", choices=["save", "read"])
+    ap.add_argument("sample")
+    ap.add_argument("--draws", type=int, default=160)
+    ap.add_argument("--levels", nargs="+", default=["scan", "mild", "phone", "harsh"])
+    args = ap.parse_args()
+    if args.what == "save":
+        save(args.sample, args.draws)
+    else:
+        read(args.sample, args.levels)
+
+
+if __name__ == "__main__":
+    main()
