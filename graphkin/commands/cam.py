@@ -84,6 +84,7 @@ def run(args: argparse.Namespace) -> int:
                              key="--output")
         else:
             write_text(args.output, text, "--output")
+            print(f"wrote {args.output}", file=sys.stderr)
         return 0
     if args.output:
         out = Path(args.output)
@@ -103,6 +104,7 @@ def run(args: argparse.Namespace) -> int:
         else:
             raise InputError(f"cannot write {out.name!r}: the output is .svg, .png, .pdf, .dxf "
                              "or .csv", key="--output")
+        print(f"wrote {out}", file=sys.stderr)   # as every command that writes a file says
     if args.json:
         json.dump(cam_json(cf), sys.stdout, ensure_ascii=False, indent=1, allow_nan=False)
         sys.stdout.write("\n")

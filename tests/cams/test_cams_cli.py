@@ -273,3 +273,12 @@ def test_the_displacement_diagram_reads_in_rates_at_the_cam_s_speed(capsys, tmp_
     assert _run(capsys, CAMS / "ex6_5_roller.toml", "-d", "displacement", "-o", out)[0] == 0
     ids = {el.get("id") for el in ET.parse(out).getroot().iter()}
     assert {"rate-axis-y1", "rate-axis-y2"} <= ids
+
+
+@pytest.mark.parametrize("ext", ["svg", "dxf", "csv"])
+def test_writing_a_file_says_so(capsys, tmp_path, ext):
+    # every command that writes a file says "wrote OUT" on standard error (audit7: cam -o
+    # wrote the file silently, the report alone on standard output)
+    out = tmp_path / f"profile.{ext}"
+    rc, text, err = _run(capsys, CAMS / "ex6_6_roller.toml", "-o", out)
+    assert rc == 0 and out.exists() and f"wrote {out}" in err and f"wrote {out}" not in text
