@@ -168,16 +168,21 @@ def test_plot_and_animate_move_the_follower(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize("path", [LINEAR, TABLE])
-def test_live_refuses_a_follower_it_cannot_move(path: Path, tmp_path: Path) -> None:
-    """The live page moves one input and held the follower undefined (θ3 missing from its
-    inputs): refused in one line naming the follower, until the page moves it."""
+def test_live_moves_the_follower_with_the_drive(path: Path, tmp_path: Path) -> None:
+    """The live page moves the follower by its law with the first drive (the page's values
+    against `solve` after drags: tests/render/test_live_laws.py); the page is written and
+    carries the law, not a fixed angle for the follower."""
     import contextlib
     import io
 
+    import graphkin
     from graphkin.cli import main
+    from graphkin.files import load_toml
+    from graphkin.render.live import live_data
 
     err = io.StringIO()
     with contextlib.redirect_stderr(err):
         rc = main(["live", str(path), "-o", str(tmp_path / "l.html")])
-    assert rc == 2 and "drive[1].follows: no live page" in err.getvalue(), err.getvalue()
-    assert not (tmp_path / "l.html").exists()
+    assert rc == 0 and (tmp_path / "l.html").exists(), err.getvalue()
+    data, _ = live_data(graphkin.load(path), load_toml(path), path.name)
+    assert data.get("follow"), "the page has no follower's law"
