@@ -40,7 +40,7 @@ import numpy as np
 from graphkin.errors import GraphkinError, InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 
-__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "newton_data", "newton_points", "roll_edit_js"]
+__all__ = ["NEWTON_JS", "ROLL_EDIT_JS", "newton_data", "roll_edit_js"]
 
 #: Largest drive step of the march between two postures (rad, and fraction of the size).
 MARCH_ANGLE = math.radians(2.0)
@@ -167,25 +167,6 @@ def _path_points(mech: Mechanism) -> list[tuple[str, str, tuple[float, float]]]:
         if isinstance(c, (tuple, list)):
             out.append((f"{path.key}:O", path.on, (float(c[0]), float(c[1]))))
     return out
-
-
-def newton_points(mech: Mechanism) -> Any:
-    """Which given points of the instant centers' construction the Newton page's posture has.
-
-    A named point (``A``, or ``A#2``, the same point again) or a path's point
-    (``slots[0]:L0``, ``rolling[1]:O``): ``{"pin": label}``, read from the
-    posture like a pin; None for any other.
-    """
-    names = {n for lk in mech.links.values() for n in lk.points}
-    paths = {lab for lab, _, _ in _path_points(mech)}
-
-    def named(lab: str) -> dict[str, str] | None:
-        base = lab.split("#")[0]
-        if base in names:
-            return {"pin": base}
-        return {"pin": lab} if lab in paths else None
-
-    return named
 
 
 def _refused(mech: Mechanism) -> dict[str, str]:
