@@ -11,7 +11,7 @@ the cam link's angle θ2 (:mod:`graphkin.construction.ops.cam_program`):
 * ``cam_program``: Θ, the lift ``Y`` and ``y'``, ``y''`` (Secs. 6.3-6.8);
 * ``cam_center``: ``K<f>`` in the cam link's coordinates, ``|ρ|``, the trace
   point ``T<f>`` and the contact point in the mechanism's frame, and the
-  profile's radius of curvature (Secs. 6.9-6.10).
+  pitch curve's signed radius of curvature (Secs. 6.9-6.10).
 
 Both operations' templates are written out as Python and as JavaScript (the
 live page turns the cam with them, :mod:`graphkin.render.live_cams`); the
@@ -58,7 +58,7 @@ class TurnSteps:
         ``input`` θ2, ``cam_program``, ``cam_center``.
     theta, lift, center, length, trace, contact, rho : str
         The labels of Θ, Y, ``K<f>`` (cam link's coordinates), ``|ρ|``,
-        ``T<f>`` and the contact point (mechanism frame) and the profile's ρ.
+        ``T<f>`` and the contact point (mechanism frame) and the pitch curve's ρ.
     """
 
     steps: list[Step]

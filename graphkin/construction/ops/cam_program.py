@@ -185,7 +185,8 @@ def _cam_center(gen: Gen, step: Step) -> None:
     center of curvature in the cam link's own coordinates from the cam's
     center, mechanism units), ``R`` (``|ρ|``, mechanism units), ``T`` and
     ``C`` (the trace and contact points in the mechanism's frame) and ``ρ``
-    (the profile's signed radius of curvature, cam units, positive convex).
+    (the pitch curve's signed radius of curvature, cam units, positive convex;
+    the profile's is ``ρ − r_r``, Eq. 6.38).
     """
     p = step.params
     th, Y, y1, y2 = (gen.scalar(i) for i in step.inputs)
@@ -235,7 +236,7 @@ def _cam_center(gen: Gen, step: Step) -> None:
     for lab, z in ((step.outputs[2], pf), (step.outputs[3], cf)):
         m = _mul((ax, ay), z)
         gen.put_point(lab, f"{ox} + {scale} * {m[0]}", f"{oy} + {scale} * {m[1]}")
-    gen.put_scalar(step.outputs[4], f"{rho} - {rr}")
+    gen.put_scalar(step.outputs[4], rho)
 
 
 def _general(name: str, labels: tuple[str, ...]) -> Callable[..., tuple[Array, ...]]:
