@@ -315,9 +315,10 @@ draw my velocity polygon</button>
 """
 
 
-def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
-    """The whole page, self-contained (one file, no network)."""
-    data, js = live_data(mech, file_data, source)
+def live_html(mech: Mechanism, file_data: dict[str, Any], source: str, *,
+              turn: bool = True) -> str:
+    """The whole page, self-contained (one file, no network); ``turn``: see :func:`live_data`."""
+    data, js = live_data(mech, file_data, source, turn=turn)
     title = html.escape(str(data["title"]))
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">

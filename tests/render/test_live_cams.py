@@ -1,4 +1,8 @@
-"""The live page of a cam mechanism never shows a value off the cam's program.
+"""The live page of a cam mechanism held at the file's angle never shows a value off the program.
+
+The page holds the cam where it cannot turn it (a flat face, a motion the
+operations have no expression of; ``turn=False`` here, to test the hold on
+every kind); where it turns the cam, tests/render/test_live_cam_turn.py.
 
 A ``[[cams]]`` entry is solved through its equivalent linkage at the file's
 cam angle (Sec. 4.7), which holds at that angle only: turned to another
@@ -125,7 +129,7 @@ def _same_as_solve(browser, tmp_path: Path, mech: graphkin.Mechanism, state: dic
 def test_the_page_data_holds_the_cam_s_points() -> None:
     data = load_toml(EXAMPLE)
     mech = graphkin.load(EXAMPLE)
-    d, _ = live_data(mech, data, "cam_mechanism.toml")
+    d, _ = live_data(mech, data, "cam_mechanism.toml", turn=False)
     why = d["cam"]["why"]
     assert why.startswith("cam_mechanism.toml: drive.angle: ") and "\n" not in why
     assert "cams[0]" in why and "30°" in why
@@ -141,7 +145,8 @@ def test_the_page_data_holds_the_cam_s_points() -> None:
 def test_the_example_s_follower_stays_on_the_program(browser, tmp_path) -> None:
     mech = graphkin.load(EXAMPLE)
     page = tmp_path / "cam.html"
-    page.write_text(live_html(mech, load_toml(EXAMPLE), EXAMPLE.name), encoding="utf-8")
+    page.write_text(live_html(mech, load_toml(EXAMPLE), EXAMPLE.name, turn=False),
+                    encoding="utf-8")
     browser.open(page)
     drive0 = mech.drives[0].value
     why = browser.js("JSON.parse(document.getElementById('gk-data').textContent).cam.why")
@@ -232,13 +237,13 @@ def test_random_cam_mechanisms_dragged_equal_solve(browser, tmp_path, kind) -> N
             return
         mech = from_dict(file, source="random.toml")
         try:
-            d, _ = live_data(mech, file, "random.toml")
+            d, _ = live_data(mech, file, "random.toml", turn=False)
         except InputError as exc:      # no construction to write out: said in one line
             assert "\n" not in exc.one_line() and "no live page" in exc.one_line()
             return
         assert "O7" in d["frame"] and not cam_points(mech) & set(d["frame"])
         page = tmp_path / "random.html"
-        page.write_text(live_html(mech, file, "random.toml"), encoding="utf-8")
+        page.write_text(live_html(mech, file, "random.toml", turn=False), encoding="utf-8")
         browser.open(page)
         K = list(d["K"])
         i, j = d["frame"]["O7"]
