@@ -31,6 +31,7 @@ from cam_strategies import cam_toml, cams
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
+from live_cams_shared import straight_angle
 
 from graphkin.cams import Cam, FollowerKind, Motion, Program, Segment
 from graphkin.cams.analytic import profile
@@ -149,34 +150,9 @@ def test_both_languages_equal_the_analytic_cam(tmp_path_factory, cam, axis, o2, 
             _close(v[lab], ref, size + float(np.abs(ref).max()), f"{lab} (js)")
 
 
-def _straight_angle() -> float:
-    """A cam angle of Ex 6.6 where the pitch curve is straight (1/ρ = 0), by bisection.
-
-    Found on cams/analytic.profile alone: Eq. (6.37)'s curvature changes sign between
-    the convex flank (Θ = 30°, ρ = 72.757 mm) and the concave valley (Θ = 181°).
-    """
-    cam = example_6_6()
-
-    def kappa(th: float) -> float:
-        pr = profile(cam, np.array([th]))
-        assert pr.rho_pitch is not None
-        return 1.0 / float(pr.rho_pitch[0])
-
-    grid = np.radians(np.arange(30.0, 182.0, 1.0))
-    vals = [kappa(t) for t in grid]
-    i = next(k for k in range(len(vals) - 1) if vals[k] > 0 >= vals[k + 1])
-    a, b = float(grid[i]), float(grid[i + 1])
-    for _ in range(200):
-        m = 0.5 * (a + b)
-        if m in (a, b):
-            break
-        a, b = (m, b) if kappa(m) > 0 else (a, m)
-    return a if abs(kappa(a)) < abs(kappa(b)) else b
-
-
 def test_a_straight_pitch_curve_has_no_center() -> None:
     cam = example_6_6()
-    th = _straight_angle()
+    th = straight_angle()
     with pytest.raises(InputError, match="straight"):
         equivalent_linkage(cam, th)
     j = from_dict({"links": {"1": {"O2": [0, 0]}},

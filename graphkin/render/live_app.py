@@ -492,6 +492,11 @@ svgs.posture.addEventListener("pointerdown", (ev) => {
   if (!t.classList || !t.classList.contains("gk-handle")) return;
   snapshot();
   dragging = {kind: t.getAttribute("data-kind"), name: t.getAttribute("data-name")};
+  if (dragging.kind === "drive" && D.drive.relative) {  // a cam: turned from where it is held
+    const w = world(svgs.posture, ev), piv = (res || good)[D.drive.pivot];
+    dragging.a0 = Math.atan2(w[1] - piv[1], w[0] - piv[0]);
+    dragging.d0 = drive;
+  }
   svgs.posture.setPointerCapture(ev.pointerId);
   ev.preventDefault();
 });
@@ -507,7 +512,6 @@ svgs.posture.addEventListener("pointermove", (ev) => {
     const piv = (res || good)[D.drive.pivot];
     const a = Math.atan2(w[1] - piv[1], w[0] - piv[0]);
     if (D.drive.relative) {  // a cam turns by the angle the pointer turns about its center
-      if (dragging.a0 === undefined) { dragging.a0 = a; dragging.d0 = drive; }
       drive = dragging.d0 + a - dragging.a0;
     } else {
       drive = a - D.drive.phi;

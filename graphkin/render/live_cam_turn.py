@@ -286,8 +286,8 @@ def _same_elsewhere(data: dict[str, Any], mech: Mechanism, file_data: Mapping[st
         entry = drives[int(d0.key[6:-1]) if d0.key.startswith("drive[") else 0]
         assert isinstance(entry, dict)
         entry["angle"] = math.degrees(d0.value) + step
-        try:
-            m2 = from_dict(other, source)
+        try:   # the cam file's path is relative to the file read (mech.source)
+            m2 = from_dict(other, mech.source or source)
             d2, _ = live_data(m2, other, source, turn=False)
         except GraphkinError:
             continue

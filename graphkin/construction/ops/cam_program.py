@@ -45,7 +45,7 @@ import numpy as np
 from graphkin.construction.codegen import Gen, lit, template
 from graphkin.construction.ops.registry import op
 from graphkin.construction.step import Step
-from graphkin.tolerance import Tolerance
+from graphkin.tolerance import VERDICT_REL, Tolerance
 
 __all__ = ["MOTIONS", "STRAIGHT"]
 
@@ -225,8 +225,15 @@ def _cam_center(gen: Gen, step: Step) -> None:
     # the inward normal −i s p'/|p'|; the center p + ρ n; the contact p + r_r n (Eq. 6.36)
     n = (gen.let(f"{lit(s)} * {p1[1]} / {w}", "n"), gen.let(f"{lit(-s)} * {p1[0]} / {w}", "n"))
     scale, rr = gen.num(p["scale"]), gen.num(p["roller"])
-    gen.put_point(step.outputs[0], f"({p0[0]} + {rho} * {n[0]}) * {scale}",
-                  f"({p0[1]} + {rho} * {n[1]}) * {scale}")
+    kx = gen.let(f"{p0[0]} + {rho} * {n[0]}", "kx")
+    ky = gen.let(f"{p0[1]} + {rho} * {n[1]}", "ky")
+    # a dwell: the pitch curve is a circle about the cam's center, its center of curvature
+    # that center itself, not a round-off away (Kennedy's line through both has no direction)
+    sel = gen.helper("select")
+    at = gen.let(f"_sqrt({kx} * {kx} + {ky} * {ky}) <= {lit(VERDICT_REL)} * {gen.num(p['size'])}",
+                 "at")
+    gen.put_point(step.outputs[0], f"{sel}({at}, 0.0, {kx} * {scale})",
+                  f"{sel}({at}, 0.0, {ky} * {scale})")
     gen.put_scalar(step.outputs[1], f"_abs({rho}) * {scale}")
     # the mechanism's frame: O2 + e^{i(axis − 90°)} scale · (fixed cam frame)
     ax, ay = gen.num(p["rot"][0]), gen.num(p["rot"][1])
