@@ -21,7 +21,7 @@ them.
 
 Not turned (:class:`NotTurned`, with the reason): a flat-face follower (its
 equivalent linkage is a slot whose line moves with ρ) and the motions with
-no expression here (the modified trapezoid, a table of displacements).
+no expression here (a table of displacements).
 
 References
 ----------
@@ -38,7 +38,7 @@ import numpy as np
 
 from graphkin.cams.joint import CamJoint
 from graphkin.cams.model import Cam
-from graphkin.cams.motions import _P8, Motion, Rest
+from graphkin.cams.motions import _P8, Motion, Rest, piece_rows
 from graphkin.construction.step import Step
 
 __all__ = ["NotTurned", "TurnSteps", "turn_steps", "program_params"]
@@ -103,6 +103,8 @@ def program_params(cam: Cam, shift: float) -> dict[str, Any]:
             kind, coef = "poly", (list(map(float, _P8)) if seg.lift >= 0 else _poly8_return())
         elif seg.motion is Motion.POLYNOMIAL345:
             kind, coef = "poly", [0.0, 0.0, 0.0, 10.0, -15.0, 6.0]
+        elif seg.motion is Motion.MODIFIED_TRAPEZOID:
+            kind, coef = "pieces", [v for row in piece_rows(seg.motion) for v in row]
         else:
             raise NotTurned(f"{prog.label(k)}: the live page has no expression of the "
                             f"{seg.motion.value} motion")

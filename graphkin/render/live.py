@@ -157,6 +157,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
     if fd is not None:
         data["forces"], fjs = fd
         js += fjs
+    if turn:
+        from graphkin.render.live_cam_turn import check_turn
+
+        check_turn(data, mech, file_data, source)  # the same page at another cam angle
     return data, js
 
 

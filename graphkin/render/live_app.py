@@ -116,7 +116,11 @@ function solve() {
 }
 
 // the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
-function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
+// (a cam's dwell: none, its follower and coupler at rest, said so: live_cam_turn.py)
+function centersOf(r) {
+  if (D.turn && gkTurnDwell(D.turn, turned)) return null;
+  return D.centers ? gkCenters(D.centers, r) : null;
+}
 let ics = null, curv = null;
 
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
@@ -461,7 +465,8 @@ function redraw(refit) {
     drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok);
   }
   if (D.centers) drawKennedyCircle();
-  byId("gk-centers-note").textContent = gkCentersWhy(D.centers, ics);
+  byId("gk-centers-note").textContent = (D.turn && gkTurnDwell(D.turn, turned)) ||
+    gkCentersWhy(D.centers, ics);
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }

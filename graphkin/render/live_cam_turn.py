@@ -55,7 +55,7 @@ from graphkin.construction.step import Step
 from graphkin.errors import GraphkinError
 from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["TURN_JS", "CAMS_APP_JS", "turn_cams", "turn_handle"]
+__all__ = ["TURN_JS", "CAMS_APP_JS", "check_turn", "turn_cams", "turn_handle"]
 
 #: Points of the cam's outline drawn on the page.
 OUTLINE = 120
@@ -107,6 +107,22 @@ function gkTurnSolve(T, J, Kc, fn) {
   });
   if (r) T.cams.forEach((c, i) => { r[c.contact] = t.cams[i][c.contact]; });
   return {r: r, t: t};
+}
+// why the page draws no instant centers where a cam dwells ("" elsewhere): its center of
+// curvature is the cam's center (cam_center puts it there), the follower and the coupler K-T
+// stand still, and a center of links at rest relative to each other is anywhere
+function gkTurnDwell(T, t) {
+  if (!t || t.why) return "";
+  for (let i = 0; i < T.cams.length; i++) {
+    const k = t.cams[i][T.cams[i].center];
+    if (k[0] === 0 && k[1] === 0) {
+      return "No instant centers at this posture: " + T.cams[i].key + " dwells here (its " +
+        "pitch curve is a circle about the cam's center), so the follower and the coupler " +
+        T.cams[i].center + "-" + T.cams[i].point + " stand still, and the center of two " +
+        "links at rest relative to each other is anywhere (Sec. 3.13).";
+    }
+  }
+  return "";
 }
 // one line per posture: each cam's angle, lift and pitch curve's curvature, and an undercut
 function gkTurnNote(T, t, x) {
@@ -214,7 +230,6 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
         return ""
     try:
         cams, js = _cams(mech, steps, names, label)
-        _same_elsewhere(data, mech, file_data, source, cams)
     except NotTurned as exc:
         data["turnWhy"] = str(exc)
         return ""
@@ -264,21 +279,79 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
     return out, js
 
 
-def _same_elsewhere(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any],
-                    source: str, cams: list[dict[str, Any]]) -> None:
-    """The construction at another cam angle differs only in the cams' numbers (else NotTurned).
+def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any],
+               source: str) -> None:
+    """The whole page at another cam angle differs only where the cams' numbers say (in place).
 
-    The page is built again from the file with the drive turned (the first
-    angle that has an equivalent linkage of 11°, −13°, 37° and 101° away):
-    every other number of ``K`` must be the same, so that writing the cams'
-    numbers is the whole change.
+    The page is built again, held (``turn=False``), from the file with the
+    drive turned 11°, −13°, 37° and 101° (where the cam has an equivalent
+    linkage).  Every number of the construction's ``K`` but
+    the cams' must be the same and the force construction too, else the page
+    is held at the file's angle (``data["turn"]`` removed, said in the
+    drive's line).  An instant centers' route or a curvature construction
+    found at the file's angle that is another one there (the file's angle in a
+    dwell, where the coupler's pin is the cam's center: Kennedy's route then
+    takes them as one) is not drawn while the cam turns, said in its panel.
+    """
+    turn = data.get("turn")
+    if turn is None:
+        return
+    try:
+        others = _elsewhere(mech, file_data, source)
+        mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"])}
+        mine |= {c["branch"] for c in turn["cams"] if c["branch"] is not None}
+        for other in others:
+            k1, k2 = data["K"], other["K"]
+            if len(k1) != len(k2):
+                raise _fail("the page's construction changes its steps with the cam angle")
+            for k, (a, b) in enumerate(zip(k1, k2)):
+                if k not in mine and abs(a - b) > 1e-12 * (1.0 + abs(a)):
+                    raise _fail("the page's construction changes other numbers than the "
+                                "cam's with the cam angle")
+            if _json(data.get("forces")) != _json(other.get("forces")):
+                raise _fail("the force construction changes with the cam angle")
+    except NotTurned as exc:
+        from graphkin.render.live_cams import cam_hold
+
+        del data["turn"]
+        hold = cam_hold(mech, source)
+        assert hold is not None
+        data["cam"]["why"] = f"{hold['why']} (not turned on the page: {exc})"
+        for key in ("pivot", "tip", "phi", "relative"):
+            data["drive"].pop(key, None)
+        return
+    deg = f"{math.degrees(mech.drives[0].value):g}°"
+    if any(_json(data.get("centers")) != _json(other.get("centers")) for other in others):
+        data["centers"] = dict(data["centers"], fn=None, why=(
+            f"the Kennedy route found at the file's cam angle ({deg}) is another one at other "
+            "angles (two centers coincide there, as in a dwell); change the file's angle"))
+    cvs = [dict(d.get("curvature") or {}) for d in (data, *others)]
+    for cv in cvs:
+        cv.pop("K", None)
+    if any(_json(cv) != _json(cvs[0]) for cv in cvs[1:]):
+        data["curvature"] = {"why": f"the curvature construction found at the file's cam angle "
+                                    f"({deg}) is another one at other angles; change the "
+                                    "file's angle"}
+
+
+def _json(v: Any) -> str:
+    import json
+
+    return json.dumps(v, sort_keys=True, default=str)
+
+
+def _elsewhere(mech: Mechanism, file_data: Mapping[str, Any],
+               source: str) -> list[dict[str, Any]]:
+    """The held page's data with the drive turned 11°, −13°, 37° and 101° (where it has one).
+
+    Several angles: an angle in the same dwell as the file's would have the
+    same (degenerate) routes.  NotTurned where none has an equivalent linkage.
     """
     from graphkin.mechanisms import from_dict
     from graphkin.render.live import live_data
 
-    mine = {k for c in cams for k in (c["kx"], c["ky"], *c["r"])}
-    mine |= {c["branch"] for c in cams if c["branch"] is not None}
     d0 = mech.drives[0]
+    out = []
     for step in (11.0, -13.0, 37.0, 101.0):
         other = copy.deepcopy(dict(file_data))
         raw = other.get("drive")
@@ -291,12 +364,8 @@ def _same_elsewhere(data: dict[str, Any], mech: Mechanism, file_data: Mapping[st
             d2, _ = live_data(m2, other, source, turn=False)
         except GraphkinError:
             continue
-        k1, k2 = data["K"], d2["K"]
-        if len(k1) != len(k2):
-            raise _fail("the page's construction changes its steps with the cam angle")
-        for k, (a, b) in enumerate(zip(k1, k2)):
-            if k not in mine and abs(a - b) > 1e-12 * (1.0 + abs(a)):
-                raise _fail("the page's construction changes other numbers than the cam's "
-                            "with the cam angle")
-        return
-    raise _fail("the cam has no equivalent linkage near the file's angle to check the page by")
+        out.append(d2)
+    if not out:
+        raise _fail("the cam has no equivalent linkage near the file's angle to check the "
+                    "page by")
+    return out

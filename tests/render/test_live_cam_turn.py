@@ -32,7 +32,7 @@ from live_cams_shared import TMP, cam_file, page_state, same_as_solve, straight_
 from strategies import examples
 
 import graphkin
-from graphkin.cams import FollowerKind, Motion
+from graphkin.cams import FollowerKind
 from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.mechanisms import from_dict
@@ -184,7 +184,6 @@ def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
         ax = math.radians(axis)
         assume(all(abs(math.sin(2.0 * (t - ax))) > 0.2 for t in (turns[0], turns[2])))
         cam = data.draw(cams(kinds=(kind,)))
-        assume(all(s.motion is not Motion.MODIFIED_TRAPEZOID for s in cam.program.segments))
         path = TMP / f"cam-{abs(hash(cam_toml(cam)))}.toml"
         path.write_text(cam_toml(cam))
         file = cam_file(cam, path, theta2, axis, omega, alpha, turns)
@@ -215,8 +214,8 @@ def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
 
 def test_a_kind_not_turned_is_held_and_says_why(tmp_path) -> None:
     cam = (ROOT / "examples" / "cams" / "ex6_6_roller.toml").read_text(encoding="utf-8")
-    trap = cam.replace('motion = "harmonic"\nlift = 30', 'motion = "modified-trapezoid"\n'
-                       'lift = 30', 1)
+    trap = cam.replace('motion = "harmonic"\nlift = 30\nangle = 90',
+                       'motion = "table"\nangle = 90\npoints = [[0, 0], [45, 20], [90, 30]]', 1)
     assert trap != cam
     (tmp_path / "ex6_6_roller.toml").write_text(trap, encoding="utf-8")
     src = tmp_path / "held.toml"
@@ -226,7 +225,7 @@ def test_a_kind_not_turned_is_held_and_says_why(tmp_path) -> None:
     why = d["cam"]["why"]
     assert why.startswith("held.toml: drive.angle: the page keeps the cam angle")
     assert "\n" not in why
-    assert "not turned on the page: segment 1" in why and "modified" in why
+    assert "not turned on the page: segment 1" in why and "table" in why
 
 
 def test_the_page_is_small_and_offline() -> None:

@@ -119,6 +119,24 @@ def _poly(gen: Gen, u: str, coef: Sequence[float]) -> tuple[str, str, str]:
     return _horner(gen, u, c0), _horner(gen, u, c1), _horner(gen, u, c2)
 
 
+def _pieces(gen: Gen, u: str, rows: Sequence[float]) -> tuple[str, str, str]:
+    # a piecewise "acceleration" integrated in closed form (the modified trapezoid), 8 numbers
+    # a piece: x0, ref, ω, A, B, C, c0, c1 (graphkin.cams.motions.piece_rows)
+    sel = gen.helper("select")
+    out: tuple[str, ...] | None = None
+    for k in range(0, len(rows), 8):
+        x0, ref, w, a, b, c, c0, c1 = (gen.num(v) for v in rows[k:k + 8])
+        t = gen.let(f"{u} - {ref}", "t")
+        sn, cs = gen.let(f"_sin({w} * {t})", "s"), gen.let(f"_cos({w} * {t})", "c")
+        v = f"(-{a} * {cs} + {b} * {sn}) / {w} + {c} * {t}"
+        s = f"-({a} * {sn} + {b} * {cs}) / ({w} * {w}) + 0.5 * {c} * {t} * {t}"
+        piece = (f"{c0} + {c1} * {u} + {s}", f"{c1} + {v}", f"{a} * {sn} + {b} * {cs} + {c}")
+        out = piece if out is None else tuple(
+            gen.let(f"{sel}({u} >= {x0}, {n}, {o})", "f") for n, o in zip(piece, out))
+    assert out is not None and len(out) == 3
+    return out[0], out[1], out[2]
+
+
 MOTIONS: dict[str, Shape] = {
     "dwell": lambda gen, u, c: ("0.0", "0.0", "0.0"),
     "uniform": lambda gen, u, c: (u, "1.0", "0.0"),
@@ -130,6 +148,7 @@ MOTIONS: dict[str, Shape] = {
     "half_cycloidal_start": _half_cycloidal_start,
     "half_cycloidal_end": _half_cycloidal_end,
     "poly": _poly,
+    "pieces": _pieces,
 }
 """The shapes ``f(u), f'(u), f''(u)`` a segment of ``cam_program`` may have, as expressions."""
 
