@@ -236,3 +236,29 @@ def test_the_page_is_small_and_offline() -> None:
         data = json.loads(re.search(r'<script id="gk-data" type="application/json">\n(.*?)'
                                     r"</script>", text, re.S).group(1))
         assert np.all(np.isfinite(data["turn"]["cams"][0]["K"]))
+
+
+@pytest.mark.parametrize("name", sorted(FILES))
+def test_the_verdicts_do_not_move_with_round_off(name) -> None:
+    # the page's words (convex, concave, undercut, straight, a dwell's centers) at angles
+    # moved by a few ulps: the same (decisions on values above round-off, graphkin/tolerance.py)
+    from jsrun import run_js
+
+    src = FILES[name]
+    mech = graphkin.load(src)
+    d, js = live_data(mech, load_toml(src), str(src))
+    # Ex 6.6: flanks, valleys, near its straight angle (165.3°); P6.30: dwells, rises, returns
+    angles = [math.radians(a) for a in (3.0, 20.0, 47.0, 95.0, 125.0, 160.0, 170.0, 195.0,
+                                        240.0, 296.0, 333.0)]
+    cases = [a * (1.0 + e) for a in angles for e in (0.0, 4e-16, -4e-16, 1e-12, -1e-12)]
+    got = run_js(js + f"\nconst T = {json.dumps(d['turn'])}, K0 = {json.dumps(d['K'])};\n"
+                 f"const RESULT = {json.dumps(cases)}.map((x) => {{ const t = gkTurn(T, x, "
+                 "K0.slice()); const n = gkTurnNote(T, t, x); return [t.why ? 'straight' : '', "
+                 "(n.match(/convex|concave|undercut/g) || []).join(','), "
+                 "gkTurnDwell(T, t) ? 'dwell' : '']; });")
+    for k in range(0, len(cases), 5):
+        assert all(g == got[k] for g in got[k:k + 5]), (math.degrees(cases[k]), got[k:k + 5])
+    words = {w for g in got for w in g}
+    assert {"convex", "concave"} <= words
+    if name == "p6_30":
+        assert "dwell" in words
