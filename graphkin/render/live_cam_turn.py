@@ -147,7 +147,9 @@ CAMS_APP_JS = r"""// the cams' outlines turned to the drive's angle, the roller 
 // (render/live_cam_turn.py)
 function camOutlines(r) {
   if (!D.turn) return [];
-  const c0 = Math.cos(drive), s0 = Math.sin(drive);
+  // the posture's own cam angle (a dimmed, earlier posture keeps its own)
+  const th = Number.isFinite(r[D.turn.label]) ? r[D.turn.label] : drive;
+  const c0 = Math.cos(th), s0 = Math.sin(th);
   return D.turn.cams.map((c) => {
     const o = r[c.at];
     return o ? c.outline.map((q) => [o[0] + c0 * q[0] - s0 * q[1], o[1] + s0 * q[0] + c0 * q[1]])
