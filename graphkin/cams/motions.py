@@ -188,12 +188,8 @@ class _Piece:
             + 0.5 * self.C * t * t
 
 
-def _piecewise(pieces: list[_Piece]) -> Shape:
-    """The shape whose "acceleration" is given piece by piece, integrated in closed form.
-
-    The velocity and displacement start at zero and run on continuously from
-    piece to piece; the result is scaled so that ``f(1) = 1``.
-    """
+def _integrate(pieces: list[_Piece]) -> tuple[list[tuple[float, float]], float]:
+    """Each piece's starting velocity and displacement, and the scale making ``f(1) = 1``."""
     starts: list[tuple[float, float]] = []
     v0 = s0 = 0.0
     for p in pieces:
@@ -203,7 +199,41 @@ def _piecewise(pieces: list[_Piece]) -> Shape:
         v1 = v0 + float(p.V(arr1) - p.V(arr0))
         s1 = s0 + (v0 - float(p.V(arr0))) * (p.x1 - p.x0) + float(p.S(arr1) - p.S(arr0))
         v0, s0 = v1, s1
-    scale = 1.0 / s0
+    return starts, 1.0 / s0
+
+
+def piece_rows(motion: Motion) -> list[tuple[float, ...]]:
+    """A piecewise motion's pieces as numbers: ``(x0, ref, ω, A, B, C, c0, c1)`` each.
+
+    On ``[x0, next x0)``, with ``t = u − ref``:
+    ``f = c0 + c1 u + S(t)``, ``f' = c1 + V(t)``, ``f'' = A sin ωt + B cos ωt + C``,
+    ``V = (−A cos ωt + B sin ωt)/ω + C t``, ``S = −(A sin ωt + B cos ωt)/ω² + C t²/2``
+    (already scaled so that ``f(1) = 1``): the form the live page's ``cam_program``
+    operation evaluates (:mod:`graphkin.construction.ops.cam_program`).
+
+    Raises
+    ------
+    KeyError
+        A motion that is not piecewise.
+    """
+    pieces = _PIECEWISE[motion]
+    starts, k = _integrate(pieces)
+    out: list[tuple[float, ...]] = []
+    for p, (va, sa) in zip(pieces, starts):
+        t0 = np.asarray(p.x0 - p.ref)
+        c1 = va - float(p.V(t0))
+        c0 = sa - c1 * p.x0 - float(p.S(t0))
+        out.append((p.x0, p.ref, p.w, k * p.A, k * p.B, k * p.C, k * c0, k * c1))
+    return out
+
+
+def _piecewise(pieces: list[_Piece]) -> Shape:
+    """The shape whose "acceleration" is given piece by piece, integrated in closed form.
+
+    The velocity and displacement start at zero and run on continuously from
+    piece to piece; the result is scaled so that ``f(1) = 1``.
+    """
+    starts, scale = _integrate(pieces)
     edges = np.array([p.x1 for p in pieces[:-1]])
 
     def f(u: Array) -> tuple[Array, Array, Array, Array]:
@@ -227,15 +257,18 @@ def _piecewise(pieces: list[_Piece]) -> Shape:
 
 
 _W = 4 * _PI
-_modified_trapezoid = _piecewise([
+_MODIFIED_TRAPEZOID = [
     _Piece(0.0, 0.125, 1.0, 0.0, 0.0, 0.0, _W),         # sine ramp up
     _Piece(0.125, 0.375, 0.0, 0.0, 1.0, 0.0, _W),       # constant
     _Piece(0.375, 0.625, 0.0, 1.0, 0.0, 0.375, _W),     # cosine from +1 to −1
     _Piece(0.625, 0.875, 0.0, 0.0, -1.0, 0.0, _W),      # constant
     _Piece(0.875, 1.0, 1.0, 0.0, 0.0, 1.0, _W),         # sine ramp back to zero
-])
+]
+_modified_trapezoid = _piecewise(_MODIFIED_TRAPEZOID)
 """The modified trapezoid: constant "acceleration" with sine ramps over eighths of the rise
 (peak ``4.8881 L/β²``)."""
+
+_PIECEWISE: dict[Motion, list[_Piece]] = {Motion.MODIFIED_TRAPEZOID: _MODIFIED_TRAPEZOID}
 
 _SHAPES: dict[Motion, Shape] = {
     Motion.DWELL: _dwell,

@@ -74,7 +74,18 @@ class NeedGeneric(Exception):
 
 Template = Callable[["Gen", Step], None]
 
-HELPERS: dict[str, Callable[..., Any]] = {"tangent_cc": tangent_cc, "tangent_lc": tangent_lc}
+def _select(cond: Any, a: Any, b: Any, *, tol: Tolerance) -> Any:
+    """``a`` where ``cond`` holds, else ``b``, entry by entry (a cam program's segment)."""
+    return np.where(cond, a, b)
+
+
+def _floor(x: Any, *, tol: Tolerance) -> Any:
+    """The largest whole number not above ``x`` (a cam angle taken into one turn)."""
+    return np.floor(x)
+
+
+HELPERS: dict[str, Callable[..., Any]] = {"tangent_cc": tangent_cc, "tangent_lc": tangent_lc,
+                                          "select": _select, "floor": _floor}
 """Functions a template may call by name (:meth:`Gen.helper`); the JavaScript writer has its own."""
 
 TEMPLATES: dict[str, Template] = {}

@@ -86,6 +86,9 @@ def _helpers_js(tol: Tolerance) -> dict[str, str]:
             "function _tangent_lc(h2, s, r) {\n"
             f"  const eps = {a} + {r} * Math.abs(Math.max(r, Math.abs(s)));\n"
             "  return (h2 < 0 && h2 > -2 * eps * Math.max(r, 1e-300)) ? 0.0 : h2;\n}\n"),
+        # entry by entry in Python (np.where); one posture here
+        "select": "function _select(c, a, b) { return c ? a : b; }\n",
+        "floor": "const _floor = Math.floor;\n",
     }
 
 

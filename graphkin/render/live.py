@@ -44,8 +44,8 @@ def script_json(value: Any) -> str:
             .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029"))
 
 
-def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[dict[str, Any],
-                                                                               str]:
+def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
+              turn: bool = True) -> tuple[dict[str, Any], str]:
     """What the page needs: its data (JSON-able) and the JavaScript of the construction.
 
     Parameters
@@ -56,6 +56,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         The file's parsed TOML (the page saves it back with the edits).
     source : str
         The file's name, for messages.
+    turn : bool
+        Let a cam mechanism's cams turn on the page (:mod:`.live_cam_turn`);
+        False holds them at the file's angle (:mod:`.live_cams`).
 
     Raises
     ------
@@ -125,13 +128,20 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
                   if k in STYLES},
     }
+    from graphkin.render.live_cam_turn import turn_cams, turn_handle
     from graphkin.render.live_cams import hold_cams
 
-    hold_cams(data, mech, source)  # a cam: held at the file's angle, where its linkage holds
+    # a cam turns: its linkage rebuilt at every angle (Sec. 4.7); else held at the file's
+    tjs = turn_cams(data, mech, file_data, source, cx.steps, names, eng.label) if turn else ""
+    hold_cams(data, mech, source)
+    turn_handle(data)
+    cam = data.get("cam")
+    if data.get("turnWhy") and isinstance(cam, dict):
+        cam["why"] += f" (not turned on the page: {data.pop('turnWhy')})"
     from graphkin.render.live_centers import centers_data
     from graphkin.render.live_newton import roll_edit_js
 
-    js = RUNTIME + fn.source + roll_edit_js(mech, made)
+    js = RUNTIME + fn.source + tjs + roll_edit_js(mech, made)
     js += _follow(data, mech, {d.label: list(w) for w, d in eng.coupled_rates.items()}
                   if rates else None)
 
@@ -147,6 +157,10 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     if fd is not None:
         data["forces"], fjs = fd
         js += fjs
+    if turn:
+        from graphkin.render.live_cam_turn import check_turn
+
+        check_turn(data, mech, file_data, source)  # the same page at another cam angle
     return data, js
 
 
@@ -305,9 +319,10 @@ draw my velocity polygon</button>
 """
 
 
-def live_html(mech: Mechanism, file_data: dict[str, Any], source: str) -> str:
-    """The whole page, self-contained (one file, no network)."""
-    data, js = live_data(mech, file_data, source)
+def live_html(mech: Mechanism, file_data: dict[str, Any], source: str, *,
+              turn: bool = True) -> str:
+    """The whole page, self-contained (one file, no network); ``turn``: see :func:`live_data`."""
+    data, js = live_data(mech, file_data, source, turn=turn)
     title = html.escape(str(data["title"]))
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">

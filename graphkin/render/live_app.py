@@ -15,6 +15,7 @@ edited file back to Python).
 
 from __future__ import annotations
 
+from graphkin.render.live_cam_turn import CAMS_APP_JS
 from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
 from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
@@ -38,6 +39,7 @@ h1 { font-size: 1.2em; margin: 0 0 .3em; }
 .controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; }
 #gk-drive { width: 22em; }
 #gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .4em 0; }
+#gk-status.gk-note { color: #37474f; font-weight: 400; }
 main { display: flex; flex-wrap: wrap; gap: .8em; }
 figure { margin: 0; border: 1px solid #ccc; }
 figcaption { font-size: .85em; padding: .2em .4em; background: #f4f4f4; }
@@ -103,10 +105,22 @@ for (const lid of Object.keys(D.links)) {
 
 // a drive that follows the first by a law moves with it (render/live_laws.py, Sec. 5.4)
 const follow = (J) => (D.follow ? gkFollow(D.follow, J) : J);
-function solve() { I[D.drive.label] = drive; return construction(follow(I), K); }
+// a cam turns: its equivalent linkage's numbers set in K for the angle (live_cam_turn.py)
+let turned = null;
+function solve() {
+  I[D.drive.label] = drive;
+  if (!D.turn) return construction(follow(I), K);
+  const s = gkTurnSolve(D.turn, follow(I), K, construction);
+  turned = s.t;
+  return s.r;
+}
 
 // the instant centers (Aronhold-Kennedy, Sec. 3.15) from the primary centers of the posture
-function centersOf(r) { return D.centers ? gkCenters(D.centers, r) : null; }
+// (a cam's dwell: none, its follower and coupler at rest, said so: live_cam_turn.py)
+function centersOf(r) {
+  if (D.turn && gkTurnDwell(D.turn, turned)) return null;
+  return D.centers ? gkCenters(D.centers, r) : null;
+}
 let ics = null, curv = null;
 
 // the coupler curves of the whole cycle: the points of the links not pinned to the frame,
@@ -119,12 +133,13 @@ for (const lid of Object.keys(D.links)) {
 let curves = {};
 function cycle() {
   curves = {};
-  if (D.drive.kind !== "angle" || D.cam || !traced.length) return curves;
+  if (D.drive.kind !== "angle" || (D.cam && !D.turn) || !traced.length) return curves;
   const J = Object.assign({}, I), mark = construction.mark ? construction.mark() : null;
   for (const n of traced) curves[n] = [];
   for (let k = 0; k < 360; k++) {
     J[D.drive.label] = drive + 2 * Math.PI * k / 360;
-    const r = construction(follow(J), K);
+    const r = D.turn ? gkTurnSolve(D.turn, follow(J), K.slice(), construction).r
+      : construction(follow(J), K);
     for (const n of traced) curves[n].push(r ? r[n] : null);
   }
   if (mark) construction.restore(mark);
@@ -146,6 +161,7 @@ function fit(panel, r) {
   const pts = pointsOf(panel, r);
   if (panel === "posture") {
     for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
+    for (const o of camOutlines(r)) for (const p of o) pts.push(p);  // a turning cam's outline
     // the instant centers too, unless one is far (near parallel lines): within 3 sizes
     const c = centersOf(r);
     if (c) {
@@ -248,6 +264,7 @@ function drawPosture(r, stale) {
     }
     flush();
   }
+  drawCams(g, r);
   for (const lid of Object.keys(D.links)) {
     if (lid === "1") continue;
     outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
@@ -432,7 +449,7 @@ function showDrive() {
 
 function redraw(refit) {
   // a cam's equivalent linkage holds at the file's cam angle only (Sec. 4.7; live_cams.py)
-  const held = D.cam && drive !== drive0;
+  const held = D.cam && !D.turn && drive !== drive0;
   if (held) drive = drive0;
   res = solve();
   const ok = res !== null;
@@ -448,15 +465,20 @@ function redraw(refit) {
     drawPolygon("velocity", "v", r, !ok); drawPolygon("acceleration", "a", r, !ok);
   }
   if (D.centers) drawKennedyCircle();
-  byId("gk-centers-note").textContent = gkCentersWhy(D.centers, ics);
+  byId("gk-centers-note").textContent = (D.turn && gkTurnDwell(D.turn, turned)) ||
+    gkCentersWhy(D.centers, ics);
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
   // a drive that follows by a table has no value beyond its rows (render/live_laws.py)
   const why = ok || !D.follow ? "" : gkFollowWhy(D.follow, drive);
-  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? "" : why ||
+  const camSays = D.turn ? gkTurnNote(D.turn, turned, drive) : "";
+  // a cam's angle and curvature: a note; an undercut profile stays a warning
+  status.classList.toggle("gk-note", ok && !held && camSays.indexOf("undercut") < 0);
+  status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? camSays : why ||
+    (turned && turned.why) || ((camSays ? camSays + " " : "") +
     "This posture cannot be assembled (or is at a dead center, " +
-    "where the construction has no clean answer): drag back.");
+    "where the construction has no clean answer): drag back."));
   showDrive();
 }
 
@@ -475,6 +497,11 @@ svgs.posture.addEventListener("pointerdown", (ev) => {
   if (!t.classList || !t.classList.contains("gk-handle")) return;
   snapshot();
   dragging = {kind: t.getAttribute("data-kind"), name: t.getAttribute("data-name")};
+  if (dragging.kind === "drive" && D.drive.relative) {  // a cam: turned from where it is held
+    const w = world(svgs.posture, ev), piv = (res || good)[D.drive.pivot];
+    dragging.a0 = Math.atan2(w[1] - piv[1], w[0] - piv[0]);
+    dragging.d0 = drive;
+  }
   svgs.posture.setPointerCapture(ev.pointerId);
   ev.preventDefault();
 });
@@ -488,7 +515,12 @@ svgs.posture.addEventListener("pointermove", (ev) => {
     dragPoint(D.coupler[dragging.name], w);
   } else {
     const piv = (res || good)[D.drive.pivot];
-    drive = Math.atan2(w[1] - piv[1], w[0] - piv[0]) - D.drive.phi;
+    const a = Math.atan2(w[1] - piv[1], w[0] - piv[0]);
+    if (D.drive.relative) {  // a cam turns by the angle the pointer turns about its center
+      drive = dragging.d0 + a - dragging.a0;
+    } else {
+      drive = a - D.drive.phi;
+    }
   }
   redraw(false);
 });
@@ -511,6 +543,7 @@ function dragPoint(c, w) {
 }
 /*PEN*/
 /*FORCES*/
+/*CAMS*/
 // the edited mechanism, told to the notebook (its widget.mechanism) after every edit
 function notify() { if (onEdit) onEdit(edited()); }
 const stop = () => { if (dragging) { dragging = null; redraw(true); notify(); } };
@@ -638,7 +671,7 @@ return {
 # the pen mode's part of the script (render/live_pen.py), inside gkLiveApp, and the curvature
 # panel's drawing (render/live_curvature_js.py)
 APP_JS = (APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
-          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS))
+          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS).replace("/*CAMS*/\n", CAMS_APP_JS))
 # the curvature, force and centers' constructions' glue (render/live_curvature_js.py,
 # render/live_forces.py, render/live_centers.py)
 LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS

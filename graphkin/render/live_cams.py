@@ -99,13 +99,18 @@ def hold_cams(data: dict[str, Any], mech: Mechanism, source: str) -> None:
 
     Adds ``data["cam"]`` (:func:`cam_hold`), and takes out of the page's
     handles, branches and assembly hints every point of :func:`cam_points`
-    and the drive's handle (the drive is held).  No-op without cams.
+    and the drive's handle (the drive is held).  No-op without cams.  A page
+    whose cams turn (``data["turn"]``, :mod:`graphkin.render.live_cam_turn`)
+    keeps ``data["cam"]`` for the cam's points but says nothing of a hold:
+    its drive's handle is the cam's contact point.
     """
     hold = cam_hold(mech, source)
     if hold is None:
         return
     mine = cam_points(mech)
     data["cam"] = hold
+    if data.get("turn") is not None:
+        hold["why"] = ""
     data["frame"] = {n: v for n, v in data["frame"].items() if n not in mine}
     data["coupler"] = {n: v for n, v in data["coupler"].items() if n not in mine}
     data["branches"] = {n: v for n, v in data["branches"].items() if n not in mine}

@@ -264,9 +264,10 @@ def test_the_report_says_what_the_linkage_stands_for():
     assert abs(c["pressure_angle"] - 28.677) < 1e-3 and abs(c["normal"] + 61.323) < 1e-3
 
 
-def test_live_of_a_cam_mechanism_is_held_at_the_file_s_cam_angle(tmp_path, capsys):
-    """The live page turns the drive with its own code, which knows no cam program: it keeps
-    the file's cam angle and says so in one line (tests/render/test_live_cams.py drags it)."""
+def test_live_of_a_cam_mechanism_turns_the_cam(tmp_path, capsys):
+    """The live page turns a roller follower's cam: the equivalent linkage rebuilt at every
+    angle from the cam's own operations (render/live_cam_turn.py; tests/render/
+    test_live_cam_turn.py drags it); nothing is said of a hold."""
     import json
     import re
 
@@ -278,5 +279,6 @@ def test_live_of_a_cam_mechanism_is_held_at_the_file_s_cam_angle(tmp_path, capsy
     text = out.read_text(encoding="utf-8")
     m = re.search(r'<script id="gk-data" type="application/json">\n(.*?)</script>', text, re.S)
     assert m is not None
-    why = json.loads(m.group(1))["cam"]["why"]
-    assert why.startswith(f"{f}: drive.angle: ") and "\n" not in why and "cams[0]" in why
+    data = json.loads(m.group(1))
+    assert data["cam"]["why"] == "" and [c["key"] for c in data["turn"]["cams"]] == ["cams[0]"]
+    assert data["drive"]["tip"] == "C4"        # the cam is dragged by its contact point

@@ -666,3 +666,7 @@ def _parallelogram(gen: Gen, step: Step) -> None:
     ax, ay = gen.pt(step.inputs[1])
     bx, by = gen.pt(step.inputs[2])
     gen.put_point(step.outputs[0], gen.sub(gen.add(ax, bx), px), gen.sub(gen.add(ay, by), py))
+
+
+# a disk cam's program and center of curvature (Ch. 6): templates of their own module
+from graphkin.construction.ops import cam_program  # noqa: E402, F401

@@ -1,0 +1,373 @@
+"""The live page of a cam mechanism turns the cam: its equivalent linkage rebuilt at every angle.
+
+A ``[[cams]]`` joint is solved through the equivalent linkage through the
+centers of curvature at the file's cam angle (Sec. 4.7,
+:mod:`graphkin.cams.joint`): the pin ``K<f>`` on the cam at the pitch curve's
+center of curvature and a coupler ``|ρ|`` long to the roller's center
+``T<f>``.  Those numbers are the only ones of the page's construction that
+change with the cam angle.  So when the user drags the cam (its contact
+point) or the drive's slider, the page
+
+1. evaluates the cam at the new angle with the two operations of the one
+   table (``cam_program``, ``cam_center``: :mod:`graphkin.cams.turning`,
+   written out as JavaScript by :func:`~graphkin.construction.jsgen.generate_js`),
+2. writes ``K<f>``'s coordinates on the cam and ``|ρ|`` into the
+   construction's numbers ``K`` (the slots found here, by name), and the
+   branch of ``T<f>`` that puts the roller's center where the program puts
+   it (as ``graphkin solve`` picks it from its assembly hint),
+3. runs the construction, then every panel, as for any page.
+
+So every value equals ``graphkin solve`` of the file saved with the new angle
+(tests/render/test_live_cam_turn.py).  Where the pitch curve is straight at
+the contact (ρ infinite: no center, no linkage, as ``solve`` refuses it) the
+page says so in one line and keeps the last posture, dimmed; where the roller
+is larger than the convex pitch curve's radius (the profile undercut, Sec.
+6.10) it says that the follower leaves the profile.  Every posture shows the
+cam angle Θ, the lift and the pitch curve's ρ with its sense (convex,
+concave).
+
+Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
+and says why): a flat-face follower, a motion the operation has no
+expression of (the modified trapezoid, a table), a cam not on the first
+drive's link, and a construction whose other numbers change with the angle
+(checked here by building the page at another angle).
+
+References
+----------
+Uicker, Pennock & Shigley, 5th ed., Sec. 4.7 (the equivalent linkage),
+Secs. 6.3-6.10 (the program, the pitch curve's curvature, Eq. 6.37; undercutting).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from graphkin.cams.analytic import profile
+from graphkin.cams.turning import NotTurned, turn_steps
+from graphkin.construction.codegen import Unsupported
+from graphkin.construction.jsgen import generate_js
+from graphkin.construction.step import Step
+from graphkin.errors import GraphkinError
+from graphkin.mechanisms.model import Mechanism
+
+__all__ = ["TURN_JS", "CAMS_APP_JS", "check_turn", "turn_cams", "turn_handle"]
+
+#: Points of the cam's outline drawn on the page.
+OUTLINE = 120
+
+TURN_JS = r"""// the cams turned to the drive's angle x (render/live_cam_turn.py): each cam
+// evaluated by its operations (cam_program, cam_center), its linkage's numbers in Kc
+function gkTurn(T, x, Kc) {
+  const got = [];
+  for (const c of T.cams) {
+    const I = {}; I[T.label] = x;
+    const v = gkCamFns[c.fn](I, c.K);
+    if (v === null) return {why: gkTurnStraight(c, x), cams: got};
+    Kc[c.kx] = v[c.center][0]; Kc[c.ky] = v[c.center][1];
+    for (const k of c.r) Kc[k] = v[c.length];
+    got.push(v);
+  }
+  return {why: "", cams: got};
+}
+// Θ (degrees, 0 to 360) of cam c at the drive's angle x
+function gkTurnTheta(c, x) {
+  const t = c.s * (x - c.shift), tp = 2 * Math.PI;
+  return (t - tp * Math.floor(t / tp)) * 180 / Math.PI;
+}
+function gkTurnNum(v) { return Number(v.toPrecision(5)).toString(); }
+function gkTurnStraight(c, x) {
+  return c.key + ": at \u0398 = " + gkTurnNum(gkTurnTheta(c, x)) + "\u00b0 the pitch curve is " +
+    "straight at the contact (its radius of curvature is infinite, Eq. 6.37): no center of " +
+    "curvature, no equivalent linkage (Sec. 4.7), and graphkin solve refuses that angle: drag on.";
+}
+// the posture at the inputs J: the cams' linkages, then the construction; the roller's
+// center on the side where the cam's program puts it (the branch solve's hint picks)
+function gkTurnSolve(T, J, Kc, fn) {
+  const t = gkTurn(T, J[T.label], Kc);
+  if (t.why) return {r: null, t: t};
+  let r = fn(J, Kc);
+  T.cams.forEach((c, i) => {
+    if (c.branch === null) return;
+    // the right branch puts T where the program does, to round-off; the other 2h away, or
+    // nowhere when the rest of the mechanism cannot be assembled from it
+    const want = t.cams[i][c.trace];
+    const near = (q) => q && q[c.point] &&
+      Math.hypot(q[c.point][0] - want[0], q[c.point][1] - want[1]) <= 1e-6 * c.reach;
+    if (near(r)) return;
+    Kc[c.branch] = -Kc[c.branch];
+    const other = fn(J, Kc);
+    if (near(other)) { r = other; return; }
+    Kc[c.branch] = -Kc[c.branch];
+    r = null;
+  });
+  if (r) T.cams.forEach((c, i) => { r[c.contact] = t.cams[i][c.contact]; });
+  return {r: r, t: t};
+}
+// why the page draws no instant centers where a cam dwells ("" elsewhere): its center of
+// curvature is the cam's center (cam_center puts it there), the follower and the coupler K-T
+// stand still, and a center of links at rest relative to each other is anywhere
+function gkTurnDwell(T, t) {
+  if (!t || t.why) return "";
+  for (let i = 0; i < T.cams.length; i++) {
+    const k = t.cams[i][T.cams[i].center];
+    if (k[0] === 0 && k[1] === 0) {
+      return "No instant centers at this posture: " + T.cams[i].key + " dwells here (its " +
+        "pitch curve is a circle about the cam's center), so the follower and the coupler " +
+        T.cams[i].center + "-" + T.cams[i].point + " stand still, and the center of two " +
+        "links at rest relative to each other is anywhere (Sec. 3.13).";
+    }
+  }
+  return "";
+}
+// one line per posture: each cam's angle, lift and pitch curve's curvature, and an undercut
+function gkTurnNote(T, t, x) {
+  if (!t || t.why) return t ? t.why : "";
+  return T.cams.map((c, i) => {
+    const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, x);
+    const tol = 1e-9 * c.size;
+    let s = c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnNum(v[c.lift]) +
+      " " + c.unit + ", pitch curve \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
+      (rho > tol ? " (convex)" : " (concave: K on the follower's side)");
+    if (c.roller > 0 && rho > tol && rho < c.roller - tol) {
+      s += "; the roller (" + gkTurnNum(c.roller) + " " + c.unit + ") is larger than " +
+        "the pitch curve's radius here: the profile is undercut (Sec. 6.10) and the follower " +
+        "leaves it; the values are the program's, as graphkin solve gives them";
+    }
+    return s + ".";
+  }).join(" ");
+}
+"""
+
+CAMS_APP_JS = r"""// the cams' outlines turned to the drive's angle, the roller and the contact
+// (render/live_cam_turn.py)
+function camOutlines(r) {
+  if (!D.turn) return [];
+  // the posture's own cam angle (a dimmed, earlier posture keeps its own)
+  const th = Number.isFinite(r[D.turn.label]) ? r[D.turn.label] : drive;
+  const c0 = Math.cos(th), s0 = Math.sin(th);
+  return D.turn.cams.map((c) => {
+    const o = r[c.at];
+    return o ? c.outline.map((q) => [o[0] + c0 * q[0] - s0 * q[1], o[1] + s0 * q[0] + c0 * q[1]])
+      : [];
+  });
+}
+function drawCams(g, r) {
+  if (!D.turn) return;
+  const outlines = camOutlines(r);
+  D.turn.cams.forEach((c, i) => {
+    const pts = outlines[i];
+    if (!pts.length) return;
+    el(g, "polygon", {points: pts.map((p) => X("posture", p).toFixed(1) + "," +
+                                          Y("posture", p).toFixed(1)).join(" "),
+                      fill: "#eceff1", stroke: ink("link", "color"), "stroke-width": "1",
+                      class: "gk-cam"});
+    const t = r[c.point];
+    if (t && c.roller > 0) {
+      const v = views.posture;
+      el(g, "circle", {cx: X("posture", t), cy: Y("posture", t), r: c.roller * c.scale * v.s,
+                       fill: "none", stroke: ink("link", "color"), "stroke-width": "1",
+                       class: "gk-roller"});
+    }
+  });
+}
+"""
+
+
+def turn_handle(data: dict[str, Any]) -> None:
+    """The drive's handle of a turning page: the first cam's contact point (in place).
+
+    Dragged, the cam turns by the angle the pointer turns about the cam's center.
+    """
+    turn = data.get("turn")
+    if turn is None:
+        return
+    c = turn["cams"][0]
+    data["drive"].update(pivot=c["at"], tip=c["contact"], phi=0.0, relative=True)
+
+
+def _fail(why: str) -> NotTurned:
+    return NotTurned(why)
+
+
+def _slots(steps: Sequence[Step], names: list[str], fl: str) -> tuple[int, int, list[int]]:
+    """Where ``K<f>``'s coordinates on the cam and ``|ρ|`` sit in the construction's ``K``."""
+    k = f"K{fl}"
+    if f"{k}.0" not in names or f"{k}.1" not in names:
+        raise _fail(f"the construction does not lay off {k} on the cam by its coordinates")
+    radius = [names.index(f"{s.outputs[0]}.0") for s in steps
+              if s.op == "circle" and s.inputs == (k,) and f"{s.outputs[0]}.0" in names]
+    if not radius:
+        raise _fail(f"the construction draws no arc about {k}")
+    return names.index(f"{k}.0"), names.index(f"{k}.1"), radius
+
+
+def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any], source: str,
+              steps: Sequence[Step], names: list[str], label: str) -> str:
+    """The page's turning cams (``data["turn"]``) and their JavaScript; "" when held.
+
+    Where the cams cannot turn, sets ``data["turnWhy"]`` (why, in the user's
+    words) and returns "".
+
+    Parameters
+    ----------
+    data : dict
+        The page's data (its ``K`` is the construction's numbers).
+    mech : Mechanism
+    file_data : mapping
+        The file as written (a copy at another angle checks the slots).
+    source : str
+    steps : sequence of Step
+        The page's construction.
+    names : list of str
+        The names of its numbers (``JSFunction.slots``).
+    label : str
+        The drive's input (``θ2``).
+    """
+    if not mech.cams:
+        return ""
+    try:
+        cams, js = _cams(mech, steps, names, label)
+    except NotTurned as exc:
+        data["turnWhy"] = str(exc)
+        return ""
+    data["turn"] = {"label": label, "cams": cams}
+    names_js = ", ".join(f"gkCam{i}" for i in range(len(cams)))
+    return js + f"const gkCamFns = [{names_js}];\n" + TURN_JS
+
+
+def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
+          label: str) -> tuple[list[dict[str, Any]], str]:
+    d0 = mech.drives[0]
+    out: list[dict[str, Any]] = []
+    js = ""
+    for i, j in enumerate(mech.cams):
+        if j.link != d0.link or d0.kind != "angle":
+            raise _fail(f"{j.key}: the cam's link {j.link} is not the first drive's, by its "
+                        "angle")
+        ts = turn_steps(j, label)
+        fl = j.follower
+        kx, ky, radius = _slots(steps, names, fl)
+        req = [ts.theta, ts.lift, ts.center, ts.length, ts.trace, ts.contact, ts.rho]
+        try:
+            fn = generate_js(ts.steps, requests=req, name=f"gkCam{i}")
+        except Unsupported as exc:
+            raise _fail(f"{j.key}: {exc}") from None
+        js += fn.source
+        cam = j.cam
+        f = cam.follower
+        size = cam.prime + abs(cam.program.lift) + math.hypot(*f.pivot) + f.arm
+        th = np.linspace(0.0, 2 * np.pi, OUTLINE, endpoint=False)
+        u = profile(cam, th).contact * j.scale
+        u = u[np.isfinite(u)]
+        center = next((n for n, xy in mech.links["1"].points.items()
+                       if tuple(map(float, xy)) == tuple(map(float, j.center))
+                       and n in mech.links[j.link].points), None)
+        if center is None:
+            raise _fail(f"{j.key}: the cam's center is not a pin of the frame")
+        out.append({
+            "fn": i, "key": j.key, "K": fn.values, "kx": kx, "ky": ky, "r": radius,
+            "branch": names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None,
+            "point": f"T{fl}", "trace": ts.trace, "contact": ts.contact, "center": ts.center,
+            "length": ts.length, "lift": ts.lift, "rho": ts.rho, "at": center,
+            "s": float(cam.s), "shift": float(j.axis - math.pi / 2),
+            "roller": float(f.roller) if f.kind.roller else 0.0, "scale": float(j.scale),
+            "size": float(size), "reach": float(size * j.scale), "unit": cam.unit,
+            "outline": [[round(float(z.real), 6), round(float(z.imag), 6)] for z in u]})
+    return out, js
+
+
+def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any],
+               source: str) -> None:
+    """The whole page at another cam angle differs only where the cams' numbers say (in place).
+
+    The page is built again, held (``turn=False``), from the file with the
+    drive turned 11°, −13°, 37° and 101° (where the cam has an equivalent
+    linkage).  Every number of the construction's ``K`` but
+    the cams' must be the same and the force construction too, else the page
+    is held at the file's angle (``data["turn"]`` removed, said in the
+    drive's line).  An instant centers' route or a curvature construction
+    found at the file's angle that is another one there (the file's angle in a
+    dwell, where the coupler's pin is the cam's center: Kennedy's route then
+    takes them as one) is not drawn while the cam turns, said in its panel.
+    """
+    turn = data.get("turn")
+    if turn is None:
+        return
+    try:
+        others = _elsewhere(mech, file_data, source)
+        mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"])}
+        mine |= {c["branch"] for c in turn["cams"] if c["branch"] is not None}
+        for other in others:
+            k1, k2 = data["K"], other["K"]
+            if len(k1) != len(k2):
+                raise _fail("the page's construction changes its steps with the cam angle")
+            for k, (a, b) in enumerate(zip(k1, k2)):
+                if k not in mine and abs(a - b) > 1e-12 * (1.0 + abs(a)):
+                    raise _fail("the page's construction changes other numbers than the "
+                                "cam's with the cam angle")
+            if _json(data.get("forces")) != _json(other.get("forces")):
+                raise _fail("the force construction changes with the cam angle")
+    except NotTurned as exc:
+        from graphkin.render.live_cams import cam_hold
+
+        del data["turn"]
+        hold = cam_hold(mech, source)
+        assert hold is not None
+        data["cam"]["why"] = f"{hold['why']} (not turned on the page: {exc})"
+        for key in ("pivot", "tip", "phi", "relative"):
+            data["drive"].pop(key, None)
+        return
+    deg = f"{math.degrees(mech.drives[0].value):g}°"
+    if any(_json(data.get("centers")) != _json(other.get("centers")) for other in others):
+        data["centers"] = dict(data["centers"], fn=None, why=(
+            f"the Kennedy route found at the file's cam angle ({deg}) is another one at other "
+            "angles (two centers coincide there, as in a dwell); change the file's angle"))
+    cvs = [dict(d.get("curvature") or {}) for d in (data, *others)]
+    for cv in cvs:
+        cv.pop("K", None)
+    if any(_json(cv) != _json(cvs[0]) for cv in cvs[1:]):
+        data["curvature"] = {"why": f"the curvature construction found at the file's cam angle "
+                                    f"({deg}) is another one at other angles; change the "
+                                    "file's angle"}
+
+
+def _json(v: Any) -> str:
+    import json
+
+    return json.dumps(v, sort_keys=True, default=str)
+
+
+def _elsewhere(mech: Mechanism, file_data: Mapping[str, Any],
+               source: str) -> list[dict[str, Any]]:
+    """The held page's data with the drive turned 11°, −13°, 37° and 101° (where it has one).
+
+    Several angles: an angle in the same dwell as the file's would have the
+    same (degenerate) routes.  NotTurned where none has an equivalent linkage.
+    """
+    from graphkin.mechanisms import from_dict
+    from graphkin.render.live import live_data
+
+    d0 = mech.drives[0]
+    out = []
+    for step in (11.0, -13.0, 37.0, 101.0):
+        other = copy.deepcopy(dict(file_data))
+        raw = other.get("drive")
+        drives = raw if isinstance(raw, list) else [raw]
+        entry = drives[int(d0.key[6:-1]) if d0.key.startswith("drive[") else 0]
+        assert isinstance(entry, dict)
+        entry["angle"] = math.degrees(d0.value) + step
+        try:   # the cam file's path is relative to the file read (mech.source)
+            m2 = from_dict(other, mech.source or source)
+            d2, _ = live_data(m2, other, source, turn=False)
+        except GraphkinError:
+            continue
+        out.append(d2)
+    if not out:
+        raise _fail("the cam has no equivalent linkage near the file's angle to check the "
+                    "page by")
+    return out
