@@ -28,14 +28,14 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphkin.construction import Mark, Role, Term, VectorEquation
-from graphkin.mechanisms.model import Drive, Mechanism
+from graphkin.mechanisms.model import FRAME, Drive, Mechanism, Rolling
 from graphkin.tolerance import Tolerance
 
 if TYPE_CHECKING:
     from graphkin.kinematics.posture import _Builder
 
 __all__ = ["start_drive", "finish_pairs", "propagate_drives", "coordinate_groups", "do_coordinate",
-           "coordinate_line_label"]
+           "coordinate_line_label", "carrier", "circle_ratio", "carrier_beta"]
 
 K, U = Mark.KNOWN, Mark.UNKNOWN
 
@@ -192,6 +192,60 @@ def start_phases(b: _Builder) -> None:
         b.rolled.append((r, s))
 
 
+def carrier(mech: Mechanism, r: Rolling) -> str | None:
+    """The link (not the two gears) that holds both centers of a contact on a circle.
+
+    The arm of a planetary train, or the frame for gears on fixed centers
+    (Sec. 7.15); the frame first.  None for a contact on a line, or when no
+    single link holds both centers.
+    """
+    if r.on_line or not r.fixed_centers or r.on_center_point is None:
+        return None
+    both = [lid for lid, link in mech.links.items() if lid not in (r.link, r.on)
+            and r.center in link.points and r.on_center_point in link.points]
+    if FRAME in both:
+        return FRAME
+    return both[0] if both else None
+
+
+def circle_ratio(r: Rolling) -> float:
+    """``k`` of the no-slip condition on a circle: ``(R + r)/r`` outside, ``-(R - r)/r`` inside.
+
+    ``ω_l - ω_o = k (ω_m - ω_o)`` with ``m`` the link that holds both centers
+    (Eq. 3.13; the train value of a planet, Sec. 7.15, Eq. 7.25).
+    """
+    big, rad = float(r.on_radius or 0.0), float(r.radius)
+    return (big + rad) / rad if r.contact == "outside" else -(big - rad) / rad
+
+
+def carrier_beta(mech: Mechanism, r: Rolling, m: str) -> float:
+    """``β``: the angle of the line of centers ``O → P`` in the axes of ``m``, which holds both."""
+    assert r.on_center_point is not None
+    (ox, oy), (px, py) = mech.links[m].points[r.on_center_point], mech.links[m].points[r.center]
+    return math.atan2(py - oy, px - ox)
+
+
+def _roll_circle(b: _Builder, r: Rolling, c: float) -> bool:
+    """Lay off the angle of one gear of a contact on a circle from the other's and the arm's."""
+    m = carrier(b.mech, r)
+    if m is None or m not in b.angle or (r.link in b.angle) == (r.on in b.angle):
+        return False
+    k = circle_ratio(r)
+    beta = carrier_beta(b.mech, r, m)
+    rolling = r.link not in b.angle
+    known, lid = (r.on, r.link) if rolling else (r.link, r.on)
+    lab = f"θ{lid}"
+    arm = "the frame" if m == FRAME else f"the arm {m}"
+    b.add("roll_circle_angle", (b.angle[known], b.angle[m]), (lab,), k=k, beta=beta, c=c,
+          solve="rolling" if rolling else "on", role=Role.RESULT,
+          note=f"Gear {r.link} rolls on gear {r.on} without slip, both centers on {arm}: "
+               f"θ{r.link} - θ{r.on} = k (θ{m} + β - θ{r.on}) + c with k = {k:.6g} "
+               f"(Sec. 7.15), counted on continuously: {lab}.")
+    b.angle[lid] = lab
+    b.events.append(("roll_angle", r, lid))
+    return True
+
+
 def roll_angles(b: _Builder) -> bool:
     """Lay off each roller's angle from its travel once its center and its line are drawn.
 
@@ -199,12 +253,21 @@ def roll_angles(b: _Builder) -> bool:
     ``θ_l = θ_o + c - σ s/ρ`` (Sec. 2.19, Eq. b; Example 3.9), ``s`` the
     travel of its center along the line, ``c`` the constant of the file's
     posture (:attr:`_Builder.travel`).  Only a contact whose roller the file
-    places by its angle, on a line.  Returns whether a step was added.
+    places by its angle, on a line.  A gear rolling on a circle whose center
+    and the other's are held by one link (a planet on its arm) turns with that
+    link: ``θ_l = θ_o + k (θ_m + β - θ_o) + c`` (``roll_circle_angle``), as
+    soon as the arm's angle and one gear's are known.  Returns whether a step
+    was added.
     """
     added = False
     for r in b.mech.rolling:
         c = b.travel.get(r.key)
-        if c is None or r.link in b.angle or r.center not in b.env or r.on not in b.placed \
+        if c is None:
+            continue
+        if not r.on_line:
+            added = _roll_circle(b, r, c) or added
+            continue
+        if r.link in b.angle or r.center not in b.env or r.on not in b.placed \
                 or f"{r.key}:L0" not in b.env or r.on not in b.angle:
             continue
         lab = f"θ{r.link}"
@@ -236,7 +299,11 @@ def rolling_travel(mech: Mechanism, tol: Tolerance) -> dict[str, float] | None:
     phases = {p.key: p for p in rolling_phases(mech)}
     for r in mech.rolling:
         ph = phases.get(r.key)
-        if ph is None or ph.kind != "angle" or ph.link != r.link or not r.on_line:
+        if ph is None or ph.kind != "angle":
+            return None
+        if r.on_line and ph.link != r.link:
+            return None
+        if not r.on_line and carrier(mech, r) is None:
             return None
     try:
         pc = build_posture(mech, tol)
@@ -246,6 +313,16 @@ def rolling_travel(mech: Mechanism, tol: Tolerance) -> dict[str, float] | None:
     out: dict[str, float] = {}
     for r in mech.rolling:
         th_o = pc.angles.get(r.on)
+        if not r.on_line:
+            m = carrier(mech, r)
+            assert m is not None
+            labs = (pc.angles.get(r.link), th_o, pc.angles.get(m))
+            if any(t is None or t not in env for t in labs):
+                return None
+            t_l, t_o, t_m = (float(np.asarray(env[t])) for t in labs if t is not None)
+            # the constant of θ_l = θ_o + k (θ_m + β - θ_o) + c through the file's posture
+            out[r.key] = t_l - t_o - circle_ratio(r) * (t_m + carrier_beta(mech, r, m) - t_o)
+            continue
         names = (r.center, f"{r.key}:L0", f"{r.key}:L1")
         if th_o is None or any(n not in env for n in names):
             return None

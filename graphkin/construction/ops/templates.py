@@ -192,6 +192,22 @@ def _roll_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.sub(gen.add(t, c), gen.mul(k, f"({s} / {n})")))
 
 
+@template("roll_circle_angle")
+def _roll_circle_angle(gen: Gen, step: Step) -> None:
+    # θ_l = θ_o + k (θ_m + β - θ_o) + c on the covering (no slip on a circle, Sec. 2.19);
+    # solved for θ_o when θ_l is the known one: θ_o = (θ_l - k (θ_m + β) - c) / (1 - k)
+    t, tm = gen.scalar(step.inputs[0]), gen.scalar(step.inputs[1])
+    k, beta, c = (gen.num(step.params[n]) for n in ("k", "beta", "c"))
+    psi = gen.let(gen.add(tm, beta), "t")
+    if step.params["solve"] == "rolling":
+        gen.put_scalar(step.outputs[0],
+                       gen.add(gen.add(t, gen.mul(k, gen.sub(psi, t))), c))
+        return
+    den = gen.let(gen.sub("1.0", k), "t")
+    gen.put_scalar(step.outputs[0],
+                   gen.let(f"{gen.sub(gen.sub(t, gen.mul(k, psi)), c)} / {den}", "t"))
+
+
 def _join_homogeneous(gen: Gen, step: Step) -> None:
     """The line through two points, either of them at infinity: ``p × q``, normalized.
 
