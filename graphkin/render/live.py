@@ -92,6 +92,9 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str) -> tuple[
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
     drive = _drive_data(mech, eng.label, made)
+    # a gear rolling on a circle turns with its arm on the covering (roll_circle_angle): the
+    # crank dragged round is counted on continuously, past a whole turn
+    drive["covering"] = any(s.op == "roll_circle_angle" for s in cx.steps)
     names = [n for n, _ in fn.slots]
     # a frame point where a path of the frame passes (a slider's line, a slot's center) is
     # part of that path, whose direction other steps carry: not draggable

@@ -488,7 +488,9 @@ svgs.posture.addEventListener("pointermove", (ev) => {
     dragPoint(D.coupler[dragging.name], w);
   } else {
     const piv = (res || good)[D.drive.pivot];
-    drive = Math.atan2(w[1] - piv[1], w[0] - piv[0]) - D.drive.phi;
+    const a = Math.atan2(w[1] - piv[1], w[0] - piv[0]) - D.drive.phi;
+    // on a covering (a planet turning with its arm) the drive is counted on continuously
+    drive = D.drive.covering ? drive + Math.atan2(Math.sin(a - drive), Math.cos(a - drive)) : a;
   }
   redraw(false);
 });
