@@ -1,0 +1,152 @@
+"""The live page of a gear train rolling on circles is the construction, with both polygons.
+
+Example 11.7 (Fig. 11.17, a reverted planetary train) and the planet round a
+fixed sun or in a fixed ring (examples/planetary_*.toml): each gear's angle is
+laid off from its arm's by the ``roll_circle_angle`` step (no slip integrated
+on the covering, Sec. 2.19, Sec. 7.15), so the page is the recorded
+construction written out as JavaScript, with the velocity and acceleration
+polygons, not Newton's method.  After random drags, and after the crank is
+dragged round more than a whole turn, every position, velocity and
+acceleration on the page equals ``graphkin solve`` of the file the page saves
+(each contact's angle saved with it) to 1e-9.
+"""
+
+from __future__ import annotations
+
+import math
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from live_edit import page_file as _page
+
+import graphkin
+
+ROOT = Path(__file__).resolve().parents[2]
+REL = 1e-9
+FILES = ["gallery/gears/ex11_7.toml", "examples/planetary_outside.toml",
+         "examples/planetary_inside.toml"]
+
+
+def _same_as_solve(browser, tmp_path: Path) -> graphkin.Solution:
+    """Every moving point, image, θ and ω on the page against solve of its saved file."""
+    r = browser.js("window.graphkinLive.state()")["result"]
+    assert r is not None
+    saved = tmp_path / "saved.toml"
+    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+    sol = graphkin.load(saved).solve()
+    mech = sol.mechanism
+    frame = set(mech.links["1"].points)
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points
+             if n not in frame]
+    scale = 1.0 + max(abs(v) for n in names for v in r[n])
+    vs = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"v({n})"], r["o_v"]))
+    as_ = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"a({n})"], r["o_a"]))
+    for n in names:
+        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale, err_msg=n)
+        np.testing.assert_allclose(np.subtract(r[f"v({n})"], r["o_v"]), sol.velocity(n),
+                                   rtol=0, atol=REL * vs, err_msg=f"v({n})")
+        np.testing.assert_allclose(np.subtract(r[f"a({n})"], r["o_a"]), sol.acceleration(n),
+                                   rtol=0, atol=REL * as_, err_msg=f"a({n})")
+    for lid in mech.links:
+        np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
+                                   atol=REL * (1 + abs(sol.omega(lid))), err_msg=f"ω{lid}")
+        if lid != "1":  # the page's angle is on the covering: the same posture modulo 2π
+            d = float(r[f"θ{lid}"]) - float(sol.angle_rad(lid))
+            assert abs(math.remainder(d, 2 * math.pi)) < REL * (1 + abs(d)), f"θ{lid}"
+    return sol
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_random_drags_draw_both_polygons_equal_to_solve(browser, tmp_path, name):
+    browser.open(_page(tmp_path, ROOT / name))
+    assert browser.errors() == []
+    # no panel refused: the velocity and acceleration polygons are drawn
+    assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
+    for panel in ("velocity", "acceleration"):
+        assert browser.js(f"document.getElementById('gk-{panel}')"
+                          ".querySelectorAll('line, path, polyline').length") > 0, panel
+    _same_as_solve(browser, tmp_path)
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    for step in rng.uniform(-2.5, 2.5, size=4):  # radians of the drive, from where it is
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        assert browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})") is not None
+        _same_as_solve(browser, tmp_path)
+    assert browser.errors() == []
+
+
+def _screen(browser) -> tuple[np.ndarray, float]:
+    """The drive's pivot on the screen and the posture panel's scale (pixels per unit)."""
+    st = browser.js("window.graphkinLive.state()")
+    r = st["result"]
+    tip = browser.js("(function () { var e = document.querySelector("
+                     "'.gk-handle[data-kind=\"drive\"]'); var b = e.getBoundingClientRect();"
+                     " return [b.x + b.width / 2, b.y + b.height / 2, e.getAttribute("
+                     "'data-name')]; })()")
+    mech_pivot, name = "O", tip[2]
+    w_tip, w_piv = np.asarray(r[name]), np.asarray(r[mech_pivot])
+    # the panel is a similarity with y pointing down: measure its scale from a second posture
+    d = st["drive"]
+    browser.js(f"window.graphkinLive.setDrive({d + 0.5!r})")
+    tip2 = browser.js("(function () { var b = document.querySelector("
+                      "'.gk-handle[data-kind=\"drive\"]').getBoundingClientRect();"
+                      " return [b.x + b.width / 2, b.y + b.height / 2]; })()")
+    w_tip2 = np.asarray(browser.js("window.graphkinLive.state()")["result"][name])
+    browser.js(f"window.graphkinLive.setDrive({d!r})")
+    s = math.hypot(tip2[0] - tip[0], tip2[1] - tip[1]) / float(np.hypot(*(w_tip2 - w_tip)))
+    pivot = np.array([tip[0] - s * (w_tip[0] - w_piv[0]), tip[1] + s * (w_tip[1] - w_piv[1])])
+    return pivot, s
+
+
+def test_dragging_the_arm_round_one_and_a_half_turns_counts_on(browser, tmp_path):
+    # Example 11.7: the arm 3 dragged by its pin A round O, 540° counterclockwise in steps of
+    # 15°: the drive goes on past 2π (the covering), the gears turn with it at the train's
+    # ratios (ω2/ω3 = -35/16, ω4/ω3 = 25/8: Example 7.4's train), and the page still equals
+    # solve of its saved file
+    browser.open(_page(tmp_path, ROOT / FILES[0]))
+    st0 = browser.js("window.graphkinLive.state()")
+    d0, th0 = st0["drive"], st0["result"]
+    pivot, s = _screen(browser)
+    start = np.asarray(th0["A"]) - np.asarray(th0["O"])
+    rad = s * float(np.hypot(*start))
+    a0 = math.atan2(start[1], start[0])
+    pts = [pivot + rad * np.array([math.cos(a0 + t), -math.sin(a0 + t)])
+           for t in np.radians(np.arange(0.0, 541.0, 15.0))]
+    browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=pts[0][0], y=pts[0][1])
+    browser.send("Input.dispatchMouseEvent", type="mousePressed", x=pts[0][0], y=pts[0][1],
+                 button="left", clickCount=1)
+    for p in pts[1:]:
+        browser.send("Input.dispatchMouseEvent", type="mouseMoved", x=p[0], y=p[1],
+                     button="left", buttons=1)
+    browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=pts[-1][0],
+                 y=pts[-1][1], button="left", clickCount=1)
+    st = browser.js("window.graphkinLive.state()")
+    turned = st["drive"] - d0
+    assert abs(turned - 3 * math.pi) < 1e-6  # the pointer's own rounding, far below a step
+    r = st["result"]
+    for lid, ratio in (("3", 1.0), ("2", -35 / 16), ("4", 25 / 8)):
+        np.testing.assert_allclose(r[f"θ{lid}"] - th0[f"θ{lid}"], ratio * turned, rtol=0,
+                                   atol=1e-9 * 30, err_msg=f"θ{lid}")
+    _same_as_solve(browser, tmp_path)
+    assert browser.errors() == []
+
+
+def test_the_instant_centers_follow_the_constructed_posture(browser, tmp_path):
+    # Example 11.7 after a drag: the page's centers (I14, I24 at the pitch points on the line
+    # of centers, Sec. 3.13) are graphkin's own centers of the saved file
+    from graphkin.kinematics.instant_centers import instant_centers
+
+    browser.open(_page(tmp_path, ROOT / FILES[0]))
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 2.1!r})") is not None
+    sol = _same_as_solve(browser, tmp_path)
+    page = browser.js("window.graphkinLive.state()")["centers"]
+    ic = instant_centers(sol)
+    labels = [c.label for c in ic.centers.values()]
+    assert {"I14", "I24"} <= set(labels) <= set(page)
+    for lab in labels:
+        got, want = np.asarray(page[lab], dtype=float), np.asarray(ic.values[lab], dtype=float)
+        np.testing.assert_allclose(got[:2] / got[2], want[:2] / want[2], rtol=0,
+                                   atol=1e-9 * 5, err_msg=lab)
+    assert browser.errors() == []
