@@ -288,9 +288,12 @@ def rolling_travel(mech: Mechanism, tol: Tolerance) -> dict[str, float] | None:
     For a sweep (or a live page) away from the file's drive, a circle rolling
     on a line, placed at the file's drive by its own angle (its phase,
     :mod:`graphkin.kinematics.analytic.phase`), has the angle
-    ``θ_l = θ_o + c - σ s/ρ``; ``c`` is read from the construction at the
-    file's drive.  None when a contact is not of that kind (on a circle; a
-    phase that places another link) or the file's posture is not constructed.
+    ``θ_l = θ_o + c - σ s/ρ``; a gear rolling on a circle whose two centers
+    one link ``m`` holds has ``θ_l = θ_o + k (θ_m + β - θ_o) + c``
+    (:func:`circle_ratio`, :func:`carrier_beta`).  ``c`` is read from the
+    construction at the file's drive.  None when a contact is of neither kind
+    (a roller on a line whose phase places another link; a circle whose
+    centers no one link holds) or the file's posture is not constructed.
     """
     from graphkin.errors import GraphkinError
     from graphkin.kinematics.analytic.phase import rolling_phases
