@@ -225,11 +225,34 @@ def carrier_beta(mech: Mechanism, r: Rolling, m: str) -> float:
     return math.atan2(py - oy, px - ox)
 
 
+#: The steps whose angle is counted on the covering when their angle inputs are: a given
+#: angle, one laid off from another by a constant or a joint angle, a rolling link's.
+_COVERING = {"input": (), "scalar": (), "add_angle": (0,), "add_angles": (0, 1),
+             "roll_angle": (0,), "roll_circle_angle": (0, 1)}
+
+
+def on_covering(b: _Builder, label: str) -> bool:
+    """Whether the angle ``label`` is counted on continuously (not taken modulo 2π).
+
+    An input, a given angle, or one laid off from such angles (a slider's
+    angle, a joint angle, a rolling link's) is; an angle measured from two
+    points (``link_angle``, an ``atan2``) is not: a gear laid off from it
+    would jump by ``2π k`` where it wraps.
+    """
+    step = next((s for s in reversed(b.cx.steps) if label in s.outputs), None)
+    if step is None or step.op not in _COVERING:
+        return False
+    return all(on_covering(b, step.inputs[i]) for i in _COVERING[step.op])
+
+
 def _roll_circle(b: _Builder, r: Rolling, c: float) -> bool:
     """Lay off the angle of one gear of a contact on a circle from the other's and the arm's."""
     m = carrier(b.mech, r)
     if m is None or m not in b.angle or (r.link in b.angle) == (r.on in b.angle):
         return False
+    known = r.on if r.link not in b.angle else r.link
+    if not (on_covering(b, b.angle[m]) and on_covering(b, b.angle[known])):
+        return False  # an angle measured modulo 2π: the analytic solver follows the covering
     k = circle_ratio(r)
     beta = carrier_beta(b.mech, r, m)
     rolling = r.link not in b.angle

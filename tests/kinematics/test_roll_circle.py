@@ -161,3 +161,13 @@ def test_the_written_out_function_equals_the_replay_on_arrays(rm, span):
         np.testing.assert_allclose(np.broadcast_to(got[lab], x.shape),
                                    np.broadcast_to(ref.values[lab], x.shape), rtol=0,
                                    atol=1e-12 * (1 + span * 50), err_msg=lab)
+
+
+def test_an_arm_angle_measured_modulo_2pi_is_left_to_the_analytic_solver():
+    # the arm of tests/data/hostile/point_drive_planetary.toml is turned by its point's
+    # x_P: its angle is measured from two points (atan2, in (-π, π]), so a planet laid off
+    # from it would jump by 2π k where it wraps (k = 3 here): no roll_circle_angle step,
+    # the analytic solver (φ followed from posture to posture) sweeps it
+    mech = graphkin.load(ROOT / "tests/data/hostile/point_drive_planetary.toml")
+    eng = _Engine(mech, DEFAULT_TOL)
+    assert eng.method == "analytic"
