@@ -228,7 +228,7 @@ def carrier_beta(mech: Mechanism, r: Rolling, m: str) -> float:
 #: The steps whose angle is counted on the covering when their angle inputs are: a given
 #: angle, one laid off from another by a constant or a joint angle, a rolling link's.
 _COVERING = {"input": (), "scalar": (), "add_angle": (0,), "add_angles": (0, 1),
-             "roll_angle": (0,), "roll_circle_angle": (0, 1)}
+             "roll_angle": (0,), "roll_circle_angle": (0, 1), "planetary_arm": (0, 1)}
 
 
 def on_covering(b: _Builder, label: str) -> bool:
@@ -269,6 +269,67 @@ def _roll_circle(b: _Builder, r: Rolling, c: float) -> bool:
     return True
 
 
+def _train_row(mech: Mechanism, r: Rolling, p: str, m: str,
+               c: float) -> tuple[float, float, float, float]:
+    """Contact ``r`` as ``a θ_p + b θ_m = g θ_g + e`` (``p`` the planet, ``g`` the other gear)."""
+    k, beta = circle_ratio(r), carrier_beta(mech, r, m)
+    if p == r.link:  # θ_p = (1 - k) θ_g + k θ_m + k β + c
+        return 1.0, -k, 1.0 - k, k * beta + c
+    return 1.0 - k, k, 1.0, -k * beta - c  # θ_g = (1 - k) θ_p + k θ_m + k β + c
+
+
+def _roll_arm(b: _Builder) -> bool:
+    """The arm of two contacts that share a planet, from the two other gears (Sec. 7.15).
+
+    A planet ``p`` meshing with a first gear ``F`` and a last gear ``L`` on one
+    arm ``A`` (a sun driven, a ring fixed, the arm the output): neither
+    contact alone gives an angle, both together give the arm's, the
+    integrated form of the train formula ``(ω_L - ω_A)/(ω_F - ω_A) = e``
+    (Eq. 7.25)::
+
+        θ_A = u θ_F + v θ_L + w,
+
+    eliminating ``θ_p`` between the two contacts' rows (:func:`_train_row`);
+    the planet then follows from one contact (``roll_circle_angle``).
+    """
+    from graphkin.tolerance import is_zero
+
+    rolls = [r for r in b.mech.rolling if r.key in b.travel and not r.on_line]
+    done = {id(ev[1]) for ev in b.events if ev[0] == "roll_angle"}
+    for i, r1 in enumerate(rolls):
+        for r2 in rolls[i + 1:]:
+            m = carrier(b.mech, r1)
+            if m is None or m != carrier(b.mech, r2) or m in b.angle \
+                    or id(r1) in done or id(r2) in done:
+                continue
+            shared = {r1.link, r1.on} & {r2.link, r2.on}
+            if len(shared) != 1:
+                continue
+            (p,) = shared
+            g1 = r1.on if p == r1.link else r1.link
+            g2 = r2.on if p == r2.link else r2.link
+            if p in b.angle or g1 not in b.angle or g2 not in b.angle \
+                    or not (on_covering(b, b.angle[g1]) and on_covering(b, b.angle[g2])):
+                continue
+            a1, b1, c1, e1 = _train_row(b.mech, r1, p, m, b.travel[r1.key])
+            a2, b2, c2, e2 = _train_row(b.mech, r2, p, m, b.travel[r2.key])
+            det = a2 * b1 - a1 * b2
+            if is_zero(det, max(abs(a1 * b2), abs(a2 * b1))):
+                continue  # the two contacts turn the planet alike: they do not fix the arm
+            u, v, w = a2 * c1 / det, -a1 * c2 / det, (a2 * e1 - a1 * e2) / det
+            lab = f"θ{m}"
+            b.add("planetary_arm", (b.angle[g1], b.angle[g2]), (lab,), u=u, v=v, w=w,
+                  role=Role.RESULT,
+                  note=f"The planet {p} meshes with gear {g1} ({r1.key}) and gear {g2} "
+                       f"({r2.key}) on the arm {m}: the train formula integrated "
+                       f"(Sec. 7.15, Eq. 7.25) gives the arm, θ{m} = {u:.6g} θ{g1} "
+                       f"+ {v:.6g} θ{g2} + {w:.6g}.")
+            b.angle[m] = lab
+            b.events.append(("roll_angle", r2, m))
+            return True
+    return False
+
+
 def roll_angles(b: _Builder) -> bool:
     """Lay off each roller's angle from its travel once its center and its line are drawn.
 
@@ -302,7 +363,7 @@ def roll_angles(b: _Builder) -> bool:
         b.angle[r.link] = lab
         b.events.append(("roll_angle", r, r.link))
         added = True
-    return added
+    return added or _roll_arm(b)
 
 
 def rolling_travel(mech: Mechanism, tol: Tolerance) -> dict[str, float] | None:

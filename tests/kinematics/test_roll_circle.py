@@ -118,16 +118,14 @@ def test_example_11_7_turns_at_the_books_ratio():
                     rolling_arrangements("planet")))
 def test_random_trains_sweep_by_the_construction_like_the_analytic_solver(rm):
     # gears on fixed centers (outside, inside), three in a row, a planet round a fixed sun
-    # or in a fixed ring, with a driven sun, or driving a ring (tests/strategies_rolling.py),
-    # over two turns: every angle, ω and α equals the analytic solver's to 1e-9. A planet
-    # between a driven sun and a fixed ring whose arm is the output needs both contacts at
-    # once (no step lays off one from the other): the analytic solver sweeps it
+    # or in a fixed ring, with a driven sun, or driving a ring, between a driven sun and a
+    # fixed ring with the arm the output (tests/strategies_rolling.py), over two turns:
+    # every angle, ω and α equals the analytic solver's to 1e-9
     mech = rm.mechanism()
     eng = _Engine(mech, DEFAULT_TOL)
-    if rm.kind == "planet, sun and ring":
-        assert eng.method == "analytic"
-        return
     assert eng.method == "construction", rm.kind
+    if rm.kind == "planet, sun and ring":  # the arm from both contacts at once (Eq. 7.25)
+        assert any(s.op == "planetary_arm" for s in eng.pc.construction.steps)
     sw, first, an = _turns(mech, 2.0, 97)
     _agree(mech, sw, an)
     if len(mech.drives) == 1:
@@ -171,3 +169,55 @@ def test_an_arm_angle_measured_modulo_2pi_is_left_to_the_analytic_solver():
     mech = graphkin.load(ROOT / "tests/data/hostile/point_drive_planetary.toml")
     eng = _Engine(mech, DEFAULT_TOL)
     assert eng.method == "analytic"
+
+
+SUN_AND_RING = """
+title = "sun 2 driven, ring 1 fixed, the arm 4 the output"
+[links.1]
+O = [0, 0]
+[links.2]
+O = [0, 0]
+S = [30, 0]
+[links.3]
+P = [45, 0]
+Q = [55, 0]
+[links.4]
+O = [0, 0]
+P = [45, 0]
+[[rolling]]
+link = 3
+on = 2
+circle = { center = "P", radius = 15 }
+on_circle = { center = "O", radius = 30 }
+[[rolling]]
+link = 3
+on = 1
+circle = { center = "P", radius = 15 }
+on_circle = { center = "O", radius = 60 }
+contact = "inside"
+[drive]
+link = 2
+angle = 20
+omega = 6
+alpha = -2
+"""
+
+
+def test_the_arm_between_a_driven_sun_and_a_fixed_ring_is_the_train_formula():
+    # sun R2 = 30 driven, planet r3 = 15, ring R1 = 60 fixed, arm 4 the output. By the
+    # train formula (Sec. 7.15, Eq. 7.25) with the arm: (ω1 - ω4)/(ω2 - ω4) = -R2/R1 = -1/2,
+    # ω1 = 0: ω4 = ω2/3; the planet (ω3 - ω4)/(ω2 - ω4) = -R2/r3 = -2: ω3 = ω4 - 2(ω2 - ω4)
+    # = -ω2. Over three turns of the sun, θ4 turns a third as far and θ3 as far back, and
+    # every angle, ω and α equals the analytic solver's
+    mech = graphkin.loads(SUN_AND_RING)
+    eng = _Engine(mech, DEFAULT_TOL)
+    assert eng.method == "construction"
+    ops = [s.op for s in eng.pc.construction.steps]
+    assert ops.count("planetary_arm") == 1 and ops.count("roll_circle_angle") == 1
+    sw, first, an = _turns(mech, 3.0, 181)
+    _agree(mech, sw, an)
+    th = {lid: np.asarray(sw.solution.links[lid].angle) for lid in ("3", "4")}
+    np.testing.assert_allclose(th["4"] - th["4"][0], (first - first[0]) / 3, rtol=0,
+                               atol=1e-12 * 60)
+    np.testing.assert_allclose(th["3"] - th["3"][0], -(first - first[0]), rtol=0,
+                               atol=1e-12 * 60)

@@ -10,6 +10,8 @@
 * ``roll_circle_angle``: the angle of a gear rolling on a circle, both
   centers on one link (a planet on its arm, gears on fixed centers): the
   no-slip condition integrated on the covering (Sec. 2.19, Sec. 7.15).
+* ``planetary_arm``: the arm of a planet between a first and a last gear
+  (a driven sun, a fixed ring), the train formula integrated (Eq. 7.25).
 * ``coordinate_line``: the line ``x = s`` (or ``y = s``) on which a point
   with one given coordinate lies; in a polygon, the line on which the
   image of that point lies when one component of its velocity or
@@ -93,3 +95,15 @@ def _roll_circle_angle(theta: Array, theta_m: Array, *, tol: Tolerance, k: float
     if solve == "rolling":
         return (t + k * (m - t) + c,)
     return ((t - k * m - c) / (1.0 - k),)
+
+
+@op("planetary_arm", kind="scalar")
+def _planetary_arm(theta_f: Array, theta_l: Array, *, tol: Tolerance, u: float, v: float,
+                   w: float) -> tuple[Array]:
+    """The arm of a planet meshing with a first and a last gear: ``θ_A = u θ_F + v θ_L + w``.
+
+    The two contacts' no-slip conditions on the covering, ``θ_p`` eliminated:
+    the train formula ``(ω_L - ω_A)/(ω_F - ω_A) = e`` (Sec. 7.15, Eq. 7.25)
+    integrated, with the constants of the file's posture in ``w``.
+    """
+    return (u * np.asarray(theta_f, dtype=float) + v * np.asarray(theta_l, dtype=float) + w,)

@@ -208,6 +208,14 @@ def _roll_circle_angle(gen: Gen, step: Step) -> None:
                    gen.let(f"{gen.sub(gen.sub(t, gen.mul(k, psi)), c)} / {den}", "t"))
 
 
+@template("planetary_arm")
+def _planetary_arm(gen: Gen, step: Step) -> None:
+    # θ_A = u θ_F + v θ_L + w: the train formula integrated on the covering (Eq. 7.25)
+    f, last = gen.scalar(step.inputs[0]), gen.scalar(step.inputs[1])
+    u, v, w = (gen.num(step.params[n]) for n in ("u", "v", "w"))
+    gen.put_scalar(step.outputs[0], gen.add(gen.add(gen.mul(u, f), gen.mul(v, last)), w))
+
+
 def _join_homogeneous(gen: Gen, step: Step) -> None:
     """The line through two points, either of them at infinity: ``p × q``, normalized.
 
