@@ -171,36 +171,7 @@ def test_an_arm_angle_measured_modulo_2pi_is_left_to_the_analytic_solver():
     assert eng.method == "analytic"
 
 
-SUN_AND_RING = """
-title = "sun 2 driven, ring 1 fixed, the arm 4 the output"
-[links.1]
-O = [0, 0]
-[links.2]
-O = [0, 0]
-S = [30, 0]
-[links.3]
-P = [45, 0]
-Q = [55, 0]
-[links.4]
-O = [0, 0]
-P = [45, 0]
-[[rolling]]
-link = 3
-on = 2
-circle = { center = "P", radius = 15 }
-on_circle = { center = "O", radius = 30 }
-[[rolling]]
-link = 3
-on = 1
-circle = { center = "P", radius = 15 }
-on_circle = { center = "O", radius = 60 }
-contact = "inside"
-[drive]
-link = 2
-angle = 20
-omega = 6
-alpha = -2
-"""
+SUN_AND_RING = ROOT / "tests/data/sun_and_ring_planetary.toml"
 
 
 def test_the_arm_between_a_driven_sun_and_a_fixed_ring_is_the_train_formula():
@@ -209,7 +180,7 @@ def test_the_arm_between_a_driven_sun_and_a_fixed_ring_is_the_train_formula():
     # ω1 = 0: ω4 = ω2/3; the planet (ω3 - ω4)/(ω2 - ω4) = -R2/r3 = -2: ω3 = ω4 - 2(ω2 - ω4)
     # = -ω2. Over three turns of the sun, θ4 turns a third as far and θ3 as far back, and
     # every angle, ω and α equals the analytic solver's
-    mech = graphkin.loads(SUN_AND_RING)
+    mech = graphkin.load(SUN_AND_RING)
     eng = _Engine(mech, DEFAULT_TOL)
     assert eng.method == "construction"
     ops = [s.op for s in eng.pc.construction.steps]

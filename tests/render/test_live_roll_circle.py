@@ -185,3 +185,21 @@ def test_random_trains_and_drags_equal_solve(browser, tmp_path_factory, rm, step
         assert browser.js(f"window.graphkinLive.setDrive({d + step!r})") is not None
         _same_as_solve(browser, tmp)
     assert browser.errors() == []
+
+
+def test_the_arm_between_a_driven_sun_and_a_fixed_ring_on_the_page(browser, tmp_path):
+    # the sun 2 driven, the ring 1 fixed, the arm 4 the output (tests/kinematics/
+    # test_roll_circle.py): the arm by planetary_arm, the planet by roll_circle_angle; the
+    # sun turned 2.5 turns by steps, the page equals solve of its saved file, ω4 = ω2/3
+    browser.open(_page(tmp_path, ROOT / "tests/data/sun_and_ring_planetary.toml"))
+    assert browser.errors() == []
+    assert browser.js("typeof gkNewton") == "undefined"
+    st0 = browser.js("window.graphkinLive.state()")
+    d0 = st0["drive"]
+    for k in range(1, 11):
+        assert browser.js(f"window.graphkinLive.setDrive({d0 + k * math.pi / 2!r})") is not None
+        sol = _same_as_solve(browser, tmp_path)
+        assert float(sol.omega("4")) == pytest.approx(2.0, abs=1e-9)
+    r = browser.js("window.graphkinLive.state()")["result"]
+    np.testing.assert_allclose(r["θ4"] - st0["result"]["θ4"], 5 * math.pi / 3, atol=1e-9)
+    assert browser.errors() == []
