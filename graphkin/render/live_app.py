@@ -139,6 +139,7 @@ function pointsOf(panel, r) {
     const p = pre ? r[pre + "(" + n + ")"] : r[n];
     if (p) out.push(p);
   }
+  for (const e of D.pitch || []) if (e.pre === pre && r[e.label]) out.push(r[e.label]);
   return out;
 }
 
@@ -388,6 +389,14 @@ function drawPolygon(panel, pre, r, stale) {
                      "marker-end": "url(#" + UID + svg.id + "-arrow)"});
     }
     label(g, panel, p, n.toLowerCase());
+  }
+  // the points of contact of rolling contact (Sec. 3.7): one velocity image for both
+  // links, the pole on the frame (V_C = 0); accelerations apart by A^r (live.py)
+  for (const e of D.pitch || []) {
+    const p = e.pre === pre ? r[e.label] : null; if (!p) continue;
+    el(g, "circle", {cx: X(panel, p), cy: Y(panel, p), r: 3, fill: "#fff", stroke: "#000"});
+    el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) + 14, "font-size": "12",
+                   "font-style": "italic", class: "gk-pitch"}, e.text);
   }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
   label(g, panel, o, pre === "v" ? "O_V" : "O_A");

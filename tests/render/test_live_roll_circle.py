@@ -203,3 +203,46 @@ def test_the_arm_between_a_driven_sun_and_a_fixed_ring_on_the_page(browser, tmp_
     r = browser.js("window.graphkinLive.state()")["result"]
     np.testing.assert_allclose(r["θ4"] - st0["result"]["θ4"], 5 * math.pi / 3, atol=1e-9)
     assert browser.errors() == []
+
+
+def _cross(w: float, v: np.ndarray) -> np.ndarray:
+    return w * np.array([-v[1], v[0]])
+
+
+def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
+    # Example 11.7 after a drag: the points of contact on the line of centers, C0 at
+    # R2 = 1.00 from O (gears 4 and 2) and C1 at R6 = 1.70 (gear 5 of 4 on the fixed 6).
+    # Sec. 3.7: c₄ = c₂ one velocity image, V_C4 = V_A + ω4 × R_CA = ω2 × R_CO (no slip,
+    # Eq. 3.13); on the frame V_C4 = 0, c₄ = c₁ at the pole. Sec. 4.7: each link's own
+    # acceleration image, A_C4 = A_A + α4 × R_CA - ω4² R_CA, A_C2 = α2 × R_CO - ω2² R_CO
+    browser.open(_page(tmp_path, ROOT / FILES[0]))
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 2.0!r})") is not None
+    browser.js("window.graphkinLive.redraw(true)")
+    texts = browser.js("Array.from(document.querySelectorAll('.gk-pitch'))"
+                       ".map(function (e) { return e.textContent; })")
+    assert set(texts) == {"c₄ = c₂", "c₄ = c₁", "c′₄ (4/2)", "c′₂", "c′₄ (4/1)"}
+    sol = _same_as_solve(browser, tmp_path)
+    r = browser.js("window.graphkinLive.state()")["result"]
+    o, a = np.asarray(sol.position("O"), float), np.asarray(sol.position("A"), float)
+    u = (a - o) / np.linalg.norm(a - o)
+    va, aa = np.asarray(sol.velocity("A"), float), np.asarray(sol.acceleration("A"), float)
+    w2, w4 = float(sol.omega("2")), float(sol.omega("4"))
+    al2, al4 = float(sol.alpha("2")), float(sol.alpha("4"))
+    ov, oa = np.asarray(r["o_v"]), np.asarray(r["o_a"])
+    for key, radius in (("rolling[0]", 1.0), ("rolling[1]", 1.7)):
+        c = o + radius * u
+        v4 = va + _cross(w4, c - a)
+        a4 = aa + _cross(al4, c - a) - w4 ** 2 * (c - a)
+        np.testing.assert_allclose(np.asarray(r[f"a({key}:C@4)"]) - oa, a4, rtol=0,
+                                   atol=1e-9 * 100)
+        if key == "rolling[1]":
+            np.testing.assert_allclose(v4, 0.0, rtol=0, atol=1e-9 * 10)  # on the fixed 6
+            continue
+        np.testing.assert_allclose(np.asarray(r[f"v({key}:C@4)"]) - ov, v4, rtol=0,
+                                   atol=1e-9 * 10)
+        np.testing.assert_allclose(v4, _cross(w2, c - o), rtol=0, atol=1e-9 * 10)
+        np.testing.assert_allclose(np.asarray(r[f"a({key}:C@2):r"]) - oa,
+                                   _cross(al2, c - o) - w2 ** 2 * (c - o), rtol=0,
+                                   atol=1e-9 * 100)
+    assert browser.errors() == []
