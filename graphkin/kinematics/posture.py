@@ -777,6 +777,12 @@ def build_posture(mech: Mechanism, tol: Tolerance | None = None,
     b.forced = dict(branches or {})
     b.start()
     _finish(b)
+    rolled = {id(ev[1]) for ev in b.events if ev[0] == "roll_angle"}
+    for r in mech.rolling:
+        if r.key in b.travel and not r.on_line and id(r) not in rolled:
+            # both gears' angles found otherwise: the no-slip condition would go unused
+            raise NotDecomposable(f"{r.key}: no gear of the contact is left to lay off from "
+                                  "the other's angle", step=r.key)
     known = {lid: b.known_points(lid) for lid in mech.links}
     return PostureConstruction(b.cx, b.inputs, b.anchor, b.angle, known, b.branches, b.notes,
                                b.env, b.events)

@@ -90,11 +90,16 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
             requests += [f"{pre}({n})" for n in points if f"{pre}({n})" in made]
         requests += [f"{w}{lid}" for w in ("ω", "α") for lid in mech.links if f"{w}{lid}" in made]
         requests += [p for p in ("o_v", "o_a") if p in made]
+        pitch = _pitch_images(mech, made)
+        requests += [e["label"] for e in pitch if e["label"] not in requests]
     try:
         fn = generate_js(cx.steps, requests=requests, tol=DEFAULT_TOL, name="construction")
     except Unsupported as exc:
         raise InputError(f"no live page: {exc}", file=source) from None
     drive = _drive_data(mech, eng.label, made)
+    # a gear rolling on a circle turns with its arm on the covering (roll_circle_angle): the
+    # crank dragged round is counted on continuously, past a whole turn
+    drive["covering"] = any(s.op == "roll_circle_angle" for s in cx.steps)
     names = [n for n, _ in fn.slots]
     # a frame point where a path of the frame passes (a slider's line, a slot's center) is
     # part of that path, whose direction other steps carry: not draggable
@@ -123,6 +128,7 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
         "inputs": consts,
         "K": fn.values,
         "rates": rates,
+        "pitch": pitch if rates else [],
         "assembly": sorted(set(hints) | set(branch_pts)),
         "file": file_data,
         "style": {k: STYLES[k] for k in ("link", "plate", "pin", "result-line", "aux-line")
@@ -162,6 +168,47 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
 
         check_turn(data, mech, file_data, source)  # the same page at another cam angle
     return data, js
+
+
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def _pitch_images(mech: Mechanism, made: set[str]) -> list[dict[str, str]]:
+    """The images of the points of contact of rolling contact, as the book letters them.
+
+    The contact point of each link of a contact has one velocity (no slip,
+    Eq. 3.13: ``c₄`` and ``c₂`` are one image; on the frame, ``V_C = 0``: the
+    image is the pole) and accelerations that differ by the rolling component
+    ``A^r`` (Eq. 4.19; ``c′₄``).  Each entry: the polygon (``"v"`` or ``"a"``),
+    the image's label in the construction (the pole ``o_v`` for a contact
+    point of a link rolling on the frame) and its letters (Sec. 3.7, Fig. 3.14b).
+    """
+    out: list[dict[str, str]] = []
+    count: dict[str, int] = {}
+    for r in mech.rolling:
+        for lid in (r.link, r.on):
+            count[lid] = count.get(lid, 0) + 1
+    for r in mech.rolling:
+        pair = (r.link, r.on)
+        links = [lid for lid in pair if lid != FRAME]
+        # velocity: one image for the contact points of both links (no slip); on the frame
+        # the pole, c₄ = c₁ (V_C = 0)
+        v = next((f"v({r.key}:C@{lid})" for lid in links if f"v({r.key}:C@{lid})" in made),
+                 "o_v" if FRAME in pair and "o_v" in made else "")
+        if v:
+            out.append({"pre": "v", "label": v,
+                        "text": " = ".join(f"c{x.translate(_SUBSCRIPT)}" for x in pair)})
+        # acceleration: each link's own contact image (they differ by A^r); a link in two
+        # contacts (a planet on a sun and in a ring) names the contact by the other link
+        for lid in links:
+            a = next((lab for lab in (f"a({r.key}:C@{lid})", f"a({r.key}:C@{lid}):r")
+                      if lab in made), "")
+            other = pair[1] if lid == pair[0] else pair[0]
+            if a:
+                out.append({"pre": "a", "label": a,
+                            "text": f"c\u2032{lid.translate(_SUBSCRIPT)}"
+                                    + (f" ({lid}/{other})" if count[lid] > 1 else "")})
+    return out
 
 
 def _drive_data(mech: Mechanism, label: str, made: set[str]) -> dict[str, Any]:

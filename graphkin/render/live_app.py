@@ -154,6 +154,7 @@ function pointsOf(panel, r) {
     const p = pre ? r[pre + "(" + n + ")"] : r[n];
     if (p) out.push(p);
   }
+  for (const e of D.pitch || []) if (e.pre === pre && r[e.label]) out.push(r[e.label]);
   return out;
 }
 
@@ -406,6 +407,14 @@ function drawPolygon(panel, pre, r, stale) {
     }
     label(g, panel, p, n.toLowerCase());
   }
+  // the points of contact of rolling contact (Sec. 3.7): one velocity image for both
+  // links, the pole on the frame (V_C = 0); accelerations apart by A^r (live.py)
+  for (const e of D.pitch || []) {
+    const p = e.pre === pre ? r[e.label] : null; if (!p) continue;
+    el(g, "circle", {cx: X(panel, p), cy: Y(panel, p), r: 3, fill: "#fff", stroke: "#000"});
+    el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) + 14, "font-size": "12",
+                   "font-style": "italic", class: "gk-pitch"}, e.text);
+  }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
   label(g, panel, o, pre === "v" ? "O_V" : "O_A");
   if (pen.panel === panel) drawPen(svg, panel);
@@ -519,7 +528,9 @@ svgs.posture.addEventListener("pointermove", (ev) => {
     if (D.drive.relative) {  // a cam turns by the angle the pointer turns about its center
       drive = dragging.d0 + a - dragging.a0;
     } else {
-      drive = a - D.drive.phi;
+      const b = a - D.drive.phi;
+      // on a covering (a planet turning with its arm) the drive is counted on continuously
+      drive = D.drive.covering ? drive + Math.atan2(Math.sin(b - drive), Math.cos(b - drive)) : b;
     }
   }
   redraw(false);

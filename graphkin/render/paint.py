@@ -28,6 +28,7 @@ Sec. 3.5 (images), Sec. 4.3 (Fig. 4.4), Sec. 4.5 (Fig. 4.11).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Callable, Collection
 
 import numpy as np
@@ -151,7 +152,35 @@ def _math_or_none(name: str | None) -> str | None:
     return None if not name else vector_math(name)
 
 
+_CONTACT_IMAGE = re.compile(r"[va]\(rolling\[\d+\]:C@\w+\)")
+
+
+def _contact_text(label: str, mech: Mechanism | None) -> str:
+    """An image's letters; a link's contact point in two contacts names the other link.
+
+    ``a(rolling[0]:C@4)`` of a planet 4 meshing with 2 and with 1 is ``c′₄ (4/2)``,
+    so its two points of contact are told apart (Sec. 4.7).
+    """
+    text = image_text(label)
+    m = _CONTACT_IMAGE.fullmatch(label)
+    if m is None or mech is None:
+        return text
+    key, _, lid = label[2:-1].partition(":C@")
+    r = next((x for x in mech.rolling if x.key == key), None)
+    if r is None or sum(lid in (x.link, x.on) for x in mech.rolling) < 2:
+        return text
+    return f"{text} ({lid}/{r.on if lid == r.link else r.link})"
+
+
 def _is_image(label: str) -> bool:
+    """An image point lettered in its polygon: a point's, or a rolling contact point's.
+
+    The point of contact of a rolling link (``v(rolling[0]:C@4)``, lettered
+    ``c₄``) is an image as the book draws it (Sec. 3.7, Fig. 3.14b); other
+    internal labels (with ``:``) are construction points.
+    """
+    if _CONTACT_IMAGE.fullmatch(label):
+        return True
     return (label.startswith(("v(", "a(")) and label.endswith(")") and ":" not in label)
 
 
@@ -471,7 +500,7 @@ class StepPainter:
             return  # a helper point has no image (issue 11: only the line it defines)
         if image:
             self.marker(g, xy, "image-point", label)
-            self.label(panel, g, image_text(label), xy, label)
+            self.label(panel, g, _contact_text(label, mech), xy, label)
         result = step.role == Role.RESULT
         accel = panel.plane == "acceleration"
         ins = step.inputs

@@ -302,15 +302,15 @@ follows = { link = 2, ratio = -0.5, offset = 15 }
 """
 
 
-def test_newtons_page_moves_the_follower_too(browser, tmp_path):
-    # a planet on arm 2 rolling on sun gear 4 (rolling contact, Sec. 3.7:
-    # Newton's method on the page), the sun following the arm, θ4 = −θ2/2 + 15°, so ω4 = −5
-    # and α4 = −1.5 rad/s² throughout
+def test_a_planet_page_moves_the_follower_too(browser, tmp_path):
+    # a planet on arm 2 rolling on sun gear 4 (rolling contact, Sec. 3.7), the sun following
+    # the arm, θ4 = −θ2/2 + 15°, so ω4 = −5 and α4 = −1.5 rad/s² throughout; the planet is
+    # laid off from the arm and the sun (roll_circle_angle): the page is the construction
     path = tmp_path / "sun.toml"
     path.write_text(_SUN, encoding="utf-8")
     mech = graphkin.load(path)
     data, _ = live_data(mech, load_toml(path), path.name)
-    assert data.get("newton")
+    assert not data.get("newton") and data["follow"]
     page = tmp_path / "sun.html"
     page.write_text(live_html(mech, load_toml(path), path.name), encoding="utf-8")
     browser.open(page)

@@ -31,7 +31,7 @@ ROOT = Path(__file__).resolve().parents[2]
 REL = 1e-9
 
 NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
-          "gallery/mechanisms/fig3_18_rolling_wheel.toml", "gallery/gears/ex11_7.toml",
+          "gallery/mechanisms/fig3_18_rolling_wheel.toml",
           "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
           "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
           "examples/ex3_9_rolling_wheel.toml"]
@@ -165,7 +165,9 @@ def _same_as_sweep(r: dict, mech, path: np.ndarray, tol_scale: float) -> None:
     for pre, of in (("v", sol.velocity), ("a", sol.acceleration)):
         pole = r["o_" + pre]
         got = {n: np.subtract(r[f"{pre}({n})"], pole) for n in names if f"{pre}({n})" in r}
-        s = 1.0 + max(abs(v) for x in got.values() for v in x)
+        # a construction page gives the images of the moving points only (a train of gears
+        # on fixed pivots has none: its rates are the links' ω and α)
+        s = 1.0 + max((abs(v) for x in got.values() for v in x), default=0.0)
         for n, x in got.items():
             np.testing.assert_allclose(x, np.asarray(of(n))[-1], rtol=0, atol=REL * s,
                                        err_msg=f"{pre}({n})")
@@ -245,8 +247,7 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
 
 @pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
                                   "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
-                                  "gallery/centers/fig3_27_scotch_yoke.toml",
-                                  "gallery/gears/ex11_7.toml"])
+                                  "gallery/centers/fig3_27_scotch_yoke.toml"])
 def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
     # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
     # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal

@@ -7,6 +7,11 @@
 * ``point_xy``: a point at given coordinates (the pantograph's tracing
   point, Problem 5.13), or its velocity or acceleration image from the
   given components, laid off from the pole.
+* ``roll_circle_angle``: the angle of a gear rolling on a circle, both
+  centers on one link (a planet on its arm, gears on fixed centers): the
+  no-slip condition integrated on the covering (Sec. 2.19, Sec. 7.15).
+* ``planetary_arm``: the arm of a planet between a first and a last gear
+  (a driven sun, a fixed ring), the train formula integrated (Eq. 7.25).
 * ``coordinate_line``: the line ``x = s`` (or ``y = s``) on which a point
   with one given coordinate lies; in a polygon, the line on which the
   image of that point lies when one component of its velocity or
@@ -62,3 +67,43 @@ def _roll_angle(theta_on: Array, center: Array, l0: Array, l1: Array, *, tol: To
     n = np.hypot(u[..., 0], u[..., 1])
     s = ((p[..., 0] - a[..., 0]) * u[..., 0] + (p[..., 1] - a[..., 1]) * u[..., 1]) / n
     return (np.asarray(theta_on, dtype=float) + c - k * s,)
+
+
+@op("roll_circle_angle", kind="scalar")
+def _roll_circle_angle(theta: Array, theta_m: Array, *, tol: Tolerance, k: float, beta: float,
+                       c: float, solve: str) -> tuple[Array]:
+    """The angle of a gear rolling on a circle without slip, both centers on one link ``m``.
+
+    A circle of link ``l`` (radius ``r``) rolls on a circle of link ``o``
+    (radius ``R``); both centers are points of a link ``m`` (the arm of a
+    planetary train, or the frame for gears on fixed centers), so the line
+    of centers stands at ``ψ = θ_m + β``.  No slip, ``ω_l - ω_o = k (ω_m -
+    ω_o)`` with ``k = (R + r)/r`` outside and ``-(R - r)/r`` inside (Eq.
+    3.13; Sec. 7.15, Eq. 7.25 for the arm), integrated on the covering
+    (Sec. 2.19)::
+
+        θ_l = θ_o + k (θ_m + β - θ_o) + c.
+
+    The angles are those of the covering (not taken modulo 2π): with the
+    input counted on continuously, ``θ_l`` turns on continuously past 2π.
+    ``solve = "rolling"`` gives ``θ_l`` from ``theta = θ_o``;
+    ``solve = "on"`` gives ``θ_o`` from ``theta = θ_l`` (``k ≠ 1`` since
+    ``R > 0``).
+    """
+    t = np.asarray(theta, dtype=float)
+    m = np.asarray(theta_m, dtype=float) + beta
+    if solve == "rolling":
+        return (t + k * (m - t) + c,)
+    return ((t - k * m - c) / (1.0 - k),)
+
+
+@op("planetary_arm", kind="scalar")
+def _planetary_arm(theta_f: Array, theta_l: Array, *, tol: Tolerance, u: float, v: float,
+                   w: float) -> tuple[Array]:
+    """The arm of a planet meshing with a first and a last gear: ``θ_A = u θ_F + v θ_L + w``.
+
+    The two contacts' no-slip conditions on the covering, ``θ_p`` eliminated:
+    the train formula ``(ω_L - ω_A)/(ω_F - ω_A) = e`` (Sec. 7.15, Eq. 7.25)
+    integrated, with the constants of the file's posture in ``w``.
+    """
+    return (u * np.asarray(theta_f, dtype=float) + v * np.asarray(theta_l, dtype=float) + w,)

@@ -192,6 +192,30 @@ def _roll_angle(gen: Gen, step: Step) -> None:
     gen.put_scalar(step.outputs[0], gen.sub(gen.add(t, c), gen.mul(k, f"({s} / {n})")))
 
 
+@template("roll_circle_angle")
+def _roll_circle_angle(gen: Gen, step: Step) -> None:
+    # θ_l = θ_o + k (θ_m + β - θ_o) + c on the covering (no slip on a circle, Sec. 2.19);
+    # solved for θ_o when θ_l is the known one: θ_o = (θ_l - k (θ_m + β) - c) / (1 - k)
+    t, tm = gen.scalar(step.inputs[0]), gen.scalar(step.inputs[1])
+    k, beta, c = (gen.num(step.params[n]) for n in ("k", "beta", "c"))
+    psi = gen.let(gen.add(tm, beta), "t")
+    if step.params["solve"] == "rolling":
+        gen.put_scalar(step.outputs[0],
+                       gen.add(gen.add(t, gen.mul(k, gen.sub(psi, t))), c))
+        return
+    den = gen.let(gen.sub("1.0", k), "t")
+    gen.put_scalar(step.outputs[0],
+                   gen.let(f"{gen.sub(gen.sub(t, gen.mul(k, psi)), c)} / {den}", "t"))
+
+
+@template("planetary_arm")
+def _planetary_arm(gen: Gen, step: Step) -> None:
+    # θ_A = u θ_F + v θ_L + w: the train formula integrated on the covering (Eq. 7.25)
+    f, last = gen.scalar(step.inputs[0]), gen.scalar(step.inputs[1])
+    u, v, w = (gen.num(step.params[n]) for n in ("u", "v", "w"))
+    gen.put_scalar(step.outputs[0], gen.add(gen.add(gen.mul(u, f), gen.mul(v, last)), w))
+
+
 def _join_homogeneous(gen: Gen, step: Step) -> None:
     """The line through two points, either of them at infinity: ``p × q``, normalized.
 

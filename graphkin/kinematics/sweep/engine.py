@@ -61,7 +61,9 @@ class _Engine:
         if mech.rolling:
             # away from the file's drive a roller's angle follows its travel (the no-slip
             # condition integrated): a step when its center and line are drawn before it
-            # (roll_angle); otherwise no ruler-and-compass step gives it
+            # (roll_angle), or, for a gear on a circle whose centers one link holds, from
+            # that link's and the other gear's angle (roll_circle_angle); otherwise no
+            # ruler-and-compass step gives it
             from graphkin.kinematics.posture_drives import rolling_travel
 
             travel = rolling_travel(mech, tol)
