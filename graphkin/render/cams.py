@@ -103,6 +103,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     # the stations
     reach = 0.12 * size
     drawn: list[Array] = []          # the ends of what is drawn, to frame the figure
+    numbers: list[tuple[Any, Array]] = []   # each station's number and where it is asked for
     extent = design.face_width(cam)
     face_half = max(extent) if extent else reach
     for i in range(n):
@@ -137,6 +138,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
         lbl = ax.text(anchor[0], anchor[1], str(i), ha="center", va="center", fontsize=7,
                       color=INK)
         lbl.set_gid(f"station-{i}-label")
+        numbers.append((lbl, np.asarray(anchor, dtype=float)))
         if f.kind.roller:
             _circle(ax, (float(t[0]), float(t[1])), f.roller, f"station-{i}-roller", color=col,
                     lw=lw)
@@ -187,6 +189,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     pad = 0.18 * float(np.max(hi - lo))
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    _station_numbers(ax, numbers, 0.02 * size)
     what = {FollowerKind.KNIFE_EDGE: "knife-edge", FollowerKind.ROLLER: "roller",
             FollowerKind.FLAT_FACE: "flat-face", FollowerKind.OSCILLATING_ROLLER:
             "oscillating roller", FollowerKind.OSCILLATING_FLAT_FACE:
@@ -202,6 +205,43 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     sub = fig.text(0.5, 0.03, note, ha="center", va="bottom", fontsize=8, color=GREY)
     sub.set_gid("note")
     return fig
+
+
+def _station_numbers(ax: Any, numbers: list[tuple[Any, Array]], step: float) -> None:
+    """Set each station's number on its ray from O2, off the profile, circles and followers.
+
+    A number stands where it is asked for (inside the prime circle, or beyond an
+    oscillating follower's pivot) when that place is clear; else the nearest clear
+    place along the same ray, in or out by ``step`` at a time, so that it still
+    reads as its station's; it may cross its own station's center line (or arm), the
+    line it names, as the book's numbers stand at their lines' ends (Fig. 6.8), where
+    nothing else is clear.  Before, Ex. 6.3's 9, 10 and 11 sat on the profile
+    where it runs on the prime circle, and Ex. 6.7's 2 and 8 on rollers.
+    """
+    from graphkin.render.clearance import measuring
+
+    if numbers:
+        with measuring(ax.figure) as r:
+            _settle_numbers(ax, numbers, step, r)
+
+
+def _settle_numbers(ax: Any, numbers: list[tuple[Any, Array]], step: float, r: Any) -> None:
+    from graphkin.render.clearance import Obstacles, settle
+
+    obst = Obstacles(ax, r, skip=lambda gid: gid.startswith("station-")
+                     and gid.endswith("-label"))
+    for t, a in numbers:
+        n = float(np.hypot(*a))
+        u = a / n if n > 0 else np.array([0.0, 1.0])
+        v = np.array([-u[1], u[0]])
+        # along the ray, in and out (never nearer O2 than 0.4 of the way: the number stays
+        # on its station's side), then a little to either side of it
+        places = [(*(a + u * step * k + v * step * side), "center", "center")
+                  for side in (0.0, 0.6, -0.6, 1.2, -1.2) for j in range(20)
+                  for k in ((j, -j) if j else (0,))
+                  if n + step * k >= 0.4 * n]
+        i = (t.get_gid() or "").split("-")[1]
+        settle(t, places, obst, r, own=frozenset({f"station-{i}-axis", f"station-{i}-arm"}))
 
 
 def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
@@ -258,6 +298,7 @@ def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
                           arrowprops={"arrowstyle": "-|>", "color": GREY, "lw": 0.5,
                                       "mutation_scale": 6, "shrinkA": 1, "shrinkB": 0})
         ann.set_gid(f"name-{gid}")
+        ann.arrow_patch.set_gid(f"name-{gid}-leader")
         pts.resize((len(pts) + 1, 2), refcheck=False)
         pts[-1] = (at.real, at.imag)
 
@@ -340,10 +381,8 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
     mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(pr.pressure[i])], "o", ms=4,
                        color=HIGHLIGHT)
     mk.set_gid("pressure-max")
-    t = axes[0].annotate(f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
-                         xy=(math.degrees(m.theta), math.degrees(pr.pressure[i])),
-                         xytext=(6, 6), textcoords="offset points", fontsize=7.5)
-    t.set_gid("pressure-max-label")
+    notes = [(axes[0], f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
+              (math.degrees(m.theta), math.degrees(pr.pressure[i])), "pressure-max-label")]
     axes[0].set_ylabel("pressure angle \u03c6, degrees", fontsize=8)
     rho = pr.rho
     ok = np.isfinite(rho)
@@ -354,10 +393,8 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
         r = chk.rho
         mk, = axes[1].plot([math.degrees(r.theta)], [r.value], "o", ms=4, color=HIGHLIGHT)
         mk.set_gid("radius-min")
-        t = axes[1].annotate(f"\u03c1min = {g6(r.value)} {cam.unit}",
-                             xy=(math.degrees(r.theta), r.value), xytext=(6, -12),
-                             textcoords="offset points", fontsize=7.5)
-        t.set_gid("radius-min-label")
+        notes.append((axes[1], f"\u03c1min = {g6(r.value)} {cam.unit}",
+                      (math.degrees(r.theta), r.value), "radius-min-label"))
     for j, cut in enumerate(chk.undercut):
         for a, b in ((cut.start, cut.end),) if cut.end >= cut.start else \
                 ((cut.start, 2 * math.pi), (0.0, cut.end)):
@@ -375,7 +412,45 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
     title = fig.suptitle((cam.title + " \u2014 " if cam.title else "")
                          + "pressure angle and radius of curvature", fontsize=10)
     title.set_gid("title")
+    _notes(fig, notes)
     return fig
+
+
+def _notes(fig: Any, notes: list[tuple[Any, str, tuple[float, float], str]]) -> None:
+    """Set each extreme's note beside its marker, off the curves and the other notes.
+
+    Tried nearest first, eight ways round (:func:`graphkin.render.clearance.ring`);
+    a note set farther than a few points keeps a leader to its marker.  Before,
+    the note stood at a fixed offset, across the curve where it climbs past the
+    marker (Ex. 6.4's |φ|max) or under the axis where the marker is at the
+    bottom (Ex. 6.3's ρmin).
+    """
+    from graphkin.render.clearance import Obstacles, measuring
+
+    with measuring(fig) as r:
+        seen: dict[int, Obstacles] = {}
+        for ax, text, xy, gid in notes:
+            _note(ax, text, xy, gid, seen, r)
+
+
+def _note(ax: Any, text: str, xy: tuple[float, float], gid: str, seen: dict[int, Any],
+          r: Any) -> None:
+    """One extreme's note (see :func:`_notes`)."""
+    from graphkin.render.clearance import Obstacles, ring, settle
+
+    ax.get_xlim(), ax.get_ylim()          # the limits final before anything is measured
+    obst = seen.get(id(ax)) or seen.setdefault(id(ax), Obstacles(ax, r))
+    t = ax.annotate(text, xy=xy, xytext=(6, 6), textcoords="offset points", fontsize=7.5,
+                    arrowprops={"arrowstyle": "-", "color": GREY, "lw": 0.5,
+                                "shrinkA": 1, "shrinkB": 3})
+    t.set_gid(gid)
+    leader = t.arrow_patch
+    assert leader is not None
+    leader.set_gid(f"{gid}-leader")
+    settle(t, ring(), obst, r)
+    x, y = t.get_position()
+    if math.hypot(x, y) < 10:
+        leader.set_visible(False)   # beside its marker: no leader
 
 
 def save_cam_figure(cam: Cam, path: str | Path, *, diagram: str = "layout",
