@@ -178,3 +178,61 @@ def page(root: ET.Element) -> Polygon:
     """The page's rectangle (the viewBox)."""
     x, y, w, h = (float(v) for v in root.get("viewBox", "0 0 0 0").split())
     return shapely_box(x, y, x + w, y + h)
+
+
+def hidden_texts(root: ET.Element) -> list[tuple[str, str, str]]:
+    """Texts painted over by a filled shape drawn after them: (text gid, text, shape gid).
+
+    SVG paints in document order, so a text is hidden where a later path with
+    a fill (a link's white disc, a plate) covers the middle of its box.
+    """
+    notes = {id(el): n for el, n in _text_elements(root)}
+    out: list[tuple[str, str, str]] = []
+    shown: list[Note] = []
+
+    def walk(el: ET.Element, gid: str) -> None:
+        if el.tag == f"{SVG}defs":
+            return
+        if el.tag == f"{SVG}g":
+            gid = el.get("id") or gid
+        if id(el) in notes:
+            shown.append(notes[id(el)])
+            return
+        style = el.get("style", "")
+        if el.tag == f"{SVG}path" and "fill:" in style and "fill: none" not in style:
+            for run in _polylines(el.get("d", "")):
+                if len(run) >= 3:
+                    shape = Polygon(run).buffer(0)
+                    for n in shown:
+                        if shape.contains(n.box.centroid):
+                            out.append((n.gid, n.text, gid))
+        for ch in el:
+            walk(ch, gid)
+
+    walk(root, "")
+    return sorted(set(out))
+
+
+def _text_elements(root: ET.Element) -> list[tuple[ET.Element, Note]]:
+    """Each ``<text>`` element with its :class:`Note` (as :func:`texts` reads them)."""
+    els = []
+
+    def walk(el: ET.Element) -> None:
+        if el.tag == f"{SVG}text":
+            els.append(el)
+            return
+        for ch in el:
+            walk(ch)
+
+    walk(root)
+    found = texts(root)
+    # texts() reads the same elements in the same order, less the rotated and empty ones
+    by_text: dict[str, list[Note]] = {}
+    for n in found:
+        by_text.setdefault(n.text, []).append(n)
+    out = []
+    for el in els:
+        s = "".join(el.itertext()).strip()
+        if by_text.get(s):
+            out.append((el, by_text[s].pop(0)))
+    return out
