@@ -30,6 +30,7 @@ from graphkin.cams.model import Cam, FollowerKind
 from graphkin.render.style import GREY, HIGHLIGHT, INK, rc_context
 from graphkin.render.svg import save
 from graphkin.text import g6
+from graphkin.tolerance import DEFAULT_TOL
 
 __all__ = ["layout_figure", "displacement_figure", "design_figure", "save_cam_figure"]
 
@@ -348,18 +349,59 @@ def displacement_figure(cam: Cam, fig: Any = None) -> Any:
         t = axes[0].text(s, 1.02, name, transform=axes[0].get_xaxis_transform(), ha="center",
                          va="bottom", fontsize=8)
         t.set_gid(f"joint-{j}")
+    names: list[tuple[Any, float, float]] = []
     for j, seg in enumerate(prog.segments):
         mid = float(starts[j] + math.degrees(seg.angle) / 2)
         txt = seg.name or (seg.motion.value if seg.kind != "dwell" else "dwell")
         t = axes[2].text(mid, 0.02, txt, transform=axes[2].get_xaxis_transform(),
                          ha="center", va="bottom", fontsize=6.5, color=GREY)
         t.set_gid(f"segment-label-{j}")
+        names.append((t, float(starts[j]), math.degrees(seg.angle)))
     axes[2].set_xlabel("cam angle \u0398, degrees", fontsize=8)
     axes[2].set_xticks(np.arange(0, 361, 45))
     title = fig.suptitle((cam.title + " — " if cam.title else "") + "displacement diagram",
                          fontsize=10)
     title.set_gid("title")
+    _segment_names(axes[2], names)
     return fig
+
+
+_JOINTS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+_SHORT = {"modified-trapezoid": "mod. trap.", "half-cycloidal": "½ cycl.",
+          "half-harmonic": "½ harm.", "cycloidal": "cycl.", "harmonic": "harm.",
+          "polynomial8": "poly. 8", "parabolic": "parab."}
+"""Shorter names of the standard motions, for a segment too narrow for the whole name."""
+
+
+def _segment_names(ax: Any, names: list[tuple[Any, float, float]]) -> None:
+    """Set each segment's name inside its span of the y'' plot, off the curve and the joints.
+
+    Tried at the foot of the plot, then at its head, from the middle of the segment
+    outward; a segment too narrow for its name takes a shorter one (``cycl.``), then
+    its joints' letters (``DE``, as the letters over plot (a)); before, Ex. 6.8's
+    "parabolic" stood on y'' = -37 and on the jump at 255°,
+    and Ex. 6.2's "CD" on the trough of y''.
+    """
+    from graphkin.render.clearance import Obstacles, measuring, settle
+
+    with measuring(ax.figure) as r:
+        ax.get_xlim(), ax.get_ylim()
+        obst = Obstacles(ax, r, skip=lambda gid: gid.startswith("segment-label-"))
+        for j, (t, start, span) in enumerate(names):
+            mid = start + span / 2
+            places = [(mid + span * f, y, "center", va)
+                      for y, va in ((0.02, "bottom"), (0.98, "top"), (0.5, "center"))
+                      for f in (0.0, -0.125, 0.125, -0.25, 0.25, -0.35, 0.35)]
+            full = t.get_text()
+            # a name wider than its segment: shorter, then the segment's joints ("DE")
+            pair = _JOINTS[j % 26] + _JOINTS[(j + 1) % len(names) % 26]
+            for text in dict.fromkeys([full, _SHORT.get(full, full), pair]):
+                t.set_text(text)
+                if settle(t, places, obst, r, last=False):
+                    break
+            else:
+                t.set_text(full)
+                settle(t, places, obst, r)
 
 
 def design_figure(cam: Cam, fig: Any = None) -> Any:
@@ -374,15 +416,19 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
     deg = np.degrees(th)
     chk = design.check(cam)
     axes = fig.subplots(2, 1, sharex=True, gridspec_kw={"hspace": 0.3})
-    ln, = axes[0].plot(deg, np.degrees(pr.pressure), color=INK, lw=1.2)
+    # a pressure angle within round-off of zero is zero (a circular cam's is 1e-15 rad: drawn
+    # as it came, its plot was noise scaled to fill the axes, its note "8.2e-15°")
+    phi = np.where(np.abs(pr.pressure) <= DEFAULT_TOL.angle, 0.0, pr.pressure)
+    ln, = axes[0].plot(deg, np.degrees(phi), color=INK, lw=1.2)
     ln.set_gid("pressure-angle")
     m = chk.pressure
     i = int(np.argmin(np.abs(np.angle(np.exp(1j * (th - m.theta))))))
-    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(pr.pressure[i])], "o", ms=4,
+    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(phi[i])], "o", ms=4,
                        color=HIGHLIGHT)
     mk.set_gid("pressure-max")
-    notes = [(axes[0], f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
-              (math.degrees(m.theta), math.degrees(pr.pressure[i])), "pressure-max-label")]
+    some = abs(m.value) > DEFAULT_TOL.angle
+    notes = [(axes[0], f"|\u03c6|max = {g6(math.degrees(m.value)) if some else 0}\u00b0",
+              (math.degrees(m.theta), math.degrees(phi[i])), "pressure-max-label")]
     axes[0].set_ylabel("pressure angle \u03c6, degrees", fontsize=8)
     rho = pr.rho
     ok = np.isfinite(rho)

@@ -161,15 +161,17 @@ def _box(t: Any, r: Any) -> Any:
 
 
 def settle(t: Any, places: Sequence[tuple[Any, ...]], obstacles: Obstacles, r: Any,
-           own: frozenset[str] = frozenset()) -> bool:
+           own: frozenset[str] = frozenset(), last: bool = True) -> bool:
     """Set the text ``t`` at the first clear place of ``places``; True when it is clear.
 
     Each place is ``(x, y, ha, va)``: a position in ``t``'s own coordinates
     (for an annotation, its text's offset) and its alignment; ``own`` the gids
     of the lines it names, which it may cross (a station's number on its own
     center line).  With no clear
-    place, ``t`` takes the one covering least.  Its box is then taken.  The
-    text is measured once for each alignment and its box moved with the place.
+    place, ``t`` takes the one covering least (unless ``last`` is False: a
+    shorter text is to be tried; ``t`` is left as it was).  Its box is then
+    taken.  The text is measured once for each alignment and its box moved
+    with the place.
     """
     from shapely import box
 
@@ -197,8 +199,9 @@ def settle(t: Any, places: Sequence[tuple[Any, ...]], obstacles: Obstacles, r: A
         if best is None or c < best[0]:
             best = (c, k)
     assert best is not None
-    put(*places[best[1]])
-    obstacles.take(_box(t, r))
+    if last:
+        put(*places[best[1]])
+        obstacles.take(_box(t, r))
     return False
 
 

@@ -10,6 +10,9 @@ matplotlib's font metrics, every stroked path and marker as polylines.
 * ``cam`` (the layout by inversion): a station's number stood at a fixed place on
   its ray, on the profile where it runs on the prime circle (Ex. 6.3's 9, 10, 11)
   and on a roller (Ex. 6.7's 2 and 8).
+* ``cam -d displacement``: each segment's name stood at the foot of the y'' plot in
+  the middle of its span, on y'' (Ex. 6.8's "parabolic" on y'' = -37 and on the jump
+  at 255°, Ex. 6.2's "CD" on the trough).
 """
 
 from __future__ import annotations
@@ -23,7 +26,7 @@ from hypothesis import HealthCheck, given, settings
 from svg_boxes import page, strokes, texts
 
 from graphkin.cams.parse import load_cam
-from graphkin.render.cams import design_figure, layout_figure
+from graphkin.render.cams import design_figure, displacement_figure, layout_figure
 from graphkin.render.style import rc_context
 from graphkin.render.svg import to_bytes
 
@@ -31,7 +34,7 @@ ROOT = Path(__file__).resolve().parents[2]
 CAMS = [*sorted(ROOT.glob("gallery/cams/*.toml")), ROOT / "examples/cams/fig6_25_undercut.toml"]
 TOUCH = 0.4
 """Points taken off each side of a note's box: glyph boxes that only touch a line are clear."""
-SETTINGS = settings(max_examples=12, deadline=None,
+SETTINGS = settings(max_examples=10, deadline=None,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 
 
@@ -86,6 +89,19 @@ def test_the_design_notes_of_every_shipped_cam_are_clear(path):
     assert not clashes(root, _design_notes)
 
 
+def _segment_names(gid: str) -> bool:
+    return gid.startswith("segment-label-")
+
+
+@pytest.mark.parametrize("path", CAMS, ids=lambda p: f"{p.parent.name}/{p.stem}")
+def test_the_segment_names_of_every_shipped_cam_are_clear(path):
+    cam = load_cam(path).cam
+    root = _svg(displacement_figure(cam))
+    names = [n for n in texts(root) if _segment_names(n.gid)]
+    assert len(names) == len(cam.program.segments)
+    assert not clashes(root, _segment_names)
+
+
 @pytest.mark.parametrize("path", CAMS, ids=lambda p: f"{p.parent.name}/{p.stem}")
 def test_the_station_numbers_of_every_shipped_cam_are_clear(path):
     root = _svg(layout_figure(load_cam(path).cam))
@@ -127,3 +143,31 @@ def test_the_design_notes_of_a_random_cam_are_clear(cam):
 def test_the_station_numbers_of_a_random_cam_are_clear(cam):
     root = _svg(layout_figure(cam))
     assert not clashes(root, _station_numbers)
+
+
+@given(cam=cams())
+@SETTINGS
+def test_the_segment_names_of_a_random_cam_are_clear(cam):
+    root = _svg(displacement_figure(cam))
+    assert not clashes(root, _segment_names)
+
+
+def test_a_circular_cam_has_a_zero_pressure_angle_drawn_as_zero():
+    # Two dwells: the cam is its prime circle, the knife edge on it; φ = 0 all round (Eq. 6.28
+    # with y' = 0).  The analytic φ comes out ~1e-15 rad: drawn as it came, the plot was that
+    # noise scaled to fill its axes ("1e-15" over the axis), the note "|φ|max = 8.2e-15°".
+    import math
+
+    from graphkin.cams import Cam, Follower, FollowerKind, Motion, Program, Segment, Sense
+
+    cam = Cam(Program((Segment(Motion.DWELL, 0.0, math.pi), Segment(Motion.DWELL, 0.0, math.pi))),
+              0.875, Follower(FollowerKind.KNIFE_EDGE), Sense.CCW)
+    fig = design_figure(cam)
+    curve = next(ln for ln in fig.axes[0].lines if ln.get_gid() == "pressure-angle")
+    assert not curve.get_ydata().any()
+    lo, hi = fig.axes[0].get_ylim()
+    assert hi - lo > 1e-3
+    root = _svg(fig)
+    note = next(n for n in texts(root) if n.gid == "pressure-max-label")
+    assert note.text == "|φ|max = 0°"
+    assert not clashes(root, _design_notes)
