@@ -88,3 +88,15 @@ def test_every_link_of_a_random_rolling_arrangement_is_numbered_once_and_seen(rm
     found, hidden = _numbers(mech)
     assert found == {lid: [lid] for lid in mech.links}, found
     assert not hidden, hidden
+
+
+@pytest.mark.parametrize("rim", [20.0 * (1 + 1e-12), 20.0 * (1 - 1e-12)])
+def test_a_rim_point_moved_by_round_off_keeps_the_planet_a_gear(rim):
+    # Q on the planet's pitch circle (radius 20) moved by 1e-12 of it either way: the planet is
+    # still its whole disc, numbered on it, and the arm 2 is seen over it
+    text = (ROOT / "examples" / "planetary_outside.toml").read_text(encoding="utf-8")
+    text = text.replace("Q = [20, 0]", f"Q = [{rim!r}, 0]")
+    assert repr(rim) in text
+    found, hidden = _numbers(graphkin.loads(text))
+    assert found == {"1": ["1"], "2": ["2"], "3": ["3"]}, found
+    assert not hidden, hidden
