@@ -30,6 +30,7 @@ from graphkin.cams.model import Cam, FollowerKind
 from graphkin.render.style import GREY, HIGHLIGHT, INK, rc_context
 from graphkin.render.svg import save
 from graphkin.text import g6
+from graphkin.tolerance import DEFAULT_TOL
 
 __all__ = ["layout_figure", "displacement_figure", "design_figure", "save_cam_figure"]
 
@@ -103,6 +104,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     # the stations
     reach = 0.12 * size
     drawn: list[Array] = []          # the ends of what is drawn, to frame the figure
+    numbers: list[tuple[Any, Array]] = []   # each station's number and where it is asked for
     extent = design.face_width(cam)
     face_half = max(extent) if extent else reach
     for i in range(n):
@@ -137,6 +139,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
         lbl = ax.text(anchor[0], anchor[1], str(i), ha="center", va="center", fontsize=7,
                       color=INK)
         lbl.set_gid(f"station-{i}-label")
+        numbers.append((lbl, np.asarray(anchor, dtype=float)))
         if f.kind.roller:
             _circle(ax, (float(t[0]), float(t[1])), f.roller, f"station-{i}-roller", color=col,
                     lw=lw)
@@ -187,6 +190,7 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     pad = 0.18 * float(np.max(hi - lo))
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
+    _station_numbers(ax, numbers, 0.02 * size)
     what = {FollowerKind.KNIFE_EDGE: "knife-edge", FollowerKind.ROLLER: "roller",
             FollowerKind.FLAT_FACE: "flat-face", FollowerKind.OSCILLATING_ROLLER:
             "oscillating roller", FollowerKind.OSCILLATING_FLAT_FACE:
@@ -202,6 +206,43 @@ def layout_figure(cam: Cam, n: int = 12, fig: Any = None, upto: int | None = Non
     sub = fig.text(0.5, 0.03, note, ha="center", va="bottom", fontsize=8, color=GREY)
     sub.set_gid("note")
     return fig
+
+
+def _station_numbers(ax: Any, numbers: list[tuple[Any, Array]], step: float) -> None:
+    """Set each station's number on its ray from O2, off the profile, circles and followers.
+
+    A number stands where it is asked for (inside the prime circle, or beyond an
+    oscillating follower's pivot) when that place is clear; else the nearest clear
+    place along the same ray, in or out by ``step`` at a time, so that it still
+    reads as its station's; it may cross its own station's center line (or arm), the
+    line it names, as the book's numbers stand at their lines' ends (Fig. 6.8), where
+    nothing else is clear.  Before, Ex. 6.3's 9, 10 and 11 sat on the profile
+    where it runs on the prime circle, and Ex. 6.7's 2 and 8 on rollers.
+    """
+    from graphkin.render.clearance import measuring
+
+    if numbers:
+        with measuring(ax.figure) as r:
+            _settle_numbers(ax, numbers, step, r)
+
+
+def _settle_numbers(ax: Any, numbers: list[tuple[Any, Array]], step: float, r: Any) -> None:
+    from graphkin.render.clearance import Obstacles, settle
+
+    obst = Obstacles(ax, r, skip=lambda gid: gid.startswith("station-")
+                     and gid.endswith("-label"))
+    for t, a in numbers:
+        n = float(np.hypot(*a))
+        u = a / n if n > 0 else np.array([0.0, 1.0])
+        v = np.array([-u[1], u[0]])
+        # along the ray, in and out (never nearer O2 than 0.4 of the way: the number stays
+        # on its station's side), then a little to either side of it
+        places = [(*(a + u * step * k + v * step * side), "center", "center")
+                  for side in (0.0, 0.6, -0.6, 1.2, -1.2) for j in range(20)
+                  for k in ((j, -j) if j else (0,))
+                  if n + step * k >= 0.4 * n]
+        i = (t.get_gid() or "").split("-")[1]
+        settle(t, places, obst, r, own=frozenset({f"station-{i}-axis", f"station-{i}-arm"}))
 
 
 def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
@@ -258,6 +299,7 @@ def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
                           arrowprops={"arrowstyle": "-|>", "color": GREY, "lw": 0.5,
                                       "mutation_scale": 6, "shrinkA": 1, "shrinkB": 0})
         ann.set_gid(f"name-{gid}")
+        ann.arrow_patch.set_gid(f"name-{gid}-leader")
         pts.resize((len(pts) + 1, 2), refcheck=False)
         pts[-1] = (at.real, at.imag)
 
@@ -307,18 +349,59 @@ def displacement_figure(cam: Cam, fig: Any = None) -> Any:
         t = axes[0].text(s, 1.02, name, transform=axes[0].get_xaxis_transform(), ha="center",
                          va="bottom", fontsize=8)
         t.set_gid(f"joint-{j}")
+    names: list[tuple[Any, float, float]] = []
     for j, seg in enumerate(prog.segments):
         mid = float(starts[j] + math.degrees(seg.angle) / 2)
         txt = seg.name or (seg.motion.value if seg.kind != "dwell" else "dwell")
         t = axes[2].text(mid, 0.02, txt, transform=axes[2].get_xaxis_transform(),
                          ha="center", va="bottom", fontsize=6.5, color=GREY)
         t.set_gid(f"segment-label-{j}")
+        names.append((t, float(starts[j]), math.degrees(seg.angle)))
     axes[2].set_xlabel("cam angle \u0398, degrees", fontsize=8)
     axes[2].set_xticks(np.arange(0, 361, 45))
     title = fig.suptitle((cam.title + " — " if cam.title else "") + "displacement diagram",
                          fontsize=10)
     title.set_gid("title")
+    _segment_names(axes[2], names)
     return fig
+
+
+_JOINTS = "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+_SHORT = {"modified-trapezoid": "mod. trap.", "half-cycloidal": "½ cycl.",
+          "half-harmonic": "½ harm.", "cycloidal": "cycl.", "harmonic": "harm.",
+          "polynomial8": "poly. 8", "parabolic": "parab."}
+"""Shorter names of the standard motions, for a segment too narrow for the whole name."""
+
+
+def _segment_names(ax: Any, names: list[tuple[Any, float, float]]) -> None:
+    """Set each segment's name inside its span of the y'' plot, off the curve and the joints.
+
+    Tried at the foot of the plot, then at its head, from the middle of the segment
+    outward; a segment too narrow for its name takes a shorter one (``cycl.``), then
+    its joints' letters (``DE``, as the letters over plot (a)); before, Ex. 6.8's
+    "parabolic" stood on y'' = -37 and on the jump at 255°,
+    and Ex. 6.2's "CD" on the trough of y''.
+    """
+    from graphkin.render.clearance import Obstacles, measuring, settle
+
+    with measuring(ax.figure) as r:
+        ax.get_xlim(), ax.get_ylim()
+        obst = Obstacles(ax, r, skip=lambda gid: gid.startswith("segment-label-"))
+        for j, (t, start, span) in enumerate(names):
+            mid = start + span / 2
+            places = [(mid + span * f, y, "center", va)
+                      for y, va in ((0.02, "bottom"), (0.98, "top"), (0.5, "center"))
+                      for f in (0.0, -0.125, 0.125, -0.25, 0.25, -0.35, 0.35)]
+            full = t.get_text()
+            # a name wider than its segment: shorter, then the segment's joints ("DE")
+            pair = _JOINTS[j % 26] + _JOINTS[(j + 1) % len(names) % 26]
+            for text in dict.fromkeys([full, _SHORT.get(full, full), pair]):
+                t.set_text(text)
+                if settle(t, places, obst, r, last=False):
+                    break
+            else:
+                t.set_text(full)
+                settle(t, places, obst, r)
 
 
 def design_figure(cam: Cam, fig: Any = None) -> Any:
@@ -333,17 +416,19 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
     deg = np.degrees(th)
     chk = design.check(cam)
     axes = fig.subplots(2, 1, sharex=True, gridspec_kw={"hspace": 0.3})
-    ln, = axes[0].plot(deg, np.degrees(pr.pressure), color=INK, lw=1.2)
+    # a pressure angle within round-off of zero is zero (a circular cam's is 1e-15 rad: drawn
+    # as it came, its plot was noise scaled to fill the axes, its note "8.2e-15°")
+    phi = np.where(np.abs(pr.pressure) <= DEFAULT_TOL.angle, 0.0, pr.pressure)
+    ln, = axes[0].plot(deg, np.degrees(phi), color=INK, lw=1.2)
     ln.set_gid("pressure-angle")
     m = chk.pressure
     i = int(np.argmin(np.abs(np.angle(np.exp(1j * (th - m.theta))))))
-    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(pr.pressure[i])], "o", ms=4,
+    mk, = axes[0].plot([math.degrees(m.theta)], [math.degrees(phi[i])], "o", ms=4,
                        color=HIGHLIGHT)
     mk.set_gid("pressure-max")
-    t = axes[0].annotate(f"|\u03c6|max = {g6(math.degrees(m.value))}\u00b0",
-                         xy=(math.degrees(m.theta), math.degrees(pr.pressure[i])),
-                         xytext=(6, 6), textcoords="offset points", fontsize=7.5)
-    t.set_gid("pressure-max-label")
+    some = abs(m.value) > DEFAULT_TOL.angle
+    notes = [(axes[0], f"|\u03c6|max = {g6(math.degrees(m.value)) if some else 0}\u00b0",
+              (math.degrees(m.theta), math.degrees(phi[i])), "pressure-max-label")]
     axes[0].set_ylabel("pressure angle \u03c6, degrees", fontsize=8)
     rho = pr.rho
     ok = np.isfinite(rho)
@@ -354,10 +439,8 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
         r = chk.rho
         mk, = axes[1].plot([math.degrees(r.theta)], [r.value], "o", ms=4, color=HIGHLIGHT)
         mk.set_gid("radius-min")
-        t = axes[1].annotate(f"\u03c1min = {g6(r.value)} {cam.unit}",
-                             xy=(math.degrees(r.theta), r.value), xytext=(6, -12),
-                             textcoords="offset points", fontsize=7.5)
-        t.set_gid("radius-min-label")
+        notes.append((axes[1], f"\u03c1min = {g6(r.value)} {cam.unit}",
+                      (math.degrees(r.theta), r.value), "radius-min-label"))
     for j, cut in enumerate(chk.undercut):
         for a, b in ((cut.start, cut.end),) if cut.end >= cut.start else \
                 ((cut.start, 2 * math.pi), (0.0, cut.end)):
@@ -375,7 +458,45 @@ def design_figure(cam: Cam, fig: Any = None) -> Any:
     title = fig.suptitle((cam.title + " \u2014 " if cam.title else "")
                          + "pressure angle and radius of curvature", fontsize=10)
     title.set_gid("title")
+    _notes(fig, notes)
     return fig
+
+
+def _notes(fig: Any, notes: list[tuple[Any, str, tuple[float, float], str]]) -> None:
+    """Set each extreme's note beside its marker, off the curves and the other notes.
+
+    Tried nearest first, eight ways round (:func:`graphkin.render.clearance.ring`);
+    a note set farther than a few points keeps a leader to its marker.  Before,
+    the note stood at a fixed offset, across the curve where it climbs past the
+    marker (Ex. 6.4's |φ|max) or under the axis where the marker is at the
+    bottom (Ex. 6.3's ρmin).
+    """
+    from graphkin.render.clearance import Obstacles, measuring
+
+    with measuring(fig) as r:
+        seen: dict[int, Obstacles] = {}
+        for ax, text, xy, gid in notes:
+            _note(ax, text, xy, gid, seen, r)
+
+
+def _note(ax: Any, text: str, xy: tuple[float, float], gid: str, seen: dict[int, Any],
+          r: Any) -> None:
+    """One extreme's note (see :func:`_notes`)."""
+    from graphkin.render.clearance import Obstacles, ring, settle
+
+    ax.get_xlim(), ax.get_ylim()          # the limits final before anything is measured
+    obst = seen.get(id(ax)) or seen.setdefault(id(ax), Obstacles(ax, r))
+    t = ax.annotate(text, xy=xy, xytext=(6, 6), textcoords="offset points", fontsize=7.5,
+                    arrowprops={"arrowstyle": "-", "color": GREY, "lw": 0.5,
+                                "shrinkA": 1, "shrinkB": 3})
+    t.set_gid(gid)
+    leader = t.arrow_patch
+    assert leader is not None
+    leader.set_gid(f"{gid}-leader")
+    settle(t, ring(), obst, r)
+    x, y = t.get_position()
+    if math.hypot(x, y) < 10:
+        leader.set_visible(False)   # beside its marker: no leader
 
 
 def save_cam_figure(cam: Cam, path: str | Path, *, diagram: str = "layout",

@@ -17,6 +17,7 @@ symbols of links, pins, sliders and the frame), Figs. 2.14 and 3.5.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import shapely
@@ -26,6 +27,7 @@ from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from graphkin.mechanisms.model import FRAME, Body, Mechanism, Rolling, Slider, Slot
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, point_text, safe_id
 from graphkin.render.sources import Source
+from graphkin.tolerance import DEFAULT_TOL
 
 __all__ = ["paint_mechanism", "paint_bodies", "body_world", "link_points", "mechanism_extent",
            "BAR_HALF"]
@@ -168,6 +170,10 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
     centroid = np.mean([np.asarray(sol.position(n), dtype=float) for n in mech.point_names],
                        axis=0)
 
+    # the rollers' discs drawn over the links (a roller on a link): each link's number is
+    # set where the others' discs leave its bar seen
+    discs = _other_discs(mech, sol, is_known)
+
     # ---- moving links ------------------------------------------------
     rods: set[str] = set()
     for lid in mech.moving:
@@ -227,7 +233,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             line = (LineString([tuple(p) for p in arr]).convex_hull if len(arr) > 1
                     else shapely.union_all([distinct, *bars]).convex_hull)
             c = np.asarray(line.centroid.coords[0])
-            _number(panel, g, lid, c, pre, gap=BAR_HALF + 0.03)
+            _number(panel, g, lid, _beside_discs(line, c, discs.get(lid)), pre,
+                    gap=BAR_HALF + 0.03)
 
     paint_bodies(src, panel, known)
 
@@ -287,10 +294,15 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         if not is_known(r.center):
             continue
         c = np.asarray(sol.position(r.center, r.link), dtype=float)
-        g = panel.group(f"{pre}roller-{r.link}", 1.6, key=f"link {r.link}")
+        whole = _whole_disc(mech, sol, r)
+        # a gear (a roller that is its whole link: a planet, its center and a point of its
+        # rim) is drawn under the links, the frame and the pins, as the arm that carries it
+        # is drawn over it; a roller on a link (a follower's) over its link's bar
+        g = panel.group(f"{pre}roller-{r.link}", GEAR_Z if whole else 1.6,
+                        key=f"link {r.link}")
         disc = Point(float(c[0]), float(c[1])).buffer(r.radius, quad_segs=24)
         g.items.append(Item("polygon", _ring(disc), "link", key=f"roller {r.link}"))
-        if len(mech.links[r.link].points) <= 1:
+        if whole:   # numbered on its disc, not beside its bar inside it
             _number(panel, g, r.link, c + np.array([0.0, 0.6 * r.radius]), pre, gap=0.02)
         lw = _line_world(src, r)
         if lw is not None and r.on == FRAME:
@@ -460,6 +472,49 @@ def _has_outline(src: Source, lid: str) -> bool:
     pts = link_points(src, lid)
     hull = MultiPoint([tuple(p) for p in pts.values()]).convex_hull
     return hull.geom_type != "Point"
+
+
+GEAR_Z = 0.75
+"""Where a gear's disc is drawn: under the frame (0.8), the links (1.0) and the pins (4.0)."""
+
+
+def _whole_disc(mech: Mechanism, sol: Any, r: Rolling) -> bool:
+    """True when every point of the rolling link lies on or inside its circle (a gear)."""
+    c = np.asarray(sol.position(r.center, r.link), dtype=float)
+    return all(float(np.hypot(*(np.asarray(sol.position(n, r.link), dtype=float) - c)))
+               - r.radius <= DEFAULT_TOL.length(r.radius) for n in mech.links[r.link].points)
+
+
+def _other_discs(mech: Mechanism, sol: Any, is_known: Any) -> dict[str, Any]:
+    """For each link, the union of the rollers' discs drawn over it (world coordinates).
+
+    A gear's disc is drawn under the links (:data:`GEAR_Z`); a roller on a link over them.
+    """
+    rollers = [(r.link, Point(*np.asarray(sol.position(r.center, r.link), dtype=float)[:2])
+                .buffer(r.radius, quad_segs=24)) for r in mech.rolling
+               if is_known(r.center) and not _whole_disc(mech, sol, r)]
+    return {lid: shapely.union_all([d for k, d in rollers if k != lid])
+            for lid in mech.moving if any(k != lid for k, _ in rollers)}
+
+
+def _beside_discs(line: Any, c: np.ndarray, discs: Any) -> np.ndarray:
+    """The middle of a bar, else (under another link's disc) the middle of its longest part seen.
+
+    Examples
+    --------
+    >>> bar = LineString([(0, 0), (7, 0)])          # an arm O-P, the planet's disc r = 4 at P
+    >>> _beside_discs(bar, np.array([3.5, 0.0]), Point(7, 0).buffer(4.0)).round(6).tolist()
+    [1.5, 0.0]
+    """
+    if discs is None or discs.is_empty or not discs.contains(Point(*c)):
+        return c
+    seen = line.difference(discs)
+    parts = list(getattr(seen, "geoms", [seen]))
+    parts = [q for q in parts if not q.is_empty and q.length > 0]
+    if not parts:
+        return c
+    longest = max(parts, key=lambda q: q.length)
+    return np.asarray(longest.interpolate(0.5, normalized=True).coords[0], dtype=float)
 
 
 def _number(panel: Panel, g: Group, lid: str, anchor: np.ndarray, pre: str,

@@ -75,8 +75,10 @@ FAR_RESULT = 4.0
 """Results and given points are kept on the sheet up to this many mechanism sizes away
 (beyond, an arrow at the edge points to them)."""
 FAR_RESULT_PAPER = 1.5
-"""On a handout page's instant-center panel (small): a center farther than this is an arrow at
-the edge, so that one far center does not shrink the mechanism to a corner of its panel."""
+"""On an instant-center panel (a handout page's and a sheet's alike): a center farther than this
+is an arrow at the edge, so that one far center does not shrink the mechanism to a corner of its
+panel (the Stephenson III six-bar's I26, 3.4 mechanism sizes away, once left it 1.2 in wide and
+its letters in a crowd)."""
 
 
 @dataclass
@@ -275,7 +277,7 @@ def build_sheet(src: Source, diagram: str, *, upto: int | None = None,
     big = max_inches or (4.2 if many else 5.0)
     for p in panels:
         pts = _content(src, p, painters,
-                       FAR_RESULT_PAPER if paper and p.name == "centers" else FAR_RESULT)
+                       FAR_RESULT_PAPER if p.name == "centers" else FAR_RESULT)
         if not pts:
             pts = [np.zeros(2)]
         arr = np.array(pts)
