@@ -30,6 +30,7 @@ from graphkin.mechanisms.model import (
     Slot,
 )
 from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, label_like
+from graphkin.mechanisms.zero_length import check_zero_lengths
 from graphkin.units import length_factor, parse_rate
 
 __all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE", "LABEL_PREFIXES", "LINK_SYMBOLS",
@@ -312,6 +313,7 @@ class _Parser:
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)
+        check_zero_lengths(mech, self.fail)
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")

@@ -1,0 +1,62 @@
+"""Refuse a moving link of zero length between two of its joints (Sec. 1.4).
+
+A link is a rigid body that carries its joints at fixed distances (Sec. 1.4,
+"links"); a binary link whose two pins stand at one place has no length: it
+transmits no motion (a crank of zero length turns, by its drive, and nothing
+moves), and it is the same as one pin joining the links it would join.  Such a
+file is a slip (``B = [0, 0]`` for ``B = [4, 0]``), so it is refused in one line.
+
+What stays allowed, because a zero length there means something to the book's
+user (docs/formats/mechanism.md, "Zero lengths"):
+
+* two **frame** pivots at one place: coaxial bearings (an arm turning about the
+  sun's shaft, Sec. 10.5);
+* a point of a link at a pin that is not itself a joint (a coupler point at
+  ``B``, a slider's block point at its pin): a point, not a length;
+* a slider's line through its crank's pivot: the in-line slider-crank (offset 0);
+* a rolling circle's center at its link's pivot: a gear on its shaft.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+from graphkin.errors import InputError
+from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.tolerance import is_zero
+
+
+def check_zero_lengths(mech: Mechanism, fail: Callable[[str | None, str], InputError]) -> None:
+    """Raise ``fail(key, reason)`` for the first moving link with two pins at one place.
+
+    Parameters
+    ----------
+    mech : Mechanism
+        The mechanism as read from the file (before cams are replaced).
+    fail : callable
+        The parser's ``fail(key, message)``, which names the file.
+
+    Raises
+    ------
+    InputError
+        ``links.<k>.<P>: pins <Q> and <P> of link <k> are at one place ...``.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 1.4 (links and joints).
+    """
+    scale = mech.size
+    for lid, link in mech.links.items():
+        if lid == FRAME:
+            continue
+        joints = [p.name for p in mech.pins if lid in p.links and p.name in link.points]
+        for i, a in enumerate(joints):
+            for b in joints[i + 1:]:
+                (xa, ya), (xb, yb) = link.points[a], link.points[b]
+                if is_zero(math.hypot(xb - xa, yb - ya), scale):
+                    raise fail(f"links.{lid}.{b}",
+                               f"pins {a} and {b} of link {lid} are at one place: a link "
+                               f"of zero length between its joints moves nothing (give "
+                               f"{b} its place on link {lid}, or join the links by one "
+                               "pin name)")
