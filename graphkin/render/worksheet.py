@@ -19,8 +19,11 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (the velocity polygon), Sec. 4.3
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
+
+import numpy as np
 
 from graphkin.render.worksheet_layout import MARKER_MM, Layout, marker_bits
 
@@ -88,16 +91,31 @@ def _givens(sol: Any, diagram: str) -> str:
     """The inputs' rates the student starts from, as the book states a problem.
 
     ``ω2 = 10 rad/s ccw`` (and ``α2`` for the acceleration polygon), or a
-    slider's ``ds4 = 5 in/s``; rates the file gives for another link
-    (``[rates]``) likewise.  Without them no polygon can be drawn.
+    slider's point velocity as the book writes it, ``V_C = 10000 mm/s ∠180.00°``
+    (Example 3.2: "driven by slider 4 at V_C = -10 î m/s"), and on a moving link
+    the velocity relative to it, ``V_A3/2`` (Sec. 3.5; Example 4.4); rates the
+    file gives for another link (``[rates]``) likewise.  Without them no polygon
+    can be drawn.
     """
-    from graphkin.text import g6, sense
+    from graphkin.text import g6, polar, sense
 
     mech = sol.mechanism
     length = mech.length_unit
     parts = []
     wanted = (0,) if diagram == "velocity" else (0, 1)
     for d in mech.drives:
+        if d.kind == "position" and d.slider is not None:
+            sl = d.slider
+            # the slide's direction in the frame at this posture: θ_on + φ (Sec. 2.8)
+            t = float(np.asarray(sol.angle_rad(sl.on), dtype=float)) + sl.direction_angle
+            rel = "" if sl.on == "1" else f"{sl.link}/{sl.on}"
+            for i in wanted:
+                v = d.rate if i == 0 else d.rate2
+                if v is not None:
+                    vec = (v * math.cos(t), v * math.sin(t))
+                    unit = f"{length}/s" if i == 0 else f"{length}/s²"
+                    parts.append(f"{'VA'[i]}_{sl.point}{rel} = {polar(vec, unit)}")
+            continue
         angle = d.kind in ("angle", "relative")
         units = ("rad/s", "rad/s²") if angle else (f"{length}/s", f"{length}/s²")
         for i in wanted:
