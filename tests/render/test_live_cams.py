@@ -26,7 +26,7 @@ import pytest
 from cam_strategies import cam_toml, cams
 from hypothesis import Phase, assume, given, settings
 from hypothesis import strategies as st
-from live_edit import same_curvature
+from live_edit import homogeneous, same_curvature
 from strategies import examples
 
 import graphkin
@@ -95,7 +95,7 @@ def _same_as_solve(browser, tmp_path: Path, mech: graphkin.Mechanism, state: dic
     if state["centers"] is not None:
         ic = instant_centers(sol)
         for lab in D["centers"]["labels"]:
-            _same_center(state["centers"][lab], ic.values[lab], size, lab)
+            _same_center(homogeneous(state["centers"][lab]), ic.values[lab], size, lab)
     if state["curvature"] is not None:
         lc = curvature(sol)[D["curvature"]["link"]]
         same_curvature(D, state["curvature"], lc.values, size, steps=lc.construction.steps)
