@@ -6,6 +6,7 @@ the dotted key and the reason, so the CLI can print one line and exit 2.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from pathlib import Path
@@ -29,7 +30,7 @@ from graphkin.mechanisms.model import (
     Slider,
     Slot,
 )
-from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, label_like
+from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, contact_names, label_like
 from graphkin.mechanisms.zero_length import check_zero_lengths
 from graphkin.units import length_factor, parse_rate
 
@@ -295,6 +296,9 @@ class _Parser:
                 slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
 
         rolling = self.rolling_entries(len(slots), sliders)
+        names = contact_names(len(rolling), set(owners))
+        rolling = [(dataclasses.replace(r, contact_name=n), sl) for (r, sl), n in
+                   zip(rolling, names)]
         slots += [r_slot for _, r_slot in rolling if r_slot is not None]
         drives = self.drives(pins, sliders)
         rates = self.rates_table(sliders)
