@@ -17,6 +17,7 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, design_file, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.cam_joint import with_cams
+from graphkin.mechanisms.checks import check_rates_given, check_zero_lengths
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -31,7 +32,6 @@ from graphkin.mechanisms.model import (
     Slot,
 )
 from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, contact_names, label_like
-from graphkin.mechanisms.zero_length import check_zero_lengths
 from graphkin.units import length_factor, parse_rate
 
 __all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE", "LABEL_PREFIXES", "LINK_SYMBOLS",
@@ -318,6 +318,7 @@ class _Parser:
         self.check_mobility(mech)
         self.check_range(mech)
         check_zero_lengths(mech, self.fail)
+        check_rates_given(mech, self.fail)
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")

@@ -48,6 +48,12 @@ CASES = [
      "drive.alpha", "is not an angular acceleration (give a unit like rad/s^2)"),
     ("length for an angle", FOURBAR.replace("angle = 120", 'angle = "30 mm"'),
      "drive.angle", "is not an angle (give a unit like deg)"),
+    # audit 8: alpha without omega was silently dropped (no accelerations, no word)
+    ("alpha without omega", FOURBAR.replace("angle = 120", "angle = 120\nalpha = 5"),
+     "drive.alpha", "alpha is given without omega"),
+    ("acceleration without velocity", SLIDER.replace("link = 2\nangle = 45",
+                                                     "link = 4\nposition = 120\nacceleration = 2"),
+     "drive.acceleration", "acceleration is given without velocity"),
 ]
 
 

@@ -1,4 +1,7 @@
-"""Refuse a moving link of zero length between two of its joints (Sec. 1.4).
+"""Checks of a mechanism read from a file beyond its keys: zero lengths, rates half given.
+
+Zero lengths (Sec. 1.4)
+-----------------------
 
 A link is a rigid body that carries its joints at fixed distances (Sec. 1.4,
 "links"); a binary link whose two pins stand at one place has no length: it
@@ -15,6 +18,12 @@ user (docs/formats/mechanism.md, "Zero lengths"):
   ``B``, a slider's block point at its pin): a point, not a length;
 * a slider's line through its crank's pivot: the in-line slider-crank (offset 0);
 * a rolling circle's center at its link's pivot: a gear on its shaft.
+
+Rates half given (Secs. 4.2-4.4)
+--------------------------------
+An angular acceleration without the angular velocity (``alpha`` without
+``omega``) cannot be used: every normal component of the acceleration polygon
+needs ω.  It was silently left out (no accelerations reported); it is refused.
 """
 
 from __future__ import annotations
@@ -60,3 +69,35 @@ def check_zero_lengths(mech: Mechanism, fail: Callable[[str | None, str], InputE
                                f"of zero length between its joints moves nothing (give "
                                f"{b} its place on link {lid}, or join the links by one "
                                "pin name)")
+
+
+#: The names of a drive's first and second rates in the file, by the drive's kind.
+_RATE_KEYS = {"angle": ("omega", "alpha"), "relative": ("omega", "alpha"),
+              "position": ("velocity", "acceleration"), "x": ("vx", "ax"), "y": ("vy", "ay")}
+
+
+def check_rates_given(mech: Mechanism, fail: Callable[[str | None, str], InputError]) -> None:
+    """Refuse a drive (or ``[rates]``) that gives the second rate without the first.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    fail : callable
+        The parser's ``fail(key, message)``.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Secs. 4.2-4.4 (the acceleration polygon needs ω).
+    """
+    for d in mech.drives:
+        first, second = _RATE_KEYS.get(d.kind, ("omega", "alpha"))
+        if d.rate is None and d.rate2 is not None:
+            raise fail(f"{d.key}.{second}", f"{second} is given without {first}: the "
+                       f"accelerations need {first} too (write {first} = 0 for a drive "
+                       "momentarily at rest)")
+    r = mech.rates
+    if r is not None and r.rate is None and r.rate2 is not None:
+        first, second = ("velocity", "acceleration") if r.kind == "position" \
+            else ("omega", "alpha")
+        raise fail(f"rates.{second}", f"{second} is given without {first}: the "
+                   f"accelerations need {first} too")
