@@ -97,7 +97,7 @@ def _givens(sol: Any, diagram: str) -> str:
     file gives for another link (``[rates]``) likewise.  Without them no polygon
     can be drawn.
     """
-    from graphkin.text import g6, polar, sense
+    from graphkin.text import g6, sense
 
     mech = sol.mechanism
     length = mech.length_unit
@@ -105,16 +105,8 @@ def _givens(sol: Any, diagram: str) -> str:
     wanted = (0,) if diagram == "velocity" else (0, 1)
     for d in mech.drives:
         if d.kind == "position" and d.slider is not None:
-            sl = d.slider
-            # the slide's direction in the frame at this posture: θ_on + φ (Sec. 2.8)
-            t = float(np.asarray(sol.angle_rad(sl.on), dtype=float)) + sl.direction_angle
-            rel = "" if sl.on == "1" else f"{sl.link}/{sl.on}"
-            for i in wanted:
-                v = d.rate if i == 0 else d.rate2
-                if v is not None:
-                    vec = (v * math.cos(t), v * math.sin(t))
-                    unit = f"{length}/s" if i == 0 else f"{length}/s²"
-                    parts.append(f"{'VA'[i]}_{sl.point}{rel} = {polar(vec, unit)}")
+            parts += [_slide(sol, d.slider, i, v) for i, v in enumerate((d.rate, d.rate2))
+                      if i in wanted and v is not None]
             continue
         angle = d.kind in ("angle", "relative")
         units = ("rad/s", "rad/s²") if angle else (f"{length}/s", f"{length}/s²")
@@ -125,7 +117,11 @@ def _givens(sol: Any, diagram: str) -> str:
             text = f"{d.rate_labels[i]} = {g6(abs(v) if angle else v)} {units[i]}"
             parts.append(f"{text} {sense(v)}".rstrip() if angle else text)
     r = mech.rates
-    if r is not None:
+    slid = [sl for sl in mech.sliders if r is not None and sl.link == r.link]
+    if r is not None and r.kind == "position" and slid:
+        parts += [_slide(sol, slid[0], i, v) for i, v in enumerate((r.rate, r.rate2))
+                  if i in wanted and v is not None]
+    elif r is not None:
         for i, v in enumerate((r.rate, r.rate2)[:len(wanted)]):
             if v is not None:
                 name = ("ω", "α")[i] + r.link if r.kind != "position" else ("v", "a")[i] + r.link
@@ -142,6 +138,22 @@ def _givens(sol: Any, diagram: str) -> str:
                   lambda m: sub_digits(m[1] + m[2]) + (sub_digits("/" + m[3][1:]) if m[3] else ""),
                   "Given " + ", ".join(parts) + ".")
     return text if parts else ""
+
+
+def _slide(sol: Any, sl: Any, i: int, v: float) -> str:
+    """A slider's given rate as the book gives it: its point's velocity or acceleration.
+
+    ``i = 0`` the velocity along the slide, ``V_C = 10000 mm/s ∠180.00°`` (Example
+    3.2), ``i = 1`` the acceleration; relative to the link it slides on when that link
+    moves (``V_A3/2``, Sec. 3.5).
+    """
+    from graphkin.text import polar
+
+    # the slide's direction in the frame at this posture: θ_on + φ (Sec. 2.8)
+    t = float(np.asarray(sol.angle_rad(sl.on), dtype=float)) + sl.direction_angle
+    rel = "" if sl.on == "1" else f"{sl.link}/{sl.on}"
+    unit = f"{sol.mechanism.length_unit}/s" + ("" if i == 0 else "²")
+    return f"{'VA'[i]}_{sl.point}{rel} = {polar((v * math.cos(t), v * math.sin(t)), unit)}"
 
 
 def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:

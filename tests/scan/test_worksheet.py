@@ -187,3 +187,12 @@ def test_worksheet_states_a_slider_drive_in_the_books_words(tmp_path: Path,
                  "-o", str(out)]) == 0
     text = out.read_text()
     assert "V_A3/2 = 30000 mm/s ∠30.00°" in text and "ds3" not in text
+    # the same rates given in [rates] of the slider, not in [drive]: the same words
+    spec = (examples / "ex3_2_slider_driven.toml").read_text()
+    for key in ('velocity = "-10 m/s"', "acceleration = 0"):
+        spec = spec.replace(key + "\n", "")
+    spec += '\n[rates]\nlink = 4\nvelocity = "-10 m/s"\nacceleration = 0\n'
+    (tmp_path / "rates.toml").write_text(spec)
+    assert main(["worksheet", str(tmp_path / "rates.toml"), "-d", "acceleration",
+                 "-o", str(tmp_path / "rates.svg")]) == 0
+    assert "Given V_C = 10000 mm/s ∠180.00°, A_C = 0 mm/s²." in (tmp_path / "rates.svg").read_text()
