@@ -138,7 +138,7 @@ arm = 3
     (TRAIN.replace("arm = 3\n[[mesh]]", "arms = 3\n[[mesh]]"), "mesh[0].arms",
      "did you mean 'arm'"),
     (TRAIN.replace("gears = [2, 4]", "gears = [2, 9]"), "mesh[0].gears", "no size"),
-    (TRAIN.replace('"100 rev/min ccw"', '"100 kg"'), "speeds.2", "omega"),
+    (TRAIN.replace('"100 rev/min ccw"', '"100 kg"'), "speeds.2", "not an angular velocity"),
 ])
 def test_bad_train_file(tmp_path, capsys, text, key, reason):
     path = tmp_path / "train.toml"
