@@ -39,6 +39,16 @@ _BASE = {
     "angle": "deg",
 }
 
+#: What each kind of rate is, in the user's words, for the messages.
+_WHAT = {
+    "omega": "an angular velocity",
+    "alpha": "an angular acceleration",
+    "velocity": "a velocity",
+    "acceleration": "an acceleration",
+    "length": "a length",
+    "angle": "an angle",
+}
+
 
 @lru_cache(maxsize=1)
 def registry() -> Any:
@@ -265,7 +275,8 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
         else:
             mag = float(q.to(target).magnitude)
     except Exception as exc:
-        raise ValueError(f"{value!r} is not a {kind} (expected units like {_BASE[kind]})") \
+        like = _BASE[kind].replace("L", length_unit).replace("**2", "^2")
+        raise ValueError(f"{value!r} is not {_WHAT[kind]} (give a unit like {like})") \
             from exc
     if not math.isfinite(mag):
         raise ValueError(f"{value!r} is not finite")

@@ -13,7 +13,7 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
-from live_edit import same_curvature
+from live_edit import homogeneous, same_curvature
 
 import graphkin
 from graphkin.cams import Cam
@@ -79,7 +79,7 @@ def same_as_solve(browser, tmp_path: Path, mech: graphkin.Mechanism, state: dict
     if state["centers"] is not None:
         ic = instant_centers(sol)
         for lab in D["centers"]["labels"]:
-            same_center(state["centers"][lab], ic.values[lab], size, lab)
+            same_center(homogeneous(state["centers"][lab]), ic.values[lab], size, lab)
     if state["curvature"] is not None:
         lc = curvature(sol)[D["curvature"]["link"]]
         same_curvature(D, state["curvature"], lc.values, size, steps=lc.construction.steps)

@@ -26,6 +26,19 @@ def edited(data: dict[str, Any], drive: float, r: dict[str, Any]) -> dict[str, A
     return f
 
 
+def homogeneous(entry: Any) -> Any:
+    """A center of the page's ``state()`` (``{position}`` or ``{direction}``, the JSON's shape)
+    as a homogeneous point ``[x, y, 1]`` or ``[dx, dy, 0]``; None stays None."""
+    if entry is None:
+        return None
+    assert set(entry) in ({"position"}, {"direction"}), entry
+    if "direction" in entry:
+        dx, dy = entry["direction"]
+        assert abs(math.hypot(dx, dy) - 1.0) < 1e-12, entry  # a unit vector
+        return [dx, dy, 0.0]
+    return [*entry["position"], 1.0]
+
+
 def same_center(got: Any, ref: Any, lab: str, atol: float = 1e-8) -> None:
     """Two points of the projective plane are the same: unit vectors equal up to sign."""
     import numpy as np

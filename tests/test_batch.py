@@ -221,3 +221,48 @@ def test_full_turns_are_grashof_crank_rockers(bench: graphkin.Mechanism) -> None
     clear = np.abs(margin) > 0.05
     np.testing.assert_array_equal(b.always_assembles[clear], (margin > 0)[clear])
     assert 50 < int(clear.sum()) and 0 < int(b.always_assembles.sum()) < len(b)
+
+
+def test_a_tilted_slider_line_against_the_closed_form() -> None:
+    """Tilting a slider's line (moving one of its points) is followed design by design.
+
+    Defect of the session-7 audit: the tilt was refused (the slider's angle
+    θ4 = θ1 + φ is an ``add_angle`` step whose offset φ is the line's direction),
+    though this page says the line moves with a moved point.  Independent closed
+    form: the crank pin B = r (cos θ2, sin θ2); the line through S with direction
+    u = (cos φ, sin φ); C = S + s u with |C - B| = l, ahead along u:
+    s = u·(B - S) + sqrt(l² - |(B - S) - (u·(B - S)) u|²), and θ4 = φ.
+    """
+    mech = graphkin.from_dict({
+        "links": {"1": {"A": [0, 0], "S": [0, -20], "T": [100, -20]},
+                  "2": {"A": [0, 0], "B": [50, 0]},
+                  "3": {"B": [0, 0], "C": [140, 0]},
+                  "4": {"C": [0, 0]}},
+        "sliders": [{"link": 4, "on": 1, "point": "C", "line": ["S", "T"]}],
+        "drive": {"link": 2, "angle": 45, "omega": 10}})
+    tips = np.array([(100.0, -20.0), (100.0, 0.0), (100.0, -40.0), (60.0, 10.0)])
+    b = batch(mech, {"links.1.T": tips}, count=36)
+    th2 = np.radians(b.columns["drive"])                           # (M, N), degrees in the CSV
+    bx, by = 50.0 * np.cos(th2), 50.0 * np.sin(th2)
+    phi = np.arctan2(tips[:, 1] + 20.0, tips[:, 0])[:, None]       # S = (0, -20)
+    ux, uy = np.cos(phi), np.sin(phi)
+    dx, dy = bx - 0.0, by + 20.0
+    along = ux * dx + uy * dy
+    s = along + np.sqrt(140.0**2 - ((dx - along * ux)**2 + (dy - along * uy)**2))
+    np.testing.assert_allclose(b.columns["x_C"], 0.0 + s * ux, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(b.columns["y_C"], -20.0 + s * uy, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(b.columns["angle_4"], np.degrees(np.broadcast_to(phi, th2.shape)),
+                               atol=1e-9)
+    for i in range(len(tips)):  # and each design is its own sweep
+        _same(b, i, b.design(i).sweep(count=36), mech.scale)
+
+
+def test_a_slider_on_a_turning_rod_says_which_step_it_cannot_follow() -> None:
+    """The block on a turning rod (inverted slider-crank): the path of the block's pin is
+    tangent to a circle about the rod's pivot whose radius is derived from the line, which
+    the batch does not follow; the refusal names that step (docs/batch.md)."""
+    mech = with_dimensions(graphkin.examples.inverted_slider_crank(),
+                           {"links.3.A": (0.0, -1.0)})   # the pin 1 in off the slide
+    with pytest.raises(InputError, match="cannot follow yet") as exc:
+        batch(mech, {"links.4.L2": [(1.0, 2.0), (1.0, 2.2)]}, count=8)
+    assert exc.value.key == "dimensions"

@@ -109,64 +109,69 @@ class RollingRules:
         No slip: ``V_C(link) = V_C(on)`` (Eq. 3.13); ``A_C(link) = A_C(on) + A^r``
         with A^r normal to the surfaces (Eq. 4.19).
         """
-        c = f"{r.key}:C"
+        cn = r.contact_name
+        c = r.contact_label
         i, j = r.link, r.on
         vj, aj = self.coincident(j, c)
         al = _aimg(f"{c}@{i}")
         if al not in {o for st in self.a.steps for o in st.outputs}:
             ar = self.rolling_normal(r)
             self.A("translate", (aj, ar), al, role=Role.RESULT,
-                   equation=VectorEquation((Term(f"A_C{i}", U, U),),
-                                           (Term(f"A_C{j}"), Term(f"A_C{i}/{j}^r")), case=1),
-                   note=f"A_C{i} = A_C{j} + A_C{i}/{j}^r (case 1).")
+                   equation=VectorEquation((Term(f"A_{cn}{i}", U, U),),
+                                           (Term(f"A_{cn}{j}"), Term(f"A_{cn}{i}/{j}^r")), case=1),
+                   note=f"A_{cn}{i} = A_{cn}{j} + A_{cn}{i}/{j}^r (case 1).")
         return vj, al
 
     def rolling_normal(self, r: Rolling) -> str:
         """The rolling component ``A_Ci/j^r`` (Eq. 4.19), once."""
+        cn = r.contact_name
         i, j = r.link, r.on
-        lab = f"A_C{i}/{j}^r"
+        lab = f"A_{cn}{i}/{j}^r"
         if lab in {o for st in self.a.steps for o in st.outputs}:
             return lab
         # ω of the roller is found in the velocity polygon (evaluated before this one)
-        return self.A("rolling_normal", (f"{r.key}:C", r.center, f"ω{i}", self.omega[j]), lab,
+        return self.A("rolling_normal", (r.contact_label, r.center, f"ω{i}", self.omega[j]), lab,
                       factor=r.factor,
-                      note=f"Rolling contact: A_C{i}/{j}^r = ρ ω²_rel (× R/(R ± ρ) on a "
+                      note=f"Rolling contact: A_{cn}{i}/{j}^r = ρ ω²_rel (× R/(R ± ρ) on a "
                            "circle), normal to the surfaces, toward the center (Eq. 4.19).")
 
     # ---- the rolling link from the link it rolls on ---------------------------------
     def ensure_omega(self, r: Rolling, via: str | None = None) -> None:
         """ω of the rolling link from a point ``via`` of it with a velocity image."""
+        cn = r.contact_name
         i = r.link
         if i in self.omega:
             return
-        c = f"{r.key}:C"
+        c = r.contact_label
         vj, _ = self.coincident(r.on, c)
         p = via or self.point_with_image(i, c, acc=False)
         assert p is not None
         self.V("angular_rate", (p, c, self.vimg[p], vj), f"ω{i}", role=Role.RESULT,
                note=f"No slip: the contact point of link {i} has the velocity of the surface's; "
-                    f"ω{i} = V_C{_n(p)}/R_C{_n(p)}.")
+                    f"ω{i} = V_{cn}{_n(p)}/R_{cn}{_n(p)}.")
         self.omega[i] = f"ω{i}"
 
     def rolling_rates(self, r: Rolling) -> None:
         """ω and α of the rolling link from the link it rolls on (Eqs. 3.13, 4.19)."""
+        cn = r.contact_name
         i = r.link
         self.ensure_omega(r)
         if i in self.alpha:
             return
         _, al = self.contact_images(r)
-        c = f"{r.key}:C"
+        c = r.contact_label
         p = self.point_with_image(i, c)
         assert p is not None
         self.A("angular_rate", (p, c, self.aimg[p], al), f"α{i}", role=Role.RESULT,
-               note=f"α{i} = A^t_C{_n(p)}/R_C{_n(p)}, its sense from the image.")
+               note=f"α{i} = A^t_{cn}{_n(p)}/R_{cn}{_n(p)}, its sense from the image.")
         self.alpha[i] = f"α{i}"
 
     # ---- the rules tried when a step waits ---------------------------------------------
     def roll(self, r: Rolling) -> bool:
         """Carry the rates over the contact r where one side is known; True when it did."""
+        cn = r.contact_name
         i, j = r.link, r.on
-        c = f"{r.key}:C"
+        c = r.contact_label
         if c not in self.pc.values:
             return False
         if self.ready(j) and (i not in self.omega or i not in self.alpha):
@@ -183,28 +188,29 @@ class RollingRules:
             vi, _ = self.coincident(i, c)
             self.V("angular_rate", (p, c, self.vimg[p], vi), f"ω{j}", role=Role.RESULT,
                    note=f"No slip: the contact point of link {j} has the velocity of link {i}'s; "
-                        f"ω{j} = V_C{_n(p)}/R_C{_n(p)}.")
+                        f"ω{j} = V_{cn}{_n(p)}/R_{cn}{_n(p)}.")
             self.omega[j] = f"ω{j}"
             aj = self.contact_on(r)
             self.A("angular_rate", (p, c, self.aimg[p], aj), f"α{j}", role=Role.RESULT,
-                   note=f"α{j} = A^t_C{_n(p)}/R_C{_n(p)}, its sense from the image.")
+                   note=f"α{j} = A^t_{cn}{_n(p)}/R_{cn}{_n(p)}, its sense from the image.")
             self.alpha[j] = f"α{j}"
             return True
         return False
 
     def contact_on(self, r: Rolling) -> str:
         """``A_C(on) = A_C(link) − A^r``: the contact point of ``on`` from the rolling link."""
+        cn = r.contact_name
         i, j = r.link, r.on
-        c = f"{r.key}:C"
+        c = r.contact_label
         _, ai = self.coincident(i, c)
         lab = f"{_aimg(f'{c}@{j}')}:r"
         if lab not in {o for st in self.a.steps for o in st.outputs}:
             ar = self.rolling_normal(r)
             self.A("subtract", (ai, ar), lab, role=Role.RESULT,
-                   equation=VectorEquation((Term(f"A_C{j}", U, U),),
-                                           (Term(f"A_C{i}"), Term(f"A_C{i}/{j}^r", sign=-1)),
+                   equation=VectorEquation((Term(f"A_{cn}{j}", U, U),),
+                                           (Term(f"A_{cn}{i}"), Term(f"A_{cn}{i}/{j}^r", sign=-1)),
                                            case=1),
-                   note=f"A_C{j} = A_C{i} − A_C{i}/{j}^r (case 1).")
+                   note=f"A_{cn}{j} = A_{cn}{i} − A_{cn}{i}/{j}^r (case 1).")
         return lab
 
     def known_on(self, k: str) -> list[tuple[str, str, Rolling | None]]:
@@ -213,7 +219,7 @@ class RollingRules:
             (p, self.vimg[p], None) for p in self.mech.links[k].points
             if p in self.vimg and p in self.aimg]
         for r in self.mech.rolling:
-            c = f"{r.key}:C"
+            c = r.contact_label
             if c not in self.pc.values:
                 continue
             if r.link == k and self.ready(r.on):

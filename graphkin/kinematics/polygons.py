@@ -178,7 +178,7 @@ class _Poly(RollingRules):
         (ω_k known), so ``V_P = V_C(k) + ω_k × R_PC``; likewise for accelerations
         with ``A_C(k) = A_C(other) ∓ A^r`` (Eq. 4.19).
         """
-        k, p, c = s.link, s.point, f"{r.key}:C"
+        k, p, c = s.link, s.point, r.contact_label
         other = r.link if k == r.on else r.on
         if (p in self.vimg or c not in self.pc.values or not self.ready(other)
                 or k not in self.omega or k not in self.alpha):
@@ -190,10 +190,10 @@ class _Poly(RollingRules):
         self.vimg[p] = self.V(
             "velocity_difference", (vc, self.omega[k], c, p), vimg(p), role=Role.RESULT,
             note=f"No slip: the contact point of link {k} has the velocity of link {other}'s; "
-                 f"V_{p} = V_C + ω{k} × R_{p}C (case 1).")
+                 f"V_{p} = V_{r.contact_name} + ω{k} × R_{p}{r.contact_name} (case 1).")
         self.aimg[p] = self.A(
             "acceleration_difference", (ac, self.omega[k], self.alpha[k], c, p), aimg(p),
-            role=Role.RESULT, note=f"A_{p} = A_C{k} + A^n + A^t (case 1).")
+            role=Role.RESULT, note=f"A_{p} = A_{r.contact_name}{k} + A^n + A^t (case 1).")
 
     def ev_contact(self, r: Rolling) -> None:
         """The contact point is placed: nothing to draw until its images are needed."""
@@ -304,7 +304,7 @@ class _Poly(RollingRules):
             raise _NotYet(name)
         for r in self.mech.rolling:
             if r.link == lid and (lid not in self.omega or lid not in self.alpha):
-                if not self.surface_ready(r) or self.point_with_image(lid, f"{r.key}:C") is None:
+                if not self.surface_ready(r) or self.point_with_image(lid, r.contact_label) is None:
                     raise _NotYet(name)
                 self.ensure_omega(r)
                 self.rolling_rates(r)
@@ -390,22 +390,22 @@ class _Poly(RollingRules):
         if kind == "roll":
             _, lid, key = motion
             r = self.rolling(key)
-            cp = f"{key}:C"
+            cp, n = r.contact_label, r.contact_name
             vj, _ = self.coincident(r.on, cp)
             line = self.posture_line(cp, c, self.v)
-            lv = self.V("perpendicular", (line, vj), f"⊥{_n(c)}C:v",
-                        note=f"Link {lid} turns about the contact point C for now: through the "
-                             f"image of C draw a line perpendicular to {_n(c)}C.")
+            lv = self.V("perpendicular", (line, vj), f"⊥{_n(c)}{n}:v",
+                        note=f"Link {lid} turns about the contact point {n} for now: through "
+                             f"the image of {n} draw a line perpendicular to {_n(c)}{n}.")
             _, ac = self.contact_images(r)
             line_a = self.posture_line(cp, c, self.a)
-            an = self.A("normal_component", (cp, c, vj, vimg(c)), f"A_{_n(c)}C^n",
-                        note=f"A_{_n(c)}C^n = V²/R toward C.")
-            tip = self.A("translate", (ac, an), f"{aimg(c)}:nC", note="Lay it off.")
-            la = self.A("perpendicular", (line_a, tip), f"⊥{_n(c)}C:a",
-                        note=f"Through its tip draw a line perpendicular to {_n(c)}C.")
+            an = self.A("normal_component", (cp, c, vj, vimg(c)), f"A_{_n(c)}{n}^n",
+                        note=f"A_{_n(c)}{n}^n = V²/R toward {n}.")
+            tip = self.A("translate", (ac, an), f"{aimg(c)}:n{n}", note="Lay it off.")
+            la = self.A("perpendicular", (line_a, tip), f"⊥{_n(c)}{n}:a",
+                        note=f"Through its tip draw a line perpendicular to {_n(c)}{n}.")
             cc = _n(c)
-            return lv, la, (Term("V_C"), Term(f"V_{cc}C", U, K)), \
-                (Term("A_C"), Term(f"A_{cc}C^n"), Term(f"A_{cc}C^t", U, K))
+            return lv, la, (Term(f"V_{n}"), Term(f"V_{cc}{n}", U, K)), \
+                (Term(f"A_{n}"), Term(f"A_{cc}{n}^n"), Term(f"A_{cc}{n}^t", U, K))
         _, lid, k, line = motion
         vk, ak = self.coincident(k, c)
         lv = self.V("parallel", (line, vk), f"∥{_n(c)}/{k}:v",

@@ -331,7 +331,7 @@ class _Builder:
                     self.events.append(("roll_travel", r, ds))
                     changed = True
             for r in self.mech.rolling:
-                c = f"{r.key}:C"
+                c = r.contact_label
                 if r.link in self.placed and r.on in self.placed and c not in self.env:
                     if r.on_line:
                         self.add("perpendicular", (f"{r.key}:line", r.center), (f"{r.key}:n",),

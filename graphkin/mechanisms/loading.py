@@ -101,6 +101,20 @@ class Inertia:
 # quantities: a number and a unit, never an expression
 # ---------------------------------------------------------------------------
 
+#: The kinds of quantity a mechanism file's loads and masses take, in the user's words,
+#: by pint's dimensionality (the message says "is not a force", not "[length] * [mass] ...").
+_KINDS = {
+    "[length] * [mass] / [time] ** 2": "a force",
+    "[length] ** 2 * [mass] / [time] ** 2": "a torque",
+    "[mass]": "a mass",
+    "[length] ** 2 * [mass]": "a moment of inertia",
+    "[mass] / [time] ** 2": "a spring rate (a force per length)",
+    "[length]": "a length",
+    "dimensionless": "an angle",
+    "[length] / [time] ** 2": "an acceleration",
+}
+
+
 def parse_amount(value: Any, unit: str, default_unit: str) -> float:
     """A number (in ``default_unit``) or ``"<number> <unit>"`` converted to ``unit``.
 
@@ -161,8 +175,9 @@ def parse_amount(value: Any, unit: str, default_unit: str) -> float:
         out = float(q.to(unit).magnitude)
     except Exception as exc:  # pint raises several unrelated types
         want = ureg.parse_units(unit).dimensionality
-        raise ValueError(f"{value!r} is not a quantity in units of {want} "
-                         f"(such as {default_unit})") from exc
+        what = _KINDS.get(str(want), f"a quantity in units of {want}")
+        like = default_unit.replace("**", "^").replace("(", "").replace(")", "")
+        raise ValueError(f"{value!r} is not {what} (give a unit like {like})") from exc
     if not math.isfinite(out):
         raise ValueError(f"{value!r} is not finite")
     return out

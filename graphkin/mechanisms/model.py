@@ -142,6 +142,14 @@ class Rolling:
     on_center_point: str | None = None
     fixed_centers: bool = False
     angle_given: bool = False
+    contact_name: str = "C"
+    """The contact point's name on drawings and in the steps (``C``; another when the file
+    has a point ``C`` or a second contact: :func:`graphkin.mechanisms.names.contact_names`)."""
+
+    @property
+    def contact_label(self) -> str:
+        """The label of the point of contact in the constructions: ``rolling[0]:C``."""
+        return f"{self.key}:{self.contact_name}"
 
     @property
     def slot_key(self) -> str:

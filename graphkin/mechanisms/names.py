@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["LABEL_PREFIXES", "LINK_SYMBOLS", "label_like"]
+__all__ = ["LABEL_PREFIXES", "LINK_SYMBOLS", "contact_names", "label_like"]
 
 
 #: Prefixes of the labels the constructions make from a point name or a link id, followed
@@ -58,3 +58,35 @@ def label_like(name: str, links: Mapping[str, Any]) -> str:
         if any(rest[len(a):].lstrip("-") in links for a in ids):
             return f"it is written like an instant center ({name})"
     return ""
+
+
+def contact_names(count: int, taken: set[str] | frozenset[str]) -> list[str]:
+    """The names of ``count`` rolling contacts' points, none of them a point of the file.
+
+    The book calls the point of rolling contact ``C`` (Example 4.8, ``V_C4 =
+    V_C3``) or ``P`` (Sec. 3.7, Fig. 3.14, ``P2``, ``P3``): the first contact is
+    ``C`` unless the file has a point ``C``; a contact whose name is taken (a
+    second contact, or the user's own pin ``C``) is ``P``, then ``C1``, ``C2``,
+    ... the first name no point of the file and no other contact has.
+
+    Examples
+    --------
+    >>> contact_names(1, {"A", "B"}), contact_names(2, {"A"}), contact_names(2, {"C", "P"})
+    (['C'], ['C', 'P'], ['C1', 'C2'])
+    """
+    used = set(taken)
+    out: list[str] = []
+    candidates = ["C", "P"]
+    k = 0
+    for _ in range(count):
+        while True:
+            if candidates:
+                name = candidates.pop(0)
+            else:
+                k += 1
+                name = f"C{k}"
+            if name not in used:
+                break
+        used.add(name)
+        out.append(name)
+    return out

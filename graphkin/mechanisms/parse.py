@@ -6,6 +6,7 @@ the dotted key and the reason, so the CLI can print one line and exit 2.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from pathlib import Path
@@ -16,6 +17,7 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, design_file, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.cam_joint import with_cams
+from graphkin.mechanisms.checks import check_rates_given, check_zero_lengths
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -29,7 +31,7 @@ from graphkin.mechanisms.model import (
     Slider,
     Slot,
 )
-from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, label_like
+from graphkin.mechanisms.names import LABEL_PREFIXES, LINK_SYMBOLS, contact_names, label_like
 from graphkin.units import length_factor, parse_rate
 
 __all__ = ["load", "loads", "from_dict", "MAX_MAGNITUDE", "LABEL_PREFIXES", "LINK_SYMBOLS",
@@ -96,13 +98,34 @@ def from_dict(data: Mapping[str, Any], source: str = "<mechanism>") -> Mechanism
         name = source if not source.startswith("<") else "FILE"
         raise InputError(f"this is {what}, not a mechanism file: 'graphkin {verb} {name}' "
                          "reads it", key=key, file=source)
-    return with_cams(data, source, lambda d: _Parser(d, source).mechanism())
+    return with_cams(data, source,
+                     lambda d: _Parser(d, source, _added_points(data, d)).mechanism())
+
+
+def _names_of(data: Mapping[str, Any]) -> set[str]:
+    links = data.get("links")
+    if not isinstance(links, Mapping):
+        return set()
+    return {str(n) for lk in links.values() if isinstance(lk, Mapping) for n in lk}
+
+
+def _added_points(data: Mapping[str, Any], expanded: Mapping[str, Any]) -> frozenset[str]:
+    """The points a ``[[cams]]`` expansion added (its equivalent linkage's pins, Sec. 4.7).
+
+    A cam's center of curvature may stand on its pivot (a circular arc about it, in
+    a dwell): a crank of zero length the user never wrote, so not a slip to refuse.
+    """
+    if expanded is data:
+        return frozenset()
+    return frozenset(_names_of(expanded) - _names_of(data))
 
 
 class _Parser:
-    def __init__(self, data: Mapping[str, Any], source: str) -> None:
+    def __init__(self, data: Mapping[str, Any], source: str,
+                 added: frozenset[str] = frozenset()) -> None:
         self.data = data
         self.source = source
+        self.added = added   # points of a cam's equivalent linkage, not the user's
         self.line_names: set[str] = set()  # points named to define a slider's or slot's line
 
     def fail(self, key: str | None, message: str) -> InputError:
@@ -294,6 +317,9 @@ class _Parser:
                 slots.append(Slot(i, link, on, point, center=center, radius=r, key=key))
 
         rolling = self.rolling_entries(len(slots), sliders)
+        names = contact_names(len(rolling), set(owners))
+        rolling = [(dataclasses.replace(r, contact_name=n), sl) for (r, sl), n in
+                   zip(rolling, names)]
         slots += [r_slot for _, r_slot in rolling if r_slot is not None]
         drives = self.drives(pins, sliders)
         rates = self.rates_table(sliders)
@@ -312,6 +338,8 @@ class _Parser:
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)
+        check_zero_lengths(mech, self.fail, self.added)
+        check_rates_given(mech, self.fail)
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "
                             "drive with both x and y is two)")

@@ -107,15 +107,15 @@ def train_text(train: Train) -> str:
     if data["formula"]:
         lines.append("\nFormula method, Eq. (7.25): θ'_LF/A = (ω_L − ω_A)/(ω_F − ω_A)")
         for f in data["formula"]:
-            arm = "frame" if f["arm"] == FRAME else f"arm {f['arm']}"
+            arm = "frame" if f["arm"] == FRAME else _arm(f["arm"])
             exact = f["fraction"]
             value = "" if "/" not in exact else f" ({g6(f['train_value'])})"
-            lines.append(f"  θ'_{f['last']}{f['first']}/{f['arm']} = {exact}{value}, "
+            lines.append(f"  θ'_{_pair(f['last'], f['first'])}/{f['arm']} = {exact}{value}, "
                          f"seen from the {arm}: "
                          f"{w}{f['last']} = {g6(f['omega_last'])} {u}")
     tab = data["table"]
     if tab is not None:
-        lines.append(f"\nTabular analysis (Sec. 7.16): arm {tab['arm']}, gear {tab['turned']} "
+        lines.append(f"\nTabular analysis (Sec. 7.16): {_arm(tab['arm'])}, gear {tab['turned']} "
                      "turned with the arm held")
         head = ["Step"] + [("Arm " if m == tab["arm"] else "Gear ") + m
                            for m in tab["columns"]]
@@ -220,3 +220,19 @@ def gear_train_text(sol: Any, units: Any = None) -> str | None:
     if gear_train_json(sol, units) is None:
         return None
     return mechanism_train_text(sol, units)
+
+
+def _pair(last: str, first: str) -> str:
+    """The subscript ``LF`` of a train value (Eq. 7.25): ``62`` as the book writes it.
+
+    Names of more than one character are written ``ring,sun``: run together they
+    would be ambiguous.
+    """
+    if len(last) == 1 and len(first) == 1:
+        return f"{last}{first}"
+    return f"{last},{first}"
+
+
+def _arm(name: str) -> str:
+    """``arm 3``, or ``the arm`` itself when the user named it ``arm`` (not "arm arm")."""
+    return name if name.lower().startswith("arm") else f"arm {name}"

@@ -193,20 +193,21 @@ def _pitch_images(mech: Mechanism, made: set[str]) -> list[dict[str, str]]:
         links = [lid for lid in pair if lid != FRAME]
         # velocity: one image for the contact points of both links (no slip); on the frame
         # the pole, c₄ = c₁ (V_C = 0)
-        v = next((f"v({r.key}:C@{lid})" for lid in links if f"v({r.key}:C@{lid})" in made),
+        c, letter = r.contact_label, r.contact_name.lower()
+        v = next((f"v({c}@{lid})" for lid in links if f"v({c}@{lid})" in made),
                  "o_v" if FRAME in pair and "o_v" in made else "")
         if v:
             out.append({"pre": "v", "label": v,
-                        "text": " = ".join(f"c{x.translate(_SUBSCRIPT)}" for x in pair)})
+                        "text": " = ".join(f"{letter}{x.translate(_SUBSCRIPT)}" for x in pair)})
         # acceleration: each link's own contact image (they differ by A^r); a link in two
         # contacts (a planet on a sun and in a ring) names the contact by the other link
         for lid in links:
-            a = next((lab for lab in (f"a({r.key}:C@{lid})", f"a({r.key}:C@{lid}):r")
+            a = next((lab for lab in (f"a({c}@{lid})", f"a({c}@{lid}):r")
                       if lab in made), "")
             other = pair[1] if lid == pair[0] else pair[0]
             if a:
                 out.append({"pre": "a", "label": a,
-                            "text": f"c\u2032{lid.translate(_SUBSCRIPT)}"
+                            "text": f"{letter}\u2032{lid.translate(_SUBSCRIPT)}"
                                     + (f" ({lid}/{other})" if count[lid] > 1 else "")})
     return out
 

@@ -660,7 +660,8 @@ byId("gk-save").addEventListener("click", () => {
 
 redraw(true);
 return {
-  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves, centers: ics,
+  state: () => ({drive: drive, K: K.slice(), result: res, curves: curves,
+                 centers: gkCentersState(D.centers, ics),
                  curvature: curv, forces: frc}),
   setDrive: (v) => { drive = v; redraw(false); return res; },
   pen: pen,

@@ -331,6 +331,27 @@ function gkCenters(C, r) {
   const J = gkCenterInputs(C, r);
   return J === null ? null : centers(J, C.K);
 }
+// the centers as graphkin's JSON gives them (docs/formats/json.md, spec/output.md):
+// {position: [x, y]}, or {direction: [dx, dy]} (a unit vector, its first nonzero component
+// positive) for a center at infinity by the page's own rule (gkAtInfinity), never a raw
+// homogeneous point with w at round-off; null where the page cannot show that center
+function gkCentersState(C, ics) {
+  if (!ics || !C || !C.labels) return null;
+  const out = {};
+  for (const lab of C.labels) {
+    const p = ics[lab];
+    if (!p) { out[lab] = null; continue; }
+    if (gkAtInfinity(C, p)) {
+      const n = Math.hypot(p[0], p[1]);
+      let dx = p[0] / n, dy = p[1] / n;
+      if ((Math.abs(dx) <= 1e-9 && dy < 0) || dx < -1e-9) { dx = -dx; dy = -dy; }
+      out[lab] = {direction: [dx + 0, dy + 0]};
+    } else {
+      out[lab] = {position: [p[0] / p[2], p[1] / p[2]]};
+    }
+  }
+  return out;
+}
 // what the Kennedy panel cannot show, in one line (empty when it shows every center)
 function gkCentersWhy(C, c) {
   if (!C.fn) return "No instant centers on this page: " + C.why + ".";

@@ -152,7 +152,7 @@ def _math_or_none(name: str | None) -> str | None:
     return None if not name else vector_math(name)
 
 
-_CONTACT_IMAGE = re.compile(r"[va]\(rolling\[\d+\]:C@\w+\)")
+_CONTACT_IMAGE = re.compile(r"[va]\((rolling\[\d+\]):(\w+)@(\w+)\)")
 
 
 def _contact_text(label: str, mech: Mechanism | None) -> str:
@@ -165,7 +165,7 @@ def _contact_text(label: str, mech: Mechanism | None) -> str:
     m = _CONTACT_IMAGE.fullmatch(label)
     if m is None or mech is None:
         return text
-    key, _, lid = label[2:-1].partition(":C@")
+    key, lid = m.group(1), m.group(3)
     r = next((x for x in mech.rolling if x.key == key), None)
     if r is None or sum(lid in (x.link, x.on) for x in mech.rolling) < 2:
         return text
@@ -176,8 +176,8 @@ def _is_image(label: str) -> bool:
     """An image point lettered in its polygon: a point's, or a rolling contact point's.
 
     The point of contact of a rolling link (``v(rolling[0]:C@4)``, lettered
-    ``c₄``) is an image as the book draws it (Sec. 3.7, Fig. 3.14b); other
-    internal labels (with ``:``) are construction points.
+    ``c₄``; ``p₄`` or ``c1₄`` when ``C`` is taken) is an image as the book draws it
+    (Sec. 3.7, Fig. 3.14b); other internal labels (with ``:``) are construction points.
     """
     if _CONTACT_IMAGE.fullmatch(label):
         return True

@@ -19,8 +19,11 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (the velocity polygon), Sec. 4.3
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
+
+import numpy as np
 
 from graphkin.render.worksheet_layout import MARKER_MM, Layout, marker_bits
 
@@ -88,8 +91,11 @@ def _givens(sol: Any, diagram: str) -> str:
     """The inputs' rates the student starts from, as the book states a problem.
 
     ``ω2 = 10 rad/s ccw`` (and ``α2`` for the acceleration polygon), or a
-    slider's ``ds4 = 5 in/s``; rates the file gives for another link
-    (``[rates]``) likewise.  Without them no polygon can be drawn.
+    slider's point velocity as the book writes it, ``V_C = 10000 mm/s ∠180.00°``
+    (Example 3.2: "driven by slider 4 at V_C = -10 î m/s"), and on a moving link
+    the velocity relative to it, ``V_A3/2`` (Sec. 3.5; Example 4.4); rates the
+    file gives for another link (``[rates]``) likewise.  Without them no polygon
+    can be drawn.
     """
     from graphkin.text import g6, sense
 
@@ -98,6 +104,10 @@ def _givens(sol: Any, diagram: str) -> str:
     parts = []
     wanted = (0,) if diagram == "velocity" else (0, 1)
     for d in mech.drives:
+        if d.kind == "position" and d.slider is not None:
+            parts += [_slide(sol, d.slider, i, v) for i, v in enumerate((d.rate, d.rate2))
+                      if i in wanted and v is not None]
+            continue
         angle = d.kind in ("angle", "relative")
         units = ("rad/s", "rad/s²") if angle else (f"{length}/s", f"{length}/s²")
         for i in wanted:
@@ -107,7 +117,11 @@ def _givens(sol: Any, diagram: str) -> str:
             text = f"{d.rate_labels[i]} = {g6(abs(v) if angle else v)} {units[i]}"
             parts.append(f"{text} {sense(v)}".rstrip() if angle else text)
     r = mech.rates
-    if r is not None:
+    slid = [sl for sl in mech.sliders if r is not None and sl.link == r.link]
+    if r is not None and r.kind == "position" and slid:
+        parts += [_slide(sol, slid[0], i, v) for i, v in enumerate((r.rate, r.rate2))
+                  if i in wanted and v is not None]
+    elif r is not None:
         for i, v in enumerate((r.rate, r.rate2)[:len(wanted)]):
             if v is not None:
                 name = ("ω", "α")[i] + r.link if r.kind != "position" else ("v", "a")[i] + r.link
@@ -124,6 +138,22 @@ def _givens(sol: Any, diagram: str) -> str:
                   lambda m: sub_digits(m[1] + m[2]) + (sub_digits("/" + m[3][1:]) if m[3] else ""),
                   "Given " + ", ".join(parts) + ".")
     return text if parts else ""
+
+
+def _slide(sol: Any, sl: Any, i: int, v: float) -> str:
+    """A slider's given rate as the book gives it: its point's velocity or acceleration.
+
+    ``i = 0`` the velocity along the slide, ``V_C = 10000 mm/s ∠180.00°`` (Example
+    3.2), ``i = 1`` the acceleration; relative to the link it slides on when that link
+    moves (``V_A3/2``, Sec. 3.5).
+    """
+    from graphkin.text import polar
+
+    # the slide's direction in the frame at this posture: θ_on + φ (Sec. 2.8)
+    t = float(np.asarray(sol.angle_rad(sl.on), dtype=float)) + sl.direction_angle
+    rel = "" if sl.on == "1" else f"{sl.link}/{sl.on}"
+    unit = f"{sol.mechanism.length_unit}/s" + ("" if i == 0 else "²")
+    return f"{'VA'[i]}_{sl.point}{rel} = {polar((v * math.cos(t), v * math.sin(t)), unit)}"
 
 
 def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:

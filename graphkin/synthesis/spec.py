@@ -34,6 +34,11 @@ SCHEMA = SYNTHESIS
 """Every key of a synthesis file (:data:`graphkin.keys.SYNTHESIS`)."""
 
 
+#: How far (relative) two postures' distances between the body's two points may differ:
+#: the rounding of coordinates typed to three or four figures, not a different body.
+TYPED_LENGTH_REL = 5e-3
+
+
 @dataclass(frozen=True)
 class FunctionSpec:
     """Function generation: y = f(x) over a range, by a crank and rocker (Sec. 9.11)."""
@@ -414,7 +419,10 @@ class _Reader:
                                         "or two points)")
         if lengths:
             for i, s in enumerate(lengths):
-                if abs(s - lengths[0]) > 1e-6 * max(lengths[0], 1e-300):
+                # the body's angle is the direction of its two points; their distance only
+                # tells a slip from coordinates typed to three or four figures, as the book
+                # prints them (1.8, 0.87 for a length of 2: 0.04 % off)
+                if abs(s - lengths[0]) > TYPED_LENGTH_REL * max(lengths[0], 1e-300):
                     raise self.fail(f"postures[{i}].{names[1]}",
                                     f"{names[0]}{names[1]} is {s:g} here but {lengths[0]:g} in "
                                     "posture 1: a rigid body keeps its length")

@@ -138,7 +138,7 @@ arm = 3
     (TRAIN.replace("arm = 3\n[[mesh]]", "arms = 3\n[[mesh]]"), "mesh[0].arms",
      "did you mean 'arm'"),
     (TRAIN.replace("gears = [2, 4]", "gears = [2, 9]"), "mesh[0].gears", "no size"),
-    (TRAIN.replace('"100 rev/min ccw"', '"100 kg"'), "speeds.2", "omega"),
+    (TRAIN.replace('"100 rev/min ccw"', '"100 kg"'), "speeds.2", "not an angular velocity"),
 ])
 def test_bad_train_file(tmp_path, capsys, text, key, reason):
     path = tmp_path / "train.toml"
@@ -147,3 +147,20 @@ def test_bad_train_file(tmp_path, capsys, text, key, reason):
     out, err = capsys.readouterr()
     assert out == "" and len(err.strip().splitlines()) == 1
     assert f": {key}: " in err and reason in err, err
+
+
+def test_named_members_read_apart(capsys):
+    """A train whose members have names: the train value's subscript is ``ring,sun``, not
+    ``ringsun``, and an arm named "arm" is "the arm", not "the arm arm" (audit 8).
+
+    By hand, Eq. (7.25) seen from the arm with the ring held: (0 − ω_A)/(600 − ω_A) =
+    −30/66, so ω_A = 600 · 30/96 = 187.5 rev/min; the planet: (ω_p − 187.5)/(600 − 187.5) =
+    −30/18, ω_p = −500 rev/min.
+    """
+    from spec_data import ROOT
+
+    assert main(["gears", str(ROOT / "tests" / "data" / "audit8" / "planetary_named.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "θ'_ring,sun/arm = -5/11" in out and "θ'_planet,sun/arm = -5/3" in out
+    assert "arm arm" not in out and "seen from the arm: ωplanet = -500 rev/min" in out
+    assert "187.5 rev/min ccw" in out

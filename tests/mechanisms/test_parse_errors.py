@@ -43,6 +43,17 @@ CASES = [
      "assembly.Q", "no point"),
     ("bad rate", FOURBAR.replace("angle = 120", 'angle = 120\nomega = "10 kg"'),
      "drive.omega", "omega"),
+    # audit 8: it said "'5 m/s^2' is not a alpha (expected units like rad/s**2)"
+    ("linear unit for alpha", FOURBAR.replace("angle = 120", 'angle = 120\nalpha = "5 m/s^2"'),
+     "drive.alpha", "is not an angular acceleration (give a unit like rad/s^2)"),
+    ("length for an angle", FOURBAR.replace("angle = 120", 'angle = "30 mm"'),
+     "drive.angle", "is not an angle (give a unit like deg)"),
+    # audit 8: alpha without omega was silently dropped (no accelerations, no word)
+    ("alpha without omega", FOURBAR.replace("angle = 120", "angle = 120\nalpha = 5"),
+     "drive.alpha", "alpha is given without omega"),
+    ("acceleration without velocity", SLIDER.replace("link = 2\nangle = 45",
+                                                     "link = 4\nposition = 120\nacceleration = 2"),
+     "drive.acceleration", "acceleration is given without velocity"),
 ]
 
 

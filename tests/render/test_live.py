@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from live_edit import homogeneous
 from live_edit import page_file as _page
 from spec_data import EXAMPLES
 
@@ -246,7 +247,7 @@ def test_instant_centers_follow_the_drag(browser, tmp_path):
     ic = instant_centers(graphkin.load(tmp_path / "saved.toml").solve())
     for lab in ("I13", "I24", "I23", "I34"):
         ref = np.asarray(ic.values[lab], dtype=float)
-        got = np.asarray(state["centers"][lab], dtype=float)  # homogeneous [x, y, w]
+        got = np.asarray(homogeneous(state["centers"][lab]), dtype=float)
         np.testing.assert_allclose(got[:2] / got[2], ref[:2] / ref[2], rtol=0,
                                    atol=1e-9 * 30, err_msg=lab)
     assert browser.js("document.querySelectorAll('.gk-kennedy').length") == 4

@@ -18,12 +18,15 @@ from __future__ import annotations
 
 import copy
 import json
+import math
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import run_js
+from live_edit import homogeneous
+from spec_data import inline
 from strategies import RandomMechanism, examples, five_bars, slotted
 
 import graphkin
@@ -105,7 +108,7 @@ def _dragged(browser, tmp_path, rm: RandomMechanism, offset: float,
                 np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * size,
                                            err_msg=n)
     for lab in C["labels"]:
-        same_center(state["centers"][lab], ic.values[lab], C, size, lab)
+        same_center(homogeneous(state["centers"][lab]), ic.values[lab], C, size, lab)
     # the lines of centers drawn on the posture: one per line the page found
     drawn = browser.js("document.querySelectorAll('#gk-posture .gk-kennedy').length")
     assert drawn >= 1
@@ -161,7 +164,7 @@ def test_centers_the_page_cannot_show_are_said_in_one_line(browser, tmp_path) ->
     # the others are drawn: the pins, by inspection (I12 at O2 ...)
     got = browser.js("window.graphkinLive.state().centers")
     for lab in ("I12", "I24", "I45"):
-        np.testing.assert_allclose(np.asarray(got[lab], dtype=float),
+        np.testing.assert_allclose(np.asarray(homogeneous(got[lab]), dtype=float),
                                    np.asarray(ic.values[lab], dtype=float), atol=1e-12)
 
 
@@ -283,3 +286,44 @@ def test_what_the_page_shows_does_not_rest_on_round_off(name: str) -> None:
                 {k: sorted(v) for k, v in ref["centers"][key].items()}
         else:
             assert got["centers"][key] == ref["centers"][key], key
+
+
+def test_state_gives_centers_at_infinity_as_directions(browser, tmp_path) -> None:
+    """``state().centers`` has the JSON's shape: ``{position}``, or ``{direction}`` at infinity.
+
+    Defect of the session-7 audit: a center at infinity came back raw, a
+    homogeneous point with w at round-off (about 4e-9), though the page draws it
+    as a direction.  Independent expectation: in a parallelogram four-bar
+    (A = (0, 0), D = (10, 0), AB = DC = 4, BC = AD = 10, the crank at 60°) the
+    crank and the rocker stay parallel, so I13 = AB ∩ DC is at infinity along
+    (cos 60°, sin 60°); the coupler stays parallel to the frame, so I24 = AD ∩ BC
+    is at infinity along (1, 0); I12 is the pivot A and I23 the pin B = 4 (cos 60°,
+    sin 60°).
+    """
+    from live_edit import page_file
+
+    text = inline("parse_errors-fourbar.toml").replace("C = [18, 0]", "C = [10, 0]")
+    text = text.replace("C = [11, 0]", "C = [4, 0]")
+    text = text.replace("angle = 120", "angle = 60\nomega = 10")
+    text = text.replace("C = [15, 10]", "C = [12, 3.4]")
+    path = tmp_path / "parallelogram.toml"
+    path.write_text(text, encoding="utf-8")
+    browser.open(page_file(tmp_path, path))
+    assert browser.errors() == []
+    got = browser.js("window.graphkinLive.state().centers")
+    c, s = math.cos(math.radians(60)), math.sin(math.radians(60))
+    assert set(got["I13"]) == {"direction"} and set(got["I24"]) == {"direction"}
+    np.testing.assert_allclose(got["I13"]["direction"], [c, s], atol=1e-12)
+    np.testing.assert_allclose(got["I24"]["direction"], [1.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(got["I12"]["position"], [0.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(got["I23"]["position"], [4 * c, 4 * s], atol=1e-12)
+    # the same shape and sense as graphkin solve --json (spec/output.md)
+    from graphkin.output.centers import instant_centers_json
+
+    ref = instant_centers_json(graphkin.load(path).solve())
+    assert ref is not None
+    for entry in ref.values():
+        lab = entry["label"]
+        for k in ("position", "direction"):
+            if k in entry:
+                np.testing.assert_allclose(got[lab][k], entry[k], atol=1e-9, err_msg=lab)

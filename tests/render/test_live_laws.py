@@ -27,7 +27,7 @@ from cdp import browser_or_skip
 from hypothesis import given
 from hypothesis import strategies as st
 from jsrun import run_js
-from live_edit import same_center, same_curvature
+from live_edit import homogeneous, same_center, same_curvature
 from strategies import examples
 
 import graphkin
@@ -166,7 +166,7 @@ def _check_saved(browser, tmp_path: Path, state: dict, data: dict) -> None:
     assert state["centers"] is not None
     ic = instant_centers(sol)
     for lab in data["centers"]["labels"]:
-        same_center(state["centers"][lab], ic.values[lab], lab)
+        same_center(homogeneous(state["centers"][lab]), ic.values[lab], lab)
     # the curvature constructions (Sec. 4.15, from the accelerations) lose digits as 1/sin² of
     # the angle at B where links 4 and 5 near a line (the stretched five-bar at θ2 = 180°):
     # held to 1e-9 away from there (sin > 0.1)

@@ -19,6 +19,7 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from live_edit import homogeneous
 from live_edit import page_file as _page
 from strategies import examples, scotch_yokes
 from strategies_rolling import rolling_arrangements
@@ -265,7 +266,8 @@ def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
     assert labels and set(labels) <= set(page)
     size = graphkin.load(ROOT / name).scale
     for lab in labels:
-        got, want = np.asarray(page[lab], dtype=float), np.asarray(ic.values[lab], dtype=float)
+        got = np.asarray(homogeneous(page[lab]), dtype=float)
+        want = np.asarray(ic.values[lab], dtype=float)
         if abs(want[2]) > 1e-9:  # finite: the same point
             w = want[:2] / want[2]  # a far center (nearly parallel lines) carries more error
             np.testing.assert_allclose(got[:2] / got[2], w, rtol=0,

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 from hypothesis import example, given
 from hypothesis import strategies as st
-from live_edit import same_center, same_curvature
+from live_edit import homogeneous, same_center, same_curvature
 from strategies import (
     RandomMechanism,
     double_sliders,
@@ -89,7 +89,7 @@ def test_the_page_equals_graphkin_after_a_drag(browser, tmp_path, family):
         if state["centers"] is not None:
             ic = instant_centers(sol)
             for lab in data["centers"]["labels"]:
-                same_center(state["centers"][lab], ic.values[lab], lab)
+                same_center(homogeneous(state["centers"][lab]), ic.values[lab], lab)
         if state.get("curvature") is not None:
             lc = curvature(sol)[data["curvature"]["link"]]
             same_curvature(data, state["curvature"], lc.values, size,

@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
+from live_edit import homogeneous
 from live_edit import page_file as _page
 from strategies import examples
 from strategies_rolling import rolling_arrangements
@@ -157,7 +158,8 @@ def test_the_instant_centers_follow_the_constructed_posture(browser, tmp_path):
     labels = [c.label for c in ic.centers.values()]
     assert {"I14", "I24"} <= set(labels) <= set(page)
     for lab in labels:
-        got, want = np.asarray(page[lab], dtype=float), np.asarray(ic.values[lab], dtype=float)
+        got = np.asarray(homogeneous(page[lab]), dtype=float)
+        want = np.asarray(ic.values[lab], dtype=float)
         np.testing.assert_allclose(got[:2] / got[2], want[:2] / want[2], rtol=0,
                                    atol=1e-9 * 5, err_msg=lab)
     assert browser.errors() == []
@@ -210,7 +212,7 @@ def _cross(w: float, v: np.ndarray) -> np.ndarray:
 
 
 def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
-    # Example 11.7 after a drag: the points of contact on the line of centers, C0 at
+    # Example 11.7 after a drag: the points of contact on the line of centers, C at
     # R2 = 1.00 from O (gears 4 and 2) and C1 at R6 = 1.70 (gear 5 of 4 on the fixed 6).
     # Sec. 3.7: c₄ = c₂ one velocity image, V_C4 = V_A + ω4 × R_CA = ω2 × R_CO (no slip,
     # Eq. 3.13); on the frame V_C4 = 0, c₄ = c₁ at the pole. Sec. 4.7: each link's own
@@ -221,7 +223,8 @@ def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
     browser.js("window.graphkinLive.redraw(true)")
     texts = browser.js("Array.from(document.querySelectorAll('.gk-pitch'))"
                        ".map(function (e) { return e.textContent; })")
-    assert set(texts) == {"c₄ = c₂", "c₄ = c₁", "c′₄ (4/2)", "c′₂", "c′₄ (4/1)"}
+    # the second contact is P, C being taken by the first (Sec. 3.7 names it P)
+    assert set(texts) == {"c₄ = c₂", "p₄ = p₁", "c′₄ (4/2)", "c′₂", "p′₄ (4/1)"}
     sol = _same_as_solve(browser, tmp_path)
     r = browser.js("window.graphkinLive.state()")["result"]
     o, a = np.asarray(sol.position("O"), float), np.asarray(sol.position("A"), float)
@@ -230,19 +233,19 @@ def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
     w2, w4 = float(sol.omega("2")), float(sol.omega("4"))
     al2, al4 = float(sol.alpha("2")), float(sol.alpha("4"))
     ov, oa = np.asarray(r["o_v"]), np.asarray(r["o_a"])
-    for key, radius in (("rolling[0]", 1.0), ("rolling[1]", 1.7)):
+    for key, radius in (("rolling[0]:C", 1.0), ("rolling[1]:P", 1.7)):
         c = o + radius * u
         v4 = va + _cross(w4, c - a)
         a4 = aa + _cross(al4, c - a) - w4 ** 2 * (c - a)
-        np.testing.assert_allclose(np.asarray(r[f"a({key}:C@4)"]) - oa, a4, rtol=0,
+        np.testing.assert_allclose(np.asarray(r[f"a({key}@4)"]) - oa, a4, rtol=0,
                                    atol=1e-9 * 100)
-        if key == "rolling[1]":
+        if key == "rolling[1]:P":
             np.testing.assert_allclose(v4, 0.0, rtol=0, atol=1e-9 * 10)  # on the fixed 6
             continue
-        np.testing.assert_allclose(np.asarray(r[f"v({key}:C@4)"]) - ov, v4, rtol=0,
+        np.testing.assert_allclose(np.asarray(r[f"v({key}@4)"]) - ov, v4, rtol=0,
                                    atol=1e-9 * 10)
         np.testing.assert_allclose(v4, _cross(w2, c - o), rtol=0, atol=1e-9 * 10)
-        np.testing.assert_allclose(np.asarray(r[f"a({key}:C@2):r"]) - oa,
+        np.testing.assert_allclose(np.asarray(r[f"a({key}@2):r"]) - oa,
                                    _cross(al2, c - o) - w2 ** 2 * (c - o), rtol=0,
                                    atol=1e-9 * 100)
     assert browser.errors() == []

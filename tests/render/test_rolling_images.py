@@ -27,7 +27,8 @@ def _texts(path: str, diagram: str) -> dict[str, str]:
 def test_example_11_7_letters_each_point_of_contact():
     assert _texts("gallery/gears/ex11_7.toml", "velocity") == {"v(rolling[0]:C@4)": "c₄ (4/2)"}
     assert _texts("gallery/gears/ex11_7.toml", "acceleration") == {
-        "a(rolling[0]:C@4)": "c′₄ (4/2)", "a(rolling[1]:C@4)": "c′₄ (4/1)"}
+        # the second contact is P: C is taken by the first (Sec. 3.7 names it P)
+        "a(rolling[0]:C@4)": "c′₄ (4/2)", "a(rolling[1]:P@4)": "p′₄ (4/1)"}
 
 
 def test_the_roller_and_the_follower_face_of_example_4_8():

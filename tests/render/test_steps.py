@@ -325,3 +325,19 @@ def test_the_last_frame_draws_every_step_told(gk):
     for s in sol.constructions["acceleration"]:
         if s.index not in skip:
             assert f'id="f{last:02d}-{s.step_id}"' in page, s.step_id
+
+
+def test_a_slider_drive_is_given_as_the_book_gives_it(tmp_path):
+    """Example 3.2: "driven by slider 4 at a constant velocity V_C = -10 î m/s"; the line
+    S -> T runs along +x, so the signed rate along it is -10 m/s (audit 8: the page said
+    "ṡ = -10 m/s").  Example 4.4's block slides on the turning link 2 at 30 m/s: V_A3/2."""
+    out = tmp_path / "p.html"
+    assert main(["steps", str(EXAMPLES / "ex3_2_slider_driven.toml"), "-d", "velocity",
+                 "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert "Given: <i>V</i><sub>C</sub> = -10 m/s along the line of slider 4" in text
+    assert "ṡ" not in text
+    assert main(["steps", str(EXAMPLES / "ex4_4_coriolis_block.toml"), "-d", "velocity",
+                 "-o", str(out)]) == 0
+    assert "<sub>A3/2</sub> = 30 m/s along the line of slider 3" in out.read_text(
+        encoding="utf-8")

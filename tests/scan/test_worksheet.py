@@ -163,3 +163,36 @@ def test_worksheet_states_the_given_rates(tmp_path: Path, examples: Path) -> Non
     text = out_v.read_text()
     assert "Given ω₂ = 94.2478 rad/s ccw." in text and "α₂" not in text
     assert "from O_V" not in text                    # the pole typeset, not a raw name
+
+
+def test_worksheet_states_a_slider_drive_in_the_books_words(tmp_path: Path,
+                                                             examples: Path) -> None:
+    """A slider-driven file gives the slider point's velocity, as the book states it.
+
+    Example 3.2 (p. 3272 of the text): "driven by slider 4 at a constant velocity
+    V_C = -10 î m/s": in mm (the file's unit) 10000 mm/s pointing along -x, ∠180°,
+    and A_C = 0 (constant velocity).  It used to say "Given ds4 = -10000 mm/s",
+    the project's own symbol.  On a moving link (Example 4.4: "the block (link 3)
+    is sliding outward on link 2 at 30 m/s", link 2 at 30°) it is the velocity
+    relative to that link, V_A3/2 (Sec. 3.5), along the rod at 30°.
+    """
+    out = tmp_path / "sheet.svg"
+    assert main(["worksheet", str(examples / "ex3_2_slider_driven.toml"), "-d", "acceleration",
+                 "-o", str(out)]) == 0
+    text = out.read_text()
+    assert "Given V_C = 10000 mm/s ∠180.00°, A_C = 0 mm/s²." in text
+    assert "ds4" not in text
+    out = tmp_path / "block.svg"
+    assert main(["worksheet", str(examples / "ex4_4_coriolis_block.toml"), "-d", "velocity",
+                 "-o", str(out)]) == 0
+    text = out.read_text()
+    assert "V_A3/2 = 30000 mm/s ∠30.00°" in text and "ds3" not in text
+    # the same rates given in [rates] of the slider, not in [drive]: the same words
+    spec = (examples / "ex3_2_slider_driven.toml").read_text()
+    for key in ('velocity = "-10 m/s"', "acceleration = 0"):
+        spec = spec.replace(key + "\n", "")
+    spec += '\n[rates]\nlink = 4\nvelocity = "-10 m/s"\nacceleration = 0\n'
+    (tmp_path / "rates.toml").write_text(spec)
+    assert main(["worksheet", str(tmp_path / "rates.toml"), "-d", "acceleration",
+                 "-o", str(tmp_path / "rates.svg")]) == 0
+    assert "Given V_C = 10000 mm/s ∠180.00°, A_C = 0 mm/s²." in (tmp_path / "rates.svg").read_text()

@@ -8,6 +8,7 @@ points carry both, under the user's names; path generation carries its coupler p
 
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
@@ -62,3 +63,34 @@ def test_path_generation_writes_the_coupler_point_only() -> None:
     text = ('[path]\npoints = [[0.26795, 0], [2.0, 0], [3.73205, 0]]\ncrank = [-6, -45, -84]\n'
             'coupler = [0, -20, -50]\nrocker_pin = 0.5\n')
     assert _coupler_points(text) == {"A", "B", "S"}
+
+
+def test_two_points_typed_to_three_figures_are_one_body(capsys) -> None:
+    """Audit 8: postures typed as the body's two points to three figures were refused.
+
+    P = (1.5, 0.8), Q = (3.3, 1.67): PQ = |(1.8, 0.87)| = 1.99922, not the 2 of posture 1
+    (0.04 % off, the rounding of typed figures).  The angle is the direction of PQ, so by
+    hand θ2 = atan2(0.87, 1.8) = 25.796°, θ3 = atan2(1.2, 1.6) = 36.870°, and the pole P31
+    of postures 1 (P = 0, 0°) and 3 (P = (3, 0.9), 36.87°) solves (I − R) X = P3 with R the
+    turn by 36.87° (cos 0.8, sin 0.6): X = (0.15, 4.95).  A 1 % slip is still refused.
+    """
+    from spec_data import ROOT
+
+    from graphkin.cli import main
+    from graphkin.errors import InputError
+
+    path = ROOT / "tests" / "data" / "audit8" / "three_postures_typed.toml"
+    spec = loads_spec(path.read_text())
+    np.testing.assert_allclose(np.degrees(spec.postures.angles),
+                               [0.0, math.degrees(math.atan2(0.87, 1.8)), 36.86989764584402],
+                               atol=1e-9)
+    assert main(["synthesize", str(path), "--json"]) == 0
+    poles = json.loads(capsys.readouterr().out)["poles"]
+    np.testing.assert_allclose(poles["P31"], [0.15, 4.95], atol=1e-12)
+    slip = path.read_text().replace("Q = [4.6, 2.1]", "Q = [4.6, 2.12]")   # PQ = 2.0199: 1 %
+    try:
+        loads_spec(slip)
+    except InputError as exc:
+        assert exc.key == "postures[2].Q" and "keeps its length" in str(exc)
+    else:
+        raise AssertionError("a 1 % slip of the body's length was accepted")

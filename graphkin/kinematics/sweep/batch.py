@@ -201,6 +201,10 @@ def _provenance(mech: Mechanism, cx: Construction) -> dict[tuple[int, str], tupl
             v = s.params.get(p)
             if v is not None and id(v) in where:
                 out[(s.index, p)] = ("point", *where[id(v)])
+        if s.op in ("add_angle", "line_at_angle") and "offset" in s.params:
+            src = _slider_angle(mech, s, where)
+            if src is not None:
+                out[(s.index, "offset")] = src
         if s.op == "circle" and "radius" in s.params:
             center = s.inputs[0]
             r = float(s.params["radius"])
@@ -220,6 +224,33 @@ def _provenance(mech: Mechanism, cx: Construction) -> dict[tuple[int, str], tupl
     return out
 
 
+def _slider_angle(mech: Mechanism, step: Any, where: Mapping[int, tuple[str, str]]
+                  ) -> tuple[Any, ...] | None:
+    """The slider whose line's direction φ an angle step adds: ``("slide", sign, p0, p1)``.
+
+    A slider keeps its angle on the link it slides on: θ_link = θ_on + φ
+    (``add_angle``, sign +1), θ_on = θ_link - φ (sign -1), and the path of a
+    point of ``on`` is the line at θ_link + φ (``line_at_angle``, labelled
+    ``l_<P>(<slider key>)``).  φ is the direction of the line's two points in
+    ``on``'s coordinates (Sec. 2.8), so a point of the line moved by the batch
+    tilts it for that design.  ``p0``/``p1`` are ``(link, name)`` of the file's
+    points, or None for a point written as a pair (which the batch cannot move).
+    """
+    value = float(step.params["offset"])
+    out = step.outputs[0]
+    for sl in mech.sliders:
+        ends = (where.get(id(sl.p0)), where.get(id(sl.p1)))
+        phi = sl.direction_angle
+        if step.op == "line_at_angle":
+            if out.endswith(f"({sl.key})") and math.isclose(value, phi, abs_tol=1e-15):
+                return ("slide", 1.0, *ends)
+            continue
+        for sign, moved in ((1.0, sl.link), (-1.0, sl.on)):
+            if out == f"θ{moved}" and math.isclose(value, sign * phi, abs_tol=1e-15):
+                return ("slide", sign, *ends)
+    return None
+
+
 def _param_values(src: tuple[Any, ...], mech: Mechanism,
                   arrays: Mapping[tuple[str, str], Array]) -> Array | None:
     """The constant for every design (``(M, 1, 2)`` or ``(M, 1)``), or None if it does not vary."""
@@ -229,6 +260,15 @@ def _param_values(src: tuple[Any, ...], mech: Mechanism,
     if src[0] == "point":
         a = local(src[1], src[2])
         return None if a is None else a[:, None, :]
+    if src[0] == "slide":
+        _, sign, e0, e1 = src
+        moved = [None if e is None else local(*e) for e in (e0, e1)]
+        if moved[0] is None and moved[1] is None:
+            return None
+        ends = [m if m is not None else np.asarray(mech.links[e[0]].points[e[1]], dtype=float)
+                for m, e in zip(moved, (e0, e1))]
+        d = ends[1] - ends[0]
+        return sign * np.arctan2(d[..., 1], d[..., 0])[:, None]
     _, lid, c, x = src
     ac, ax = local(lid, c), local(lid, x)
     if ac is None and ax is None:

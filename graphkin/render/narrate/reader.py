@@ -459,8 +459,14 @@ class _Reader:
                 v = self.scalar(lab)
                 kind = "A" if lab.startswith("dds") else "V"
                 link = lab.lstrip("ds")
-                numbers.append(f"Given: the slider {link} moves along its line at "
-                               f"{'s̈' if kind == 'A' else 'ṡ'} = {self.q(v, kind, False)}.")
+                # the book gives a slider's point velocity, V_C = -10 î m/s (Example 3.2),
+                # relative to the link it slides on when that link moves (V_A3/2, Sec. 3.5)
+                sl = next((x for x in self.mech.sliders if x.link == link), None) \
+                    if self.mech is not None else None
+                sym = "ṡ" if sl is None else \
+                    f"{kind}_{sl.point}" + ("" if sl.on == FRAME else f"{link}/{sl.on}")
+                numbers.append(f"Given: {sym} = {self.q(v, kind, False)} along the line of "
+                               f"slider {link} (positive from its first point to its second).")
         title = f"The {what} pole {pole} and the scale"
         if numbers:
             title += "; the input"
