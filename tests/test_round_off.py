@@ -75,26 +75,27 @@ def _scale(data: Any) -> float:
     return big or 1.0
 
 
-def perturb(data: Any, rng: random.Random, how: str, size: float, key: str = "") -> Any:
+def perturb(data: Any, rng: random.Random, how: str, size: float, key: str = "",
+            amount: float = 1e-12) -> Any:
     """A copy of a mechanism-file dict with every measured number moved by round-off.
 
-    ``how`` is ``"size"`` (coordinates by ±1e-12 of the file's size, other numbers by
-    ±1e-12 of themselves) or ``"ulps"`` (every number by up to 4 ulps).
+    ``how`` is ``"size"`` (coordinates by ±``amount`` (1e-12) of the file's size, other
+    numbers by ±``amount`` of themselves) or ``"ulps"`` (every number by up to 4 ulps).
     """
     if key in _KEEP:
         return copy.deepcopy(data)
     if isinstance(data, dict):
-        return {k: perturb(v, rng, how, size, k) for k, v in data.items()}
+        return {k: perturb(v, rng, how, size, k, amount) for k, v in data.items()}
     if isinstance(data, list):
-        return [_move(v, rng, how, size, True) if _is_num(v) else perturb(v, rng, how, size, key)
-                for v in data]
+        return [_move(v, rng, how, size, True, amount) if _is_num(v)
+                else perturb(v, rng, how, size, key, amount) for v in data]
     if _is_num(data):
-        return _move(data, rng, how, size, False)
+        return _move(data, rng, how, size, False, amount)
     if isinstance(data, str):
         # a measurement in a quantity ("900 rev/min", "10 N at 30 deg"), never the digits
         # of a name or a unit's power (G3, s^2)
-        return _QUANTITY.sub(lambda m: repr(_move(float(m.group()), rng, how, size, False)),
-                             data)
+        return _QUANTITY.sub(
+            lambda m: repr(_move(float(m.group()), rng, how, size, False, amount)), data)
     return data
 
 
@@ -102,7 +103,8 @@ def _is_num(v: Any) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
-def _move(x: float, rng: random.Random, how: str, size: float, coordinate: bool) -> float:
+def _move(x: float, rng: random.Random, how: str, size: float, coordinate: bool,
+          amount: float = 1e-12) -> float:
     x = float(x)
     if how == "ulps":
         if x == 0.0:  # a zero the user wrote is exact on every machine
@@ -110,7 +112,7 @@ def _move(x: float, rng: random.Random, how: str, size: float, coordinate: bool)
         for _ in range(rng.randint(1, 4)):
             x = float(np.nextafter(x, math.inf if rng.random() < 0.5 else -math.inf))
         return x
-    step = 1e-12 * (size if coordinate else abs(x))
+    step = amount * (size if coordinate else abs(x))
     return x + rng.choice((-1.0, 1.0)) * step
 
 
@@ -148,6 +150,7 @@ def assert_same_verdicts(data: dict[str, Any], tries: int = 3, seed: int = 0) ->
     rng = random.Random(seed)
     for i in range(tries):
         how = ("size", "ulps")[i % 2]
+        state = rng.getstate()
         moved = perturb(data, rng, how, size)
         words2, numbers2 = verdicts(moved)
         if words2 != words:
@@ -160,7 +163,31 @@ def assert_same_verdicts(data: dict[str, Any], tries: int = 3, seed: int = 0) ->
             big = max(1.0, float(np.max(np.abs(a), initial=0.0)))
             # 1e-12 in, at most 1e-6 of the largest value out (the report prints 4-6 figures)
             worst = int(np.argmax(np.abs(a - b)))
-            assert np.all(np.abs(a - b) <= 1e-6 * big), (how, worst, a[worst], b[worst], big)
+            if how == "size" and not np.all(np.abs(a - b) <= 1e-6 * big):
+                _smooth(data, state, size, words, a, b, big)
+            else:
+                assert np.all(np.abs(a - b) <= 1e-6 * big), (how, worst, a[worst], b[worst], big)
+
+
+def _smooth(data: dict[str, Any], state: Any, size: float, words: str, a: np.ndarray,
+            b: np.ndarray, big: float) -> None:
+    """A posture that amplifies its input (a force near self-locking, Sec. 11.8: F = P/d
+    with d small but well above round-off) moves its numbers by more than 1e-6 for 1e-12
+    in; that is the posture's conditioning, not a decision, when the response is smooth.
+    The same perturbation 10 times larger (same signs) keeps the words and moves every
+    number by 10 times as much, to first order (within half, for the round-off of such a
+    posture's own arithmetic); a jump (a branch or a sense taken at round-off) would move
+    it by as much at 1e-12 as at 1e-11."""
+    rng = random.Random()
+    rng.setstate(state)
+    words3, numbers3 = verdicts(perturb(data, rng, "size", size, amount=1e-11))
+    assert words3 == words, "a verdict moved under a 1e-11 perturbation"
+    assert numbers3 is not None and len(numbers3) == len(a)
+    linear = (np.array(numbers3) - a) / 10.0
+    step = b - a
+    worst = int(np.argmax(np.abs(step - linear)))
+    assert np.all(np.abs(step - linear) <= 0.5 * np.abs(step) + 1e-6 * big), \
+        ("not smooth", worst, step[worst], linear[worst], big)
 
 
 @pytest.mark.parametrize("name", sorted(PINNED))
