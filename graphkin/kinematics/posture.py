@@ -106,7 +106,7 @@ class _Group:
     links: tuple[str, str] = ("", "")
     path: Slider | Slot | None = None
     drive: Drive | None = None
-    slides: tuple[Slider, ...] = ()
+    slides: tuple[Slider | Slot, ...] = ()
 
 
 class _Builder:
@@ -383,8 +383,10 @@ class _Builder:
             return lab, "circle", f"R_{name}{_n(p)}", ("rot", lid, p)
         if lid in self.angle and not pts:
             th = self.angle[lid]
-            for s in ps.slides(self, lid):
-                return ps.slide_locus(self, lid, name, loc, s)
+            for s in self.mech.sliders:  # a slider's path (a slot's is the pin's only)
+                if (s.link == lid and s.on in self.placed) or \
+                        (s.on == lid and s.link in self.placed):
+                    return ps.slide_locus(self, lid, name, loc, s)
             for r in self.mech.rolling:
                 slot = r.slot_key  # the center's equivalent slot
                 if r.link == lid and r.on in self.placed and not r.fixed_centers:
@@ -435,6 +437,7 @@ class _Builder:
                 out.append(_Group("slot_through", path=slot))
         out += [_Group("coordinate", pin=lid, drive=d) for d, lid in pd.coordinate_groups(self)]
         out += ps.two_slides_groups(self)
+        out += ps.pins_in_line_groups(self)
         for sl in mech.sliders:
             # the rod of an inverted slider-crank: the block has one known point, no angle
             if (sl.on not in self.placed and sl.link not in self.placed
@@ -491,6 +494,8 @@ class _Builder:
             return [""]
         if kind == "two_slides":
             return ps.do_two_slides(self, group.links[0], group.pin, group.slides)
+        if kind == "pins_in_line":
+            return ps.do_pins_in_line(self, group.links[0], group.slides, branch)
         if kind == "coordinate":
             assert group.drive is not None
             return pd.do_coordinate(self, group.drive, group.pin, branch)

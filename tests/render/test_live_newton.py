@@ -1,7 +1,7 @@
 """The live page of a mechanism only Newton's method solves (render/live_newton.py).
 
-A rolling contact whose roller turns with its travel, a cam follower's
-linkage: the page runs Newton's method on the analytic solver's rows
+A rolling contact whose roller turns with its travel and is found with its
+position (Example 3.9's wheel): the page runs Newton's method on the analytic solver's rows
 written out as JavaScript (kinematics/analytic/jsrows.py) from the previous
 posture.  After random drags, every value the page shows
 (read in headless Chromium) must be what ``graphkin solve`` says of the file
@@ -31,8 +31,6 @@ ROOT = Path(__file__).resolve().parents[2]
 REL = 1e-9
 
 NEWTON = ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
-          "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
-          "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
           "examples/ex3_9_rolling_wheel.toml"]
 
 
@@ -247,7 +245,7 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
 
 
 @pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
-                                  "gallery/mechanisms/ex11_3_cam_follower_four_force.toml"])
+                                  "tests/data/rolling/planet_driven_relative_to_arm.toml"])
 def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
     # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
     # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal

@@ -1,10 +1,13 @@
-"""The live page of the Scotch yoke is the construction, with both polygons.
+"""The live pages of the Scotch yoke and of Chapter 11's cam followers are constructions.
 
 The yoke keeps its angle and is held by two slides (the frame's guide and
 the block in its slot): one point of it lies on two lines that meet (Sec. 2.8,
 case 3; posture.py ``two_slides``), so the page is the recorded construction
 written out as JavaScript, with the velocity and acceleration polygons, not
-Newton's method.  After random drags of the crank and of a frame pivot,
+Newton's method.  So is the follower of Examples 11.3 and 11.5, whose slot
+passes through both bearings of the frame (its angle from the line through
+them) and whose point A is then where its axis meets the cam's face.  After
+random drags of the crank and of a frame pivot,
 every position and image on the page equals ``graphkin solve`` of the file
 the page saves to 1e-9.  Skipped without Chromium.
 """
@@ -15,6 +18,7 @@ import zlib
 from pathlib import Path
 
 import numpy as np
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from live_edit import page_file as _page
@@ -22,6 +26,7 @@ from strategies import examples, scotch_yokes
 
 import graphkin
 from graphkin.files import load_toml
+from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_html
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -41,6 +46,11 @@ def _same_as_solve(browser, tmp_path: Path) -> dict:
     names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points
              if n not in frame]
     scale = 1.0 + max(abs(v) for n in names for v in r[n])
+    if not mech.has_rates:
+        for n in names:
+            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale,
+                                       err_msg=n)
+        return r
     vs = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"v({n})"], r["o_v"]))
     as_ = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"a({n})"], r["o_a"]))
     for n in names:
@@ -116,4 +126,33 @@ def test_random_scotch_yokes_and_drags_equal_solve(browser, tmp_path_factory, rm
         d = browser.js("window.graphkinLive.state()")["drive"]
         assert browser.js(f"window.graphkinLive.setDrive({d + step!r})") is not None
         _same_as_solve(browser, tmp)
+    assert browser.errors() == []
+
+
+CAMS = ["gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
+        "gallery/mechanisms/ex11_5_cam_follower_friction.toml"]
+
+
+@pytest.mark.parametrize("name", CAMS)
+@pytest.mark.parametrize("rates", [False, True])
+def test_the_cam_follower_pages_are_the_construction(browser, tmp_path, name, rates):
+    # the files as they are (no rates: the posture and the force polygons), and with the
+    # cam turning at ω2 = 12, α2 = -5 (both polygons); dragged ±30° about the file's drive,
+    # where the face stays off the follower's axis
+    data = load_toml(ROOT / name)
+    if rates:
+        data["drive"].update(omega=12.0, alpha=-5.0)
+    mech = from_dict(data, source=name)
+    page = tmp_path / "cam.html"
+    page.write_text(live_html(mech, data, "cam.toml"), encoding="utf-8")
+    browser.open(page)
+    assert browser.errors() == []
+    assert browser.js("typeof gkNewton") == "undefined"
+    _same_as_solve(browser, tmp_path)
+    d0 = browser.js("window.graphkinLive.state()")["drive"]
+    rng = np.random.default_rng(zlib.crc32(name.encode()) + rates)
+    for step in rng.uniform(-0.5, 0.5, size=3):
+        assert browser.js(f"window.graphkinLive.setDrive({d0 + float(step)!r})") is not None
+        r = _same_as_solve(browser, tmp_path)
+        assert abs(r["A"][0]) < 1e-9 * 100  # on the follower's axis x = 0, through B and D
     assert browser.errors() == []
