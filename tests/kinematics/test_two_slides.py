@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 from strategies import examples, scotch_yokes
 
 import graphkin
+from graphkin.geometry import ops as g
 from graphkin.kinematics.analytic import solve_analytic_many
 from graphkin.kinematics.sweep.engine import _Engine
 from graphkin.tolerance import DEFAULT_TOL
@@ -230,3 +231,45 @@ def test_random_followers_in_two_bearings_sweep_like_the_analytic_solver(case):
                     np.testing.assert_allclose(
                         np.asarray(getattr(sw.solution, what)(n))[ok], ref, rtol=0,
                         atol=1e-9 * (1 + np.max(np.abs(ref))), err_msg=f"{what} {n}")
+
+
+def test_the_verdicts_hold_under_round_off():
+    # every coordinate of Example 11.3's and Fig. 3.27's files moved by 1e-12 of the size: the
+    # same construction (two slides meet, the follower's slot along BD) with the same
+    # branches, the same posture to round-off
+    from graphkin.files import load_toml
+    from graphkin.kinematics.posture import build_posture
+    from graphkin.mechanisms import from_dict
+
+    rng = np.random.default_rng(11)
+    for path in (YOKE, CAMS[0]):
+        data = load_toml(path)
+        base = build_posture(graphkin.load(path))
+        for _ in range(3):
+            moved = {**data, "links": {lid: {n: [float(c) * (1 + 1e-12 * rng.normal())
+                                                 + 1e-12 * 60 * rng.normal() for c in xy]
+                                             for n, xy in pts.items()}
+                                       for lid, pts in data["links"].items()}}
+            mech = from_dict(moved, source=path.name)
+            pc = build_posture(mech)
+            assert [s.op for s in pc.construction.steps] == \
+                [s.op for s in base.construction.steps]
+            assert pc.branches == base.branches
+            for n in ("A", "F") if path == YOKE else ("A", "E"):
+                np.testing.assert_allclose(g.xy(pc.values[n]), g.xy(base.values[n]), rtol=0,
+                                           atol=1e-9 * 60, err_msg=n)
+
+
+def test_a_slot_parallel_to_the_guide_is_not_two_slides():
+    # the yoke's slot turned along the guide: the two paths of F never meet (parallel within
+    # round-off), so no construction step claims them: link 4 is left to the analytic solver
+    import pytest
+
+    from graphkin.files import load_toml
+    from graphkin.kinematics.posture import NotDecomposable, build_posture
+    from graphkin.mechanisms import from_dict
+
+    data = load_toml(YOKE)
+    data["links"]["4"]["S1"] = [1, 0]
+    with pytest.raises(NotDecomposable, match="link 4"):
+        build_posture(from_dict(data, source="parallel.toml"))
