@@ -37,6 +37,7 @@ from graphkin.construction.ops import OPS
 from graphkin.errors import AssemblyError, ConstructionError
 from graphkin.geometry import ops as g
 from graphkin.kinematics import posture_drives as pd
+from graphkin.kinematics import posture_slides as ps
 from graphkin.kinematics.posture_branches import (
     _differ_tolerance,
     _hint_distance,
@@ -105,6 +106,7 @@ class _Group:
     links: tuple[str, str] = ("", "")
     path: Slider | Slot | None = None
     drive: Drive | None = None
+    slides: tuple[Slider | Slot, ...] = ()
 
 
 class _Builder:
@@ -381,24 +383,10 @@ class _Builder:
             return lab, "circle", f"R_{name}{_n(p)}", ("rot", lid, p)
         if lid in self.angle and not pts:
             th = self.angle[lid]
-            for s in self.mech.sliders:
-                if s.link == lid and s.on in self.placed:
-                    sloc = self.mech.links[lid].points[s.point]
-                    x = self.fresh(f"{name}'")
-                    self.add("rigid", (f"{s.key}:L0", th), (x,), local_p=sloc, local_q=loc,
-                             note=f"Where {name} would be with {s.point} at the line's start.")
-                    lab = f"l_{name}({s.key})"
-                    self.add("parallel", (f"{s.key}:line", x), (lab,),
-                             note=f"Through it draw the path of {name}, parallel to the slide.")
-                    return lab, "line", f"R_{name}", ("slide", lid, s.on, lab)
-                if s.on == lid and s.link in self.placed:
-                    x = self.fresh(f"{name}'")
-                    self.add("rigid", (s.point, th), (x,), local_p=s.p0, local_q=loc,
-                             note=f"Where {name} would be with the slide's start at {s.point}.")
-                    lab = f"l_{name}({s.key})"
-                    self.add("line_at_angle", (x, th), (lab,), offset=s.direction_angle,
-                             note=f"Through it draw the path of {name}, parallel to the slide.")
-                    return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
+            for s in self.mech.sliders:  # a slider's path (a slot's is the pin's only)
+                if (s.link == lid and s.on in self.placed) or \
+                        (s.on == lid and s.link in self.placed):
+                    return ps.slide_locus(self, lid, name, loc, s)
             for r in self.mech.rolling:
                 slot = r.slot_key  # the center's equivalent slot
                 if r.link == lid and r.on in self.placed and not r.fixed_centers:
@@ -448,6 +436,8 @@ class _Builder:
                     and self.one_point(slot.on)):
                 out.append(_Group("slot_through", path=slot))
         out += [_Group("coordinate", pin=lid, drive=d) for d, lid in pd.coordinate_groups(self)]
+        out += ps.two_slides_groups(self)
+        out += ps.pins_in_line_groups(self)
         for sl in mech.sliders:
             # the rod of an inverted slider-crank: the block has one known point, no angle
             if (sl.on not in self.placed and sl.link not in self.placed
@@ -502,6 +492,10 @@ class _Builder:
                 raise AssemblyError(f"cannot assemble: the paths of {name} are parallel",
                                     step=name)
             return [""]
+        if kind == "two_slides":
+            return ps.do_two_slides(self, group.links[0], group.pin, group.slides)
+        if kind == "pins_in_line":
+            return ps.do_pins_in_line(self, group.links[0], group.slides, branch)
         if kind == "coordinate":
             assert group.drive is not None
             return pd.do_coordinate(self, group.drive, group.pin, branch)

@@ -330,3 +330,74 @@ def test_a_planet_page_moves_the_follower_too(browser, tmp_path):
         for lid in ("2", "3", "4"):
             assert r[f"ω{lid}"] == pytest.approx(float(sol.omega(lid)), abs=REL * 100)
             assert r[f"α{lid}"] == pytest.approx(float(sol.alpha(lid)), abs=REL * 1000)
+
+
+_WHEEL = """\
+title = "Example 3.9's wheel rolling on the ground, and a crank that follows the drive"
+[links.1]
+O2 = [0, 0]
+G1 = [0, 0]
+G2 = [1, 0]
+O5 = [-300, 200]
+[links.2]
+O2 = [0, 0]
+A = [150, 0]
+[links.3]
+A = [0, 0]
+B = [200, 0]
+[links.4]
+G = [0, 0]
+B = [0, 50]
+[links.5]
+O5 = [0, 0]
+C = [80, 0]
+[[rolling]]
+link = 4
+on = 1
+circle = { center = "G", radius = 100 }
+line = ["G1", "G2"]
+side = "left"
+[[drive]]
+link = 2
+angle = 90
+omega = 10
+alpha = 2
+[[drive]]
+link = 5
+follows = { link = 2, ratio = -0.5, offset = 15 }
+[assembly]
+B = [200, 150]
+"""
+
+
+def test_a_newton_page_moves_the_follower_too(browser, tmp_path):
+    # Example 3.9 (Fig. 3.18): the wheel 4 rolls on the ground, driven by the crank 2 and the
+    # coupler 3; no ruler-and-compass step finds B (an arc about A against the trochoid of
+    # B), so the page runs Newton's method.  A crank 5 follows the drive, θ5 = −θ2/2 + 15°,
+    # so ω5 = −5 and α5 = −1 rad/s² throughout, and the wheel's center stays one radius
+    # (100) above the ground
+    path = tmp_path / "wheel.toml"
+    path.write_text(_WHEEL, encoding="utf-8")
+    mech = graphkin.load(path)
+    data, _ = live_data(mech, load_toml(path), path.name)
+    assert data.get("newton") and data["follow"]
+    page = tmp_path / "wheel.html"
+    page.write_text(live_html(mech, load_toml(path), path.name), encoding="utf-8")
+    browser.open(page)
+    for deg in (80.0, 100.0, 70.0, 110.0):
+        r = browser.js(f"window.graphkinLive.setDrive({math.radians(deg)!r})")
+        assert browser.errors() == [] and r is not None
+        assert math.remainder(r["θ5"] - math.radians(15.0 - deg / 2), 2 * math.pi) == \
+            pytest.approx(0.0, abs=1e-12)
+        assert r["ω5"] == pytest.approx(-5.0, abs=1e-9)
+        assert r["α5"] == pytest.approx(-1.0, abs=1e-9)
+        assert r["G"][1] == pytest.approx(100.0, abs=1e-9 * 300)
+        saved = tmp_path / "saved.toml"
+        saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+        assert "follows" in tomllib.loads(saved.read_text(encoding="utf-8"))["drive"][1]
+        sol = graphkin.load(saved).solve()
+        for n in ("A", "B", "G", "C"):
+            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * 300, err_msg=n)
+        for lid in ("2", "3", "4", "5"):
+            assert r[f"ω{lid}"] == pytest.approx(float(sol.omega(lid)), abs=REL * 100)
+            assert r[f"α{lid}"] == pytest.approx(float(sol.alpha(lid)), abs=REL * 1000)

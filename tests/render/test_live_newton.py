@@ -1,9 +1,9 @@
 """The live page of a mechanism only Newton's method solves (render/live_newton.py).
 
-Two sliders closing one loop, a rolling contact whose roller turns with its
-travel, a cam follower's linkage: the page runs Newton's method on the
-analytic solver's rows written out as JavaScript (kinematics/analytic/jsrows.py)
-from the previous posture.  After random drags, every value the page shows
+A rolling contact whose roller turns with its travel and is found with its
+position (Example 3.9's wheel): the page runs Newton's method on the analytic solver's rows
+written out as JavaScript (kinematics/analytic/jsrows.py) from the previous
+posture.  After random drags, every value the page shows
 (read in headless Chromium) must be what ``graphkin solve`` says of the file
 the page saves, to 1e-9 of its scale; the rolling contact's saved angle makes
 that file's posture the page's.  Skipped without Chromium.
@@ -31,10 +31,7 @@ from graphkin.render.live import live_html
 ROOT = Path(__file__).resolve().parents[2]
 REL = 1e-9
 
-NEWTON = ["gallery/centers/fig3_27_scotch_yoke.toml",
-          "gallery/mechanisms/fig3_18_rolling_wheel.toml",
-          "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
-          "gallery/mechanisms/ex11_5_cam_follower_friction.toml",
+NEWTON = ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
           "examples/ex3_9_rolling_wheel.toml"]
 
 
@@ -108,10 +105,10 @@ def test_the_wheel_rolls_its_travel(browser, tmp_path):
     np.testing.assert_allclose(r2["G"], r0["G"], rtol=0, atol=1e-9 * 300)
 
 
-def test_dragging_a_pivot_of_the_scotch_yoke(browser, tmp_path):
-    # Fig. 3.27: drag the crank's pivot O2; Newton follows from the posture before, and the
+def test_dragging_a_pivot_of_the_rolling_wheel(browser, tmp_path):
+    # Fig. 3.18: drag the crank's pivot O2; Newton follows from the posture before, and the
     # saved file (O2 moved) solves to the page's posture and rates
-    browser.open(_page(tmp_path, ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"))
+    browser.open(_page(tmp_path, ROOT / "gallery/mechanisms/fig3_18_rolling_wheel.toml"))
     xy = browser.js("(function () { var r = document.querySelector('.gk-handle[data-kind="
                     "\"frame\"]').getBoundingClientRect(); return [r.x + r.width / 2,"
                     " r.y + r.height / 2]; })()")
@@ -132,9 +129,10 @@ def test_dragging_a_pivot_of_the_scotch_yoke(browser, tmp_path):
 
 
 def test_the_coupler_curve_is_the_analytic_sweep(browser, tmp_path):
-    # the scotch yoke's point F over the whole turn, from the page, against graphkin's sweep
-    # (Newton's method in Python, each posture from the one before)
-    path = ROOT / "gallery/centers/fig3_27_scotch_yoke.toml"
+    # a rack sliding under a driven pinion (graphkin has no step yet laying off the rack's
+    # travel from the pinion's angle) over the whole turn, from the page, against
+    # graphkin's sweep (Newton's method in Python, each posture from the one before)
+    path = ROOT / "tests/data/rolling/rack_under_driven_pinion.toml"
     browser.open(_page(tmp_path, path))
     state = browser.js("window.graphkinLive.state()")
     mech = graphkin.load(path)
@@ -180,8 +178,9 @@ def _same_as_sweep(r: dict, mech, path: np.ndarray, tol_scale: float) -> None:
 def test_random_mechanisms_and_drags_equal_the_sweep(browser, tmp_path_factory, rm, steps):
     # every rolling arrangement of tests/strategies_rolling.py (a construction page when the
     # roller's angle follows its travel by a step, else Newton's method) and random Scotch
-    # yokes, dragged by random drive steps: the page's values are graphkin's analytic sweep
-    # along the same path of drive values (each posture continuing the one before)
+    # yokes (a construction page: two slides meet, case 3), dragged by random drive
+    # steps: the page's values are graphkin's analytic sweep along the same path of drive
+    # values (each posture continuing the one before)
     tmp = tmp_path_factory.mktemp("newton")
     mech = rm.mechanism()
     page = tmp / "random.html"
@@ -247,8 +246,7 @@ def test_a_roller_turning_with_its_travel_is_constructed_on_the_page(browser, tm
 
 
 @pytest.mark.parametrize("name", ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
-                                  "gallery/mechanisms/ex11_3_cam_follower_four_force.toml",
-                                  "gallery/centers/fig3_27_scotch_yoke.toml"])
+                                  "tests/data/rolling/planet_driven_relative_to_arm.toml"])
 def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
     # the centers `graphkin draw -d centers` draws (a rolling contact's I14 at the foot of
     # the normal from the wheel's center, Sec. 3.13; a pin in a slot's center on the normal

@@ -147,7 +147,8 @@ def _turning(sol: Solution, lid: str, tol: Tolerance) -> bool:
     if st.omega is None:
         return False
     w = abs(float(st.omega))
-    if w == 0.0:
+    if w * w < np.finfo(float).tiny:
+        # ω = 0, or so small that ω² underflows: the construction divides by ω² (J = I + A_I/ω²)
         return False
     mech = sol.mechanism
     # the largest speed of the posture: the same for every link, so found once per solution
