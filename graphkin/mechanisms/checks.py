@@ -29,11 +29,30 @@ needs ω.  It was silently left out (no accelerations reported); it is refused.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import is_zero
+
+
+def _names_of(data: Mapping[str, Any]) -> set[str]:
+    links = data.get("links")
+    if not isinstance(links, Mapping):
+        return set()
+    return {str(n) for lk in links.values() if isinstance(lk, Mapping) for n in lk}
+
+
+def added_points(data: Mapping[str, Any], expanded: Mapping[str, Any]) -> frozenset[str]:
+    """The points a ``[[cams]]`` expansion added (its equivalent linkage's pins, Sec. 4.7).
+
+    A cam's center of curvature may stand on its pivot (a circular arc about it, in
+    a dwell): a crank of zero length the user never wrote, so not a slip to refuse.
+    """
+    if expanded is data:
+        return frozenset()
+    return frozenset(_names_of(expanded) - _names_of(data))
 
 
 def check_zero_lengths(mech: Mechanism, fail: Callable[[str | None, str], InputError],

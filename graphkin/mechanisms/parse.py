@@ -17,7 +17,7 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, design_file, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.cam_joint import with_cams
-from graphkin.mechanisms.checks import check_rates_given, check_zero_lengths
+from graphkin.mechanisms.checks import added_points, check_rates_given, check_zero_lengths
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -99,25 +99,7 @@ def from_dict(data: Mapping[str, Any], source: str = "<mechanism>") -> Mechanism
         raise InputError(f"this is {what}, not a mechanism file: 'graphkin {verb} {name}' "
                          "reads it", key=key, file=source)
     return with_cams(data, source,
-                     lambda d: _Parser(d, source, _added_points(data, d)).mechanism())
-
-
-def _names_of(data: Mapping[str, Any]) -> set[str]:
-    links = data.get("links")
-    if not isinstance(links, Mapping):
-        return set()
-    return {str(n) for lk in links.values() if isinstance(lk, Mapping) for n in lk}
-
-
-def _added_points(data: Mapping[str, Any], expanded: Mapping[str, Any]) -> frozenset[str]:
-    """The points a ``[[cams]]`` expansion added (its equivalent linkage's pins, Sec. 4.7).
-
-    A cam's center of curvature may stand on its pivot (a circular arc about it, in
-    a dwell): a crank of zero length the user never wrote, so not a slip to refuse.
-    """
-    if expanded is data:
-        return frozenset()
-    return frozenset(_names_of(expanded) - _names_of(data))
+                     lambda d: _Parser(d, source, added_points(data, d)).mechanism())
 
 
 class _Parser:
