@@ -288,7 +288,9 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
     The page is built again, held (``turn=False``), from the file with the
     drive turned 11°, −13°, 37° and 101° (where the cam has an equivalent
     linkage).  Every number of the construction's ``K`` but
-    the cams' must be the same and the force construction too, else the page
+    the cams' and the branches the page keeps itself (``data["branches"]``: picked
+    there from the file's assembly hints, which the follower's travel may bring
+    nearer the other branch) must be the same and the force construction too, else the page
     is held at the file's angle (``data["turn"]`` removed, said in the
     drive's line).  An instant centers' route or a curvature construction
     found at the file's angle that is another one there (the file's angle in a
@@ -302,6 +304,11 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         others = _elsewhere(mech, file_data, source)
         mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"])}
         mine |= {c["branch"] for c in turn["cams"] if c["branch"] is not None}
+        # a branch of the rest of the mechanism is the page's own: kept while the cam turns,
+        # switchable, and saved as the point's assembly hint; the page built at another angle
+        # picks it afresh from the file's fixed hint, which a point moved far enough (the
+        # follower's lift) lies nearer the other branch of: not a change of construction
+        mine |= set(data.get("branches", {}).values())
         for other in others:
             k1, k2 = data["K"], other["K"]
             if len(k1) != len(k2):

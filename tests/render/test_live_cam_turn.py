@@ -32,7 +32,7 @@ from live_cams_shared import TMP, cam_file, page_state, same_as_solve, straight_
 from strategies import examples
 
 import graphkin
-from graphkin.cams import FollowerKind
+from graphkin.cams import Cam, Follower, FollowerKind, Motion, Program, Segment, Sense
 from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.mechanisms import from_dict
@@ -210,6 +210,47 @@ def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
             same_as_solve(browser, tmp_path, mech, state)
 
     check()
+
+
+def _side(p, o7, q) -> float:
+    """The side of the line P-O7 that Q lies on (the sign of (O7 − P) × (Q − P))."""
+    (px, py), (ox, oy), (qx, qy) = p, o7, q
+    return math.copysign(1.0, (ox - px) * (qy - py) - (oy - py) * (qx - px))
+
+
+def test_a_branch_the_file_s_hint_picks_otherwise_elsewhere_still_turns(browser, tmp_path) -> None:
+    # A knife-edge cam lifting its follower 40 mm (two cycloidal strokes of 150°, a dwell)
+    # drives a dyad P-Q-O7 laid out nearly along P-O7 (the links 120 and 40 mm, 12° apart
+    # at Q): Q's hint, where the file draws it at 10°, is nearer the OTHER branch once the
+    # follower has risen at 111° (checked below by solve alone).  The page keeps its own
+    # branch while the cam turns (and saves Q where it is): it must turn, not be held.
+    prog = Program((Segment(Motion.CYCLOIDAL, 40.0, math.radians(150)),
+                    Segment(Motion.CYCLOIDAL, -40.0, math.radians(150)),
+                    Segment(Motion.DWELL, 0.0, math.radians(60))))
+    cam = Cam(prog, 40.0, Follower(FollowerKind.KNIFE_EDGE, offset=-5.0), Sense.CCW)
+    path = tmp_path / "flip_cam.toml"
+    path.write_text(cam_toml(cam), encoding="utf-8")
+    file = cam_file(cam, path, 10.0, 90.0, 3.0, 1.0, (0.0, 1.5, math.pi - 0.21, 0.5))
+    assert file is not None
+    mech = from_dict(file, source="flip.toml")
+    later = json.loads(json.dumps(file))
+    later["drive"]["angle"] = 10.0 + 101.0
+    s0, s1 = (from_dict(f).solve() for f in (file, later))
+    sides = [_side(s.position("P"), s.position("O7"), s.position("Q")) for s in (s0, s1)]
+    assert sides[0] != sides[1]         # solve of the file at 111° takes the other branch
+    d, _ = live_data(mech, file, "flip.toml")
+    assert d.get("turn") is not None, d["cam"]["why"]
+    page = tmp_path / "flip.html"
+    page.write_text(live_html(mech, file, "flip.toml"), encoding="utf-8")
+    browser.open(page)
+    drive0 = d["drive"]["value"]
+    for off in (37.0, 101.0):
+        browser.js(f"window.graphkinLive.setDrive({drive0 + math.radians(off)})")
+        state = page_state(browser)
+        r = state["result"]
+        assert r is not None
+        assert _side(r["P"], r["O7"], r["Q"]) == sides[0]      # the page's branch, kept
+        same_as_solve(browser, tmp_path, mech, state)
 
 
 def test_a_kind_not_turned_is_held_and_says_why(tmp_path) -> None:
