@@ -5,7 +5,7 @@ The equivalent linkage of a ``[[cams]]`` joint (Sec. 4.7,
 cam is the pitch curve's center of curvature there and its coupler ``|ρ|``
 long.  At another angle Θ the linkage is another one, with the cam's own
 numbers: this module writes, for a knife-edge or roller follower
-(translating or oscillating), the two construction steps that give them from
+(translating or oscillating) and an oscillating flat face, the two construction steps that give them from
 the cam link's angle θ2 (:mod:`graphkin.construction.ops.cam_program`):
 
 * ``cam_program``: Θ, the lift ``Y`` and ``y'``, ``y''`` (Secs. 6.3-6.8);
@@ -19,9 +19,13 @@ check is :func:`graphkin.cams.analytic.profile` and
 :func:`graphkin.cams.equivalent.equivalent_linkage`, which share no code with
 them.
 
-Not turned (:class:`NotTurned`, with the reason): a flat-face follower (its
-equivalent linkage is a slot whose line moves with ρ) and the motions with
-no expression here (a table of displacements).
+An oscillating flat face turns too: ``cam_center`` then gives the center of
+curvature of the *profile* (the face's envelope) and, in place of ``|ρ|``, the
+offset ``y`` of the slot in the follower's own coordinates (Example 4.7).
+
+Not turned (:class:`NotTurned`, with the reason): a translating flat face (its
+equivalent linkage, a slot across a slider, is solved by Newton's method) and
+the motions with no expression here (a table of displacements).
 
 References
 ----------
@@ -37,7 +41,7 @@ from typing import Any
 import numpy as np
 
 from graphkin.cams.joint import CamJoint
-from graphkin.cams.model import Cam
+from graphkin.cams.model import Cam, FollowerKind
 from graphkin.cams.motions import _P8, Motion, Rest, piece_rows
 from graphkin.construction.step import Step
 
@@ -139,9 +143,9 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
     """
     cam = joint.cam
     f = cam.follower
-    if f.kind.flat:
-        raise NotTurned("a flat-face follower's equivalent linkage is a slot whose line moves "
-                        "with the radius of curvature: the live page keeps its cam angle")
+    if f.kind is FollowerKind.FLAT_FACE:
+        raise NotTurned("a translating flat-face follower's equivalent linkage (a slot across "
+                        "a slider) is solved by Newton's method, with no step to turn")
     shift = joint.axis - math.pi / 2
     fl = joint.follower
     names = [f"Θ{fl}", f"Y{fl}", f"y'{fl}", f"y''{fl}"]
@@ -151,7 +155,11 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
         "s": float(cam.s), "scale": float(joint.scale), "size": float(size),
         "roller": float(f.roller) if f.kind.roller else 0.0,
         "rot": (math.cos(shift), math.sin(shift)), "o2": tuple(map(float, joint.center))}
-    if f.kind.oscillating:
+    if f.kind is FollowerKind.OSCILLATING_FLAT_FACE:
+        center.update(follower="oscillating_flat", sig=float(f.rise.sign),
+                      arm0=float(cam.arm0), pivot=tuple(map(float, f.pivot)),
+                      face_offset=float(f.face_offset))
+    elif f.kind.oscillating:
         center.update(follower="oscillating", sig=float(f.rise.sign), arm=float(f.arm),
                       arm0=float(cam.arm0), pivot=tuple(map(float, f.pivot)))
     else:

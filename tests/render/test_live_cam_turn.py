@@ -167,7 +167,7 @@ def test_an_undercut_profile_is_said(browser, tmp_path) -> None:
     assert "undercut" not in browser.js(STATUS)
 
 
-@pytest.mark.parametrize("kind", [k for k in FollowerKind if not k.flat],
+@pytest.mark.parametrize("kind", [k for k in FollowerKind if k is not FollowerKind.FLAT_FACE],
                          ids=lambda k: k.value)
 def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
 
