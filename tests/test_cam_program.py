@@ -166,17 +166,34 @@ def test_a_straight_pitch_curve_has_no_center() -> None:
     assert _javascript(t, np.array([th + 0.02]))[0] is not None
 
 
-def test_the_kinds_not_expressed_are_refused_with_the_reason(tmp_path) -> None:
+def test_a_table_segment_is_its_spline(tmp_path) -> None:
+    # Ex 6.6's first rise given as a table of displacements (a natural cubic spline through
+    # them, cams/motions.table_shape): cam_program's Y, y', y'' are Program.evaluate's at
+    # angles inside each interval, on the knots and in the other segments, in both languages
     src = Path("examples/cams/ex6_6_roller.toml").read_text(encoding="utf-8")
     table = src.replace('motion = "harmonic"\nlift = 30\nangle = 90',
-                        'motion = "table"\nangle = 90\npoints = [[0, 0], [45, 20], [90, 30]]', 1)
+                        'motion = "table"\nangle = 90\npoints = [[0, 0], [20, 4], [45, 20], '
+                        '[70, 27], [90, 30]]', 1)
     assert table != src
     (tmp_path / "table.toml").write_text(table, encoding="utf-8")
     j = from_dict({"links": {"1": {"O2": [0, 0]}},
                    "cams": {"link": 2, "follower": 4, "file": str(tmp_path / "table.toml")},
                    "drive": {"link": 2, "angle": 30}}).cams[0]
-    with pytest.raises(NotTurned, match="segment 1 .*table"):
-        turn_steps(j, "θ2")
+    t = turn_steps(j, "θ2")          # axis 90°, counterclockwise: θ2 = Θ
+    deg = np.array([0.0, 7.0, 20.0, 33.3, 45.0, 61.0, 70.0, 89.9, 90.0, 133.0, 271.0, 359.0])
+    th2 = np.radians(deg)
+    k = j.cam.program.evaluate(th2)
+    py = _python(t, th2)
+    assert py is not None
+    for lab, ref in (("Y4", k.Y), ("y'4", k.y1), ("y''4", k.y2)):
+        _close(py[f"{lab}.value"], ref, 30.0 + float(np.abs(ref).max()), lab)
+    for i, v in enumerate(_javascript(t, th2)):
+        for lab in ("Y4", "y'4", "y''4"):
+            ref = py[f"{lab}.value"][i]
+            _close(v[lab], ref, 30.0 + abs(float(ref)), f"{lab} (js)")
+
+
+def test_the_kinds_not_expressed_are_refused_with_the_reason(tmp_path) -> None:
     flat = Path("examples/cams/ex6_3_flat_face.toml").resolve()
     j = from_dict({"units": "in", "links": {"1": {"O2": [0, 0]}},
                    "cams": {"link": 2, "follower": 4, "file": str(flat)},

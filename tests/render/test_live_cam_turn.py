@@ -253,20 +253,28 @@ def test_a_branch_the_file_s_hint_picks_otherwise_elsewhere_still_turns(browser,
         same_as_solve(browser, tmp_path, mech, state)
 
 
-def test_a_kind_not_turned_is_held_and_says_why(tmp_path) -> None:
+def test_a_table_segment_turns_as_solve_says(browser, tmp_path) -> None:
+    # Ex 6.6's first rise given as a table (a natural cubic spline through its points): the
+    # cam turns through it, and every value is solve's of the saved file
     cam = (ROOT / "examples" / "cams" / "ex6_6_roller.toml").read_text(encoding="utf-8")
-    trap = cam.replace('motion = "harmonic"\nlift = 30\nangle = 90',
-                       'motion = "table"\nangle = 90\npoints = [[0, 0], [45, 20], [90, 30]]', 1)
-    assert trap != cam
-    (tmp_path / "ex6_6_roller.toml").write_text(trap, encoding="utf-8")
-    src = tmp_path / "held.toml"
+    table = cam.replace('motion = "harmonic"\nlift = 30\nangle = 90',
+                        'motion = "table"\nangle = 90\npoints = [[0, 0], [20, 4], [45, 20], '
+                        '[70, 27], [90, 30]]', 1)
+    assert table != cam
+    (tmp_path / "ex6_6_roller.toml").write_text(table, encoding="utf-8")
+    src = tmp_path / "table.toml"
     src.write_text(FILES["ex6_6"].read_text(encoding="utf-8"), encoding="utf-8")
-    d, _ = live_data(graphkin.load(src), load_toml(src), "held.toml")
-    assert "turn" not in d and "tip" not in d["drive"]
-    why = d["cam"]["why"]
-    assert why.startswith("held.toml: drive.angle: the page keeps the cam angle")
-    assert "\n" not in why
-    assert "not turned on the page: segment 1" in why and "table" in why
+    mech = graphkin.load(src)
+    d, _ = live_data(mech, load_toml(src), "table.toml")
+    assert d.get("turn") is not None, d["cam"]["why"]
+    page = tmp_path / "table.html"
+    page.write_text(live_html(mech, load_toml(src), src.name), encoding="utf-8")
+    browser.open(page)
+    for deg in (12.0, 45.0, 63.0, 120.0):         # inside the table, on a point, past it
+        browser.js(f"window.graphkinLive.setDrive({math.radians(deg)})")
+        state = page_state(browser)
+        assert state["result"] is not None
+        same_as_solve(browser, tmp_path, mech, state)
 
 
 def test_the_page_is_small_and_offline() -> None:
