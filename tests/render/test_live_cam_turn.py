@@ -277,6 +277,22 @@ def test_a_table_segment_turns_as_solve_says(browser, tmp_path) -> None:
         same_as_solve(browser, tmp_path, mech, state)
 
 
+def test_a_translating_flat_face_has_no_page_said_in_one_line(tmp_path) -> None:
+    # its equivalent linkage (a slot across a slider) is solved by Newton's method, which on
+    # a page would turn the linkage, not the cam: refused, one line naming the file
+    prog = Program((Segment(Motion.CYCLOIDAL, 1.0, math.radians(180)),
+                    Segment(Motion.CYCLOIDAL, -1.0, math.radians(180))))
+    cam = Cam(prog, 3.0, Follower(FollowerKind.FLAT_FACE, offset=0.5), Sense.CW)
+    path = tmp_path / "flat_cam.toml"
+    path.write_text(cam_toml(cam), encoding="utf-8")
+    file = cam_file(cam, path, 40.0, 90.0, 3.0, 1.0, (0.5, 1.0, 2.0, 1.0))
+    assert file is not None
+    with pytest.raises(GraphkinError) as err:
+        live_data(from_dict(file, source="flat.toml"), file, "flat.toml")
+    said = err.value.one_line()
+    assert said.startswith("flat.toml: no live page") and "Newton" in said and "\n" not in said
+
+
 def test_the_page_is_small_and_offline() -> None:
     for src in FILES.values():
         text = live_html(graphkin.load(src), load_toml(src), src.name)
