@@ -96,6 +96,11 @@ function gkTurnTheta(c, x) {
   return (t - tp * Math.floor(t / tp)) * 180 / Math.PI;
 }
 function gkTurnNum(v) { return Number(v.toPrecision(5)).toString(); }
+// the lift: a length, or an oscillating follower's swing (radians, shown in degrees)
+function gkTurnLift(c, v) {
+  return c.swing ? gkTurnNum(v[c.lift] * 180 / Math.PI) + "\u00b0" :
+    gkTurnNum(v[c.lift]) + " " + c.unit;
+}
 function gkTurnFace(c, x) {
   return c.key + ": at \u0398 = " + gkTurnNum(gkTurnTheta(c, x)) + "\u00b0 the face's slot " +
     "would pass through the follower's pivot or beyond it (the profile's radius of curvature " +
@@ -153,13 +158,13 @@ function gkTurnNote(T, t, x) {
     const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, x);
     const tol = 1e-9 * c.size;
     if (c.ysign) {      // a flat face: the profile's own radius (Sec. 6.9), positive or a cusp
-      return c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnNum(v[c.lift]) +
-        " " + c.unit + ", profile \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
+      return c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnLift(c, v) +
+        ", profile \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
         (rho > tol ? " (convex)." : " (not positive: the profile has a cusp here, Sec. 6.9; " +
          "the values are the program's, as graphkin solve gives them).");
     }
-    let s = c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnNum(v[c.lift]) +
-      " " + c.unit + ", pitch curve \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
+    let s = c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnLift(c, v) +
+      ", pitch curve \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
       (rho > tol ? " (convex)" : " (concave: K on the follower's side)");
     if (c.roller > 0 && rho > tol && rho < c.roller - tol) {
       s += "; the roller (" + gkTurnNum(c.roller) + " " + c.unit + ") is larger than " +
@@ -367,6 +372,7 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             "s": float(cam.s), "shift": float(j.axis - math.pi / 2),
             "roller": float(f.roller) if f.kind.roller else 0.0, "scale": float(j.scale),
             "size": float(size), "reach": float(size * j.scale), "unit": cam.unit,
+            "swing": bool(f.kind.oscillating),
             "outline": [[round(float(z.real), 6), round(float(z.imag), 6)] for z in u]})
     return out, js
 
@@ -425,7 +431,8 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
     if any(_json(data.get("centers")) != _json(other.get("centers")) for other in others):
         data["centers"] = dict(data["centers"], fn=None, why=(
             f"the Kennedy route found at the file's cam angle ({deg}) is another one at other "
-            "angles (two centers coincide there, as in a dwell); change the file's angle"))
+            "angles (Kennedy's lines are chosen where they meet best at that posture, and "
+            "two centers coincide in a dwell); change the file's angle"))
     cvs = [dict(d.get("curvature") or {}) for d in (data, *others)]
     for cv in cvs:
         cv.pop("K", None)
