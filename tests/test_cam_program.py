@@ -166,20 +166,82 @@ def test_a_straight_pitch_curve_has_no_center() -> None:
     assert _javascript(t, np.array([th + 0.02]))[0] is not None
 
 
-def test_the_kinds_not_expressed_are_refused_with_the_reason(tmp_path) -> None:
+def test_a_table_segment_is_its_spline(tmp_path) -> None:
+    # Ex 6.6's first rise given as a table of displacements (a natural cubic spline through
+    # them, cams/motions.table_shape): cam_program's Y, y', y'' are Program.evaluate's at
+    # angles inside each interval, on the knots and in the other segments, in both languages
     src = Path("examples/cams/ex6_6_roller.toml").read_text(encoding="utf-8")
     table = src.replace('motion = "harmonic"\nlift = 30\nangle = 90',
-                        'motion = "table"\nangle = 90\npoints = [[0, 0], [45, 20], [90, 30]]', 1)
+                        'motion = "table"\nangle = 90\npoints = [[0, 0], [20, 4], [45, 20], '
+                        '[70, 27], [90, 30]]', 1)
     assert table != src
     (tmp_path / "table.toml").write_text(table, encoding="utf-8")
     j = from_dict({"links": {"1": {"O2": [0, 0]}},
                    "cams": {"link": 2, "follower": 4, "file": str(tmp_path / "table.toml")},
                    "drive": {"link": 2, "angle": 30}}).cams[0]
-    with pytest.raises(NotTurned, match="segment 1 .*table"):
-        turn_steps(j, "θ2")
+    t = turn_steps(j, "θ2")          # axis 90°, counterclockwise: θ2 = Θ
+    deg = np.array([0.0, 7.0, 20.0, 33.3, 45.0, 61.0, 70.0, 89.9, 90.0, 133.0, 271.0, 359.0])
+    th2 = np.radians(deg)
+    k = j.cam.program.evaluate(th2)
+    py = _python(t, th2)
+    assert py is not None
+    for lab, ref in (("Y4", k.Y), ("y'4", k.y1), ("y''4", k.y2)):
+        _close(py[f"{lab}.value"], ref, 30.0 + float(np.abs(ref).max()), lab)
+    for i, v in enumerate(_javascript(t, th2)):
+        for lab in ("Y4", "y'4", "y''4"):
+            ref = py[f"{lab}.value"][i]
+            _close(v[lab], ref, 30.0 + abs(float(ref)), f"{lab} (js)")
+
+
+def test_the_kinds_not_expressed_are_refused_with_the_reason(tmp_path) -> None:
     flat = Path("examples/cams/ex6_3_flat_face.toml").resolve()
     j = from_dict({"units": "in", "links": {"1": {"O2": [0, 0]}},
                    "cams": {"link": 2, "follower": 4, "file": str(flat)},
                    "drive": {"link": 2, "angle": 30}}).cams[0]
     with pytest.raises(NotTurned, match="flat-face"):
         turn_steps(j, "θ2")
+
+
+@settings(max_examples=30, deadline=None)
+@given(cam=cams(kinds=(FollowerKind.OSCILLATING_FLAT_FACE,)), axis=st.floats(-180.0, 180.0),
+       o2=st.tuples(st.floats(-50.0, 50.0), st.floats(-50.0, 50.0)),
+       theta2=st.lists(st.floats(-720.0, 720.0), min_size=1, max_size=8))
+def test_an_oscillating_flat_face_equals_its_linkage(tmp_path_factory, cam, axis, o2,
+                                                     theta2) -> None:
+    # the face's slot (equivalent_linkage: the center of curvature K of the PROFILE runs in a
+    # slot of the follower at y = −σ(e + ρ) in its own coordinates, Example 4.7), the slot's
+    # point at the pivot's foot (its assembly L1), the contact and ρ (cams/analytic.profile)
+    assume(_supported(cam))
+    j = _joint(cam, tmp_path_factory.getbasetemp(), axis, o2, 0.0)
+    t = turn_steps(j, "θ2")
+    th2 = np.radians(np.asarray(theta2))
+    theta = cam.s * (th2 - (j.axis - math.pi / 2))
+    assume(_off_the_joints(cam, theta))
+    f = cam.follower
+    size = cam.prime + abs(cam.program.lift) + math.hypot(*f.pivot) + f.arm
+    k = cam.program.evaluate(theta)
+    pr = profile(cam, theta)
+    assume(bool(np.all(np.abs(pr.rho) < 1e5 * size)))
+    py = _python(t, th2)
+    assert py is not None
+    rot = cmath.exp(1j * (j.axis - math.pi / 2))
+    o = complex(*o2)
+    for i, th in enumerate(theta):
+        eq = equivalent_linkage(cam, float(th))
+        reach = size + abs(float(pr.rho[i]))
+        _close([py["K4.x"][i], py["K4.y"][i]], np.multiply(eq["links"]["2"]["K"], j.scale),
+               reach, "K4")
+        _close(py["|ρ|4.value"][i], eq["links"]["4"]["L1"][1] * j.scale, reach, "y")
+        foot = o + rot * complex(*eq["assembly"]["L1"]) * j.scale
+        _close([py["T4.x"][i], py["T4.y"][i]], [foot.real, foot.imag], reach, "F4a")
+        c = o + rot * cmath.exp(1j * cam.s * k.theta[i]) * complex(pr.contact[i]) * j.scale
+        _close([py["C4.x"][i], py["C4.y"][i]], [c.real, c.imag], reach, "C4")
+        _close(py["ρ4.value"][i], pr.rho[i], reach, "ρ")
+    js = _javascript(t, th2)
+    for i, v in enumerate(js):
+        for lab in ("|ρ|4", "ρ4"):
+            ref = py[f"{lab}.value"][i]
+            _close(v[lab], ref, size + abs(float(ref)), f"{lab} (js)")
+        for lab in ("K4", "T4", "C4"):
+            ref = [py[f"{lab}.x"][i], py[f"{lab}.y"][i]]
+            _close(v[lab], ref, size + float(np.abs(ref).max()), f"{lab} (js)")

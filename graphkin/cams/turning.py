@@ -5,8 +5,9 @@ The equivalent linkage of a ``[[cams]]`` joint (Sec. 4.7,
 cam is the pitch curve's center of curvature there and its coupler ``|ρ|``
 long.  At another angle Θ the linkage is another one, with the cam's own
 numbers: this module writes, for a knife-edge or roller follower
-(translating or oscillating), the two construction steps that give them from
-the cam link's angle θ2 (:mod:`graphkin.construction.ops.cam_program`):
+(translating or oscillating) and an oscillating flat face, the two
+construction steps that give them from the cam link's angle θ2
+(:mod:`graphkin.construction.ops.cam_program`):
 
 * ``cam_program``: Θ, the lift ``Y`` and ``y'``, ``y''`` (Secs. 6.3-6.8);
 * ``cam_center``: ``K<f>`` in the cam link's coordinates, ``|ρ|``, the trace
@@ -19,9 +20,15 @@ check is :func:`graphkin.cams.analytic.profile` and
 :func:`graphkin.cams.equivalent.equivalent_linkage`, which share no code with
 them.
 
-Not turned (:class:`NotTurned`, with the reason): a flat-face follower (its
-equivalent linkage is a slot whose line moves with ρ) and the motions with
-no expression here (a table of displacements).
+An oscillating flat face turns too: ``cam_center`` then gives the center of
+curvature of the *profile* (the face's envelope) and, in place of ``|ρ|``, the
+offset ``y`` of the slot in the follower's own coordinates (Example 4.7).
+
+A table of displacements (``motion = "table"``) is its natural cubic spline,
+one ``poly`` row of ``cam_program`` per interval between its points.
+
+Not turned (:class:`NotTurned`, with the reason): a translating flat face (its
+equivalent linkage, a slot across a slider, is solved by Newton's method).
 
 References
 ----------
@@ -37,8 +44,9 @@ from typing import Any
 import numpy as np
 
 from graphkin.cams.joint import CamJoint
-from graphkin.cams.model import Cam
+from graphkin.cams.model import Cam, FollowerKind
 from graphkin.cams.motions import _P8, Motion, Rest, piece_rows
+from graphkin.cams.program import Segment
 from graphkin.construction.step import Step
 
 __all__ = ["NotTurned", "TurnSteps", "turn_steps", "program_params"]
@@ -82,6 +90,29 @@ def _poly8_return() -> list[float]:
     return [float(c) for c in (1.0 - back).coef]
 
 
+def _table_rows(seg: Segment, start: float) -> list[tuple[Any, ...]]:
+    """A table's natural cubic spline as one ``poly`` row per interval between its points.
+
+    On each interval the spline is a cubic in the interval's own ``u``; it is the
+    Hermite cubic of its ends' values and slopes (``f(0)``, ``f(1)``, ``f'(0)``,
+    ``f'(1)`` of :func:`graphkin.cams.motions.table_shape`, the slopes times the
+    interval's share of the segment), exactly.
+    """
+    assert seg.table is not None
+    f, y0, h = seg.unit_shape()
+    x = np.asarray(seg.table[0], dtype=float) / float(seg.table[0][-1])
+    rows: list[tuple[Any, ...]] = []
+    for a, b in zip(x[:-1], x[1:]):
+        w = float(b - a)
+        v, d, _, _ = f(np.array([a, b]))
+        f0, f1, s0, s1 = float(v[0]), float(v[1]), float(d[0]) * w, float(d[1]) * w
+        # Hermite: p(u) = f0 + s0 u + (3(f1 − f0) − 2s0 − s1) u² + (2(f0 − f1) + s0 + s1) u³
+        coef = (f0, s0, 3 * (f1 - f0) - 2 * s0 - s1, 2 * (f0 - f1) + s0 + s1)
+        rows.append(("poly", start + float(a) * seg.angle, w * seg.angle, float(y0), float(h),
+                     coef))
+    return rows
+
+
 def program_params(cam: Cam, shift: float) -> dict[str, Any]:
     """The ``cam_program`` step's params for ``cam`` (``shift``: θ2 at Θ = 0, rad).
 
@@ -92,7 +123,7 @@ def program_params(cam: Cam, shift: float) -> dict[str, Any]:
     """
     prog = cam.program
     starts, bases = prog.starts, prog.bases
-    rows = []
+    rows: list[tuple[Any, ...]] = []
     for k, seg in enumerate(prog.segments):
         coef: list[float] = []
         if seg.motion in _PLAIN:
@@ -105,6 +136,9 @@ def program_params(cam: Cam, shift: float) -> dict[str, Any]:
             kind, coef = "poly", [0.0, 0.0, 0.0, 10.0, -15.0, 6.0]
         elif seg.motion is Motion.MODIFIED_TRAPEZOID:
             kind, coef = "pieces", [v for row in piece_rows(seg.motion) for v in row]
+        elif seg.motion is Motion.TABLE and seg.table is not None:
+            rows += _table_rows(seg, float(starts[k]))
+            continue
         else:
             raise NotTurned(f"{prog.label(k)}: the live page has no expression of the "
                             f"{seg.motion.value} motion")
@@ -139,9 +173,9 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
     """
     cam = joint.cam
     f = cam.follower
-    if f.kind.flat:
-        raise NotTurned("a flat-face follower's equivalent linkage is a slot whose line moves "
-                        "with the radius of curvature: the live page keeps its cam angle")
+    if f.kind is FollowerKind.FLAT_FACE:
+        raise NotTurned("a translating flat-face follower's equivalent linkage (a slot across "
+                        "a slider) is solved by Newton's method, with no step to turn")
     shift = joint.axis - math.pi / 2
     fl = joint.follower
     names = [f"Θ{fl}", f"Y{fl}", f"y'{fl}", f"y''{fl}"]
@@ -151,7 +185,11 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
         "s": float(cam.s), "scale": float(joint.scale), "size": float(size),
         "roller": float(f.roller) if f.kind.roller else 0.0,
         "rot": (math.cos(shift), math.sin(shift)), "o2": tuple(map(float, joint.center))}
-    if f.kind.oscillating:
+    if f.kind is FollowerKind.OSCILLATING_FLAT_FACE:
+        center.update(follower="oscillating_flat", sig=float(f.rise.sign),
+                      arm0=float(cam.arm0), pivot=tuple(map(float, f.pivot)),
+                      face_offset=float(f.face_offset))
+    elif f.kind.oscillating:
         center.update(follower="oscillating", sig=float(f.rise.sign), arm=float(f.arm),
                       arm0=float(cam.arm0), pivot=tuple(map(float, f.pivot)))
     else:

@@ -26,11 +26,17 @@ is larger than the convex pitch curve's radius (the profile undercut, Sec.
 cam angle Θ, the lift and the pitch curve's ρ with its sense (convex,
 concave).
 
+An oscillating flat face turns the same way: its slot ``F<f>a``-``F<f>b`` lies
+at the offset ``y`` the cam gives, so ``y`` goes into the slot's points, the
+tangent's offset ``|y|`` from the pivot, and the complex ratios of their
+velocity and acceleration images; its branch is checked on ``F<f>a`` (the
+program's foot of the pivot on the face's slot).
+
 Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
-and says why): a flat-face follower, a motion the operation has no
-expression of (the modified trapezoid, a table), a cam not on the first
-drive's link, and a construction whose other numbers change with the angle
-(checked here by building the page at another angle).
+and says why): a translating flat face has no page (Newton's method solves
+it); a cam not on the first drive's link, and a construction whose other
+numbers change with the angle (checked here by building the page at other
+angles; the branches the page keeps itself are not counted) are held.
 
 References
 ----------
@@ -70,6 +76,16 @@ function gkTurn(T, x, Kc) {
     if (v === null) return {why: gkTurnStraight(c, x), cams: got};
     Kc[c.kx] = v[c.center][0]; Kc[c.ky] = v[c.center][1];
     for (const k of c.r) Kc[k] = v[c.length];
+    if (c.ysign) {      // a flat face: its slot's line at y in the follower's coordinates
+      const y = v[c.length];
+      if (!(y * c.ysign > 1e-9 * c.reach)) return {why: gkTurnFace(c, x), cams: got};
+      for (const [k, lp] of c.y) Kc[k] = y - lp;
+      for (const k of c.d) Kc[k] = Math.abs(y);
+      for (const [i, j, ax, ay, bx, by, px] of c.sim) {
+        const r0 = bx - ax, r1 = by - ay, p0 = px - ax, p1 = y - ay, dd = r0 * r0 + r1 * r1;
+        Kc[i] = (p0 * r0 + p1 * r1) / dd; Kc[j] = (p1 * r0 - p0 * r1) / dd;
+      }
+    }
     got.push(v);
   }
   return {why: "", cams: got};
@@ -80,6 +96,17 @@ function gkTurnTheta(c, x) {
   return (t - tp * Math.floor(t / tp)) * 180 / Math.PI;
 }
 function gkTurnNum(v) { return Number(v.toPrecision(5)).toString(); }
+// the lift: a length, or an oscillating follower's swing (radians, shown in degrees)
+function gkTurnLift(c, v) {
+  return c.swing ? gkTurnNum(v[c.lift] * 180 / Math.PI) + "\u00b0" :
+    gkTurnNum(v[c.lift]) + " " + c.unit;
+}
+function gkTurnFace(c, x) {
+  return c.key + ": at \u0398 = " + gkTurnNum(gkTurnTheta(c, x)) + "\u00b0 the face's slot " +
+    "would pass through the follower's pivot or beyond it (the profile's radius of curvature " +
+    "is the face's offset, or less: a cusp, Sec. 6.9): the page's linkage is not the cam's " +
+    "there: drag on.";
+}
 function gkTurnStraight(c, x) {
   return c.key + ": at \u0398 = " + gkTurnNum(gkTurnTheta(c, x)) + "\u00b0 the pitch curve is " +
     "straight at the contact (its radius of curvature is infinite, Eq. 6.37): no center of " +
@@ -130,8 +157,14 @@ function gkTurnNote(T, t, x) {
   return T.cams.map((c, i) => {
     const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, x);
     const tol = 1e-9 * c.size;
-    let s = c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnNum(v[c.lift]) +
-      " " + c.unit + ", pitch curve \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
+    if (c.ysign) {      // a flat face: the profile's own radius (Sec. 6.9), positive or a cusp
+      return c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnLift(c, v) +
+        ", profile \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
+        (rho > tol ? " (convex)." : " (not positive: the profile has a cusp here, Sec. 6.9; " +
+         "the values are the program's, as graphkin solve gives them).");
+    }
+    let s = c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnLift(c, v) +
+      ", pitch curve \u03c1 = " + gkTurnNum(rho) + " " + c.unit +
       (rho > tol ? " (convex)" : " (concave: K on the follower's side)");
     if (c.roller > 0 && rho > tol && rho < c.roller - tol) {
       s += "; the roller (" + gkTurnNum(c.roller) + " " + c.unit + ") is larger than " +
@@ -206,6 +239,59 @@ def _slots(steps: Sequence[Step], names: list[str], fl: str) -> tuple[int, int, 
     return names.index(f"{k}.0"), names.index(f"{k}.1"), radius
 
 
+def _face_slots(steps: Sequence[Step], names: list[str],
+                fl: str) -> tuple[int, int, dict[str, Any]]:
+    """Where a flat face's linkage sits in ``K``: ``K<f>``, the slot's offset ``y``.
+
+    The slot's line ``F<f>a``-``F<f>b`` lies at ``y`` in the follower's own
+    coordinates (:func:`graphkin.cams.equivalent.equivalent_linkage`): its
+    points' second coordinates (``rigid`` from the pivot), the tangent's
+    offset ``|y|`` from the pivot (``tangent_foot``, Sec. 2.8 case 4) and the
+    complex ratios of their velocity and acceleration images (``similar``)
+    all move with ``y``; the branch is the tangent's side.
+    """
+    k = f"K{fl}"
+    if f"{k}.0" not in names or f"{k}.1" not in names:
+        raise _fail(f"the construction does not lay off {k} on the cam by its coordinates")
+    feet = [s for s in steps if s.op == "tangent_foot" and s.inputs[1:] == (k,)]
+    if len(feet) != 1 or f"{feet[0].outputs[0]}.0" not in names:
+        raise _fail(f"the construction does not draw the face's slot through {k} as a tangent "
+                    "from the follower's pivot")
+    foot = feet[0]
+    y0 = None
+    ys: list[list[float]] = []
+    locs = set()
+    for s in steps:
+        if s.op == "rigid" and s.outputs[0] in (f"F{fl}a", f"F{fl}b"):
+            lp, lq = s.params["local_p"], s.params["local_q"]
+            y0 = float(lq[1])
+            locs.add(tuple(map(float, lq)))
+            if f"{s.outputs[0]}.1" in names:
+                ys.append([names.index(f"{s.outputs[0]}.1"), float(lp[1])])
+    if y0 is None or len(locs) != 2:
+        raise _fail(f"the construction does not place the face's slot F{fl}a-F{fl}b")
+    for s in steps:       # the slot's own copies of its line's points
+        if s.op == "rigid" and s.outputs[0] not in (f"F{fl}a", f"F{fl}b") and \
+                tuple(map(float, s.params["local_q"])) in locs and f"{s.outputs[0]}.1" in names:
+            ys.append([names.index(f"{s.outputs[0]}.1"), float(s.params["local_p"][1])])
+    sims = []
+    for s in steps:       # the images of the slot's points: q = (P − A)/(B − A) moves with y
+        lab = f"{s.outputs[0]}.0"
+        if s.op == "similar" and lab in names and \
+                tuple(map(float, s.params["local_p"])) in locs:
+            (ax, ay), (bx, by) = s.params["local_a"], s.params["local_b"]
+            sims.append([names.index(lab), names.index(f"{s.outputs[0]}.1"), float(ax),
+                         float(ay), float(bx), float(by), float(s.params["local_p"][0])])
+    d = [names.index(f"{foot.outputs[0]}.0")]
+    d += [names.index(f"{s.outputs[0]}.0") for s in steps
+          if s.op == "circle" and s.inputs == foot.inputs[:1] and
+          f"{s.outputs[0]}.0" in names and s.outputs[0].endswith(":offset")]
+    branch = f"{foot.outputs[0]}.branch"
+    return names.index(f"{k}.0"), names.index(f"{k}.1"), {
+        "y": ys, "d": d, "sim": sims, "ysign": math.copysign(1.0, y0),
+        "branch": names.index(branch) if branch in names else None}
+
+
 def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any], source: str,
               steps: Sequence[Step], names: list[str], label: str) -> str:
     """The page's turning cams (``data["turn"]``) and their JavaScript; "" when held.
@@ -251,7 +337,13 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
                         "angle")
         ts = turn_steps(j, label)
         fl = j.follower
-        kx, ky, radius = _slots(steps, names, fl)
+        flat = j.cam.follower.kind.flat
+        if flat:
+            kx, ky, face = _face_slots(steps, names, fl)
+            radius: list[int] = []
+        else:
+            kx, ky, radius = _slots(steps, names, fl)
+            face = {"y": [], "d": [], "sim": [], "branch": None, "ysign": 0.0}
         req = [ts.theta, ts.lift, ts.center, ts.length, ts.trace, ts.contact, ts.rho]
         try:
             fn = generate_js(ts.steps, requests=req, name=f"gkCam{i}")
@@ -271,12 +363,16 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             raise _fail(f"{j.key}: the cam's center is not a pin of the frame")
         out.append({
             "fn": i, "key": j.key, "K": fn.values, "kx": kx, "ky": ky, "r": radius,
-            "branch": names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None,
-            "point": f"T{fl}", "trace": ts.trace, "contact": ts.contact, "center": ts.center,
+            "branch": face["branch"] if flat else (
+                names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None),
+            "y": face["y"], "d": face["d"], "sim": face["sim"], "ysign": face["ysign"],
+            "point": f"F{fl}a" if flat else f"T{fl}", "trace": ts.trace,
+            "contact": ts.contact, "center": ts.center,
             "length": ts.length, "lift": ts.lift, "rho": ts.rho, "at": center,
             "s": float(cam.s), "shift": float(j.axis - math.pi / 2),
             "roller": float(f.roller) if f.kind.roller else 0.0, "scale": float(j.scale),
             "size": float(size), "reach": float(size * j.scale), "unit": cam.unit,
+            "swing": bool(f.kind.oscillating),
             "outline": [[round(float(z.real), 6), round(float(z.imag), 6)] for z in u]})
     return out, js
 
@@ -288,7 +384,9 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
     The page is built again, held (``turn=False``), from the file with the
     drive turned 11°, −13°, 37° and 101° (where the cam has an equivalent
     linkage).  Every number of the construction's ``K`` but
-    the cams' must be the same and the force construction too, else the page
+    the cams' and the branches the page keeps itself (``data["branches"]``: picked
+    there from the file's assembly hints, which the follower's travel may bring
+    nearer the other branch) must be the same and the force construction too, else the page
     is held at the file's angle (``data["turn"]`` removed, said in the
     drive's line).  An instant centers' route or a curvature construction
     found at the file's angle that is another one there (the file's angle in a
@@ -300,8 +398,15 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         return
     try:
         others = _elsewhere(mech, file_data, source)
-        mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"])}
+        mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"], *c["d"])}
+        mine |= {row[0] for c in turn["cams"] for row in c["y"]}
+        mine |= {k for c in turn["cams"] for row in c["sim"] for k in row[:2]}
         mine |= {c["branch"] for c in turn["cams"] if c["branch"] is not None}
+        # a branch of the rest of the mechanism is the page's own: kept while the cam turns,
+        # switchable, and saved as the point's assembly hint; the page built at another angle
+        # picks it afresh from the file's fixed hint, which a point moved far enough (the
+        # follower's lift) lies nearer the other branch of: not a change of construction
+        mine |= set(data.get("branches", {}).values())
         for other in others:
             k1, k2 = data["K"], other["K"]
             if len(k1) != len(k2):
@@ -326,7 +431,8 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
     if any(_json(data.get("centers")) != _json(other.get("centers")) for other in others):
         data["centers"] = dict(data["centers"], fn=None, why=(
             f"the Kennedy route found at the file's cam angle ({deg}) is another one at other "
-            "angles (two centers coincide there, as in a dwell); change the file's angle"))
+            "angles (Kennedy's lines are chosen where they meet best at that posture, and "
+            "two centers coincide in a dwell); change the file's angle"))
     cvs = [dict(d.get("curvature") or {}) for d in (data, *others)]
     for cv in cvs:
         cv.pop("K", None)

@@ -32,7 +32,7 @@ from live_cams_shared import TMP, cam_file, page_state, same_as_solve, straight_
 from strategies import examples
 
 import graphkin
-from graphkin.cams import FollowerKind
+from graphkin.cams import Cam, Follower, FollowerKind, Motion, Program, Segment, Sense
 from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.mechanisms import from_dict
@@ -167,7 +167,7 @@ def test_an_undercut_profile_is_said(browser, tmp_path) -> None:
     assert "undercut" not in browser.js(STATUS)
 
 
-@pytest.mark.parametrize("kind", [k for k in FollowerKind if not k.flat],
+@pytest.mark.parametrize("kind", [k for k in FollowerKind if k is not FollowerKind.FLAT_FACE],
                          ids=lambda k: k.value)
 def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
 
@@ -212,20 +212,85 @@ def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
     check()
 
 
-def test_a_kind_not_turned_is_held_and_says_why(tmp_path) -> None:
+def _side(p, o7, q) -> float:
+    """The side of the line P-O7 that Q lies on (the sign of (O7 − P) × (Q − P))."""
+    (px, py), (ox, oy), (qx, qy) = p, o7, q
+    return math.copysign(1.0, (ox - px) * (qy - py) - (oy - py) * (qx - px))
+
+
+def test_a_branch_the_file_s_hint_picks_otherwise_elsewhere_still_turns(browser, tmp_path) -> None:
+    # A knife-edge cam lifting its follower 40 mm (two cycloidal strokes of 150°, a dwell)
+    # drives a dyad P-Q-O7 laid out nearly along P-O7 (the links 120 and 40 mm, 12° apart
+    # at Q): Q's hint, where the file draws it at 10°, is nearer the OTHER branch once the
+    # follower has risen at 111° (checked below by solve alone).  The page keeps its own
+    # branch while the cam turns (and saves Q where it is): it must turn, not be held.
+    prog = Program((Segment(Motion.CYCLOIDAL, 40.0, math.radians(150)),
+                    Segment(Motion.CYCLOIDAL, -40.0, math.radians(150)),
+                    Segment(Motion.DWELL, 0.0, math.radians(60))))
+    cam = Cam(prog, 40.0, Follower(FollowerKind.KNIFE_EDGE, offset=-5.0), Sense.CCW)
+    path = tmp_path / "flip_cam.toml"
+    path.write_text(cam_toml(cam), encoding="utf-8")
+    file = cam_file(cam, path, 10.0, 90.0, 3.0, 1.0, (0.0, 1.5, math.pi - 0.21, 0.5))
+    assert file is not None
+    mech = from_dict(file, source="flip.toml")
+    later = json.loads(json.dumps(file))
+    later["drive"]["angle"] = 10.0 + 101.0
+    s0, s1 = (from_dict(f).solve() for f in (file, later))
+    sides = [_side(s.position("P"), s.position("O7"), s.position("Q")) for s in (s0, s1)]
+    assert sides[0] != sides[1]         # solve of the file at 111° takes the other branch
+    d, _ = live_data(mech, file, "flip.toml")
+    assert d.get("turn") is not None, d["cam"]["why"]
+    page = tmp_path / "flip.html"
+    page.write_text(live_html(mech, file, "flip.toml"), encoding="utf-8")
+    browser.open(page)
+    drive0 = d["drive"]["value"]
+    for off in (37.0, 101.0):
+        browser.js(f"window.graphkinLive.setDrive({drive0 + math.radians(off)})")
+        state = page_state(browser)
+        r = state["result"]
+        assert r is not None
+        assert _side(r["P"], r["O7"], r["Q"]) == sides[0]      # the page's branch, kept
+        same_as_solve(browser, tmp_path, mech, state)
+
+
+def test_a_table_segment_turns_as_solve_says(browser, tmp_path) -> None:
+    # Ex 6.6's first rise given as a table (a natural cubic spline through its points): the
+    # cam turns through it, and every value is solve's of the saved file
     cam = (ROOT / "examples" / "cams" / "ex6_6_roller.toml").read_text(encoding="utf-8")
-    trap = cam.replace('motion = "harmonic"\nlift = 30\nangle = 90',
-                       'motion = "table"\nangle = 90\npoints = [[0, 0], [45, 20], [90, 30]]', 1)
-    assert trap != cam
-    (tmp_path / "ex6_6_roller.toml").write_text(trap, encoding="utf-8")
-    src = tmp_path / "held.toml"
+    table = cam.replace('motion = "harmonic"\nlift = 30\nangle = 90',
+                        'motion = "table"\nangle = 90\npoints = [[0, 0], [20, 4], [45, 20], '
+                        '[70, 27], [90, 30]]', 1)
+    assert table != cam
+    (tmp_path / "ex6_6_roller.toml").write_text(table, encoding="utf-8")
+    src = tmp_path / "table.toml"
     src.write_text(FILES["ex6_6"].read_text(encoding="utf-8"), encoding="utf-8")
-    d, _ = live_data(graphkin.load(src), load_toml(src), "held.toml")
-    assert "turn" not in d and "tip" not in d["drive"]
-    why = d["cam"]["why"]
-    assert why.startswith("held.toml: drive.angle: the page keeps the cam angle")
-    assert "\n" not in why
-    assert "not turned on the page: segment 1" in why and "table" in why
+    mech = graphkin.load(src)
+    d, _ = live_data(mech, load_toml(src), "table.toml")
+    assert d.get("turn") is not None, d["cam"]["why"]
+    page = tmp_path / "table.html"
+    page.write_text(live_html(mech, load_toml(src), src.name), encoding="utf-8")
+    browser.open(page)
+    for deg in (12.0, 45.0, 63.0, 120.0):         # inside the table, on a point, past it
+        browser.js(f"window.graphkinLive.setDrive({math.radians(deg)})")
+        state = page_state(browser)
+        assert state["result"] is not None
+        same_as_solve(browser, tmp_path, mech, state)
+
+
+def test_a_translating_flat_face_has_no_page_said_in_one_line(tmp_path) -> None:
+    # its equivalent linkage (a slot across a slider) is solved by Newton's method, which on
+    # a page would turn the linkage, not the cam: refused, one line naming the file
+    prog = Program((Segment(Motion.CYCLOIDAL, 1.0, math.radians(180)),
+                    Segment(Motion.CYCLOIDAL, -1.0, math.radians(180))))
+    cam = Cam(prog, 3.0, Follower(FollowerKind.FLAT_FACE, offset=0.5), Sense.CW)
+    path = tmp_path / "flat_cam.toml"
+    path.write_text(cam_toml(cam), encoding="utf-8")
+    file = cam_file(cam, path, 40.0, 90.0, 3.0, 1.0, (0.5, 1.0, 2.0, 1.0))
+    assert file is not None
+    with pytest.raises(GraphkinError) as err:
+        live_data(from_dict(file, source="flat.toml"), file, "flat.toml")
+    said = err.value.one_line()
+    assert said.startswith("flat.toml: no live page") and "Newton" in said and "\n" not in said
 
 
 def test_the_page_is_small_and_offline() -> None:

@@ -210,6 +210,9 @@ def _cam_center(gen: Gen, step: Step) -> None:
     p = step.params
     th, Y, y1, y2 = (gen.scalar(i) for i in step.inputs)
     s = float(p["s"])
+    if p["follower"] == "oscillating_flat":
+        _flat_center(gen, step, th, Y, y1, y2)
+        return
     if p["follower"] == "oscillating":
         sig, arm = float(p["sig"]), gen.num(p["arm"])
         th4 = gen.let(f"{gen.num(p['arm0'])} + {lit(sig)} * {Y}", "a")
@@ -262,6 +265,61 @@ def _cam_center(gen: Gen, step: Step) -> None:
     for lab, z in ((step.outputs[2], pf), (step.outputs[3], cf)):
         m = _mul((ax, ay), z)
         gen.put_point(lab, f"{ox} + {scale} * {m[0]}", f"{oy} + {scale} * {m[1]}")
+    gen.put_scalar(step.outputs[4], rho)
+
+
+def _flat_center(gen: Gen, step: Step, th: str, Y: str, y1: str, y2: str) -> None:
+    """``cam_center`` for an oscillating flat face (Sec. 6.9, the profile as an envelope).
+
+    The face's line in the fixed cam frame is ``n·X = p`` with ``n = σ i e^{iθ4}``,
+    ``θ4 = θ4₀ + σY`` and ``p = σ n₀·O4 − e`` (``e`` the face's offset); in the cam's
+    own frame its normal turns at ``a' = σy' − s``.  The envelope's contact is
+    ``(p + i p'/a') N`` and its radius of curvature ``ρ = p + (p''a' − p'a'')/a'³``
+    (``N = e^{−isΘ} n``; the profile's, not the pitch curve's); the center of
+    curvature ``K = (p + i p'/a' − ρ) N``.  Outputs as for a roller, but the second
+    is the slot's offset ``y = −σ(e + ρ)`` in the follower's own coordinates
+    (:func:`graphkin.cams.equivalent.equivalent_linkage`) and the third the
+    follower's point on that line at its pivot's foot, ``O4 + i y e^{iθ4}``.
+    """
+    p = step.params
+    s, sig = float(p["s"]), float(p["sig"])
+    th4 = gen.let(f"{gen.num(p['arm0'])} + {lit(sig)} * {Y}", "a")
+    ex, ey = gen.let(f"_cos({th4})", "c"), gen.let(f"_sin({th4})", "s")
+    ox, oy = gen.num(p["pivot"][0]), gen.num(p["pivot"][1])
+    # n = i e^{iθ4}: n·O4 and (i n)·O4 = −e^{iθ4}·O4
+    d0 = gen.let(f"-{ey} * {ox} + {ex} * {oy}", "d")
+    d1 = gen.let(f"-{ex} * {ox} - {ey} * {oy}", "d")
+    t1, t2 = gen.let(f"{lit(sig)} * {y1}", "t"), gen.let(f"{lit(sig)} * {y2}", "t")
+    pp = gen.let(f"{lit(sig)} * {d0} - {gen.num(p['face_offset'])}", "p")
+    p1 = gen.let(f"{lit(sig)} * {d1} * {t1}", "p")
+    p2 = gen.let(f"{lit(sig)} * ({d1} * {t2} - {d0} * {t1} * {t1})", "p")
+    a1 = gen.let(f"{t1} - {lit(s)}", "a")
+    num = gen.let(f"{p2} * {a1} - {p1} * {t2}", "k")
+    a3 = gen.let(f"{a1} * {a1} * {a1}", "a")
+    # a straight profile here (ρ beyond 10⁶ sizes): no center of curvature
+    gen.bail_unless(f"_min(_abs({num}), None) < {lit(STRAIGHT)} * {gen.num(p['size'])} * "
+                    f"_min(_abs({a3}), None)")
+    rho = gen.let(f"{pp} + {num} / {a3}", "rho")
+    pa = gen.let(f"{p1} / {a1}", "p")
+    nf = (gen.let(f"{lit(-sig)} * {ey}", "n"), gen.let(f"{lit(sig)} * {ex}", "n"))
+    c, sn = gen.let(f"_cos({th})", "c"), gen.let(f"{lit(s)} * _sin({th})", "s")
+    big = _lets(gen, _mul((c, f"(-{sn})"), nf), "q")                    # N = e^{−isΘ} n
+    kz = _lets(gen, _mul((f"{pp} - {rho}", pa), big), "k")
+    scale = gen.num(p["scale"])
+    sel = gen.helper("select")
+    at = gen.let(f"_sqrt({kz[0]} * {kz[0]} + {kz[1]} * {kz[1]}) <= {lit(VERDICT_REL)} * "
+                 f"{gen.num(p['size'])}", "at")
+    gen.put_point(step.outputs[0], f"{sel}({at}, 0.0, {kz[0]} * {scale})",
+                  f"{sel}({at}, 0.0, {kz[1]} * {scale})")
+    yy = gen.let(f"{lit(-sig)} * ({gen.num(p['face_offset'])} + {rho})", "y")
+    gen.put_scalar(step.outputs[1], f"{yy} * {scale}")
+    ax, ay = gen.num(p["rot"][0]), gen.num(p["rot"][1])
+    o2x, o2y = gen.num(p["o2"][0]), gen.num(p["o2"][1])
+    foot = (f"({ox} - {yy} * {ey})", f"({oy} + {yy} * {ex})")            # O4 + i y e^{iθ4}
+    cf = _mul((pp, pa), nf)                                              # (p + i p/a') n
+    for lab, z in ((step.outputs[2], foot), (step.outputs[3], cf)):
+        m = _mul((ax, ay), z)
+        gen.put_point(lab, f"{o2x} + {scale} * {m[0]}", f"{o2y} + {scale} * {m[1]}")
     gen.put_scalar(step.outputs[4], rho)
 
 
