@@ -66,6 +66,9 @@ class Rectified:
         The marker ids found.
     residual_mm : float
         RMS distance of the markers' corners from where the homography puts them.
+    blur_mm : float
+        The photo's blur (σ of a Gaussian, mm on the sheet), measured across the
+        markers' edges (0: not measured).
     """
 
     gray: np.ndarray
@@ -74,6 +77,7 @@ class Rectified:
     upto: int | None
     found: list[int]
     residual_mm: float
+    blur_mm: float = 0.0
 
 
 def read_pages(path: str) -> list[Page]:
@@ -148,19 +152,21 @@ def rectify(page: Page) -> Rectified:
     from graphkin.render.worksheet_layout import PAPERS
 
     cv2 = need_cv2()
-    H, (diagram, paper, upto), found, res = homography(page)
+    H, (diagram, paper, upto), found, res, blur = homography(page)
     w, h = PAPERS[paper]
     size = (round(w * PX_PER_MM), round(h * PX_PER_MM))
     out = cv2.warpPerspective(page.gray, H, size, flags=cv2.INTER_AREA,
                               borderMode=cv2.BORDER_REPLICATE)
-    return Rectified(out, diagram, paper, upto, found, res)
+    return Rectified(out, diagram, paper, upto, found, res, blur)
 
 
-def homography(page: Page) -> tuple[np.ndarray, tuple[str, str, int | None], list[int], float]:
+def homography(page: Page) -> tuple[np.ndarray, tuple[str, str, int | None], list[int], float,
+                                     float]:
     """The homography from the photo's pixels to the rectified sheet's, from the markers.
 
     Returns the 3x3 matrix, what the markers say (diagram, paper, steps
-    printed), the marker ids found and the RMS residual of their corners (mm).
+    printed), the marker ids found, the RMS residual of their corners (mm) and
+    the photo's blur (σ, mm on the sheet: the median over the markers' edges).
     The markers are found on a copy at most :data:`_FIND_PX` long; their
     corners are then placed on the full image where their edges' lines
     cross (:func:`_edge_corners`).
@@ -187,8 +193,14 @@ def homography(page: Page) -> tuple[np.ndarray, tuple[str, str, int | None], lis
                          "photo, in focus?)", file=page.name, key="--scan")
     diagram, paper, upto = what
     # the corners on the full image, where the marker's straight edges cross
-    quads = [_edge_corners(page.gray, c.reshape(4, 2).astype(np.float64) / scale)
-             for c in corners]
+    fitted = [_edge_corners(page.gray, c.reshape(4, 2).astype(np.float64) / scale)
+              for c in corners]
+    quads = [q for q, _ in fitted]
+    # each marker's edge blur, px of the photo, in mm of the sheet (its side is MARKER_MM)
+    per_mm = [float(np.mean(np.hypot(*(q - np.roll(q, 1, axis=0)).T))) / MARKER_MM
+              for q in quads]
+    blurs = [b / k for (_, b), k in zip(fitted, per_mm, strict=True) if b > 0 and k > 0]
+    blur = float(np.median(blurs)) if blurs else 0.0
     w, h = PAPERS[paper]
     m, s = 10.0, MARKER_MM
     corner = dict(zip(corner_ids(diagram, paper),
@@ -218,7 +230,7 @@ def homography(page: Page) -> tuple[np.ndarray, tuple[str, str, int | None], lis
                          key="--scan")
     back = cv2.perspectiveTransform(S.reshape(-1, 1, 2), H).reshape(-1, 2)
     res = float(np.sqrt(np.mean(np.sum((back - D) ** 2, axis=1)))) / PX_PER_MM
-    return H, (diagram, paper, upto), found, res
+    return H, (diagram, paper, upto), found, res, blur
 
 
 _SPREAD = 0.1
@@ -250,8 +262,8 @@ _EDGE_REACH = 0.12
 marker's black border (a sixth of the side wide) inside, on the white paper outside."""
 
 
-def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> np.ndarray:
-    """A marker's four corners (photo px), where the lines of its four edges cross.
+def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> tuple[np.ndarray, float]:
+    """A marker's four corners (photo px), where the lines of its four edges cross, and the blur.
 
     A blurred photo rounds a corner: a corner detector's point (a window of
     a few pixels at the corner, ``cornerSubPix``) is pulled inside the marker
@@ -266,7 +278,14 @@ def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> np.ndarray:
     those points (the points farther than 3 MADs left out), and the corners
     are where the lines of neighbouring sides cross (a perspective keeps
     straight lines straight).  Done twice, the second time about the first's
-    corners.  A marker whose edges cannot be fitted keeps the corners given.
+    corners.  A marker whose edges cannot be fitted keeps the corners given
+    (blur 0: not measured).
+
+    The blur (σ of a Gaussian, photo px) is the area between the profile and
+    the sharp step at the edge found, over the step: ``0.80 σ`` for a
+    Gaussian blur (``2σ/√(2π)``), taken signed (the profile above the dark
+    level before the edge, below the white after it), so that the noise
+    averages out; the median over the edge's points and the four sides.
     """
     cv2 = need_cv2()
     q = np.asarray(quad, dtype=np.float64)
@@ -278,12 +297,13 @@ def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> np.ndarray:
     q = q - lo
     for _ in range(2):
         lines = []
+        sigmas: list[float] = []
         centre = q.mean(axis=0)
         for k in range(4):
             a, b = q[k], q[(k + 1) % 4]
             side = float(np.hypot(*(b - a)))
             if side < 12.0:
-                return quad.astype(np.float64)
+                return quad.astype(np.float64), 0.0
             u = (b - a) / side
             n = np.array([-u[1], u[0]])
             if float((a - centre) @ n) < 0:
@@ -303,8 +323,12 @@ def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> np.ndarray:
                                                                 - 2 * dark)) * ds
             good = step > 0.25 * max(float(np.median(step)), 1.0)
             if np.count_nonzero(good) < 6:
-                return quad.astype(np.float64)
+                return quad.astype(np.float64), 0.0
             off = r - area[good] / step[good]
+            pg, dg, wg = prof[good], dark[good, None], white[good, None]
+            before = s[None, :] < off[:, None]
+            spill = np.where(before, pg - dg, wg - pg).sum(axis=1) * ds / step[good]
+            sigmas.append(float(np.median(spill)) / 0.7979)
             e = a + t[good, None] * u + off[:, None] * n
             keep = np.ones(len(e), bool)
             for _fit in range(2):
@@ -315,20 +339,20 @@ def _edge_corners(gray: np.ndarray, quad: np.ndarray) -> np.ndarray:
                 mad = float(np.median(np.abs(dist[keep] - np.median(dist[keep])))) + 1e-3
                 keep = np.abs(dist) <= 3 * 1.4826 * mad + 0.05
                 if np.count_nonzero(keep) < 6:
-                    return quad.astype(np.float64)
+                    return quad.astype(np.float64), 0.0
             lines.append((c, d))
         out = np.empty((4, 2))
         for k in range(4):
             (c1, d1), (c2, d2) = lines[(k - 1) % 4], lines[k]   # the sides meeting at corner k
             A = np.array([d1, -d2]).T
             if abs(float(np.linalg.det(A))) < 0.1:
-                return quad.astype(np.float64)
+                return quad.astype(np.float64), 0.0
             st = np.linalg.solve(A, c2 - c1)
             out[k] = c1 + st[0] * d1
         if float(np.max(np.hypot(*(out - q).T))) > 0.1 * float(np.hypot(*(q[1] - q[0]))):
-            return quad.astype(np.float64)                  # not this marker's edges
+            return quad.astype(np.float64), 0.0                  # not this marker's edges
         q = out
-    return q + lo
+    return q + lo, max(float(np.median(sigmas)), 0.0)
 
 
 _TEMPLATES: dict[Any, np.ndarray] = {}
