@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import itertools
 import json
+import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -155,9 +156,30 @@ def rectify(page: Page) -> Rectified:
     H, (diagram, paper, upto), found, res, blur = homography(page)
     w, h = PAPERS[paper]
     size = (round(w * PX_PER_MM), round(h * PX_PER_MM))
-    out = cv2.warpPerspective(page.gray, H, size, flags=cv2.INTER_AREA,
+    gray = page.gray
+    # The warp samples the photo bilinearly (four pixels an output pixel): from a photo
+    # finer than the sheet's 5 px/mm it would skip the pixels between, and their noise
+    # would not average out.  Such a photo is first shrunk by area (each pixel the mean
+    # of the light that fell on it, as a scanner at 5 px/mm would see it).
+    c = np.array([[size[0] / 2, size[1] / 2], [size[0] / 2 + 1, size[1] / 2],
+                  [size[0] / 2, size[1] / 2 + 1]])
+    q = cv2.perspectiveTransform(c.reshape(-1, 1, 2), np.linalg.inv(H)).reshape(-1, 2)
+    a, b = q[1] - q[0], q[2] - q[0]
+    k = math.sqrt(abs(float(a[0] * b[1] - a[1] * b[0])))    # photo px a sheet px
+    if k > _SHRINK_ABOVE:
+        small = (max(round(gray.shape[1] / k), 1), max(round(gray.shape[0] / k), 1))
+        fx, fy = small[0] / gray.shape[1], small[1] / gray.shape[0]
+        gray = cv2.resize(gray, small, interpolation=cv2.INTER_AREA)
+        # pixel centres are whole numbers: x_small = (x + 0.5) fx - 0.5
+        S = np.array([[fx, 0.0, 0.5 * fx - 0.5], [0.0, fy, 0.5 * fy - 0.5], [0.0, 0.0, 1.0]])
+        H = H @ np.linalg.inv(S)
+    out = cv2.warpPerspective(gray, H, size, flags=cv2.INTER_LINEAR,
                               borderMode=cv2.BORDER_REPLICATE)
     return Rectified(out, diagram, paper, upto, found, res, blur)
+
+
+_SHRINK_ABOVE = 2.0
+"""A photo more than this many pixels a sheet pixel across is shrunk by area before the warp."""
 
 
 def homography(page: Page) -> tuple[np.ndarray, tuple[str, str, int | None], list[int], float,
