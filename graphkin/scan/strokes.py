@@ -65,14 +65,6 @@ _KEEP_MM = MIN_MM
 (less gives its direction no better than a letter's or a barb's)."""
 _SIGMA_LINE = 0.1
 """How far (σ, mm) a refitted line passes from the image point it was drawn through."""
-_SIGMA_SHARED = 0.3
-"""How far (σ, mm) a line passes from the image point where another stroke meets it at under
-21° (:data:`_SHARE_SIN`): fitted apart from the ink they share (:func:`apart`), each is
-extrapolated to the vertex over the stretch left out (measured 0.3-0.4 mm off, fitted
-through it)."""
-_SHARE_SIN = _BANDS[0] / 2.5
-"""Two strokes meeting at under asin(0.9 / 2.5) = 21° share ink within the 0.9 mm band of
-each other's fit beyond the 2.5 mm it leaves out at each end."""
 _SIGMA_END = 0.4
 """How far (σ, mm) a stroke's tip is from its image point along its line (overshot or short)."""
 
@@ -420,7 +412,10 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     lines could not be fitted apart from another stroke's ink (:func:`apart`):
     their ends count, their lines do not (unless no other line is there).
     """
-    lines = [i for i in idx if i not in weak] or list(idx)
+    lines = [i for i in idx if i not in weak]
+    # none fitted apart from the other's ink: their lines tell the vertex across only
+    apart_ok = bool(lines)
+    lines = lines or list(idx)
     for i, (p, q) in enumerate(segs):
         if i in lines or i in weak:
             continue
@@ -471,7 +466,7 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         # the vector from the pole ends here too, found or not (a short one often is not);
         # found, it is one of the lines already
         agree.append(np.array([pole, guess], dtype=float))
-    return _combine(A[ok], b[ok], agree, ending, guess, end)
+    return _combine(A[ok], b[ok], agree, ending, guess, end, apart_ok)
 
 
 def _through(sg: np.ndarray, pole: np.ndarray) -> bool:
@@ -512,7 +507,7 @@ def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:
 
 
 def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list[np.ndarray],
-             guess: np.ndarray, end: np.ndarray) -> np.ndarray:
+             guess: np.ndarray, end: np.ndarray, crossing: bool = True) -> np.ndarray:
     """The vertex from the lines that meet there (rows of ``A``, ``b``) and the strokes' ends.
 
     Each line holds the vertex across itself (σ :data:`_SIGMA_LINE`); each
@@ -521,22 +516,21 @@ def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list
     differ by (2.5 σ of the sum): such an end was run on over another
     stroke's ink, or stopped short where the strokes merge.  Lines that meet
     at a wide angle fix the vertex by themselves; along lines that meet at a
-    narrow one, the ends do: a line that meets another at under 21°
-    holds it across itself with σ :data:`_SIGMA_SHARED` only.  When no two
-    of the lines are over 8° apart
+    narrow one, the ends do.  When no two of the lines are over 8° apart
     (:data:`_SPREAD_SIN`, as in :func:`vertex_at`), their crossing is not
     used at all: a line is off by 0.1-0.4 mm at the vertex (a hand's wobble,
     a fit that leaves out the ink it shares with another stroke there), which
     moves a crossing at under 8° by 1-6 mm along them, more than its ends can
     be off; so each line holds the vertex only across their mean direction,
-    and the ends decide along it, none left out.
+    and the ends decide along it, none left out.  So too when ``crossing``
+    is false: the lines could not be fitted apart from each other's ink
+    (:func:`apart`), and the angle between them is not theirs.
     """
     sines = np.abs(np.outer(A[:, 0], A[:, 1]) - np.outer(A[:, 1], A[:, 0]))
     np.fill_diagonal(sines, 1.0)
-    # a line that meets another here at under 21° shares ink with it past the 2.5 mm its fit
-    # leaves out at each end: fitted apart, it is off by up to 0.3-0.4 mm at the vertex
-    sigma = np.where(sines.min(axis=1) < _SHARE_SIN, _SIGMA_SHARED, _SIGMA_LINE)
-    if len(A) > 1 and float(np.max(sines[~np.eye(len(A), dtype=bool)])) < _SPREAD_SIN:
+    sigma = np.full(len(A), _SIGMA_LINE)
+    if len(A) > 1 and (not crossing
+                       or float(np.max(sines[~np.eye(len(A), dtype=bool)])) < _SPREAD_SIN):
         m = A * np.sign(A @ A[0])[:, None]
         m = m.sum(axis=0) / np.hypot(*m.sum(axis=0))
         # each line's place across the mean direction, where it passes nearest the end
