@@ -104,9 +104,6 @@ class SheetRead:
     carried : dict
         Name -> where it is when constructed right from the images read before
         it that are wrong (sheet mm; follow-through from the student's own images).
-    weak : frozenset of int
-        The segments whose lines could not be fitted apart from another
-        stroke's ink (:func:`graphkin.scan.strokes.apart`): only their ends count.
     """
 
     rect: Rectified
@@ -117,7 +114,6 @@ class SheetRead:
     missing: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     carried: dict[str, list[np.ndarray]] = field(default_factory=dict)
-    weak: frozenset[int] = frozenset()
 
 
 def _names(sol: Any) -> list[str]:
@@ -201,9 +197,8 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
     box = (int(x0 * PX_PER_MM), int((h - y1) * PX_PER_MM), int(np.ceil(x1 * PX_PER_MM)),
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
-    segs, weak = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
-    read = SheetRead(rect, layout, segs, places=places(sol, layout, diag),
-                     weak=frozenset(np.flatnonzero(weak).tolist()))
+    segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
+    read = SheetRead(rect, layout, segs, places=places(sol, layout, diag))
     _match(read)
     for _ in range(_CARRY_ROUNDS):
         if not _carried(read, sol, diag):
@@ -306,7 +301,7 @@ def _match(read: SheetRead) -> None:
     for name, j in chosen.items():
         p = pts[j]
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(pts - p).T) < _SAME_MM)]
-        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole, read.weak)
+        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 

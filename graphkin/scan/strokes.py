@@ -60,9 +60,8 @@ _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
 _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
-_KEEP_MM = MIN_MM
-"""A line refitted apart from the others (:func:`apart`) keeps at least this much of itself
-(less gives its direction no better than a letter's or a barb's)."""
+_KEEP_MM = 2.0
+"""A line refitted apart from the others (:func:`apart`) keeps at least this much of itself."""
 _SIGMA_LINE = 0.1
 """How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
@@ -127,7 +126,7 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray,
     this line along which one of them lies within the band it is fitted in
     (and half a line's width more) are left out, across the whole band, as
     its ends are (see :func:`apart`); a segment that keeps less than
-    :data:`_KEEP_MM` of its length so is returned as it was given (the same object).
+    :data:`MIN_MM` of its length so is returned as it was given.
     """
     p, q = seg
     length = float(np.hypot(*(q - p)))
@@ -154,7 +153,7 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray,
             for lo, hi in spans:
                 sel &= (t < lo) | (t > hi)
             if _kept(trim, length - trim, spans) < _KEEP_MM * PX_PER_MM:
-                return seg
+                return np.asarray(seg, dtype=float)
         if np.count_nonzero(sel) < 6:
             break
         wv = wgt[sel]
@@ -211,7 +210,7 @@ def _kept(lo: float, hi: float, spans: list[tuple[float, float]]) -> float:
 
 
 def apart(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
-          sheet_h_mm: float) -> tuple[np.ndarray, np.ndarray]:
+          sheet_h_mm: float) -> np.ndarray:
     """Each segment's line refitted to its own ink, the other strokes' ink left out (mm).
 
     Two strokes that meet at a vertex at a narrow angle share ink for
@@ -227,42 +226,27 @@ def apart(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
     only the pixels near the other line would leave the far half of the
     stroke there and push the line away).  Twice, each time from the lines
     fitted before; the ends are walked out to the tips again along the new
-    line (:func:`_tip`).  A segment no other comes near is kept as it was;
-    one that would keep less than 5 mm (a short link's image all along a
-    long vector, a few degrees from it) too, and is returned as *weak*: its
-    line is the other's ink as much as its own, so only its ends are used
-    (:func:`vertex_at`).
-
-    Returns
-    -------
-    segs : ndarray (n, 2, 2)
-        The segments, sheet mm.
-    weak : ndarray (n,) of bool
-        The segments that could not be fitted apart.
+    line (:func:`_tip`).  A segment no other comes near, or that would keep
+    less than 5 mm, is kept as it was.
     """
     if len(segs) < 2:
-        return segs, np.zeros(len(segs), bool)
+        return segs
     x0, y0 = origin_px
     px = np.empty_like(segs)
     px[..., 0] = segs[..., 0] * PX_PER_MM - x0 - 0.5
     px[..., 1] = (sheet_h_mm - segs[..., 1]) * PX_PER_MM - y0 - 0.5
     cur = px.copy()
-    weak = np.zeros(len(segs), bool)
     for _ in range(2):
         nxt = cur.copy()
         for i, sg in enumerate(cur):
             others = np.delete(cur, i, axis=0)
-            weak[i] = False
             if _shares(sg, others):
-                given = px[i]
-                got = _refine(given, ratio, ratio < INK_RATIO, others)
-                weak[i] = got is given
-                nxt[i] = got
+                nxt[i] = _refine(px[i], ratio, ratio < INK_RATIO, others)
         cur = nxt
     mm = np.empty_like(cur)
     mm[..., 0] = (cur[..., 0] + x0 + 0.5) / PX_PER_MM
     mm[..., 1] = sheet_h_mm - (cur[..., 1] + y0 + 0.5) / PX_PER_MM
-    return mm, weak
+    return mm
 
 
 def _shares(sg: np.ndarray, others: np.ndarray) -> bool:
@@ -392,8 +376,7 @@ def ends(segs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
-              pole: np.ndarray | None = None, weak: frozenset[int] = frozenset()
-              ) -> np.ndarray:
+              pole: np.ndarray | None = None) -> np.ndarray:
     """Where the segments ``idx`` that end near ``guess`` meet.
 
     The segments that pass through ``guess`` (within 1 mm of their line,
@@ -408,16 +391,11 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     overshot or stopped short still points at the vertex, and along lines
     that meet at a narrow angle the ends decide.  ``pole``: the vector from
     it ends here too, found as a segment or not (its direction tells how far
-    the other strokes' tips run on over its ink).  ``weak``: the segments whose
-    lines could not be fitted apart from another stroke's ink (:func:`apart`):
-    their ends count, their lines do not (unless no other line is there).
+    the other strokes' tips run on over its ink).
     """
-    lines = [i for i in idx if i not in weak]
-    # none fitted apart from the other's ink: their lines tell the vertex across only
-    apart_ok = bool(lines)
-    lines = lines or list(idx)
+    lines = list(idx)
     for i, (p, q) in enumerate(segs):
-        if i in lines or i in weak:
+        if i in lines:
             continue
         length = float(np.hypot(*(q - p)))
         u = (q - p) / length
@@ -459,14 +437,13 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     if not np.any(ok):
         return end
     agree = [segs[i] for i, k in zip(lines, ok, strict=True) if k]
-    ending = [segs[i] for i in idx if i not in lines or ok[lines.index(i)]]
-    agree += [segs[i] for i in idx if i not in lines]
     if pole is not None and float(np.hypot(*(guess - pole))) > 2.0 and not any(
             _through(sg, pole) for sg in agree):
         # the vector from the pole ends here too, found or not (a short one often is not);
         # found, it is one of the lines already
         agree.append(np.array([pole, guess], dtype=float))
-    return _combine(A[ok], b[ok], agree, ending, guess, end, apart_ok)
+    return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
+                    guess, end)
 
 
 def _through(sg: np.ndarray, pole: np.ndarray) -> bool:
@@ -507,7 +484,7 @@ def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:
 
 
 def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list[np.ndarray],
-             guess: np.ndarray, end: np.ndarray, crossing: bool = True) -> np.ndarray:
+             guess: np.ndarray, end: np.ndarray) -> np.ndarray:
     """The vertex from the lines that meet there (rows of ``A``, ``b``) and the strokes' ends.
 
     Each line holds the vertex across itself (σ :data:`_SIGMA_LINE`); each
@@ -522,22 +499,17 @@ def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list
     a fit that leaves out the ink it shares with another stroke there), which
     moves a crossing at under 8° by 1-6 mm along them, more than its ends can
     be off; so each line holds the vertex only across their mean direction,
-    and the ends decide along it, none left out.  So too when ``crossing``
-    is false: the lines could not be fitted apart from each other's ink
-    (:func:`apart`), and the angle between them is not theirs.
+    and the ends decide along it, none left out.
     """
-    sines = np.abs(np.outer(A[:, 0], A[:, 1]) - np.outer(A[:, 1], A[:, 0]))
-    np.fill_diagonal(sines, 1.0)
-    sigma = np.full(len(A), _SIGMA_LINE)
-    if len(A) > 1 and (not crossing
-                       or float(np.max(sines[~np.eye(len(A), dtype=bool)])) < _SPREAD_SIN):
+    if len(A) > 1 and max(abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0]))
+                          for i in range(len(A)) for j in range(i)) < _SPREAD_SIN:
         m = A * np.sign(A @ A[0])[:, None]
         m = m.sum(axis=0) / np.hypot(*m.sum(axis=0))
         # each line's place across the mean direction, where it passes nearest the end
         b = np.array([float(m @ (guess - (a @ guess - c) * a)) for a, c in zip(A, b)])
         A = np.tile(m, (len(A), 1))
-    M = (A / sigma[:, None] ** 2).T @ A
-    r = (A / sigma[:, None] ** 2).T @ b
+    M = A.T @ A / _SIGMA_LINE**2
+    r = A.T @ b / _SIGMA_LINE**2
     tips = []
     for sg in ending:
         k = int(np.argmin(np.hypot(*(sg - guess).T)))
