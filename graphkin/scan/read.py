@@ -44,7 +44,7 @@ from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
-from graphkin.scan.strokes import ends, pencil, segments, vertex_at
+from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 
 __all__ = ["SheetRead", "read_sheet", "mark_scan", "places", "NOT_FOUND"]
 
@@ -197,7 +197,7 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
     box = (int(x0 * PX_PER_MM), int((h - y1) * PX_PER_MM), int(np.ceil(x1 * PX_PER_MM)),
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
-    segs = segments(ratio, (box[0], box[1]), h)
+    segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
     read = SheetRead(rect, layout, segs, places=places(sol, layout, diag))
     _match(read)
     for _ in range(_CARRY_ROUNDS):

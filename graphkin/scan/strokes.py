@@ -30,7 +30,7 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "ends", "vertex_at"]
+__all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "apart", "ends", "vertex_at"]
 
 INK_RATIO = 0.84
 """A pixel darker than this fraction of the paper around it is pencil."""
@@ -60,6 +60,8 @@ _GROW = int(round(2.2 * PX_PER_MM)) | 1
 """The printed ink is masked grown to this many pixels across (2.2 mm)."""
 _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
+_KEEP_MM = 2.0
+"""A line refitted apart from the others (:func:`apart`) keeps at least this much of itself."""
 _SIGMA_LINE = 0.1
 """How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
@@ -120,7 +122,8 @@ def segments(ratio: np.ndarray, origin_px: tuple[int, int], sheet_h_mm: float) -
     return mm
 
 
-def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
+def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray,
+            others: np.ndarray | None = None) -> np.ndarray:
     """A merged segment (px) fitted to its pencil stroke.
 
     Its line goes through the ink's middle; its ends are the stroke's tips
@@ -130,6 +133,11 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
     The line is the weighted principal axis of the dark pixels within 0.9 mm of
     it, leaving out 2.5 mm at each end (where other lines join); so the two
     edges the detector saw give the stroke's centre to a fraction of a pixel.
+    ``others`` (px, (m, 2, 2)): the other strokes' lines; the stretches of
+    this line along which one of them lies within the band it is fitted in
+    (and half a line's width more) are left out, across the whole band, as
+    its ends are (see :func:`apart`); a segment that keeps less than
+    :data:`MIN_MM` of its length so is returned as it was given.
     """
     p, q = seg
     length = float(np.hypot(*(q - p)))
@@ -151,6 +159,12 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
         t = rel @ u - float((p - c) @ u)
         o = rel @ np.array([-u[1], u[0]])
         sel = (np.abs(o) < band * PX_PER_MM) & (t > trim) & (t < length - trim) & (wgt > 0)
+        if others is not None:
+            spans = _shared(p, u, others, (_BANDS[0] + _HALF_MM) * PX_PER_MM)
+            for lo, hi in spans:
+                sel &= (t < lo) | (t > hi)
+            if _kept(trim, length - trim, spans) < _KEEP_MM * PX_PER_MM:
+                return np.asarray(seg, dtype=float)
         if np.count_nonzero(sel) < 6:
             break
         wv = wgt[sel]
@@ -164,9 +178,98 @@ def _refine(seg: np.ndarray, ratio: np.ndarray, ink: np.ndarray) -> np.ndarray:
         a, b = float((p - c) @ u), float((q - c) @ u)
         p, q = c + a * u, c + b * u
     dark = _darkness(ratio, p, q)
+    if others is not None:
+        # the ends given are tips already: walked again along the new line from 2.5 mm
+        # inside them, at most 1.5 mm past them
+        k = 2.5 * PX_PER_MM * (q - p) / float(np.hypot(*(q - p)))
+        p, q = p + k, q - k
     return np.array([_tip(q, p, ratio, dark), _tip(p, q, ratio, dark)])
 
 
+def _shared(p: np.ndarray, u: np.ndarray, others: np.ndarray, reach: float
+            ) -> list[tuple[float, float]]:
+    """The stretches of a line that another segment comes within ``reach`` of (px).
+
+    ``t`` from ``p`` along ``u``, px; each other segment sampled every 0.1 mm.
+    """
+    n = np.array([-u[1], u[0]])
+    spans = []
+    for a, b in others:
+        k = max(int(np.hypot(*(b - a)) / (0.1 * PX_PER_MM)), 2)
+        pts = a + np.outer(np.linspace(0.0, 1.0, k + 1), b - a)
+        near = np.abs((pts - p) @ n) < reach
+        if np.any(near):
+            t = (pts[near] - p) @ u
+            pad = _HALF_MM * PX_PER_MM                  # the other line's rounded end
+            spans.append((float(t.min()) - pad, float(t.max()) + pad))
+    return spans
+
+
+def _kept(lo: float, hi: float, spans: list[tuple[float, float]]) -> float:
+    """How much of [lo, hi] the spans leave."""
+    left = hi - lo
+    cover: list[tuple[float, float]] = []
+    for a, b in sorted(spans):
+        a, b = max(a, lo), min(b, hi)
+        if b <= a:
+            continue
+        if cover and a <= cover[-1][1]:
+            cover[-1] = (cover[-1][0], max(cover[-1][1], b))
+        else:
+            cover.append((a, b))
+    return left - sum(b - a for a, b in cover)
+
+
+def apart(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
+          sheet_h_mm: float) -> np.ndarray:
+    """Each segment's line refitted to its own ink, the other strokes' ink left out (mm).
+
+    Two strokes that meet at a vertex at a narrow angle share ink for
+    0.9 mm / sin of their angle from it (more than the 2.5 mm at each end
+    the fit of :func:`_refine` leaves out when they meet at under 21°): the
+    fit of each is pulled toward the other there, so the two lines come
+    together before the vertex and their crossing slides along them toward
+    where they come from (measured: lines 0.3-0.4 mm off the image near it,
+    crossings 1-4 mm short of it).  Here each line is fitted again leaving
+    out, as its ends are, the stretches along which another segment lies
+    within its band (0.9 mm and half a line's width): across the whole band,
+    so what is left of it is still symmetric about its middle (leaving out
+    only the pixels near the other line would leave the far half of the
+    stroke there and push the line away).  Twice, each time from the lines
+    fitted before; the ends are walked out to the tips again along the new
+    line (:func:`_tip`).  A segment no other comes near, or that would keep
+    less than 5 mm, is kept as it was.
+    """
+    if len(segs) < 2:
+        return segs
+    x0, y0 = origin_px
+    px = np.empty_like(segs)
+    px[..., 0] = segs[..., 0] * PX_PER_MM - x0 - 0.5
+    px[..., 1] = (sheet_h_mm - segs[..., 1]) * PX_PER_MM - y0 - 0.5
+    cur = px.copy()
+    for _ in range(2):
+        nxt = cur.copy()
+        for i, sg in enumerate(cur):
+            others = np.delete(cur, i, axis=0)
+            if _shares(sg, others):
+                nxt[i] = _refine(px[i], ratio, ratio < INK_RATIO, others)
+        cur = nxt
+    mm = np.empty_like(cur)
+    mm[..., 0] = (cur[..., 0] + x0 + 0.5) / PX_PER_MM
+    mm[..., 1] = sheet_h_mm - (cur[..., 1] + y0 + 0.5) / PX_PER_MM
+    return mm
+
+
+def _shares(sg: np.ndarray, others: np.ndarray) -> bool:
+    """Whether another segment (px) lies within the band the line of ``sg`` is fitted in."""
+    p, q = sg
+    length = float(np.hypot(*(q - p)))
+    if length < 8 * PX_PER_MM:
+        return False
+    u = (q - p) / length
+    trim = 2.5 * PX_PER_MM
+    spans = _shared(p, u, others, (_BANDS[0] + _HALF_MM) * PX_PER_MM)
+    return _kept(trim, length - trim, spans) < length - 2 * trim
 def _sample(ratio: np.ndarray, pts: np.ndarray) -> np.ndarray:
     """The page's darkness (1 - ratio) at sub-pixel points (bilinear; paper outside)."""
     h, w = ratio.shape
@@ -345,11 +448,19 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     if not np.any(ok):
         return end
     agree = [segs[i] for i, k in zip(lines, ok, strict=True) if k]
-    if pole is not None and float(np.hypot(*(guess - pole))) > 2.0:
-        # the vector from the pole ends here too, found or not (a short one often is not)
+    if pole is not None and float(np.hypot(*(guess - pole))) > 2.0 and not any(
+            _through(sg, pole) for sg in agree):
+        # the vector from the pole ends here too, found or not (a short one often is not);
+        # found, it is one of the lines already
         agree.append(np.array([pole, guess], dtype=float))
     return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
                     guess, end)
+
+
+def _through(sg: np.ndarray, pole: np.ndarray) -> bool:
+    """Whether a segment lies on a line through the pole (within 1.5 mm): a vector from it."""
+    d = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
+    return abs(float(d[0] * (pole - sg[0])[1] - d[1] * (pole - sg[0])[0])) < 1.5
 
 
 def _cross(p: np.ndarray, n: np.ndarray, sg: np.ndarray) -> np.ndarray | None:
@@ -365,12 +476,13 @@ def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:
     """How far past the vertex other strokes' ink lies on a stroke's line (mm).
 
     A stroke arriving along ``d`` is walked on to where the ink ends
-    (:func:`_tip`); past the vertex its line still runs over the ink of a
-    stroke whose body lies on that side (one that goes through the vertex, or
-    comes from the far side), for :data:`_HALF_MM` / sin of their angle, or
-    over another stroke's rounded end only (:data:`_HALF_MM`).
+    (:func:`_tip`): over its own rounded end, half a line's width past where
+    the pencil stopped (:data:`_HALF_MM`), and past the vertex its line still
+    runs over the ink of a stroke whose body lies on that side (one that goes
+    through the vertex, or comes from the far side), for :data:`_HALF_MM` / sin
+    of their angle.
     """
-    cover = 0.0
+    cover = _HALF_MM
     for sg in others:
         e = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
         sin = abs(float(d[0] * e[1] - d[1] * e[0]))
@@ -392,8 +504,21 @@ def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list
     differ by (2.5 σ of the sum): such an end was run on over another
     stroke's ink, or stopped short where the strokes merge.  Lines that meet
     at a wide angle fix the vertex by themselves; along lines that meet at a
-    narrow one, the ends do.
+    narrow one, the ends do.  When no two of the lines are over 8° apart
+    (:data:`_SPREAD_SIN`, as in :func:`vertex_at`), their crossing is not
+    used at all: a line is off by 0.1-0.4 mm at the vertex (a hand's wobble,
+    a fit that leaves out the ink it shares with another stroke there), which
+    moves a crossing at under 8° by 1-6 mm along them, more than its ends can
+    be off; so each line holds the vertex only across their mean direction,
+    and the ends decide along it, none left out.
     """
+    if len(A) > 1 and max(abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0]))
+                          for i in range(len(A)) for j in range(i)) < _SPREAD_SIN:
+        m = A * np.sign(A @ A[0])[:, None]
+        m = m.sum(axis=0) / np.hypot(*m.sum(axis=0))
+        # each line's place across the mean direction, where it passes nearest the end
+        b = np.array([float(m @ (guess - (a @ guess - c) * a)) for a, c in zip(A, b)])
+        A = np.tile(m, (len(A), 1))
     M = A.T @ A / _SIGMA_LINE**2
     r = A.T @ b / _SIGMA_LINE**2
     tips = []

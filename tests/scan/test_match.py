@@ -49,8 +49,10 @@ def test_an_image_gives_way_to_one_that_has_no_other_vertex() -> None:
                                         "C": [(128.0, 106.5)]})
     _match(read)
     # which vertex each name takes (v1 and v2 are 8 mm apart); where on it the point is read
-    # is the strokes' business (tests/scan/test_strokes.py: a lone ray's tip is taken back
-    # by the ink it may have run on over, a few tenths of a millimetre)
+    # is the strokes' business: a segment's end is its stroke's tip, half a line's width
+    # (0.3 mm) past where the pencil stopped, and that is taken off, so these rays, which
+    # end exactly at v1 and v2, are read 0.3 mm short (test_vertex.py: a real tip is read
+    # at its point)
     assert np.hypot(*(read.points["C"] - v1)) < 1.0
     assert np.hypot(*(read.points["B"] - v2)) < 1.0
     assert read.missing == []
