@@ -485,7 +485,8 @@ function redraw(refit) {
   // a cam's angle and curvature: a note; an undercut profile stays a warning
   status.classList.toggle("gk-note", ok && !held && camSays.indexOf("undercut") < 0);
   status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? camSays : why ||
-    (turned && turned.why) || ((camSays ? camSays + " " : "") +
+    (turned && turned.why) || (construction.why && construction.why()) ||
+    ((camSays ? camSays + " " : "") +
     "This posture cannot be assembled (or is at a dead center, " +
     "where the construction has no clean answer): drag back."));
   showDrive();

@@ -37,8 +37,11 @@ NEWTON = ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
 
 
 
-def _same_as_solve(browser, tmp_path: Path) -> dict:
-    """Positions, velocities and accelerations of the page against solve of its saved file."""
+def _same_as_solve(browser, tmp_path: Path, wheel: bool = False) -> dict:
+    """Positions, velocities and accelerations of the page against solve of its saved file.
+
+    ``wheel``: Example 3.9's wheel, whose polygons the page constructs at Newton's posture.
+    """
     r = browser.js("window.graphkinLive.state()")["result"]
     assert r is not None
     saved = tmp_path / "saved.toml"
@@ -58,6 +61,22 @@ def _same_as_solve(browser, tmp_path: Path) -> dict:
         for lid in mech.links:
             np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
                                        atol=REL * (1 + abs(sol.omega(lid))))
+            np.testing.assert_allclose(r[f"α{lid}"], sol.alpha(lid), rtol=0,
+                                       atol=REL * (1 + abs(sol.alpha(lid))))
+        if wheel:
+            # the saved file's polygons are constructed ("Solved by the graphic
+            # constructions"), and so are the page's: the wheel's contact point c'4 is the
+            # construction's own image (Eq. 4.19); on straight ground it is ω4² ρ from C
+            # toward the center G (a_G = -α ρ along the ground cancels α × R_CG)
+            assert sol.method == "construction"
+            lab = "a(rolling[0]:C@4)"
+            ca = np.asarray(r[lab]) - np.asarray(r["o_a"])
+            acc = sol.values["acceleration"]
+            np.testing.assert_allclose(ca, np.asarray(acc[lab])[:2] - np.asarray(acc["o_a"])[:2],
+                                       rtol=0, atol=REL * s)
+            g, w = np.asarray(r["G"]), float(r["ω4"])
+            c = np.array([g[0], 0.0])  # the ground is the line y = 0 in both files
+            np.testing.assert_allclose(ca, w * w * (g - c), rtol=0, atol=REL * s)
     return r
 
 
@@ -66,11 +85,19 @@ def test_random_drags_equal_solve_of_the_saved_file(browser, tmp_path, name):
     path = ROOT / name
     browser.open(_page(tmp_path, path))
     assert browser.errors() == []
-    _same_as_solve(browser, tmp_path)
-    # the panels Python does not draw say why, in Python's words
+    _same_as_solve(browser, tmp_path, wheel=True)
+    # the wheel's polygons are constructed at Newton's posture (live_newton_polygons.py):
+    # drawn, none refused, with the contact's images lettered as in Fig. 3.18
     why = browser.js("[].map.call(document.querySelectorAll('.gk-refused'),"
                      " function (e) { return e.textContent; })")
-    assert len(why) == 2 and all(w.startswith("no ") for w in why)
+    assert why == []
+    for panel in ("velocity", "acceleration"):
+        shown = browser.js(f"getComputedStyle(document.getElementById('gk-{panel}')"
+                           ".parentNode).display")
+        assert shown != "none"
+    pitch = browser.js("[].map.call(document.querySelectorAll('.gk-pitch'),"
+                       " function (e) { return e.textContent; })")
+    assert "c₄ = c₁" in pitch and "c′₄" in pitch
     rng = np.random.default_rng(zlib.crc32(name.encode()))
     answered = 0
     for step in rng.uniform(-1.2, 1.2, size=4):  # radians of the drive, from where it is
@@ -83,10 +110,23 @@ def test_random_drags_equal_solve_of_the_saved_file(browser, tmp_path, name):
             assert "NaN" not in body and "Infinity" not in body
             browser.js(f"window.graphkinLive.setDrive({d!r})")
             continue
-        _same_as_solve(browser, tmp_path)
+        _same_as_solve(browser, tmp_path, wheel=True)
         answered += 1
     assert answered >= 1
     assert browser.errors() == []
+
+
+def test_a_posture_without_a_polygon_construction_is_null_not_nan(browser, tmp_path):
+    # the polygons read the posture's points only: with the coupler's pin B moved onto A
+    # (R_BA = 0, no direction for V_BA ⊥ R_BA, Sec. 3.4) the construction has no clean
+    # answer: null, and the page's one line for it names the polygons
+    browser.open(_page(tmp_path, ROOT / "examples/ex3_9_rolling_wheel.toml"))
+    got = browser.js("(function () { var r = window.graphkinLive.state().result;"
+                     " var out = Object.assign({}, r, {B: r.A});"
+                     " return [gkNewtonPolygons(GKN.polygons, Object.assign({}, r)) !== null,"
+                     " gkNewtonPolygons(GKN.polygons, out), GKN.polygons.why]; })()")
+    assert got[0] is True and got[1] is None
+    assert "polygons have no clean construction" in got[2] and "NaN" not in got[2]
 
 
 def test_the_wheel_rolls_its_travel(browser, tmp_path):
@@ -121,7 +161,7 @@ def test_dragging_a_pivot_of_the_rolling_wheel(browser, tmp_path):
                      button="left", buttons=1)
     browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=x0 + 12, y=y0 - 8,
                  button="left", clickCount=1)
-    r = _same_as_solve(browser, tmp_path)
+    r = _same_as_solve(browser, tmp_path, wheel=True)
     saved = load_toml(tmp_path / "saved.toml")
     assert saved["links"]["1"]["O2"] != [0, 0]
     assert r["O2"] == saved["links"]["1"]["O2"]
