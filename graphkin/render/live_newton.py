@@ -160,9 +160,9 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "curvature": {"why": "the curvature constructions start from the velocity and "
                              "acceleration polygons, which this page does not redraw (Newton's "
                              "method solves the mechanism, not a construction)" if why else
-                             "no curvature panel on this page: Newton's method finds the "
-                             "posture, and the curvature constructions are not written out "
-                             "from it"},
+                             "the curvature constructions are not written out from a "
+                             "posture Newton's method finds (at the file's posture: graphkin "
+                             "draw -d curvature)"},
     }
     if why:
         data["refused"] = why
