@@ -42,7 +42,7 @@ def newton_polygons(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
     -------
     data : dict
         ``K`` (the parameters at the file's posture), ``points`` (name ->
-        the slots of its x and y), ``angles`` (θ label -> its slot),
+        the slots of its x and y), ``angles`` (the θ labels read as inputs),
         ``inputs`` (the drives' ω and α, by their labels in the polygons) and ``pitch``.
     js : str
         The function ``gkPolygons(I, K)``.
@@ -64,9 +64,14 @@ def newton_polygons(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
         pol = build_polygons(mech, pc)
     except GraphkinError:
         return None
-    named = {n for lk in mech.links.values() for n in lk.points}
-    angles = {f"θ{lid}" for lid in mech.links}
-    cut = named | angles
+    from graphkin.render.live_newton import _path_points
+
+    # the posture's named points and the paths' points (a rolling contact's line): the Newton
+    # page's own values of them (render/live_newton.py), so a dragged pivot moves both alike
+    paths = [lab for lab, _, _ in _path_points(mech)]
+    named = {n for lk in mech.links.values() for n in lk.points} | set(paths)
+    angles = [f"θ{lid}" for lid in mech.links]
+    cut = named | set(angles)
     rate_steps = [*pol.velocity.steps, *pol.acceleration.steps]
     # the posture's steps the polygons read, back from their inputs, stopping at the cut
     by_out = {o: s for s in pc.construction.steps for o in s.outputs}
@@ -87,11 +92,11 @@ def newton_polygons(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
         if not outs:
             continue
         if any(o in cut for o in outs):
-            for o in outs:  # a posture's point or angle: given, its numbers parameters
+            for o in outs:  # a posture's point (its numbers parameters) or angle (an input)
                 v = np.asarray(values[o], dtype=float)
                 if v.size == 1:
-                    steps.append(Step(len(steps), o, "scalar", (), (o,),
-                                      params={"value": float(v)}, role=Role.GIVEN))
+                    steps.append(Step(len(steps), o, "input", (), (o,),
+                                      params={"name": o}, role=Role.GIVEN))
                 else:
                     steps.append(Step(len(steps), o, "point", (), (o,),
                                       params={"xy": (float(v[0]), float(v[1]))},
@@ -116,9 +121,9 @@ def newton_polygons(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
     slots = {n: k for k, n in enumerate(names)}
     data = {
         "K": fn.values,
-        "points": {n: [slots[f"{n}.0"], slots[f"{n}.1"]] for n in named
+        "points": {n: [slots[f"{n}.0"], slots[f"{n}.1"]] for n in [*points, *paths]
                    if f"{n}.0" in slots and f"{n}.1" in slots},
-        "angles": {a: slots[a] for a in angles if a in slots},
+        "angles": [a for a in angles if a in need],
         "inputs": {lab: 0.0 if rate is None else float(rate) for d in mech.drives
                    for lab, rate in zip(pol.rate_inputs[d.index], (d.rate, d.rate2))},
         "pitch": pitch,
@@ -131,17 +136,17 @@ def newton_polygons(mech: Mechanism) -> tuple[dict[str, Any], str] | None:
 #: ``null`` where the construction has no clean answer (said so on the page, never NaN)
 POLYGONS_JS = r"""
 function gkNewtonPolygons(P, out) {
-  const K = P.K.slice();
+  const K = P.K.slice(), I = Object.assign({}, P.inputs);
   for (const n of Object.keys(P.points)) {
     const p = out[n], [i, j] = P.points[n];
     if (!p) return null;
     K[i] = p[0]; K[j] = p[1];
   }
-  for (const a of Object.keys(P.angles)) {
+  for (const a of P.angles) {
     if (out[a] === undefined) return null;
-    K[P.angles[a]] = out[a];
+    I[a] = out[a];
   }
-  const r = gkPolygons(P.inputs, K);
+  const r = gkPolygons(I, K);
   if (r === null) return null;
   for (const lab of Object.keys(r)) out[lab] = r[lab];
   return out;
