@@ -456,6 +456,8 @@ function showDrive() {
   else slider.value = String(v);
 }
 
+const DEAD = "This posture cannot be assembled (or is at a dead center, " +
+  "where the construction has no clean answer): drag back.";
 function redraw(refit) {
   // a cam's equivalent linkage holds at the file's cam angle only (Sec. 4.7; live_cams.py)
   const held = D.cam && !D.turn && drive !== drive0;
@@ -464,7 +466,10 @@ function redraw(refit) {
   const ok = res !== null;
   if (ok) good = res;
   const r = ok ? res : good;
-  if (r === null) return;
+  if (r === null) {  // not even the file's posture (a dead point): said so, drawn nothing
+    status.textContent = (construction.why && construction.why()) || DEAD;
+    return;
+  }
   cycle();
   ics = centersOf(r);
   curv = D.curvature ? gkCurvature(D.curvature, r) : null;
@@ -486,9 +491,7 @@ function redraw(refit) {
   status.classList.toggle("gk-note", ok && !held && camSays.indexOf("undercut") < 0);
   status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? camSays : why ||
     (turned && turned.why) || (construction.why && construction.why()) ||
-    ((camSays ? camSays + " " : "") +
-    "This posture cannot be assembled (or is at a dead center, " +
-    "where the construction has no clean answer): drag back."));
+    ((camSays ? camSays + " " : "") + DEAD));
   showDrive();
 }
 

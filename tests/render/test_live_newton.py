@@ -341,3 +341,16 @@ def test_polygons_at_newtons_posture_equal_solve(browser, tmp_path, name):
             continue
         _same_as_solve(browser, tmp_path)
     assert browser.errors() == []
+
+
+def test_a_dead_point_file_says_so_in_one_line(browser, tmp_path):
+    # Example 3.9 at its dead point (A, B and the contact C in line, Sec. 3.5): Newton's
+    # posture has no rates and the polygons' ⊥BA and ⊥BC are one line: nothing drawn, one
+    # line said, never NaN
+    browser.open(_page(tmp_path, ROOT / "tests/data/rolling/wheel_dead_point.toml"))
+    assert browser.errors() == []
+    assert browser.js("window.graphkinLive.state()")["result"] is None
+    said = browser.js("document.getElementById('gk-status').textContent")
+    assert "dead center" in said and "\n" not in said
+    body = browser.js("document.body.innerText")
+    assert "NaN" not in body and "Infinity" not in body
