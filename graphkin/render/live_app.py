@@ -188,7 +188,9 @@ function fit(panel, r) {
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
-  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  // a subnormal extent (ω = 1e-313: every image at the pole) overflows the scale: fit a unit
+  const s0 = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const s = Number.isFinite(s0) && s0 > 0 ? s0 : Math.min(W - 2 * M, H - 2 * M);
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
 }
@@ -204,7 +206,9 @@ function fitPoints(panel, pts) {
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
-  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  // a subnormal extent (ω = 1e-313: every image at the pole) overflows the scale: fit a unit
+  const s0 = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const s = Number.isFinite(s0) && s0 > 0 ? s0 : Math.min(W - 2 * M, H - 2 * M);
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
 }
