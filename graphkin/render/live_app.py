@@ -188,7 +188,9 @@ function fit(panel, r) {
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
-  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  // a subnormal extent (ω = 1e-313: every image at the pole) overflows the scale: fit a unit
+  const s0 = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const s = Number.isFinite(s0) && s0 > 0 ? s0 : Math.min(W - 2 * M, H - 2 * M);
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
 }
@@ -204,7 +206,9 @@ function fitPoints(panel, pts) {
   let w = x1 - x0, h = y1 - y0;
   const big = Math.max(w, h) || 1;
   w = Math.max(w, 0.05 * big); h = Math.max(h, 0.05 * big);
-  const s = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  // a subnormal extent (ω = 1e-313: every image at the pole) overflows the scale: fit a unit
+  const s0 = Math.min((W - 2 * M) / w, (H - 2 * M) / h);
+  const s = Number.isFinite(s0) && s0 > 0 ? s0 : Math.min(W - 2 * M, H - 2 * M);
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   views[panel] = {s: s, left: cx - W / (2 * s), top: cy + H / (2 * s)};
 }
@@ -456,6 +460,8 @@ function showDrive() {
   else slider.value = String(v);
 }
 
+const DEAD = "This posture cannot be assembled (or is at a dead center, " +
+  "where the construction has no clean answer): drag back.";
 function redraw(refit) {
   // a cam's equivalent linkage holds at the file's cam angle only (Sec. 4.7; live_cams.py)
   const held = D.cam && !D.turn && drive !== drive0;
@@ -464,7 +470,10 @@ function redraw(refit) {
   const ok = res !== null;
   if (ok) good = res;
   const r = ok ? res : good;
-  if (r === null) return;
+  if (r === null) {  // not even the file's posture (a dead point): said so, drawn nothing
+    status.textContent = (construction.why && construction.why()) || DEAD;
+    return;
+  }
   cycle();
   ics = centersOf(r);
   curv = D.curvature ? gkCurvature(D.curvature, r) : null;
@@ -485,9 +494,8 @@ function redraw(refit) {
   // a cam's angle and curvature: a note; an undercut profile stays a warning
   status.classList.toggle("gk-note", ok && !held && camSays.indexOf("undercut") < 0);
   status.textContent = (held ? D.cam.why + (ok ? "" : " ") : "") + (ok ? camSays : why ||
-    (turned && turned.why) || ((camSays ? camSays + " " : "") +
-    "This posture cannot be assembled (or is at a dead center, " +
-    "where the construction has no clean answer): drag back."));
+    (turned && turned.why) || (construction.why && construction.why()) ||
+    ((camSays ? camSays + " " : "") + DEAD));
   showDrive();
 }
 

@@ -82,6 +82,7 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
     from graphkin.kinematics.analytic.rates import _singular_threshold
     from graphkin.kinematics.analytic.rolling import _RollingCircle
     from graphkin.kinematics.analytic.system import _System
+    from graphkin.render.live_newton_polygons import POLYGONS_JS, newton_polygons
     from graphkin.tolerance import DEFAULT_TOL
 
     eqs0 = _System(mech, DEFAULT_TOL)
@@ -130,9 +131,19 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "size": float(eqs.size), "march": [MARCH_ANGLE, MARCH_LENGTH], "jump": JUMP,
         "singular": _singular_threshold(DEFAULT_TOL), "phases": phases,
     }
-    js = JS_RUNTIME + rows.source + f"const GKN = {_json(gkn)};\n" + NEWTON_JS
-    hidden = set(frame)
     why = _refused(mech)
+    extra = ""
+    got = newton_polygons(mech) if rated else None
+    pitch: list[dict[str, str]] = []
+    if got is not None:  # constructed at Newton's posture: drawn, not refused
+        poly, extra = got
+        pitch = poly.pop("pitch")
+        gkn["polygons"] = {**poly, "why": POLYGONS_WHY}
+        why.pop("velocity", None)
+        why.pop("acceleration", None)
+    js = (JS_RUNTIME + rows.source + extra + POLYGONS_JS * bool(extra)
+          + f"const GKN = {_json(gkn)};\n" + NEWTON_JS)
+    hidden = set(frame)
     data: dict[str, Any] = {
         "K": [v for _, v in rows.slots],
         "links": {lid: list(lk.points) for lid, lk in mech.links.items()},
@@ -145,13 +156,25 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         "assembly": [n for lid, lk in mech.links.items() if lid != FRAME
                      for n in lk.points if n not in hidden],
         "newton": True,
-        "refused": why,
         # the curvature panel says why, in one line, as on every other page without one
         "curvature": {"why": "the curvature constructions start from the velocity and "
                              "acceleration polygons, which this page does not redraw (Newton's "
-                             "method solves the mechanism, not a construction)"},
+                             "method solves the mechanism, not a construction)" if why else
+                             "the curvature constructions are not written out from a "
+                             "posture Newton's method finds (at the file's posture: graphkin "
+                             "draw -d curvature)"},
     }
+    if why:
+        data["refused"] = why
+    if pitch:
+        data["pitch"] = pitch
     return data, js
+
+
+#: The one line of a posture Newton's method finds whose polygons have no construction.
+POLYGONS_WHY = ("This posture is found (Newton's method) but its velocity and acceleration "
+                "polygons have no clean construction here (two of their lines are parallel: "
+                "a toggle of the coupler and the wheel): drag back.")
 
 
 def _path_points(mech: Mechanism) -> list[tuple[str, str, tuple[float, float]]]:
@@ -393,6 +416,7 @@ function gkNewtonValues(s, qd, qdd) {
   return out;
 }
 function construction(I, K) {
+  gkWhy = "";
   const V = GKN.drives.map((d, i) => (I[d.label] !== undefined ? I[d.label] : GKN.values[i]));
   const s = gkCycle ? gkCycleState(V, K) : gkMarch(gkNState, V, K)[0];
   if (s === null) return null;
@@ -403,8 +427,18 @@ function construction(I, K) {
     [qd, qdd] = got;
   }
   if (!gkCycle) gkNState = s;
-  return gkNewtonValues(s, qd, qdd);
+  const out = gkNewtonValues(s, qd, qdd);
+  // the polygons constructed at Newton's posture (render/live_newton_polygons.py)
+  if (qd && GKN.polygons) {
+    const got = gkNewtonPolygons(GKN.polygons, out);
+    if (got === null) gkWhy = GKN.polygons.why;
+    return got;
+  }
+  return out;
 }
+let gkWhy = "";
+// why the last call returned null, when the posture was found but not its polygons
+construction.why = () => gkWhy;
 construction.mark = () => {
   gkCycle = {mark: gkNState, fwd: gkNState, back: gkNState, floor: -Infinity};
   return gkNState;

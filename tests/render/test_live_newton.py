@@ -37,8 +37,16 @@ NEWTON = ["gallery/mechanisms/fig3_18_rolling_wheel.toml",
 
 
 
-def _same_as_solve(browser, tmp_path: Path) -> dict:
-    """Positions, velocities and accelerations of the page against solve of its saved file."""
+def _said_why(status: str) -> bool:
+    """The page's one line for a posture it cannot show: not assembled, or no polygons."""
+    return "cannot be assembled" in status or "polygons have no clean construction" in status
+
+
+def _same_as_solve(browser, tmp_path: Path, wheel: bool = False) -> dict:
+    """Positions, velocities and accelerations of the page against solve of its saved file.
+
+    ``wheel``: Example 3.9's wheel, whose polygons the page constructs at Newton's posture.
+    """
     r = browser.js("window.graphkinLive.state()")["result"]
     assert r is not None
     saved = tmp_path / "saved.toml"
@@ -58,6 +66,22 @@ def _same_as_solve(browser, tmp_path: Path) -> dict:
         for lid in mech.links:
             np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
                                        atol=REL * (1 + abs(sol.omega(lid))))
+            np.testing.assert_allclose(r[f"α{lid}"], sol.alpha(lid), rtol=0,
+                                       atol=REL * (1 + abs(sol.alpha(lid))))
+        if wheel:
+            # the saved file's polygons are constructed ("Solved by the graphic
+            # constructions"), and so are the page's: the wheel's contact point c'4 is the
+            # construction's own image (Eq. 4.19); on straight ground it is ω4² ρ from C
+            # toward the center G (a_G = -α ρ along the ground cancels α × R_CG)
+            assert sol.method == "construction"
+            lab = "a(rolling[0]:C@4)"
+            ca = np.asarray(r[lab]) - np.asarray(r["o_a"])
+            acc = sol.values["acceleration"]
+            np.testing.assert_allclose(ca, np.asarray(acc[lab])[:2] - np.asarray(acc["o_a"])[:2],
+                                       rtol=0, atol=REL * s)
+            g, w = np.asarray(r["G"]), float(r["ω4"])
+            c = np.array([g[0], 0.0])  # the ground is the line y = 0 in both files
+            np.testing.assert_allclose(ca, w * w * (g - c), rtol=0, atol=REL * s)
     return r
 
 
@@ -66,27 +90,47 @@ def test_random_drags_equal_solve_of_the_saved_file(browser, tmp_path, name):
     path = ROOT / name
     browser.open(_page(tmp_path, path))
     assert browser.errors() == []
-    _same_as_solve(browser, tmp_path)
-    # the panels Python does not draw say why, in Python's words
+    _same_as_solve(browser, tmp_path, wheel=True)
+    # the wheel's polygons are constructed at Newton's posture (live_newton_polygons.py):
+    # drawn, none refused, with the contact's images lettered as in Fig. 3.18
     why = browser.js("[].map.call(document.querySelectorAll('.gk-refused'),"
                      " function (e) { return e.textContent; })")
-    assert len(why) == 2 and all(w.startswith("no ") for w in why)
+    assert why == []
+    for panel in ("velocity", "acceleration"):
+        shown = browser.js(f"getComputedStyle(document.getElementById('gk-{panel}')"
+                           ".parentNode).display")
+        assert shown != "none"
+    pitch = browser.js("[].map.call(document.querySelectorAll('.gk-pitch'),"
+                       " function (e) { return e.textContent; })")
+    assert "c₄ = c₁" in pitch and "c′₄" in pitch
     rng = np.random.default_rng(zlib.crc32(name.encode()))
     answered = 0
     for step in rng.uniform(-1.2, 1.2, size=4):  # radians of the drive, from where it is
         d = browser.js("window.graphkinLive.state()")["drive"]
         r = browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})")
         if r is None:  # cannot be assembled there: said so, never NaN
-            assert "cannot be assembled" in browser.js(
-                "document.getElementById('gk-status').textContent")
+            assert _said_why(browser.js("document.getElementById('gk-status').textContent"))
             body = browser.js("document.body.innerText")
             assert "NaN" not in body and "Infinity" not in body
             browser.js(f"window.graphkinLive.setDrive({d!r})")
             continue
-        _same_as_solve(browser, tmp_path)
+        _same_as_solve(browser, tmp_path, wheel=True)
         answered += 1
     assert answered >= 1
     assert browser.errors() == []
+
+
+def test_a_posture_without_a_polygon_construction_is_null_not_nan(browser, tmp_path):
+    # the polygons read the posture's points only: with the coupler's pin B moved onto A
+    # (R_BA = 0, no direction for V_BA ⊥ R_BA, Sec. 3.4) the construction has no clean
+    # answer: null, and the page's one line for it names the polygons
+    browser.open(_page(tmp_path, ROOT / "examples/ex3_9_rolling_wheel.toml"))
+    got = browser.js("(function () { var r = window.graphkinLive.state().result;"
+                     " var out = Object.assign({}, r, {B: r.A});"
+                     " return [gkNewtonPolygons(GKN.polygons, Object.assign({}, r)) !== null,"
+                     " gkNewtonPolygons(GKN.polygons, out), GKN.polygons.why]; })()")
+    assert got[0] is True and got[1] is None
+    assert "polygons have no clean construction" in got[2] and "NaN" not in got[2]
 
 
 def test_the_wheel_rolls_its_travel(browser, tmp_path):
@@ -121,7 +165,7 @@ def test_dragging_a_pivot_of_the_rolling_wheel(browser, tmp_path):
                      button="left", buttons=1)
     browser.send("Input.dispatchMouseEvent", type="mouseReleased", x=x0 + 12, y=y0 - 8,
                  button="left", clickCount=1)
-    r = _same_as_solve(browser, tmp_path)
+    r = _same_as_solve(browser, tmp_path, wheel=True)
     saved = load_toml(tmp_path / "saved.toml")
     assert saved["links"]["1"]["O2"] != [0, 0]
     assert r["O2"] == saved["links"]["1"]["O2"]
@@ -196,8 +240,7 @@ def test_random_mechanisms_and_drags_equal_the_sweep(browser, tmp_path_factory, 
         d = browser.js("window.graphkinLive.state()")["drive"]
         r = browser.js(f"window.graphkinLive.setDrive({d + step!r})")
         if r is None:
-            assert "cannot be assembled" in browser.js(
-                "document.getElementById('gk-status').textContent")
+            assert _said_why(browser.js("document.getElementById('gk-status').textContent"))
             browser.js(f"window.graphkinLive.setDrive({d!r})")
             continue
         done.append(d + step)
@@ -274,3 +317,69 @@ def test_the_instant_centers_follow_newtons_posture(browser, tmp_path, name):
             assert abs(got[2]) < 1e-9 * max(abs(got[0]), abs(got[1]))
             assert abs(got[0] * want[1] - got[1] * want[0]) < 1e-9, lab
     assert browser.errors() == []
+
+
+# every Newton page whose file's posture has its polygons by construction (the wheel's above)
+# (the rack under a driven pinion is saved as drawn, not where the pinion rolled it: its
+# positions are not the saved file's, see docs/how-to/live.md)
+CONSTRUCTED_AT_NEWTON = ["tests/data/hostile/point_drive_planetary.toml",
+                         "tests/data/inline/analytic-cam.toml"]
+
+
+@pytest.mark.parametrize("name", CONSTRUCTED_AT_NEWTON)
+def test_polygons_at_newtons_posture_equal_solve(browser, tmp_path, name):
+    # drawn (no panel refused), and after drags of the drive equal to solve of the saved file
+    browser.open(_page(tmp_path, ROOT / name))
+    assert browser.errors() == []
+    assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
+    _same_as_solve(browser, tmp_path)
+    rng = np.random.default_rng(zlib.crc32(name.encode()))
+    for step in rng.uniform(-0.6, 0.6, size=3):
+        d = browser.js("window.graphkinLive.state()")["drive"]
+        r = browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})")
+        if r is None:
+            body = browser.js("document.body.innerText")
+            assert "NaN" not in body and "Infinity" not in body
+            browser.js(f"window.graphkinLive.setDrive({d!r})")
+            continue
+        _same_as_solve(browser, tmp_path)
+    assert browser.errors() == []
+
+
+def test_a_dead_point_file_says_so_in_one_line(browser, tmp_path):
+    # Example 3.9 at its dead point (A, B and the contact C in line, Sec. 3.5): Newton's
+    # posture has no rates and the polygons' ⊥BA and ⊥BC are one line: nothing drawn, one
+    # line said, never NaN
+    browser.open(_page(tmp_path, ROOT / "tests/data/rolling/wheel_dead_point.toml"))
+    assert browser.errors() == []
+    assert browser.js("window.graphkinLive.state()")["result"] is None
+    said = browser.js("document.getElementById('gk-status').textContent")
+    assert "dead center" in said and "\n" not in said
+    body = browser.js("document.body.innerText")
+    assert "NaN" not in body and "Infinity" not in body
+
+
+def test_a_subnormal_speed_draws_no_infinite_polygon(browser, tmp_path):
+    # found by the random Scotch yokes: ω2 = 2.2e-313 rad/s puts every velocity image within
+    # 1e-313 of the pole; the panel's scale (its size over that extent) overflowed to
+    # Infinity and the links' image outlines had "-Infinity" points (a console error)
+    from graphkin.mechanisms import from_dict
+
+    data = {"units": {"length": "m"},
+            "links": {"1": {"O2": [0.72, 0.0], "G0": [0.76, -1.05], "G1": [1.76, -1.01]},
+                      "2": {"O2": [0.0, 0.0], "A": [0.57, 0.0]}, "3": {"A": [0.0, 0.0]},
+                      "4": {"F": [0.0, 0.0], "S0": [0.125, 0.546], "S1": [-0.193, 1.494]}},
+            "sliders": [{"link": 3, "on": 4, "point": "A", "line": ["S0", "S1"]},
+                        {"link": 4, "on": 1, "point": "F", "line": ["G0", "G1"]}],
+            "drive": {"link": 2, "angle": 38.5, "omega": 2.2250738585e-313, "alpha": -48.0},
+            "assembly": {"F": [1.38, -1.02]}}
+    page = tmp_path / "yoke.html"
+    page.write_text(live_html(from_dict(data, source="yoke"), data, "yoke.toml"),
+                    encoding="utf-8")
+    browser.events = []
+    browser.open(page)
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    browser.js(f"window.graphkinLive.setDrive({d + 0.8!r})")
+    assert browser.errors() == []
+    svg = browser.js("document.getElementById('gk-velocity').innerHTML")
+    assert "Infinity" not in svg and "NaN" not in svg
