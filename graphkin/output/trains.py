@@ -142,7 +142,8 @@ def mechanism_train_json(sol: Any, units: Any = None) -> dict[str, Any] | None:
     the formula method and the book's table, Secs. 7.15-7.16) is set beside
     each link's ω from the rolling constructions (``kinematics``), with their
     difference.  None when the mechanism is not a gear train
-    (:func:`graphkin.gears.mechanism_train.train_of`) or has no rates.
+    (:func:`graphkin.gears.mechanism_train.train_of`) or has no rates, or none at
+    this posture (a dead point: the report says so).
     Angular velocities in the report's unit (``units``, an
     :class:`~graphkin.output.units.OutputUnits`; rad/s without one).
     """
@@ -151,6 +152,8 @@ def mechanism_train_json(sol: Any, units: Any = None) -> dict[str, Any] | None:
     mech = sol.mechanism
     if not mech.has_rates:
         return None
+    if any(sol.links[d.link].omega is None for d in mech.drives):
+        return None      # no rates at this posture (a dead point: said by the report)
     k, unit = _omega_unit(units)
     given = {d.link: float(sol.links[d.link].omega) * k for d in mech.drives}
     train = train_of(mech, given, unit)

@@ -224,3 +224,16 @@ def test_an_angle_for_a_contact_that_places_a_travel_is_refused() -> None:
     with pytest.raises(graphkin.GraphkinError, match="places the slider 3 by its travel") as e:
         graphkin.loads(text).solve()
     assert getattr(e.value, "key", None) == "rolling[0].angle"
+
+
+@pytest.mark.parametrize("json", [False, True])
+def test_solve_at_a_dead_point_reports_the_posture(json: bool,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    # Example 3.9 at its dead point (above): no rates, so no gear-train section to set beside
+    # them; `solve` printed "cannot handle this input: TypeError" from the train's check
+    from graphkin.cli import main
+
+    assert main(["solve", str(DATA / "wheel_dead_point.toml"), *(["--json"] if json else [])]) == 0
+    out = capsys.readouterr().out
+    assert "toggle or dead-center" in out
+    assert "R_B = (141.421, 150) mm" in out or json
