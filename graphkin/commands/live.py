@@ -31,11 +31,21 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.files import load_toml
+    from graphkin.keys import design_file
     from graphkin.render.live import live_html
 
-    mech = graphkin.load(args.file)
-    # a cam mechanism's page is held at the file's cam angle (render/live_cams.py, Sec. 4.7)
-    text = live_html(mech, load_toml(args.file), str(args.file))
+    data = load_toml(args.file)
+    kind = design_file(data)
+    if kind is not None and kind[1] == "cam":
+        # a cam file: the mechanism it means (cam 2 on O2, follower 4), its turning page
+        from graphkin.cams.as_mechanism import cam_mechanism
+        from graphkin.cams.parse import load_cam
+
+        data = cam_mechanism(load_cam(args.file).cam, args.file)
+        mech = graphkin.from_dict(data, source=str(args.file))
+    else:
+        mech = graphkin.load(args.file)
+    text = live_html(mech, data, str(args.file))
     out = write_text(args.output, text, "--output")
     print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
     return 0
