@@ -43,9 +43,27 @@ def run(args: argparse.Namespace) -> int:
 
         data = cam_mechanism(load_cam(args.file).cam, args.file)
         mech = graphkin.from_dict(data, source=str(args.file))
+    elif kind is not None and kind[1] == "gears":
+        data = _gear_mechanism(args.file)
+        mech = graphkin.from_dict(data, source=str(args.file))
     else:
         mech = graphkin.load(args.file)
     text = live_html(mech, data, str(args.file))
     out = write_text(args.output, text, "--output")
     print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
     return 0
+
+
+def _gear_mechanism(path: str) -> dict:
+    """A pair in mesh as its two gears rolling on fixed centers; a train file refused."""
+    from graphkin.errors import InputError
+    from graphkin.gears.as_mechanism import pair_mechanism
+    from graphkin.gears.file import gear_kind, load
+
+    found = gear_kind(path)
+    if found is None or found[0] != "pair":
+        raise InputError("no live page for a gear-train file: it gives tooth numbers or radii, not "
+                         "where its gears stand; write the train as a mechanism with "
+                         "[[rolling]] circles (docs/formats/mechanism.md) and 'graphkin live' "
+                         "that", key="mesh", file=path)
+    return pair_mechanism(load(path), path)
