@@ -3,7 +3,9 @@
 Write one self-contained HTML file (no network) where the mechanism's posture, velocity and
 acceleration constructions are re-solved in the page on every pointer move: drag the crank's
 moving pin, a frame pivot or the drive slider; a posture that cannot be assembled is shown as
-such; undo, reset, and save the edited mechanism as a TOML file.
+such; undo, reset, and save the edited mechanism as a TOML file.  A cam file opens as its
+cam turning with its follower, a gear pair file as its gears rolling on fixed centers, a
+synthesis file as the linkage ``graphkin synthesize -o`` writes (docs/how-to/live.md).
 """
 
 from __future__ import annotations
@@ -46,6 +48,18 @@ def run(args: argparse.Namespace) -> int:
     elif kind is not None and kind[1] == "gears":
         data = _gear_mechanism(args.file)
         mech = graphkin.from_dict(data, source=str(args.file))
+    elif kind is not None and kind[1] == "synthesize":
+        # a synthesis file: the mechanism 'graphkin synthesize FILE -o' writes (the first
+        # candidate passing every check, else the first), parsed from that very text
+        from graphkin.files import parse_toml
+        from graphkin.synthesis.run import synthesize
+        from graphkin.synthesis.spec import load_spec
+
+        data = parse_toml(synthesize(load_spec(args.file)).mechanism_toml(), str(args.file))
+        mech = graphkin.from_dict(data, source=str(args.file))
+        print(f"{args.file}: the page of the synthesized linkage 'graphkin synthesize -o' "
+              "writes (the first candidate passing every check, else the first)",
+              file=sys.stderr)
     else:
         mech = graphkin.load(args.file)
     text = live_html(mech, data, str(args.file))
