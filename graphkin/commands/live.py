@@ -3,7 +3,9 @@
 Write one self-contained HTML file (no network) where the mechanism's posture, velocity and
 acceleration constructions are re-solved in the page on every pointer move: drag the crank's
 moving pin, a frame pivot or the drive slider; a posture that cannot be assembled is shown as
-such; undo, reset, and save the edited mechanism as a TOML file.
+such; undo, reset, and save the edited mechanism as a TOML file.  A cam file opens as its
+cam turning with its follower, a gear pair file as its gears rolling on fixed centers, a
+synthesis file as the linkage ``graphkin synthesize -o`` writes (docs/how-to/live.md).
 """
 
 from __future__ import annotations
@@ -31,11 +33,51 @@ def run(args: argparse.Namespace) -> int:
     """Run the sub-command."""
     import graphkin
     from graphkin.files import load_toml
+    from graphkin.keys import design_file
     from graphkin.render.live import live_html
 
-    mech = graphkin.load(args.file)
-    # a cam mechanism's page is held at the file's cam angle (render/live_cams.py, Sec. 4.7)
-    text = live_html(mech, load_toml(args.file), str(args.file))
+    data = load_toml(args.file)
+    kind = design_file(data)
+    if kind is not None and kind[1] == "cam":
+        # a cam file: the mechanism it means (cam 2 on O2, follower 4), its turning page
+        from graphkin.cams.as_mechanism import cam_mechanism
+        from graphkin.cams.parse import load_cam
+
+        data = cam_mechanism(load_cam(args.file).cam, args.file)
+        mech = graphkin.from_dict(data, source=str(args.file))
+    elif kind is not None and kind[1] == "gears":
+        data = _gear_mechanism(args.file)
+        mech = graphkin.from_dict(data, source=str(args.file))
+    elif kind is not None and kind[1] == "synthesize":
+        # a synthesis file: the mechanism 'graphkin synthesize FILE -o' writes (the first
+        # candidate passing every check, else the first), parsed from that very text
+        from graphkin.files import parse_toml
+        from graphkin.synthesis.run import synthesize
+        from graphkin.synthesis.spec import load_spec
+
+        data = parse_toml(synthesize(load_spec(args.file)).mechanism_toml(), str(args.file))
+        mech = graphkin.from_dict(data, source=str(args.file))
+        print(f"{args.file}: the page of the synthesized linkage 'graphkin synthesize -o' "
+              "writes (the first candidate passing every check, else the first)",
+              file=sys.stderr)
+    else:
+        mech = graphkin.load(args.file)
+    text = live_html(mech, data, str(args.file))
     out = write_text(args.output, text, "--output")
     print(f"wrote {out} ({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
     return 0
+
+
+def _gear_mechanism(path: str) -> dict:
+    """A pair in mesh as its two gears rolling on fixed centers; a train file refused."""
+    from graphkin.errors import InputError
+    from graphkin.gears.as_mechanism import pair_mechanism
+    from graphkin.gears.file import gear_kind, load
+
+    found = gear_kind(path)
+    if found is None or found[0] != "pair":
+        raise InputError("no live page for a gear-train file: it gives tooth numbers or radii, not "
+                         "where its gears stand; write the train as a mechanism with "
+                         "[[rolling]] circles (docs/formats/mechanism.md) and 'graphkin live' "
+                         "that", key="mesh", file=path)
+    return pair_mechanism(load(path), path)

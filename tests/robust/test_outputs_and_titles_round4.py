@@ -108,7 +108,8 @@ def test_a_hostile_title_through_the_design_commands(tmp_path: Path) -> None:
     for p in f.values():
         _titled(p)
     t = tmp_path
-    for argv in (["live", "{m}", "-o", "{t}/l.html"], ["cam", "{c}"], ["cam", "{c}", "--json"],
+    for argv in (["live", "{m}", "-o", "{t}/l.html"], ["live", "{c}", "-o", "{t}/lc.html"],
+                 ["cam", "{c}"], ["cam", "{c}", "--json"],
                  ["cam", "{c}", "-o", "{t}/c.svg"], ["gears", "{g}"], ["gears", "{g}", "--json"],
                  ["steps", "{g}", "-o", "{t}/g.html"],
                  ["synthesize", "{s}", "--json"],
@@ -116,7 +117,7 @@ def test_a_hostile_title_through_the_design_commands(tmp_path: Path) -> None:
         rc, out, err = run([a.format(t=t, **f) for a in argv])
         assert_clean(rc, out, err)
         assert rc == 0, (argv, err)
-    for page in ("l.html", "g.html"):
+    for page in ("l.html", "lc.html", "g.html"):
         html = (t / page).read_text(encoding="utf-8")
         assert "<!--<script>" not in html and "</script> ]]>" not in html
     # the mechanism file synthesize writes is TOML again, with the very title
@@ -145,7 +146,8 @@ def test_the_output_check_is_in_the_cli_for_every_command() -> None:
 
 
 DESIGN = sorted((ROOT / "tests" / "data" / "hostile" / "design").glob("*.toml"))
-DESIGN_COMMANDS = {"cam": [["cam"], ["cam", "--json"], ["cam", "-o", "{t}/c.svg"]],
+DESIGN_COMMANDS = {"cam": [["cam"], ["cam", "--json"], ["cam", "-o", "{t}/c.svg"],
+                           ["live", "-o", "{t}/l.html"]],   # its cam mechanism's page
                    "gears": [["gears"], ["gears", "--json"]],  # steps: in the title test
                    "synthesis": [["synthesize"], ["synthesize", "--json"],
                                  ["synthesize", "-o", "{t}/m.toml", "--draw", "{t}/s.svg"]]}
