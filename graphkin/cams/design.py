@@ -21,6 +21,7 @@ import numpy as np
 
 from graphkin.cams.analytic import profile
 from graphkin.cams.model import Cam, FollowerKind
+from graphkin.cams.motions import Motion
 from graphkin.cams.program import TWO_PI, Program
 
 __all__ = ["Extreme", "Undercut", "Checks", "check", "extreme", "joints", "min_prime_for_pressure",
@@ -77,10 +78,15 @@ def joints(program: Program) -> Array:
     At a joint where y'' (say) jumps, the extreme of a quantity built on it is
     a one-sided limit, which neither the grid nor a search between grid points
     reaches; the angle just before the joint (1e-12 rad: the end of the
-    segment before) and the joint itself (the start of the next) do.
+    segment before) and the joint itself (the start of the next) do.  Inside a
+    segment, parabolic motion's y'' jumps at its midpoint too (Eq. 6.5 to 6.6,
+    Fig. 6.12: +4L/β² to −4L/β²); it is a joint in this sense.
     """
-    st = program.starts
-    return np.mod(np.concatenate([st, st - 1e-12]), TWO_PI)
+    st = np.asarray(program.starts, dtype=float)
+    mid = np.array([a + 0.5 * s.angle for a, s in zip(st, program.segments, strict=True)
+                    if s.motion is Motion.PARABOLIC], dtype=float)
+    at = np.concatenate([st, mid])
+    return np.mod(np.concatenate([at, at - 1e-12]), TWO_PI)
 
 
 def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,

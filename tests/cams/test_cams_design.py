@@ -7,6 +7,7 @@ import dataclasses
 import math
 
 import numpy as np
+import pytest
 from cam_strategies import programs
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -178,3 +179,16 @@ def test_the_least_prime_circle_for_a_roller_keeps_it_from_undercutting(prog, rr
     r0 = min_prime_for_curvature(cam, 0.0)
     above = dataclasses.replace(cam, prime=r0 * (1 + 1e-6))
     assert undercuts(above) == []
+
+
+def test_the_parabolic_midpoint_jump_sets_the_flat_faces_least_prime_circle():
+    """A parabolic return of L = 1 over β = 60° after a rise to Y = 1: y'' jumps at its
+    midpoint from -4L/β² to +4L/β² (Eqs. 6.5-6.6, Fig. 6.12), where Y = 1/2.  The flat face's
+    ρ = R0 + Y + y'' (Eq. 6.27) is least just before it: R0 = 4/β² - 1/2 for ρmin = 0
+    (found on CI by the random programs above: the midpoint was no candidate)."""
+    b = math.pi / 3
+    prog = Program((Segment(Motion.DWELL, 0.0, b), Segment(Motion.HARMONIC, 1.0, 2 * b),
+                    Segment(Motion.DWELL, 0.0, b), Segment(Motion.PARABOLIC, -1.0, b),
+                    Segment(Motion.DWELL, 0.0, b)))
+    cam = Cam(prog, 1.0, Follower(FollowerKind.FLAT_FACE))
+    assert min_prime_for_curvature(cam, 0.0) == pytest.approx(4 / b**2 - 0.5, rel=1e-9)
