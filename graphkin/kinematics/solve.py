@@ -186,6 +186,14 @@ def solve(mech: Mechanism, tol: Tolerance | None = None,
     AssemblyError
         The mechanism cannot be assembled at the file's drive.
     """
+    sol = _solve(mech, tol, branches)
+    if mech.notes:              # what the file says that the report notes (a zero length)
+        sol.notes = [*mech.notes, *sol.notes]
+    return sol
+
+
+def _solve(mech: Mechanism, tol: Tolerance | None,
+           branches: dict[str, str] | None) -> Solution:
     try:
         pc = build_posture(mech, tol, branches)
     except NotDecomposable as exc:

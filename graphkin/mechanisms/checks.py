@@ -6,10 +6,13 @@ Zero lengths (Sec. 1.4)
 A link is a rigid body that carries its joints at fixed distances (Sec. 1.4,
 "links"); a binary link whose two pins stand at one place has no length: it
 transmits no motion (a crank of zero length turns, by its drive, and nothing
-moves), and it is the same as one pin joining the links it would join.  Such a
-file is a slip (``B = [0, 0]`` for ``B = [4, 0]``), so it is refused in one line.
+moves), and it is the same as one pin joining the links it would join.  Typed
+by hand it is most often a slip (``B = [0, 0]`` for ``B = [4, 0]``), but it is
+also the book's equivalent linkage of a cam in a dwell (Sec. 4.7), which
+``graphkin cam`` writes; so it is solved and the report notes it in one line
+naming the key (:func:`zero_length_notes`).
 
-What stays allowed, because a zero length there means something to the book's
+What is not noted, because a zero length there means something to the book's
 user (docs/formats/mechanism.md, "Zero lengths"):
 
 * two **frame** pivots at one place: coaxial bearings (an arm turning about the
@@ -55,32 +58,36 @@ def added_points(data: Mapping[str, Any], expanded: Mapping[str, Any]) -> frozen
     return frozenset(_names_of(expanded) - _names_of(data))
 
 
-def check_zero_lengths(mech: Mechanism, fail: Callable[[str | None, str], InputError],
-                       added: frozenset[str] = frozenset()) -> None:
-    """Raise ``fail(key, reason)`` for the first moving link with two pins at one place.
+def zero_length_notes(mech: Mechanism, added: frozenset[str] = frozenset()) -> tuple[str, ...]:
+    """A note for each moving link with two pins at one place (a zero length).
+
+    Such a link moves nothing: a crank of zero length turns by its drive and
+    every other link stands still.  That is what the book's equivalent linkage
+    of a cam in a dwell is (Sec. 4.7: the profile's arc about the cam's pivot,
+    its center of curvature on the pivot), and what ``graphkin cam`` writes for
+    it; typed by hand it is more often a slip (``B = [0, 0]`` for ``B = [4, 0]``).
+    So it is solved, and the report says so in one line naming the key.
 
     Parameters
     ----------
     mech : Mechanism
         The mechanism as read from the file, its ``[[cams]]`` replaced by their
         equivalent linkages.
-    fail : callable
-        The parser's ``fail(key, message)``, which names the file.
     added : frozenset of str, optional
-        Points a ``[[cams]]`` expansion added (the equivalent linkage's pins, Sec. 4.7):
-        a cam's center of curvature at its pivot (a dwell's arc) is a zero length the
-        user never wrote, and is exact.
+        Points a ``[[cams]]`` expansion added (the equivalent linkage's pins): the
+        user never wrote them, and their zero length in a dwell is exact.
 
-    Raises
-    ------
-    InputError
+    Returns
+    -------
+    tuple of str
         ``links.<k>.<P>: pins <Q> and <P> of link <k> are at one place ...``.
 
     References
     ----------
-    Uicker, Pennock & Shigley, 5th ed., Sec. 1.4 (links and joints).
+    Uicker, Pennock & Shigley, 5th ed., Sec. 1.4 (links and joints), Sec. 4.7.
     """
     scale = mech.size
+    out: list[str] = []
     for lid, link in mech.links.items():
         if lid == FRAME:
             continue
@@ -90,11 +97,11 @@ def check_zero_lengths(mech: Mechanism, fail: Callable[[str | None, str], InputE
             for b in joints[i + 1:]:
                 (xa, ya), (xb, yb) = link.points[a], link.points[b]
                 if is_zero(math.hypot(xb - xa, yb - ya), scale):
-                    raise fail(f"links.{lid}.{b}",
-                               f"pins {a} and {b} of link {lid} are at one place: a link "
-                               f"of zero length between its joints moves nothing (give "
-                               f"{b} its place on link {lid}, or join the links by one "
-                               "pin name)")
+                    out.append(f"links.{lid}.{b}: pins {a} and {b} of link {lid} are at one "
+                               f"place: a link of zero length between its joints moves "
+                               f"nothing (a cam's dwell; if not meant, give {b} its place "
+                               f"on link {lid})")
+    return tuple(out)
 
 
 #: The names of a drive's first and second rates in the file, by the drive's kind.

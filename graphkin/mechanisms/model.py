@@ -324,6 +324,9 @@ class Mechanism:
     bodies: tuple[Body, ...] = ()
     """What links look like where the equivalent mechanism does not show it
     (``[[bodies]]``: a cam's disc, a follower's face); drawing only."""
+    notes: tuple[str, ...] = ()
+    """What the file says that the report notes, one line each (a link of zero length:
+    :func:`graphkin.mechanisms.checks.zero_length_notes`)."""
     cams: tuple[Any, ...] = ()
     """Disk cams (``[[cams]]``, :class:`graphkin.cams.joint.CamJoint`), each replaced by its
     equivalent linkage through the centers of curvature at the drive (Sec. 4.7)."""

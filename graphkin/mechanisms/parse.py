@@ -17,7 +17,7 @@ from graphkin.files import parse_toml, read_text
 from graphkin.keys import MECHANISM, check_keys, design_file, nearest, read_units
 from graphkin.mechanisms.bodies import read_bodies
 from graphkin.mechanisms.cam_joint import with_cams
-from graphkin.mechanisms.checks import added_points, check_rates_given, check_zero_lengths
+from graphkin.mechanisms.checks import added_points, check_rates_given, zero_length_notes
 from graphkin.mechanisms.loading import force_fields
 from graphkin.mechanisms.model import (
     FRAME,
@@ -320,7 +320,7 @@ class _Parser:
                          **force_fields(data, self.links, self.unit, self.fail))
         self.check_mobility(mech)
         self.check_range(mech)
-        check_zero_lengths(mech, self.fail, self.added)
+        mech = dataclasses.replace(mech, notes=zero_length_notes(mech, self.added))
         check_rates_given(mech, self.fail)
         if rates is not None and len(mech.drives) != 1:
             raise self.fail("rates", "[rates] fixes one rate: it needs a single input (a "

@@ -1,9 +1,11 @@
-"""A moving link of zero length between two joints is refused; meaningful zero lengths are not.
+"""A moving link of zero length between two joints is noted; meaningful zero lengths are not.
 
 Defect found in the session-7 acceptance audit: a crank with ``B = [0, 0]``
 (pivot and crank pin at one place) was solved and reported ω2 = 10 rad/s while
-every other link stood still.  docs/formats/mechanism.md, "Zero lengths",
-says which zero lengths are meaningful.
+every other link stood still, with nothing said.  It is not refused: the book's
+equivalent linkage of a cam in a dwell (Sec. 4.7) is such a crank, and
+``graphkin cam --equivalent`` writes it.  docs/formats/mechanism.md, "Zero
+lengths", says which zero lengths are meaningful (not noted).
 """
 
 from __future__ import annotations
@@ -25,22 +27,46 @@ ZERO = [
     ("zero crank", FOURBAR.replace("B = [4, 0]", "B = [0, 0]"), "links.2.B"),
     # 1e-12 of the size is round-off of a zero length: the same verdict
     ("crank at round-off", FOURBAR.replace("B = [4, 0]", "B = [1e-12, 0]"), "links.2.B"),
-    ("zero coupler", SLIDER.replace("C = [140, 0]", "C = [0, 0]"), "links.3.C"),
-    ("zero rocker", FOURBAR.replace("C = [11, 0]", "C = [0, 0]"), "links.4.C"),
+]
+# a coupler or rocker of zero length cannot close the loop here: C would have to be at B
+# (55.36 mm from the slider's line) or at D (12.49 in from B, the coupler 18 in long)
+UNASSEMBLED = [
+    ("zero coupler", SLIDER.replace("C = [140, 0]", "C = [0, 0]"), "BC = 0 mm"),
+    ("zero rocker", FOURBAR.replace("C = [11, 0]", "C = [0, 0]"), "DC = 0 in"),
 ]
 
 
 @pytest.mark.parametrize("name,text,key", ZERO, ids=[z[0] for z in ZERO])
-def test_a_zero_length_link_exits_2_naming_file_key_reason(tmp_path, capsys, name, text, key):
+def test_a_zero_length_link_is_noted_naming_the_key(tmp_path, capsys, name, text, key):
+    path = tmp_path / "zero.toml"
+    path.write_text(text)
+    assert main(["solve", str(path)]) == 0
+    out, err = capsys.readouterr()
+    notes = [ln for ln in out.splitlines() if "zero length" in ln]
+    assert len(notes) == 1, out
+    assert notes[0].strip().startswith(f"note: {key}: "), notes
+
+
+@pytest.mark.parametrize("name,text,said", UNASSEMBLED, ids=[z[0] for z in UNASSEMBLED])
+def test_a_zero_link_that_cannot_close_the_loop_says_its_length(tmp_path, capsys, name, text,
+                                                                said):
     path = tmp_path / "zero.toml"
     path.write_text(text)
     assert main(["solve", str(path)]) == 2
     out, err = capsys.readouterr()
-    assert out == ""
-    lines = err.strip().splitlines()
-    assert len(lines) == 1, err
-    assert f"{path}: {key}: " in lines[0]
-    assert "zero length" in lines[0]
+    assert out == "" and len(err.strip().splitlines()) == 1 and said in err, err
+
+
+def test_a_zero_crank_moves_nothing(tmp_path) -> None:
+    """Crank O2-B of zero length: V_B = V_A + ω2 × 0 = 0, so the four-bar's B, and with it
+    links 3 and 4, stand still whatever ω2 (Sec. 3.4)."""
+    text = FOURBAR.replace("B = [4, 0]", "B = [0, 0]").replace("angle = 120",
+                                                             "angle = 120\nomega = 10")
+    sol = graphkin.loads(text).solve()
+    assert sol.omega(2) == pytest.approx(10.0)
+    assert sol.omega(3) == pytest.approx(0.0, abs=1e-12)
+    assert sol.omega(4) == pytest.approx(0.0, abs=1e-12)
+    assert any(n.startswith("links.2.B: ") for n in sol.notes)
 
 
 def test_coaxial_frame_pivots_are_meaningful():
@@ -82,6 +108,7 @@ def test_a_cams_dwell_is_not_a_zero_length_slip(tmp_path) -> None:
         path = tmp_path / "mech.toml"
         path.write_text(text.replace("angle = 230", f"angle = {angle}"))
         mech = graphkin.load(path)                      # no InputError at any angle
+        assert mech.notes == ()                         # and no note: the user wrote no K4
         k4 = np.subtract(mech.links["2"].points["K4"], mech.links["2"].points["O2"])
         if float(np.hypot(*k4)) < 1e-9 * mech.size:
             dwells += 1
