@@ -405,6 +405,9 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     the other strokes' tips run on over its ink).
     """
     lines = list(idx)
+    # the strokes' own ends there: ``guess`` is one of them, and may be the one run on
+    # farthest past the vertex, so a line's crossing is looked for near each
+    tips = [min(segs[j], key=lambda e: float(np.hypot(*(e - guess)))) for j in idx] or [guess]
     for i, (p, q) in enumerate(segs):
         if i in lines:
             continue
@@ -415,7 +418,7 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         # (an end run on over its ink is up to 3 mm past it)
         at = [guess] + ([_cross(p, n, segs[j]) for j in idx] if length >= _LONG_MM else [])
         for x in at:
-            if x is None or float(np.hypot(*(x - guess))) >= 3.0:
+            if x is None or min(float(np.hypot(*(x - e))) for e in tips) >= 3.0:
                 continue
             t = float((x - p) @ u)
             if 1.0 < t < length - 1.0 and abs(float((x - p) @ n)) < 1.0:

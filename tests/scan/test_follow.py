@@ -161,6 +161,10 @@ def test_random_four_bars_follow_through_from_a_wrong_crank_image(
     # one: when another line end there is taken for it (the reading rate of the follows
     # case in docs/checking.md), where the rest are looked for is not where they were drawn
     assume("A" in read.points and np.hypot(*(read.points["A"] - images["A"])) < 0.5)
+    # a 10 % wrong crank image is only 1-2 mm wrong when the crank's image is short; an
+    # image read within 2 mm of its right place may be only misread, so nothing is marked
+    # as following from it (scan.read._untold): the follow-through needs a well off it
+    assume(np.hypot(*(read.points["A"] - exact["A"])) >= 2.0)
     _check_follows(rep, images, exact, "A", diagram[0].upper())
 
 

@@ -158,3 +158,20 @@ def test_thin_velocity_triangles_are_read_where_drawn(rm: Any, seed: int) -> Non
         assert n in read.points, n
         assert float(np.hypot(*(read.points[n] - images[n]))) < 1.0, (
             n, read.points[n] - images[n])
+
+
+def test_a_line_through_the_vertex_counts_when_the_end_chosen_runs_on_past_it() -> None:
+    # the segments read from a hand-drawn acceleration polygon (a random four-bar, photo
+    # seed 56 at the mild level, test_follow.py): b drawn at (77.35, 96.74), where the
+    # test's own construction put it; e-b's stroke ends 1.4 mm past b, a-b's 3.2 mm past it
+    # (run on over the others' ink), the pole's vector 1.5 mm short of it
+    segs = np.array([[[31.31, 122.37], [103.03, 101.65]], [[47.46, 101.31], [103.02, 101.02]],
+                     [[31.33, 122.36], [78.67, 96.10]], [[80.54, 96.23], [47.50, 101.16]],
+                     [[48.49, 100.60], [31.49, 122.56]], [[103.02, 100.70], [75.83, 96.56]]])
+    drawn, pole = np.array([77.35, 96.74]), np.array([105.0, 101.1])
+    # from either end of the two strokes ending there: the vector from the pole crosses
+    # their lines 1.3 mm from e-b's end and 3.2 mm from a-b's; it was left out when the
+    # end chosen was a-b's, and b read 0.63 mm off along the lines 20° apart
+    for guess in (segs[2, 1], segs[3, 0]):
+        got = vertex_at(segs, [2, 3], guess, pole)
+        assert np.hypot(*(got - drawn)) < 0.3, (guess, got)
