@@ -54,7 +54,8 @@ def cam_mechanism(cam: Cam, path: str | Path) -> dict[str, Any]:
     ------
     InputError
         ``follower.kind``: a translating flat face, whose equivalent linkage (a
-        Scotch yoke, Example 4.7) is solved by Newton's method and has no turning page.
+        Scotch yoke, Example 4.7) does not turn on the page yet: its slot's offset
+        is not moved with the cam angle.
 
     Examples
     --------
@@ -67,8 +68,9 @@ def cam_mechanism(cam: Cam, path: str | Path) -> dict[str, Any]:
     src = str(path)
     if f.kind is FollowerKind.FLAT_FACE:
         raise InputError("no live page for a translating flat-face follower: its equivalent "
-                         "linkage (a Scotch yoke, Sec. 4.7, Example 4.7) is solved by Newton's "
-                         "method, which would turn the linkage, not the cam; see the cycle "
+                         "linkage (a Scotch yoke, Sec. 4.7, Example 4.7) does not turn on the "
+                         "page yet (its slot's offset is not moved with the cam angle); see the "
+                         "cycle "
                          f"with 'graphkin animate' of a mechanism using it or 'graphkin cam "
                          f"{Path(src).name}'", key="follower.kind", file=src)
     sign = 1.0 if cam.sense is Sense.CCW else -1.0

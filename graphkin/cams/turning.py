@@ -28,7 +28,8 @@ A table of displacements (``motion = "table"``) is its natural cubic spline,
 one ``poly`` row of ``cam_program`` per interval between its points.
 
 Not turned (:class:`NotTurned`, with the reason): a translating flat face (its
-equivalent linkage, a slot across a slider, is solved by Newton's method).
+equivalent linkage, a Scotch yoke, is constructed at the file's angle, Sec. 2.8
+case 3, but no step here gives its slot's offset at another angle yet).
 
 References
 ----------
@@ -174,8 +175,8 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
     cam = joint.cam
     f = cam.follower
     if f.kind is FollowerKind.FLAT_FACE:
-        raise NotTurned("a translating flat-face follower's equivalent linkage (a slot across "
-                        "a slider) is solved by Newton's method, with no step to turn")
+        raise NotTurned("a translating flat-face follower's slot (its equivalent linkage's, "
+                        "a Scotch yoke) is not moved with the cam angle on the page yet")
     shift = joint.axis - math.pi / 2
     fl = joint.follower
     names = [f"Θ{fl}", f"Y{fl}", f"y'{fl}", f"y''{fl}"]

@@ -33,8 +33,8 @@ velocity and acceleration images; its branch is checked on ``F<f>a`` (the
 program's foot of the pivot on the face's slot).
 
 Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
-and says why): a translating flat face has no page (Newton's method solves
-it); a cam not on the first drive's link, and a construction whose other
+and says why): a translating flat face (its slot's offset is not moved with the
+cam angle yet); a cam not on the first drive's link, and a construction whose other
 numbers change with the angle (checked here by building the page at other
 angles; the branches the page keeps itself are not counted) are held.
 

@@ -5,7 +5,7 @@ on its guide or about its pivot (graphkin/cams/as_mechanism.py).  Every gallery
 cam file either opens — and after the drive is set and the cam dragged by its
 contact point, the page's values equal ``graphkin solve`` of the mechanism it
 saves, to 1e-9 — or, a translating flat face, is refused in one line naming the
-file and ``follower.kind`` (its linkage is solved by Newton's method).
+file and ``follower.kind`` (its slot's offset does not turn on the page yet).
 """
 
 from __future__ import annotations
