@@ -37,7 +37,7 @@ from graphkin.cams import Cam, FollowerKind, Motion
 from graphkin.cams.analytic import profile
 from graphkin.cams.equivalent import equivalent_linkage
 from graphkin.cams.examples import example_6_6
-from graphkin.cams.turning import NotTurned, TurnSteps, turn_steps
+from graphkin.cams.turning import TurnSteps, turn_steps
 from graphkin.construction.codegen import generate
 from graphkin.construction.jsgen import RUNTIME, generate_js
 from graphkin.errors import InputError
@@ -193,13 +193,50 @@ def test_a_table_segment_is_its_spline(tmp_path) -> None:
             _close(v[lab], ref, 30.0 + abs(float(ref)), f"{lab} (js)")
 
 
-def test_the_kinds_not_expressed_are_refused_with_the_reason(tmp_path) -> None:
-    flat = Path("examples/cams/ex6_3_flat_face.toml").resolve()
-    j = from_dict({"units": "in", "links": {"1": {"O2": [0, 0]}},
-                   "cams": {"link": 2, "follower": 4, "file": str(flat)},
-                   "drive": {"link": 2, "angle": 30}}).cams[0]
-    with pytest.raises(NotTurned, match="flat-face"):
-        turn_steps(j, "θ2")
+@settings(max_examples=30, deadline=None)
+@given(cam=cams(kinds=(FollowerKind.FLAT_FACE,)), axis=st.floats(-180.0, 180.0),
+       o2=st.tuples(st.floats(-50.0, 50.0), st.floats(-50.0, 50.0)),
+       theta2=st.lists(st.floats(-720.0, 720.0), min_size=1, max_size=8))
+def test_a_translating_flat_face_equals_its_linkage(tmp_path_factory, cam, axis, o2,
+                                                    theta2) -> None:
+    # the profile's center of curvature K runs in a slot of the follower at x = −ρ in its own
+    # coordinates (x along the guide; equivalent_linkage, Example 4.7), the slot's start F4a
+    # = T + (−size, −ρ) in the fixed cam frame, the contact and ρ (cams/analytic.profile)
+    assume(_supported(cam))
+    j = _joint(cam, tmp_path_factory.getbasetemp(), axis, o2, 0.0)
+    t = turn_steps(j, "θ2")
+    th2 = np.radians(np.asarray(theta2))
+    theta = cam.s * (th2 - (j.axis - math.pi / 2))
+    assume(_off_the_joints(cam, theta))
+    size = cam.prime + abs(cam.program.lift)
+    k = cam.program.evaluate(theta)
+    pr = profile(cam, theta)
+    assume(bool(np.all(np.abs(pr.rho) < 1e5 * size)))
+    py = _python(t, th2)
+    assert py is not None
+    rot = cmath.exp(1j * (j.axis - math.pi / 2))
+    o = complex(*o2)
+    for i, th in enumerate(theta):
+        eq = equivalent_linkage(cam, float(th))
+        reach = size + abs(float(pr.rho[i]))
+        _close([py["K4.x"][i], py["K4.y"][i]], np.multiply(eq["links"]["2"]["K"], j.scale),
+               reach, "K4")
+        x, h = eq["links"]["4"]["L1"]
+        _close(py["|ρ|4.value"][i], x * j.scale, reach, "x")
+        start = complex(*eq["assembly"]["T"]) + complex(-h, x)
+        start = o + rot * start * j.scale
+        _close([py["T4.x"][i], py["T4.y"][i]], [start.real, start.imag], reach, "F4a")
+        c = o + rot * cmath.exp(1j * cam.s * k.theta[i]) * complex(pr.contact[i]) * j.scale
+        _close([py["C4.x"][i], py["C4.y"][i]], [c.real, c.imag], reach, "C4")
+        _close(py["ρ4.value"][i], pr.rho[i], reach, "ρ")
+    js = _javascript(t, th2)
+    for i, v in enumerate(js):
+        for lab in ("|ρ|4", "ρ4"):
+            ref = py[f"{lab}.value"][i]
+            _close(v[lab], ref, size + abs(float(ref)), f"{lab} (js)")
+        for lab in ("K4", "T4", "C4"):
+            ref = [py[f"{lab}.x"][i], py[f"{lab}.y"][i]]
+            _close(v[lab], ref, size + float(np.abs(ref).max()), f"{lab} (js)")
 
 
 @settings(max_examples=30, deadline=None)

@@ -20,8 +20,7 @@ import math
 from pathlib import Path
 from typing import Any
 
-from graphkin.cams.model import Cam, FollowerKind, Sense
-from graphkin.errors import InputError
+from graphkin.cams.model import Cam, Sense
 
 __all__ = ["START_ANGLE", "cam_mechanism"]
 
@@ -50,12 +49,6 @@ def cam_mechanism(cam: Cam, path: str | Path) -> dict[str, Any]:
         and ``[drive]``: the cam at Θ = 30° with ω = the file's speed (1 rad/s when
         it gives none), positive counterclockwise, so negative for a clockwise cam.
 
-    Raises
-    ------
-    InputError
-        ``follower.kind``: a translating flat face, whose equivalent linkage (a
-        Scotch yoke, Example 4.7) is solved by Newton's method and has no turning page.
-
     Examples
     --------
     >>> from graphkin.cams.examples import example_6_6
@@ -65,12 +58,6 @@ def cam_mechanism(cam: Cam, path: str | Path) -> dict[str, Any]:
     """
     f = cam.follower
     src = str(path)
-    if f.kind is FollowerKind.FLAT_FACE:
-        raise InputError("no live page for a translating flat-face follower: its equivalent "
-                         "linkage (a Scotch yoke, Sec. 4.7, Example 4.7) is solved by Newton's "
-                         "method, which would turn the linkage, not the cam; see the cycle "
-                         f"with 'graphkin animate' of a mechanism using it or 'graphkin cam "
-                         f"{Path(src).name}'", key="follower.kind", file=src)
     sign = 1.0 if cam.sense is Sense.CCW else -1.0
     omega = cam.omega if cam.omega is not None else 1.0
     frame: dict[str, list[float]] = {"O2": [0.0, 0.0]}

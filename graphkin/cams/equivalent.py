@@ -15,8 +15,9 @@ The linkage has the cam's posture, velocity and acceleration at that cam
 angle, so ``graphkin solve`` works on it as on any mechanism (``graphkin
 cam FILE --equivalent ANGLE -o eq.toml``), and ``draw -d
 velocity|acceleration|centers`` and ``steps`` wherever the posture is
-constructed one group at a time (every kind but the translating flat face,
-which graphkin solves analytically).  The follower's velocity and acceleration it gives equal
+constructed one group at a time (the translating flat face's follower keeps
+its angle and is held by the guide and the slot through K: Sec. 2.8, case 3).
+The follower's velocity and acceleration it gives equal
 ``y'ω`` and ``y''ω²`` (tested through :mod:`graphkin.kinematics`).
 
 References

@@ -5,7 +5,7 @@ The equivalent linkage of a ``[[cams]]`` joint (Sec. 4.7,
 cam is the pitch curve's center of curvature there and its coupler ``|ρ|``
 long.  At another angle Θ the linkage is another one, with the cam's own
 numbers: this module writes, for a knife-edge or roller follower
-(translating or oscillating) and an oscillating flat face, the two
+(translating or oscillating) and a flat face (either), the two
 construction steps that give them from the cam link's angle θ2
 (:mod:`graphkin.construction.ops.cam_program`):
 
@@ -27,8 +27,8 @@ offset ``y`` of the slot in the follower's own coordinates (Example 4.7).
 A table of displacements (``motion = "table"``) is its natural cubic spline,
 one ``poly`` row of ``cam_program`` per interval between its points.
 
-Not turned (:class:`NotTurned`, with the reason): a translating flat face (its
-equivalent linkage, a slot across a slider, is solved by Newton's method).
+A translating flat face turns too: ``cam_center`` gives the profile's center
+of curvature and the slot's offset ``−ρ`` along the follower's guide (Eq. 6.27).
 
 References
 ----------
@@ -153,7 +153,7 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
     Raises
     ------
     NotTurned
-        A flat-face follower, or a motion with no expression here.
+        A motion with no expression here.
 
     Examples
     --------
@@ -173,9 +173,6 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
     """
     cam = joint.cam
     f = cam.follower
-    if f.kind is FollowerKind.FLAT_FACE:
-        raise NotTurned("a translating flat-face follower's equivalent linkage (a slot across "
-                        "a slider) is solved by Newton's method, with no step to turn")
     shift = joint.axis - math.pi / 2
     fl = joint.follower
     names = [f"Θ{fl}", f"Y{fl}", f"y'{fl}", f"y''{fl}"]
@@ -185,7 +182,9 @@ def turn_steps(joint: CamJoint, drive: str) -> TurnSteps:
         "s": float(cam.s), "scale": float(joint.scale), "size": float(size),
         "roller": float(f.roller) if f.kind.roller else 0.0,
         "rot": (math.cos(shift), math.sin(shift)), "o2": tuple(map(float, joint.center))}
-    if f.kind is FollowerKind.OSCILLATING_FLAT_FACE:
+    if f.kind is FollowerKind.FLAT_FACE:
+        center.update(follower="translating_flat", offset=float(f.offset), y0=float(cam.y0))
+    elif f.kind is FollowerKind.OSCILLATING_FLAT_FACE:
         center.update(follower="oscillating_flat", sig=float(f.rise.sign),
                       arm0=float(cam.arm0), pivot=tuple(map(float, f.pivot)),
                       face_offset=float(f.face_offset))

@@ -406,6 +406,8 @@ class _Poly(RollingRules):
             cc = _n(c)
             return lv, la, (Term(f"V_{n}"), Term(f"V_{cc}{n}", U, K)), \
                 (Term(f"A_{n}"), Term(f"A_{cc}{n}^n"), Term(f"A_{cc}{n}^t", U, K))
+        if kind == "slot_pin":
+            return self.slot_pin_lines(motion, c)
         _, lid, k, line = motion
         vk, ak = self.coincident(k, c)
         lv = self.V("parallel", (line, vk), f"∥{_n(c)}/{k}:v",
@@ -423,6 +425,44 @@ class _Poly(RollingRules):
         cc = _n(c)
         return lv, la, (Term(f"V_{cc}{k}"), Term(f"V_{cc}/{k}", U, K)), \
             (Term(f"A_{cc}{k}"), Term(f"A_{cc}/{k}^c"), Term(f"A_{cc}/{k}^t", U, K))
+
+    def slot_pin_lines(self, motion: tuple[str, ...],
+                       c: str) -> tuple[str, str, tuple[Term, ...], tuple[Term, ...]]:
+        """Lines of point C of a link L that carries a straight slot with a placed pin P.
+
+        ``V_P = V_P@L + V_P/L`` with ``V_P/L`` along the slot, and C on L:
+        ``V_C = V_P + ω_L × R_CP − V_P/L`` — through the image of P moved by
+        ``ω_L × R_CP``, a line parallel to the slot.  Likewise
+        ``A_C = A_P + α_L × R_CP − ω_L² R_CP − 2ω_L × V_P/L − A_P/L^t``
+        (Eq. 4.15, the slot straight: no apparent normal).  The cam's center
+        of curvature K in the translating flat face's slot (Sec. 4.7).
+        """
+        _, lid, key, line = motion
+        s = next(t for t in self.mech.slots if t.key == key)
+        p, pc, cc = s.point, _n(s.point), _n(c)
+        if lid not in self.omega or lid not in self.alpha or p not in self.vimg \
+                or p not in self.aimg:
+            raise _NotYet(c)
+        base_v = self.V("velocity_difference", (self.vimg[p], self.omega[lid], p, c),
+                        f"{vimg(c)}:{pc}/{lid}",
+                        note=f"From the image of {pc} lay off ω{lid} × R_{cc}{pc}.")
+        lv = self.V("parallel", (line, base_v), f"∥{cc}/{key}:v",
+                    note=f"Through its tip draw a line parallel to the slot: the apparent "
+                         f"velocity V_{pc}/{lid}.")
+        base_a = self.A("acceleration_difference",
+                        (self.aimg[p], self.omega[lid], self.alpha[lid], p, c),
+                        f"{aimg(c)}:{pc}/{lid}",
+                        note=f"From the acceleration image of {pc} lay off α{lid} × R_{cc}{pc} "
+                             f"− ω{lid}² R_{cc}{pc}.")
+        cor = self.A("coriolis", (self.omega[lid], vimg(c), base_v), f"A_{pc}/{lid}^c:{cc}",
+                     note=f"The Coriolis component −2ω{lid} × V_{pc}/{lid}.")
+        tip = self.A("translate", (base_a, cor), f"{aimg(c)}:c{key}", note="Lay it off.")
+        la = self.A("parallel", (line, tip), f"∥{cc}/{key}:a",
+                    note="Through its tip draw a line parallel to the slot: the apparent "
+                         "tangential acceleration.")
+        return lv, la, (Term(f"V_{pc}"), Term(f"V_{cc}{pc}"), Term(f"V_{pc}/{lid}", U, K)), \
+            (Term(f"A_{pc}"), Term(f"A_{cc}{pc}"), Term(f"A_{pc}/{lid}^c"),
+             Term(f"A_{pc}/{lid}^t", U, K))
 
     def ev_dyad(self, c: str, ma: tuple[str, ...], mb: tuple[str, ...]) -> None:
         lv1, la1, tv1, ta1 = self.motion_lines(ma, c)

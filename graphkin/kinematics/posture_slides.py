@@ -55,7 +55,9 @@ def slides(b: _Builder, lid: str, name: str | None = None) -> list[Slider | Slot
     Every slider; a straight slot of a placed link in which the point ``name``
     of ``lid`` runs (the pin itself: its velocity relative to the slot's link
     is along the slot however the two turn); a straight slot of ``lid`` whose
-    pin's link keeps its angle to ``lid`` (then ``lid`` translates on it).
+    pin is placed (the slot's line passes through the pin, whatever turns the
+    pin's link: the cam's center of curvature K in the translating flat face's
+    slot, Sec. 4.7, Example 4.7).
     """
     out: list[Slider | Slot] = [
         s for s in b.mech.sliders
@@ -66,8 +68,7 @@ def slides(b: _Builder, lid: str, name: str | None = None) -> list[Slider | Slot
             continue
         if t.link == lid and t.on in b.placed and (name is None or t.point == name):
             out.append(t)
-        elif t.on == lid and t.link in b.placed and t.point in b.env \
-                and _turn_together(b, lid, t.link):
+        elif t.on == lid and t.link in b.placed and t.point in b.env:
             out.append(t)
     return out
 
@@ -79,7 +80,9 @@ def slide_locus(b: _Builder, lid: str, name: str, loc: XY,
     The link keeps its angle, so each of its points runs parallel to the slide:
     the path of ``name`` is drawn through where ``name`` would be with the
     slide's point at the line's start.  Returns (label, "line", vector name,
-    motion) as :meth:`_Builder.locus` does.
+    motion) as :meth:`_Builder.locus` does.  A slot of ``lid`` whose pin's
+    link turns otherwise gives the motion ("slot_pin", lid, slot key, line):
+    the pin's apparent velocity is then relative to ``lid`` (Sec. 3.6).
     """
     th = b.angle[lid]
     x = b.fresh(f"{name}'")
@@ -96,7 +99,9 @@ def slide_locus(b: _Builder, lid: str, name: str, loc: XY,
           note=f"Where {name} would be with the slide's start at {s.point}.")
     b.add("line_at_angle", (x, th), (lab,), offset=_direction(s),
           note=f"Through it draw the path of {name}, parallel to the slide.")
-    return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
+    if _turn_together(b, lid, s.link):
+        return lab, "line", f"R_{name}", ("slide", lid, s.link, lab)
+    return lab, "line", f"R_{name}", ("slot_pin", lid, s.key, lab)
 
 
 def _parallel(b: _Builder, s1: Slider | Slot, s2: Slider | Slot) -> bool:

@@ -237,15 +237,14 @@ def _newton_page(mech: Mechanism, file_data: dict[str, Any],
     """The page of a mechanism only Newton's method solves (:mod:`.live_newton`).
 
     Not a cam's: Newton's method would turn its equivalent linkage, which holds at
-    the file's cam angle only (Sec. 4.7), not the cam (a translating flat face).
+    the file's cam angle only (Sec. 4.7), not the cam.
     """
     from graphkin.render.live_newton import newton_data
 
     if mech.cams:
         raise InputError("no live page: this cam mechanism's equivalent linkage is solved by "
-                         "Newton's method (as a translating flat face's slot across a slider "
-                         "is), which would turn the linkage, not the cam (Sec. 4.7); see the "
-                         "cycle with graphkin plot or animate", file=source)
+                         "Newton's method, which would turn the linkage, not the cam "
+                         "(Sec. 4.7); see the cycle with graphkin plot or animate", file=source)
 
     data, js = newton_data(mech, source)
     # Newton's page has no table law's rates: _Engine refuses a table with rates unswept by

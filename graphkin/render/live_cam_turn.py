@@ -30,11 +30,12 @@ An oscillating flat face turns the same way: its slot ``F<f>a``-``F<f>b`` lies
 at the offset ``y`` the cam gives, so ``y`` goes into the slot's points, the
 tangent's offset ``|y|`` from the pivot, and the complex ratios of their
 velocity and acceleration images; its branch is checked on ``F<f>a`` (the
-program's foot of the pivot on the face's slot).
+program's foot of the pivot on the face's slot).  A translating flat face's
+slot lies at ``x = −ρ`` along its guide: that goes into the slot's points' first
+coordinates (it has no branch: its two straight paths meet once).
 
 Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
-and says why): a translating flat face has no page (Newton's method solves
-it); a cam not on the first drive's link, and a construction whose other
+and says why): a cam not on the first drive's link, and a construction whose other
 numbers change with the angle (checked here by building the page at other
 angles; the branches the page keeps itself are not counted) are held.
 
@@ -77,12 +78,16 @@ function gkTurn(T, x, Kc) {
     Kc[c.kx] = v[c.center][0]; Kc[c.ky] = v[c.center][1];
     for (const k of c.r) Kc[k] = v[c.length];
     if (c.ysign) {      // a flat face: its slot's line at y in the follower's coordinates
+      // (its coordinate c.axis: 1 an oscillating face's, 0 a translating face's)
       const y = v[c.length];
-      if (!(y * c.ysign > 1e-9 * c.reach)) return {why: gkTurnFace(c, x), cams: got};
-      for (const [k, lp] of c.y) Kc[k] = y - lp;
+      if (c.axis === 1 && !(y * c.ysign > 1e-9 * c.reach)) {
+        return {why: gkTurnFace(c, x), cams: got};
+      }
+      for (const [k, a, b] of c.y) Kc[k] = a * y + b;
       for (const k of c.d) Kc[k] = Math.abs(y);
       for (const [i, j, ax, ay, bx, by, px] of c.sim) {
-        const r0 = bx - ax, r1 = by - ay, p0 = px - ax, p1 = y - ay, dd = r0 * r0 + r1 * r1;
+        const q0 = c.axis === 0 ? y : px, q1 = c.axis === 0 ? px : y;
+        const r0 = bx - ax, r1 = by - ay, p0 = q0 - ax, p1 = q1 - ay, dd = r0 * r0 + r1 * r1;
         Kc[i] = (p0 * r0 + p1 * r1) / dd; Kc[j] = (p1 * r0 - p0 * r1) / dd;
       }
     }
@@ -267,13 +272,13 @@ def _face_slots(steps: Sequence[Step], names: list[str],
             y0 = float(lq[1])
             locs.add(tuple(map(float, lq)))
             if f"{s.outputs[0]}.1" in names:
-                ys.append([names.index(f"{s.outputs[0]}.1"), float(lp[1])])
+                ys.append([names.index(f"{s.outputs[0]}.1"), 1.0, -float(lp[1])])
     if y0 is None or len(locs) != 2:
         raise _fail(f"the construction does not place the face's slot F{fl}a-F{fl}b")
     for s in steps:       # the slot's own copies of its line's points
         if s.op == "rigid" and s.outputs[0] not in (f"F{fl}a", f"F{fl}b") and \
                 tuple(map(float, s.params["local_q"])) in locs and f"{s.outputs[0]}.1" in names:
-            ys.append([names.index(f"{s.outputs[0]}.1"), float(s.params["local_p"][1])])
+            ys.append([names.index(f"{s.outputs[0]}.1"), 1.0, -float(s.params["local_p"][1])])
     sims = []
     for s in steps:       # the images of the slot's points: q = (P − A)/(B − A) moves with y
         lab = f"{s.outputs[0]}.0"
@@ -288,8 +293,45 @@ def _face_slots(steps: Sequence[Step], names: list[str],
           f"{s.outputs[0]}.0" in names and s.outputs[0].endswith(":offset")]
     branch = f"{foot.outputs[0]}.branch"
     return names.index(f"{k}.0"), names.index(f"{k}.1"), {
-        "y": ys, "d": d, "sim": sims, "ysign": math.copysign(1.0, y0),
+        "y": ys, "d": d, "sim": sims, "ysign": math.copysign(1.0, y0), "axis": 1,
         "branch": names.index(branch) if branch in names else None}
+
+
+def _translating_face_slots(steps: Sequence[Step], names: list[str],
+                            fl: str) -> tuple[int, int, dict[str, Any]]:
+    """Where a translating flat face's linkage sits in ``K``: ``K<f>``, the slot's offset.
+
+    The slot ``F<f>a``-``F<f>b`` lies at ``x = −ρ`` in the follower's own
+    coordinates (x along its guide, :func:`graphkin.cams.equivalent.equivalent_linkage`):
+    the first coordinates of its points (``rigid`` from the follower's point,
+    or to it from ``K<f>`` in the two-slides group, Sec. 2.8 case 3) and the
+    complex ratios of their images (``similar``) move with it; no branch.
+    """
+    k = f"K{fl}"
+    if f"{k}.0" not in names or f"{k}.1" not in names:
+        raise _fail(f"the construction does not lay off {k} on the cam by its coordinates")
+    locs = {tuple(map(float, s.params["local_q"])) for s in steps
+            if s.op == "rigid" and s.outputs[0] in (f"F{fl}a", f"F{fl}b")}
+    if len(locs) != 2:
+        raise _fail(f"the construction does not place the face's slot F{fl}a-F{fl}b")
+    ys: list[list[float]] = []
+    sims = []
+    for s in steps:
+        lab = f"{s.outputs[0]}.0"
+        if lab not in names or s.op not in ("rigid", "similar"):
+            continue
+        lq = tuple(map(float, s.params.get("local_q", ())))
+        lp = tuple(map(float, s.params["local_p"]))
+        if s.op == "rigid" and lq in locs:          # Q − P = (y − p0, …)
+            ys.append([names.index(lab), 1.0, -lp[0]])
+        elif s.op == "rigid" and lp in locs:        # Q − P = (q0 − y, …)
+            ys.append([names.index(lab), -1.0, lq[0]])
+        elif s.op == "similar" and lp in locs:
+            (ax, ay), (bx, by) = s.params["local_a"], s.params["local_b"]
+            sims.append([names.index(lab), names.index(f"{s.outputs[0]}.1"), float(ax),
+                         float(ay), float(bx), float(by), lp[1]])
+    return names.index(f"{k}.0"), names.index(f"{k}.1"), {
+        "y": ys, "d": [], "sim": sims, "ysign": -1.0, "axis": 0, "branch": None}
 
 
 def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any], source: str,
@@ -338,12 +380,15 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
         ts = turn_steps(j, label)
         fl = j.follower
         flat = j.cam.follower.kind.flat
-        if flat:
-            kx, ky, face = _face_slots(steps, names, fl)
+        if j.cam.follower.kind.flat and not j.cam.follower.kind.oscillating:
+            kx, ky, face = _translating_face_slots(steps, names, fl)
             radius: list[int] = []
+        elif flat:
+            kx, ky, face = _face_slots(steps, names, fl)
+            radius = []
         else:
             kx, ky, radius = _slots(steps, names, fl)
-            face = {"y": [], "d": [], "sim": [], "branch": None, "ysign": 0.0}
+            face = {"y": [], "d": [], "sim": [], "branch": None, "ysign": 0.0, "axis": 1}
         req = [ts.theta, ts.lift, ts.center, ts.length, ts.trace, ts.contact, ts.rho]
         try:
             fn = generate_js(ts.steps, requests=req, name=f"gkCam{i}")
@@ -366,6 +411,7 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             "branch": face["branch"] if flat else (
                 names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None),
             "y": face["y"], "d": face["d"], "sim": face["sim"], "ysign": face["ysign"],
+            "axis": face["axis"],
             "point": f"F{fl}a" if flat else f"T{fl}", "trace": ts.trace,
             "contact": ts.contact, "center": ts.center,
             "length": ts.length, "lift": ts.lift, "rho": ts.rho, "at": center,

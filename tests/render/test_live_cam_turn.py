@@ -167,7 +167,7 @@ def test_an_undercut_profile_is_said(browser, tmp_path) -> None:
     assert "undercut" not in browser.js(STATUS)
 
 
-@pytest.mark.parametrize("kind", [k for k in FollowerKind if k is not FollowerKind.FLAT_FACE],
+@pytest.mark.parametrize("kind", list(FollowerKind),
                          ids=lambda k: k.value)
 def test_random_cams_turned_equal_solve(browser, tmp_path, kind) -> None:
 
@@ -277,9 +277,9 @@ def test_a_table_segment_turns_as_solve_says(browser, tmp_path) -> None:
         same_as_solve(browser, tmp_path, mech, state)
 
 
-def test_a_translating_flat_face_has_no_page_said_in_one_line(tmp_path) -> None:
-    # its equivalent linkage (a slot across a slider) is solved by Newton's method, which on
-    # a page would turn the linkage, not the cam: refused, one line naming the file
+def test_a_translating_flat_face_turns(browser, tmp_path) -> None:
+    # its equivalent linkage (a Scotch yoke) is constructed (Sec. 2.8 case 3) and its slot's
+    # offset −ρ = −(R0 + Y + y'') (Eq. 6.27) moves with the cam: every posture is solve's
     prog = Program((Segment(Motion.CYCLOIDAL, 1.0, math.radians(180)),
                     Segment(Motion.CYCLOIDAL, -1.0, math.radians(180))))
     cam = Cam(prog, 3.0, Follower(FollowerKind.FLAT_FACE, offset=0.5), Sense.CW)
@@ -287,10 +287,36 @@ def test_a_translating_flat_face_has_no_page_said_in_one_line(tmp_path) -> None:
     path.write_text(cam_toml(cam), encoding="utf-8")
     file = cam_file(cam, path, 40.0, 90.0, 3.0, 1.0, (0.5, 1.0, 2.0, 1.0))
     assert file is not None
-    with pytest.raises(GraphkinError) as err:
-        live_data(from_dict(file, source="flat.toml"), file, "flat.toml")
-    said = err.value.one_line()
-    assert said.startswith("flat.toml: no live page") and "Newton" in said and "\n" not in said
+    mech = from_dict(file, source="flat.toml")
+    d, _ = live_data(mech, file, "flat.toml")
+    assert d.get("turn") is not None, d["cam"]["why"]
+    page = tmp_path / "flat.html"
+    page.write_text(live_html(mech, file, "flat.toml"), encoding="utf-8")
+    browser.open(page)
+    for deg in (12.0, 95.0, 200.0, 300.0):
+        browser.js(f"window.graphkinLive.setDrive({math.radians(deg)})")
+        state = page_state(browser)
+        assert state["result"] is not None
+        same_as_solve(browser, tmp_path, mech, state)
+
+
+def test_example_6_3_s_flat_face_drives_a_rod_turned(browser, tmp_path) -> None:
+    # examples/cams/cam_mechanism.toml on Example 6.3's flat face: the rod's pin P is on the
+    # follower, so the slot's points' images are similar to T4-P's and move with −ρ too
+    (tmp_path / "ex6_3_flat_face.toml").write_text(
+        (ROOT / "gallery" / "cams" / "ex6_3_flat_face.toml").read_text(encoding="utf-8"))
+    src = tmp_path / "m.toml"
+    src.write_text((ROOT / "examples" / "cams" / "cam_mechanism.toml").read_text(
+        encoding="utf-8").replace("ex6_6_roller.toml", "ex6_3_flat_face.toml"))
+    mech = graphkin.load(src)
+    page = tmp_path / "m.html"
+    page.write_text(live_html(mech, load_toml(src), src.name), encoding="utf-8")
+    browser.open(page)
+    for deg in (10.0, 60.0, 110.0):               # AB, BC-CD, DE (Ex 6.2's program)
+        browser.js(f"window.graphkinLive.setDrive({math.radians(deg)})")
+        state = page_state(browser)
+        assert state["result"] is not None
+        same_as_solve(browser, tmp_path, mech, state)
 
 
 def test_the_page_is_small_and_offline() -> None:

@@ -213,6 +213,9 @@ def _cam_center(gen: Gen, step: Step) -> None:
     if p["follower"] == "oscillating_flat":
         _flat_center(gen, step, th, Y, y1, y2)
         return
+    if p["follower"] == "translating_flat":
+        _translating_flat_center(gen, step, th, Y, y1, y2)
+        return
     if p["follower"] == "oscillating":
         sig, arm = float(p["sig"]), gen.num(p["arm"])
         th4 = gen.let(f"{gen.num(p['arm0'])} + {lit(sig)} * {Y}", "a")
@@ -265,6 +268,42 @@ def _cam_center(gen: Gen, step: Step) -> None:
     for lab, z in ((step.outputs[2], pf), (step.outputs[3], cf)):
         m = _mul((ax, ay), z)
         gen.put_point(lab, f"{ox} + {scale} * {m[0]}", f"{oy} + {scale} * {m[1]}")
+    gen.put_scalar(step.outputs[4], rho)
+
+
+def _translating_flat_center(gen: Gen, step: Step, th: str, Y: str, y1: str, y2: str) -> None:
+    """``cam_center`` for a translating flat face (Sec. 6.9, Eqs. 6.26-6.27).
+
+    In the fixed cam frame the contact is ``(s y', R0 + Y)`` (Eq. 6.26), the
+    profile's radius of curvature ``ρ = R0 + Y + y''`` (Eq. 6.27) and its center
+    ``K = (s y', −y'')``, turned into the cam's own frame by ``e^{−isΘ}``.
+    Outputs as for an oscillating flat face: the second is the slot's offset
+    ``−ρ`` along the follower's own x (its guide), and the third the slot's
+    start ``F<f>a`` (the follower's point ``(−ρ, size)``,
+    :func:`graphkin.cams.equivalent.equivalent_linkage`).
+    """
+    p = step.params
+    s = float(p["s"])
+    size = gen.num(p["size"])
+    pp = gen.let(f"{gen.num(p['y0'])} + {Y}", "p")
+    rho = gen.let(f"{pp} + {y2}", "rho")
+    c, sn = gen.let(f"_cos({th})", "c"), gen.let(f"{lit(s)} * _sin({th})", "s")
+    kf = (gen.let(f"{lit(s)} * {y1}", "k"), gen.let(f"-{y2}", "k"))
+    kz = _lets(gen, _mul((c, f"(-{sn})"), kf), "k")                      # e^{−isΘ} K
+    scale = gen.num(p["scale"])
+    sel = gen.helper("select")
+    at = gen.let(f"_sqrt({kz[0]} * {kz[0]} + {kz[1]} * {kz[1]}) <= {lit(VERDICT_REL)} * "
+                 f"{size}", "at")
+    gen.put_point(step.outputs[0], f"{sel}({at}, 0.0, {kz[0]} * {scale})",
+                  f"{sel}({at}, 0.0, {kz[1]} * {scale})")
+    gen.put_scalar(step.outputs[1], f"(-{rho}) * {scale}")
+    ax, ay = gen.num(p["rot"][0]), gen.num(p["rot"][1])
+    o2x, o2y = gen.num(p["o2"][0]), gen.num(p["o2"][1])
+    start = (f"({gen.num(p['offset'])} - {size})", f"({pp} - {rho})")
+    cf = (kf[0], pp)
+    for lab, z in ((step.outputs[2], start), (step.outputs[3], cf)):
+        m = _mul((ax, ay), z)
+        gen.put_point(lab, f"{o2x} + {scale} * {m[0]}", f"{o2y} + {scale} * {m[1]}")
     gen.put_scalar(step.outputs[4], rho)
 
 
