@@ -416,8 +416,11 @@ function drawPolygon(panel, pre, r, stale) {
   for (const e of D.pitch || []) {
     const p = e.pre === pre ? r[e.label] : null; if (!p) continue;
     el(g, "circle", {cx: X(panel, p), cy: Y(panel, p), r: 3, fill: "#fff", stroke: "#000"});
-    el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) + 14, "font-size": "12",
-                   "font-style": "italic", class: "gk-pitch"}, e.text);
+    // to the left of a point in the panel's right half, so "c′₄ (4/2)" stays on the panel
+    const left = X(panel, p) > W / 2;
+    el(g, "text", {x: X(panel, p) + (left ? -6 : 6), y: Y(panel, p) + 14, "font-size": "12",
+                   "text-anchor": left ? "end" : "start", "font-style": "italic",
+                   class: "gk-pitch"}, e.text);
   }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
   label(g, panel, o, pre === "v" ? "O_V" : "O_A");

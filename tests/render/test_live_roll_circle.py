@@ -186,7 +186,18 @@ def test_random_trains_and_drags_equal_solve(browser, tmp_path_factory, rm, step
         d = browser.js("window.graphkinLive.state()")["drive"]
         assert browser.js(f"window.graphkinLive.setDrive({d + step!r})") is not None
         _same_as_solve(browser, tmp)
+        assert _pitch_letters_off_their_panel(browser) == []
     assert browser.errors() == []
+
+
+def _pitch_letters_off_their_panel(browser) -> list[str]:
+    """The points of contact's letters (``c′₄ (4/2)``) whose box leaves their panel."""
+    browser.js("window.graphkinLive.redraw(true)")
+    return browser.js(
+        "Array.from(document.querySelectorAll('.gk-pitch')).filter(function (e) {"
+        " var r = e.getBoundingClientRect(), b = e.ownerSVGElement.getBoundingClientRect();"
+        " return r.left < b.left || r.right > b.right || r.top < b.top"
+        " || r.bottom > b.bottom; }).map(function (e) { return e.textContent; })")
 
 
 def test_the_arm_between_a_driven_sun_and_a_fixed_ring_on_the_page(browser, tmp_path):
@@ -213,7 +224,7 @@ def _cross(w: float, v: np.ndarray) -> np.ndarray:
 
 def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
     # Example 11.7 after a drag: the points of contact on the line of centers, C at
-    # R2 = 1.00 from O (gears 4 and 2) and C1 at R6 = 1.70 (gear 5 of 4 on the fixed 6).
+    # R2 = 1.00 from O (gears 4 and 2) and P at R6 = 1.70 (gear 5 of 4 on the fixed 6).
     # Sec. 3.7: c₄ = c₂ one velocity image, V_C4 = V_A + ω4 × R_CA = ω2 × R_CO (no slip,
     # Eq. 3.13); on the frame V_C4 = 0, c₄ = c₁ at the pole. Sec. 4.7: each link's own
     # acceleration image, A_C4 = A_A + α4 × R_CA - ω4² R_CA, A_C2 = α2 × R_CO - ω2² R_CO
@@ -225,6 +236,7 @@ def test_the_pitch_points_images_are_drawn_and_are_no_slip(browser, tmp_path):
                        ".map(function (e) { return e.textContent; })")
     # the second contact is P, C being taken by the first (Sec. 3.7 names it P)
     assert set(texts) == {"c₄ = c₂", "p₄ = p₁", "c′₄ (4/2)", "c′₂", "p′₄ (4/1)"}
+    assert _pitch_letters_off_their_panel(browser) == []
     sol = _same_as_solve(browser, tmp_path)
     r = browser.js("window.graphkinLive.state()")["result"]
     o, a = np.asarray(sol.position("O"), float), np.asarray(sol.position("A"), float)
