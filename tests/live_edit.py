@@ -106,3 +106,50 @@ def page_file(tmp_path: Any, path: Any) -> Any:
     out = tmp_path / (path.stem + ".html")
     out.write_text(live_html(graphkin.load(path), load_toml(path), path.name), encoding="utf-8")
     return out
+
+
+def same_as_saved_solve(browser: Any, tmp_path: Any, rel: float = 1e-9) -> tuple[dict, Any]:
+    """The page's every moving point, its images, and each θ, ω, α against ``solve`` of the
+    file the page saves (``saved.toml`` in ``tmp_path``); ``(state's result, solution)``.
+
+    An angle is compared modulo 2π (the page counts a gear's angle on past 360°); a file
+    without rates has its positions compared only.
+    """
+    import numpy as np
+
+    import graphkin
+
+    r = browser.js("window.graphkinLive.state()")["result"]
+    assert r is not None
+    saved = tmp_path / "saved.toml"
+    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
+    sol = graphkin.load(saved).solve()
+    mech = sol.mechanism
+    frame = set(mech.links["1"].points)
+    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points
+             if n not in frame]
+    # (a train of gears on fixed pivots has no moving point: its rates are the links')
+    scale = 1.0 + max((abs(v) for n in names for v in r[n]), default=0.0)
+    for n in names:
+        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=rel * scale, err_msg=n)
+    if not mech.has_rates:
+        return r, sol
+    vs = 1.0 + max((abs(v) for n in names for v in np.subtract(r[f"v({n})"], r["o_v"])),
+                   default=0.0)
+    as_ = 1.0 + max((abs(v) for n in names for v in np.subtract(r[f"a({n})"], r["o_a"])),
+                    default=0.0)
+    for n in names:
+        np.testing.assert_allclose(np.subtract(r[f"v({n})"], r["o_v"]), sol.velocity(n),
+                                   rtol=0, atol=rel * vs, err_msg=f"v({n})")
+        np.testing.assert_allclose(np.subtract(r[f"a({n})"], r["o_a"]), sol.acceleration(n),
+                                   rtol=0, atol=rel * as_, err_msg=f"a({n})")
+    for lid in mech.links:
+        np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
+                                   atol=rel * (1 + abs(sol.omega(lid))), err_msg=f"ω{lid}")
+        np.testing.assert_allclose(r[f"α{lid}"], sol.alpha(lid), rtol=0,
+                                   atol=rel * (1 + abs(sol.alpha(lid)) + sol.omega(lid) ** 2),
+                                   err_msg=f"α{lid}")
+        if lid != "1":  # the page's angle may be on the covering: the same posture mod 2π
+            d = float(r[f"θ{lid}"]) - float(sol.angle_rad(lid))
+            assert abs(math.remainder(d, 2 * math.pi)) < rel * (1 + abs(d)), f"θ{lid}"
+    return r, sol

@@ -14,14 +14,13 @@ acceleration on the page equals ``graphkin solve`` of the file the page saves
 from __future__ import annotations
 
 import math
-import zlib
 from pathlib import Path
 
 import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from live_edit import homogeneous
+from live_edit import homogeneous, same_as_saved_solve
 from live_edit import page_file as _page
 from strategies import examples
 from strategies_rolling import rolling_arrangements
@@ -36,56 +35,7 @@ FILES = ["gallery/gears/ex11_7.toml", "examples/planetary_outside.toml",
 
 
 def _same_as_solve(browser, tmp_path: Path) -> graphkin.Solution:
-    """Every moving point, image, θ and ω on the page against solve of its saved file."""
-    r = browser.js("window.graphkinLive.state()")["result"]
-    assert r is not None
-    saved = tmp_path / "saved.toml"
-    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
-    sol = graphkin.load(saved).solve()
-    mech = sol.mechanism
-    frame = set(mech.links["1"].points)
-    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points
-             if n not in frame]
-    # (a train of gears on fixed pivots has no moving point: its rates are the links')
-    scale = 1.0 + max((abs(v) for n in names for v in r[n]), default=0.0)
-    vs = 1.0 + max((abs(v) for n in names for v in np.subtract(r[f"v({n})"], r["o_v"])),
-                   default=0.0)
-    as_ = 1.0 + max((abs(v) for n in names for v in np.subtract(r[f"a({n})"], r["o_a"])),
-                    default=0.0)
-    for n in names:
-        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale, err_msg=n)
-        np.testing.assert_allclose(np.subtract(r[f"v({n})"], r["o_v"]), sol.velocity(n),
-                                   rtol=0, atol=REL * vs, err_msg=f"v({n})")
-        np.testing.assert_allclose(np.subtract(r[f"a({n})"], r["o_a"]), sol.acceleration(n),
-                                   rtol=0, atol=REL * as_, err_msg=f"a({n})")
-    for lid in mech.links:
-        np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
-                                   atol=REL * (1 + abs(sol.omega(lid))), err_msg=f"ω{lid}")
-        np.testing.assert_allclose(r[f"α{lid}"], sol.alpha(lid), rtol=0,
-                                   atol=REL * (1 + abs(sol.alpha(lid)) + sol.omega(lid) ** 2),
-                                   err_msg=f"α{lid}")
-        if lid != "1":  # the page's angle is on the covering: the same posture modulo 2π
-            d = float(r[f"θ{lid}"]) - float(sol.angle_rad(lid))
-            assert abs(math.remainder(d, 2 * math.pi)) < REL * (1 + abs(d)), f"θ{lid}"
-    return sol
-
-
-@pytest.mark.parametrize("name", FILES)
-def test_random_drags_draw_both_polygons_equal_to_solve(browser, tmp_path, name):
-    browser.open(_page(tmp_path, ROOT / name))
-    assert browser.errors() == []
-    # no panel refused: the velocity and acceleration polygons are drawn
-    assert browser.js("document.querySelectorAll('.gk-refused').length") == 0
-    for panel in ("velocity", "acceleration"):
-        assert browser.js(f"document.getElementById('gk-{panel}')"
-                          ".querySelectorAll('line, path, polyline').length") > 0, panel
-    _same_as_solve(browser, tmp_path)
-    rng = np.random.default_rng(zlib.crc32(name.encode()))
-    for step in rng.uniform(-2.5, 2.5, size=4):  # radians of the drive, from where it is
-        d = browser.js("window.graphkinLive.state()")["drive"]
-        assert browser.js(f"window.graphkinLive.setDrive({d + float(step)!r})") is not None
-        _same_as_solve(browser, tmp_path)
-    assert browser.errors() == []
+    return same_as_saved_solve(browser, tmp_path, REL)[1]
 
 
 def _screen(browser) -> tuple[np.ndarray, float]:

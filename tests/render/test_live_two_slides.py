@@ -22,9 +22,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from live_edit import page_file as _page
+from live_edit import same_as_saved_solve
 from strategies import examples, scotch_yokes
 
-import graphkin
 from graphkin.files import load_toml
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_html
@@ -35,34 +35,7 @@ REL = 1e-9
 
 
 def _same_as_solve(browser, tmp_path: Path) -> dict:
-    """Every moving point, its images and each ω, α on the page against solve of its saved file."""
-    r = browser.js("window.graphkinLive.state()")["result"]
-    assert r is not None
-    saved = tmp_path / "saved.toml"
-    saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
-    sol = graphkin.load(saved).solve()
-    mech = sol.mechanism
-    frame = set(mech.links["1"].points)
-    names = [n for lid, lk in mech.links.items() if lid != "1" for n in lk.points
-             if n not in frame]
-    scale = 1.0 + max(abs(v) for n in names for v in r[n])
-    if not mech.has_rates:
-        for n in names:
-            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale,
-                                       err_msg=n)
-        return r
-    vs = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"v({n})"], r["o_v"]))
-    as_ = 1.0 + max(abs(v) for n in names for v in np.subtract(r[f"a({n})"], r["o_a"]))
-    for n in names:
-        np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=REL * scale, err_msg=n)
-        np.testing.assert_allclose(np.subtract(r[f"v({n})"], r["o_v"]), sol.velocity(n),
-                                   rtol=0, atol=REL * vs, err_msg=f"v({n})")
-        np.testing.assert_allclose(np.subtract(r[f"a({n})"], r["o_a"]), sol.acceleration(n),
-                                   rtol=0, atol=REL * as_, err_msg=f"a({n})")
-    for lid in mech.links:
-        np.testing.assert_allclose(r[f"ω{lid}"], sol.omega(lid), rtol=0,
-                                   atol=REL * (1 + abs(sol.omega(lid))), err_msg=f"ω{lid}")
-    return r
+    return same_as_saved_solve(browser, tmp_path, REL)[0]
 
 
 def test_random_drags_draw_both_polygons_equal_to_solve(browser, tmp_path):
