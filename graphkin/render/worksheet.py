@@ -214,3 +214,19 @@ def save_worksheet(fig: Any, layout: Layout, path: str | Path, dpi: float = 200.
     elif p.suffix.lower() == ".svg":
         meta = {"Date": None, "Description": layout.identity_json()}
     fig.savefig(p, dpi=dpi, metadata=meta or None)
+
+
+def worksheet_pixels(sol: Any, layout: Layout, px_per_mm: float, title: str = "") -> Any:
+    """The worksheet as :func:`worksheet_figure` draws it, rasterized: RGB, ``px_per_mm``.
+
+    ``check --scan`` subtracts this printed ink from a photo so that nothing
+    printed is read as pencil (:func:`graphkin.scan.sheet.template_ink`).
+    """
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = worksheet_figure(sol, layout, title=title)
+    fig.set_dpi(px_per_mm * 25.4)
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    return np.asarray(canvas.buffer_rgba())[..., :3]

@@ -390,16 +390,9 @@ def template_ink(sol: Any, layout: Any, title: str = "") -> np.ndarray:
     key = (id(sol), layout)
     if key in _TEMPLATES:
         return _TEMPLATES[key]
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from graphkin.render.worksheet import worksheet_pixels
 
-    from graphkin.render.worksheet import worksheet_figure
-
-    fig = worksheet_figure(sol, layout, title=title)
-    fig.set_dpi(PX_PER_MM * 25.4)
-    canvas = FigureCanvasAgg(fig)
-    canvas.draw()
-    rgba = np.asarray(canvas.buffer_rgba())
-    ink = rgba[..., :3].min(axis=2) < 235
+    ink = worksheet_pixels(sol, layout, PX_PER_MM, title=title).min(axis=2) < 235
     w, h = layout.size
     want = (round(h * PX_PER_MM), round(w * PX_PER_MM))
     if ink.shape != want:
