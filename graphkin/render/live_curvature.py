@@ -326,6 +326,10 @@ def curvature_data(mech: Mechanism, points: list[str],
 
     try:
         sol = mech.solve()
+        if mech.has_rates and not (sol.has_rates and sol.has_accelerations):
+            return {"why": "the velocities and accelerations are undetermined at the file's "
+                           "posture (a toggle or dead center, Sec. 3.5), and the inflection "
+                           "circle needs them"}, ""
         if not sol.has_rates or not sol.has_accelerations:
             return {"why": "the file gives no rates (the inflection circle needs the angular "
                            "velocity and acceleration)"}, ""

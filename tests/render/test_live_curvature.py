@@ -192,9 +192,8 @@ def test_the_page_has_the_curvature_panel_draw_has(path) -> None:
     except InputError:
         return  # no live page (not solved by a construction): the command says so
     V = data["curvature"]
-    if data.get("newton"):  # Newton's method on the page: no polygons, so no curvature
-        assert V["why"] and "\n" not in V["why"] and "link" not in V
-        return
+    # (a page that solves by Newton's method, Example 3.9's wheel, constructs its polygons and
+    # its curvature at Newton's posture: the same panel, tests/render/test_live_newton_curvature.py)
     try:
         drawn = _draws_link(mech.solve()) if mech.solve().has_rates else None
     except GraphkinError:
