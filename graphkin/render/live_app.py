@@ -20,6 +20,7 @@ from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
 from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
+from graphkin.render.live_pitch import PITCH_APP_JS
 
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
 
@@ -163,6 +164,7 @@ function fit(panel, r) {
   if (panel === "posture") {
     for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
     for (const o of camOutlines(r)) for (const p of o) pts.push(p);  // a turning cam's outline
+    for (const p of pitchExtent(r)) pts.push(p);  // the pitch circles (render/live_pitch.py)
     // the instant centers too, unless one is far (near parallel lines): within 3 sizes
     const c = centersOf(r);
     if (c) {
@@ -270,6 +272,7 @@ function drawPosture(r, stale) {
     flush();
   }
   drawCams(g, r);
+  drawPitchCircles(g, r);
   for (const lid of Object.keys(D.links)) {
     if (lid === "1") continue;
     outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
@@ -691,10 +694,11 @@ return {
 }
 """
 
-# the pen mode's part of the script (render/live_pen.py), inside gkLiveApp, and the curvature
-# panel's drawing (render/live_curvature_js.py)
+# the pen mode's part of the script (render/live_pen.py), inside gkLiveApp, the curvature
+# panel's drawing (render/live_curvature_js.py) and the pitch circles' (render/live_pitch.py)
 APP_JS = (APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
-          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS).replace("/*CAMS*/\n", CAMS_APP_JS))
+          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS)
+          .replace("/*CAMS*/\n", CAMS_APP_JS + PITCH_APP_JS))
 # the curvature, force and centers' constructions' glue (render/live_curvature_js.py,
 # render/live_forces.py, render/live_centers.py)
 LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS
