@@ -180,7 +180,7 @@ function drawCurvature(r, stale, refit) {
     el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
                      fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
                      "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});
-    label(g, "curvature", p, lab.replace(" (four circles)", ""));
+    label(g, "curvature", p, gkParts(lab.replace(" (four circles)", "")));
   }
 }
 """

@@ -357,7 +357,8 @@ def _forces_data(mech: Mechanism, points: list[str],
             poly.append({"label": lab, "name": lab, "sign": 1, "color": colour[kind],
                          "text": _text(lab), "at": at if at in points else None})
             if at in points:
-                acting.append({"label": lab, "at": at, "color": colour[kind]})
+                acting.append({"label": lab, "at": at, "color": colour[kind],
+                               "text": _text(lab)})
         for j in fs.joints:
             if lid in (j.lo, j.hi):
                 entry: dict[str, Any] = {"label": built.forces[j.key], "name": j.label(lid),
@@ -615,7 +616,7 @@ function drawActing(r, stale) {
                    y2: Y("posture", tip), stroke: a.color, "stroke-width": "1.6",
                    "marker-end": "url(#" + marks[a.color] + ")", class: "gk-acting",
                    "data-name": a.label});
-    label(g, "posture", tail, a.label);
+    label(g, "posture", tail, a.text || a.label);  // as draw -d forces names it (P₄)
   }
 }
 function forceTable() {
