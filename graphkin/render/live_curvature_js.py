@@ -109,7 +109,8 @@ function drawCurvature(r, stale, refit) {
     note.textContent = "No live curvature: " + V.why + ".";
     return;
   }
-  note.textContent = "";
+  // what of draw's panel the page leaves out (an identity of the file's posture), or nothing
+  note.textContent = V.note ? V.note + "." : "";
   defs(svg);
   const cap = svg.parentNode.querySelector("figcaption");
   if (cap) {
