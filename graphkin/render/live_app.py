@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from graphkin.render.live_cam_turn import CAMS_APP_JS
 from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
-from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_JS
+from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_CSS, CURVATURE_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
 from graphkin.render.live_pitch import PITCH_APP_JS
@@ -739,4 +739,4 @@ APP_JS = (APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP
 # the curvature, force and centers' constructions' glue (render/live_curvature_js.py,
 # render/live_forces.py, render/live_centers.py)
 LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS
-PAGE_CSS += CENTERS_CSS
+PAGE_CSS += CENTERS_CSS + CURVATURE_CSS

@@ -12,7 +12,13 @@ point of Secs. 4.13-4.17 of Uicker, Pennock & Shigley, 5th ed.
 
 from __future__ import annotations
 
-__all__ = ["CURVATURE_APP_JS", "CURVATURE_JS"]
+__all__ = ["CURVATURE_APP_JS", "CURVATURE_CSS", "CURVATURE_JS"]
+
+CURVATURE_CSS = """
+#gk-curvature-note { max-width: 400px; margin: .3em .5em; font-size: .85em; color: #37474f; }
+#gk-curvature-note:empty { display: none; }
+"""
+"""The style of the one line under the curvature panel (as wide as the panel)."""
 
 CURVATURE_JS = r"""// the given points of the curvature construction
 // (Secs. 4.13-4.17) from the posture r: a point's position, or its velocity (acceleration)

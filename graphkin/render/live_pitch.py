@@ -103,6 +103,9 @@ function pitchExtent(r) {
   return out;
 }
 function drawPitchCircles(g, r) {
+  // the points a number keeps clear of: the links' points and the numbers placed before
+  const busy = [];
+  for (const lid of Object.keys(D.links)) for (const n of D.links[lid]) if (r[n]) busy.push(r[n]);
   for (const c of D.circles || []) {
     const p = pitchCenter(r, c);
     if (!p) continue;
@@ -111,10 +114,21 @@ function drawPitchCircles(g, r) {
                      "stroke-width": px(ink("link", "lw")), class: "gk-pitch-circle",
                      id: UID + c.id, "data-link": c.link});
     if (!c.number) continue;
-    // the link's number on its circle, above the center (draw: c + 0.6 R up)
-    el(g, "text", {x: X("posture", p), y: Y("posture", [p[0], p[1] + 0.6 * c.radius]),
-                   "font-size": "13", "font-style": "italic", "text-anchor": "middle",
-                   class: "gk-link-number", "data-link": c.link}, c.link);
+    // the link's number inside its circle, 0.6 R from the center (as draw: above it, or, where
+    // a point of the mechanism is, the one of eight directions farthest from every point)
+    let at = null, far = -1;
+    for (let k = 0; k < 8; k++) {
+      const t = Math.PI / 2 + k * Math.PI / 4;
+      const q = [p[0] + 0.6 * c.radius * Math.cos(t), p[1] + 0.6 * c.radius * Math.sin(t)];
+      let d = Infinity;
+      for (const b of busy) d = Math.min(d, Math.hypot(q[0] - b[0], q[1] - b[1]));
+      if (d > far + 1e-9 * c.radius) { at = q; far = d; }
+      if (far >= 0.3 * c.radius) break;  // clear of every point: the first such direction
+    }
+    busy.push(at);
+    el(g, "text", {x: X("posture", at), y: Y("posture", at) + 5, "font-size": "13",
+                   "font-style": "italic", "text-anchor": "middle", class: "gk-link-number",
+                   "data-link": c.link}, c.link);
   }
 }
 """
