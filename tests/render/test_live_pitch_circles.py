@@ -38,7 +38,10 @@ _READ = """(function () {
             return [e.id, +e.getAttribute('cx'), +e.getAttribute('cy'), +e.getAttribute('r'),
                     e.getAttribute('stroke'), e.getAttribute('fill')]; }),
           numbers: [].map.call(svg.querySelectorAll('.gk-link-number'), function (e) {
-            return e.textContent; })};
+            return e.textContent; }),
+          at: [].map.call(svg.querySelectorAll('.gk-link-number'), function (e) {
+            return [e.getAttribute('data-link'), +e.getAttribute('x'),
+                    +e.getAttribute('y') - 5]; })};
 })()"""
 
 
@@ -88,8 +91,12 @@ def _check_circles(browser, tmp_path: Path) -> dict[str, tuple[str, np.ndarray, 
         np.testing.assert_allclose([x0 + cx * kx, y0 + cy * ky], p, rtol=0,
                                    atol=REL * size * s * kx, err_msg=cid)
         np.testing.assert_allclose(r, radius * s, rtol=REL, err_msg=cid)
-    # each link with a circle numbered once, with its number (as draw numbers a link)
+    # each link with a circle numbered once, with its number (as draw numbers a link), inside
+    # one of its circles, at 0.6 of its radius from the center (SVG units: the circle's own)
     assert sorted(got["numbers"]) == sorted({lid for lid, _, _ in want.values()})
+    for lid, x, y in got["at"]:
+        assert any(abs(math.hypot(x - ids[cid][0], y - ids[cid][1]) - 0.6 * ids[cid][2])
+                   < 1e-6 * ids[cid][2] for cid, w in want.items() if w[0] == lid), lid
     return want
 
 
