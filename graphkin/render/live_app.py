@@ -477,7 +477,7 @@ function table(r) {
   for (const n of moving) {
     const p = r[n]; if (!p) continue;
     const row = el0(t, "tr");
-    el0(row, "th", n); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
+    el0(row, "th", gkPointText(n)); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
     if (D.rates) {
       const v = r["v(" + n + ")"], a = r["a(" + n + ")"], ov = r.o_v, oa = r.o_a;
       el0(row, "td", v && ov ? fmt(Math.hypot(v[0] - ov[0], v[1] - ov[1])) : "\u2014");
@@ -498,7 +498,13 @@ const status = byId("gk-status");
 const isAngle = D.drive.degrees;
 function showDrive() {
   const v = isAngle ? drive * 180 / Math.PI : drive;
-  sval.textContent = D.drive.label + " = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit);
+  // the drive as draw writes it: θ₂, θ₃/₂, s₄, and a point's coordinate x_C as x with the
+  // subscript C (render/joint_angle.py)
+  const lab = D.drive.label;
+  const [h, lo] = lab.indexOf("_") > 0 ? gkParts(lab) : [gkSub(lab), ""];
+  sval.textContent = h;
+  if (lo) el0(sval, "sub", lo);
+  sval.append(" = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit));
   if (isAngle) slider.value = String(((v + 180) % 360 + 360) % 360 - 180);
   else slider.value = String(v);
 }
@@ -629,7 +635,7 @@ slider.addEventListener("input", () => {
 const branchSel = byId("gk-branch");
 for (const n of Object.keys(D.branches)) {
   const o = document.createElement("option");
-  o.value = n; o.textContent = n;
+  o.value = n; o.textContent = gkPointText(n);
   branchSel.appendChild(o);
 }
 if (!branchSel.options.length) {

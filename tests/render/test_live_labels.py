@@ -20,6 +20,7 @@ from pathlib import Path
 import pytest
 from live_edit import page_file
 
+import graphkin
 from graphkin.render.forces import force_name
 from graphkin.render.kennedy import _pretty as center_text
 from graphkin.render.paint import image_text
@@ -85,6 +86,23 @@ def test_the_pages_labels_are_draws(browser, tmp_path, name):
         for p, ts in texts.items():
             for t in ts:
                 assert "_" not in t or t in names, (p, t)
+        # the tables: each point as draw prints it (O₂), each force as draw -d forces (F₂₃)
+        rows = browser.js("[].map.call(document.querySelectorAll('#gk-table tr > th'),"
+                          " function (e) { return e.textContent; })")
+        assert set(rows) >= {
+            point_text(n) for n in moving if r.get(n)} and not [t for t in rows if "_" in t]
+        forces = browser.js("[].map.call(document.querySelectorAll('#gk-force-table tr > th'),"
+                            " function (e) { return e.textContent; })")
+        F = D.get("forces", {})
+        named = {force_name(lab) for lab in F.get("joints", {}).values()} | {
+            force_name(dv["label"]) + (" (ccw)" if dv["kind"] == "torque" else "")
+            for dv in F.get("drives", {}).values()}
+        assert set(forces) <= named | {"force", "x", "y", "|F|"}, forces
+        assert bool(F) == bool(set(forces) & named)
+        # the drive as draw writes it (θ₂ = ..., render/joint_angle.py)
+        drive = graphkin.load(ROOT / name).drives[0].label
+        assert browser.js("document.getElementById('gk-drive-val').textContent").startswith(
+            drive.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")) + " = ")
         # a curvature label with a subscript (Hain's G_N, Example 12.3) is set below its letter
         for t, subs in got["curvature"]:
             for s, dy in subs:
@@ -99,3 +117,11 @@ def test_example_12_3s_hain_points_have_subscripts(browser, tmp_path):
     got = browser.js(_READ)["curvature"]
     subs = {t: s for t, s in got if s}
     assert subs.get("GN") == [["N", "0.3em"]], got
+
+
+def test_a_coordinate_drive_has_its_subscript(browser, tmp_path):
+    # Problem 5.13's pantograph is driven by its point C's x: draw writes x_C as x with the
+    # subscript C, and so does the page beside its slider
+    browser.open(page_file(tmp_path, ROOT / "gallery/mechanisms/p5_13_pantograph.toml"))
+    html = browser.js("document.getElementById('gk-drive-val').innerHTML")
+    assert html.startswith("x<sub>C</sub> = ") and html.endswith(" mm"), html
