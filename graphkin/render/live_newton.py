@@ -67,7 +67,10 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         Merged into the page's data: ``K`` (the frame pivots' coordinates and
         the rolling constants), the drive, the links' points, ``rates``,
         ``newton`` (the posture the page starts from and the solver's
-        numbers) and ``refused`` (panel -> why it is not drawn).
+        numbers), ``refused`` (panel -> why it is not drawn) and ``curvature``
+        (where the polygons are constructed at Newton's posture, the curvature
+        panel of :func:`graphkin.render.live_curvature.curvature_data`, re-done
+        from the page's posture and polygons; else why not, in one line).
     js : str
         The rows and the solver (``construction(I, K)``).
 
