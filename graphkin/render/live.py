@@ -48,6 +48,23 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
               turn: bool = True) -> tuple[dict[str, Any], str]:
     """What the page needs: its data (JSON-able) and the JavaScript of the construction.
 
+    The page of :func:`_live_data`, with the pitch circles of its rolling contacts
+    (``circles``, :func:`graphkin.render.live_pitch.pitch_circles`), which the posture
+    panel draws as ``graphkin draw`` does, whichever way the page solves the posture.
+
+    Parameters and Raises: see :func:`_live_data`.
+    """
+    from graphkin.render.live_pitch import pitch_circles
+
+    data, js = _live_data(mech, file_data, source, turn=turn)
+    data["circles"] = pitch_circles(mech)
+    return data, js
+
+
+def _live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
+               turn: bool = True) -> tuple[dict[str, Any], str]:
+    """What the page needs: its data (JSON-able) and the JavaScript of the construction.
+
     Parameters
     ----------
     mech : Mechanism

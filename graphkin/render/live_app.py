@@ -17,13 +17,43 @@ from __future__ import annotations
 
 from graphkin.render.live_cam_turn import CAMS_APP_JS
 from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
-from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_JS
+from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_CSS, CURVATURE_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
+from graphkin.render.live_pitch import PITCH_APP_JS
 
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
 
 LIVE_LIB = r"""
+// the labels as graphkin draw prints them (render/scene.py, render/paint.py,
+// render/kennedy.py): a point's trailing digits subscript (O2 -> O₂), an image's letter
+// lowercase and primed in the acceleration polygon (a(B) -> b′, O2 -> o₂), an instant
+// center's digits subscript (I13 -> I₁₃), a construction label's part after "_" a subscript
+// (O_V, G_N: [head, subscript, what follows])
+const GK_SUB = "₀₁₂₃₄₅₆₇₈₉";
+const gkSub = (d) => d.replace(/[0-9]/g, (c) => GK_SUB[+c]);
+function gkPointText(lab) {
+  const base = String(lab).split("#")[0].split(":").pop();
+  const m = /^(.*\D)(\d+)$/.exec(base);
+  return m ? m[1] + gkSub(m[2]) : base;
+}
+function gkImageText(lab, prime) {
+  const [name, link] = String(lab).split("@");
+  const base = name.split("#")[0].split(":").pop();
+  const m = /^(.*?)(\d*)$/.exec(base);
+  const letters = m[1] || base, digits = m[1] ? m[2] : "";
+  return letters.toLowerCase() + (prime ? "\u2032" : "") + gkSub(digits + (link || ""));
+}
+function gkCenterText(lab) {
+  return /^I[0-9-]+$/.test(lab) ? "I" + gkSub(lab.slice(1)) : lab;
+}
+function gkParts(lab) {
+  const base = String(lab).split("#")[0].split(":").pop(), k = base.indexOf("_");
+  if (k <= 0 || k === base.length - 1) return [gkPointText(lab), "", ""];
+  let lo = base.slice(k + 1).replace(/_/g, ""), prime = "";
+  while (lo.endsWith("'")) { lo = lo.slice(0, -1); prime += "'"; }
+  return [base.slice(0, k), lo, prime];
+}
 // a center farther than graphkin's FAR_AS_INFINITY sizes from the frame is at infinity, as
 // graphkin's report says (kinematics/instant_centers/primary.py): drawn as a direction
 function gkAtInfinity(C, p) {
@@ -163,6 +193,7 @@ function fit(panel, r) {
   if (panel === "posture") {
     for (const n of Object.keys(curves)) for (const p of curves[n]) if (p) pts.push(p);
     for (const o of camOutlines(r)) for (const p of o) pts.push(p);  // a turning cam's outline
+    for (const p of pitchExtent(r)) pts.push(p);  // the pitch circles (render/live_pitch.py)
     // the instant centers too, unless one is far (near parallel lines): within 3 sizes
     const c = centersOf(r);
     if (c) {
@@ -244,9 +275,16 @@ function outline(g, panel, pts, plate) {
   }
 }
 
+// a label beside p: a text, or [head, subscript, what follows] (gkParts: O_V is O with V
+// below, as draw's mathtext $O_V$; dy, which every browser honours, not baseline-shift)
 function label(g, panel, p, text) {
-  el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) - 6, "font-size": "12",
-                 "font-style": "italic"}, text);
+  const t = el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) - 6, "font-size": "12",
+                           "font-style": "italic"}, Array.isArray(text) ? text[0] : text);
+  if (Array.isArray(text) && text[1]) {
+    el(t, "tspan", {dy: "0.3em", "font-size": "70%", class: "gk-sub"}, text[1]);
+    if (text[2]) el(t, "tspan", {dy: "-0.3em"}, text[2]);
+  }
+  return t;
 }
 
 function drawPosture(r, stale) {
@@ -270,6 +308,7 @@ function drawPosture(r, stale) {
     flush();
   }
   drawCams(g, r);
+  drawPitchCircles(g, r);
   for (const lid of Object.keys(D.links)) {
     if (lid === "1") continue;
     outline(g, "posture", D.links[lid].map((n) => r[n]).filter(Boolean), "plate");
@@ -286,7 +325,7 @@ function drawPosture(r, stale) {
     const pin = (owners[n] || 0) > 1;
     el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: pin ? 4 : 2.5,
                      fill: pin ? "#fff" : "#000", stroke: "#000", "stroke-width": "1.2"});
-    label(g, "posture", p, n);
+    label(g, "posture", p, gkPointText(n));
   }
   const handles = [];
   for (const n of Object.keys(D.frame)) handles.push(["frame", n]);
@@ -339,7 +378,7 @@ function drawCenters(g) {
       const p = xy(h);
       el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: 3, fill: "#fff",
                        stroke: "#000", "stroke-width": "1.2", class: "gk-center"});
-      label(g, "posture", p, lab);
+      label(g, "posture", p, gkCenterText(lab));
       continue;
     }
     // at infinity: its direction, screen y down, in the panel's lower left corner
@@ -351,7 +390,7 @@ function drawCenters(g) {
                    "data-name": lab, "marker-start": "url(#" + UID + "gk-posture-arrow)",
                    "marker-end": "url(#" + UID + "gk-posture-arrow)"});
     el(g, "text", {x: cx - 16, y: cy + 30, "font-size": "11", "font-style": "italic"},
-       lab + " \u2192 \u221e");
+       gkCenterText(lab) + " \u2192 \u221e");
   }
 }
 
@@ -376,9 +415,10 @@ function drawKennedyCircle() {
                                "stroke-width": found ? "1.6" : "0.8",
                                "stroke-dasharray": found ? "none" : "4 3",
                                class: "gk-kennedy-pair", "data-name": lab});
-    el(e, "title", {}, lab);
+    el(e, "title", {}, gkCenterText(lab));
     const m = [p[0] + 0.38 * (q[0] - p[0]), p[1] + 0.38 * (q[1] - p[1])];  // chords cross at 1/2
-    el(svg, "text", {x: m[0] + 3, y: m[1] - 3, "font-size": "10", fill: "#555"}, lab);
+    el(svg, "text", {x: m[0] + 3, y: m[1] - 3, "font-size": "10", fill: "#555"},
+       gkCenterText(lab));
   }
   for (const lid of C.links) {
     const p = at[lid];
@@ -409,7 +449,7 @@ function drawPolygon(panel, pre, r, stale) {
                      "stroke-width": px(ink("result-line", "lw")),
                      "marker-end": "url(#" + UID + svg.id + "-arrow)"});
     }
-    label(g, panel, p, n.toLowerCase());
+    label(g, panel, p, gkImageText(n, pre === "a"));
   }
   // the points of contact of rolling contact (Sec. 3.7): one velocity image for both
   // links, the pole on the frame (V_C = 0); accelerations apart by A^r (live.py)
@@ -423,7 +463,7 @@ function drawPolygon(panel, pre, r, stale) {
                    class: "gk-pitch"}, e.text);
   }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
-  label(g, panel, o, pre === "v" ? "O_V" : "O_A");
+  label(g, panel, o, gkParts(pre === "v" ? "O_V" : "O_A")).setAttribute("class", "gk-pole");
   if (pen.panel === panel) drawPen(svg, panel);
 }
 
@@ -437,7 +477,7 @@ function table(r) {
   for (const n of moving) {
     const p = r[n]; if (!p) continue;
     const row = el0(t, "tr");
-    el0(row, "th", n); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
+    el0(row, "th", gkPointText(n)); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
     if (D.rates) {
       const v = r["v(" + n + ")"], a = r["a(" + n + ")"], ov = r.o_v, oa = r.o_a;
       el0(row, "td", v && ov ? fmt(Math.hypot(v[0] - ov[0], v[1] - ov[1])) : "\u2014");
@@ -458,7 +498,13 @@ const status = byId("gk-status");
 const isAngle = D.drive.degrees;
 function showDrive() {
   const v = isAngle ? drive * 180 / Math.PI : drive;
-  sval.textContent = D.drive.label + " = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit);
+  // the drive as draw writes it: θ₂, θ₃/₂, s₄, and a point's coordinate x_C as x with the
+  // subscript C (render/joint_angle.py)
+  const lab = D.drive.label;
+  const [h, lo] = lab.indexOf("_") > 0 ? gkParts(lab) : [gkSub(lab), ""];
+  sval.textContent = h;
+  if (lo) el0(sval, "sub", lo);
+  sval.append(" = " + fmt(v) + (isAngle ? "\u00b0" : " " + D.unit));
   if (isAngle) slider.value = String(((v + 180) % 360 + 360) % 360 - 180);
   else slider.value = String(v);
 }
@@ -589,7 +635,7 @@ slider.addEventListener("input", () => {
 const branchSel = byId("gk-branch");
 for (const n of Object.keys(D.branches)) {
   const o = document.createElement("option");
-  o.value = n; o.textContent = n;
+  o.value = n; o.textContent = gkPointText(n);
   branchSel.appendChild(o);
 }
 if (!branchSel.options.length) {
@@ -691,11 +737,12 @@ return {
 }
 """
 
-# the pen mode's part of the script (render/live_pen.py), inside gkLiveApp, and the curvature
-# panel's drawing (render/live_curvature_js.py)
+# the pen mode's part of the script (render/live_pen.py), inside gkLiveApp, the curvature
+# panel's drawing (render/live_curvature_js.py) and the pitch circles' (render/live_pitch.py)
 APP_JS = (APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP_JS)
-          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS).replace("/*CAMS*/\n", CAMS_APP_JS))
+          .replace("/*CURVATURE*/\n", CURVATURE_APP_JS)
+          .replace("/*CAMS*/\n", CAMS_APP_JS + PITCH_APP_JS))
 # the curvature, force and centers' constructions' glue (render/live_curvature_js.py,
 # render/live_forces.py, render/live_centers.py)
 LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS
-PAGE_CSS += CENTERS_CSS
+PAGE_CSS += CENTERS_CSS + CURVATURE_CSS

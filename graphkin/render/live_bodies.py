@@ -139,7 +139,7 @@ function drawBodies(r, stale) {
       el(g, "circle", {cx: sx(p), cy: sy(p), r: 3, fill: "#fff", stroke: "#000",
                        "stroke-width": "1.1", class: "gk-body-point", "data-name": n});
       el(g, "text", {x: sx(p) + 5, y: sy(p) + 13, "font-size": "10",
-                     "font-style": "italic"}, n);
+                     "font-style": "italic"}, gkPointText(n));
     }
     const X = F.concurrency[b.lid] ? frc[F.concurrency[b.lid]] : null;
     if (X && Math.abs(X[2]) > 1e-12) {  // the concurrency point of a three-force member

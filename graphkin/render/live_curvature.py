@@ -298,6 +298,27 @@ def _why_none(sol: Any, tol: Any) -> str:
             "shrinks to that point (Sec. 4.13)")
 
 
+def _left_out(lid: str, cx: Any) -> dict[str, str]:
+    """``{"note": line}`` saying what of draw's panel the page leaves out, or ``{}``.
+
+    An identity of the file's posture (``copy_point``) is not carried into a
+    drag: Γ = J where α = 0 (then the file's construction has no Bresse circle
+    either, its diameter ``ω²/α`` infinite, Eq. 4.48), U = J where the cubic
+    contains the centrode normal (Example 4.16).
+    """
+    copied = {s.outputs[0] for s in cx.steps if s.op in _AT_THIS_POSTURE}
+    lines = []
+    if "Γ" in copied:
+        lines.append(f"Γ and the Bresse circle are not drawn: α{lid} = 0 in the file (so Γ = J "
+                     "there) and the page redoes the file's construction; graphkin draw -d "
+                     "curvature of the saved file draws them")
+    if "U" in copied:
+        lines.append("Ball's point U is not drawn: U = J in the file only (Example 4.16) and "
+                     "the page redoes the file's construction; graphkin draw -d curvature of "
+                     "the saved file finds it")
+    return {"note": "; ".join(lines)} if lines else {}
+
+
 def curvature_data(mech: Mechanism, points: list[str],
                    made: set[str]) -> tuple[dict[str, Any], str]:
     """The curvature panel's data and the JavaScript of its construction.
@@ -317,7 +338,8 @@ def curvature_data(mech: Mechanism, points: list[str],
     Returns
     -------
     (dict, str)
-        ``{"link", "given", "labels", "results", "K"}`` and the source of
+        ``{"link", "given", "labels", "results", "K"}`` (and ``"note"``: one line
+        naming what of draw's panel the page leaves out, :func:`_left_out`) and the source of
         ``curvature(I, K)``; or ``({"why": line}, "")`` when the page has no
         curvature panel, ``line`` saying why in the user's words.
     """
@@ -326,6 +348,10 @@ def curvature_data(mech: Mechanism, points: list[str],
 
     try:
         sol = mech.solve()
+        if mech.has_rates and not (sol.has_rates and sol.has_accelerations):
+            return {"why": "the velocities and accelerations are undetermined at the file's "
+                           "posture (a toggle or dead center, Sec. 3.5), and the inflection "
+                           "circle needs them"}, ""
         if not sol.has_rates or not sol.has_accelerations:
             return {"why": "the file gives no rates (the inflection circle needs the angular "
                            "velocity and acceleration)"}, ""
@@ -367,7 +393,8 @@ def curvature_data(mech: Mechanism, points: list[str],
         return {"why": f"the curvature construction cannot be written for the page ({exc})"}, ""
     kinds = {o: s.kind for s in cx.steps for o in s.outputs}
     names = [n for n, _ in fn.slots]
-    return ({"link": plan.lid, "given": given, "labels": list(requests),
+    note = _left_out(plan.lid, cx)
+    return ({"link": plan.lid, "given": given, "labels": list(requests), **note,
              "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
              "K": fn.values,
              "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],

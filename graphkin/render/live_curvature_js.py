@@ -12,7 +12,13 @@ point of Secs. 4.13-4.17 of Uicker, Pennock & Shigley, 5th ed.
 
 from __future__ import annotations
 
-__all__ = ["CURVATURE_APP_JS", "CURVATURE_JS"]
+__all__ = ["CURVATURE_APP_JS", "CURVATURE_CSS", "CURVATURE_JS"]
+
+CURVATURE_CSS = """
+#gk-curvature-note { max-width: 400px; margin: .3em .5em; font-size: .85em; color: #37474f; }
+#gk-curvature-note:empty { display: none; }
+"""
+"""The style of the one line under the curvature panel (as wide as the panel)."""
 
 CURVATURE_JS = r"""// the given points of the curvature construction
 // (Secs. 4.13-4.17) from the posture r: a point's position, or its velocity (acceleration)
@@ -109,7 +115,8 @@ function drawCurvature(r, stale, refit) {
     note.textContent = "No live curvature: " + V.why + ".";
     return;
   }
-  note.textContent = "";
+  // what of draw's panel the page leaves out (an identity of the file's posture), or nothing
+  note.textContent = V.note ? V.note + "." : "";
   defs(svg);
   const cap = svg.parentNode.querySelector("figcaption");
   if (cap) {
@@ -180,7 +187,7 @@ function drawCurvature(r, stale, refit) {
     el(g, "circle", {cx: X("curvature", p), cy: Y("curvature", p), r: 3,
                      fill: lab === "I" || lab === "J" ? "#000" : "#fff", stroke: "#000",
                      "stroke-width": "1.2", class: "gk-curvature-point", "data-name": lab});
-    label(g, "curvature", p, lab.replace(" (four circles)", ""));
+    label(g, "curvature", p, gkParts(lab.replace(" (four circles)", "")));
   }
 }
 """

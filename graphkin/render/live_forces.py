@@ -357,7 +357,8 @@ def _forces_data(mech: Mechanism, points: list[str],
             poly.append({"label": lab, "name": lab, "sign": 1, "color": colour[kind],
                          "text": _text(lab), "at": at if at in points else None})
             if at in points:
-                acting.append({"label": lab, "at": at, "color": colour[kind]})
+                acting.append({"label": lab, "at": at, "color": colour[kind],
+                               "text": _text(lab)})
         for j in fs.joints:
             if lid in (j.lo, j.hi):
                 entry: dict[str, Any] = {"label": built.forces[j.key], "name": j.label(lid),
@@ -395,6 +396,7 @@ def _forces_data(mech: Mechanism, points: list[str],
              "kinds": {lab: kinds.get(lab, "force") for lab in labels},
              "polygons": polygons, "couples": couples, "acting": acting, "drives": drives,
              "drive_color": DRIVE, "joints": {j.key: built.forces[j.key] for j in fs.joints},
+             "jointText": {j.key: _text(built.forces[j.key]) for j in fs.joints},
              "concurrency": concurrency, "grey": GREY_INK, "inertia_color": INERTIA,
              "frame": FRAME, "notes": list(fs.notes)}, source0 + fn.source)
 
@@ -615,7 +617,7 @@ function drawActing(r, stale) {
                    y2: Y("posture", tip), stroke: a.color, "stroke-width": "1.6",
                    "marker-end": "url(#" + marks[a.color] + ")", class: "gk-acting",
                    "data-name": a.label});
-    label(g, "posture", tail, a.label);
+    label(g, "posture", tail, a.text || a.label);  // as draw -d forces names it (P₄)
   }
 }
 function forceTable() {
@@ -628,13 +630,15 @@ function forceTable() {
     const lab = D.forces.joints[key], w = frc[lab];
     if (!w) continue;
     const row = el0(t, "tr");
-    el0(row, "th", lab); el0(row, "td", fmt(w[0])); el0(row, "td", fmt(w[1]));
+    // named as draw -d forces names it (F_12 -> F₁₂)
+    el0(row, "th", (D.forces.jointText || {})[key] || lab);
+    el0(row, "td", fmt(w[0])); el0(row, "td", fmt(w[1]));
     el0(row, "td", fmt(Math.hypot(w[0], w[1])));
   }
   for (const lid of Object.keys(D.forces.drives)) {
     const dv = D.forces.drives[lid], v = frc[dv.label];
     const row = el0(t, "tr");
-    el0(row, "th", dv.label + (dv.kind === "torque" ? " (ccw)" : ""));
+    el0(row, "th", (dv.text || dv.label) + (dv.kind === "torque" ? " (ccw)" : ""));
     el0(row, "td", fmt(v)); el0(row, "td", ""); el0(row, "td", "");
   }
 }

@@ -67,7 +67,10 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         Merged into the page's data: ``K`` (the frame pivots' coordinates and
         the rolling constants), the drive, the links' points, ``rates``,
         ``newton`` (the posture the page starts from and the solver's
-        numbers) and ``refused`` (panel -> why it is not drawn).
+        numbers), ``refused`` (panel -> why it is not drawn) and ``curvature``
+        (where the polygons are constructed at Newton's posture, the curvature
+        panel of :func:`graphkin.render.live_curvature.curvature_data`, re-done
+        from the page's posture and polygons; else why not, in one line).
     js : str
         The rows and the solver (``construction(I, K)``).
 
@@ -159,11 +162,18 @@ def newton_data(mech: Mechanism, source: str) -> tuple[dict[str, Any], str]:
         # the curvature panel says why, in one line, as on every other page without one
         "curvature": {"why": "the curvature constructions start from the velocity and "
                              "acceleration polygons, which this page does not redraw (Newton's "
-                             "method solves the mechanism, not a construction)" if why else
-                             "the curvature constructions are not written out from a "
-                             "posture Newton's method finds (at the file's posture: graphkin "
-                             "draw -d curvature)"},
+                             "method solves the mechanism, not a construction)"},
     }
+    if got is not None:
+        # the polygons are constructed at Newton's posture: so is the curvature of the link
+        # draw -d curvature draws, from the page's posture and polygons (Secs. 4.13-4.17)
+        from graphkin.render.live_curvature import curvature_data
+
+        names = list(dict.fromkeys(n for lk in mech.links.values() for n in lk.points))
+        made = {*names, "o_v", "o_a"} | {f"{p}({n})" for p in ("v", "a") for n in names} | {
+            f"{w}{lid}" for w in ("θ", "ω", "α") for lid in mech.links}
+        data["curvature"], cjs = curvature_data(mech, names, made)
+        js += cjs
     if why:
         data["refused"] = why
     if pitch:

@@ -192,9 +192,8 @@ def test_the_page_has_the_curvature_panel_draw_has(path) -> None:
     except InputError:
         return  # no live page (not solved by a construction): the command says so
     V = data["curvature"]
-    if data.get("newton"):  # Newton's method on the page: no polygons, so no curvature
-        assert V["why"] and "\n" not in V["why"] and "link" not in V
-        return
+    # (a page that solves by Newton's method, Example 3.9's wheel, constructs its polygons and
+    # its curvature at Newton's posture: the same panel, tests/render/test_live_newton_curvature.py)
     try:
         drawn = _draws_link(mech.solve()) if mech.solve().has_rates else None
     except GraphkinError:
@@ -272,3 +271,23 @@ def test_the_panel_does_not_move_with_round_off(name: str) -> None:
                     if st.role.name == "RESULT" and st.op != "copy_point"]
         assert page["curvature"]["results"] == expected
     assert len(links) == 1
+
+
+@pytest.mark.parametrize(("name", "words"), [
+    ("ex4_4_coriolis_block", "Γ and the Bresse circle are not drawn: α3 = 0 in the file"),
+    ("ex4_16_cubic", "Ball's point U is not drawn: U = J in the file only"),
+    ("ex3_1_fourbar", None)])
+def test_the_page_says_what_of_draws_panel_it_leaves_out(name: str, words: str | None) -> None:
+    # an identity of the file's posture is not carried into a drag (Γ = J where α = 0, and
+    # then no Bresse circle, its diameter ω²/α infinite, Eq. 4.48; U = J of Example 4.16):
+    # what graphkin draw -d curvature shows and the page does not is said in one line
+    path = EXAMPLES / f"{name}.toml"
+    data, _ = live_data(graphkin.load(path), load_toml(path), path.name)
+    V = data["curvature"]
+    assert "link" in V
+    if words is None:
+        assert "note" not in V and "Γ" in V["labels"]
+        return
+    assert V["note"].startswith(words) and "\n" not in V["note"]
+    left = "U" if "U" in words else "Γ"
+    assert left not in V["labels"]

@@ -147,7 +147,9 @@ def test_spec_force_examples_open_with_the_panel_and_follow_a_drag(browser, tmp_
     assert browser.js("document.querySelectorAll('#gk-forces .gk-force').length") > 0
     text = browser.js("document.body.innerText")
     assert "NaN" not in text and "undefined" not in text
-    assert "F_23" in browser.js("document.getElementById('gk-force-table').innerText")
+    # the table names the forces as draw -d forces does (F_23 -> F₂₃, render/forces.py)
+    table = browser.js("document.getElementById('gk-force-table').innerText")
+    assert "F₂₃" in table and "_" not in table
     # the applied forces drawn where they act on the posture (the free bodies' loads)
     acting = browser.js("[].map.call(document.querySelectorAll('#gk-posture .gk-acting'),"
                         " function (e) { return [e.getAttribute('data-name'),"
