@@ -80,6 +80,8 @@ class TrainLayout:
         Each gear -> its axis ``(x, y)`` as drawn (mm).
     radius : dict
         Each gear -> its nominal pitch radius (mm).
+    axis_point : dict
+        Each gear -> the name of its axis point in the mechanism file.
     ring : set
         The gears that are the outer gear of an internal mesh.
     spaced : set
@@ -95,6 +97,7 @@ class TrainLayout:
     link_of: dict[str, str]
     center: dict[str, tuple[float, float]]
     radius: dict[str, float]
+    axis_point: dict[str, str] = field(default_factory=dict)
     ring: set[str] = field(default_factory=set)
     spaced: set[frozenset[str]] = field(default_factory=set)
     operating: list[tuple[float, float]] = field(default_factory=list)
@@ -126,6 +129,11 @@ class _Layout:
         self.r = {g: float(n) * scale for g, n in train.size.items()}
         self.ring = {(m.driven if train.size[m.driven] > train.size[m.driver] else m.driver)
                      for m in train.meshes if m.contact == Contact.INTERNAL}
+        for i, m in enumerate(train.meshes):
+            if m.contact == Contact.INTERNAL and train.size[m.driver] == train.size[m.driven]:
+                raise InputError(f"gears {m.driver!r} and {m.driven!r} are one size: a ring "
+                                 "is larger than the gear inside it", key=f"mesh[{i}].contact",
+                                 file=source)
         frame = self.shaft[FRAME]
         self.held = {self.shaft[m] for m, v in train.given.items() if v == 0.0} | {frame}
 
@@ -290,7 +298,7 @@ class _Layout:
             a = base + step * 2.0 * math.pi / _DIRECTIONS
             p = (k[0] + d * math.cos(a), k[1] + d * math.sin(a))
             gap = self._gap(new, p)
-            if gap >= -DEFAULT_TOL.length(d):
+            if gap > DEFAULT_TOL.length(d):   # apart, beyond round-off (touching is not clear)
                 best = p
                 break
             if gap > best_gap:
@@ -473,4 +481,5 @@ def train_mechanism(train: Train, path: str | Path) -> TrainLayout:
     return TrainLayout(
         data=data, link_of={m: lay.link(m) for m in train.members},
         center={g: lay.pos[lay._root(lay.shaft[g])] for g in train.size}, radius=dict(lay.r),
+        axis_point={g: lay.point[lay._root(lay.shaft[g])] for g in train.size},
         ring=set(lay.ring), spaced=spaced, operating=list(lay.operating), notes=notes)
