@@ -94,7 +94,8 @@ def rack_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
 
     The pinion (link 2) turns on ``O2`` at the origin; the rack (link 3) slides
     on the frame along x (a slider through its point ``R3`` on the frame's line
-    ``S1``-``S2``), its pitch line ``L3a``-``L3b`` the tangent to the pinion's
+    ``S1``-``S2``, along the rack's back ``B3``-``R3``, ``R2/2`` below its pitch line), its
+    pitch line ``L3a``-``L3b`` the tangent to the pinion's
     pitch circle at ``P`` below the center (Sec. 7.5, Fig. 7.10: the rack's
     pitch line touches the pinion's *standard* pitch circle, whatever the
     pinion's offset).  The pitch circle rolls on the pitch line (a
@@ -115,12 +116,14 @@ def rack_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
     src = str(path)
     r2 = float(pair.driver.pitch_radius)
     half = 3.0 * r2   # the rack drawn 6 R2 long, centered under the pinion
+    back = 1.5 * r2   # its guide along its back, half a radius below the pitch line
     return {
         "title": pair.title or Path(src).stem,
         "units": pair.units,
-        "links": {"1": {"O2": [0.0, 0.0], "S1": [-half, -r2], "S2": [half, -r2]},
+        "links": {"1": {"O2": [0.0, 0.0], "S1": [-half, -back], "S2": [half, -back]},
                   "2": {"O2": [0.0, 0.0], "A2": [r2, 0.0]},
-                  "3": {"R3": [0.0, -r2], "L3a": [-half, -r2], "L3b": [half, -r2]}},
+                  "3": {"L3a": [-half, -r2], "L3b": [half, -r2], "R3": [half, -back],
+                        "B3": [-half, -back]}},
         "sliders": [{"link": 3, "on": 1, "point": "R3", "line": ["S1", "S2"]}],
         "rolling": [{"link": 2, "on": 3, "circle": {"center": "O2", "radius": r2},
                      "line": ["L3a", "L3b"], "side": "left"}],

@@ -355,12 +355,18 @@ class _Layout:
                 alid = _FRAME_LINK if arm in self.held else self.link_names[arm]
                 links[alid][self.point[node]] = xy
                 links[alid][self.point[self._root(arm)]] = [*self.pos[self._root(arm)]]
+        count: dict[str, int] = {}
         for g in self.r:
             lid = self.link(g)
             if lid != _FRAME_LINK:
-                c = self.pos[self._root(sh[g])]
-                # on the pitch circle above the axis, off the line of centers (0° here)
-                links[lid][self.pitch[g]] = [c[0], c[1] + self.operating_radius(g)]
+                node = self._root(sh[g])
+                c = self.pos[node]
+                # on the pitch circle, off the line of centers: above the axis, the next gear
+                # of the same axis 45° further round
+                k = count[node] = count.get(node, -1) + 1
+                a = math.pi / 2 + k * math.pi / 4
+                rg = self.operating_radius(g)
+                links[lid][self.pitch[g]] = [c[0] + rg * math.cos(a), c[1] + rg * math.sin(a)]
         rolling = []
         for i, m in enumerate(t.meshes):
             ra, rb = self.operating[i]
