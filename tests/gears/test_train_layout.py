@@ -13,9 +13,11 @@ unless they share an axis or stand on the two axes of a mesh.
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 import pytest
 from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from strategies_trains import RandomTrain, gear_trains
 
 import graphkin
@@ -116,3 +118,25 @@ def test_a_train_that_cannot_be_laid_out_is_one_line(data, key) -> None:
     with pytest.raises(InputError) as exc:
         train_mechanism(train_from_dict(data, "t.toml"), "t.toml")
     assert exc.value.key == key and "\n" not in str(exc.value)
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(gear_trains(), st.lists(st.sampled_from([-1.0, 1.0]), min_size=12, max_size=12))
+def test_radii_moved_by_round_off_move_no_verdict(t: RandomTrain, signs: list[float]) -> None:
+    """Every radius moved by 1e-12 of itself: the same directions, links and notes.
+
+    The sizes are put in the train as exact fractions of the moved floats (the file's
+    reader would round them back to 1e-9)."""
+    radii = t.data.get("radii") or {g: n / 2.0 for g, n in t.data["teeth"].items()}
+    base = {k: v for k, v in t.data.items() if k != "teeth"} | {"radii": radii}
+    a = train_mechanism(train_from_dict(base, "t.toml"), "t.toml")
+    moved = train_from_dict(base, "t.toml")
+    moved.size = {g: Fraction(float(r) * (1.0 + 1e-12 * s))
+                  for (g, r), s in zip(moved.size.items(), signs, strict=False)}
+    assert moved.size != train_from_dict(base, "t.toml").size
+    b = train_mechanism(moved, "t.toml")
+    assert a.link_of == b.link_of
+    assert [n.split(":")[0] for n in a.notes] == [n.split(":")[0] for n in b.notes]
+    size = max(a.radius.values())
+    for g, c in a.center.items():
+        assert math.dist(c, b.center[g]) <= 1e-9 * size, g
