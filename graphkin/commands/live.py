@@ -84,9 +84,13 @@ def _gear_mechanism(path: str) -> dict:
         return pair_mechanism(load(path), path)
     train = load_train(path)
     lay = train_mechanism(train, path)
-    size = ("[teeth]: the gears drawn with a nominal module of 1 mm (R = N/2 mm); only the "
-            "ratios of the teeth count (Eq. 7.24)" if train.by_teeth else
-            "[radii]: taken in mm (a train file gives no unit)")
-    for note in (size, *lay.notes):
+    size = []
+    if train.by_teeth and train.module is None:
+        size = ["[teeth]: the gears drawn with a nominal module of 1 mm (R = N/2 mm; give "
+                "module or diametral_pitch for their size): only the ratios of the teeth "
+                "count (Eq. 7.24)"]
+    elif not train.by_teeth and (found is None or "units" not in found[1]):
+        size = ["[radii]: taken in mm (the file gives no units)"]
+    for note in (*size, *lay.notes):
         print(f"{path}: {note}", file=sys.stderr)
     return lay.data

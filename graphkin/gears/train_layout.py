@@ -6,9 +6,11 @@ mesh; it does not say where the gears stand.  :func:`train_mechanism` lays it
 out as a mechanism file of ``[[rolling]]`` circles (as Example 11.7 is
 written), so ``graphkin live`` can open it:
 
-1. **Sizes.** Pitch radii are the ``[radii]`` (taken in mm), or ``N m / 2``
-   (Eq. 7.2) with a nominal module ``m = 1 mm`` for ``[teeth]``: only the
-   ratios of a train count (Eq. 7.24), and the drawing says so.
+1. **Sizes.** Pitch radii are the ``[radii]`` (in the file's ``units``, mm
+   by default), or ``N m / 2`` (Eq. 7.2) for ``[teeth]``, with the file's
+   ``module`` or ``diametral_pitch`` (m = 1/P), else a nominal module
+   ``m = 1 mm``: only the ratios of a train count (Eq. 7.24), and
+   ``graphkin live`` says so.
 2. **Links.** Members on one shaft (``[[joined]]``) are one link; a member
    given at rest (``0`` in ``[speeds]``/``[turns]``) is part of the frame,
    link 1, as the book draws a fixed ring or sun; each other given motion is
@@ -77,9 +79,9 @@ class TrainLayout:
     link_of : dict
         Each member of the train -> its link (``"1"`` for the frame).
     center : dict
-        Each gear -> its axis ``(x, y)`` as drawn (mm).
+        Each gear -> its axis ``(x, y)`` as drawn (in the mechanism's ``units``).
     radius : dict
-        Each gear -> its nominal pitch radius (mm).
+        Each gear -> its standard pitch radius (in the mechanism's ``units``).
     axis_point : dict
         Each gear -> the name of its axis point in the mechanism file.
     ring : set
@@ -125,7 +127,8 @@ class _Layout:
         self.src = source
         self.notes: list[str] = []
         self.shaft = train.shaft()
-        scale = NOMINAL_MODULE / 2.0 if train.by_teeth else 1.0
+        module = NOMINAL_MODULE if train.module is None else train.module
+        scale = module / 2.0 if train.by_teeth else 1.0
         self.r = {g: float(n) * scale for g, n in train.size.items()}
         self.ring = {(m.driven if train.size[m.driven] > train.size[m.driver] else m.driver)
                      for m in train.meshes if m.contact == Contact.INTERNAL}
@@ -364,9 +367,10 @@ class _Layout:
                 # on the pitch circle, off the line of centers: above the axis, the next gear
                 # of the same axis 45° further round
                 k = count[node] = count.get(node, -1) + 1
-                a = math.pi / 2 + k * math.pi / 4
+                turn = math.pi / 2 + k * math.pi / 4
                 rg = self.operating_radius(g)
-                links[lid][self.pitch[g]] = [c[0] + rg * math.cos(a), c[1] + rg * math.sin(a)]
+                links[lid][self.pitch[g]] = [c[0] + rg * math.cos(turn),
+                                             c[1] + rg * math.sin(turn)]
         rolling = []
         for i, m in enumerate(t.meshes):
             ra, rb = self.operating[i]
@@ -389,7 +393,8 @@ class _Layout:
                 "on_circle": {"center": self.point[self._root(sh[second[0]])],
                               "radius": second[1]},
                 "contact": "inside" if m.contact == Contact.INTERNAL else "outside"})
-        return {"title": t.title or Path(self.src).stem, "units": "mm", "links": links,
+        unit = t.length_unit if t.module is not None or not t.by_teeth else "mm"
+        return {"title": t.title or Path(self.src).stem, "units": unit, "links": links,
                 "rolling": rolling, "drive": self.drives()}
 
     def operating_radius(self, g: str) -> float:

@@ -21,8 +21,9 @@ from hypothesis import strategies as st
 from strategies_trains import RandomTrain, gear_trains
 
 import graphkin
+from graphkin.cli import main
 from graphkin.errors import InputError
-from graphkin.gears.train_file import train_from_dict
+from graphkin.gears.train_file import load_train, train_from_dict
 from graphkin.gears.train_layout import train_mechanism
 
 SLOW = settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -140,3 +141,25 @@ def test_radii_moved_by_round_off_move_no_verdict(t: RandomTrain, signs: list[fl
     size = max(a.radius.values())
     for g, c in a.center.items():
         assert math.dist(c, b.center[g]) <= 1e-9 * size, g
+
+
+def test_a_train_with_its_diametral_pitch_is_drawn_at_its_size(tmp_path, capsys) -> None:
+    """Example 7.4's teeth with P = 10 teeth/in (Example 11.7's gears): R = N/(2P), so
+    R2 = 1.0 in, R4 = 1.5 in, and the planet's axis 2.5 in from the sun's (Fig. 11.17); the
+    live page then says nothing of a nominal module."""
+    path = tmp_path / "ex7_4_sized.toml"
+    path.write_text('units = "in"\ndiametral_pitch = 10\n[teeth]\n2 = 20\n4 = 30\n5 = 16\n'
+                    '6 = 34\n[[mesh]]\ngears = [2, 4]\narm = 3\n[[mesh]]\ngears = [5, 6]\n'
+                    'arm = 3\n[[joined]]\nmembers = [4, 5]\n[speeds]\n2 = "250 rev/min cw"\n'
+                    '6 = 0\n', encoding="utf-8")
+    lay = train_mechanism(load_train(path), path)
+    assert lay.data["units"] == "in"
+    assert lay.radius == pytest.approx({"2": 1.0, "4": 1.5, "5": 0.8, "6": 1.7}, rel=1e-15)
+    assert math.dist(lay.center["2"], lay.center["4"]) == pytest.approx(2.5, rel=1e-15)
+    assert main(["live", str(path), "-o", str(tmp_path / "p.html")]) == 0
+    assert "nominal" not in capsys.readouterr().err
+    text = path.read_text(encoding="utf-8").replace("[teeth]", "[radii]")
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(InputError) as exc:
+        load_train(path)
+    assert exc.value.key == "diametral_pitch"
