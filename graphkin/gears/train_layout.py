@@ -230,10 +230,13 @@ class _Layout:
         ends = [(self._root(sh[m.driver]), self._root(sh[m.driven])) for m in t.meshes]
         for i, (na, nb) in enumerate(ends):
             if na == nb:
-                raise InputError(f"gears {t.meshes[i].driver!r} and {t.meshes[i].driven!r} "
-                                 "would turn about one axis (both coaxial with the arm, or on "
-                                 "one shaft) and cannot mesh", key=f"mesh[{i}].gears",
-                                 file=self.src)
+                m = t.meshes[i]
+                raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
+                                 "axis and cannot mesh: no planar layout of this train (each "
+                                 "is joined to the other, or held, driven, an arm or on the "
+                                 "frame's axes, so coaxial with the arm carrying their mesh; "
+                                 "an arm carried by another arm is not laid out)",
+                                 key=f"mesh[{i}].gears", file=self.src)
         self.adjacent = {frozenset(e) for e in ends}
         self.gears_on: dict[str, list[str]] = {}
         for g in t.size:

@@ -167,3 +167,21 @@ def test_a_rack_slides_under_its_pinion(browser, tmp_path: Path, path: Path, cap
             saved.write_text(browser.js("window.graphkinLive.toml()"), encoding="utf-8")
             same_as_solve(browser, tmp_path, graphkin.load(saved), state)
     assert browser.errors() == []
+
+
+def test_a_planets_path_is_not_closed_over_one_turn_of_the_sun(browser, tmp_path: Path,
+                                                               capsys) -> None:
+    """Example 7.4: one turn of sun 2 turns the arm 16/35 of a turn back (θ'62/3 = 16/51,
+    gear 6 fixed: ω3/ω2 = −16/35), so the planet's point A4 is not back where it started: its
+    path is drawn open, not closed by a chord back to its start."""
+    page = tmp_path / "ex7_4.html"
+    assert main(["live", str(ROOT / "gallery" / "gears" / "ex7_4.toml"), "-o", str(page)]) == 0
+    capsys.readouterr()
+    browser.open(page)
+    state = page_state(browser)
+    a4 = [p for p in state["curves"]["A4"] if p is not None]
+    assert math.dist(a4[0], a4[-1]) > 1.0                     # mm: not back at its start
+    ends = browser.js("Array.from(document.querySelectorAll('.gk-curve')).map(function (e) {"
+                      " var p = e.getAttribute('points').split(' '); return [p[0], "
+                      "p[p.length - 1]]; })")
+    assert ends and all(first != last for first, last in ends), ends
