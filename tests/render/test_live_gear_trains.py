@@ -10,9 +10,11 @@ dragged; and the book's printed answers (the gallery file's ``[[gallery.book]]``
 rows, Examples 7.4-7.11 of Sec. 7.15-7.16) to their printed figures.  For
 Ferguson's paradox (Example 7.10, Table 7.4) the arm turned once on the page
 turns gear 4 by 1/101 rev ccw and gear 5 by 1/99 rev cw.  A rack (Fig. 7.10)
-opens sliding under its pinion at V = ω2 R2 (Sec. 3.7); its page saves the rack as
-drawn, not where the pinion has rolled it (a known limit of the page, docs/how-to/live.md),
-so ``solve`` of the saved file is compared at the file's posture only.
+opens sliding under its pinion at V = ω2 R2 (Sec. 3.7); its page saves the
+rack as drawn, not where the pinion has rolled it (a known limit of the page,
+docs/how-to/live.md), so ``solve`` of the saved file is compared at the file's
+posture only.  For random trains (tests/strategies_trains.py) the page's ω
+are the train formula's, derived by hand.
 """
 
 from __future__ import annotations
@@ -24,12 +26,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
 from live_cams_shared import drag, page_state, same_as_solve
+from strategies_trains import RandomTrain, gear_trains
 
 import graphkin
 from graphkin.cli import main
-from graphkin.gears.train_file import load_train
+from graphkin.gears.train_file import load_train, train_from_dict
 from graphkin.gears.train_layout import train_mechanism
+from graphkin.render.live import live_html
 from graphkin.units import quantity
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -185,3 +190,22 @@ def test_a_planets_path_is_not_closed_over_one_turn_of_the_sun(browser, tmp_path
                       " var p = e.getAttribute('points').split(' '); return [p[0], "
                       "p[p.length - 1]]; })")
     assert ends and all(first != last for first, last in ends), ends
+
+
+@settings(max_examples=10, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
+@given(t=gear_trains())
+def test_a_random_trains_page_turns_at_the_formulas_speeds(browser, tmp_path: Path,
+                                                           t: RandomTrain) -> None:
+    """Random trains (tests/strategies_trains.py): every member's ω on the page, at the
+    file's posture and with the drive turned on, is the train formula's, derived by hand."""
+    lay = train_mechanism(train_from_dict(t.data, "random.toml"), "random.toml")
+    page = tmp_path / "random.html"
+    mech = graphkin.from_dict(lay.data, source="random.toml")
+    page.write_text(live_html(mech, lay.data, "random.toml"), encoding="utf-8")
+    browser.open(page)
+    state = page_state(browser)
+    drive0 = state["drive"]
+    _same_omegas(state, lay.link_of, t.omega, 1.0)
+    browser.js(f"window.graphkinLive.setDrive({drive0 + 2.0})")
+    _same_omegas(page_state(browser), lay.link_of, t.omega, 1.0)
