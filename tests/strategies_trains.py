@@ -6,8 +6,10 @@ from the train formula, not by graphkin:
 
 * ``chain``: gears on fixed axes in a row, each stage simple (an idler) or
   compound (two gears joined on one shaft, Sec. 7.13), external, or a pinion
-  alone inside a ring; ω of each driven gear is its driver's times ``∓ N_driver /
-  N_driven`` (Eq. 7.22), the first gear given;
+  alone inside a ring; only chains whose gears clear each other when drawn
+  in a straight line (the test of the layout's directions needs that); ω of
+  each driven gear is its driver's times ``∓ N_driver / N_driven`` (Eq.
+  7.22), the first gear given;
 * ``planetary``: a sun 2, an arm 3, a planet 4 (with, sometimes, a second
   planet gear 5 joined to it: the reverted train of Example 7.4) and an
   output gear 6, a ring round the planet or an external gear coaxial with
@@ -87,6 +89,23 @@ def _chain(draw: Any) -> RandomTrain:
             driver = nxt
         else:
             driver = driven
+    # drawn in a straight line, every two gears on shafts no mesh joins clear each other
+    # (else a large gear beside a small one two meshes away overlaps it in any drawing:
+    # gears in different planes, which the layout says in one line)
+    axis = {first: 0.0}
+    shafts = [[first]]
+    for mesh in meshes:
+        a, b = (str(g) for g in mesh["gears"])
+        along = axis[a] + (teeth[b] - teeth[a] if "contact" in mesh else teeth[a] + teeth[b])
+        group = next((j["members"] for j in joined if int(b) in j["members"]), [int(b)])
+        shafts.append([str(g) for g in group])
+        for g in group:
+            axis[str(g)] = along
+    for i, s in enumerate(shafts):
+        for other in shafts[i + 2:]:
+            for g in s:
+                for h in other:
+                    assume(abs(axis[g] - axis[h]) > teeth[g] + teeth[h])
     data: dict[str, Any] = {"title": "random chain", **_sizes(draw, teeth), "mesh": meshes,
                             "speeds": {first: w}}
     if joined:

@@ -129,6 +129,8 @@ class _Layout:
         self.shaft = train.shaft()
         module = NOMINAL_MODULE if train.module is None else train.module
         scale = module / 2.0 if train.by_teeth else 1.0
+        self.unit = train.length_unit if train.module is not None or not train.by_teeth \
+            else "mm"
         self.r = {g: float(n) * scale for g, n in train.size.items()}
         self.ring = {(m.driven if train.size[m.driven] > train.size[m.driver] else m.driver)
                      for m in train.meshes if m.contact == Contact.INTERNAL}
@@ -253,7 +255,8 @@ class _Layout:
                         continue
                     known, new = (na, nb) if na in self.pos else (nb, na)
                     m = t.meshes[i]
-                    self._put(new, known, self.distance(m, self.r[m.driver], self.r[m.driven]))
+                    self._put(new, known, self.distance(m, self.r[m.driver], self.r[m.driven]),
+                              i)
                     placer.add(i)
                     progress = True
             rest = [na for na, _ in ends if na not in self.pos]
@@ -282,15 +285,16 @@ class _Layout:
             shifted.append((i, m, want, c))
         if shifted:
             i0 = shifted[0][0]
-            what = "; ".join(f"mesh[{i}] ({m.driver}-{m.driven}) needs {_g(w)} mm and is "
-                             f"{_g(c)} mm apart" for i, m, w, c in shifted)
+            u = self.unit
+            what = "; ".join(f"mesh[{i}] ({m.driver}-{m.driven}) needs {_g(w)} {u} and is "
+                             f"{_g(c)} {u} apart" for i, m, w, c in shifted)
             self.notes.append(
                 f"mesh[{i0}]: the axes the other meshes place do not leave the standard "
                 f"center distance ({what}): those gears are drawn with their operating pitch "
                 "circles at that distance, C N/(N1 ± N2), as profile-shifted teeth run "
                 "(Sec. 7.9); every speed ratio is still the teeth's")
 
-    def _put(self, new: str, known: str, d: float) -> None:
+    def _put(self, new: str, known: str, d: float, i: int) -> None:
         """Place axis ``new`` at ``d`` from ``known``: the first clear direction."""
         placed = list(self.pos.values())
         cx = sum(p[0] for p in placed) / len(placed)
@@ -310,9 +314,10 @@ class _Layout:
             if gap > best_gap:
                 best, best_gap = p, gap
         else:
-            self.notes.append(f"the gears on the axis of {self.gears_on[new][0]!r} overlap a "
-                              "gear they do not mesh with in every direction tried: drawn "
-                              "where they overlap least")
+            self.notes.append(f"mesh[{i}]: the gears on the axis it places "
+                              f"({', '.join(self.gears_on[new])}) overlap a gear they do not "
+                              "mesh with in every direction tried: drawn where they overlap "
+                              "least")
         assert best is not None
         self.pos[new] = best
 
@@ -396,8 +401,7 @@ class _Layout:
                 "on_circle": {"center": self.point[self._root(sh[second[0]])],
                               "radius": second[1]},
                 "contact": "inside" if m.contact == Contact.INTERNAL else "outside"})
-        unit = t.length_unit if t.module is not None or not t.by_teeth else "mm"
-        return {"title": t.title or Path(self.src).stem, "units": unit, "links": links,
+        return {"title": t.title or Path(self.src).stem, "units": self.unit, "links": links,
                 "rolling": rolling, "drive": self.drives()}
 
     def operating_radius(self, g: str) -> float:

@@ -73,7 +73,7 @@ def test_meshes_touch_and_other_gears_stand_clear(t: RandomTrain) -> None:
             apart = d >= r + s
             inside = (h in ring and d + r <= s) or (g in ring and d + s <= r)
             assert apart or inside, (t.kind, g, h, d, r, s)
-    assert lay.notes == [] or lay.notes[0].startswith("mesh[")    # nothing drawn overlapping
+    assert not any("overlap" in n for n in lay.notes)    # nothing drawn overlapping
 
 
 def test_gears_that_cannot_clear_are_drawn_overlapping_and_said_so() -> None:
@@ -86,7 +86,8 @@ def test_gears_that_cannot_clear_are_drawn_overlapping_and_said_so() -> None:
                              "joined": [{"members": [4, 5]}], "speeds": {"2": 1.0}},
                             "crowded.toml")
     lay = train_mechanism(train, "crowded.toml")
-    assert len(lay.notes) == 1 and "overlap" in lay.notes[0]
+    assert len(lay.notes) == 1 and lay.notes[0].startswith("mesh[1]: ")
+    assert "overlap" in lay.notes[0]
 
 
 def test_fergusons_paradox_is_drawn_with_operating_pitch_circles() -> None:
