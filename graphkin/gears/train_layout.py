@@ -426,8 +426,12 @@ class _Layout:
                 continue
             seen.add(lid)
             out.append({"link": lid, "angle": 0.0, "omega": f"{v:.17g} {unit}"})
+        key = "turns" if t.turns else "speeds"
+        if not out:
+            raise InputError("every given motion holds a member at rest, so nothing turns: "
+                             "give a member a motion that is not 0 to see the train move",
+                             key=key, file=self.src)
         if left:
-            key = "turns" if t.turns else "speeds"
             self.notes.append(f"{key}.{left[0]}: the train's {freedom} degree(s) of freedom "
                               "are driven by the motions given before it; it follows from "
                               "them")

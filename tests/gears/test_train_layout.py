@@ -112,6 +112,8 @@ def test_fergusons_paradox_is_drawn_with_operating_pitch_circles() -> None:
     ({"teeth": {"2": 20, "6": 40, "4": 20},
       "mesh": [{"gears": [2, 6]}, {"gears": [2, 4], "arm": 3}, {"gears": [4, 6], "arm": 3}],
       "speeds": {"2": 1}}, "mesh[0].gears"),
+    # nothing turns: the only given motion holds gear 2
+    ({"teeth": {"2": 20, "3": 40}, "mesh": [{"gears": [2, 3]}], "speeds": {"2": 0}}, "speeds"),
     # a ring no larger than the gear inside it
     ({"teeth": {"2": 20, "3": 20}, "mesh": [{"gears": [2, 3], "contact": "internal"}],
       "speeds": {"2": 1}}, "mesh[0].contact"),
