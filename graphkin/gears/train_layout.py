@@ -13,9 +13,10 @@ written), so ``graphkin live`` can open it:
    ``graphkin live`` says so.
 2. **Links.** Members on one shaft (``[[joined]]``) are one link; a member
    given at rest (``0`` in ``[speeds]``/``[turns]``) is part of the frame,
-   link 1, as the book draws a fixed ring or sun; each other given motion is
-   a drive (at 0°: every link as drawn), its ω the given motion (a turn
-   ``[turns]`` becomes that turn per second).
+   link 1, as the book draws a fixed ring or sun; the first other given
+   motion is the drive (at 0°: every link as drawn), its ω the given motion
+   (a turn ``[turns]`` becomes that turn per second), and a second input
+   ``follows`` it at the ratio of their motions, so both turn together.
 3. **Axes.** A member whose axis is fixed (an arm, a gear in a mesh carried
    by the frame, a gear held or driven) turns about a frame point; in a mesh
    carried by an arm, such a gear is coaxial with the arm (a sun, a ring)
@@ -416,7 +417,8 @@ class _Layout:
         unit = t.unit + ("/s" if t.turns else "")
         out: list[dict[str, Any]] = []
         seen: set[str] = set()
-        left = []
+        left: list[str] = []
+        first = 0.0
         for member, v in t.given.items():
             if v == 0.0 or member == FRAME:
                 continue
@@ -425,7 +427,12 @@ class _Layout:
                 left.append(member)
                 continue
             seen.add(lid)
-            out.append({"link": lid, "angle": 0.0, "omega": f"{v:.17g} {unit}"})
+            if out:   # a second input turns with the first at the ratio of their speeds
+                out.append({"link": lid, "follows": {"link": out[0]["link"],
+                                                     "ratio": v / first}})
+            else:
+                first = v
+                out.append({"link": lid, "angle": 0.0, "omega": f"{v:.17g} {unit}"})
         key = "turns" if t.turns else "speeds"
         if not out:
             raise InputError("every given motion holds a member at rest, so nothing turns: "
