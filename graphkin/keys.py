@@ -147,6 +147,9 @@ GEARS: Schema = {
 
 TRAIN: Schema = {
     "title": None,
+    "units": {"length": None},     # of [radii] and the module (default mm)
+    "module": None,                # or diametral_pitch: with [teeth], R = N m / 2
+    "diametral_pitch": None,
     "teeth": {"*": None},          # <gear> = N
     "radii": {"*": None},          # <gear> = R (instead of teeth: only ratios count)
     "mesh": {"gears": None, "contact": None, "arm": None},

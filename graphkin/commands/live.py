@@ -4,8 +4,9 @@ Write one self-contained HTML file (no network) where the mechanism's posture, v
 acceleration constructions are re-solved in the page on every pointer move: drag the crank's
 moving pin, a frame pivot or the drive slider; a posture that cannot be assembled is shown as
 such; undo, reset, and save the edited mechanism as a TOML file.  A cam file opens as its
-cam turning with its follower, a gear pair file as its gears rolling on fixed centers, a
-synthesis file as the linkage ``graphkin synthesize -o`` writes (docs/how-to/live.md).
+cam turning with its follower, a gear pair file as its gears rolling on fixed centers (a
+rack: sliding under its pinion), a gear-train file laid out as its gears on their axes and
+arms, a synthesis file as the linkage ``graphkin synthesize -o`` writes (docs/how-to/live.md).
 """
 
 from __future__ import annotations
@@ -69,15 +70,27 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _gear_mechanism(path: str) -> dict:
-    """A pair in mesh as its two gears rolling on fixed centers; a train file refused."""
-    from graphkin.errors import InputError
-    from graphkin.gears.as_mechanism import pair_mechanism
+    """A gear file as its mechanism: a pair on fixed centers, a pinion on a rack, a train laid out.
+
+    What the layout chose (a nominal module, operating pitch circles where the
+    center distances cannot close) is said on stderr, one line each.
+    """
+    from graphkin.gears.as_mechanism import pair_mechanism, train_mechanism
     from graphkin.gears.file import gear_kind, load
+    from graphkin.gears.train_file import load_train
 
     found = gear_kind(path)
-    if found is None or found[0] != "pair":
-        raise InputError("no live page for a gear-train file: it gives tooth numbers or radii, not "
-                         "where its gears stand; write the train as a mechanism with "
-                         "[[rolling]] circles (docs/formats/mechanism.md) and 'graphkin live' "
-                         "that", key="mesh", file=path)
-    return pair_mechanism(load(path), path)
+    if found is not None and found[0] == "pair":
+        return pair_mechanism(load(path), path)
+    train = load_train(path)
+    lay = train_mechanism(train, path)
+    size = []
+    if train.by_teeth and train.module is None:
+        size = ["[teeth]: the gears drawn with a nominal module of 1 mm (R = N/2 mm; give "
+                "module or diametral_pitch for their size): only the ratios of the teeth "
+                "count (Eq. 7.24)"]
+    elif not train.by_teeth and (found is None or "units" not in found[1]):
+        size = ["[radii]: taken in mm (the file gives no units)"]
+    for note in (*size, *lay.notes):
+        print(f"{path}: {note}", file=sys.stderr)
+    return lay.data

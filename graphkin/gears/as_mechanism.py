@@ -21,8 +21,9 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.gears.mesh import GearPair
+from graphkin.gears.train_layout import TrainLayout, train_mechanism
 
-__all__ = ["pair_mechanism"]
+__all__ = ["pair_mechanism", "rack_mechanism", "train_mechanism", "TrainLayout"]
 
 
 def pair_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
@@ -47,7 +48,8 @@ def pair_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
     Raises
     ------
     InputError
-        ``gears.<name>.kind``: a rack (its pitch line slides; no fixed center).
+        ``gears.<name>.kind``: a rack given first (a rack second is
+        :func:`rack_mechanism`).
 
     Examples
     --------
@@ -61,13 +63,8 @@ def pair_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
     """
     g2, g3 = pair.driver, pair.driven
     src = str(path)
-    for g in (g2, g3):
-        if g.rack:
-            raise InputError("no live page for a rack: its pitch line slides on the frame, "
-                             "there are no two fixed centers to roll on; write it as a "
-                             "mechanism with a [[rolling]] line and a slider "
-                             "(docs/formats/mechanism.md)", key=f"gears.{g.name}.kind",
-                             file=src)
+    if g3.rack:
+        return rack_mechanism(pair, path)
     if g2.internal:
         raise InputError("the driver is an internal gear: give the pinion first",
                          key=f"gears.{g2.name}", file=src)
@@ -88,5 +85,47 @@ def pair_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
         "rolling": [{"link": 2, "on": 3, "circle": {"center": "O2", "radius": r2},
                      "on_circle": {"center": "O3", "radius": r3},
                      "contact": "inside" if inside else "outside"}],
+        "drive": {"link": 2, "angle": 0.0, "omega": 1.0},
+    }
+
+
+def rack_mechanism(pair: GearPair, path: str | Path) -> dict[str, Any]:
+    """The mechanism file (as a dict) of a pinion driving a rack: the rack slides on the frame.
+
+    The pinion (link 2) turns on ``O2`` at the origin; the rack (link 3) slides
+    on the frame along x (a slider through its point ``R3`` on the frame's line
+    ``S1``-``S2``, along the rack's back ``B3``-``R3``, ``R2/2`` below its pitch line), its
+    pitch line ``L3a``-``L3b`` the tangent to the pinion's
+    pitch circle at ``P`` below the center (Sec. 7.5, Fig. 7.10: the rack's
+    pitch line touches the pinion's *standard* pitch circle, whatever the
+    pinion's offset).  The pitch circle rolls on the pitch line (a
+    ``[[rolling]]`` line contact, the circle on its left), so the rack moves
+    ``V = ω2 R2`` along x (Sec. 3.7); the pinion is turned at 1 rad/s
+    counterclockwise from 0°.
+
+    Examples
+    --------
+    >>> from graphkin.gears.file import loads
+    >>> p = loads(chr(10).join(['diametral_pitch = 10', 'pressure_angle = 20',
+    ...                         '[gears.pinion]', 'teeth = 20',
+    ...                         '[gears.rack]', 'kind = "rack"']))
+    >>> d = rack_mechanism(p, "rack.toml")
+    >>> d["links"]["3"]["L3a"], d["rolling"][0]["side"]
+    ([-3.0, -1.0], 'left')
+    """
+    src = str(path)
+    r2 = float(pair.driver.pitch_radius)
+    half = 3.0 * r2   # the rack drawn 6 R2 long, centered under the pinion
+    back = 1.5 * r2   # its guide along its back, half a radius below the pitch line
+    return {
+        "title": pair.title or Path(src).stem,
+        "units": pair.units,
+        "links": {"1": {"O2": [0.0, 0.0], "S1": [-half, -back], "S2": [half, -back]},
+                  "2": {"O2": [0.0, 0.0], "A2": [r2, 0.0]},
+                  "3": {"L3a": [-half, -r2], "L3b": [half, -r2], "R3": [half, -back],
+                        "B3": [-half, -back]}},
+        "sliders": [{"link": 3, "on": 1, "point": "R3", "line": ["S1", "S2"]}],
+        "rolling": [{"link": 2, "on": 3, "circle": {"center": "O2", "radius": r2},
+                     "line": ["L3a", "L3b"], "side": "left"}],
         "drive": {"link": 2, "angle": 0.0, "omega": 1.0},
     }

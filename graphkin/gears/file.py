@@ -38,7 +38,8 @@ from graphkin.gears.tooth import ADDENDUM, DEDENDUM, Gear, GearKind, ToothSystem
 from graphkin.keys import GEARS, check_keys, read_units
 from graphkin.units import length_factor, parse_quantity
 
-__all__ = ["load", "loads", "from_dict", "is_gear_file", "gear_kind", "MAX_TEETH"]
+__all__ = ["load", "loads", "from_dict", "is_gear_file", "gear_kind", "MAX_TEETH",
+           "tooth_size"]
 
 #: A gear file's or a gear-train file's table headers, looked for before any TOML is parsed.
 _KIND = re.compile(r"^\s*(\[\s*gears\s*\.|\[\[\s*mesh\s*\]\])", re.MULTILINE)
@@ -96,6 +97,36 @@ def loads(text: str, source: str = "<string>") -> GearPair:
 def from_dict(data: Mapping[str, Any], source: str = "<dict>") -> GearPair:
     """Build the :class:`GearPair` of parsed TOML."""
     return _Reader(source).read(data)
+
+
+def tooth_size(data: Mapping[str, Any], source: str) -> tuple[str, float | None]:
+    """The length unit and the module a file's top level gives; None: no module.
+
+    ``units``, ``module`` or ``diametral_pitch`` (m = 1/P, Sec. 7.1), read as a
+    gear file reads them (a train file's ``[teeth]`` take their size from them).
+
+    >>> tooth_size({"units": "in", "diametral_pitch": 10}, "t.toml")
+    ('in', 0.1)
+    """
+    r = _Reader(source)
+    r.unit = read_units(data.get("units", "mm"), "units", source,
+                        schema={"length": None}).get("length", "mm")
+    try:
+        length_factor(r.unit)
+    except ValueError as exc:
+        raise r.error(str(exc), "units.length") from None
+    if "module" in data and "diametral_pitch" in data:
+        raise r.error("give the module or the diametral pitch, not both", "diametral_pitch")
+    if "module" in data:
+        module = r.length(data["module"], "module", positive=True)
+    elif "diametral_pitch" in data:
+        module = r.module(data["diametral_pitch"], "diametral_pitch")
+    else:
+        return r.unit, None
+    if module < MIN_MODULE:
+        raise r.error(f"a module too small (below {MIN_MODULE:g} {r.unit})",
+                      "module" if "module" in data else "diametral_pitch")
+    return r.unit, module
 
 
 class _Reader:

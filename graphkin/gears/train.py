@@ -106,6 +106,10 @@ class Train:
     """The given motions are turns (angular displacements), not angular velocities."""
     by_teeth: bool = True
     """The sizes are teeth (else pitch radii)."""
+    length_unit: str = "mm"
+    """The unit of the pitch radii and of the module (the file's ``units``)."""
+    module: float | None = None
+    """The module the file gives with ``[teeth]`` (m = 1/P), in ``length_unit``; None: none."""
 
     @property
     def members(self) -> list[str]:

@@ -36,6 +36,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
+from graphkin.gears.file import tooth_size
 from graphkin.gears.train import FRAME, Contact, Mesh, Train
 from graphkin.keys import TRAIN, check_keys
 from graphkin.units import parse_quantity, quantity, split_number
@@ -84,11 +85,16 @@ def train_from_dict(data: Mapping[str, Any], source: str = "<dict>") -> Train:
                 or v <= 0 or v > 1e9:
             raise InputError(f"expected a positive number, not {v!r}", key=key, file=source)
         size[str(name)] = Fraction(v).limit_denominator(10**9)
+    length_unit, module = tooth_size(data, source)
+    if module is not None and table == "radii":
+        raise InputError("the [radii] are the gears' sizes already: a module or diametral "
+                         "pitch goes with [teeth]",
+                         key="module" if "module" in data else "diametral_pitch", file=source)
     meshes = _meshes(data.get("mesh"), size, source)
     joined = _joined(data.get("joined", []), source)
     given, unit, turns = _given(data, source)
     train = Train(size, meshes, joined, given, unit, title, source, turns,
-                  by_teeth=table == "teeth")
+                  by_teeth=table == "teeth", length_unit=length_unit, module=module)
     known = set(train.members) | {FRAME}
     for member in given:
         if member not in known:

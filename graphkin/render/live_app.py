@@ -301,7 +301,8 @@ function drawPosture(r, stale) {
       }
       run = [];
     };
-    for (const p of curves[n].concat([curves[n][0]])) {
+    // closed over one turn, but not on the covering: a train's planets are not back
+    for (const p of curves[n].concat(D.drive.covering ? [] : [curves[n][0]])) {
       if (p) run.push(X("posture", p).toFixed(1) + "," + Y("posture", p).toFixed(1));
       else flush();
     }
