@@ -155,8 +155,8 @@ function whyNot(r, e) {
     ? "the lines coincide, so the magnitudes " + x + " and " + y + " are indeterminate (Sec. 2.8)"
     : "the lines are parallel but distinct, so the magnitudes " + x + " and " + y +
       " are infinite (Sec. 2.8)";
-  return head + "the directions of " + x + " (" + fmt(deg(given[x].a)) + "\u00b0) and " + y +
-    " (" + fmt(deg(given[y].a)) + "\u00b0) are parallel; " + what;
+  return head + "the directions of " + x + " (" + fmt(deg(wrap(given[x].a))) + "\u00b0) and " +
+    y + " (" + fmt(deg(wrap(given[y].a))) + "\u00b0) are parallel; " + what;
 }
 
 function solve() {
