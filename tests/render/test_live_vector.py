@@ -383,3 +383,24 @@ def test_undo_and_reset_return_the_files_values(browser, tmp_path) -> None:
     assert vf.knowns["C"].magnitude == 8.0 and vf.knowns["A"].angle == math.radians(30)
     assert np.isfinite(browser.js(STATE)["solutions"][0]["A"]["magnitude"])
     assert browser.errors() == []
+
+
+def test_a_hostile_title_is_text_and_a_magnitude_with_a_unit_is_kept_until_dragged(
+        browser, tmp_path) -> None:
+    title = "</script><b id=\"gk-x\">x</b>&amp; \u2028"
+    text = (f"title = {json.dumps(title)}\nunits = {{ length = \"in\" }}\n"
+            "[C]\nmagnitude = \"203.2 mm\"\nangle = \"0 rad\"\n[A]\nangle = 30\n[B]\n"
+            "magnitude = 5\n")
+    _page(browser, tmp_path, text, "units.toml")
+    assert browser.js("document.getElementById('gk-x')") is None
+    assert browser.js("document.querySelector('h1').textContent") == title
+    saved = browser.js("window.graphkinLive.toml()")
+    assert 'magnitude = "203.2 mm"' in saved and 'angle = "0 rad"' in saved
+    # 203.2 mm = 8 in: the gallery's case 2, A = 8 cos 30° ∓ 3 (Eqs. 2.45-2.46)
+    sols = browser.js(STATE)["solutions"]
+    assert abs(sols[0]["A"]["magnitude"] - (8 * math.cos(math.radians(30)) - 3)) < 1e-9
+    tip = next(x for x in browser.js("window.graphkinLive.handles()") if x["kind"] == "vector")
+    _drag(browser, tip["client"], (tip["client"][0] + 30, tip["client"][1]))
+    vf = loads(browser.js("window.graphkinLive.toml()"))  # now a number in the file's unit
+    assert isinstance(vf.knowns["C"].magnitude, float) and vf.knowns["C"].magnitude > 8.0
+    _check_page(browser, tmp_path)
