@@ -512,7 +512,8 @@ def solve_vector_equation(A: Polar, B: Polar, C: Polar, *,
     return _finish(b, case, wanted, tol)
 
 
-def vector_construction(A: Polar, B: Polar, C: Polar) -> VectorEquationResult:
+def vector_construction(A: Polar, B: Polar, C: Polar, *,
+                        branch: Side | Along | str | None = None) -> VectorEquationResult:
     """The construction of ``C = A + B`` with every branch recorded, not evaluated.
 
     What :func:`solve_vector_equation` records, for the live page
@@ -520,10 +521,13 @@ def vector_construction(A: Polar, B: Polar, C: Polar) -> VectorEquationResult:
     also when it has no solution (arcs that miss, parallel lines): the result's
     ``solutions`` is empty and ``branches`` names every branch the case has.
 
+    ``branch`` is only checked (a branch the case has, as
+    :func:`solve_vector_equation` checks it): every branch is recorded.
+
     Raises
     ------
     InputError
-        As :func:`solve_vector_equation` for the knowns.
+        As :func:`solve_vector_equation` for the knowns and the branch.
 
     References
     ----------
@@ -537,6 +541,7 @@ def vector_construction(A: Polar, B: Polar, C: Polar) -> VectorEquationResult:
     """
     knowns = {n: _check(n, v) for n, v in zip(NAMES, (A, B, C))}
     case = VectorEquationCase.of(*knowns.values())
+    _branch_names(case, branch)
     wanted = _branch_names(case, None)
     b = _record(knowns, case, wanted, DEFAULT_TOL, check=False)
     return VectorEquationResult(

@@ -58,7 +58,7 @@ _STYLE_KEYS = ("vector-abs", "result-line", "vector-aux", "aux-line", "arc", "po
 
 def _record(vf: VectorFile) -> VectorEquationResult:
     try:
-        return vector_construction(*(vf.knowns[n] for n in NAMES))
+        return vector_construction(*(vf.knowns[n] for n in NAMES), branch=vf.branch)
     except InputError as exc:
         raise InputError(exc.message, key=exc.info.get("key"), file=vf.source) from None
 

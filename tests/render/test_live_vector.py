@@ -404,3 +404,21 @@ def test_a_hostile_title_is_text_and_a_magnitude_with_a_unit_is_kept_until_dragg
     vf = loads(browser.js("window.graphkinLive.toml()"))  # now a number in the file's unit
     assert isinstance(vf.knowns["C"].magnitude, float) and vf.knowns["C"].magnitude > 8.0
     _check_page(browser, tmp_path)
+
+
+@pytest.mark.parametrize(("text", "said"), [
+    ('branch = "ahead"\n[C]\nmagnitude = 5\nangle = 0\n[A]\nmagnitude = 3\n[B]\nmagnitude = 4\n',
+     "branch: case 4 has the branches left, right, not 'ahead'"),
+    ("[C]\nmagnitude = 5\n[A]\nmagnitude = 3\n[B]\nmagnitude = 4\n",
+     "C = A + B is solvable for exactly two unknowns"),
+])
+def test_a_vector_file_graphkin_vector_refuses_is_refused_in_its_line(tmp_path, capsys, text,
+                                                                      said) -> None:
+    src = tmp_path / "bad.toml"
+    src.write_text(text, encoding="utf-8")
+    assert main(["vector", str(src)]) == 2
+    ref = capsys.readouterr().err.strip()
+    assert main(["live", str(src), "-o", str(tmp_path / "p.html")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == ref and len(err.splitlines()) == 1 and said in err
+    assert not (tmp_path / "p.html").exists()
