@@ -253,8 +253,9 @@ def _margin(kn: dict) -> float:
 
 @settings(max_examples=30, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
-@given(text=vector_files(), moves=st.lists(st.tuples(st.integers(-70, 70), st.integers(-70, 70)),
-                                            min_size=3, max_size=3))
+@given(text=vector_files(),
+       moves=st.lists(st.tuples(st.integers(0, 5), st.integers(-70, 70), st.integers(-70, 70)),
+                      min_size=3, max_size=3))
 def test_random_files_dragged_equal_graphkin_vector_and_the_closed_form(browser, text, moves):
     assume(_margin(_knowns(text)) > 1e-6)
     with tempfile.TemporaryDirectory(prefix="gk-live-vector-") as d:
@@ -262,20 +263,21 @@ def test_random_files_dragged_equal_graphkin_vector_and_the_closed_form(browser,
         _page(browser, tmp, text)
         _check_page(browser, tmp)                  # as the file says
         handles = browser.js("window.graphkinLive.handles()")
-        for k, (dx, dy) in enumerate(moves):
-            h = handles[k % len(handles)]
+        for i, (j, dx, dy) in enumerate(moves):
+            k = (i + j) % len(handles)             # which handle: each given part in turn
+            h = handles[k]
             if h["client"] is None:
                 continue
             x, y = h["client"]
             on_top = browser.js(f"document.elementFromPoint({x}, {y}).getAttribute("
                                 "'data-handle')")
-            if on_top != str(k % len(handles)):   # another handle lies over it
+            if on_top != str(k):                   # another handle lies over it
                 continue
             stop = (min(max(x + dx, 20), 700), min(max(y + dy, 200), 650))
             before = _drag(browser, (x, y), stop)
-            moved = before[k % len(handles)]["client"]
+            moved = before[k]["client"]
             # the handle followed the pointer (an arc keeps a least radius)
-            if moved is not None and before[k % len(handles)]["kind"] != "magnitude":
+            if moved is not None and before[k]["kind"] != "magnitude":
                 assert math.dist(moved, stop) < 1.5, (h, moved, stop)
             state = browser.js(STATE)
             kn = {n: (state["given"][n]["m"], state["given"][n]["a"]) for n in NAMES}
@@ -422,3 +424,17 @@ def test_a_vector_file_graphkin_vector_refuses_is_refused_in_its_line(tmp_path, 
     err = capsys.readouterr().err.strip()
     assert err == ref and len(err.splitlines()) == 1 and said in err
     assert not (tmp_path / "p.html").exists()
+
+
+@pytest.mark.parametrize("C", [7.0, 7.0 * (1 + 1e-12), 7.0 * (1 - 1e-12)])
+def test_tangent_arcs_solve_on_the_page_as_in_graphkin_vector(browser, tmp_path, C) -> None:
+    # |A| + |B| = |C| (3 + 4 = 7): the arcs touch, one solution twice (Sec. 2.8); a change
+    # of 1e-12 of the size does not move the verdict, on the page or in graphkin vector
+    text = f"[C]\nmagnitude = {C!r}\nangle = 20\n[A]\nmagnitude = 3\n[B]\nmagnitude = 4\n"
+    r = solve_vector_equation(*(loads(text).knowns[n] for n in NAMES))
+    _page(browser, tmp_path, text, "touch.toml")
+    sols = browser.js(STATE)["solutions"]
+    assert len(sols) == len(r.solutions) == 2 and None not in sols
+    for s in sols:  # A and B along C: the touching point is 3/7 of the way from O to T
+        for n in NAMES:  # the angle to the square root of round-off (a tangency's h = √q)
+            assert abs(s[n]["angle_deg"] - 20.0) < 1e-4, (n, s[n])
