@@ -173,6 +173,8 @@ def vector_live_html(vf: VectorFile, file_data: dict[str, Any]) -> str:
     data, js = vector_live_data(vf, file_data)
     title = html.escape(str(data["title"]))
     heading = html.escape(str(data["heading"]))
+    # the status is under the drawing: a message that comes and goes while a handle is
+    # dragged must not move the drawing under the pointer
     equation = html.escape(str(data["equation"]))
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8">
@@ -188,10 +190,10 @@ Sec. 2.8 is re-solved in the page on every move.</p>
 <div class="controls"><label>solution <select id="gk-solution"></select></label>
 <button id="gk-undo" type="button">Undo</button>
 <button id="gk-reset" type="button">Reset</button>
-<button id="gk-save" type="button">Save the edited file</button></div>
-<p id="gk-status" role="status"></p></header>
+<button id="gk-save" type="button">Save the edited file</button></div></header>
 <main><figure><figcaption>Construction ({html.escape(_figure(int(data["case"])))})</figcaption>
-<svg id="gk-vector"></svg></figure>
+<svg id="gk-vector"></svg>
+<p id="gk-status" role="status"></p></figure>
 <div><table id="gk-table"></table>
 <ol id="gk-steps"></ol></div></main>
 <script id="gk-data" type="application/json">

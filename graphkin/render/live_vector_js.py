@@ -31,7 +31,8 @@ h1 { font-size: 1.2em; margin: 0 0 .3em; }
 .gk-eq { font-family: "DejaVu Sans", system-ui, sans-serif; font-size: 1.1em; }
 .hint { margin: 0 0 .5em; color: #444; font-size: .9em; max-width: 60em; }
 .controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; }
-#gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .4em 0; }
+#gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .3em .5em;
+             max-width: 700px; }
 main { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
 figure { margin: 0; border: 1px solid #ccc; }
 figcaption { font-size: .85em; padding: .2em .4em; background: #f4f4f4; }

@@ -27,7 +27,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 from graphkin.cli import main
@@ -251,6 +251,9 @@ def _margin(kn: dict) -> float:
     return 1.0
 
 
+# the drawing moved under the pointer when a status line came and went while dragging
+@example(text="[A]\nmagnitude = 0.5\n[B]\nmagnitude = 1.188\nangle = 0.0\n[C]\nangle = 29.0\n",
+         moves=[(2, 0, 1), (2, 0, -6), (0, -1, 0)])
 @settings(max_examples=30, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(text=vector_files(),
