@@ -30,7 +30,7 @@ h1 { font-size: 1.2em; margin: 0 0 .3em; }
 .gk-case { margin: 0 0 .4em; }
 .gk-eq { font-family: "DejaVu Sans", system-ui, sans-serif; font-size: 1.1em; }
 .hint { margin: 0 0 .5em; color: #444; font-size: .9em; max-width: 60em; }
-.controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; }
+.controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; margin-bottom: .7em; }
 #gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .3em .5em;
              max-width: 700px; }
 main { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
