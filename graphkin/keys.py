@@ -303,7 +303,8 @@ _DESIGN_KEYS: tuple[tuple[tuple[str, ...], str, str], ...] = (
     (("gears", "mesh"), "a gear file (docs/formats/gears.md)", "gears"),
     (("postures", "function", "path", "cognates", "dwell", "overlay", "coupler_curve",
       "crank_rocker"), "a synthesis file (docs/formats/synthesis.md)", "synthesize"),
-    (("C",), "a vector file (docs/formats/vector.md)", "vector"),
+    # (case 1 may leave out the unknown vector's table: [A] and [B] only)
+    (("C", "A", "B"), "a vector file (docs/formats/vector.md)", "vector"),
 )
 
 

@@ -39,6 +39,14 @@ def run(args: argparse.Namespace) -> int:
 
     data = load_toml(args.file)
     kind = design_file(data)
+    if kind is not None and kind[1] == "vector":  # C = A + B, its construction: live_vector.py
+        from graphkin.kinematics.vector_file import load
+        from graphkin.render.live_vector import vector_live_html
+
+        text = vector_live_html(load(args.file), data)
+        print(f"wrote {write_text(args.output, text, '--output')} "
+              f"({len(text.encode('utf-8')) / 1024:.0f} KiB)", file=sys.stderr)
+        return 0
     if kind is not None and kind[1] == "cam":
         # a cam file: the mechanism it means (cam 2 on O2, follower 4), its turning page
         from graphkin.cams.as_mechanism import cam_mechanism

@@ -63,7 +63,7 @@ from graphkin.geometry.point import Vector
 from graphkin.tolerance import DEFAULT_TOL, Tolerance
 
 __all__ = ["VectorEquationCase", "Polar", "VectorTriple", "VectorEquationResult",
-           "solve_vector_equation"]
+           "solve_vector_equation", "vector_construction"]
 
 NAMES = ("A", "B", "C")
 # each vector as (origin, terminus) of the triangle O, P, T: C = A + B
@@ -506,17 +506,61 @@ def solve_vector_equation(A: Polar, B: Polar, C: Polar, *,
     """
     knowns = {n: _check(n, v) for n, v in zip(NAMES, (A, B, C))}
     case = VectorEquationCase.of(*knowns.values())
+    wanted = _branch_names(case, branch)
+    tol = tol or DEFAULT_TOL
+    b = _record(knowns, case, wanted, tol, check=True)
+    return _finish(b, case, wanted, tol)
+
+
+def vector_construction(A: Polar, B: Polar, C: Polar, *,
+                        branch: Side | Along | str | None = None) -> VectorEquationResult:
+    """The construction of ``C = A + B`` with every branch recorded, not evaluated.
+
+    What :func:`solve_vector_equation` records, for the live page
+    (:mod:`graphkin.render.live_vector`), which evaluates it itself, and so
+    also when it has no solution (arcs that miss, parallel lines): the result's
+    ``solutions`` is empty and ``branches`` names every branch the case has.
+
+    ``branch`` is only checked (a branch the case has, as
+    :func:`solve_vector_equation` checks it): every branch is recorded.
+
+    Raises
+    ------
+    InputError
+        As :func:`solve_vector_equation` for the knowns and the branch.
+
+    References
+    ----------
+    Uicker, Pennock & Shigley, 5th ed., Sec. 2.8, Table 2.2 and Figs. 2.10-2.13.
+
+    Examples
+    --------
+    >>> r = vector_construction(Polar(3), Polar(4), Polar(9, 0.0))  # the arcs miss
+    >>> r.case, r.branches, r.solutions
+    (<VectorEquationCase.CASE_4: 4>, ('left', 'right'), ())
+    """
+    knowns = {n: _check(n, v) for n, v in zip(NAMES, (A, B, C))}
+    case = VectorEquationCase.of(*knowns.values())
+    _branch_names(case, branch)
+    wanted = _branch_names(case, None)
+    b = _record(knowns, case, wanted, DEFAULT_TOL, check=False)
+    return VectorEquationResult(
+        case=case, equation=b.equation, knowns=dict(b.knowns), solutions=(),
+        branches=tuple(w or None for w in wanted), construction=b.cx, inputs=dict(b.inputs))
+
+
+def _record(knowns: Mapping[str, Polar], case: VectorEquationCase, wanted: tuple[str, ...],
+            tol: Tolerance, check: bool) -> _Builder:
+    """Record the steps of ``case`` for the ``wanted`` branches (``check``: refuse parallels)."""
     for n, k in knowns.items():
         if k.angle is None and k.magnitude is not None and k.magnitude == 0.0 and \
                 case != VectorEquationCase.CASE_1:
             raise InputError(f"{n} has an unknown direction, so its magnitude must not be "
                              "zero (its arc would have no radius)", key=f"{n}.magnitude")
-    wanted = _branch_names(case, branch)
-    tol = tol or DEFAULT_TOL
     b = _Builder(case, knowns)
     if case == VectorEquationCase.CASE_1:
         _build_case_1(b)
-        return _finish(b, case, ("",), tol)
+        return b
     (z,) = [n for n in NAMES if knowns[n].is_known]
     x, y = [n for n in NAMES if n != z]
     tail, tip = _ENDS[z]
@@ -555,7 +599,8 @@ def solve_vector_equation(A: Polar, B: Polar, C: Polar, *,
               "each of which may be either positive or negative.", role=Role.RESULT)
         b.vector(x, "")
         b.vector(y, "")
-        _check_parallel(b, z, x, y, anchor, free, tol)
+        if check:
+            _check_parallel(b, z, x, y, anchor, free, tol)
     else:  # case 2: the magnitude of one is unknown (a line), the direction of the other (an arc)
         line_n, arc_n = (x, y) if knowns[x].magnitude is None else (y, x)
         theta = b.angle(line_n)
@@ -576,7 +621,7 @@ def solve_vector_equation(A: Polar, B: Polar, C: Polar, *,
                   f"and the direction of {arc_n}{prime}.", role=Role.RESULT, branch=along)
             b.vector(x, prime)
             b.vector(y, prime)
-    return _finish(b, case, wanted, tol)
+    return b
 
 
 def _build_case_1(b: _Builder) -> None:

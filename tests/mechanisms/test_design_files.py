@@ -32,9 +32,10 @@ def test_the_gallery_has_design_files() -> None:
 def test_a_design_file_is_refused_naming_its_command(path: Path, tmp_path: Path,
                                                      capsys: pytest.CaptureFixture[str]) -> None:
     verb = KINDS[path.parent.name]
-    # a cam file's live page is its cam mechanism's, a synthesis file's its first linkage's
-    # (tests/render/test_live_cam_files.py, test_live_synthesis_files.py)
-    live = [] if verb in ("cam", "synthesize") else \
+    # a cam file's live page is its cam mechanism's, a synthesis file's its first linkage's,
+    # a vector file's its construction of C = A + B (tests/render/test_live_cam_files.py,
+    # test_live_synthesis_files.py, test_live_vector.py)
+    live = [] if verb in ("cam", "synthesize", "vector") else \
         [["live", str(path), "-o", str(tmp_path / "p.html")]]
     for argv in (*live, ["draw", str(path), "-o", str(tmp_path / "d.png")],
                  ["sweep", str(path), "--csv", str(tmp_path / "s.csv")]):
@@ -55,6 +56,12 @@ def test_a_gear_file_is_named_or_is_a_mechanism(path: Path) -> None:
         assert kind is None
     else:
         assert kind is not None and kind[1] == "gears"
+
+
+def test_a_case_1_vector_file_without_its_unknown_vectors_table_is_named() -> None:
+    # case 1 (Fig. 2.10): C unknown, so the file may give [A] and [B] only
+    kind = design_file({"A": {"magnitude": 3, "angle": 0}, "B": {"magnitude": 4, "angle": 90}})
+    assert kind is not None and kind[1] == "vector"
 
 
 def test_a_mechanism_file_with_a_cam_link_is_not_a_design_file() -> None:
