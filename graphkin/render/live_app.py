@@ -68,7 +68,10 @@ h1 { font-size: 1.2em; margin: 0 0 .3em; }
 .hint { margin: 0 0 .5em; color: #444; font-size: .9em; }
 .controls { display: flex; gap: .6em; align-items: center; flex-wrap: wrap; }
 #gk-drive { width: 22em; }
-#gk-status { min-height: 1.3em; color: #c62828; font-weight: 600; margin: .4em 0; }
+/* two lines reserved, never more: a message coming or going must not move the panels
+   under the pointer while dragging */
+#gk-status { min-height: 2.6em; max-height: 2.6em; overflow-y: auto;
+             color: #c62828; font-weight: 600; margin: .4em 0; }
 #gk-status.gk-note { color: #37474f; font-weight: 400; }
 main { display: flex; flex-wrap: wrap; gap: .8em; }
 figure { margin: 0; border: 1px solid #ccc; }
@@ -468,21 +471,37 @@ function drawPolygon(panel, pre, r, stale) {
   if (pen.panel === panel) drawPen(svg, panel);
 }
 
-function fmt(v) { return Number.isFinite(v) ? Number(v.toPrecision(6)).toString() : "\u2014"; }
+// A value within VERDICT_REL (graphkin/tolerance.py) of its column's scale is round-off: "0",
+// never "6.12323e-16" (the x of a pin straight above its pivot).
+function fmt(v, scale) {
+  if (!Number.isFinite(v)) return "\u2014";
+  if (scale !== undefined && Math.abs(v) <= 1e-9 * scale) v = 0;
+  return Number(v.toPrecision(6)).toString();
+}
+function colScale(vals) {
+  return vals.reduce((m, x) => (Number.isFinite(x) ? Math.max(m, Math.abs(x)) : m), 0);
+}
 
 function table(r) {
   const t = byId("gk-table");
   t.textContent = "";
   const head = el0(t, "tr");
   for (const h of ["point", "x", "y"].concat(D.rates ? ["|V|", "|A|"] : [])) el0(head, "th", h);
-  for (const n of moving) {
-    const p = r[n]; if (!p) continue;
+  const ov = r.o_v, oa = r.o_a;
+  const rel = (q, o) => (q && o ? Math.hypot(q[0] - o[0], q[1] - o[1]) : NaN);
+  const shown = moving.filter((n) => r[n]);
+  // each column's scale: the largest of its kind on the page (the size of the mechanism)
+  const sx = colScale(shown.flatMap((n) => [r[n][0], r[n][1]]));
+  const sv = colScale(shown.map((n) => rel(r["v(" + n + ")"], ov)));
+  const sa = colScale(shown.map((n) => rel(r["a(" + n + ")"], oa)));
+  for (const n of shown) {
+    const p = r[n];
     const row = el0(t, "tr");
-    el0(row, "th", gkPointText(n)); el0(row, "td", fmt(p[0])); el0(row, "td", fmt(p[1]));
+    el0(row, "th", gkPointText(n)); el0(row, "td", fmt(p[0], sx)); el0(row, "td", fmt(p[1], sx));
     if (D.rates) {
-      const v = r["v(" + n + ")"], a = r["a(" + n + ")"], ov = r.o_v, oa = r.o_a;
-      el0(row, "td", v && ov ? fmt(Math.hypot(v[0] - ov[0], v[1] - ov[1])) : "\u2014");
-      el0(row, "td", a && oa ? fmt(Math.hypot(a[0] - oa[0], a[1] - oa[1])) : "\u2014");
+      const v = rel(r["v(" + n + ")"], ov), a = rel(r["a(" + n + ")"], oa);
+      el0(row, "td", fmt(v, sv));
+      el0(row, "td", fmt(a, sa));
     }
   }
 }

@@ -626,14 +626,16 @@ function forceTable() {
   if (!D.forces || !frc) return;
   const head = el0(t, "tr");
   for (const h of ["force", "x", "y", "|F|"]) el0(head, "th", h);
-  for (const key of Object.keys(D.forces.joints)) {
+  const keys = Object.keys(D.forces.joints).filter((k) => frc[D.forces.joints[k]]);
+  // the scale of the column: the largest joint force (round-off of it reads 0)
+  const sf = colScale(keys.map((k) => Math.hypot(...frc[D.forces.joints[k]])));
+  for (const key of keys) {
     const lab = D.forces.joints[key], w = frc[lab];
-    if (!w) continue;
     const row = el0(t, "tr");
     // named as draw -d forces names it (F_12 -> F₁₂)
     el0(row, "th", (D.forces.jointText || {})[key] || lab);
-    el0(row, "td", fmt(w[0])); el0(row, "td", fmt(w[1]));
-    el0(row, "td", fmt(Math.hypot(w[0], w[1])));
+    el0(row, "td", fmt(w[0], sf)); el0(row, "td", fmt(w[1], sf));
+    el0(row, "td", fmt(Math.hypot(w[0], w[1]), sf));
   }
   for (const lid of Object.keys(D.forces.drives)) {
     const dv = D.forces.drives[lid], v = frc[dv.label];
