@@ -141,6 +141,23 @@ def test_svg_with_stated_scale(fourbar: Path, tmp_path: Path,
     capsys.readouterr()
 
 
+def test_a_reversed_polygon_is_off_by_plain_millimetres(fourbar: Path, tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    # The polygon of Example 3.1 drawn for the wrong sense of ω2 at 1 in = 10 ft/s: every
+    # image is twice its length away, 2|V_B|/120 in; |V_B| = 4 in * 94.25 rad/s = 377 in/s
+    # (Ex. 3.1), so b is 2 * 377 / 120 * 25.4 = 159.6 mm off: printed "160 mm", never
+    # "1.6e+02 mm" (audit9: a reversed inch-sized polygon printed "1.3e+02 mm").
+    mech = graphkin.load(fourbar)
+    an = solve_analytic(mech)
+    pts = {"O_V": np.zeros(2)} | {p.lower(): -an.velocity(p) / 120.0 for p in "BCEF"}
+    svg = tmp_path / "v.svg"
+    svg.write_text(_svg(dict(pts), "1 in = 10 ft/s"))
+    assert main(["check", str(fourbar), "--drawing", str(svg)]) == 1
+    out = capsys.readouterr().out
+    assert "e+" not in out
+    assert "; 160 mm on the drawing" in out and "160 mm off on the drawing" in out
+
+
 # ---- batch marking ---------------------------------------------------------------------
 
 def test_batch_csv(fourbar: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
