@@ -123,6 +123,11 @@ def test_rates_needed(tmp_path: Path, examples: Path, capsys: pytest.CaptureFixt
      "valid: relative, angle, drawing, scale"),
     ('tolerance = { relative = -1 }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
      "positive"),
+    # audit9: relative = 2 meant 2 %; read as 200 % it passed every answer of the right sign
+    ('tolerance = { relative = 2 }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
+     "2 is 200 %: a relative tolerance is a fraction below 1"),
+    ('tolerance = { relative = "150 %" }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
+     "is 150 %"),
     ('omgea3 = 2\nomega3 = "25.4 rad/s ccw"', "omgea3", "did you mean 'omega3'"),
 ])
 def test_bad_entry_is_reported_and_the_rest_marked(tmp_path: Path, examples: Path, text: str,
