@@ -86,8 +86,8 @@ def test_two_links_that_cannot_reach_each_other(tmp_path: Path,
 
 def test_a_posture_a_hair_past_its_limit_shows_the_digits_that_differ() -> None:
     # Crank O2A = 2.5, coupler AB = 8 (|AB - O2A| = 5.5), rocker O4B = 5 from O4 = (7, 1.5),
-    # driven by the rocker at θ4 = 142.08°: B = O4 + 5 (cos, sin)142.08° = (3.0559, 4.5722),
-    # |O2B| = sqrt(3.0559² + 4.5722²) = 5.49978 < 5.5. At four digits both read "5.5"
+    # driven by the rocker at θ4 = 142.08°: B = O4 + 5 (cos, sin)142.08° = (3.05565, 4.57280),
+    # |O2B| = sqrt(3.05565² + 4.57280²) = 5.49978 < 5.5. At four digits both read "5.5"
     # (audit9: "only 5.5 in apart, less than ... 5.5 in").
     text = """units = "in"
 [links.1]
