@@ -87,6 +87,10 @@ def _run(tmp_path: Path, examples: Path, text: str, capsys: pytest.CaptureFixtur
     ("I13 = \"somewhere\"", "I13"),
     ("tolerance = { relative = -1 }", "tolerance.relative"),
     ("tolerance = { percent = 2 }", "tolerance.percent"),
+    # audit9: a sense on a vector or a length was dropped without a word (marked on its size)
+    ("V_E = \"27.6 ft/s cw\"", "V_E: '27.6 ft/s cw': cw/ccw is the sense of an ω or α"),
+    ("A_CB = { magnitude = \"2580 ft/s^2 ccw\" }", "A_CB: '2580 ft/s^2 ccw': cw/ccw"),
+    ("rho_E = \"4.3 in cw\"", "rho_E: '4.3 in cw': cw/ccw"),
     ("student = \"x\"", "no answers"),
     ("[V_E]\nx = 1", "V_E"),
 ])
