@@ -50,6 +50,27 @@ def test_dxf_round_trip_is_exact(fourbar: Path, tmp_path: Path, diagram: str,
         assert float(r.error.split("; ")[1].split()[0]) < 1e-6
 
 
+def test_dxf_labels_the_point_of_the_slotted_link(examples: Path, tmp_path: Path) -> None:
+    # Example 3.3 (inverted slider): A of crank 2 and the coincident point A4 of rod 4.
+    # The DXF labelled v(A@4) nothing, so the image a4 was not marked at all (audit9);
+    # docs/checking.md reads "a4" as the point of link 4 at A: V_A4 = ω4 × R_AD.
+    pytest.importorskip("ezdxf")
+    from graphkin.io.dxf import write_dxf
+
+    f = examples / "ex3_3_inverted_slider.toml"
+    mech = graphkin.load(f)
+    sol = mech.solve()
+    an = solve_analytic(mech)
+    r = np.asarray(an.position("A")) - np.asarray(an.position("D"))
+    v_a4 = math.hypot(*r) * abs(float(an.omega("4")))
+    rep = check_drawing(sol, write_dxf(sol, "velocity", tmp_path / "v.dxf"))
+    rows = {r.key: r for r in rep.rows}
+    assert "V_A4" in rows and rows["V_A4"].verdict == "ok"
+    assert float(rows["V_A4"].given.split()[0]) == pytest.approx(v_a4, rel=1e-3)
+    rep = check_drawing(sol, write_dxf(sol, "acceleration", tmp_path / "a.dxf"))
+    assert {"A_A", "A_A4"} <= {r.key for r in rep.rows}
+
+
 def test_started_drawing_has_only_the_first_steps(fourbar: Path, tmp_path: Path) -> None:
     pytest.importorskip("ezdxf")
     from graphkin.io.dxf import read_dxf, write_dxf
