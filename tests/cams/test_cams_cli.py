@@ -132,8 +132,12 @@ angle = 180
      ["segment[0]", "segment 1 (cycloidal rise): the displacement jumps from 10 to 0"]),
     (BASE.replace("prime = 40", "prime = -4") + SEGS,
      ["cam.prime", "must be positive"]),
+    # a 45 mm roller on a 40 mm prime circle is bigger than it, not "as big as" (audit9)
     (BASE.replace("roller = 12", "roller = 45") + SEGS,
-     ["follower.roller", "the follower cannot follow"]),
+     ["follower.roller", "the roller (radius 45) is bigger than the prime circle (40)",
+      "the follower cannot follow"]),
+    (BASE.replace("roller = 12", "roller = 40") + SEGS,
+     ["follower.roller", "the roller (radius 40) is as big as the prime circle (40)"]),
     (BASE.replace("prime = 40", "prime = 40\nrotaton = \"cw\"") + SEGS,
      ["cam.rotaton", "did you mean 'rotation'"]),
     (BASE + SEGS.replace("cycloidal", "cycloidel", 1),
