@@ -270,7 +270,9 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
         raise ValueError(f"cannot read {value!r} as a quantity") from None
     target = _BASE[kind].replace("L", f"({length_unit})")
     try:
-        if q.dimensionless and kind not in ("angle",):
+        if q.unitless and kind not in ("angle",):
+            # a bare number in a string ("10"); a dimensionless *unit* ("12 rad",
+            # "2 rev": a rate without its "/s") is not taken for the default unit
             mag = float(q.to("dimensionless").magnitude)
         else:
             mag = float(q.to(target).magnitude)

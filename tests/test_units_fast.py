@@ -71,3 +71,19 @@ def test_the_usual_files_load_without_pint() -> None:
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout.strip()
     assert out == "False"
+
+
+@pytest.mark.parametrize("kind, text", [("omega", "12 rad"), ("omega", "2 rev"),
+                                        ("alpha", "5 rad"), ("length", "3 rad"),
+                                        ("velocity", "4 deg"), ("acceleration", "1 rev")])
+def test_an_angle_without_its_time_is_not_a_rate_or_a_length(kind: str, text: str) -> None:
+    # A student who writes omega = "12 rad" (forgot the "/s") or module = "3 rad" must be
+    # told, not given 12 rad/s or a 3 mm module: pint calls rad dimensionless, but it is a
+    # unit the user wrote, not a bare number (audit9).
+    with pytest.raises(ValueError, match="is not"):
+        parse_quantity(text, kind, "mm")  # type: ignore[arg-type]
+
+
+def test_a_bare_number_in_a_string_is_still_the_default_unit() -> None:
+    assert parse_quantity("10", "omega", "mm") == (10.0, None)
+    assert parse_quantity("3", "length", "in") == (3.0, None)

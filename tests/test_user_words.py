@@ -84,6 +84,34 @@ def test_two_links_that_cannot_reach_each_other(tmp_path: Path,
             "are 100.5 mm apart, more than 20 + 30 = 50 mm") in err
 
 
+def test_a_posture_a_hair_past_its_limit_shows_the_digits_that_differ() -> None:
+    # Crank O2A = 2.5, coupler AB = 8 (|AB - O2A| = 5.5), rocker O4B = 5 from O4 = (7, 1.5),
+    # driven by the rocker at θ4 = 142.08°: B = O4 + 5 (cos, sin)142.08° = (3.05565, 4.57280),
+    # |O2B| = sqrt(3.05565² + 4.57280²) = 5.49978 < 5.5. At four digits both read "5.5"
+    # (audit9: "only 5.5 in apart, less than ... 5.5 in").
+    text = """units = "in"
+[links.1]
+O2 = [0, 0]
+O4 = [7, 1.5]
+[links.2]
+O2 = [0, 0]
+A = [2.5, 0]
+[links.3]
+A = [0, 0]
+B = [8, 0]
+[links.4]
+O4 = [0, 0]
+B = [5, 0]
+[drive]
+link = 4
+angle = 142.08
+"""
+    with pytest.raises(AssemblyError) as e:
+        graphkin.loads(text).solve()
+    assert ("O2 and B are only 5.4998 in apart, less than the difference of their lengths, "
+            "5.5 in") in str(e.value)
+
+
 def test_a_key_in_the_wrong_case_is_suggested_first() -> None:
     # V_e: V_P is as close by letters, but V_E is the same key in another case
     assert suggest("V_e", ["V_P", "V_E", "V_C"]) == " (did you mean 'V_E'?)"

@@ -134,7 +134,8 @@ class Cam:
             raise InputError("a roller follower needs its roller's radius (> 0)",
                              key="follower.roller", file=src)
         if f.kind.roller and f.roller >= self.prime:
-            raise InputError(f"the roller (radius {f.roller:g}) is as big as the prime circle "
+            size = "as big as" if f.roller == self.prime else "bigger than"
+            raise InputError(f"the roller (radius {f.roller:g}) is {size} the prime circle "
                              f"({self.prime:g}): no base circle is left, the follower cannot "
                              "follow", key="follower.roller", file=src)
         if f.kind in (FollowerKind.KNIFE_EDGE, FollowerKind.ROLLER) and \

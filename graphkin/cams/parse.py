@@ -307,7 +307,10 @@ class _Reader:
         if motion is Motion.TABLE:
             if "lift" in t:
                 raise self.fail(f"{key}.lift", "a table's lift is given by its points")
-            return Segment(motion, 0.0, beta, None, name, self.points(t, key, beta, angular))
+            table = self.points(t, key, beta, angular)
+            # its lift is the change of displacement over it, as for the other motions
+            # (the report's lift column; the points themselves are absolute)
+            return Segment(motion, table[1][-1] - table[1][0], beta, None, name, table)
         if "points" in t:
             raise self.fail(f"{key}.points", "points belong to motion = \"table\"")
         if motion is Motion.DWELL:

@@ -55,7 +55,8 @@ class Segment:
     motion : Motion
     lift : float
         ``h``: positive for a rise, negative for a return, 0 for a dwell
-        (length, or radians for an oscillating follower).
+        (length, or radians for an oscillating follower); for a table, its last
+        displacement less its first.
     angle : float
         ``β``, the segment's cam angle (rad), positive.
     rest : Rest, optional

@@ -124,6 +124,18 @@ def _default_unit(kind: str, length_unit: str) -> str:
             "acceleration": f"{length_unit}/s^2", "length": length_unit, "angle": "deg"}[kind]
 
 
+def _no_sense(sense: str | None, value: Any, key: str, file: str | None) -> None:
+    """Refuse cw/ccw on a vector or a length: only ω and α turn (answers.md).
+
+    ``V_E = "27.6 ft/s cw"`` was read as the magnitude alone, the sense dropped
+    without a word; the student meant a direction, or wrote ω's sense on V.
+    """
+    if sense is not None:
+        raise InputError(f"{value!r}: cw/ccw is the sense of an ω or α; give a velocity, "
+                         "an acceleration or a length its direction (\"27.6 ft/s at 165 "
+                         "deg\") or its magnitude alone", key=key, file=file)
+
+
 def _quantity(value: Any, kind: str, mech: Mechanism, key: str,
               file: str | None) -> tuple[float, str | None, str, float]:
     """(internal value, sense, display unit, unit factor) of one number or string."""
@@ -181,7 +193,8 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         if isinstance(value, str) and _INFINITY.match(value):
             g.value, g.unit = math.inf, mech.length_unit
             return g
-        v, _, g.unit, g.factor = _quantity(value, "length", mech, k, file)
+        v, sense, g.unit, g.factor = _quantity(value, "length", mech, k, file)
+        _no_sense(sense, value, k, file)
         g.value = abs(v)
         return g
     if key.shape == "point":
@@ -213,7 +226,8 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         if "magnitude" not in value:
             raise InputError("a vector table has magnitude and, optionally, direction",
                              key=k, file=file)
-        mag, _, g.unit, g.factor = _quantity(value["magnitude"], kind, mech, k, file)
+        mag, sense, g.unit, g.factor = _quantity(value["magnitude"], kind, mech, k, file)
+        _no_sense(sense, value["magnitude"], k, file)
         d = value.get("direction", value.get("angle"))
         g.value = abs(mag)
         if d is not None:
@@ -227,7 +241,8 @@ def parse_value(key: Key, value: Any, mech: Mechanism, *, file: str | None = Non
         return g
     if isinstance(value, str):
         parts = _AT.split(value, maxsplit=1)
-        mag, _, g.unit, g.factor = _quantity(parts[0].strip(), kind, mech, k, file)
+        mag, sense, g.unit, g.factor = _quantity(parts[0].strip(), kind, mech, k, file)
+        _no_sense(sense, value, k, file)
         g.value = abs(mag)
         if len(parts) == 2:
             g.direction = (_quantity(parts[1].strip(), "angle", mech, k, file)[0]

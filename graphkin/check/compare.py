@@ -156,11 +156,11 @@ def _on_sheet(c: Comparison, given: Given, exact: Exact, tol: CheckTolerance,
     if on_paper <= mm:
         if c.ok:
             return c
-        return Comparison(True, c.error, f"within {mm:g} mm on the drawing ({on_paper:.2g} mm "
+        return Comparison(True, c.error, f"within {mm:g} mm on the drawing ({mm_text(on_paper)} mm "
                                          f"off; {c.rule})")
     if c.ok:
         return c
-    return Comparison(False, c.error, f"{c.rule}, and {on_paper:.2g} mm off on the drawing "
+    return Comparison(False, c.error, f"{c.rule}, and {mm_text(on_paper)} mm off on the drawing "
                                       f"(more than {mm:g} mm)")
 
 
@@ -241,6 +241,15 @@ def _point(given: Given, exact: Exact, tol: CheckTolerance,
     return Comparison(ok, f"{dist / given.factor:.4g} {given.unit} ({dist / ref * 100:.2f} %)",
                       f"{'within' if ok else 'outside'} {tol.relative * 100:g} % of the "
                       "mechanism's size")
+
+
+def mm_text(x: float) -> str:
+    """A distance on the drawing in mm, two significant figures, never an exponent.
+
+    >>> mm_text(131.7), mm_text(4.93), mm_text(0.0123), mm_text(2e-4)
+    ('130', '4.9', '0.012', '0')
+    """
+    return f"{float(f'{x if x >= 5e-4 else 0.0:.2g}'):g}"
 
 
 def _sense_word(x: float) -> str:

@@ -58,7 +58,7 @@ from graphkin.check.answers import (
     read_scale,
 )
 from graphkin.check.carry import own_follow_through
-from graphkin.check.compare import direction_text, fmt
+from graphkin.check.compare import direction_text, fmt, mm_text
 from graphkin.check.diagnose import Diagnoser
 from graphkin.check.exact import Evaluator
 from graphkin.check.fit import Fit, fit_factor
@@ -402,7 +402,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             row = check_given(ev, diag, given, tol)
             if mm_per_unit is not None:
                 mm = dist / abs(turn) * mm_per_unit
-                row.error += f"; {mm if mm >= 5e-4 else 0.0:.2g} mm on the drawing"
+                row.error += f"; {mm_text(mm)} mm on the drawing"
             else:
                 row.error += f"; {dist / factor:.3g} {unit} from exact"
         rows.append(row)

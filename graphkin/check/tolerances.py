@@ -207,6 +207,11 @@ def parse_fraction(value: Any, *, key: str, file: str | None = None) -> float:
                          file=file) from None
     if not (math.isfinite(v) and v > 0):
         raise InputError(f"{value!r} must be a positive fraction", key=key, file=file)
+    if v >= 1:
+        # relative = 2 meant 2 %, not 200 %: a tolerance that passes any answer of the
+        # right sign is a slip, not a choice
+        raise InputError(f"{value!r} is {v * 100:g} %: a relative tolerance is a fraction "
+                         f"below 1 (write 0.02 or \"2 %\")", key=key, file=file)
     return v
 
 

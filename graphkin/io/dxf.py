@@ -267,7 +267,13 @@ def _point_name(label: str, diagram: str, names: list[str]) -> str | None:
     pre = _IMAGE[diagram] + "("
     if label.startswith(pre) and label.endswith(")"):
         inner = label[len(pre):-1]
-        return inner if inner in names else None
+        if inner in names:
+            return inner
+        # the point of link k at P (a slider's or a slot's coincident point, ``v(A@4)``):
+        # labelled ``a4`` as docs/checking.md reads it, not left without a label
+        point, at, link = inner.partition("@")
+        if at and point in names and link and ":" not in link:
+            return f"{point}{link}"
     return None
 
 

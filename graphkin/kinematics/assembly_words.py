@@ -66,6 +66,23 @@ def _line_words(label: str, point: str) -> str:
     return f"the line {label}"
 
 
+def _unlike(a: float, b: float) -> tuple[str, str]:
+    """Two lengths compared in a message, with digits enough to tell them apart.
+
+    Four significant digits, more (up to ten) while they read the same: a posture
+    a hair past its limit is "5.4998 in apart, less than 5.5 in", never "5.5 in
+    apart, less than 5.5 in".
+
+    >>> _unlike(5.4996, 5.5), _unlike(40.0, 29.0)
+    (('5.4996', '5.5'), ('40', '29'))
+    """
+    for digits in range(4, 11):
+        sa, sb = fmt(a, digits), fmt(b, digits)
+        if sa != sb:
+            return sa, sb
+    return sa, sb
+
+
 def assembly_words(mech: Any, step: Step, args: list[Any]) -> str | None:
     """One sentence on why ``step`` has no answer, in the mechanism's terms; None if unknown.
 
@@ -102,8 +119,9 @@ def assembly_words(mech: Any, step: Step, args: list[Any]) -> str | None:
         if n == 0:
             return None
         d = abs(line[0] * c[0] + line[1] * c[1] + line[2]) / n
-        return (f"link {lid} ({about}{to} = {fmt(r, 4)} {unit}) cannot reach "
-                f"{_line_words(line_label, to)}: it needs at least {fmt(d, 4)} {unit} "
+        rs, ds = _unlike(r, d)
+        return (f"link {lid} ({about}{to} = {rs} {unit}) cannot reach "
+                f"{_line_words(line_label, to)}: it needs at least {ds} {unit} "
                 f"(the distance from {about} to that line)")
     if step.op == "intersect_circles" and len(step.inputs) == 2:
         a1 = _arc(mech, step.inputs[0], vals[step.inputs[0]])
@@ -115,8 +133,10 @@ def assembly_words(mech: Any, step: Step, args: list[Any]) -> str | None:
         both = (f"link {l1} ({p1}{t1} = {fmt(r1, 4)} {unit}) and link {l2} "
                 f"({p2}{t2} = {fmt(r2, 4)} {unit})")
         if d > r1 + r2:
-            return (f"{both} cannot reach each other: {p1} and {p2} are {fmt(d, 4)} {unit} "
-                    f"apart, more than {fmt(r1, 4)} + {fmt(r2, 4)} = {fmt(r1 + r2, 4)} {unit}")
-        return (f"{both} cannot meet: {p1} and {p2} are only {fmt(d, 4)} {unit} apart, less "
-                f"than the difference of their lengths, {fmt(abs(r1 - r2), 4)} {unit}")
+            ds, ss = _unlike(d, r1 + r2)
+            return (f"{both} cannot reach each other: {p1} and {p2} are {ds} {unit} "
+                    f"apart, more than {fmt(r1, 4)} + {fmt(r2, 4)} = {ss} {unit}")
+        ds, ss = _unlike(d, abs(r1 - r2))
+        return (f"{both} cannot meet: {p1} and {p2} are only {ds} {unit} apart, less "
+                f"than the difference of their lengths, {ss} {unit}")
     return None

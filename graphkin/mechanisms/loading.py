@@ -402,8 +402,8 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
             which = "mass" if "mass" in item else "weight"
             raise fail(f"{key}.{which}", str(exc)) from None
         if not mass >= 0:
-            raise fail(f"{key}.{'mass' if 'mass' in item else 'weight'}",
-                       f"a mass cannot be negative ({mass:g})")
+            which = "mass" if "mass" in item else "weight"
+            raise fail(f"{key}.{which}", f"a {which} cannot be negative ({item[which]!r})")
         moment = 0.0
         if "moment" in item:
             try:
@@ -412,7 +412,7 @@ def force_fields(data: Mapping[str, Any], links: Mapping[str, Any], length_unit:
                 raise fail(f"{key}.moment", str(exc)) from None
             if not moment >= 0:
                 raise fail(f"{key}.moment", f"a moment of inertia cannot be negative "
-                           f"({moment:g})")
+                           f"({item['moment']!r})")
         inertia[lid] = Inertia(lid, center, mass, moment)
     out["inertia"] = inertia
 

@@ -29,6 +29,9 @@ __all__ = ["kennedy_panel", "RADIUS"]
 RADIUS = 0.85
 """Radius of the Kennedy circle, in inches of paper."""
 
+_CHAR = 0.1
+"""A link name's width per letter, in inches (the 11 pt italic of ``number``)."""
+
 
 def kennedy_panel(ic: Any, prefix: str = "") -> Panel:
     """A panel with the Kennedy circle of ``ic`` (an InstantCenters), drawn in inches.
@@ -44,7 +47,9 @@ def kennedy_panel(ic: Any, prefix: str = "") -> Panel:
     pos = {str(k): np.asarray(v, dtype=float) * RADIUS for k, v in data["positions"].items()}
     p = Panel("kennedy", "kennedy", "Kennedy circle", "in", prefix=prefix)
     r = RADIUS
-    p.view = (-r - 0.45, -r - 0.45, r + 0.45, r + 0.7)
+    # a link named by a word ("crank") reaches out sideways from its vertex: room for it
+    side = max(0.45, 0.1 + _CHAR * max((len(x) for x in links), default=1))
+    p.view = (-r - side, -r - 0.45, r + side, r + 0.7)
     p.bbox = (-r, -r, r, r)
     g = p.group(f"{prefix}kennedy-circle", 1.0, key="Kennedy circle")
     g.items.append(Item("circle", np.array([[0.0, 0.0]]), "kennedy-circle", radius=r,
@@ -53,9 +58,17 @@ def kennedy_panel(ic: Any, prefix: str = "") -> Panel:
         q = pos[lid]
         g.items.append(Item("marker", np.array([q]), "point", key=f"kennedy {lid}"))
         u = q / max(float(np.hypot(*q)), 1e-12)
-        g.items.append(Item("text", np.array([q + 0.16 * u]), "number",
+        at, ha, va = q + 0.16 * u, "center", "center"
+        if len(lid) > 2:
+            # a name longer than a link number ("crank") is set outward from its
+            # vertex, by its near side 0.1 in off the circle: centred, it ran back
+            # over the vertex's dot and the chords
+            at = q + 0.1 * u
+            ha = "left" if u[0] > 0.3 else "right" if u[0] < -0.3 else "center"
+            va = "bottom" if u[1] > 0.3 else "top" if u[1] < -0.3 else "center"
+        g.items.append(Item("text", np.array([at]), "number",
                             gid=f"{prefix}kennedy-link-{safe_id(lid)}", text=lid,
-                            key=f"kennedy link {lid}"))
+                            key=f"kennedy link {lid}", ha=ha, va=va))
     edges = sorted(data["edges"], key=lambda e: (e["order"] is None, e["order"] or 0))
     for e in edges:
         a, b = (str(x) for x in e["pair"])

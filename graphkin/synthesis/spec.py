@@ -25,6 +25,7 @@ import numpy as np
 from graphkin.errors import InputError
 from graphkin.files import parse_toml, read_text
 from graphkin.keys import SYNTHESIS, nearest, read_units
+from graphkin.synthesis.analytic import chebyshev
 from graphkin.synthesis.postures import Postures
 
 __all__ = ["Spec", "FunctionSpec", "PathSpec", "load_spec", "loads_spec", "SCHEMA",
@@ -464,10 +465,21 @@ class _Reader:
 
         i0, i1 = pair("input", (30.0, 90.0))
         o0, o1 = pair("output", (240.0, 90.0))
-        ys = fun(np.array([x0, x1]))
+        with np.errstate(all="ignore"):  # a constant ("3") is one number: both ends
+            ys = np.broadcast_to(fun(np.array([x0, x1])), (2,))
         if not np.all(np.isfinite(ys)) or ys[0] == ys[1]:
             raise self.fail("function.expression", f"{expr!r} is not finite and different at "
                                                    "the ends of the range")
+        # inside the range too: at the precision points (Chebyshev, Eq. 9.22) and where
+        # the structural error is sampled, so a pole or a log(x - 1) is named, not blamed
+        # on Freudenstein's equation ("r3² < 0")
+        inside = np.concatenate([chebyshev(x0, x1, 3), np.linspace(x0, x1, 201)])
+        with np.errstate(all="ignore"):
+            bad = ~np.isfinite(np.broadcast_to(fun(inside), inside.shape))
+        if np.any(bad):
+            raise self.fail("function.expression", f"{expr!r} is not finite at x = "
+                                                   f"{inside[np.argmax(bad)]:.6g}, inside the "
+                                                   "range")
         ground = self.number(f.get("ground", 1.0), "function.ground")
         if ground <= 0:
             raise self.fail("function.ground", "the ground link's length must be positive")

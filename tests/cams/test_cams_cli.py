@@ -132,8 +132,12 @@ angle = 180
      ["segment[0]", "segment 1 (cycloidal rise): the displacement jumps from 10 to 0"]),
     (BASE.replace("prime = 40", "prime = -4") + SEGS,
      ["cam.prime", "must be positive"]),
+    # a 45 mm roller on a 40 mm prime circle is bigger than it, not "as big as" (audit9)
     (BASE.replace("roller = 12", "roller = 45") + SEGS,
-     ["follower.roller", "the follower cannot follow"]),
+     ["follower.roller", "the roller (radius 45) is bigger than the prime circle (40)",
+      "the follower cannot follow"]),
+    (BASE.replace("roller = 12", "roller = 40") + SEGS,
+     ["follower.roller", "the roller (radius 40) is as big as the prime circle (40)"]),
     (BASE.replace("prime = 40", "prime = 40\nrotaton = \"cw\"") + SEGS,
      ["cam.rotaton", "did you mean 'rotation'"]),
     (BASE + SEGS.replace("cycloidal", "cycloidel", 1),
@@ -282,3 +286,19 @@ def test_writing_a_file_says_so(capsys, tmp_path, ext):
     out = tmp_path / f"profile.{ext}"
     rc, text, err = _run(capsys, CAMS / "ex6_6_roller.toml", "-o", out)
     assert rc == 0 and out.exists() and f"wrote {out}" in err and f"wrote {out}" not in text
+
+
+def test_a_table_segment_reports_its_lift(capsys, tmp_path):
+    # A table rising from Y = 0 to Y = 20 mm over 180°, then a harmonic return of -20 mm:
+    # its lift is 20 - 0 = 20 mm, as the return's -20 mm says (audit9: reported "0 mm").
+    f = tmp_path / "t.toml"
+    f.write_text('units = "mm"\n[cam]\nprime = 40\n[follower]\nkind = "roller"\nroller = 10\n'
+                 '[[segment]]\nmotion = "table"\nangle = 180\n'
+                 'points = [[0, 2], [45, 5], [90, 12], [135, 19], [180, 22]]\n'
+                 '[[segment]]\nmotion = "harmonic"\nlift = -20\nangle = 180\n')
+    assert main(["cam", str(f), "--json"]) == 0
+    segs = json.loads(capsys.readouterr().out)["segments"]
+    assert [s["lift"] for s in segs] == [20, -20]
+    assert main(["cam", str(f)]) == 0
+    row = next(r for r in capsys.readouterr().out.splitlines() if " table " in r)
+    assert "20 mm" in row and "0 mm" not in row.replace("20 mm", "")

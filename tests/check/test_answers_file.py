@@ -87,6 +87,10 @@ def _run(tmp_path: Path, examples: Path, text: str, capsys: pytest.CaptureFixtur
     ("I13 = \"somewhere\"", "I13"),
     ("tolerance = { relative = -1 }", "tolerance.relative"),
     ("tolerance = { percent = 2 }", "tolerance.percent"),
+    # audit9: a sense on a vector or a length was dropped without a word (marked on its size)
+    ("V_E = \"27.6 ft/s cw\"", "V_E: '27.6 ft/s cw': cw/ccw is the sense of an ω or α"),
+    ("A_CB = { magnitude = \"2580 ft/s^2 ccw\" }", "A_CB: '2580 ft/s^2 ccw': cw/ccw"),
+    ("rho_E = \"4.3 in cw\"", "rho_E: '4.3 in cw': cw/ccw"),
     ("student = \"x\"", "no answers"),
     ("[V_E]\nx = 1", "V_E"),
 ])
@@ -123,6 +127,11 @@ def test_rates_needed(tmp_path: Path, examples: Path, capsys: pytest.CaptureFixt
      "valid: relative, angle, drawing, scale"),
     ('tolerance = { relative = -1 }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
      "positive"),
+    # audit9: relative = 2 meant 2 %; read as 200 % it passed every answer of the right sign
+    ('tolerance = { relative = 2 }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
+     "2 is 200 %: a relative tolerance is a fraction below 1"),
+    ('tolerance = { relative = "150 %" }\nomega3 = "25.4 rad/s ccw"', "tolerance.relative",
+     "is 150 %"),
     ('omgea3 = 2\nomega3 = "25.4 rad/s ccw"', "omgea3", "did you mean 'omega3'"),
 ])
 def test_bad_entry_is_reported_and_the_rest_marked(tmp_path: Path, examples: Path, text: str,

@@ -50,6 +50,27 @@ def test_dxf_round_trip_is_exact(fourbar: Path, tmp_path: Path, diagram: str,
         assert float(r.error.split("; ")[1].split()[0]) < 1e-6
 
 
+def test_dxf_labels_the_point_of_the_slotted_link(examples: Path, tmp_path: Path) -> None:
+    # Example 3.3 (inverted slider): A of crank 2 and the coincident point A4 of rod 4.
+    # The DXF labelled v(A@4) nothing, so the image a4 was not marked at all (audit9);
+    # docs/checking.md reads "a4" as the point of link 4 at A: V_A4 = ω4 × R_AD.
+    pytest.importorskip("ezdxf")
+    from graphkin.io.dxf import write_dxf
+
+    f = examples / "ex3_3_inverted_slider.toml"
+    mech = graphkin.load(f)
+    sol = mech.solve()
+    an = solve_analytic(mech)
+    r = np.asarray(an.position("A")) - np.asarray(an.position("D"))
+    v_a4 = math.hypot(*r) * abs(float(an.omega("4")))
+    rep = check_drawing(sol, write_dxf(sol, "velocity", tmp_path / "v.dxf"))
+    rows = {r.key: r for r in rep.rows}
+    assert "V_A4" in rows and rows["V_A4"].verdict == "ok"
+    assert float(rows["V_A4"].given.split()[0]) == pytest.approx(v_a4, rel=1e-3)
+    rep = check_drawing(sol, write_dxf(sol, "acceleration", tmp_path / "a.dxf"))
+    assert {"A_A", "A_A4"} <= {r.key for r in rep.rows}
+
+
 def test_started_drawing_has_only_the_first_steps(fourbar: Path, tmp_path: Path) -> None:
     pytest.importorskip("ezdxf")
     from graphkin.io.dxf import read_dxf, write_dxf
@@ -139,6 +160,23 @@ def test_svg_with_stated_scale(fourbar: Path, tmp_path: Path,
     # a wrong stated scale: every vector twice too long or too short
     assert main(["check", str(fourbar), "--drawing", str(svg), "--scale", "1 in = 40 ft/s"]) == 1
     capsys.readouterr()
+
+
+def test_a_reversed_polygon_is_off_by_plain_millimetres(fourbar: Path, tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    # The polygon of Example 3.1 drawn for the wrong sense of ω2 at 1 in = 10 ft/s: every
+    # image is twice its length away, 2|V_B|/120 in; |V_B| = 4 in * 94.25 rad/s = 377 in/s
+    # (Ex. 3.1), so b is 2 * 377 / 120 * 25.4 = 159.6 mm off: printed "160 mm", never
+    # "1.6e+02 mm" (audit9: a reversed inch-sized polygon printed "1.3e+02 mm").
+    mech = graphkin.load(fourbar)
+    an = solve_analytic(mech)
+    pts = {"O_V": np.zeros(2)} | {p.lower(): -an.velocity(p) / 120.0 for p in "BCEF"}
+    svg = tmp_path / "v.svg"
+    svg.write_text(_svg(dict(pts), "1 in = 10 ft/s"))
+    assert main(["check", str(fourbar), "--drawing", str(svg)]) == 1
+    out = capsys.readouterr().out
+    assert "e+" not in out
+    assert "; 160 mm on the drawing" in out and "160 mm off on the drawing" in out
 
 
 # ---- batch marking ---------------------------------------------------------------------

@@ -100,3 +100,39 @@ def test_a_rim_point_moved_by_round_off_keeps_the_planet_a_gear(rim):
     found, hidden = _numbers(graphkin.loads(text))
     assert found == {"1": ["1"], "2": ["2"], "3": ["3"]}, found
     assert not hidden, hidden
+
+
+def test_a_link_named_by_a_word_stands_clear_of_the_kennedy_circle() -> None:
+    # audit9: a four-bar whose crank is [links.crank]; its name was centered 0.16 in
+    # outside its vertex on the Kennedy circle, so "crank" (five letters, ~0.5 in) ran
+    # back over the vertex's dot and the chords, and off the panel's right edge.
+    text = """units = "in"
+[links.1]
+O2 = [0, 0]
+O4 = [7, 1.5]
+[links.crank]
+O2 = [0, 0]
+A = [2.5, 0]
+[links.3]
+A = [0, 0]
+B = [8, 0]
+[links.4]
+O4 = [0, 0]
+B = [5, 0]
+[drive]
+link = "crank"
+angle = 215
+omega = 10
+[assembly]
+B = [6, 6]
+"""
+    with rc_context():
+        root = ET.fromstring(to_bytes(draw(graphkin.loads(text).solve(), "centers").figure))
+    from svg_boxes import page, strokes
+
+    notes = {n.gid: n for n in texts(root)}
+    for lid in ("1", "crank", "3", "4"):
+        box = notes[f"kennedy-link-{lid}"].box
+        assert page(root).contains(box), lid
+        circle = [s for g, s in strokes(root) if g.startswith("kennedy-")]
+        assert circle and not any(box.intersects(s) for s in circle), lid

@@ -118,6 +118,14 @@ def test_written_mechanism_reaches_postures(post: Postures, ax: float, ay: float
         (-0.452649, -0.215597, -15.898887), (-2.019986, -0.231932, 19.892767),
         (-0.865213, 3.323000, 54.508406))), "postures"),
     ("[function]\nexpression = \"__import__('os')\"\nrange = [1, 2]\n", "function.expression"),
+    # audit9: a pole at the middle precision point (Chebyshev x2 = 1 on [0.5, 1.5]) was
+    # blamed on Freudenstein's equation ("r3² < 0"), a pole between the precision points
+    # was accepted, and a constant crashed (IndexError)
+    ("[function]\nexpression = \"1/(x - 1)\"\nrange = [0.5, 1.5]\n",
+     "function.expression: '1/(x - 1)' is not finite at x = 1,"),
+    ("[function]\nexpression = \"1/(x - 1.1)\"\nrange = [0.5, 1.5]\n",
+     "function.expression: '1/(x - 1.1)' is not finite at x = 1.1,"),
+    ("[function]\nexpression = \"3\"\nrange = [0.5, 1.5]\n", "function.expression"),
     ("[path]\npoints = [[0, 0], [1, 0], [2, 0]]\ncrank = [0, 10, 20]\ncoupler = [5, 0, 0]\n",
      "path.coupler[0]"),
 ])
