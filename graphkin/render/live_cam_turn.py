@@ -69,9 +69,10 @@ OUTLINE = 120
 
 TURN_JS = r"""// the cams turned to the drive's angle x (render/live_cam_turn.py): each cam
 // evaluated by its operations (cam_program, cam_center), its linkage's numbers in Kc
-// the angle x of each cam's link is its drive's input in J (the first drive's, or another's)
+// the angle x of each cam's link is its drive's input in J (the first drive's, or another's;
+// a number J: every cam's link at that angle)
 function gkTurn(T, J, Kc) {
-  const got = [], xs = T.cams.map((c) => J[c.input]);
+  const got = [], xs = T.cams.map((c) => typeof J === "number" ? J : J[c.input]);
   for (const [i, c] of T.cams.entries()) {
     const x = xs[i], I = {}; I[c.input] = x;
     const v = gkCamFns[c.fn](I, c.K);
