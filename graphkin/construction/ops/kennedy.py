@@ -35,7 +35,7 @@ The outputs are the center (homogeneous), the two lines used (unit normal;
 the same line twice at infinity) and the index of the pair used, so the page
 draws the lines the posture uses.  Both writers read the one template
 here; Python's general function is the numpy below, which the template is
-tested against (tests/render/test_live_kennedy_route.py).
+tested against (tests/render/test_live_cam_centers.py).
 
 References
 ----------

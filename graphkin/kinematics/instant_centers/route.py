@@ -7,12 +7,13 @@ pointer move needs a route that holds at every posture: two lines that meet
 well at the file's posture can be parallel, or one of their centers at
 infinity, at another (a cam's follower, a dragged crank).
 
-The route here fixes only what does not depend on the posture: the order in
-which the centers are found (the Kennedy circle's: the first pair, in the
-order I12, I13, ..., that two known lines reach, as the search does) and,
-for each center, *every* line of centers that reaches it (each triangle
-whose two other centers are known, and the common normals of a direct
-contact).  Each center is then one step ``kennedy_center``
+The route here fixes only the order in which the centers are found: the
+search's own order at the given posture wherever two known lines reach the
+next center (the search passes over lines that coincide there), else the
+first pair, in the order I12, I13, ..., that two known lines reach.  Each
+center is then given *every* line of centers that reaches it at that point
+of the order (each triangle whose two other centers are known, and the common
+normals of a direct contact).  Each center is then one step ``kennedy_center``
 (:mod:`graphkin.construction.ops.kennedy`) that meets the best-conditioned
 pair of those lines at whatever posture it is evaluated on, by the search's
 own measure.  A center no two lines reach (two inputs, Sec. 5.4) is taken
