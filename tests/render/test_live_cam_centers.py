@@ -41,7 +41,7 @@ from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.kinematics.instant_centers import instant_centers
 from graphkin.mechanisms import from_dict
-from graphkin.render.live import live_data, live_html
+from graphkin.render.live import live_html
 from graphkin.tolerance import DEFAULT_TOL
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -110,12 +110,12 @@ def _check_cycle(browser, data: dict, source: str, angles) -> int:
 
 def _open(browser, tmp_path: Path, data: dict, source: str) -> None:
     mech = from_dict(data, source=source)
-    d, _ = live_data(mech, data, source)
-    assert d.get("turn") is not None
-    assert d["centers"]["fn"] is not None, d["centers"]["why"]
     page = tmp_path / "page.html"
     page.write_text(live_html(mech, data, source), encoding="utf-8")
     browser.open(page)
+    d = browser.js("JSON.parse(document.getElementById('gk-data').textContent)")
+    assert d.get("turn") is not None
+    assert d["centers"]["fn"] is not None, d["centers"]["why"]
 
 
 @pytest.mark.parametrize("path", CAM_FILES + MECHANISMS, ids=lambda p: p.stem)
@@ -124,17 +124,17 @@ def test_every_cam_page_s_centers_are_graphkin_s_over_the_cycle(browser, tmp_pat
     data = _data(path)
     _open(browser, tmp_path, data, str(path))
     d0 = from_dict(data, source=str(path)).drives[0].value
-    # 12 angles over the turn
-    angles = [d0 + math.radians(a) for a in np.arange(0.0, 360.0, 30.0) + 7.0]
+    # 9 angles over the turn
+    angles = [d0 + math.radians(a) for a in np.arange(0.0, 360.0, 40.0) + 7.0]
     assert _check_cycle(browser, data, str(path), angles) > 0
 
 
-@settings(examples(4), deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
+@settings(examples(3), deadline=None, phases=[Phase.explicit, Phase.reuse, Phase.generate])
 @given(data=st.data(), theta2=st.floats(0.0, 360.0), axis=st.sampled_from([90.0, 0.0, 210.0]),
        turns=st.tuples(st.floats(-math.pi, math.pi), st.floats(0.5, 1.5),
                        st.floats(-math.pi, math.pi), st.floats(0.5, 1.5)).filter(
                            lambda t: abs(math.sin(t[2] - t[0])) > 0.2),
-       angles=st.lists(st.floats(0.0, 2 * math.pi), min_size=4, max_size=6))
+       angles=st.lists(st.floats(0.0, 2 * math.pi), min_size=3, max_size=5))
 def test_random_cam_mechanisms_centers_are_graphkin_s(browser, tmp_path_factory, data, theta2,
                                                       axis, turns, angles) -> None:
     cam = data.draw(cams())
@@ -150,7 +150,7 @@ def test_random_cam_mechanisms_centers_are_graphkin_s(browser, tmp_path_factory,
     _check_cycle(browser, file, "random.toml", angles)
 
 
-@examples(15)
+@examples(8)
 @given(pts=st.lists(st.tuples(st.floats(-5.0, 5.0), st.floats(-5.0, 5.0),
                               st.sampled_from([1.0, 1.0, 0.0])), min_size=6, max_size=6),
        normal=st.tuples(st.floats(-math.pi, math.pi), st.floats(-5.0, 5.0)),
