@@ -480,7 +480,8 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         for key in ("pivot", "tip", "phi", "relative"):
             data["drive"].pop(key, None)
         return
-    deg = f"{math.degrees(mech.drives[0].value):g}°"
+    # the cam's own angle Θ at the file's posture (its link's angle; the crank's when on it)
+    deg = f"Θ = {math.degrees(mech.cams[0].theta):g}°"
     # (an angle where the rest of the mechanism cannot be assembled has no centers to compare)
     if any(_route(data.get("centers")) != _route(other.get("centers")) for other in others
            if (other.get("centers") or {}).get("fn")):
