@@ -18,7 +18,8 @@ chooses at each posture it is evaluated on, by the same measure:
 * two lines meet as well as the sine of the angle between them as unit
   vectors ``(a, b, c/s)`` (how far from coincident they are);
 * a pair is as good as the least of its three; the best pair is taken, the
-  first of equals in the order given.  Below the angle tolerance
+  first of equals in the order given (a later pair only when better by more
+  than :data:`graphkin.tolerance.VERDICT_REL`: round-off never decides).  Below the angle tolerance
   (:class:`graphkin.tolerance.Tolerance`) no pair is clean and there is no
   answer (NaN; the written-out function returns null).
 
@@ -33,9 +34,11 @@ the point at infinity of the best of its lines.
 
 The outputs are the center (homogeneous), the two lines used (unit normal;
 the same line twice at infinity) and the index of the pair used, so the page
-draws the lines the posture uses.  Both writers read the one template
-here; Python's general function is the numpy below, which the template is
-tested against (tests/render/test_live_cam_centers.py).
+draws the lines the posture uses.  The operation is one entry of the table
+both writers read (``@template(..., python=False)``): the JavaScript writer
+writes the template; the Python writer and the replay call the numpy general
+function below, which the template is tested against
+(tests/render/test_live_cam_centers.py).
 
 References
 ----------
