@@ -41,7 +41,7 @@ from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.kinematics.instant_centers import instant_centers
 from graphkin.mechanisms import from_dict
-from graphkin.render.live import live_html
+from graphkin.render.live import live_data, live_html
 from graphkin.tolerance import DEFAULT_TOL
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -201,3 +201,22 @@ def test_the_kennedy_center_template_is_the_operation(pts, normal, near, at_infi
         ln = np.asarray(ref[lab], dtype=float)
         assert abs(float(np.dot(ln, r))) <= 1e-9 * (1.0 + abs(ln[2])), lab
     assert DEFAULT_TOL.angle < 1e-6
+
+
+@pytest.mark.parametrize("path", MECHANISMS, ids=lambda p: p.stem)
+def test_the_route_does_not_rest_on_round_off(path: Path) -> None:
+    # every length of the file and the drive's angle moved by 1e-12 of their size: the same
+    # route on the page (its centers, lines, candidate pairs and what it says)
+    data = _data(path)
+    src = str(path)
+    ref, _ = live_data(from_dict(data, source=src), data, src)
+    bumped = copy.deepcopy(data)
+    mech = from_dict(data, source=src)
+    for lk in bumped["links"].values():
+        for n, xy in lk.items():
+            lk[n] = [v + 1e-12 * mech.scale for v in xy]
+    dr = bumped["drive"][0] if isinstance(bumped["drive"], list) else bumped["drive"]
+    dr["angle"] = dr["angle"] * (1.0 + 1e-12)
+    got, _ = live_data(from_dict(bumped, source=src), bumped, src)
+    for key in ("labels", "lines", "joins", "meets", "kennedy", "why"):
+        assert got["centers"][key] == ref["centers"][key], key
