@@ -135,9 +135,45 @@ def _drive_angle(data: Mapping[str, Any], cam_link: str, key: str, source: str,
             if sense is not None or not math.isfinite(deg):
                 raise _fail("drive.angle", "an angle in degrees (counterclockwise)", source)
             return math.radians(deg)
+        if isinstance(d, Mapping) and str(d.get("link")) == cam_link and \
+                isinstance(d.get("follows"), Mapping):
+            where = f"drive[{drives.index(d)}].follows" if len(drives) > 1 else "drive.follows"
+            return _follows_angle(drives, d["follows"], where, unit, source)
     raise _fail(f"{key}.link", f"the cam's link {cam_link} must be the drive, by its angle "
                 f"([drive] link = {cam_link}, angle = ...): the cam's angle places the "
                 "follower", source)
+
+
+def _follows_angle(drives: list[Any], law: Mapping[str, Any], key: str, unit: str,
+                   source: str) -> float:
+    """The cam link's angle (rad) where its drive follows the first by a linear law.
+
+    ``θ = ratio θ_first + offset`` (degrees, :mod:`graphkin.mechanisms.laws`),
+    the first drive an angle: the cam turns with the crank that drives it
+    (a belt, a gear pair written as the law).  The rest of the law (its link,
+    its numbers) is checked where the drive is read.
+    """
+    first = drives[0] if drives else None
+    if not isinstance(first, Mapping) or "angle" not in first or "relative_to" in first:
+        raise _fail(key, "a cam's link follows the first drive by its angle only (the first "
+                    "drive an absolute angle)", source)
+    if "table" in law:
+        raise _fail(key, "a cam's link follows the first drive by a ratio and an offset, not "
+                    "a table", source)
+    vals = []
+    for raw, what in ((first["angle"], "drive.angle"), (law.get("offset", 0.0), key)):
+        try:
+            deg, sense = parse_quantity(raw, "angle", unit)
+        except ValueError as exc:
+            raise _fail(what, str(exc)[:200], source) from None
+        if sense is not None or not math.isfinite(deg):
+            raise _fail(what, "an angle in degrees (counterclockwise)", source)
+        vals.append(deg)
+    ratio = law.get("ratio", 1.0)
+    if isinstance(ratio, bool) or not isinstance(ratio, (int, float)) or \
+            not math.isfinite(float(ratio)):
+        raise _fail(f"{key}.ratio", "the ratio is a finite number", source)
+    return math.radians(float(ratio) * vals[0] + vals[1])
 
 
 def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[CamJoint, ...]]:

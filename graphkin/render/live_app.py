@@ -353,6 +353,17 @@ function drawCenters(g) {
   const on = {};
   for (const [lab, p, q] of C.joins) on[lab] = [p, q];
   for (const [lab, l1, l2] of C.meets) { on[l1].push(lab); on[l2].push(lab); }
+  // a center on the best pair of its lines at this posture (kennedy_center): the two it used
+  const seen = {};
+  for (const lab of Object.keys(C.kennedy || {})) {
+    const kc = C.kennedy[lab], pr = kc.pairs[ics[lab + "|k"]];
+    if (!ics[lab] || !pr) continue;
+    [["a", pr[0]], ["b", pr[pr.length - 1]]].forEach(([x, i]) => {
+      const key = kc.lines[i].slice().sort().join(" ");
+      if (!seen[key]) { seen[key] = lab + "|" + x; on[seen[key]] = kc.lines[i].slice(); }
+      if (on[seen[key]].indexOf(lab) < 0) on[seen[key]].push(lab);
+    });
+  }
   const reach = 2 * Math.hypot(W, H) / v.s;
   for (const lab of Object.keys(on)) {
     const ln = ics[lab];

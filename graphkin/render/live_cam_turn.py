@@ -69,19 +69,21 @@ OUTLINE = 120
 
 TURN_JS = r"""// the cams turned to the drive's angle x (render/live_cam_turn.py): each cam
 // evaluated by its operations (cam_program, cam_center), its linkage's numbers in Kc
-function gkTurn(T, x, Kc) {
-  const got = [];
-  for (const c of T.cams) {
-    const I = {}; I[T.label] = x;
+// the angle x of each cam's link is its drive's input in J (the first drive's, or another's;
+// a number J: every cam's link at that angle)
+function gkTurn(T, J, Kc) {
+  const got = [], xs = T.cams.map((c) => typeof J === "number" ? J : J[c.input]);
+  for (const [i, c] of T.cams.entries()) {
+    const x = xs[i], I = {}; I[c.input] = x;
     const v = gkCamFns[c.fn](I, c.K);
-    if (v === null) return {why: gkTurnStraight(c, x), cams: got};
+    if (v === null) return {why: gkTurnStraight(c, x), cams: got, xs: xs};
     Kc[c.kx] = v[c.center][0]; Kc[c.ky] = v[c.center][1];
     for (const k of c.r) Kc[k] = v[c.length];
     if (c.ysign) {      // a flat face: its slot's line at y in the follower's coordinates
       // (its coordinate c.axis: 1 an oscillating face's, 0 a translating face's)
       const y = v[c.length];
       if (c.axis === 1 && !(y * c.ysign > 1e-9 * c.reach)) {
-        return {why: gkTurnFace(c, x), cams: got};
+        return {why: gkTurnFace(c, x), cams: got, xs: xs};
       }
       for (const [k, a, b] of c.y) Kc[k] = a * y + b;
       for (const k of c.d) Kc[k] = Math.abs(y);
@@ -93,7 +95,7 @@ function gkTurn(T, x, Kc) {
     }
     got.push(v);
   }
-  return {why: "", cams: got};
+  return {why: "", cams: got, xs: xs};
 }
 // Θ (degrees, 0 to 360) of cam c at the drive's angle x
 function gkTurnTheta(c, x) {
@@ -120,7 +122,7 @@ function gkTurnStraight(c, x) {
 // the posture at the inputs J: the cams' linkages, then the construction; the roller's
 // center on the side where the cam's program puts it (the branch solve's hint picks)
 function gkTurnSolve(T, J, Kc, fn) {
-  const t = gkTurn(T, J[T.label], Kc);
+  const t = gkTurn(T, J, Kc);
   if (t.why) return {r: null, t: t};
   let r = fn(J, Kc);
   T.cams.forEach((c, i) => {
@@ -160,7 +162,7 @@ function gkTurnDwell(T, t) {
 function gkTurnNote(T, t, x) {
   if (!t || t.why) return t ? t.why : "";
   return T.cams.map((c, i) => {
-    const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, x);
+    const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, t.xs ? t.xs[i] : x);
     const tol = 1e-9 * c.size;
     if (c.ysign) {      // a flat face: the profile's own radius (Sec. 6.9), positive or a cusp
       return c.key + ": \u0398 = " + gkTurnNum(th) + "\u00b0, Y = " + gkTurnLift(c, v) +
@@ -185,10 +187,10 @@ CAMS_APP_JS = r"""// the cams' outlines turned to the drive's angle, the roller 
 // (render/live_cam_turn.py)
 function camOutlines(r) {
   if (!D.turn) return [];
-  // the posture's own cam angle (a dimmed, earlier posture keeps its own)
-  const th = Number.isFinite(r[D.turn.label]) ? r[D.turn.label] : drive;
-  const c0 = Math.cos(th), s0 = Math.sin(th);
+  // the posture's own angle of each cam's link (a dimmed, earlier posture keeps its own)
   return D.turn.cams.map((c) => {
+    const a = r["\u03b8" + c.link], th = Number.isFinite(a) ? a : drive;
+    const c0 = Math.cos(th), s0 = Math.sin(th);
     const o = r[c.at];
     return o ? c.outline.map((q) => [o[0] + c0 * q[0] - s0 * q[1], o[1] + s0 * q[0] + c0 * q[1]])
       : [];
@@ -217,15 +219,16 @@ function drawCams(g, r) {
 
 
 def turn_handle(data: dict[str, Any]) -> None:
-    """The drive's handle of a turning page: the first cam's contact point (in place).
+    """The drive's handle of a turning page: the contact point of a cam it turns (in place).
 
     Dragged, the cam turns by the angle the pointer turns about the cam's center.
     """
     turn = data.get("turn")
     if turn is None:
         return
-    c = turn["cams"][0]
-    data["drive"].update(pivot=c["at"], tip=c["contact"], phi=0.0, relative=True)
+    c = next((c for c in turn["cams"] if c["input"] == turn["label"]), None)
+    if c is not None:       # (a cam on another drive's link: the first drive keeps its pin)
+        data["drive"].update(pivot=c["at"], tip=c["contact"], phi=0.0, relative=True)
 
 
 def _fail(why: str) -> NotTurned:
@@ -374,10 +377,13 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
     out: list[dict[str, Any]] = []
     js = ""
     for i, j in enumerate(mech.cams):
-        if j.link != d0.link or d0.kind != "angle":
-            raise _fail(f"{j.key}: the cam's link {j.link} is not the first drive's, by its "
-                        "angle")
-        ts = turn_steps(j, label)
+        # the cam turns with its link's angle in the posture: its drive's input (the first
+        # drive's, dragged; or another drive's, moved by its law or held at its value)
+        dj = next((d for d in mech.drives if d.link == j.link and d.kind == "angle"), None)
+        if dj is None:
+            raise _fail(f"{j.key}: the cam's link {j.link} is not a drive, by its angle")
+        cam_input = label if dj is d0 else dj.label
+        ts = turn_steps(j, cam_input)
         fl = j.follower
         flat = j.cam.follower.kind.flat
         if j.cam.follower.kind.flat and not j.cam.follower.kind.oscillating:
@@ -408,6 +414,7 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             raise _fail(f"{j.key}: the cam's center is not a pin of the frame")
         out.append({
             "fn": i, "key": j.key, "K": fn.values, "kx": kx, "ky": ky, "r": radius,
+            "input": cam_input, "link": j.link,
             "branch": face["branch"] if flat else (
                 names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None),
             "y": face["y"], "d": face["d"], "sim": face["sim"], "ysign": face["ysign"],
@@ -473,8 +480,11 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         for key in ("pivot", "tip", "phi", "relative"):
             data["drive"].pop(key, None)
         return
-    deg = f"{math.degrees(mech.drives[0].value):g}°"
-    if any(_json(data.get("centers")) != _json(other.get("centers")) for other in others):
+    # the cam's own angle Θ at the file's posture (its link's angle; the crank's when on it)
+    deg = f"Θ = {math.degrees(mech.cams[0].theta):g}°"
+    # (an angle where the rest of the mechanism cannot be assembled has no centers to compare)
+    if any(_route(data.get("centers")) != _route(other.get("centers")) for other in others
+           if (other.get("centers") or {}).get("fn")):
         data["centers"] = dict(data["centers"], fn=None, why=(
             f"the Kennedy route found at the file's cam angle ({deg}) is another one at other "
             "angles (Kennedy's lines are chosen where they meet best at that posture, and "
@@ -486,6 +496,24 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         data["curvature"] = {"why": f"the curvature construction found at the file's cam angle "
                                     f"({deg}) is another one at other angles; change the "
                                     "file's angle"}
+
+
+def _route(centers: Any) -> str:
+    """The centers' route without the numbers the cam's angle changes, as JSON.
+
+    The route (:func:`~graphkin.kinematics.instant_centers.route.every_posture_route`)
+    chooses its lines at each posture, so it is the same at every cam angle but for
+    numbers that only measure: the mechanism's size (``far``, and in ``K`` the
+    scale of each center's measure of conditioning) and where a flat face's slot
+    points lie along the slot (``d``), whose common normal through the pin takes
+    only the slot's direction (Sec. 3.14).
+    """
+    if not isinstance(centers, dict):
+        return _json(centers)
+    c = {k: v for k, v in centers.items() if k not in ("K", "far")}
+    c["given"] = {lab: {k: v for k, v in g.items() if k != "d"}
+                  for lab, g in (c.get("given") or {}).items()}
+    return _json(c)
 
 
 def _json(v: Any) -> str:

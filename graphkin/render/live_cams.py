@@ -99,7 +99,8 @@ def hold_cams(data: dict[str, Any], mech: Mechanism, source: str) -> None:
 
     Adds ``data["cam"]`` (:func:`cam_hold`), and takes out of the page's
     handles, branches and assembly hints every point of :func:`cam_points`
-    and the drive's handle (the drive is held).  No-op without cams.  A page
+    and the drive's handle (the drive is held; on a turning page, only where the
+    drive turns a cam: a crank elsewhere keeps its pin).  No-op without cams.  A page
     whose cams turn (``data["turn"]``, :mod:`graphkin.render.live_cam_turn`)
     keeps ``data["cam"]`` for the cam's points but says nothing of a hold:
     its drive's handle is the cam's contact point.
@@ -115,5 +116,9 @@ def hold_cams(data: dict[str, Any], mech: Mechanism, source: str) -> None:
     data["coupler"] = {n: v for n, v in data["coupler"].items() if n not in mine}
     data["branches"] = {n: v for n, v in data["branches"].items() if n not in mine}
     data["assembly"] = [n for n in data["assembly"] if n not in mine]
-    for k in ("pivot", "tip", "phi"):
-        data["drive"].pop(k, None)
+    # the drive's pin is a handle unless the drive turns a cam (or the pin is a cam's point)
+    drv = data["drive"]
+    if drv.get("link") in {j.link for j in mech.cams} or drv.get("pivot") in mine or \
+            drv.get("tip") in mine or data.get("turn") is None:
+        for k in ("pivot", "tip", "phi"):
+            drv.pop(k, None)

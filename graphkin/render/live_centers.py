@@ -134,7 +134,8 @@ def _rates_of(mech: Mechanism, lid: str, points: list[str],
 
 
 def live_centers_construction(mech: Mechanism, ic: Any, points: list[str], made: set[str],
-                              avoid: Iterable[str] = ()) -> tuple[Construction,
+                              avoid: Iterable[str] = (), steps: Iterable[Any] | None = None
+                              ) -> tuple[Construction,
                                                                   dict[str, dict[str, Any]],
                                                                   dict[str, str]]:
     """The centers' construction as the page redoes it, its given points, and what it leaves out.
@@ -146,6 +147,8 @@ def live_centers_construction(mech: Mechanism, ic: Any, points: list[str], made:
         graphkin's centers of the file's posture.
     points, made : the page's points and every label its posture function makes.
     avoid : the draggable points (their local coordinates change).
+    steps : the route's steps (default: the search's, ``ic.construction.steps``;
+        the page's is :func:`~graphkin.kinematics.instant_centers.route.every_posture_route`).
 
     Returns
     -------
@@ -164,12 +167,13 @@ def live_centers_construction(mech: Mechanism, ic: Any, points: list[str], made:
     for sl in mech.sliders:
         prim.setdefault(center_label(sl.link, sl.on), {"slider": sl.on,
                                                        "angle": float(sl.direction_angle)})
-    paths = _paths(mech, ic.construction.steps)
+    route = list(ic.construction.steps if steps is None else steps)
+    paths = _paths(mech, route)
     pair_of = {c.label: c.pair for c in ic.centers.values()}
     cx = Construction(title=ic.construction.title)
     given: dict[str, dict[str, Any]] = {}
     dropped: dict[str, str] = {}
-    for st in ic.construction.steps:
+    for st in route:
         lab = st.outputs[0] if st.outputs else ""
         gone = [i for i in st.inputs if i in dropped]
         if gone:
@@ -238,6 +242,7 @@ def centers_data(mech: Mechanism, points: list[str], made: set[str],
     from graphkin.kinematics.instant_centers import center_label, instant_centers
     from graphkin.kinematics.instant_centers.labels import sort_links
     from graphkin.kinematics.instant_centers.primary import FAR_AS_INFINITY
+    from graphkin.kinematics.instant_centers.route import every_posture_route
 
     frame = list(mech.links[FRAME].points.values()) or [(0.0, 0.0)]
     origin = [sum(float(q[0]) for q in frame) / len(frame),
@@ -246,6 +251,7 @@ def centers_data(mech: Mechanism, points: list[str], made: set[str],
     base: dict[str, Any] = {
         "fn": None, "given": {}, "K": [], "labels": [], "lines": [], "joins": [], "meets": [],
         "links": links, "pairs": {center_label(i, j): [i, j] for i, j in combinations(links, 2)},
+        "kennedy": {},
         "frameAngle": 0.0, "far": FAR_AS_INFINITY * mech.scale, "origin": origin, "why": ""}
     try:
         sol = mech.solve()
@@ -254,9 +260,15 @@ def centers_data(mech: Mechanism, points: list[str], made: set[str],
         base["why"] = f"graphkin finds no instant centers at the file's posture ({exc})"
         return base, ""
     base["frameAngle"] = float(np.asarray(sol.links[FRAME].angle, dtype=float))
-    why = list(ic.notes)
-    cx, given, dropped = live_centers_construction(mech, ic, points, made, avoid)
-    centers = [c.label for c in ic.centers.values()]
+    # the route for every posture: each center on the best of its lines where the page is
+    route = every_posture_route(sol, ic)
+    centers = route.centers
+    missing = [c for c in base["pairs"] if c not in centers]
+    why = list(ic.notes) if sorted(center_label(*p) for p in ic.missing) == sorted(missing) \
+        else ([f"{', '.join(missing)}: not found (no two lines of centers reach them)"]
+              if missing else [])
+    cx, given, dropped = live_centers_construction(mech, ic, points, made, avoid,
+                                                   steps=route.construction.steps)
     labels = [c for c in centers if c not in dropped]
     lost = [c for c in centers if c in dropped]
     if lost:
@@ -272,8 +284,15 @@ def centers_data(mech: Mechanism, points: list[str], made: set[str],
                                           and _kind(cx, i) == "point")])
     meets = [[s.outputs[0], *s.inputs] for s in cx.steps
              if s.op == "meet" and s.outputs[0] in labels]
+    # a center on the best pair of its lines at each posture: the lines it meets are its
+    # outputs 'Iij|a', 'Iij|b', the pair's index 'Iij|k' says which points they pass through
+    kennedy = {s.outputs[0]: {"lines": route.lines[s.outputs[0]],
+                              "pairs": route.pairs[s.outputs[0]]}
+               for s in cx.steps if s.op == "kennedy_center" and s.outputs[0] in labels}
     on_lines = [p for j in joins for p in j[1:]]
-    requests = list(dict.fromkeys(labels + lines + on_lines))
+    on_lines += [p for lab in kennedy for ln in route.lines[lab] for p in ln]
+    outs = [f"{lab}|{x}" for lab in kennedy for x in "abk"]
+    requests = list(dict.fromkeys(labels + lines + on_lines + outs))
     base["why"] = "; ".join(why)
     if not labels:
         return base, ""
@@ -285,7 +304,7 @@ def centers_data(mech: Mechanism, points: list[str], made: set[str],
         base["why"] = "; ".join([*why, f"the centers cannot be written for the page ({exc})"])
         return base, ""
     base.update(fn="centers", given=given, K=fn.values, labels=labels, lines=lines,
-                joins=joins, meets=meets)
+                joins=joins, meets=meets, kennedy=kennedy)
     return base, fn.source
 
 

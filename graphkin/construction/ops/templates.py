@@ -692,5 +692,6 @@ def _parallelogram(gen: Gen, step: Step) -> None:
     gen.put_point(step.outputs[0], gen.sub(gen.add(ax, bx), px), gen.sub(gen.add(ay, by), py))
 
 
-# a disk cam's program and center of curvature (Ch. 6): templates of their own module
-from graphkin.construction.ops import cam_program  # noqa: E402, F401
+# a disk cam's program and center of curvature (Ch. 6), and an instant center on the
+# best-conditioned pair of its lines of centers (Sec. 3.13): templates of their own modules
+from graphkin.construction.ops import cam_program, kennedy  # noqa: E402, F401
