@@ -656,7 +656,8 @@ else {
   slider.step = String(span / 500);
 }
 slider.addEventListener("pointerdown", snapshot);
-slider.addEventListener("change", notify);
+// the slider let go: every panel refitted to the posture reached, as when a drag stops
+slider.addEventListener("change", () => { redraw(true); notify(); });
 slider.addEventListener("input", () => {
   const v = Number(slider.value);
   drive = isAngle ? v * Math.PI / 180 : v;

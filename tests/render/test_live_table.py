@@ -1,4 +1,4 @@
-"""The live page's results table prints round-off as 0, and its messages never move the panels.
+"""The live page's table prints round-off as 0; messages never move the panels; a let-go refits.
 
 A crank standing straight up from its pivot has x = 0 by hand (O2 at the origin, A
 at 90°: x_A = r cos 90° = 0), which ``r*cos(pi/2)`` computes as 6.1e-17 r; the
@@ -78,3 +78,32 @@ def test_a_long_message_does_not_move_the_panels(browser, tmp_path):
     browser.js("document.getElementById('gk-status').textContent = "
                "'this posture cannot be assembled: ' + 'the coupler does not reach. '.repeat(12)")
     assert browser.js(top) == before
+
+
+_SLIDE = """(function (deg) {
+  var s = document.getElementById('gk-drive');
+  s.value = String(deg);
+  s.dispatchEvent(new Event('input'));
+  s.dispatchEvent(new Event('change'));
+  var out = [];
+  ['gk-velocity', 'gk-acceleration'].forEach(function (id) {
+    var svg = document.getElementById(id), b = svg.getBoundingClientRect();
+    [].forEach.call(svg.querySelectorAll('circle, text'), function (c) {
+      var r = c.getBoundingClientRect();
+      var x = (r.left + r.right) / 2, y = (r.top + r.bottom) / 2;
+      if (x < b.left || x > b.right || y < b.top || y > b.bottom) out.push([id, x, y]);
+    });
+  });
+  return out;
+})"""
+
+
+def test_letting_go_of_the_slider_refits_the_polygons(browser, tmp_path):
+    # Example 3.1 turned through its cycle with the drive slider: the velocity polygon at
+    # θ2 = 120° is a fraction of its size at θ2 = 60° (V_B = ω2·O2B, the coupler and
+    # rocker turning faster), so a polygon kept at the file's scale runs off its panel;
+    # letting go refits every panel (issue 29: the full placement when the pointer stops).
+    # Every vertex mark and letter of both polygons lies inside its panel.
+    browser.open(page_file(tmp_path, ROOT / "tests/data/spec/ex3_1_fourbar.toml"))
+    for deg in range(-180, 180, 20):  # the slider's whole range on this page (-180° to 180°)
+        assert browser.js(_SLIDE + f"({deg})") == [], deg
