@@ -23,6 +23,7 @@ from graphkin.cams.model import FollowerKind
 from graphkin.cams.parse import CamFile
 from graphkin.errors import InputError
 from graphkin.text import g6, table
+from graphkin.tolerance import first_largest
 from graphkin.units import length_factor
 
 __all__ = ["refuse_undercut", "cam_json", "cam_text", "profile_table", "profile_csv",
@@ -119,8 +120,9 @@ def cam_json(cf: CamFile) -> dict[str, Any]:
         k = prog.evaluate(stations(design.GRID))
         v, a, j = k.rates(cam.omega)
         out["rates"] = {"omega": cam.omega, **{
+            # of equal maxima (a symmetric program) the first in cam angle, not round-off's
             name: {"max": float(np.max(np.abs(x))),
-                   "at": _deg(float(k.theta[int(np.argmax(np.abs(x)))]))}
+                   "at": _deg(float(k.theta[first_largest(np.abs(x))]))}
             for name, x in (("velocity", v), ("acceleration", a), ("jerk", j))}}
     return out
 
