@@ -129,7 +129,9 @@ def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
             d = a + _GOLDEN * (b - a)
             gd = g(d)
     x = (a + b) / 2
-    best = (g(x), x) if g(x) > sign * v[i] else (sign * v[i], th[i])
+    # the refined extreme only when clearly beyond the grid's (a dwell's constant value
+    # stays at the grid's first angle, not wherever round-off puts it)
+    best = (g(x), x) if g(x) > sign * v[i] + VERDICT_REL * scale else (sign * v[i], th[i])
     if candidates is not None and len(candidates):
         cv = np.asarray(fun(candidates), dtype=float)
         cok = np.isfinite(cv) if mask is None else np.isfinite(cv) & mask(candidates)
