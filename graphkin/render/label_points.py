@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from graphkin.render.scene import LabelRequest, Panel
+from graphkin.render.style import STYLES
 
 __all__ = ["labelled_points", "nearer_another", "astray_labels", "PRIORITY"]
 
@@ -47,10 +48,14 @@ def labelled_points(panel: Panel) -> np.ndarray:
 
 
 def nearer_another(pts: np.ndarray, a: np.ndarray, cx: np.ndarray,
-                   cy: np.ndarray) -> np.ndarray | None:
+                   cy: np.ndarray, half: tuple[float, float] | None = None
+                   ) -> np.ndarray | None:
     """Which candidate centres stand nearer another lettered point than their own at ``a``.
 
-    None when ``a`` is no lettered point (a vector's or a rate's label).
+    With ``half`` (the box's half width and height) the distances are the
+    box's own, from its nearest edge: a box that touches its point is still
+    attached to it where a crowded place has no other clear spot.  None when
+    ``a`` is no lettered point (a vector's or a rate's label).
     """
     if not len(pts):
         return None
@@ -60,9 +65,14 @@ def nearer_another(pts: np.ndarray, a: np.ndarray, cx: np.ndarray,
     others = pts[~own]
     if not len(others):
         return np.zeros(cx.shape, dtype=bool)
-    d_own = np.hypot(cx - a[0], cy - a[1])
-    d_other = np.min(np.hypot(cx[:, None] - others[None, :, 0],
-                              cy[:, None] - others[None, :, 1]), axis=1)
+    hw, hh = half if half is not None else (0.0, 0.0)
+
+    def gap(px: np.ndarray, py: np.ndarray) -> np.ndarray:
+        return np.hypot(np.maximum(np.abs(cx[:, None] - px[None, :]) - hw, 0.0),
+                        np.maximum(np.abs(cy[:, None] - py[None, :]) - hh, 0.0))
+
+    d_own = gap(np.array([a[0]]), np.array([a[1]]))[:, 0]
+    d_other = np.min(gap(others[:, 0], others[:, 1]), axis=1)
     return d_other < d_own  # type: ignore[no-any-return]
 
 
@@ -74,8 +84,9 @@ def astray_labels(panel: Panel) -> list[tuple[str, str]]:
     """The point labels of a placed panel that stand nearer another lettered point.
 
     Returns ``(gid, text)`` of each point label whose box centre is nearer some
-    other lettered point of the panel than its own (a reader would take it for
-    the other's); empty when every letter reads as its point's.
+    other lettered point of the panel than its own, and whose box is not nearer
+    its own point than any other either (not attached to it): a reader would
+    take it for the other's.  Empty when every letter reads as its point's.
     """
     ms = [panel.to_paper(it.xy)[0] for g in panel.groups for it in g.items
           if it.kind == "marker" and len(it.xy)]
@@ -98,7 +109,13 @@ def astray_labels(panel: Panel) -> list[tuple[str, str]]:
         put = texts[k]
         a = panel.to_paper(np.asarray([r.anchor], dtype=float))[0]
         c = panel.to_paper(put.xy)[0]
-        astray = nearer_another(points, a, np.array([c[0]]), np.array([c[1]]))
-        if astray is not None and bool(astray[0]):
+        from graphkin.render.labels import text_size
+
+        w, h = text_size(put.text, float(STYLES.get(put.style, {}).get("size", 8.0)), put.style)
+        cx, cy = np.array([c[0]]), np.array([c[1]])
+        astray = nearer_another(points, a, cx, cy)
+        attached = nearer_another(points, a, cx, cy, (w / 2, h / 2))
+        if astray is not None and bool(astray[0]) and attached is not None and \
+                bool(attached[0]):
             out.append((r.gid, put.text))
     return out

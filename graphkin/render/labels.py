@@ -613,10 +613,12 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     out_all = 1.0 - ix * iy / (w * h)
     mark = np.where(inked_all > 0, 0.6, 0.0)
     clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
-    # a point's letters nearer another lettered point would be read as that point's
-    # (a place clear of ink is still better than one on a line: when every clear place is
-    # nearer another point, the nearest of them to its own point is taken, as before)
+    # a point's letters nearer another lettered point would be read as that point's; in a
+    # crowded place, at least a box nearer its own point than any other (attached to it);
+    # else (no clear place is) a clear place still beats one on a line
     astray = nearer_another(ink.points, a, cxs, cys)
+    if astray is not None and not bool(np.any(clean_all & ~astray)):
+        astray = nearer_another(ink.points, a, cxs, cys, (w / 2, h / 2))
     if astray is not None and bool(np.any(clean_all & ~astray)):
         clean_all &= ~astray
         mark = mark + np.where(astray, 10.0, 0.0)

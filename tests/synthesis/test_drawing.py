@@ -93,8 +93,12 @@ def check_drawing(res) -> None:
     said = [t.get_text() for t in d.texts.values()]
     for name, z in far:
         if np.isfinite(z) and not (x0 <= z.real <= x1 and y0 <= z.imag <= y1):
-            named = {name, *[f"O_{c}" for c in "AB" if res.chosen is not None and
-                             getattr(res.chosen, f"o_{c.lower()}") == z]}
+            named = {name}
+            if res.chosen is not None:   # a Burmester point taken as a pivot of the linkage
+                (a, b), (na, nb) = res.chosen.pivots, res.chosen.names
+                named |= {f"O_{c}" for c in "AB" if getattr(res.chosen, f"o_{c.lower()}") == z}
+                named |= {f"{n}{j + 1}" for n, q in ((na, a), (nb, b))
+                          for j in range(len(q)) if abs(q[j] - z) <= 1e-9 * abs(z)}
             assert any(letter(n) in t for n in named for t in said), (name, z, said[-5:])
     for key, art in d.items():
         name = bare(key)
