@@ -106,7 +106,7 @@ def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
     if not np.any(ok):
         return None
     # of equal extremes (a symmetric program) the first in cam angle, not round-off's pick
-    i = first_largest(np.where(ok, sign * v, -np.inf))
+    i = first_largest(np.where(ok, sign * v, -np.inf), periodic=True)
     scale = abs(float(v[i]))  # the extreme's own size: round-off is relative to it
     h = TWO_PI / GRID
     a, b = th[i] - h, th[i] + h

@@ -122,7 +122,7 @@ def cam_json(cf: CamFile) -> dict[str, Any]:
         out["rates"] = {"omega": cam.omega, **{
             # of equal maxima (a symmetric program) the first in cam angle, not round-off's
             name: {"max": float(np.max(np.abs(x))),
-                   "at": _deg(float(k.theta[first_largest(np.abs(x))]))}
+                   "at": _deg(float(k.theta[first_largest(np.abs(x), periodic=True)]))}
             for name, x in (("velocity", v), ("acceleration", a), ("jerk", j))}}
     return out
 

@@ -60,3 +60,23 @@ def test_first_largest_ignores_round_off_and_non_finite_values() -> None:
     assert first_largest([2.0, 5.0 - 5e-15, 5.0, 1.0]) == 1   # equal within round-off
     assert first_largest([2.0, 5.0 - 1e-6, 5.0]) == 2          # a real difference counts
     assert first_largest([float("-inf"), float("nan"), -3.0, -3.0]) == 2
+
+
+def test_a_least_value_held_over_a_dwell_is_reported_at_the_dwells_start() -> None:
+    # Example 6.5's program: rises and a return over 85.184 + 45 + 32.058 + 107.758 = 270°,
+    # then a dwell at the base circle to 360°.  There the profile's radius of curvature is
+    # R0 - R_r = 4 - 0.5 = 3.5 in and the pitch curve's R0 = 4 in, the least of each, over
+    # the whole dwell: the report gives its start, Θ = 270°, on every machine (not wherever
+    # round-off puts the least of equal values, nor 0°, the dwell's end)
+    text = (Path(__file__).resolve().parents[2] / "examples" / "cams" / "ex6_5_roller.toml"
+            ).read_text(encoding="utf-8")
+    for seed in range(3):
+        r = random.Random(seed)
+        nudged = text.replace("prime = 4.000",
+                              f"prime = {4 * (1 + r.uniform(-1e-12, 1e-12))!r}")
+        d = cam_json(loads_cam(nudged))
+        assert d["radius_of_curvature"]["min"] == pytest.approx(3.5, rel=1e-9)
+        assert d["radius_of_curvature"]["at"] == pytest.approx(270.0, abs=1e-9)
+        assert d["pitch_radius_of_curvature"]["min"] == pytest.approx(4.0, rel=1e-9)
+        assert d["pitch_radius_of_curvature"]["at"] == pytest.approx(270.0, abs=1e-9)
+    assert first_largest([3.0, 1.0, 2.0, 3.0, 3.0], periodic=True) == 3
