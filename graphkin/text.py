@@ -26,7 +26,7 @@ from typing import Any, overload
 import numpy as np
 
 __all__ = ["wrap_degrees", "fmt", "g6", "fmt_angle", "direction_degrees", "sense", "polar",
-           "xy", "table", "ROUND_OFF", "toml_string"]
+           "xy", "table", "ROUND_OFF", "toml_string", "unit_text"]
 
 ROUND_OFF = 1e-12
 """Coordinates below this fraction of the mechanism's size are written as 0 (round-off)."""
@@ -100,6 +100,22 @@ def fmt(x: float, digits: int = 5, *, trim: bool = True) -> str:
     if trim and "." in s:
         s = s.rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
+
+
+_POWERS = (("**2", "²"), ("^2", "²"), ("**3", "³"), ("^3", "³"))
+
+
+def unit_text(unit: str) -> str:
+    """A unit as every report writes it, with superscript powers: ``mm/s^2`` -> ``mm/s²``.
+
+    Examples
+    --------
+    >>> unit_text("mm/s^2"), unit_text("in/s**3"), unit_text("rad/s"), unit_text("mm/rad²")
+    ('mm/s²', 'in/s³', 'rad/s', 'mm/rad²')
+    """
+    for a, b in _POWERS:
+        unit = unit.replace(a, b)
+    return unit
 
 
 def g6(x: float) -> str:

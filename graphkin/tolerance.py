@@ -95,4 +95,38 @@ def sign(x: float, scale: float, rel: float = VERDICT_REL) -> int:
     return 1 if x > 0 else -1
 
 
-__all__ += ["VERDICT_REL", "is_zero", "sign"]
+def first_largest(values: NDArray[np.float64] | list[float], rel: float = VERDICT_REL,
+                  periodic: bool = False) -> int:
+    """The index of the first value within round-off of the largest (non-finite ones skipped).
+
+    Two equal maxima (a symmetric cam program's |y''| at Θ = 0° and 180°)
+    differ only by round-off, which differs between machines: ``np.argmax``
+    would pick either.  The first of those within ``rel`` of the largest value's
+    magnitude is the one reported, on every machine.
+
+    Examples
+    --------
+    >>> first_largest([1.0, 3.0 - 1e-15, 2.0, 3.0]), first_largest([1.0, 2.0, 3.0])
+    (1, 2)
+    >>> first_largest([float("nan"), -2.0, -1.0])
+    2
+
+    ``periodic`` (values over one turn): a stretch of equal largest values that
+    runs on past the end into the start is reported at its own start.
+
+    >>> first_largest([3.0, 1.0, 2.0, 3.0, 3.0], periodic=True)
+    3
+    """
+    v = np.asarray(values, dtype=float).reshape(-1)
+    ok = np.isfinite(v)
+    if not np.any(ok):
+        return 0
+    top = float(np.max(v[ok]))
+    at = ok & (v >= top - rel * abs(top))
+    i = int(np.flatnonzero(at)[0])
+    if periodic and i == 0 and at[-1] and not np.all(at):
+        i = int(np.flatnonzero(~at)[-1]) + 1   # the wrapped stretch starts after the last gap
+    return i
+
+
+__all__ += ["VERDICT_REL", "first_largest", "is_zero", "sign"]

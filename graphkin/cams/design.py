@@ -23,6 +23,7 @@ from graphkin.cams.analytic import profile
 from graphkin.cams.model import Cam, FollowerKind
 from graphkin.cams.motions import Motion
 from graphkin.cams.program import TWO_PI, Program
+from graphkin.tolerance import VERDICT_REL, first_largest
 
 __all__ = ["Extreme", "Undercut", "Checks", "check", "extreme", "joints", "min_prime_for_pressure",
            "min_prime_for_curvature", "face_width", "undercuts", "jump_speed", "GRID"]
@@ -104,7 +105,9 @@ def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
     ok = np.isfinite(v) if mask is None else np.isfinite(v) & mask(th)
     if not np.any(ok):
         return None
-    i = int(np.argmax(np.where(ok, sign * v, -np.inf)))
+    # of equal extremes (a symmetric program) the first in cam angle, not round-off's pick
+    i = first_largest(np.where(ok, sign * v, -np.inf), periodic=True)
+    scale = abs(float(v[i]))  # the extreme's own size: round-off is relative to it
     h = TWO_PI / GRID
     a, b = th[i] - h, th[i] + h
 
@@ -126,13 +129,16 @@ def extreme(fun: Callable[[Array], Array], *, maximum: bool = True,
             d = a + _GOLDEN * (b - a)
             gd = g(d)
     x = (a + b) / 2
-    best = max((sign * v[i], th[i]), (g(x), x))
+    # the refined extreme only when clearly beyond the grid's (a dwell's constant value
+    # stays at the grid's first angle, not wherever round-off puts it)
+    best = (g(x), x) if g(x) > sign * v[i] + VERDICT_REL * scale else (sign * v[i], th[i])
     if candidates is not None and len(candidates):
         cv = np.asarray(fun(candidates), dtype=float)
         cok = np.isfinite(cv) if mask is None else np.isfinite(cv) & mask(candidates)
         if np.any(cok):
-            j = int(np.argmax(np.where(cok, sign * cv, -np.inf)))
-            best = max(best, (sign * cv[j], float(candidates[j])))
+            j = first_largest(np.where(cok, sign * cv, -np.inf))
+            if sign * cv[j] > best[0] + VERDICT_REL * scale:  # clearly beyond the grid's
+                best = (sign * cv[j], float(candidates[j]))
     return Extreme(sign * best[0], float(np.mod(best[1], TWO_PI)))
 
 

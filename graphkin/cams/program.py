@@ -24,6 +24,7 @@ import numpy as np
 
 from graphkin.cams.motions import HALF_FORMS, Motion, Rest, Shape, shape, table_shape
 from graphkin.errors import InputError
+from graphkin.text import ROUND_OFF, clean, g6
 
 __all__ = ["Segment", "Program", "Kinematics", "Joint", "Jump", "TWO_PI", "MATCH_REL"]
 
@@ -310,16 +311,42 @@ class Program:
                 out.append(Joint(before, after, float(starts[i]), jumps))
         return out
 
-    def warnings(self) -> list[str]:
-        """One line for each jump in y' or y'' (the velocity or the acceleration)."""
+    def warnings(self, unit: str = "") -> list[str]:
+        """One line for each jump in y' or y'' (the velocity or the acceleration).
+
+        ``unit`` is the unit of the displacement y (the file's length unit, or
+        ``rad`` for an oscillating follower): y' is given in unit/rad and y'' in
+        unit/rad² (Sec. 6.8, Eqs. 6.2-6.3, derivatives by the cam angle).
+
+        Examples
+        --------
+        >>> from graphkin.cams.motions import Motion
+        >>> from graphkin.cams.program import Program, Segment
+        >>> import math
+        >>> p = Program((Segment(Motion.UNIFORM, 1.0, math.pi / 2),
+        ...              Segment(Motion.DWELL, 0.0, math.pi / 2),
+        ...              Segment(Motion.UNIFORM, -1.0, math.pi / 2),
+        ...              Segment(Motion.DWELL, 0.0, math.pi / 2)))
+        >>> print(p.warnings("in")[1])  # doctest: +NORMALIZE_WHITESPACE
+        segment 2 (dwell): y' (velocity) jumps from 0.63662 to 0 in/rad at Θ = 90°
+        (end of segment 1 (uniform rise))
+
+        (on the uniform rise y' = L/β = 1/(π/2) = 0.63662 in/rad)
+        """
         lines = []
-        names = {Jump.VELOCITY: ("y'", "velocity"), Jump.ACCELERATION: ("y''", "acceleration")}
-        for j in self.joints():
+        names = {Jump.VELOCITY: ("y'", "velocity", f" {unit}/rad" if unit else ""),
+                 Jump.ACCELERATION: ("y''", "acceleration", f" {unit}/rad²" if unit else "")}
+        joints = self.joints()
+        size = self.scales() if joints else np.ones(3)
+        for j in joints:
             for kind, (left, right) in j.jumps.items():
                 if kind is Jump.DISPLACEMENT:
                     continue
-                sym, word = names[kind]
-                lines.append(f"{self.label(j.after)}: {sym} ({word}) jumps from {left:.6g} to "
-                             f"{right:.6g} at Θ = {math.degrees(j.theta):.6g}° (end of "
+                sym, word, per = names[kind]
+                # what the arithmetic left of a zero (sin 2π) is written 0, never "-0"
+                tiny = ROUND_OFF * float(size[1 if kind is Jump.VELOCITY else 2])
+                a, b = g6(clean(left, tiny)), g6(clean(right, tiny))
+                lines.append(f"{self.label(j.after)}: {sym} ({word}) jumps from {a} to {b}{per} "
+                             f"at Θ = {g6(math.degrees(j.theta))}° (end of "
                              f"{self.label(j.before)})")
         return lines

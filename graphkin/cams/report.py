@@ -22,7 +22,8 @@ from graphkin.cams.layout import layout, stations
 from graphkin.cams.model import FollowerKind
 from graphkin.cams.parse import CamFile
 from graphkin.errors import InputError
-from graphkin.text import g6, table
+from graphkin.text import g6, table, unit_text
+from graphkin.tolerance import first_largest
 from graphkin.units import length_factor
 
 __all__ = ["refuse_undercut", "cam_json", "cam_text", "profile_table", "profile_csv",
@@ -86,7 +87,7 @@ def cam_json(cf: CamFile) -> dict[str, Any]:
         "follower": {"kind": cam.follower.kind.value, "offset": cam.follower.offset,
                      "roller": cam.follower.roller if cam.follower.kind.roller else None},
         "segments": segs,
-        "warnings": prog.warnings(),
+        "warnings": prog.warnings("rad" if angular else cam.unit),
         "pressure_angle": {"max": _deg(chk.pressure.value), "at": _deg(chk.pressure.theta)},
         "radius_of_curvature": None if chk.rho is None else
         {"min": chk.rho.value, "at": _deg(chk.rho.theta)},
@@ -119,8 +120,9 @@ def cam_json(cf: CamFile) -> dict[str, Any]:
         k = prog.evaluate(stations(design.GRID))
         v, a, j = k.rates(cam.omega)
         out["rates"] = {"omega": cam.omega, **{
+            # of equal maxima (a symmetric program) the first in cam angle, not round-off's
             name: {"max": float(np.max(np.abs(x))),
-                   "at": _deg(float(k.theta[int(np.argmax(np.abs(x)))]))}
+                   "at": _deg(float(k.theta[first_largest(np.abs(x), periodic=True)]))}
             for name, x in (("velocity", v), ("acceleration", a), ("jerk", j))}}
     return out
 
@@ -193,8 +195,9 @@ def cam_text(cf: CamFile) -> str:
     if "rates" in d:
         lines += ["", f"Follower at ω = {g6(cam.omega or 0)} rad/s (Eq. 6.11)"]
         lu = "rad" if ang else u
-        for name, unit in (("velocity", f"{lu}/s"), ("acceleration", f"{lu}/s^2"),
-                           ("jerk", f"{lu}/s^3")):
+        for name, unit in (("velocity", unit_text(f"{lu}/s")),
+                           ("acceleration", unit_text(f"{lu}/s^2")),
+                           ("jerk", unit_text(f"{lu}/s^3"))):
             x = d["rates"][name]
             lines.append(f"  largest |{name}| = {g6(x['max'] if not ang else x['max'])} {unit}"
                          f" at Θ = {g6(x['at'])}°")

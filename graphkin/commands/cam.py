@@ -69,7 +69,8 @@ def run(args: argparse.Namespace) -> int:
     cf = load_cam(args.file)
     if not args.allow_undercut:
         refuse_undercut(cf)
-    for w in cf.cam.program.warnings():
+    angular = cf.cam.follower.kind.oscillating
+    for w in cf.cam.program.warnings("rad" if angular else cf.cam.unit):
         sys.stderr.write(f"{args.file}: warning: {w}\n")
     if args.equivalent is not None:
         import math

@@ -165,8 +165,8 @@ class _Builder:
             v = np.asarray(val, dtype=float)
             if not np.all(np.isfinite(v)):
                 raise ConstructionError(
-                    f"step {step.index} ({step.label}): {note} has no finite answer: "
-                    "equilibrium cannot be held at this posture", step=step.label)
+                    f"{note}: this has no finite answer, so equilibrium cannot be held at "
+                    "this posture", step=step.label)
             self.env[name] = v
 
     def fresh(self, label: str) -> str:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -27,7 +28,7 @@ import numpy as np
 from graphkin.construction import Step
 from graphkin.text import fmt
 
-__all__ = ["assembly_words"]
+__all__ = ["assembly_words", "parallel_meet", "placement_words", "point_words", "toggle_words"]
 
 _ARC = re.compile(r"^k_(?P<to>[^()]+)\((?P<about>[^()]+)\)$")
 
@@ -140,3 +141,169 @@ def assembly_words(mech: Any, step: Step, args: list[Any]) -> str | None:
         return (f"{both} cannot meet: {p1} and {p2} are only {ds} {unit} apart, less "
                 f"than the difference of their lengths, {ss} {unit}")
     return None
+
+
+# ---------------------------------------------------------------------------
+# Toggle and dead-center postures: why the polygons have no answer (Sec. 3.5)
+# ---------------------------------------------------------------------------
+
+_OUT = re.compile(r"^(?P<what>[va])\((?P<point>[^()]+)\)$")
+_DIRECTION = re.compile(r"the direction of (?P<q>[^\s:,.]+)")
+_RELATIVE = re.compile(r"^R_([^:]+):")
+
+
+def point_words(label: str) -> str:
+    """A point's label as the user wrote or reads it: ``rolling[0]:C@4`` -> ``the contact C``.
+
+    Examples
+    --------
+    >>> point_words("B"), point_words("rolling[0]:C"), point_words("rolling[1]:P@4")
+    ('B', 'the contact C', 'the contact P')
+    """
+    base = label.split("@", 1)[0]
+    if base.startswith("rolling[") and ":" in base:
+        return f"the contact {base.split(':', 1)[1]}"
+    return base
+
+
+def _quantity(label: str) -> str:
+    """What a polygon step finds, in the book's words: ``v(B)`` -> ``the velocity of B``."""
+    m = _OUT.match(label)
+    if m is not None:
+        what = "velocity" if m.group("what") == "v" else "acceleration"
+        return f"the {what} of {point_words(m.group('point'))}"
+    for sym, what in (("ω", "the angular velocity"), ("α", "the angular acceleration")):
+        if label.startswith(sym) and label[1:].isdigit():
+            return f"{label}, {what} of link {label[1:]}"
+    return point_words(label)
+
+
+def _joined(cx: Any, label: str) -> tuple[str, str] | None:
+    """The two points a ``join`` step draws its line through, else None."""
+    try:
+        st = cx.step_of(label)
+    except (KeyError, LookupError, ValueError):
+        return None
+    if st.op == "join" and len(st.inputs) == 2:
+        return st.inputs[0], st.inputs[1]
+    return None
+
+
+def _letter(label: str) -> str:
+    """A point's letter in a line's name: ``rolling[0]:C`` -> ``C``, ``B`` -> ``B``."""
+    return label.split("@", 1)[0].rsplit(":", 1)[-1]
+
+
+def _line_of(cx: Any, label: str, what: str) -> tuple[str, tuple[str, str] | None]:
+    """A polygon's line in words (``the direction of V_CB (⊥ BC)``) and the posture's line.
+
+    ``what`` is ``"v"`` or ``"a"``: the polygon the line is drawn in.
+    """
+    try:
+        st = cx.step_of(label)
+    except (KeyError, LookupError, ValueError):
+        return "a line of the polygon", None
+    m = _DIRECTION.search(st.note or "")
+    head = f"the direction of {m.group('q')}" if m else "a line of the polygon"
+    if st.op in ("perpendicular", "parallel") and st.inputs:
+        ends = _joined(cx, st.inputs[0])
+        if ends is not None:
+            r = _RELATIVE.match(st.inputs[0])
+            if m is None and r is not None:  # the join R_BC of the posture: V_BC ⊥ BC
+                head = ("the direction of " + (f"V_{r.group(1)}" if what == "v" else
+                                               f"A_{r.group(1)}^t"))
+            sign = "⊥" if st.op == "perpendicular" else "∥"
+            return f"{head} ({sign} {_letter(ends[0])}{_letter(ends[1])})", ends
+    return head, None
+
+
+def _in_line(p: tuple[str, str], q: tuple[str, str]) -> str:
+    """Why the posture's lines ``p`` and ``q`` are parallel: three points in line, or not."""
+    pts: list[str] = []
+    for e in (*p, *q):
+        if e not in pts:
+            pts.append(e)
+    words = [point_words(e) for e in pts]
+    if len(pts) == 3:
+        return f"{words[0]}, {words[1]} and {words[2]} lie on one line"
+    a, b, c, d = words
+    return f"the line {a}{b} is parallel to the line {c}{d}"
+
+
+def parallel_meet(cx: Any, values: Mapping[str, Any], below: float) -> Step | None:
+    """The first ``meet`` of a polygon whose two lines are parallel (sine under ``below``).
+
+    The lines are kept with unit normals, so ``|a1 b2 - a2 b1|`` is the sine
+    of their angle, dimensionless and independent of the mechanism's size.
+    """
+    for st in cx.steps:
+        if st.op != "meet" or len(st.inputs) != 2 or any(i not in values for i in st.inputs):
+            continue
+        l1, l2 = (np.asarray(values[i], dtype=float) for i in st.inputs)
+        sine = np.abs(l1[..., 0] * l2[..., 1] - l1[..., 1] * l2[..., 0])
+        if np.any(~np.isfinite(sine) | (sine < below)):
+            return st  # type: ignore[no-any-return]
+    return None
+
+
+def toggle_words(cx: Any, values: Mapping[str, Any], below: float,
+                 failed: str | None = None) -> str:
+    """Why a velocity or acceleration polygon has no answer at this posture, in the book's words.
+
+    At a toggle or dead-center posture (Sec. 3.5) the two lines that fix an
+    image in a polygon are parallel, because the posture has three points in
+    line: the words name them and the quantity the polygon cannot find,
+    never a step of the construction.
+
+    Parameters
+    ----------
+    cx : Construction
+        The velocity (or acceleration) polygon.
+    values : mapping
+        Its values as far as they were found (a replay that went on past the failure).
+    below : float
+        The sine under which two lines are parallel (``solve.SINGULAR_SINE``).
+    failed : str, optional
+        The label of the step that had no answer, when no meet of parallel lines explains it.
+
+    Examples
+    --------
+    >>> import graphkin
+    >>> from graphkin.kinematics.posture import build_posture
+    >>> from graphkin.kinematics.polygons import build_polygons
+    >>> mech = graphkin.examples.fourbar()
+    >>> pol = build_polygons(mech, build_posture(mech))
+    >>> cx = pol.velocity
+    >>> vals = {"⊥CB:v": np.array([0.0, 1.0, 0.0]), "⊥CD:v": np.array([0.0, 1.0, 2.0])}
+    >>> print(toggle_words(cx, vals, 1e-7))  # doctest: +NORMALIZE_WHITESPACE
+    B, C and D lie on one line: the direction of V_CB (⊥ BC) and the direction of V_CD
+    (⊥ DC) are parallel, so the velocity of C is undetermined
+    """
+    st = parallel_meet(cx, values, below)
+    if st is not None:
+        what = "a" if st.outputs[0].startswith("a(") else "v"
+        (w1, e1), (w2, e2) = (_line_of(cx, i, what) for i in st.inputs)
+        why = f"{_in_line(e1, e2)}: " if e1 is not None and e2 is not None else ""
+        return f"{why}{w1} and {w2} are parallel, so {_quantity(st.outputs[0])} is undetermined"
+    if failed is not None:
+        return f"{_quantity(failed)} is undetermined"
+    return "the polygon has no answer"
+
+
+def placement_words(step: Step) -> str:
+    """Why the posture step ``step`` placed nothing, when :func:`assembly_words` cannot say more.
+
+    Examples
+    --------
+    >>> from graphkin.construction import Construction
+    >>> s = Construction().add("intersect_line_circle", ("l_B", "k_B(A)"), ("B",))
+    >>> placement_words(s)
+    'B cannot be placed: the line and the arc that locate it do not meet'
+    """
+    what = {
+        "intersect_circles": "the two arcs that locate it do not meet",
+        "intersect_line_circle": "the line and the arc that locate it do not meet",
+        "join": "the two points that fix its line coincide",
+        "meet": "the two lines that locate it are parallel",
+    }.get(step.op, "no construction locates it here")
+    return f"{point_words(step.outputs[0])} cannot be placed: {what}"

@@ -151,12 +151,13 @@ class _Builder:
 
     def _fail(self, step: Step) -> ConstructionError:
         from graphkin.construction.protocol import _failure
-        from graphkin.kinematics.assembly_words import assembly_words
+        from graphkin.kinematics.assembly_words import assembly_words, placement_words
 
         args = [self.env[i] for i in step.inputs]
         exc = _failure(step, args)
-        words = assembly_words(self.mech, step, args)  # which link is short, by how much
-        return AssemblyError(f"cannot assemble at this drive: {words or exc}", step=step.label,
+        words = (assembly_words(self.mech, step, args)  # which link is short, by how much
+                 or placement_words(step))
+        return AssemblyError(f"cannot assemble at this drive: {words}", step=step.label,
                              objects=getattr(exc, "objects", {}))
 
     def fresh(self, stem: str) -> str:
@@ -720,8 +721,10 @@ def _finish(b: _Builder) -> None:
         if label in b.forced:
             chosen, reason = b.forced[label], "branch asked for"
             if chosen not in names:
-                raise ConstructionError(f"step {label} has the branches {', '.join(names)}, "
-                                        f"not {chosen!r}", step=label)
+                from graphkin.kinematics.assembly_words import point_words
+
+                raise ConstructionError(f"the branches of {point_words(label)} are "
+                                        f"{', '.join(names)}, not {chosen!r}", step=label)
             if chosen not in trials:
                 trials[chosen] = _try(b, group, chosen)[0]
         else:

@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
 from graphkin.construction import Construction
 from graphkin.errors import ConstructionError, DegenerateError, InputError
 from graphkin.geometry import ops as g
+from graphkin.kinematics.assembly_words import parallel_meet, toggle_words
 from graphkin.kinematics.polygons import Polygons, build_polygons
 from graphkin.kinematics.posture import NotDecomposable, PostureConstruction, build_posture
 from graphkin.kinematics.solution import LinkState, Solution, perp
@@ -148,20 +150,23 @@ SINGULAR_SINE = 1e-7
 
 
 def singular_step(cx: Construction, values: Mapping[str, np.ndarray]) -> str | None:
-    """The first meet of a velocity polygon whose two lines are parallel (a singular posture).
+    """Why a velocity polygon meets two parallel lines (a singular posture), or None.
 
-    The lines are kept with unit normals, so ``|a1 b2 - a2 b1|`` is the sine of
-    their angle, dimensionless and independent of the mechanism's size.
+    The words name the posture's points in line and the quantity the polygon
+    cannot find (:func:`graphkin.kinematics.assembly_words.toggle_words`),
+    never a step of the construction.
     """
-    for st in cx.steps:
-        if st.op != "meet" or len(st.inputs) != 2:
-            continue
-        l1, l2 = (np.asarray(values[i], dtype=float) for i in st.inputs)
-        sine = np.abs(l1[..., 0] * l2[..., 1] - l1[..., 1] * l2[..., 0])
-        if np.any(~np.isfinite(sine) | (sine < SINGULAR_SINE)):
-            return (f"step {st.index} ({st.label}): the lines {st.inputs[0]} and "
-                    f"{st.inputs[1]} are parallel")
-    return None
+    if parallel_meet(cx, values, SINGULAR_SINE) is None:
+        return None
+    return toggle_words(cx, values, SINGULAR_SINE)
+
+
+def _posture_words(mech: Mechanism, pc: PostureConstruction) -> str:
+    """The posture in the file's words: its drives and the branches taken (``B behind``)."""
+    where = ", ".join(d.describe(mech.length_unit) for d in mech.drives)
+    if pc.branches:
+        where += " (branch: " + ", ".join(f"{p} {b}" for p, b in sorted(pc.branches.items())) + ")"
+    return where
 
 
 def solve(mech: Mechanism, tol: Tolerance | None = None,
@@ -208,6 +213,9 @@ def _solve(mech: Mechanism, tol: Tolerance | None,
         states = link_states(mech, pc, values)
         return Solution(mech, states, "construction", constructions, notes=list(pc.notes),
                         branches=dict(pc.branches), values={"posture": values})
+    pol: Polygons | None = None
+    vin: Mapping[str, Any] = {}
+    ain: Mapping[str, Any] = {}
     try:
         pol = build_polygons(mech, pc)
         vin, ain = rate_inputs(mech, pol, pc, values, tol)
@@ -216,7 +224,7 @@ def _solve(mech: Mechanism, tol: Tolerance | None,
         if singular is None:
             ea = pol.acceleration.evaluate(ain, values=ev.values, tol=tol)
     except (ConstructionError, DegenerateError) as exc:
-        singular = str(exc)
+        singular = _failure_words(pol, vin, ain, values, tol, exc)
     if singular is not None:
         states = link_states(mech, pc, values)
         exact = _rates_by_analytic(mech, states, tol)
@@ -229,11 +237,12 @@ def _solve(mech: Mechanism, tol: Tolerance | None,
             exact.constructions = dict(constructions)  # the posture is still constructed
             exact.values = {"posture": values}
             return exact
-        note = (f"toggle or dead-center posture: the velocities and accelerations are "
-                f"undetermined here ({singular}; Sec. 3.5)")
+        note = (f"toggle or dead-center posture at {_posture_words(mech, pc)}: the "
+                f"velocities and accelerations are undetermined here ({singular}; Sec. 3.5)")
         return Solution(mech, states, "construction", constructions,
                         notes=[*pc.notes, note], branches=dict(pc.branches),
                         values={"posture": values})
+    assert pol is not None  # built, or the polygons' failure was returned above
     states = link_states(mech, pc, values, ev.values, ea.values, pol)
     constructions["velocity"] = pol.velocity
     constructions["acceleration"] = pol.acceleration
@@ -241,6 +250,22 @@ def _solve(mech: Mechanism, tol: Tolerance | None,
                     branches=dict(pc.branches),
                     values={"posture": values, "velocity": ev.values,
                             "acceleration": ea.values})
+
+
+def _failure_words(pol: Polygons | None, vin: Mapping[str, Any],
+                   ain: Mapping[str, Any], values: Mapping[str, np.ndarray],
+                   tol: Tolerance | None, exc: Exception) -> str:
+    """Why the polygons failed, in the book's words: replayed on past the failure to see why."""
+    if pol is None or not vin:
+        return "the polygons cannot be drawn"
+    failed = getattr(exc, "step", None)
+    ev = pol.velocity.evaluate(vin, values=dict(values), tol=tol, strict=False)
+    cx = pol.velocity
+    if bool(np.all(ev.valid)) and parallel_meet(cx, ev.values, SINGULAR_SINE) is None:
+        cx = pol.acceleration  # the velocities were found: the acceleration polygon failed
+        ev = cx.evaluate(ain, values=dict(ev.values), tol=tol, strict=False)
+    return toggle_words(cx, ev.values, SINGULAR_SINE,
+                        failed if isinstance(failed, str) else None)
 
 
 def _rates_by_analytic(mech: Mechanism, states: Mapping[str, LinkState],

@@ -75,7 +75,9 @@ class OutputUnits:
 
     def text(self, kind: str) -> str:
         """The unit of ``kind`` as a report writes it (``in/s²``)."""
-        return str(getattr(self, kind)).replace("^2", "²").replace("**2", "²")
+        from graphkin.text import unit_text
+
+        return unit_text(str(getattr(self, kind)))
 
 
 def parse_units(spec: str, length_unit: str) -> dict[str, Any]:

@@ -29,6 +29,7 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.render.label_points import PRIORITY, labelled_points, nearer_another
 from graphkin.render.scene import Item, LabelRequest, Panel
 from graphkin.render.style import STYLES
 from graphkin.render.text import shown_size
@@ -39,7 +40,6 @@ RES = 100
 """Cells per inch of the ink map."""
 INK_WIDTH = 0.03
 """How wide a drawn line counts when a label covers it, in inches."""
-_PRIORITY = {"label": 0, "number": 1, "label-vector": 2, "label-aux": 3, "label-small": 4}
 _DIRS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
 _SAME_WIDTH = str.maketrans("123456789₁₂₃₄₅₆₇₈₉¹²³⁴⁵⁶⁷⁸⁹", "000000000₀₀₀₀₀₀₀₀₀⁰⁰⁰⁰⁰⁰⁰⁰⁰")
 _PAD = 0.012
@@ -135,6 +135,8 @@ class _InkMap:
         self.ink = np.zeros((self.ny, self.nx), dtype=np.float32)
         self.taken = np.zeros((self.ny, self.nx), dtype=np.uint8)
         self.sat: np.ndarray | None = None
+        self.points = np.zeros((0, 2))
+        """The panel's lettered points (paper inches): see :func:`.label_points.labelled_points`."""
         self.last: tuple[np.ndarray, tuple[int, int, int, int]] = (
             np.zeros((0, 0), dtype=np.uint8), (0, 0, 0, 0))
 
@@ -334,8 +336,9 @@ def _place_all(panel: Panel) -> None:
         for it in g.items:
             _mark(ink, panel, it)
     ink.finish()
+    ink.points = labelled_points(panel)
     order = sorted(range(len(panel.labels)),
-                   key=lambda i: (_PRIORITY.get(panel.labels[i].style, 4), i))
+                   key=lambda i: (PRIORITY.get(panel.labels[i].style, 4), i))
     panel.crowded = 0
     for i in order:
         req = panel.labels[i]
@@ -346,6 +349,56 @@ def _place_all(panel: Panel) -> None:
         ink.untake()
         for part in req.parts:
             _place_one(panel, ink, part)
+
+
+def _is_point_label(panel: Panel, req: LabelRequest, markers: np.ndarray) -> bool:
+    """A point's letters: a near anchor (no far arrow) on a marker of the panel."""
+    if req.arrow is not None or req.center or req.parts or not len(markers):
+        return False
+    a = panel.to_paper(np.asarray([req.anchor], dtype=float))[0]
+    return bool(np.any(np.hypot(markers[:, 0] - a[0], markers[:, 1] - a[1]) <= _SAME_POINT))
+
+
+def _labelled_points(panel: Panel) -> np.ndarray:
+    """The paper places (inches) of the panel's lettered points: markers with a label.
+
+    A point's letters must stand nearer their own point than any other lettered
+    point, or a reader takes them for the other's (Sec. 1.6: the lettering must be
+    read as written); :func:`_spot` holds every point label to that.
+    """
+    ms = [panel.to_paper(it.xy)[0] for g in panel.groups for it in g.items
+          if it.kind == "marker" and len(it.xy)]
+    markers = np.asarray(ms, dtype=float).reshape(-1, 2)
+    pts = [panel.to_paper(np.asarray([r.anchor], dtype=float))[0] for r in panel.labels
+           if _is_point_label(panel, r, markers)]
+    return np.asarray(pts, dtype=float).reshape(-1, 2)
+
+
+def _nearer_another(ink: _InkMap, a: np.ndarray, cx: np.ndarray,
+                    cy: np.ndarray) -> np.ndarray | None:
+    """Which candidate centres stand nearer another lettered point than their own at ``a``.
+
+    None when ``a`` is no lettered point (a vector's or a rate's label).
+    """
+    pts = ink.points
+    if not len(pts):
+        return None
+    own = np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= _SAME_POINT
+    if not np.any(own):
+        return None
+    others = pts[~own]
+    if not len(others):
+        return np.zeros(cx.shape, dtype=bool)
+    d_own = np.hypot(cx - a[0], cy - a[1])
+    d_other = np.min(np.hypot(cx[:, None] - others[None, :, 0],
+                              cy[:, None] - others[None, :, 1]), axis=1)
+    return d_other < d_own  # type: ignore[no-any-return]
+
+
+_SAME_POINT = 1e-6
+"""Anchors closer than this (inches) are one point (coincident points lettered together)."""
+
+
 
 
 def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
@@ -560,6 +613,15 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     out_all = 1.0 - ix * iy / (w * h)
     mark = np.where(inked_all > 0, 0.6, 0.0)
     clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
+    # a point's letters nearer another lettered point would be read as that point's; in a
+    # crowded place, at least a box nearer its own point than any other (attached to it);
+    # else (no clear place is) a clear place still beats one on a line
+    astray = nearer_another(ink.points, a, cxs, cys)
+    if astray is not None and not bool(np.any(clean_all & ~astray)):
+        astray = nearer_another(ink.points, a, cxs, cys, (w / 2, h / 2))
+    if astray is not None and bool(np.any(clean_all & ~astray)):
+        clean_all &= ~astray
+        mark = mark + np.where(astray, 10.0, 0.0)
 
     # the ring taken in rank order up to the first clean one: the best score of that prefix
     sc = 4.0 * over_all[:n] + mark[:n] + 25.0 * lab_all[:n] + 40.0 * out_all[:n] \

@@ -28,6 +28,7 @@ from graphkin.construction.codegen import Unsupported
 from graphkin.construction.jsgen import RUNTIME, generate_js, js_string
 from graphkin.errors import InputError
 from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.render.contact_letters import contact_acceleration_letters, contact_velocity_letters
 from graphkin.render.live_app import APP_JS, LIVE_LIB, PAGE_CSS
 from graphkin.render.style import STYLES
 from graphkin.tolerance import DEFAULT_TOL
@@ -187,9 +188,6 @@ def _live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
     return data, js
 
 
-_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
-
-
 def _pitch_images(mech: Mechanism, made: set[str]) -> list[dict[str, str]]:
     """The images of the points of contact of rolling contact, as the book letters them.
 
@@ -210,12 +208,11 @@ def _pitch_images(mech: Mechanism, made: set[str]) -> list[dict[str, str]]:
         links = [lid for lid in pair if lid != FRAME]
         # velocity: one image for the contact points of both links (no slip); on the frame
         # the pole, c₄ = c₁ (V_C = 0)
-        c, letter = r.contact_label, r.contact_name.lower()
+        c, name = r.contact_label, r.contact_name
         v = next((f"v({c}@{lid})" for lid in links if f"v({c}@{lid})" in made),
                  "o_v" if FRAME in pair and "o_v" in made else "")
-        if v:
-            out.append({"pre": "v", "label": v,
-                        "text": " = ".join(f"{letter}{x.translate(_SUBSCRIPT)}" for x in pair)})
+        if v:  # the letters are draw's (render/contact_letters.py): one rule for both
+            out.append({"pre": "v", "label": v, "text": contact_velocity_letters(name, pair)})
         # acceleration: each link's own contact image (they differ by A^r); a link in two
         # contacts (a planet on a sun and in a ring) names the contact by the other link
         for lid in links:
@@ -224,8 +221,8 @@ def _pitch_images(mech: Mechanism, made: set[str]) -> list[dict[str, str]]:
             other = pair[1] if lid == pair[0] else pair[0]
             if a:
                 out.append({"pre": "a", "label": a,
-                            "text": f"{letter}\u2032{lid.translate(_SUBSCRIPT)}"
-                                    + (f" ({lid}/{other})" if count[lid] > 1 else "")})
+                            "text": contact_acceleration_letters(name, lid, other,
+                                                                 count[lid] > 1)})
     return out
 
 

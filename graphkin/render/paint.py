@@ -35,6 +35,11 @@ import numpy as np
 
 from graphkin.construction import Construction, Role, Step
 from graphkin.mechanisms.model import FRAME, Mechanism
+from graphkin.render.contact_letters import (
+    contact_acceleration_letters,
+    contact_velocity_letters,
+    point_letters,
+)
 from graphkin.render.paint_rates import paint_scalar
 from graphkin.render.scene import (
     Group,
@@ -61,7 +66,6 @@ INTERSECTIONS = ("intersect_circles", "intersect_line_circle", "meet")
 _LAID_OFF = ("point", "rigid", "translate", "subtract", "add_along", "along_line", "similar",
              "image", "velocity_difference", "acceleration_difference")
 POLES = {"velocity": ("o_v", "$O_V$"), "acceleration": ("o_a", "$O_A$")}
-_SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 ARROW_HEAD = 0.085
 """Arrowhead length in inches."""
@@ -88,11 +92,7 @@ def image_text(label: str) -> str:
     inner = label[2:-1] if label.endswith(")") else label
     name, _, link = inner.partition("@")
     base = name.split("#")[0].split(":")[-1]
-    i = len(base)
-    while i > 0 and base[i - 1].isdigit():
-        i -= 1
-    letters, digits = base[:i] or base, base[i:] if i else ""
-    return plain(letters.lower() + ("′" if prime else "") + (digits + link).translate(_SUB))
+    return plain(point_letters(base, link, prime))
 
 
 def vector_math(label: str) -> str:
@@ -152,32 +152,38 @@ def _math_or_none(name: str | None) -> str | None:
     return None if not name else vector_math(name)
 
 
-_CONTACT_IMAGE = re.compile(r"[va]\((rolling\[\d+\]):(\w+)@(\w+)\)")
+_CONTACT_IMAGE = re.compile(r"([va])\((rolling\[\d+\]):(\w+)@(\w+)\)(:r)?")
 
 
 def _contact_text(label: str, mech: Mechanism | None) -> str:
-    """An image's letters; a link's contact point in two contacts names the other link.
+    """An image's letters; a contact's as the book letters it (Fig. 3.14b, Eq. 4.19).
 
-    ``a(rolling[0]:C@4)`` of a planet 4 meshing with 2 and with 1 is ``c′₄ (4/2)``,
-    so its two points of contact are told apart (Sec. 4.7).
+    The one velocity image of the coincident points of a rolling contact
+    carries both links' letters, ``c₄ = c₂``; each link's acceleration image
+    its own, ``c′₄``, naming the other link when the link is in two contacts
+    (a planet 4 meshing with 2 and with 1: ``c′₄ (4/2)``, Sec. 4.7).
     """
-    text = image_text(label)
     m = _CONTACT_IMAGE.fullmatch(label)
     if m is None or mech is None:
-        return text
-    key, lid = m.group(1), m.group(3)
+        return image_text(label)
+    what, key, name, lid = m.group(1), m.group(2), m.group(3), m.group(4)
     r = next((x for x in mech.rolling if x.key == key), None)
-    if r is None or sum(lid in (x.link, x.on) for x in mech.rolling) < 2:
-        return text
-    return f"{text} ({lid}/{r.on if lid == r.link else r.link})"
+    if r is None:
+        return image_text(label)
+    if what == "v":
+        return plain(contact_velocity_letters(name, (r.link, r.on)))
+    shared = sum(lid in (x.link, x.on) for x in mech.rolling) > 1
+    return plain(contact_acceleration_letters(name, lid, r.on if lid == r.link else r.link,
+                                              shared))
 
 
 def _is_image(label: str) -> bool:
     """An image point lettered in its polygon: a point's, or a rolling contact point's.
 
     The point of contact of a rolling link (``v(rolling[0]:C@4)``, lettered
-    ``c₄``; ``p₄`` or ``c1₄`` when ``C`` is taken) is an image as the book draws it
-    (Sec. 3.7, Fig. 3.14b); other internal labels (with ``:``) are construction points.
+    ``c₄ = c₂``; ``a(rolling[0]:C@2):r``, the other link's, found through the
+    rolling component, ``c′₂``) is an image as the book draws it (Sec. 3.7,
+    Fig. 3.14b); other internal labels (with ``:``) are construction points.
     """
     if _CONTACT_IMAGE.fullmatch(label):
         return True

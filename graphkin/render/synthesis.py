@@ -86,6 +86,9 @@ class Pen:
         self.labelled: set[str] = set()
         self.optional: set[str] = set()
         self.points: dict[str, np.ndarray] = {}
+        self.off: dict[str, np.ndarray] = {}
+        """Points asked for beyond the panel (a far Burmester point, a far pivot): each gets
+        an arrow at the edge with its name and distance (:func:`far_points`)."""
         self.stage: tuple[Construction, int] | None = None
         """A teaching frame: this construction up to this step (the newest highlighted);
         the constructions in :attr:`before` whole, nothing else of the result."""
@@ -113,8 +116,10 @@ class Pen:
 
     def point(self, g: Group, name: str, xy: np.ndarray, style: str = "point",
               optional: bool = False, text: str | None = None) -> None:
-        """A dot and its letter (once per name); off the panel: nothing."""
+        """A dot and its letter (once per name); off the panel: kept for :func:`far_points`."""
         if not self.inside(xy):
+            if np.all(np.isfinite(xy)):
+                self.off.setdefault(name, np.asarray(xy, dtype=float))
             return
         if self.found(xy, name):
             # a pivot the construction found already, under the book's name for it (O4)
@@ -405,7 +410,67 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
             pen.point(g, f"m{k}", _c(bp.circle), "aux-point", optional=True)
     if link is not None:
         paint_linkage(pen, link)
+    far_points(pen, post.positions((0.0, 0.0))[0], f"{d}1")
     return p, pen
+
+
+def _far_arrow(pen: Pen, gid: str, names: list[str], xy: np.ndarray, ref: np.ndarray,
+               ref_name: str, step: Any = None) -> None:
+    """An arrow at the panel's edge toward the far point ``xy``, named, with its distance.
+
+    Lettered with its names and its distance from ``ref`` (``M₂, O_B, 12.3 in
+    from D₁``), as graphkin letters far instant centers.
+    """
+    from graphkin.render.scene import far_distance
+
+    box = pen.box
+    mid = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
+    k = pen.p.k
+    seg = clip_segment(mid, xy, box)
+    if seg is None:
+        return
+    u = (xy - mid) / float(np.hypot(*(xy - mid)))
+    tip = np.asarray(seg[1], dtype=float) - 0.08 * k * u
+    tail = tip - 0.45 * k * u
+    lab = names[0]
+    g = pen.group(gid, 5.0, step=step, key=lab)
+    arrow = Item("arrow", np.array([tail, tip]), "vector-aux", key=f"{lab}-arrow",
+                 head=0.08 * k, width=0.028 * k)
+    g.items.append(arrow)
+    for n in names:
+        pen.points[n] = tail
+        pen.labelled.add(n)
+    who = ", ".join(letter(n) for n in names)
+    far = f"{far_distance(float(np.hypot(*(xy - ref))))} {pen.p.unit}"
+    text = f"{who}, {far} from {letter(ref_name)}"
+    # where the edge has no room: the distance on a second line, then the name alone
+    pen.p.labels.append(LabelRequest(text, tail, "label", f"label-{g.gid}-{lab}", g,
+                                     key=lab, arrow=arrow,
+                                     fallback=(f"{who}\n{far} from {letter(ref_name)}",
+                                               f"{who}, {far}", f"{who}\n{far}", who)))
+
+
+def far_points(pen: Pen, ref: np.ndarray, ref_name: str) -> None:
+    """An arrow at the panel's edge toward each point asked for beyond it (Sec. 9.6).
+
+    A Burmester point or a pivot of the chosen linkage far from the postures
+    is not left off with nothing said: it is drawn as graphkin draws every far
+    point, an arrow at the edge lettered with its name and its distance from the
+    first posture's point; points at one place share one arrow (``M₂, O_B``).
+    """
+    groups: list[tuple[list[str], np.ndarray]] = []
+    tol = 1e-9 * pen.p.diag()
+    for name, xy in pen.off.items():
+        if name in pen.points or name in pen.labelled:
+            continue
+        for names, q in groups:
+            if float(np.hypot(*(q - xy))) <= tol:
+                names.append(name)
+                break
+        else:
+            groups.append(([name], xy))
+    for names, xy in groups:
+        _far_arrow(pen, f"far-{names[0]}", names, xy, ref, ref_name)
 
 
 def far_poles(pen: Pen, cx: Construction, ref: np.ndarray, ref_name: str) -> None:
@@ -414,11 +479,6 @@ def far_poles(pen: Pen, cx: Construction, ref: np.ndarray, ref_name: str) -> Non
     Lettered with the pole's distance from the first posture's point
     (``P₃₄, 11.2 in from D₁``).
     """
-    from graphkin.render.scene import far_distance
-
-    box = pen.box
-    mid = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
-    k = pen.p.k
     ev = cx.evaluate({"t": np.array(0.0)} if "t" in cx.labels else None, strict=False)
     for s in cx:
         lab = s.outputs[0]
@@ -427,22 +487,7 @@ def far_poles(pen: Pen, cx: Construction, ref: np.ndarray, ref_name: str) -> Non
         xy = _xy(ev[lab])
         if xy is None or pen.inside(xy):
             continue
-        seg = clip_segment(mid, xy, box)
-        if seg is None:
-            continue
-        u = (xy - mid) / float(np.hypot(*(xy - mid)))
-        tip = np.asarray(seg[1], dtype=float) - 0.08 * k * u
-        tail = tip - 0.45 * k * u
-        g = pen.group(f"{s.step_id}-far", 5.0, step=s, key=lab)
-        arrow = Item("arrow", np.array([tail, tip]), "vector-aux", key=f"{lab}-arrow",
-                     head=0.08 * k, width=0.028 * k)
-        g.items.append(arrow)
-        pen.points[lab] = tail
-        pen.labelled.add(lab)
-        text = f"{letter(lab)}, {far_distance(float(np.hypot(*(xy - ref))))} " \
-               f"{pen.p.unit} from {letter(ref_name)}"
-        pen.p.labels.append(LabelRequest(text, tail, "label", f"label-{g.gid}-{lab}", g,
-                                         key=lab, arrow=arrow, fallback=(letter(lab),)))
+        _far_arrow(pen, f"{s.step_id}-far", [lab], xy, ref, ref_name, step=s)
 
 
 def paint_linkage(pen: Pen, link: Any, postures: bool = True) -> None:

@@ -23,7 +23,7 @@ from strategies import examples
 from graphkin.errors import InputError
 from graphkin.render.labels import collisions
 from graphkin.render.svg import to_bytes
-from graphkin.render.synthesis import draw_synthesis
+from graphkin.render.synthesis import draw_synthesis, letter
 from graphkin.synthesis import loads_spec, synthesize
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -82,6 +82,24 @@ def check_drawing(res) -> None:
                 v = np.asarray(ev[step.label], dtype=float)
                 if np.all(np.isfinite(v)) and abs(v[2]) > 1e-12 * np.max(np.abs(v)):
                     assert step.label in lettered, (step.label, "pole not lettered")
+    # every Burmester point and pivot of the linkage beyond the panel is named by an arrow at
+    # its edge (as a far pole or a far instant center is), not left off with nothing said
+    x0, y0, x1, y1 = d.sheet.panels[0].inner
+    far = []
+    for k, bp in enumerate(res.burmester, 1):
+        far += [(f"M{k}", bp.center), (f"m{k}", bp.circle)]
+    if res.chosen is not None and res.spec.postures is not None:
+        far += [("O_A", res.chosen.o_a), ("O_B", res.chosen.o_b)]
+    said = [t.get_text() for t in d.texts.values()]
+    for name, z in far:
+        if np.isfinite(z) and not (x0 <= z.real <= x1 and y0 <= z.imag <= y1):
+            named = {name}
+            if res.chosen is not None:   # a Burmester point taken as a pivot of the linkage
+                (a, b), (na, nb) = res.chosen.pivots, res.chosen.names
+                named |= {f"O_{c}" for c in "AB" if getattr(res.chosen, f"o_{c.lower()}") == z}
+                named |= {f"{n}{j + 1}" for n, q in ((na, a), (nb, b))
+                          for j in range(len(q)) if abs(q[j] - z) <= 1e-9 * abs(z)}
+            assert any(letter(n) in t for n in named for t in said), (name, z, said[-5:])
     for key, art in d.items():
         name = bare(key)
         if _MUST.match(name) and hasattr(art, "get_marker") and art.get_marker() not in (
@@ -173,3 +191,39 @@ def test_every_step_is_a_group_with_its_step_id_and_the_poles_carry_the_books_le
     assert any("O_{A}" in t for t in shown)
     check_drawing(res)
 
+
+
+# Five postures whose second Burmester point (the center point M2, chosen as the pivot O_B)
+# lies 19.6 in from D1, far above the figure (found by the random posture sets above)
+FIVE_FAR = """
+title = "five postures, a Burmester point far away"
+units = "in"
+[[postures]]
+point = [0.0, 0.0]
+angle = 0.0
+[[postures]]
+point = [1.2259, 0.0]
+angle = 10.0
+[[postures]]
+point = [1.8257, 0.0136]
+angle = 20.373
+[[postures]]
+point = [3.1257, 0.0136]
+angle = 56.373
+[[postures]]
+point = [4.1848, 0.0247]
+angle = 85.735
+"""
+
+
+def test_a_far_burmester_point_is_named_at_the_edge() -> None:
+    res = synthesize(loads_spec(FIVE_FAR))
+    assert res.chosen is not None
+    far = res.chosen.o_b
+    x0, y0, x1, y1 = draw_synthesis(res).sheet.panels[0].inner
+    assert not (x0 <= far.real <= x1 and y0 <= far.imag <= y1)   # it is off the figure
+    check_drawing(res)
+    d = draw_synthesis(res)
+    # its name and its distance from D1 = (0, 0), to three figures
+    said = [t.get_text() for t in d.texts.values() if letter("O_B") in t.get_text()]
+    assert said and f"{abs(far):.3g} in" in said[0], said

@@ -44,6 +44,7 @@ import numpy as np
 
 from graphkin.construction import Construction, Evaluation
 from graphkin.errors import AssemblyError, GraphkinError, InputError
+from graphkin.kinematics.assembly_words import point_words
 from graphkin.kinematics.sweep.columns import _columns
 from graphkin.kinematics.sweep.drive_range import _count, _drive_values
 from graphkin.kinematics.sweep.engine import _Block, _dyads, _Engine, _engine
@@ -358,8 +359,9 @@ def _check(eng: _Engine, cx: Construction, designs: _Designs,
                     same = have == want
                 if not same:
                     raise InputError(
-                        f"step {s.label} ({s.op}): its {p} depends on these dimensions in a way "
-                        "the batch cannot follow yet; sweep these designs one by one",
+                        f"the construction of {point_words(s.outputs[0])} depends on these "
+                        "dimensions in a way the batch cannot follow yet; sweep these designs "
+                        "one by one",
                         key="dimensions", file=eng.mech.source)
 
 
