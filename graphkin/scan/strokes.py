@@ -63,6 +63,9 @@ _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
 _KEEP_MM = 2.0
 """A line refitted apart from the others (:func:`apart`) keeps at least this much of itself."""
+_OFF_TIP_MM = 3.0
+"""Of crossings as many lines agree on, the one nearest the strokes' tips is taken (each
+tip counted at most this far: a tip run on over other ink is up to 3 mm past)."""
 _SIGMA_LINE = 0.1
 """How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
@@ -440,7 +443,12 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     A, b = np.array(normals), np.array(offsets)
     end = np.mean([min(segs[i], key=lambda e: float(np.hypot(*(e - guess)))) for i in idx],
                   axis=0)
-    best: tuple[int, float, np.ndarray] | None = None
+    # pieces of one stroke (a gap, or the detector stopping where it crosses other ink):
+    # their ends there are no stroke's tip
+    broken = {lines[i] for i, j in itertools.permutations(range(len(lines)), 2)
+              if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < math.sin(_ANGLE)
+              and abs(float(A[j] @ segs[lines[i]].mean(axis=0)) - b[j]) < _MISS_MM}
+    best: tuple[int, float, float, np.ndarray] | None = None
     for i, j in itertools.combinations(range(len(lines)), 2):
         if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < _SPREAD_SIN:
             continue
@@ -448,12 +456,17 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         if float(np.hypot(*(x - guess))) >= 3.0:
             continue
         miss = np.abs(A @ x - b)
-        support = int(np.count_nonzero(miss <= _MISS_MM))
+        support = _distinct(A[miss <= _MISS_MM])
         total = float(miss[miss <= _MISS_MM].sum())
-        if best is None or (support, -total) > (best[0], -best[1]):
-            best = (support, total, x)
+        # of crossings as many lines agree on, the one nearest where the strokes end (not
+        # counting the ends of a line broken there, by a gap or where it crosses a stroke:
+        # passing near the image, it crosses the others away from their tips)
+        off_tips = sum(min(float(np.hypot(*(x - e))), _OFF_TIP_MM)
+                       for j, e in zip(idx, tips, strict=False) if j not in broken)
+        if best is None or (support, -off_tips, -total) > (best[0], -best[1], -best[2]):
+            best = (support, off_tips, total, x)
     # the lines that agree on the vertex (a letter or a barb ending nearby does not)
-    ok = np.abs(A @ (best[2] if best is not None else end) - b) <= _MISS_MM
+    ok = np.abs(A @ (best[3] if best is not None else end) - b) <= _MISS_MM
     if not np.any(ok):
         return end
     agree = [segs[i] for i, k in zip(lines, ok, strict=True) if k]
@@ -464,6 +477,21 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         agree.append(np.array([pole, guess], dtype=float))
     return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
                     guess, end)
+
+
+def _distinct(normals: np.ndarray) -> int:
+    """How many lines of these unit normals there are, two pieces of one line counted once.
+
+    Lines that pass through one point (a crossing's support) and run within
+    3° of each other are pieces of one stroke: broken by a gap, or where it
+    crosses another, into two segments (both of them then agree on every
+    crossing on that stroke, right or not).
+    """
+    kept: list[np.ndarray] = []
+    for a in normals:
+        if all(abs(float(a[0] * k[1] - a[1] * k[0])) >= math.sin(_ANGLE) for k in kept):
+            kept.append(a)
+    return len(kept)
 
 
 def _on_own_line(segs: np.ndarray, tip: np.ndarray, pole: np.ndarray | None) -> np.ndarray:
