@@ -44,7 +44,7 @@ from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
-from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
+from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
 
 __all__ = ["SheetRead", "read_sheet", "mark_scan", "places", "NOT_FOUND"]
 
@@ -104,6 +104,9 @@ class SheetRead:
     carried : dict
         Name -> where it is when constructed right from the images read before
         it that are wrong (sheet mm; follow-through from the student's own images).
+    arrows : ndarray (k, 2)
+        The tips of arrowheads in the middle of a line from the pole, where
+        no segment ends (sheet mm; :func:`graphkin.scan.strokes.arrow_tips`).
     """
 
     rect: Rectified
@@ -114,6 +117,7 @@ class SheetRead:
     missing: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     carried: dict[str, list[np.ndarray]] = field(default_factory=dict)
+    arrows: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
 
 def _names(sol: Any) -> list[str]:
@@ -198,7 +202,9 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
     segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
-    read = SheetRead(rect, layout, segs, places=places(sol, layout, diag))
+    read = SheetRead(rect, layout, segs, places=places(sol, layout, diag),
+                     arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
+                                       np.array(layout.pole)))
     _match(read)
     for _ in range(_CARRY_ROUNDS):
         if not _carried(read, sol, diag):
@@ -270,10 +276,14 @@ def _match(read: SheetRead) -> None:
     read.notes = []
     segs = read.segments
     pole = np.array(read.layout.pole)
-    pts, seg_of = ends(segs)
-    ok = _vertex_ends(segs, pts, pole)
-    gap = _gap_ends(segs, pts)
-    strong = _strength(pts)
+    ends_at, seg_of = ends(segs)
+    # the segments' ends, then the arrowheads' tips where none ends (an image in the middle
+    # of a straight line from the pole)
+    pts = np.concatenate([ends_at, read.arrows.reshape(-1, 2)])
+    extra = len(pts) - len(ends_at)
+    ok = np.concatenate([_vertex_ends(segs, ends_at, pole), np.ones(extra, bool)])
+    gap = np.concatenate([_gap_ends(segs, ends_at), np.zeros(extra, bool)])
+    strong = np.concatenate([_strength(ends_at), np.zeros(extra)])
     names = list(read.places)
     cands: dict[str, list[tuple[float, int]]] = {}
     reach: dict[str, float] = {}
@@ -300,7 +310,7 @@ def _match(read: SheetRead) -> None:
     chosen = _best_assignment(read, names, cands, reach, pts)
     for name, j in chosen.items():
         p = pts[j]
-        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(pts - p).T) < _SAME_MM)]
+        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)]
         read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)

@@ -30,7 +30,8 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "apart", "ends", "vertex_at"]
+__all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "apart", "ends", "vertex_at",
+           "arrow_tips"]
 
 INK_RATIO = 0.84
 """A pixel darker than this fraction of the paper around it is pencil."""
@@ -62,6 +63,9 @@ _BANDS = (0.9, 0.5)
 """The ink within these distances (mm) of the line, refitted in turn: the stroke's middle."""
 _KEEP_MM = 2.0
 """A line refitted apart from the others (:func:`apart`) keeps at least this much of itself."""
+_OFF_TIP_MM = 3.0
+"""Of crossings as many lines agree on, the one nearest the strokes' tips is taken (each
+tip counted at most this far: a tip run on over other ink is up to 3 mm past)."""
 _SIGMA_LINE = 0.1
 """How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
@@ -402,8 +406,13 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     overshot or stopped short still points at the vertex, and along lines
     that meet at a narrow angle the ends decide.  ``pole``: the vector from
     it ends here too, found as a segment or not (its direction tells how far
-    the other strokes' tips run on over its ink).
+    the other strokes' tips run on over its ink).  With no segment ending
+    there (``idx`` empty), ``guess`` is an arrowhead's tip in the middle of a
+    line from the pole (:func:`arrow_tips`), put on that line
+    (:func:`_on_own_line`).
     """
+    if not idx:
+        return _on_own_line(segs, np.asarray(guess, dtype=float), pole)
     lines = list(idx)
     # the strokes' own ends there: ``guess`` is one of them, and may be the one run on
     # farthest past the vertex, so a line's crossing is looked for near each
@@ -434,7 +443,12 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
     A, b = np.array(normals), np.array(offsets)
     end = np.mean([min(segs[i], key=lambda e: float(np.hypot(*(e - guess)))) for i in idx],
                   axis=0)
-    best: tuple[int, float, np.ndarray] | None = None
+    # pieces of one stroke (a gap, or the detector stopping where it crosses other ink):
+    # their ends there are no stroke's tip
+    broken = {lines[i] for i, j in itertools.permutations(range(len(lines)), 2)
+              if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < math.sin(_ANGLE)
+              and abs(float(A[j] @ segs[lines[i]].mean(axis=0)) - b[j]) < _MISS_MM}
+    best: tuple[int, float, float, np.ndarray] | None = None
     for i, j in itertools.combinations(range(len(lines)), 2):
         if abs(float(A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0])) < _SPREAD_SIN:
             continue
@@ -442,12 +456,17 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         if float(np.hypot(*(x - guess))) >= 3.0:
             continue
         miss = np.abs(A @ x - b)
-        support = int(np.count_nonzero(miss <= _MISS_MM))
+        support = _distinct(A[miss <= _MISS_MM])
         total = float(miss[miss <= _MISS_MM].sum())
-        if best is None or (support, -total) > (best[0], -best[1]):
-            best = (support, total, x)
+        # of crossings as many lines agree on, the one nearest where the strokes end (not
+        # counting the ends of a line broken there, by a gap or where it crosses a stroke:
+        # passing near the image, it crosses the others away from their tips)
+        off_tips = sum(min(float(np.hypot(*(x - e))), _OFF_TIP_MM)
+                       for j, e in zip(idx, tips, strict=False) if j not in broken)
+        if best is None or (support, -off_tips, -total) > (best[0], -best[1], -best[2]):
+            best = (support, off_tips, total, x)
     # the lines that agree on the vertex (a letter or a barb ending nearby does not)
-    ok = np.abs(A @ (best[2] if best is not None else end) - b) <= _MISS_MM
+    ok = np.abs(A @ (best[3] if best is not None else end) - b) <= _MISS_MM
     if not np.any(ok):
         return end
     agree = [segs[i] for i, k in zip(lines, ok, strict=True) if k]
@@ -458,6 +477,42 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         agree.append(np.array([pole, guess], dtype=float))
     return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
                     guess, end)
+
+
+def _distinct(normals: np.ndarray) -> int:
+    """How many lines of these unit normals there are, two pieces of one line counted once.
+
+    Lines that pass through one point (a crossing's support) and run within
+    3° of each other are pieces of one stroke: broken by a gap, or where it
+    crosses another, into two segments (both of them then agree on every
+    crossing on that stroke, right or not).
+    """
+    kept: list[np.ndarray] = []
+    for a in normals:
+        if all(abs(float(a[0] * k[1] - a[1] * k[0])) >= math.sin(_ANGLE) for k in kept):
+            kept.append(a)
+    return len(kept)
+
+
+def _on_own_line(segs: np.ndarray, tip: np.ndarray, pole: np.ndarray | None) -> np.ndarray:
+    """An arrowhead's tip where no segment ends (:func:`arrow_tips`), on its vector's line.
+
+    The barbs place it along the line to 0.1-0.2 mm; across, the line of the
+    segment from the pole it lies on does (the nearest within 1 mm).  Other
+    lines passing there are not crossed with it: a faint construction line
+    or a stroke run on through it a few degrees off would move the point
+    along the line by millimetres.
+    """
+    best, out = 1.0, tip
+    for sg in segs:
+        if pole is not None and not _through(sg, pole):
+            continue
+        d = (sg[1] - sg[0]) / np.hypot(*(sg[1] - sg[0]))
+        n = np.array([-d[1], d[0]])
+        off = float((tip - sg[0]) @ n)
+        if abs(off) < best:
+            best, out = abs(off), tip - off * n
+    return np.asarray(out)
 
 
 def _through(sg: np.ndarray, pole: np.ndarray) -> bool:
@@ -549,3 +604,149 @@ def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list
     if np.linalg.cond(M) > 1e6:
         return end
     return np.asarray(np.linalg.solve(M, r))
+
+
+_BARB_DEG = np.arange(10.0, 36.0, 1.0)
+"""The angles (degrees) an arrowhead's barbs are looked for at, from the vector's line."""
+_BARB_O = np.arange(0.6, 1.45, 0.1)
+"""How far beside the line (mm) a barb's ink is read: clear of the line's own, blurred."""
+_BARB_DARK = 0.3
+"""Both barbs' ink, above the line's own beside it, at least this part of the line's darkness."""
+
+
+def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
+               sheet_h_mm: float, pole: np.ndarray) -> np.ndarray:
+    """The tips of arrowheads in the middle of a line from the pole (mm, (k, 2)).
+
+    An image in line with the pole and another image (a slider-crank at a
+    dead centre: the crank's image, the coupler point's and the pole in one
+    line) is in the middle of one straight stroke: no segment ends there, and
+    only its vector's arrowhead marks it (Uicker, Pennock & Shigley, 5th ed.,
+    Sec. 3.4: each absolute vector drawn from the pole with its arrowhead at
+    the image).  Along each segment on a line through the pole (within
+    1.5 mm), the page's darkness beside the line, less the line's own there
+    (the median along it at that distance), is matched with two barbs leaving
+    the line backward (toward the pole), one on each side, at 10-35°: the
+    darkness along each barb's line 0.6-1.4 mm beside the line, the weaker
+    of the two the score, at least 30 % of the line's darkness.  That finds
+    an arrowhead to a millimetre or so (a barb 2 mm long at 15° is hardly
+    0.5 mm clear of the line); where the tip is, the barbs' outer edges say
+    (:func:`_barbs_meet`).  Tips within 2.5 mm of a segment's end (an
+    arrowhead at an end: the end is read) are left out, and the weaker of
+    any two within 3 mm.
+    """
+    if not len(segs):
+        return np.zeros((0, 2))
+    x0, y0 = origin_px
+    step = 0.1 * PX_PER_MM
+    tans = np.tan(np.radians(_BARB_DEG))
+    found: list[tuple[float, np.ndarray]] = []
+    for sg in segs:
+        if not _through(sg, pole):
+            continue
+        near, far = sorted(sg, key=lambda e: float(np.hypot(*(e - pole))))
+        a, b = ((np.array([e[0], sheet_h_mm - e[1]]) * PX_PER_MM - np.array([x0, y0]) - 0.5)
+                for e in (near, far))
+        length = float(np.hypot(*(b - a)))
+        if length < 8 * PX_PER_MM:
+            continue
+        u = (b - a) / length
+        n = np.array([-u[1], u[0]])
+        t = np.arange(0.0, length + step / 2, step)
+        o = np.arange(-1.6, 1.65, 0.1) * PX_PER_MM
+        grid = a + t[:, None, None] * u + o[None, :, None] * n
+        dark = _sample(ratio, grid)
+        line = float(np.median(dark[:, len(o) // 2]))
+        if line <= 0.05:
+            continue
+        res = np.clip(dark - np.median(dark, axis=0), 0.0, None)
+        scores: list[np.ndarray] = []
+        for side in (1.0, -1.0):
+            cols = [int(np.argmin(np.abs(o - side * k * PX_PER_MM))) for k in _BARB_O]
+            # along a barb at angle α, the ink |o| beside the line is |o| / tan α behind the tip
+            back = np.rint(np.outer(1.0 / tans, _BARB_O) * 10.0).astype(int)   # (angles, o)
+            sc = np.zeros((len(tans), len(t)))
+            for ia in range(len(tans)):
+                acc = np.zeros(len(t))
+                for k, c in enumerate(cols):
+                    sh = back[ia, k]
+                    acc[sh:] += res[: len(t) - sh, c] if sh else res[:, c]
+                sc[ia] = acc / len(cols)
+            scores.append(sc.max(axis=0))
+        both = np.minimum(*scores)
+        lo, hi = int(2.5 * 10), len(t) - int(2.5 * 10)
+        if hi <= lo:
+            continue
+        for k in range(lo, hi):
+            if both[k] < _BARB_DARK * line or both[k] < both[k - 1] or both[k] < both[k + 1]:
+                continue
+            at = _barbs_meet(dark, t, o, t[k], line)
+            if at is None:
+                continue
+            tip_px = a + at * u
+            mm = np.array([(tip_px[0] + x0 + 0.5) / PX_PER_MM,
+                           sheet_h_mm - (tip_px[1] + y0 + 0.5) / PX_PER_MM])
+            found.append((float(both[k] / line), mm))
+    ends_mm = segs.reshape(-1, 2)
+    out: list[np.ndarray] = []
+    for _score, p in sorted(found, key=lambda f: -f[0]):
+        if float(np.min(np.hypot(*(ends_mm - p).T))) < 2.5:
+            continue
+        if any(float(np.hypot(*(p - q))) < 3.0 for q in out):
+            continue
+        out.append(p)
+    return np.array(out).reshape(-1, 2)
+
+
+def _edge(prof: np.ndarray, o: np.ndarray, level: float) -> float:
+    """The farthest ``o`` (px, increasing) out to which ``prof`` stays at ``level`` or darker."""
+    k = 0
+    while k + 1 < len(prof) and prof[k + 1] >= level:
+        k += 1
+    if k + 1 >= len(prof) or prof[k] <= prof[k + 1]:
+        return float(o[k])
+    return float(o[k] + (prof[k] - level) / (prof[k] - prof[k + 1]) * (o[k + 1] - o[k]))
+
+
+def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
+                line: float) -> float | None:
+    """Where the two barbs found near ``t0`` leave the line (px along it), or None.
+
+    On each side, the ink's edge (where the darkness falls through half the
+    line's) is the line's own, ``h`` off its middle, ahead of the tip, and
+    behind it the barb's outer edge, ``(t* - t) tan α + h / cos α`` off: a
+    straight line is fitted to that edge where it stands over 0.2 mm clear of
+    the line's own (from the tip back to the barb's widest), and the tip
+    ``t*`` solved from it.  Each barb must leave at 8-40°; the two tips must
+    agree within 1 mm.
+    """
+    mid = len(o) // 2
+    meets = []
+    for side in (1.0, -1.0):
+        cols = np.arange(mid, len(o)) if side > 0 else np.arange(mid, -1, -1)
+        oo = np.abs(o[cols])
+        ahead = np.flatnonzero((t > t0 + 0.6 * PX_PER_MM) & (t < t0 + 2.5 * PX_PER_MM))
+        behind = np.flatnonzero((t > t0 - 3.5 * PX_PER_MM) & (t < t0 + 1.0 * PX_PER_MM))
+        if not len(ahead) or len(behind) < 5:
+            return None
+        h = float(np.median([_edge(dark[k, cols], oo, 0.5 * line) for k in ahead]))
+        e = np.array([_edge(dark[k, cols], oo, 0.5 * line) for k in behind])
+        out = e > h + 0.2 * PX_PER_MM
+        if np.count_nonzero(out) < 4:
+            return None
+        # from the first clear sample back to the widest (the barb's end is rounded)
+        far = int(np.argmax(np.where(out, e, -np.inf)))
+        near = int(np.flatnonzero(out)[-1])
+        idx = np.arange(far + 1, near + 1) if near > far else np.array([], int)
+        idx = idx[out[idx]] if len(idx) else idx
+        if len(idx) < 3:
+            return None
+        slope, icpt = np.polyfit(t[behind][idx], e[idx], 1)
+        tan = -float(slope)
+        if not math.tan(math.radians(8.0)) <= tan <= math.tan(math.radians(40.0)):
+            return None
+        cos = 1.0 / math.hypot(1.0, tan)
+        meets.append((float(icpt) - h / cos) / tan)
+    if abs(meets[0] - meets[1]) > 1.0 * PX_PER_MM or abs(np.mean(meets) - t0) > 2.5 * PX_PER_MM:
+        return None
+    return float(np.mean(meets))
