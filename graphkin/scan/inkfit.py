@@ -7,39 +7,47 @@ conditioned: a line 0.1 mm off moves it 0.3-1 mm along them.  Here the
 expected figure gives the lines: at an image point ``p`` the student drew
 the vector from the pole and a line to each other image of the same link
 (Sec. 3.5), from neighbours already read.  Each such line is fitted to the
-ink of the light-flattened sheet (the reader's ``ratio`` image) over its
-whole length, and the image is taken where the fitted lines and the ink's
-ends along them agree best:
+ink of the light-flattened sheet (the reader's ``ratio`` image) along its
+length (the 20 mm nearest the image), and the image is taken where the
+fitted lines and the ink's ends along them agree best:
 
 1. **The band.**  The sheet is sampled across the hypothesised line (±1.2 mm)
-   every 0.2 mm along it, leaving out where another expected stroke comes
-   within the band (the other lines through each end, the arrowhead's barbs
-   at ``p``): there the ink is shared and would pull the line toward the
-   other.  Each cross-section that holds one pencil line (dark enough, no
-   wider than a pencil line: a letter, a crossing stroke or a smudge is
-   wider) gives the line's middle there (its darkness-weighted centre).
+   every 0.2 mm along it, leaving out the cross-sections where another
+   expected stroke's ink merges with this one's (a stroke within 0.8 mm and
+   not on it: the other lines through each end, the arrowhead's barbs at
+   ``p``): there the ink is shared and would pull the line toward the other.
+   In each cross-section the pencil line nearest the hypothesised one (its
+   darkest sample within 0.7 mm) gives the line's middle there (the
+   darkness-weighted centre of the ink within 0.45 mm of it), when it is
+   dark enough and no wider than a pencil line (a letter, a crossing stroke
+   or a smudge is wider).
 2. **The line.**  A straight line is fitted to those middles, weighted by
-   their darkness, robustly (sections farther than 3 robust σ and 0.15 mm
-   from it are dropped, in turn); the band is then centred on the new line
-   and the fit repeated.  Its uncertainty across itself at ``p`` is that of
-   the fit, with the hand's slow wobble counted as one independent sample
-   every 2 mm.  A line covered by ink over less than 60 % of what is left of
-   it, or over less than 5 mm, is not used.
+   their darkness, robustly (middles farther than 3 robust σ and 0.15 mm
+   from it are dropped, in turn), within 20 mm of the middle nearest ``p``
+   (the hand's wobble wanders: far ink does not predict the line at ``p``);
+   the vector from the pole is held through the pole.  The band is then
+   centred on the new line and the fit repeated.  Its uncertainty across
+   itself at ``p`` is that of the fit, with the wobble counted as one
+   independent sample every 2 mm, and its wander from the last middle fitted
+   to ``p``.  A line whose ink covers under 60 % of what is left of it, or
+   under 5 mm, or that is fitted no better than 0.15 mm (σ), is not used.
 3. **The end.**  Along each fitted line the ink is walked outward from inside
    the stroke to where its darkness falls through half of the stroke's own
    (the stroke's tip, as :mod:`graphkin.scan.strokes` reads it); the image is
    taken half a pencil line's width inside it, or more where the walk runs
-   on over another expected stroke's ink (a line going on through ``p``).
+   on over another expected stroke's ink (a line going on through ``p``);
+   an end run on more than 1.5 mm is not used.
 4. **The point.**  Each line holds the image across itself (σ from its
    fit), each end along its line (σ 0.3 mm: ends overshot or stopped short
    by up to 0.4 mm); an end farther from the lines' crossing than the two
-   can differ by (2.5 σ) is left out.  Lines well apart fix the point by
-   their crossing; along lines nearly parallel, the ends decide.
+   can differ by (2.5 σ) is left out, and where every end found is, the
+   lines are not the ones drawn: nothing is decided.  Lines well apart fix
+   the point by their crossing; along lines nearly parallel, the ends decide.
 
 The point so found replaces the one read only when it is well determined
 (σ under :data:`SIGMA_MAX_MM` in every direction) and within
 :data:`MOVE_MAX_MM` of it; one moved farther than the drawing tolerance is
-said so in a note.
+said so in a note.  Measured in docs/checking.md ("How well it reads").
 
 References
 ----------
@@ -96,6 +104,8 @@ _WALK_MM = 0.04
 """The hand's wobble wanders by about this (σ, mm) every :data:`_WOBBLE_MM`."""
 _SIGMA_FLOOR_MM = 0.04
 """A fitted line is not trusted to better than this across itself (σ, mm)."""
+_LINE_SIGMA_MAX_MM = 0.15
+"""A line fitted no better than this across (σ, mm) shares its band with other ink: unused."""
 _SIGMA_END_MM = 0.3
 """How far (σ, mm) a stroke's end is from its image point along its line."""
 _COVER_MAX_MM = 1.5
@@ -368,7 +378,7 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         others = [sg for sg in strokes + barbs if not _same(sg, own[k])]
         fl = fit_line(sheet, q, p0, others, clear_end=_ARROW_MM if is_pole else _CLEAR_MM,
                       through=q if is_pole else None)
-        if fl is None:
+        if fl is None or fl.sigma > _LINE_SIGMA_MAX_MM:
             continue
         fitted.append(fl)
         nrm = np.array([-fl.direction[1], fl.direction[0]])
@@ -393,8 +403,11 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
     if spread > _SPREAD_SIN:
         cross = np.linalg.solve(M, r)
         cov = np.linalg.inv(M)
-        tips = [(tp, d, sg) for tp, d, sg in tips
-                if abs(float((tp - cross) @ d)) <= 2.5 * math.sqrt(sg**2 + float(d @ cov @ d))]
+        agree = [(tp, d, sg) for tp, d, sg in tips
+                 if abs(float((tp - cross) @ d)) <= 2.5 * math.sqrt(sg**2 + float(d @ cov @ d))]
+        if tips and not agree:
+            return None          # no end where the lines cross: a line is not the one drawn
+        tips = agree
     elif len(tips) > 1:
         # one direction: the ends that agree with their median along it
         d0 = tips[0][1]
