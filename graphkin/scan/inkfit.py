@@ -67,7 +67,7 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["FitLine", "Refined", "fit_line", "ink_end", "refine_point", "refine_points",
+__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_end", "refine_point", "refine_points",
            "refine_read", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35

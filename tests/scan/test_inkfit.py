@@ -89,6 +89,20 @@ def test_a_narrow_vertex_is_found_where_the_strokes_meet(
     assert float(np.hypot(*(got["V"].point - v))) < 0.45, (got["V"], v)
 
 
+def test_a_point_read_1e_12_away_is_refined_alike() -> None:
+    # the decisions (lines used, ends kept, the point taken) do not rest on round-off
+    rng = np.random.default_rng(7)
+    pole, v = np.array([12.0, 12.0]), np.array([45.0, 52.0])
+    q = v + 30.0 * _turn((pole - v) / float(np.hypot(*(pole - v))), 10.0)
+    sheet = Sheet(_raster([(pole, v), (q, v), (pole, q)], rng, 0.8, 0.02), (0, 0), _H_MM)
+    read = v + np.array([1.2, 1.5])
+    a = refine_points({"V": read, "Q": q}, [["V", "Q"]], pole, sheet)
+    b = refine_points({"V": read * (1 + 1e-12), "Q": q}, [["V", "Q"]], pole, sheet)
+    assert a.keys() == b.keys() and "V" in a
+    assert (a["V"].lines, a["V"].ends) == (b["V"].lines, b["V"].ends)
+    assert float(np.hypot(*(a["V"].point - b["V"].point))) < 1e-6
+
+
 def test_no_ink_no_refinement() -> None:
     # the lines expected are not drawn at all: nothing is refined (the point read stays)
     sheet = Sheet(np.ones((500, 500), np.float32), (0, 0), _H_MM)
