@@ -446,18 +446,15 @@ def _barbs(pole: np.ndarray, p: np.ndarray) -> list[np.ndarray]:
 
 
 def refine_points(points: dict[str, np.ndarray], links: list[list[str]], pole: np.ndarray,
-                  sheet: Sheet, extra: dict[str, list[np.ndarray]] | None = None
-                  ) -> dict[str, Refined]:
+                  sheet: Sheet) -> dict[str, Refined]:
     """Each image point read refined from its lines' ink (the names refined, see the module).
 
     ``links``: the names of each moving link's points (their images are
-    joined); ``extra``: for names not read, where their images may be (their
-    lines are left out of the others' fits, not fitted).
+    joined, Sec. 3.5).  The strokes expected are the vectors from the pole
+    to the points read, the lines joining the points read of each link, and
+    the arrowheads' barbs at each.
     """
-    extra = extra or {}
     where: dict[str, list[np.ndarray]] = {n: [p] for n, p in points.items()}
-    for n, at in extra.items():
-        where.setdefault(n, list(at))
     strokes: list[np.ndarray] = []
     for at in where.values():
         for p in at:
