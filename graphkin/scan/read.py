@@ -43,6 +43,7 @@ from graphkin.check.polygon import Polygon
 from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
+from graphkin.scan.inkfit import refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
 
@@ -210,6 +211,7 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
         if not _carried(read, sol, diag):
             break
         _match(read)
+    refine_read(read, sol, ratio, (box[0], box[1]), h)      # the images from their lines' ink
     return read
 
 
