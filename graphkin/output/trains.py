@@ -79,6 +79,7 @@ def train_json(train: Train) -> dict[str, Any]:
         "freedom": sol.freedom, "members": members,
         "formula": _formulas(train, sol),
         "table": None if tab is None else _table_json(train, tab),
+        "notes": train.coaxial_notes(),
     }
     return data
 
@@ -104,6 +105,7 @@ def train_text(train: Train) -> str:
                      f"{g6(d['omega'])} {u} {d['sense']}".rstrip(), given.strip()))
     lines += table(rows, "  ")
     lines.append(f"\n  {data['freedom']} degree(s) of freedom; counterclockwise positive.")
+    lines += [f"  {n}" for n in data["notes"]]
     if data["formula"]:
         lines.append("\nFormula method, Eq. (7.25): θ'_LF/A = (ω_L − ω_A)/(ω_F − ω_A)")
         for f in data["formula"]:
