@@ -52,3 +52,20 @@ def test_pitch_radii_of_figure_7_40():
 def test_fergusons_paradox_is_not_flagged(gear_examples):
     # Example 7.10: gears 2, 4, 5 (100, 101, 99) all mesh planet 6 externally
     assert load_train(gear_examples / "trains" / "ex7_10.toml").coaxial_notes() == []
+
+
+def test_the_member_table_prints_a_size_and_a_sense_not_a_sign_too(capsys):
+    # audit9 #4: sun 24 at 1000 rev/min ccw, ring 61 fixed.  Arm: ω_A = 1000 · 24/(24 + 61)
+    # = 282.353 ccw; planet from the arm: (ω_p − ω_A) = −(24/18)(ω_s − ω_A) = −956.863, so
+    # ω_p = −674.510 rev/min: printed "674.51 rev/min cw", as solve prints ω (no sign with cw)
+    assert main(["gears", str(DATA / "ring_mismatch.toml")]) == 0
+    rows = {ln.split()[0]: ln for ln in capsys.readouterr().out.splitlines()[3:7]}
+    assert "674.51 rev/min cw" in rows["planet"] and "-674.51" not in rows["planet"]
+    assert "282.353 rev/min ccw" in rows["arm"]
+
+
+def test_fergusons_gear_5_turns_one_99th_cw(gear_examples, capsys):
+    # Example 7.10 (Table 7.4): Δθ5 = 1/99 rev cw = 0.010101 rev
+    assert main(["gears", str(gear_examples / "trains" / "ex7_10.toml")]) == 0
+    (row,) = [ln for ln in capsys.readouterr().out.splitlines() if ln.startswith("  5 ")]
+    assert row.split()[3:6] == ["0.010101", "rev", "cw"]
