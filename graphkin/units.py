@@ -314,6 +314,7 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
         text = text[: m.start()].strip()
     fast = _common(text, kind, length_unit)
     if fast is not None:
+        _one_sign(value, fast, sense)
         return (-fast if sense == "cw" else fast), sense
     try:
         q = quantity(text)
@@ -333,9 +334,23 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
             from exc
     if not math.isfinite(mag):
         raise ValueError(f"{value!r} is not finite")
+    _one_sign(value, mag, sense)
     if sense == "cw":
         mag = -mag
     return mag, sense
+
+
+def _one_sign(value: str, mag: float, sense: str | None) -> None:
+    """Refuse a negative number with a sense word: ``"-120 rev/min cw"`` says the sense twice.
+
+    ``cw`` already means negative (counterclockwise is positive), so a
+    double negative is a mistake, not a ccw rate.
+    """
+    if sense is not None and mag < 0:
+        plain = value.strip().lstrip("-").strip()
+        raise ValueError(f"{value!r} has both a minus sign and {sense!r}: {sense} already gives "
+                         f"the sense, so write {plain!r} (or the signed value without "
+                         f"{sense!r})")
 
 
 def parse_rate(value: Any, kind: RateKind, length_unit: str) -> float:
