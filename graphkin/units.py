@@ -164,14 +164,65 @@ def length_factor(unit: str) -> float:
     if unit in _COMMON_LENGTHS:
         return _COMMON_LENGTHS[unit]
     ureg = registry()
+    if unit.strip().lower() in ("mil", "mils"):
+        raise ValueError(f"{unit!r} is an angle to pint (a milliradian), not a length: "
+                         "write 'thou' for 1/1000 in")
     try:
         check_unit(unit)
         q = ureg.Quantity(1.0, unit)
     except Exception as exc:  # pint raises several unrelated types
-        raise ValueError(f"unknown unit {unit!r}") from exc
+        near = sorted(_LENGTH_NAMES, key=lambda s: (_distance(s, unit), len(s)))[0]
+        hint = f": did you mean {near!r}?" if _distance(near, unit) <= 2 else ""
+        raise ValueError(f"unknown unit {unit!r}{hint}") from exc
     if q.dimensionality != ureg.meter.dimensionality:
         raise ValueError(f"{unit!r} is not a length unit")
+    spelled = _spellings(unit)
+    if spelled is not None and unit not in spelled:
+        best = sorted(spelled, key=lambda s: (_distance(s, unit), len(s)))[0]
+        raise ValueError(f"{unit!r} is not a unit's name: did you mean {best!r}?")
     return float(q.to("m").magnitude)
+
+
+_LENGTH_NAMES = ("mm", "cm", "m", "km", "in", "ft", "yd", "inch", "inches", "foot", "feet",
+                 "yard", "yards", "thou", "meter", "meters", "metre", "metres", "millimeter",
+                 "millimeters", "millimetre", "millimetres", "centimeter", "centimeters",
+                 "centimetre", "centimetres", "micrometer", "micrometre")
+"""Length names a misspelling is compared with (the nearest is suggested)."""
+
+
+def _plural(name: str) -> str:
+    """English plural of a unit's name: inches, feet, meters."""
+    if name == "foot":
+        return "feet"
+    return name + ("es" if name.endswith(("ch", "sh", "s", "x", "z")) else "s")
+
+
+def _spellings(unit: str) -> set[str] | None:
+    """The ways to write the single unit pint reads ``unit`` as (None: not a single unit).
+
+    Pint reads a plural loosely (``inchs``, ``inchess`` are inches); a file's
+    unit is printed as written, so only the unit's name, its plural, its
+    symbol and its aliases, after a prefix's name, symbol or alias, are taken.
+    """
+    ureg = registry()
+    try:
+        ((prefix, name, _),) = ureg.parse_unit_name(unit)
+        u, p = ureg._units[name], ureg._prefixes[prefix]
+    except Exception:  # not one unit (a product), or pint's tables changed
+        return None
+    heads = {prefix, p.symbol or "", *p.aliases}
+    tails = {name, _plural(name), u.symbol or name, *u.aliases, *map(_plural, u.aliases)}
+    return {h + t for h in heads for t in tails if t}
+
+
+def _distance(a: str, b: str) -> int:
+    """Levenshtein distance (edits between two short names)."""
+    row = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        prev, row[0] = row[0], i
+        for j, cb in enumerate(b, 1):
+            prev, row[j] = row[j], min(row[j] + 1, row[j - 1] + 1, prev + (ca != cb))
+    return row[-1]
 
 
 #: Radians per unit of the common angle units, and seconds per unit of time, as pint gives
@@ -263,6 +314,7 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
         text = text[: m.start()].strip()
     fast = _common(text, kind, length_unit)
     if fast is not None:
+        _one_sign(value, fast, sense)
         return (-fast if sense == "cw" else fast), sense
     try:
         q = quantity(text)
@@ -282,9 +334,23 @@ def parse_quantity(value: Any, kind: RateKind, length_unit: str) -> tuple[float,
             from exc
     if not math.isfinite(mag):
         raise ValueError(f"{value!r} is not finite")
+    _one_sign(value, mag, sense)
     if sense == "cw":
         mag = -mag
     return mag, sense
+
+
+def _one_sign(value: str, mag: float, sense: str | None) -> None:
+    """Refuse a negative number with a sense word: ``"-120 rev/min cw"`` says the sense twice.
+
+    ``cw`` already means negative (counterclockwise is positive), so a
+    double negative is a mistake, not a ccw rate.
+    """
+    if sense is not None and mag < 0:
+        plain = value.strip().lstrip("-").strip()
+        raise ValueError(f"{value!r} has both a minus sign and {sense!r}: {sense} already gives "
+                         f"the sense, so write {plain!r} (or the signed value without "
+                         f"{sense!r})")
 
 
 def parse_rate(value: Any, kind: RateKind, length_unit: str) -> float:

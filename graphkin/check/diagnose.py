@@ -46,7 +46,7 @@ from graphkin.geometry import ops as g
 from graphkin.kinematics.solution import Solution
 from graphkin.mechanisms.model import FRAME
 
-__all__ = ["Mistake", "Diagnoser", "UNIT_FACTORS", "OTHER_BRANCH"]
+__all__ = ["Mistake", "Diagnoser", "UNIT_FACTORS", "OTHER_BRANCH", "unit_factors"]
 
 #: (factor, how it reads, the usual cause)
 UNIT_FACTORS: tuple[tuple[float, str, str], ...] = (
@@ -61,6 +61,30 @@ UNIT_FACTORS: tuple[tuple[float, str, str], ...] = (
     (10.0, "10", "millimetres and centimetres mixed up"),
     (100.0, "100", "centimetres and metres mixed up"),
 )
+
+_METRIC_ONLY = {1000.0, 10.0, 100.0}
+"""The factors whose usual cause (mm, cm, m) only fits a file in metric lengths."""
+
+
+def unit_factors(length_unit: str) -> tuple[tuple[float, str, str], ...]:
+    """:data:`UNIT_FACTORS` with causes that fit a file whose lengths are in ``length_unit``.
+
+    An inch answer 100 times too small is not centimetres and metres mixed up:
+    in a file of inches or feet a power of ten is a decimal point in the wrong place.
+    """
+    from graphkin.units import length_factor
+
+    try:
+        metres = length_factor(length_unit)
+    except ValueError:
+        return UNIT_FACTORS
+    metric = any(abs(metres / 10.0 ** k - 1.0) < 1e-12 for k in range(-9, 4))
+    if metric:
+        return UNIT_FACTORS
+    return tuple((f, label, f"the decimal point {round(math.log10(f))} places off "
+                            f"(the file's lengths are in '{length_unit}', not metric)")
+                 if f in _METRIC_ONLY else (f, label, why) for f, label, why in UNIT_FACTORS)
+
 
 #: the other branch of each two-way construction (Side and Along names)
 OTHER_BRANCH = {"left": "right", "right": "left", "behind": "ahead", "ahead": "behind"}
@@ -146,6 +170,7 @@ class Diagnoser:
         self.ev = ev
         self.sol = ev.sol
         self.mech = ev.mech
+        self._factors = unit_factors(self.mech.length_unit)
         self._variants: list[tuple[Mistake, Evaluator]] | None = None
 
     # ---- the search -----------------------------------------------------
@@ -307,7 +332,7 @@ class Diagnoser:
         pre = "sense reversed and " if with_sense else ""
         if shape == "point" and (exact.ideal or given.ideal):
             return
-        for f, label, why in UNIT_FACTORS:
+        for f, label, why in self._factors:
             code = ("sense+" if with_sense else "") + f"unit:{label}"
             yield (Mistake("unit", f"{pre}too large by a factor of {label}: {why}", code),
                    exact.scaled(sign * f))
@@ -492,7 +517,7 @@ class Diagnoser:
             w = f"ω{d.link}"
             changes: list[tuple[float, Mistake]] = [
                 (-1.0, Mistake("sense", f"the input {w} taken with the wrong sense", "sense"))]
-            for f, label, why in UNIT_FACTORS:
+            for f, label, why in self._factors:
                 changes.append((f, Mistake("unit", f"the input {w} too large by a factor of "
                                                    f"{label}: {why}", f"unit:{label}")))
                 changes.append((1.0 / f, Mistake("unit", f"the input {w} too small by a factor "

@@ -342,6 +342,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             raise InputError("the drawing's scale cannot be fitted: its sizes are out of range "
                              "(give --scale)", file=path_s)
         unit, factor = _default(kind, lu), 1.0
+        # the drawing's own length when it gives one (an SVG sized in mm, a DXF's $INSUNITS)
+        du = poly.unit if poly.unit in _MM_PER else "drawing unit"
         deg = math.degrees(math.atan2(turn.imag, turn.real))
         turned = direction_text(deg)          # in (-180, 180]: never "-180.00°"
         turned = turned if turned.startswith("-") else "+" + turned
@@ -351,7 +353,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
         if fixed is None:
             if len(fit.used) == 1:
                 fitted = fit.used[0]
-            how = (f"scale and turn fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} "
+            how = (f"scale and turn fitted to {used}{out}: 1 {du} = {abs(turn):.4g} "
                    f"{unit}, turned {turned}")
             if abs(deg) > 150.0:
                 notes.append("the polygon is turned about 180° to fit: nothing on the sheet "
@@ -360,7 +362,7 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
                              "input's ω would fit as well; give --scale or draw the mechanism "
                              "on the sheet to have the sense checked")
         else:
-            how = (f"scale fitted to {used}{out}: 1 drawing unit = {abs(turn):.4g} {unit}, "
+            how = (f"scale fitted to {used}{out}: 1 {du} = {abs(turn):.4g} {unit}, "
                    + (f"turned {turned}" if abs(deg) >= 0.005 else "not turned")
                    + f": {whose} gives the directions")
         for n, why in fit.left_out.items():
@@ -374,7 +376,8 @@ def _check_polygon(sol: Solution, poly: Polygon, path_s: str, scale: str | None,
             notes.append(f"{label_of[names[0]]} alone sets the scale: only its direction "
                          "is marked")
     if mm_per_unit is not None:
-        sheet = SheetScale(kind, abs(turn) / mm_per_unit, stated or "fitted")
+        per_mm = abs(turn) / mm_per_unit
+        sheet = SheetScale(kind, per_mm, stated or f"1 mm = {per_mm:.4g} {unit}, fitted")
         tol = dataclasses.replace(tol, scales=(sheet,) + tuple(
             s for s in tol.scales if s.quantity != kind))
     rows: list[Row] = []

@@ -41,7 +41,7 @@ def run(args: argparse.Namespace) -> int:
     from graphkin.commands._args import writing
     from graphkin.errors import InputError
     from graphkin.files import check_output
-    from graphkin.render.worksheet import save_worksheet, worksheet_figure
+    from graphkin.render.worksheet import fit_mechanism, save_worksheet, worksheet_figure
     from graphkin.render.worksheet_layout import mechanism_hash, worksheet_layout
 
     out = Path(args.output)
@@ -52,7 +52,8 @@ def run(args: argparse.Namespace) -> int:
     mech = graphkin.load(args.file)
     sol = mech.solve()
     digest = mechanism_hash(Path(args.file).read_bytes())
-    layout = worksheet_layout(sol, args.diagram, args.sheet, digest, args.upto)
+    layout = fit_mechanism(sol, worksheet_layout(sol, args.diagram, args.sheet, digest,
+                                                  args.upto))
     fig = worksheet_figure(sol, layout, title=getattr(mech, "title", "") or Path(args.file).name)
     with writing(str(out), "--output"):
         save_worksheet(fig, layout, out)

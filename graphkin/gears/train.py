@@ -127,6 +127,42 @@ class Train:
         """The members that carry the axes of a mesh (not the frame)."""
         return list(dict.fromkeys(m.arm for m in self.meshes if m.arm != FRAME))
 
+    def coaxial_notes(self) -> list[str]:
+        """A sun and a ring that mesh one planet on one arm but cannot share an axis.
+
+        The sun's axis and the ring's are both the arm's: the planet's centre
+        lies (N_sun + N_planet)/2 module from it through the sun and
+        (N_ring − N_planet)/2 through the ring, so standard teeth of one module
+        need ``N_ring = N_sun + 2 N_planet`` (pitch radii alike; Fig. 7.40,
+        Sec. 7.14).  Otherwise the speeds still follow from the tooth numbers
+        (Eq. 7.25), as with the profile-shifted teeth of Ferguson's paradox
+        (Example 7.10, all external: not flagged), so this is a note, not a refusal.
+        """
+        notes: list[str] = []
+        word = "N" if self.by_teeth else "R"
+        for ring_mesh in self.meshes:
+            if ring_mesh.contact != Contact.INTERNAL or ring_mesh.arm == FRAME:
+                continue
+            pair = (ring_mesh.driver, ring_mesh.driven)
+            ring, planet = sorted(pair, key=lambda g: self.size[g], reverse=True)
+            for m in self.meshes:
+                if m.contact != Contact.EXTERNAL or m.arm != ring_mesh.arm \
+                        or planet not in (m.driver, m.driven):
+                    continue
+                sun = m.driven if m.driver == planet else m.driver
+                need = self.size[sun] + 2 * self.size[planet]
+                if self.size[ring] != need:
+                    what = ("standard teeth of one module" if self.by_teeth
+                            else "their pitch radii")
+                    notes.append(
+                        f"note: ring gear {ring} and sun gear {sun} share arm "
+                        f"{ring_mesh.arm}'s axis around planet {planet}: {what} need "
+                        f"{word}_{ring} = {word}_{sun} + 2 {word}_{planet} = {_num(need)}, "
+                        f"not {_num(self.size[ring])}"
+                        + (" (else profile-shifted teeth, Sec. 7.11)" if self.by_teeth
+                           else " (Fig. 7.40)"))
+        return notes
+
     def shaft(self) -> dict[str, str]:
         """Each member -> the first member of its shaft (joined members move as one)."""
         rep = {m: m for m in [*self.members, FRAME]}

@@ -439,8 +439,8 @@ def solve_vector_equation(A: Polar, B: Polar, C: Polar, *,
         does not have (the ``key`` names it: ``"A.magnitude"``, ``"branch"``).
     NoIntersectionError
         Case 4 when the arcs do not meet (``|A| + |B| < |C|`` or
-        ``||A| - |B|| > |C|``); case 2 when the arc misses the line.  The error
-        names the step.
+        ``||A| - |B|| > |C|``); case 2 when the arc misses the line.  The message
+        says why in the book's words; the error's ``step`` names the step.
     ParallelDirectionsError
         Case 3 when the two known directions are parallel: the magnitudes are
         infinite (distinct lines) or indeterminate (collinear lines).  It
@@ -668,9 +668,9 @@ def _check_parallel(b: _Builder, z: str, x: str, y: str, anchor: Mapping[str, st
 
 def _parallel_error(b: _Builder, x: str, y: str, free: str, what: str, ux: Vector,
                     uy: Vector) -> ParallelDirectionsError:
-    step = b.cx.step_of(free)
+    # the construction's step labels (P, k_A) stay inside: the message is the book's words
     return ParallelDirectionsError(
-        f"step {step.index} ({free}): case 3 has no solution: the directions of {x} "
+        f"case 3 has no solution: the directions of {x} "
         f"({math.degrees(ux.angle):.6g}°) and {y} ({math.degrees(uy.angle):.6g}°) are "
         f"parallel; {what}", step=free, directions=(ux, uy), vectors=(x, y))
 
@@ -706,7 +706,7 @@ def _finish(b: _Builder, case: VectorEquationCase, wanted: tuple[str, ...],
 def _no_solution(b: _Builder, index: int, values: Mapping[str, np.ndarray],
                  tol: Tolerance) -> ConstructionError:
     step = b.cx[index]
-    head = f"step {step.index} ({step.label}): case {int(b.case)} has no solution"
+    head = f"case {int(b.case)} has no solution"   # the book's words, no step labels
     if step.op == "intersect_circles":
         k1, k2 = (np.asarray(values[s]) for s in step.inputs)
         (n1, r1), (n2, r2) = ((s[2:], float(k[2])) for s, k in zip(step.inputs, (k1, k2)))

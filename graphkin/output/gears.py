@@ -215,7 +215,8 @@ def _rack_text(lay: MeshLayout, data: dict[str, Any]) -> list[str]:
         lines.append("  No interference: C lies between A and P (Eq. 7.12); the rack's B lies "
                      "at infinity and does not bound the recess.")
     lines.append(f"  The fewest teeth on {c2} that mesh with this rack without interference "
-                 f"(N ≥ 2a/(m sin² φ)): {m['minimum_driver_teeth']}.")
+                 f"(N ≥ 2a/(m sin² φ)): {m['minimum_driver_teeth']}"
+                 + _shifted(c2, data["gears"][c2], u))
     if m["contact_ratio"] < 1.0:
         lines.append("  The contact ratio is below 1: at times no pair of teeth is in contact.")
     return lines
@@ -300,11 +301,28 @@ def gears_text(lay: MeshLayout) -> str:
                      "whole pitch of the motion.")
     least = m["minimum_driver_teeth"]
     lines.append(f"  The fewest teeth on {c2} that mesh with {g3['teeth']} teeth without "
-                 f"interference: {least if least is not None else 'none (no pinion fits)'}.")
+                 f"interference: {least if least is not None else 'none (no pinion fits)'}"
+                 + _shifted(c2, g2, u))
     if m["contact_ratio"] < 1.0:
         lines.append("  The contact ratio is below 1: at times no pair of teeth is in contact "
                      "(Sec. 7.9).")
     return "\n".join(lines) + "\n"
+
+
+def _shifted(name: str, gear: dict, unit: str) -> str:
+    """The end of the fewest-teeth sentence: for standard teeth, and the driver's offset.
+
+    The fewest teeth are those of standard teeth, cut with the rack cutter's
+    pitch line on the pitch circle; a pinion cut with the cutter offset (Sec.
+    7.11: a profile shift, Eq. 7.21 for the offset that avoids undercut) can
+    have fewer, as this one may.
+    """
+    off = float(gear.get("offset") or 0.0)
+    if off == 0.0:
+        return "."
+    return (f" for standard teeth; {name} is cut with the cutter offset e = {g6(off)} {unit} "
+            "(a profile shift, Sec. 7.11), which that count does not take into account: the "
+            "interference above is that of its shifted teeth.")
 
 
 def _yes(flag: bool) -> str:

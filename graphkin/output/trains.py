@@ -79,6 +79,7 @@ def train_json(train: Train) -> dict[str, Any]:
         "freedom": sol.freedom, "members": members,
         "formula": _formulas(train, sol),
         "table": None if tab is None else _table_json(train, tab),
+        "notes": train.coaxial_notes(),
     }
     return data
 
@@ -100,10 +101,12 @@ def train_text(train: Train) -> str:
     rows = [("member", "", "teeth" if data["size"] == "teeth" else "radius", w, "")]
     for m, d in data["members"].items():
         given = " (given)" if m in train.given else ""
+        # a size and its sense, as solve prints ω (ω3 = 91.9764 rad/s cw): never a sign too
         rows.append((m, d["kind"], "" if d["size"] is None else g6(d["size"]),
-                     f"{g6(d['omega'])} {u} {d['sense']}".rstrip(), given.strip()))
+                     f"{g6(abs(d['omega']))} {u} {d['sense']}".rstrip(), given.strip()))
     lines += table(rows, "  ")
     lines.append(f"\n  {data['freedom']} degree(s) of freedom; counterclockwise positive.")
+    lines += [f"  {n}" for n in data["notes"]]
     if data["formula"]:
         lines.append("\nFormula method, Eq. (7.25): θ'_LF/A = (ω_L − ω_A)/(ω_F − ω_A)")
         for f in data["formula"]:

@@ -352,22 +352,36 @@ def _homog_diff(p: np.ndarray, e: np.ndarray, scale: float) -> float:
     return math.inf
 
 
+def _g6(x: float) -> str:
+    """Six significant figures at every scale: ``25.3828``, ``3.14159e-5``, ``2.5e9``.
+
+    :func:`fmt` shortens a number it writes with an exponent (a drawing's
+    label); a results table keeps the same figures at a nanometre's scale as
+    at a metre's.
+    """
+    x = float(x)
+    if x == 0 or not math.isfinite(x) or 1e-4 <= abs(x) < 1e9:
+        return fmt(x, 6)
+    mantissa, _, exp = f"{x:.6g}".partition("e")
+    return f"{mantissa}e{int(exp)}"
+
+
 def _pair(p: np.ndarray, tiny: float = 0.0) -> str:
     x, y = (0.0 if abs(float(c)) <= tiny else float(c) for c in p[:2])
-    return f"({fmt(x, 6)}, {fmt(y, 6)})"
+    return f"({_g6(x)}, {_g6(y)})"
 
 
 def _rate(w: float, tiny: float = 0.0) -> str:
     if abs(w) <= tiny:
         return "0"
-    return f"{fmt(abs(w), 6)} {'ccw' if w > 0 else 'cw'}"
+    return f"{_g6(abs(w))} {'ccw' if w > 0 else 'cw'}"
 
 
 def _polar(v: np.ndarray, tiny: float = 0.0) -> str:
     m = float(np.hypot(*v))
     if m <= tiny:
         return "0"
-    return f"{fmt(m, 6)} {fmt_angle(math.atan2(v[1], v[0]))}"
+    return f"{_g6(m)} {fmt_angle(math.atan2(v[1], v[0]))}"
 
 
 ROW_DIAGRAM = (("theta", "posture"), ("R_", "posture"), ("omega", "velocity"),

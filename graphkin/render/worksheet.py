@@ -20,14 +20,15 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4 (the velocity polygon), Sec. 4.3
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from graphkin.render.worksheet_layout import MARKER_MM, Layout, marker_bits
+from graphkin.render.worksheet_layout import MARKER_MM, Layout, marker_bits, next_round
 
-__all__ = ["worksheet_figure", "save_worksheet"]
+__all__ = ["worksheet_figure", "save_worksheet", "fit_mechanism"]
 
 _INK = "black"
 _LIGHT = "0.55"
@@ -47,20 +48,105 @@ def _markers(ax: Any, layout: Layout) -> None:
                                            gid=f"marker-{mid}"))
 
 
-def _mechanism(fig: Any, sol: Any, layout: Layout) -> None:
-    """The posture, drawn into an axes over the mechanism box, 1 mm = mech_per_mm."""
+def _mechanism(fig: Any, sol: Any, layout: Layout) -> Any:
+    """The posture, drawn into an axes over the mechanism box, 1 mm = mech_per_mm.
+
+    Nothing is clipped at the box: :func:`fit_mechanism` chose the scale and
+    centre at which everything drawn (links, slider blocks, ground hatching,
+    labels) lies inside it.  Returns the axes.
+    """
     from graphkin.render.mpl import draw
 
     w, h = layout.size
     x0, y0, x1, y1 = layout.mechanism_box
     ax = fig.add_axes((x0 / w, y0 / h, (x1 - x0) / w, (y1 - y0) / h))
-    draw(sol, "posture", ax=ax)
+    d = draw(sol, "posture", ax=ax)
+    for gid, group in d.groups.items():   # the panel's title and scale bar: the sheet has its own
+        if gid.startswith(("title", "scale")):
+            group.set_visible(False)
     cx, cy = layout.mech_center
     k = layout.mech_per_mm
     ax.set_aspect("auto")
     ax.set_xlim(cx - (x1 - x0) / 2 * k, cx + (x1 - x0) / 2 * k)
     ax.set_ylim(cy - (y1 - y0) / 2 * k, cy + (y1 - y0) / 2 * k)
     ax.set_axis_off()
+    for a in ax.findobj():
+        if a is not ax:
+            a.set_clip_on(False)
+    return ax
+
+
+def _drawn_box_mm(sol: Any, layout: Layout) -> tuple[float, float, float, float]:
+    """The box (mm on the sheet) of everything the posture draws at ``layout``'s scale."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from graphkin.render.style import rc_context
+
+    w, h = layout.size
+    with rc_context():
+        fig = Figure(figsize=(w / 25.4, h / 25.4), dpi=72.0)
+        ax = _mechanism(fig, sol, layout)
+        r = FigureCanvasAgg(fig).get_renderer()
+        boxes = [a.get_window_extent(r) for a in _inked(ax)]
+    px = 25.4 / fig.dpi
+    good = [b for b in boxes if np.all(np.isfinite(b.extents)) and b.width + b.height > 0]
+    if not good:
+        return layout.mechanism_box
+    e = np.array([b.extents for b in good])
+    return (float(e[:, 0].min() * px), float(e[:, 1].min() * px),
+            float(e[:, 2].max() * px), float(e[:, 3].max() * px))
+
+
+def _inked(ax: Any) -> list[Any]:
+    """The artists of ``ax`` that put ink on the page: visible, under visible parents.
+
+    The axes' own background, axis and spines are left out (the axes is off).
+    """
+    from matplotlib.axis import Axis
+    from matplotlib.spines import Spine
+    from matplotlib.text import Text
+
+    out: list[Any] = []
+
+    def walk(a: Any) -> None:
+        if not a.get_visible() or isinstance(a, (Axis, Spine)) or a is ax.patch:
+            return
+        kids = a.get_children()
+        if a is ax or kids:
+            for c in kids:
+                walk(c)
+            if a is ax or not hasattr(a, "get_path") and not isinstance(a, Text):
+                return
+        if isinstance(a, Text) and not a.get_text().strip():
+            return
+        out.append(a)
+
+    walk(ax)
+    return out
+
+
+def fit_mechanism(sol: Any, layout: Layout) -> Layout:
+    """``layout`` with the mechanism's scale and centre at which all it draws fits its box.
+
+    The layout's scale fits the mechanism's points; what the posture draws
+    around them (a slider's block and its line, ground hatching, the link
+    numbers and point labels, the drive's angle) takes more, part of it a
+    fixed size on the paper.  The drawing is measured and the scale taken one
+    round step larger (1 mm stands for more) until it fits, then the drawing
+    is centred in the box (Sec. 3.4: the figure to a stated scale).
+    """
+    x0, y0, x1, y1 = layout.mechanism_box
+    for _ in range(12):
+        b = _drawn_box_mm(sol, layout)
+        if b[2] - b[0] <= x1 - x0 and b[3] - b[1] <= y1 - y0:
+            k = layout.mech_per_mm
+            dx = ((b[0] + b[2]) - (x0 + x1)) / 2 * k   # file units: the drawing's centre
+            dy = ((b[1] + b[3]) - (y0 + y1)) / 2 * k   # minus the box's
+            cx, cy = layout.mech_center
+            return replace(layout, mech_center=(cx + dx, cy + dy))
+        layout = replace(layout, mech_per_mm=next_round(layout.mech_per_mm))
+    return layout
 
 
 def _given_steps(fig: Any, sol: Any, layout: Layout) -> None:
@@ -170,6 +256,7 @@ def worksheet_figure(sol: Any, layout: Layout, title: str = "") -> Any:
     from matplotlib.figure import Figure
     from matplotlib.patches import Circle, Rectangle
 
+    layout = fit_mechanism(sol, layout)
     w, h = layout.size
     fig = Figure(figsize=(w / 25.4, h / 25.4))
     ax = fig.add_axes((0, 0, 1, 1))
@@ -213,7 +300,10 @@ def save_worksheet(fig: Any, layout: Layout, path: str | Path, dpi: float = 200.
                 "Creator": "graphkin", "CreationDate": None}
     elif p.suffix.lower() == ".svg":
         meta = {"Date": None, "Description": layout.identity_json()}
-    fig.savefig(p, dpi=dpi, metadata=meta or None)
+    from graphkin.render.style import rc_context
+
+    with rc_context():                  # text stays text in an SVG, as every graphkin drawing
+        fig.savefig(p, dpi=dpi, metadata=meta or None)
 
 
 def worksheet_pixels(sol: Any, layout: Layout, px_per_mm: float, title: str = "") -> Any:

@@ -30,7 +30,8 @@ import numpy as np
 from graphkin.errors import InputError
 
 __all__ = ["ARUCO_4X4_50", "PAPERS", "DIAGRAMS", "MARKER_MM", "MAX_UPTO", "Layout",
-           "marker_bits", "corner_ids", "decode_ids", "worksheet_layout", "mechanism_hash"]
+           "marker_bits", "corner_ids", "decode_ids", "worksheet_layout", "mechanism_hash",
+           "next_round"]
 
 #: DICT_4X4_50 of OpenCV's aruco module: the 4 x 4 inner bits of ids 0-49, row by row from
 #: the top left, most significant bit first (tests/scan/test_worksheet.py compares them
@@ -98,6 +99,11 @@ def _round_up(x: float) -> float:
             if r * 10.0**k >= x * (1 - 1e-12):
                 return r * 10.0**k
     return 10.0 ** (e + 1)
+
+
+def next_round(x: float) -> float:
+    """The round number (``_ROUND`` × 10^n) next above ``x``."""
+    return _round_up(x * (1 + 1e-9))
 
 
 @dataclass(frozen=True)
@@ -216,7 +222,7 @@ def worksheet_layout(sol: Any, diagram: str, paper: str, digest: str,
                          "pole)", key="--diagram")
     per_mm = _round_up(need)
     lu = mech.length_unit
-    unit = f"{lu}/s" if diagram == "velocity" else f"{lu}/s^2"
+    unit = f"{lu}/s" if diagram == "velocity" else f"{lu}/s²"
     pole = ((poly_box[0] + poly_box[2]) / 2, (poly_box[1] + poly_box[3]) / 2)
     return Layout(paper, diagram, (w, h), markers, mech_box, poly_box, mech_per_mm, center,
                   pole, per_mm, f"1 mm = {_fmt(per_mm)} {unit}", lu, k, digest)

@@ -149,8 +149,8 @@ def test_a_one_long_vertex_does_not_move_the_fit(fourbar: Path, tmp_path: Path,
     rep = check_drawing(graphkin.load(fourbar).solve(), svg)
     marks = {r.key: r.verdict for r in rep.rows}
     assert marks == {"V_B": "ok", "V_C": "WRONG", "V_E": "ok", "V_F": "ok"}
-    # the fit is exactly b, e, f's: 1 drawing unit (mm) = 10 in/s, not turned
-    assert "fitted to b, e, f (c left out): 1 drawing unit = 10 in/s, turned +0.00°" in rep.title
+    # the fit is exactly b, e, f's: 1 mm (the SVG is sized in mm) = 10 in/s, not turned
+    assert "fitted to b, e, f (c left out): 1 mm = 10 in/s, turned +0.00°" in rep.title
     assert "c left out of the fit: drawn 10.0 % too long for the scale and turn that b, e, f " \
            "agree on" in rep.notes
     # the command: exit 1 (an answer wrong), the reason on its own line
@@ -198,7 +198,7 @@ def test_b_a_reversed_polygon_beside_its_mechanism_is_marked_reversed(
         assert {marks[f"V_{p}"] for p in "CEF"} == {("follows", "follows:V_B")}
         assert "mechanism drawn on the sheet" in rep.title
         # the scale is fitted from the lengths alone: 1 mm = 10 in/s
-        assert "1 drawing unit = 10 in/s" in rep.title
+        assert "1 mm = 10 in/s" in rep.title
         # drawn for the right sense, the same sheet is right
         sheet = Inkscape()
         _velocity_polygon(sheet, velocities, np.array([120.0, 200.0]), 0.1, turn=turn)

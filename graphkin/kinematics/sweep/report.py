@@ -23,6 +23,7 @@ from graphkin.kinematics.sweep.columns import _concat_solutions, _solution_of_bl
 from graphkin.kinematics.sweep.engine import _Block, _Engine
 from graphkin.kinematics.sweep.singular import SingularPosture, _singular, time_ratios
 from graphkin.mechanisms.model import Drive, Mechanism
+from graphkin.text import ROUND_OFF
 
 Array = np.ndarray
 
@@ -223,10 +224,46 @@ class Sweep:
         if units_row is not None:
             w.writerow(units_row)
         cols = []
+        rounded = _rounded_at_round_off(columns)
         for name in names:
-            c = np.asarray(columns[name], dtype=float)
+            c = rounded[name]
             lst: list[Any] = c.tolist()
             if not np.isfinite(c).all():
                 lst = ["" if not math.isfinite(v) else v for v in lst]
             cols.append(lst)
         w.writerows(zip(*cols))
+
+
+def _kind(name: str) -> str:
+    """The quantity a CSV column holds: ``angle``, ``omega``, …, ``x``/``y`` → ``position``."""
+    head = name.split("_", 1)[0]
+    return {"x": "position", "y": "position", "vx": "velocity", "vy": "velocity",
+            "ax": "acceleration", "ay": "acceleration"}.get(head, head)
+
+
+def _rounded_at_round_off(columns: dict[str, Array]) -> dict[str, np.ndarray]:
+    """Every column rounded at :data:`~graphkin.text.ROUND_OFF` of its quantity's scale.
+
+    The scale of a quantity is its largest value over all its columns (every
+    point's x and y, every link's ω, ...), or 360° for angles; a value is
+    rounded to the decimal place of ``ROUND_OFF`` × scale, so what the
+    arithmetic left (a slider's line at 149.99999999998744° that solve prints
+    150) is written as the value meant, consistently in every column.  The
+    drive column is written as the sweep made it (docs/formats/sweep-csv.md).
+    """
+    arrays = {n: np.asarray(c, dtype=float) for n, c in columns.items()}
+    scale: dict[str, float] = {}
+    for n, c in arrays.items():
+        finite = np.abs(c[np.isfinite(c)])
+        top = float(finite.max()) if finite.size else 0.0
+        k = _kind(n)
+        scale[k] = max(scale.get(k, 360.0 if k == "angle" else 0.0), top)
+    out: dict[str, np.ndarray] = {}
+    for n, c in arrays.items():
+        s = scale[_kind(n)]
+        if n == "drive" or not s > 0 or not math.isfinite(s):
+            out[n] = c
+            continue
+        places = -math.floor(math.log10(s * ROUND_OFF))
+        out[n] = np.round(c, places) + 0.0          # + 0.0: never -0.0
+    return out

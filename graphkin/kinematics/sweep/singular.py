@@ -67,8 +67,14 @@ class SingularPosture:
 
 
 def _fmt(eng: _Engine, v: float) -> str:
+    """A drive value as the reports write it: an angle in [0, 360), or a slider's travel.
+
+    The sweep runs on past 360° from the file's angle; the notes say the
+    angle as the rest of the output does.
+    """
     if eng.drive.is_angle:
-        return f"{v:.2f}°"
+        text = f"{v % 360.0:.2f}"
+        return ("0.00" if text in ("360.00", "-0.00") else text) + "°"
     return f"{v:.4g}"
 
 
