@@ -39,8 +39,10 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.construction import Role
 from graphkin.construction.codegen import TEMPLATES, Unsupported
 from graphkin.construction.jsgen import generate_js
+from graphkin.construction.step import Step
 from graphkin.errors import GraphkinError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import DEFAULT_TOL
@@ -50,6 +52,8 @@ __all__ = ["curvature_data"]
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
 # (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
 _FIXED_BY_RATES = ("similar",)
+# steps that take ω, α and the scale of the accelerations from the page at each posture
+_POSTURE_RATES = ("bresse_circle", "acceleration_center")
 # an identity of the file's posture, not a construction: Γ = J where α = 0 (Sec. 4.15), U = J
 # where the cubic contains the centrode normal (Example 4.16); a drag parts them
 _AT_THIS_POSTURE = ("copy_point",)
@@ -74,6 +78,53 @@ def _bresse(step: Any, st: Any) -> str | None:
     if a != 0.0 and abs(lp[1] - w * w / a) <= 1e-9 * abs(lp[1]):
         return "ratio"
     return None
+
+
+def _posture_bresse(sol: Any, lid: str, steps: list[Step]) -> list[Step]:
+    """The steps with the Bresse circle and Γ made for whatever α the posture has.
+
+    The recorded construction lays off the Bresse diameter with the file's
+    ratio ``ω²/α`` (Eq. 4.48) and meets the circle with the inflection circle
+    (Fig. 4.34), or, where ``α = 0`` in the file, copies ``J`` to ``Γ``
+    (Sec. 4.15): each holds at the file's posture only.  They are replaced by
+    ``bresse_circle`` and ``acceleration_center``
+    (:mod:`graphkin.construction.ops.bresse`) on the same ``I`` and ``J``,
+    which take ``ω``, ``α`` and the scale of the accelerations from the page
+    at each posture and decide there whether ``α`` is zero (then no circle and
+    ``Γ = J``), as graphkin's construction of the saved file does.
+    """
+    ic = next((s for s in steps if s.op == "circle_on_diameter"
+               and s.outputs[0].startswith("inflection circle")), None)
+    made = next((s for s in steps if s.outputs and s.outputs[0].rstrip("*") == "Γ"
+                 and s.op in ("copy_point", "other_intersection")), None)
+    if ic is None or made is None:
+        return steps
+    gamma = made.outputs[0]
+    bresse = made.inputs[1] if made.op == "other_intersection" else "Bresse circle"
+    if any(bresse in s.outputs for s in steps if s.op != "circle_on_diameter"):
+        return steps  # (a label of the file's own: not this construction's circle)
+    st = sol.links[lid]
+    rates = {"omega": float(st.omega), "alpha": float(st.alpha),
+             "ref": max(float(s.omega or 0.0) ** 2 + abs(float(s.alpha or 0.0))
+                        for s in sol.links.values())}
+    ij = tuple(ic.inputs)
+    circle = Step(made.index, bresse, "bresse_circle", ij, (bresse,), dict(rates),
+                  Role.RESULT, note="The Bresse circle on the diameter IE, "
+                  "E = I + (ω²/α) k × R_JI (Eq. 4.48); none where α = 0.", kind="circle")
+    center = Step(made.index, gamma, "acceleration_center", ij, (gamma,), dict(rates),
+                  Role.RESULT, note="Γ, where the Bresse circle meets the inflection "
+                  "circle again (Fig. 4.34); J where α = 0 (Sec. 4.15).", kind="point")
+    e = next((s.inputs[1] for s in steps if bresse in s.outputs
+              and s.op == "circle_on_diameter"), None)
+    out: list[Step] = []
+    for s in steps:
+        if s is made:
+            out.extend([circle, center] if made.op == "copy_point" else [center])
+        elif bresse in s.outputs:
+            out.append(circle)
+        elif not (e is not None and e in s.outputs and s.op == "similar"):
+            out.append(s)
+    return out
 
 
 def _candidates(sol: Any, lid: str, points: list[str]) -> list[tuple[dict[str, Any], np.ndarray]]:
@@ -207,6 +258,7 @@ class _Plan:
 
     lid: str
     cx: Any
+    steps: list[Step]
     given: dict[str, dict[str, Any]]
     ok: set[str]
     results: list[str]
@@ -219,6 +271,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
     """The steps of link ``lid``'s construction the page can redo, or why it has no panel."""
     if f"ω{lid}" not in made or f"α{lid}" not in made:
         return f"the page does not find ω{lid} and α{lid}"
+    steps = _posture_bresse(sol, lid, list(cx.steps))
     cands = _candidates(sol, lid, points)
     given: dict[str, dict[str, Any]] = {}
     ok: set[str] = set()
@@ -229,7 +282,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
     # a block (one point): its other points from that point and the link's angle
     one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
         if pq is None and f"θ{lid}" in made else None
-    for s in cx.steps:
+    for s in steps:
         blocked = next((why.get(i, f"{i} is not made") for i in s.inputs if i not in ok), None)
         hit: dict[str, Any] | None = None
         if s.op == "point" and not s.inputs:
@@ -275,11 +328,11 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
             ok.update(s.outputs)
         else:
             why.update({o: blocked for o in s.outputs})
-    results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
+    results = [s.outputs[0] for s in steps if s.role.name == "RESULT"
                and s.outputs and s.outputs[0] in ok]
     if "J" not in results and "inflection circle" not in results:
         return why.get("J", why.get("inflection circle", "it has no inflection pole J"))
-    return _Plan(lid, cx, given, ok, results, ratios, signs)
+    return _Plan(lid, cx, steps, given, ok, results, ratios, signs)
 
 
 def _why_none(sol: Any, tol: Any) -> str:
@@ -298,7 +351,7 @@ def _why_none(sol: Any, tol: Any) -> str:
             "shrinks to that point (Sec. 4.13)")
 
 
-def _left_out(lid: str, cx: Any) -> dict[str, str]:
+def _left_out(lid: str, steps: list[Step]) -> dict[str, str]:
     """``{"note": line}`` saying what of draw's panel the page leaves out, or ``{}``.
 
     An identity of the file's posture (``copy_point``) is not carried into a
@@ -306,7 +359,7 @@ def _left_out(lid: str, cx: Any) -> dict[str, str]:
     either, its diameter ``ω²/α`` infinite, Eq. 4.48), U = J where the cubic
     contains the centrode normal (Example 4.16).
     """
-    copied = {s.outputs[0] for s in cx.steps if s.op in _AT_THIS_POSTURE}
+    copied = {s.outputs[0] for s in steps if s.op in _AT_THIS_POSTURE}
     lines = []
     if "Γ" in copied:
         lines.append(f"Γ and the Bresse circle are not drawn: α{lid} = 0 in the file (so Γ = J "
@@ -380,10 +433,10 @@ def curvature_data(mech: Mechanism, points: list[str],
     first_plan = plans[first]
     plan = first_plan if isinstance(first_plan, _Plan) else max(
         good, key=lambda p: len(p.results))
-    cx, given, ok = plan.cx, plan.given, plan.ok
-    extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
+    given, ok = plan.given, plan.ok
+    extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in plan.steps)]
     requests = plan.results + [lab for lab in extra if lab in ok and lab not in plan.results]
-    steps = _needed([s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)],
+    steps = _needed([s for s in plan.steps if s.outputs and all(o in ok for o in s.outputs)],
                     requests)
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
@@ -391,12 +444,17 @@ def curvature_data(mech: Mechanism, points: list[str],
                          ideal=[lab for lab, g in given.items() if "slider" in g], soft=True)
     except Unsupported as exc:
         return {"why": f"the curvature construction cannot be written for the page ({exc})"}, ""
-    kinds = {o: s.kind for s in cx.steps for o in s.outputs}
+    kinds = {o: s.kind for s in plan.steps for o in s.outputs}
     names = [n for n, _ in fn.slots]
-    note = _left_out(plan.lid, cx)
+    note = _left_out(plan.lid, plan.steps)
+    # ω, α and the scale of the accelerations of each posture (set by the page, Eq. 4.48)
+    rates = [[names.index(f"{s.outputs[0]}.{k}") for k in range(3)] for s in steps
+             if s.op in _POSTURE_RATES and f"{s.outputs[0]}.2" in names]
+    moving = [k for k in mech.links if k != FRAME and f"ω{k}" in made and f"α{k}" in made]
     return ({"link": plan.lid, "given": given, "labels": list(requests), **note,
              "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
              "K": fn.values,
              "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],
-             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names]},
+             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names],
+             "rates": rates, "rateLinks": moving},
             fn.source)

@@ -91,6 +91,16 @@ function gkCurvature(V, r) {
     K[k] = w * w / a;
     if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
   }
+  // the Bresse circle and Γ of this posture: ω, α and the scale of the accelerations
+  // (max ω² + |α| over the links), whether α is zero decided on it (Eq. 4.48, Sec. 4.15)
+  if (V.rates && V.rates.length) {
+    let ref = 0;
+    for (const lid of V.rateLinks) {
+      const wk = r["\u03c9" + lid], ak = r["\u03b1" + lid];
+      if (Number.isFinite(wk) && Number.isFinite(ak)) ref = Math.max(ref, wk * wk + Math.abs(ak));
+    }
+    for (const [kw, ka, kr] of V.rates) { K[kw] = w; K[ka] = a; K[kr] = ref; }
+  }
   // the pole velocity's sense, v = ω k × R_JI drawn to the scale 1/|ω| (Eq. 4.47)
   for (const k of V.signs) K[k] = w > 0 ? 1 : -1;
   // a result with no clean answer here (Hain's G_T at infinity, Example 4.16) is null, the
