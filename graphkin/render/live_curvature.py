@@ -22,12 +22,22 @@ from the posture function's results on every pointer move:
 
 Which given is which is found by value at the file's posture (to 1e-9 of the
 mechanism's size), what its label says first.  The link is the one ``graphkin
-draw -d curvature`` draws when the page can redo it.  Steps the page cannot
-redo are left out with everything that depends on them: a step whose numbers
-were fixed by the file's rates (a ``similar`` step other than the Bresse
-diameter, whose ratio ``ω²/α`` the page gives), an identity of the file's
-posture (``copy_point``: Γ = J where α = 0, U = J), a given that is none of
-the above, an operation with no template.  The function is written
+draw -d curvature`` draws when the page can redo it.
+
+The Bresse circle and Γ are not replayed: the recorded steps hold at the
+file's posture only (the diameter laid off with the file's ``ω²/α``, or
+``Γ = J`` copied where α = 0 there), so they are replaced by
+``bresse_circle`` and ``acceleration_center``
+(:mod:`graphkin.construction.ops.bresse`), which take ω, α and the scale of
+the accelerations from the page at each posture and decide there whether α
+is zero (Sec. 4.15, Eq. 4.48), as graphkin's construction of the saved file
+does (:func:`_posture_bresse`).
+
+Other steps the page cannot redo are left out with everything that depends
+on them: a step whose numbers were fixed by the file's rates (a ``similar``
+step other than the pole velocity's, whose sense the page gives), an
+identity of the file's posture (``copy_point``: U = J), a given that is none
+of the above, an operation with no template.  The function is written
 ``soft``: a result with no clean answer at a posture is ``null`` on its own.
 Where no link is left, the panel's data is one line saying why (``why``).
 """
@@ -50,7 +60,8 @@ from graphkin.tolerance import DEFAULT_TOL
 __all__ = ["curvature_data"]
 
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
-# (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
+# (but the pole velocity's, its sense given by the page: see _bresse; the Bresse diameter's
+# is replaced by a step of any posture: _posture_bresse)
 _FIXED_BY_RATES = ("similar",)
 # steps that take ω, α and the scale of the accelerations from the page at each posture
 _POSTURE_RATES = ("bresse_circle", "acceleration_center")
@@ -66,7 +77,9 @@ def _bresse(step: Any, st: Any) -> str | None:
     ``(J - I)`` turned 90°, times the sign of ω (the pole velocity ``v``, drawn
     to the scale ``1/|ω|``, Eq. 4.47) or times ``ω²/α`` (the Bresse diameter,
     Eq. 4.48: ``local_p = (0, ω²/α)``); the page gives that sign or ratio from
-    the posture's ω and α on every move.
+    the posture's ω and α on every move.  (The Bresse diameter's step is
+    replaced before, :func:`_posture_bresse`; a ratio step is kept for a
+    construction whose Bresse circle is not found there.)
     """
     la, lb, lp = (tuple(float(v) for v in step.params[k])
                   for k in ("local_a", "local_b", "local_p"))

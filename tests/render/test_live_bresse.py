@@ -131,3 +131,73 @@ def test_example_3_1_bresse_circle_at_other_postures() -> None:
     # circle of each posture is graphkin's
     has = _drags("ex3_1_fourbar.toml", [0.0, 30.0, -60.0, 120.0])
     assert len(has) >= 3 and all(has)
+
+
+def _steps(w: float, a: float, ref: float) -> list:
+    from graphkin.construction import Role
+    from graphkin.construction.step import Step
+
+    rates = {"omega": w, "alpha": a, "ref": ref}
+    return [Step(0, "I", "point", (), ("I",), {"xy": (0.0, 0.0)}, Role.GIVEN),
+            Step(1, "J", "point", (), ("J",), {"xy": (0.0, 1.0)}, Role.GIVEN),
+            Step(2, "Bresse circle", "bresse_circle", ("I", "J"), ("Bresse circle",),
+                 dict(rates), Role.RESULT, kind="circle"),
+            Step(3, "Γ", "acceleration_center", ("I", "J"), ("Γ",), dict(rates), Role.RESULT)]
+
+
+@pytest.mark.usefixtures("_js")
+def test_the_javascript_templates_are_the_numpy_operations() -> None:
+    # one table for both writers: the written-out function, its ω, α and scale set in K as
+    # the page sets them, equals the numpy operations to 1e-12, on both sides of the α = 0
+    # verdict (|α| <= tol.angle · ref) and at values of α only round-off from it
+    from graphkin.construction.jsgen import RUNTIME, generate_js
+
+    fn = generate_js(_steps(1.0, 1.0, 2.0), requests=["Bresse circle", "Γ"], tol=DEFAULT_TOL,
+                     name="bresse", given=["I", "J"], homogeneous=False, soft=True)
+    names = [n for n, _ in fn.slots]
+    slots = [[names.index(f"{lab}.{k}") for k in range(3)] for lab in ("Bresse circle", "Γ")]
+    rng = np.random.default_rng(29)
+    cases = []
+    for w, a, ref in [(2.0, 0.0, 4.0), (2.0, 3e-9, 7.0), (2.0, 1e-8, 4.0), (2.0, -5e-9, 4.0),
+                      (-1.5, 0.7, 3.0), (0.5, -40.0, 41.0)]:
+        i, j = rng.uniform(-100, 100, 2), rng.uniform(-100, 100, 2)
+        k = list(fn.values)
+        for kw, ka, kr in slots:
+            k[kw], k[ka], k[kr] = w, a, ref
+        cases.append(({"I": list(i), "J": list(j)}, k, (i, j, w, a, ref)))
+    src = RUNTIME + fn.source + f"\nconst C = {json.dumps([[c[0], c[1]] for c in cases])};" + (
+        "\nconst RESULT = C.map(([g, k]) => bresse(g, k));")
+    got = run_js(src)
+    # by hand: |α| <= 1e-9 ref for the first two (0 and 3e-9 <= 7e-9), not for the others
+    assert [o["Bresse circle"] is None for o in got] == [True, True, False, False, False, False]
+    for out, (_, _, (i, j, w, a, ref)) in zip(got, cases):
+        h = [np.array([*i, 1.0]), np.array([*j, 1.0])]
+        circle = OPS["bresse_circle"](*h, tol=DEFAULT_TOL, omega=w, alpha=a, ref=ref)[0]
+        gam = OPS["acceleration_center"](*h, tol=DEFAULT_TOL, omega=w, alpha=a, ref=ref)[0]
+        if np.all(np.isnan(circle)):
+            assert out["Bresse circle"] is None
+        else:
+            np.testing.assert_allclose(out["Bresse circle"], circle,
+                                       rtol=1e-12, atol=1e-12 * float(np.abs(circle).max()))
+        np.testing.assert_allclose(out["Γ"], gam[:2] / gam[2], rtol=0, atol=1e-12 * 100)
+
+
+@pytest.mark.usefixtures("_js")
+def test_the_alpha_zero_verdict_does_not_move_with_round_off() -> None:
+    # Example 4.4 with every point moved by 1e-12 of the size: α3 is still round-off of the
+    # accelerations (0 by hand: ω2 constant, the block turns with the crank), so neither
+    # graphkin nor the page draws a Bresse circle, and Γ = J on both
+    path = EXAMPLES / "ex4_4_coriolis_block.toml"
+    data0 = load_toml(path)
+    eps = 1e-12 * graphkin.load(path).scale
+    moved = json.loads(json.dumps(data0))
+    for k, lk in enumerate(moved["links"].values()):
+        for j, n in enumerate(lk):
+            lk[n] = [lk[n][0] + eps * ((k + j) % 3 - 1), lk[n][1] - eps * ((k * j) % 3 - 1)]
+    mech = from_dict(moved, source=path.name)
+    data, js = live_data(mech, moved, path.name)
+    out = _page(data, js, data["drive"]["value"])
+    v, lc = out["v"], curvature(mech.solve())[data["curvature"]["link"]]
+    assert v["Bresse circle"] is None and "Bresse circle" not in lc.values
+    assert same_curvature(data, v, lc.values, 1.0 + mech.scale) == len(
+        data["curvature"]["labels"]) - 1

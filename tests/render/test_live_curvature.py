@@ -242,8 +242,8 @@ def test_example_4_16_leaves_out_only_what_is_at_infinity_there() -> None:
         data["curvature"]["labels"])
 
 
-@pytest.mark.parametrize("name", ["ex3_3_inverted_slider", "ex4_11_rapsons_slide",
-                                  "ex4_16_cubic", "ex5_4_fivebar"])
+@pytest.mark.parametrize("name", ["ex3_3_inverted_slider", "ex4_4_coriolis_block",
+                                  "ex4_11_rapsons_slide", "ex4_16_cubic", "ex5_4_fivebar"])
 def test_the_panel_does_not_move_with_round_off(name: str) -> None:
     # the page's verdicts (which link, which given is which, which steps it can redo) rest on
     # values clearly above round-off: at the file's posture and with every point of the file
