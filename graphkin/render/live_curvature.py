@@ -446,11 +446,18 @@ def curvature_data(mech: Mechanism, points: list[str],
     first_plan = plans[first]
     plan = first_plan if isinstance(first_plan, _Plan) else max(
         good, key=lambda p: len(p.results))
-    given, ok = plan.given, plan.ok
+    ok = plan.ok
+    # Γ by the four circles (Fig. 4.33) is Γ again, from auxiliary points the construction
+    # chose at the file's posture (another pair at another cam angle): where Γ is made at
+    # every posture (acceleration_center) the page does not carry it
+    if any(s.op == "acceleration_center" and s.outputs[0] in ok for s in plan.steps):
+        plan.results = [lab for lab in plan.results if not lab.startswith("Γ (four circles)")]
     extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in plan.steps)]
     requests = plan.results + [lab for lab in extra if lab in ok and lab not in plan.results]
     steps = _needed([s for s in plan.steps if s.outputs and all(o in ok for o in s.outputs)],
                     requests)
+    read = {o for s in steps for o in s.outputs}
+    given = {lab: g for lab, g in plan.given.items() if lab in read}
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
                          given=given, homogeneous=False,
@@ -469,5 +476,8 @@ def curvature_data(mech: Mechanism, points: list[str],
              "K": fn.values,
              "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],
              "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names],
-             "rates": rates, "rateLinks": moving},
+             "rates": rates, "rateLinks": moving,
+             # whether the link turns at a posture: |ω| L beyond tol.angle of the largest
+             # speed (kinematics/curvature/link.py's _turning)
+             "scale": float(mech.scale), "turning": DEFAULT_TOL.angle},
             fn.source)

@@ -83,6 +83,23 @@ function gkCurvatureInputs(V, r) {
 // the curvature construction of the posture r (null where it has no clean answer)
 function gkCurvature(V, r) {
   if (!V || !r || V.why) return null;
+  // the link turns at this posture: |ω| L beyond round-off of the posture's speeds (as
+  // graphkin's curvature does; in a cam's dwell the coupler stands still, ω = 0)
+  if (V.scale !== undefined) {
+    const wl = r["\u03c9" + V.link];
+    let ref = 0;
+    for (const key of Object.keys(r)) {
+      const v = r[key];
+      if (key.startsWith("v(") && v && r.o_v) {
+        ref = Math.max(ref, Math.hypot(v[0] - r.o_v[0], v[1] - r.o_v[1]));
+      } else if (key.startsWith("\u03c9") && Number.isFinite(v)) {
+        ref = Math.max(ref, Math.abs(v) * V.scale);
+      }
+    }
+    if (!(Number.isFinite(wl) && Math.abs(wl) * V.scale > V.turning * Math.max(ref, 1e-300))) {
+      return null;
+    }
+  }
   const J = gkCurvatureInputs(V, r);
   if (J === null) return null;
   // the Bresse diameter's ratio ω²/α of this posture (Eq. 4.48)
