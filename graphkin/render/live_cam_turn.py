@@ -491,7 +491,10 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
             "two centers coincide in a dwell); change the file's angle"))
     cvs = [dict(d.get("curvature") or {}) for d in (data, *others)]
     for cv in cvs:
+        # (the numbers, and the mechanism's size the link's ω = 0 verdict measures by: the
+        # cam's equivalent linkage is another size at another angle)
         cv.pop("K", None)
+        cv.pop("scale", None)
     if any(_json(cv) != _json(cvs[0]) for cv in cvs[1:]):
         data["curvature"] = {"why": f"the curvature construction found at the file's cam angle "
                                     f"({deg}) is another one at other angles; change the "

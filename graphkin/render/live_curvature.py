@@ -22,12 +22,22 @@ from the posture function's results on every pointer move:
 
 Which given is which is found by value at the file's posture (to 1e-9 of the
 mechanism's size), what its label says first.  The link is the one ``graphkin
-draw -d curvature`` draws when the page can redo it.  Steps the page cannot
-redo are left out with everything that depends on them: a step whose numbers
-were fixed by the file's rates (a ``similar`` step other than the Bresse
-diameter, whose ratio ``ω²/α`` the page gives), an identity of the file's
-posture (``copy_point``: Γ = J where α = 0, U = J), a given that is none of
-the above, an operation with no template.  The function is written
+draw -d curvature`` draws when the page can redo it.
+
+The Bresse circle and Γ are not replayed: the recorded steps hold at the
+file's posture only (the diameter laid off with the file's ``ω²/α``, or
+``Γ = J`` copied where α = 0 there), so they are replaced by
+``bresse_circle`` and ``acceleration_center``
+(:mod:`graphkin.construction.ops.bresse`), which take ω, α and the scale of
+the accelerations from the page at each posture and decide there whether α
+is zero (Sec. 4.15, Eq. 4.48), as graphkin's construction of the saved file
+does (:func:`_posture_bresse`).
+
+Other steps the page cannot redo are left out with everything that depends
+on them: a step whose numbers were fixed by the file's rates (a ``similar``
+step other than the pole velocity's, whose sense the page gives), an
+identity of the file's posture (``copy_point``: U = J), a given that is none
+of the above, an operation with no template.  The function is written
 ``soft``: a result with no clean answer at a posture is ``null`` on its own.
 Where no link is left, the panel's data is one line saying why (``why``).
 """
@@ -39,8 +49,10 @@ from typing import Any
 
 import numpy as np
 
+from graphkin.construction import Role
 from graphkin.construction.codegen import TEMPLATES, Unsupported
 from graphkin.construction.jsgen import generate_js
+from graphkin.construction.step import Step
 from graphkin.errors import GraphkinError
 from graphkin.mechanisms.model import FRAME, Mechanism
 from graphkin.tolerance import DEFAULT_TOL
@@ -48,8 +60,11 @@ from graphkin.tolerance import DEFAULT_TOL
 __all__ = ["curvature_data"]
 
 # steps whose numbers are the file posture's rates, not geometry: not redone in the page
-# (the Bresse circle's similar step is, its ratio ω²/α given by the page: see _bresse)
+# (but the pole velocity's, its sense given by the page: see _bresse; the Bresse diameter's
+# is replaced by a step of any posture: _posture_bresse)
 _FIXED_BY_RATES = ("similar",)
+# steps that take ω, α and the scale of the accelerations from the page at each posture
+_POSTURE_RATES = ("bresse_circle", "acceleration_center")
 # an identity of the file's posture, not a construction: Γ = J where α = 0 (Sec. 4.15), U = J
 # where the cubic contains the centrode normal (Example 4.16); a drag parts them
 _AT_THIS_POSTURE = ("copy_point",)
@@ -62,7 +77,9 @@ def _bresse(step: Any, st: Any) -> str | None:
     ``(J - I)`` turned 90°, times the sign of ω (the pole velocity ``v``, drawn
     to the scale ``1/|ω|``, Eq. 4.47) or times ``ω²/α`` (the Bresse diameter,
     Eq. 4.48: ``local_p = (0, ω²/α)``); the page gives that sign or ratio from
-    the posture's ω and α on every move.
+    the posture's ω and α on every move.  (The Bresse diameter's step is
+    replaced before, :func:`_posture_bresse`; a ratio step is kept for a
+    construction whose Bresse circle is not found there.)
     """
     la, lb, lp = (tuple(float(v) for v in step.params[k])
                   for k in ("local_a", "local_b", "local_p"))
@@ -74,6 +91,53 @@ def _bresse(step: Any, st: Any) -> str | None:
     if a != 0.0 and abs(lp[1] - w * w / a) <= 1e-9 * abs(lp[1]):
         return "ratio"
     return None
+
+
+def _posture_bresse(sol: Any, lid: str, steps: list[Step]) -> list[Step]:
+    """The steps with the Bresse circle and Γ made for whatever α the posture has.
+
+    The recorded construction lays off the Bresse diameter with the file's
+    ratio ``ω²/α`` (Eq. 4.48) and meets the circle with the inflection circle
+    (Fig. 4.34), or, where ``α = 0`` in the file, copies ``J`` to ``Γ``
+    (Sec. 4.15): each holds at the file's posture only.  They are replaced by
+    ``bresse_circle`` and ``acceleration_center``
+    (:mod:`graphkin.construction.ops.bresse`) on the same ``I`` and ``J``,
+    which take ``ω``, ``α`` and the scale of the accelerations from the page
+    at each posture and decide there whether ``α`` is zero (then no circle and
+    ``Γ = J``), as graphkin's construction of the saved file does.
+    """
+    ic = next((s for s in steps if s.op == "circle_on_diameter"
+               and s.outputs[0].startswith("inflection circle")), None)
+    made = next((s for s in steps if s.outputs and s.outputs[0].rstrip("*") == "Γ"
+                 and s.op in ("copy_point", "other_intersection")), None)
+    if ic is None or made is None:
+        return steps
+    gamma = made.outputs[0]
+    bresse = made.inputs[1] if made.op == "other_intersection" else "Bresse circle"
+    if any(bresse in s.outputs for s in steps if s.op != "circle_on_diameter"):
+        return steps  # (a label of the file's own: not this construction's circle)
+    st = sol.links[lid]
+    rates = {"omega": float(st.omega), "alpha": float(st.alpha),
+             "ref": max(float(s.omega or 0.0) ** 2 + abs(float(s.alpha or 0.0))
+                        for s in sol.links.values())}
+    ij = tuple(ic.inputs)
+    circle = Step(made.index, bresse, "bresse_circle", ij, (bresse,), dict(rates),
+                  Role.RESULT, note="The Bresse circle on the diameter IE, "
+                  "E = I + (ω²/α) k × R_JI (Eq. 4.48); none where α = 0.", kind="circle")
+    center = Step(made.index, gamma, "acceleration_center", ij, (gamma,), dict(rates),
+                  Role.RESULT, note="Γ, where the Bresse circle meets the inflection "
+                  "circle again (Fig. 4.34); J where α = 0 (Sec. 4.15).", kind="point")
+    e = next((s.inputs[1] for s in steps if bresse in s.outputs
+              and s.op == "circle_on_diameter"), None)
+    out: list[Step] = []
+    for s in steps:
+        if s is made:
+            out.extend([circle, center] if made.op == "copy_point" else [center])
+        elif bresse in s.outputs:
+            out.append(circle)
+        elif not (e is not None and e in s.outputs and s.op == "similar"):
+            out.append(s)
+    return out
 
 
 def _candidates(sol: Any, lid: str, points: list[str]) -> list[tuple[dict[str, Any], np.ndarray]]:
@@ -207,6 +271,7 @@ class _Plan:
 
     lid: str
     cx: Any
+    steps: list[Step]
     given: dict[str, dict[str, Any]]
     ok: set[str]
     results: list[str]
@@ -219,6 +284,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
     """The steps of link ``lid``'s construction the page can redo, or why it has no panel."""
     if f"ω{lid}" not in made or f"α{lid}" not in made:
         return f"the page does not find ω{lid} and α{lid}"
+    steps = _posture_bresse(sol, lid, list(cx.steps))
     cands = _candidates(sol, lid, points)
     given: dict[str, dict[str, Any]] = {}
     ok: set[str] = set()
@@ -229,7 +295,7 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
     # a block (one point): its other points from that point and the link's angle
     one = next((n for n in points if n in sol.mechanism.links[lid].points), None) \
         if pq is None and f"θ{lid}" in made else None
-    for s in cx.steps:
+    for s in steps:
         blocked = next((why.get(i, f"{i} is not made") for i in s.inputs if i not in ok), None)
         hit: dict[str, Any] | None = None
         if s.op == "point" and not s.inputs:
@@ -275,11 +341,11 @@ def _plan(sol: Any, lid: str, cx: Any, points: list[str], made: set[str],
             ok.update(s.outputs)
         else:
             why.update({o: blocked for o in s.outputs})
-    results = [s.outputs[0] for s in cx.steps if s.role.name == "RESULT"
+    results = [s.outputs[0] for s in steps if s.role.name == "RESULT"
                and s.outputs and s.outputs[0] in ok]
     if "J" not in results and "inflection circle" not in results:
         return why.get("J", why.get("inflection circle", "it has no inflection pole J"))
-    return _Plan(lid, cx, given, ok, results, ratios, signs)
+    return _Plan(lid, cx, steps, given, ok, results, ratios, signs)
 
 
 def _why_none(sol: Any, tol: Any) -> str:
@@ -298,7 +364,7 @@ def _why_none(sol: Any, tol: Any) -> str:
             "shrinks to that point (Sec. 4.13)")
 
 
-def _left_out(lid: str, cx: Any) -> dict[str, str]:
+def _left_out(lid: str, steps: list[Step]) -> dict[str, str]:
     """``{"note": line}`` saying what of draw's panel the page leaves out, or ``{}``.
 
     An identity of the file's posture (``copy_point``) is not carried into a
@@ -306,7 +372,7 @@ def _left_out(lid: str, cx: Any) -> dict[str, str]:
     either, its diameter ``ω²/α`` infinite, Eq. 4.48), U = J where the cubic
     contains the centrode normal (Example 4.16).
     """
-    copied = {s.outputs[0] for s in cx.steps if s.op in _AT_THIS_POSTURE}
+    copied = {s.outputs[0] for s in steps if s.op in _AT_THIS_POSTURE}
     lines = []
     if "Γ" in copied:
         lines.append(f"Γ and the Bresse circle are not drawn: α{lid} = 0 in the file (so Γ = J "
@@ -380,23 +446,38 @@ def curvature_data(mech: Mechanism, points: list[str],
     first_plan = plans[first]
     plan = first_plan if isinstance(first_plan, _Plan) else max(
         good, key=lambda p: len(p.results))
-    cx, given, ok = plan.cx, plan.given, plan.ok
-    extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in cx.steps)]
+    ok = plan.ok
+    # Γ by the four circles (Fig. 4.33) is Γ again, from auxiliary points the construction
+    # chose at the file's posture (another pair at another cam angle): where Γ is made at
+    # every posture (acceleration_center) the page does not carry it
+    if any(s.op == "acceleration_center" and s.outputs[0] in ok for s in plan.steps):
+        plan.results = [lab for lab in plan.results if not lab.startswith("Γ (four circles)")]
+    extra = [lab for lab in ("N", "T") if any(lab in s.outputs for s in plan.steps)]
     requests = plan.results + [lab for lab in extra if lab in ok and lab not in plan.results]
-    steps = _needed([s for s in cx.steps if s.outputs and all(o in ok for o in s.outputs)],
+    steps = _needed([s for s in plan.steps if s.outputs and all(o in ok for o in s.outputs)],
                     requests)
+    read = {o for s in steps for o in s.outputs}
+    given = {lab: g for lab, g in plan.given.items() if lab in read}
     try:
         fn = generate_js(steps, requests=requests, tol=DEFAULT_TOL, name="curvature",
                          given=given, homogeneous=False,
                          ideal=[lab for lab, g in given.items() if "slider" in g], soft=True)
     except Unsupported as exc:
         return {"why": f"the curvature construction cannot be written for the page ({exc})"}, ""
-    kinds = {o: s.kind for s in cx.steps for o in s.outputs}
+    kinds = {o: s.kind for s in plan.steps for o in s.outputs}
     names = [n for n, _ in fn.slots]
-    note = _left_out(plan.lid, cx)
+    note = _left_out(plan.lid, plan.steps)
+    # ω, α and the scale of the accelerations of each posture (set by the page, Eq. 4.48)
+    rates = [[names.index(f"{s.outputs[0]}.{k}") for k in range(3)] for s in steps
+             if s.op in _POSTURE_RATES and f"{s.outputs[0]}.2" in names]
+    moving = [k for k in mech.links if k != FRAME and f"ω{k}" in made and f"α{k}" in made]
     return ({"link": plan.lid, "given": given, "labels": list(requests), **note,
              "results": plan.results, "kinds": {lab: kinds[lab] for lab in requests},
              "K": fn.values,
              "ratios": [names.index(f"{lab}.1") for lab in plan.ratios if f"{lab}.1" in names],
-             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names]},
+             "signs": [names.index(f"{lab}.1") for lab in plan.signs if f"{lab}.1" in names],
+             "rates": rates, "rateLinks": moving,
+             # whether the link turns at a posture: |ω| L beyond tol.angle of the largest
+             # speed (kinematics/curvature/link.py's _turning)
+             "scale": float(mech.scale), "turning": DEFAULT_TOL.angle},
             fn.source)

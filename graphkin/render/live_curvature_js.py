@@ -83,6 +83,23 @@ function gkCurvatureInputs(V, r) {
 // the curvature construction of the posture r (null where it has no clean answer)
 function gkCurvature(V, r) {
   if (!V || !r || V.why) return null;
+  // the link turns at this posture: |ω| L beyond round-off of the posture's speeds (as
+  // graphkin's curvature does; in a cam's dwell the coupler stands still, ω = 0)
+  if (V.scale !== undefined) {
+    const wl = r["\u03c9" + V.link];
+    let ref = 0;
+    for (const key of Object.keys(r)) {
+      const v = r[key];
+      if (key.startsWith("v(") && v && r.o_v) {
+        ref = Math.max(ref, Math.hypot(v[0] - r.o_v[0], v[1] - r.o_v[1]));
+      } else if (key.startsWith("\u03c9") && Number.isFinite(v)) {
+        ref = Math.max(ref, Math.abs(v) * V.scale);
+      }
+    }
+    if (!(Number.isFinite(wl) && Math.abs(wl) * V.scale > V.turning * Math.max(ref, 1e-300))) {
+      return null;
+    }
+  }
   const J = gkCurvatureInputs(V, r);
   if (J === null) return null;
   // the Bresse diameter's ratio ω²/α of this posture (Eq. 4.48)
@@ -90,6 +107,16 @@ function gkCurvature(V, r) {
   for (const k of V.ratios) {
     K[k] = w * w / a;
     if (!Number.isFinite(K[k])) return null;  // α = 0: the Bresse circle is a line
+  }
+  // the Bresse circle and Γ of this posture: ω, α and the scale of the accelerations
+  // (max ω² + |α| over the links), whether α is zero decided on it (Eq. 4.48, Sec. 4.15)
+  if (V.rates && V.rates.length) {
+    let ref = 0;
+    for (const lid of V.rateLinks) {
+      const wk = r["\u03c9" + lid], ak = r["\u03b1" + lid];
+      if (Number.isFinite(wk) && Number.isFinite(ak)) ref = Math.max(ref, wk * wk + Math.abs(ak));
+    }
+    for (const [kw, ka, kr] of V.rates) { K[kw] = w; K[ka] = a; K[kr] = ref; }
   }
   // the pole velocity's sense, v = ω k × R_JI drawn to the scale 1/|ω| (Eq. 4.47)
   for (const k of V.signs) K[k] = w > 0 ? 1 : -1;
