@@ -351,56 +351,6 @@ def _place_all(panel: Panel) -> None:
             _place_one(panel, ink, part)
 
 
-def _is_point_label(panel: Panel, req: LabelRequest, markers: np.ndarray) -> bool:
-    """A point's letters: a near anchor (no far arrow) on a marker of the panel."""
-    if req.arrow is not None or req.center or req.parts or not len(markers):
-        return False
-    a = panel.to_paper(np.asarray([req.anchor], dtype=float))[0]
-    return bool(np.any(np.hypot(markers[:, 0] - a[0], markers[:, 1] - a[1]) <= _SAME_POINT))
-
-
-def _labelled_points(panel: Panel) -> np.ndarray:
-    """The paper places (inches) of the panel's lettered points: markers with a label.
-
-    A point's letters must stand nearer their own point than any other lettered
-    point, or a reader takes them for the other's (Sec. 1.6: the lettering must be
-    read as written); :func:`_spot` holds every point label to that.
-    """
-    ms = [panel.to_paper(it.xy)[0] for g in panel.groups for it in g.items
-          if it.kind == "marker" and len(it.xy)]
-    markers = np.asarray(ms, dtype=float).reshape(-1, 2)
-    pts = [panel.to_paper(np.asarray([r.anchor], dtype=float))[0] for r in panel.labels
-           if _is_point_label(panel, r, markers)]
-    return np.asarray(pts, dtype=float).reshape(-1, 2)
-
-
-def _nearer_another(ink: _InkMap, a: np.ndarray, cx: np.ndarray,
-                    cy: np.ndarray) -> np.ndarray | None:
-    """Which candidate centres stand nearer another lettered point than their own at ``a``.
-
-    None when ``a`` is no lettered point (a vector's or a rate's label).
-    """
-    pts = ink.points
-    if not len(pts):
-        return None
-    own = np.hypot(pts[:, 0] - a[0], pts[:, 1] - a[1]) <= _SAME_POINT
-    if not np.any(own):
-        return None
-    others = pts[~own]
-    if not len(others):
-        return np.zeros(cx.shape, dtype=bool)
-    d_own = np.hypot(cx - a[0], cy - a[1])
-    d_other = np.min(np.hypot(cx[:, None] - others[None, :, 0],
-                              cy[:, None] - others[None, :, 1]), axis=1)
-    return d_other < d_own  # type: ignore[no-any-return]
-
-
-_SAME_POINT = 1e-6
-"""Anchors closer than this (inches) are one point (coincident points lettered together)."""
-
-
-
-
 def _place_one(panel: Panel, ink: _InkMap, req: LabelRequest) -> bool:
     """Place one label (its text, else a fallback text); True when its place is clean.
 
