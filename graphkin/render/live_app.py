@@ -21,10 +21,11 @@ from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_CSS, C
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
 from graphkin.render.live_pen import PEN_JS
 from graphkin.render.live_pitch import PITCH_APP_JS
+from graphkin.render.live_toml_js import TOML_JS
 
 __all__ = ["APP_JS", "LIVE_LIB", "PAGE_CSS"]
 
-LIVE_LIB = r"""
+LIVE_LIB = TOML_JS + r"""
 // the labels as graphkin draw prints them (render/scene.py, render/paint.py,
 // render/kennedy.py): a point's trailing digits subscript (O2 -> O₂), an image's letter
 // lowercase and primed in the acceleration polygon (a(B) -> b′, O2 -> o₂), an instant
@@ -689,35 +690,8 @@ byId("gk-reset").addEventListener("click", () => {
   redraw(true); notify();
 });
 
-function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
-function tomlVal(v) {
-  if (typeof v === "string") return JSON.stringify(v);
-  if (typeof v === "number") return String(v);
-  if (typeof v === "boolean") return String(v);
-  if (Array.isArray(v)) return "[" + v.map(tomlVal).join(", ") + "]";
-  return "{ " + Object.keys(v).map((k) => tomlKey(k) + " = " + tomlVal(v[k])).join(", ") + " }";
-}
-const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
-function tomlTable(out, obj, path) {
-  const simple = [], subs = [], arrs = [];
-  for (const k of Object.keys(obj)) {
-    const v = obj[k];
-    if (isTable(v)) subs.push(k);
-    else if (Array.isArray(v) && v.length && v.every(isTable)) arrs.push(k);
-    else simple.push(k);
-  }
-  if (path.length && (simple.length || (!subs.length && !arrs.length))) {
-    out.push("", "[" + path.map(tomlKey).join(".") + "]");
-  }
-  for (const k of simple) out.push(tomlKey(k) + " = " + tomlVal(obj[k]));
-  for (const k of subs) tomlTable(out, obj[k], path.concat([k]));
-  for (const k of arrs) {
-    for (const e of obj[k]) {
-      out.push("", "[[" + path.concat([k]).map(tomlKey).join(".") + "]]");
-      for (const kk of Object.keys(e)) out.push(tomlKey(kk) + " = " + tomlVal(e[kk]));
-    }
-  }
-}
+// the edited file as TOML (render/live_toml_js.py, shared with the vector page)
+const tomlKey = gkTomlKey, tomlVal = gkTomlVal, isTable = gkIsTable, tomlTable = gkTomlTable;
 
 function edited() {
   const f = JSON.parse(JSON.stringify(D.file));
@@ -738,14 +712,7 @@ function edited() {
   return out.join("\n").replace(/^\n+/, "") + "\n";
 }
 
-byId("gk-save").addEventListener("click", () => {
-  const blob = new Blob([edited()], {type: "application/toml"});
-  const a = document.createElement("a");
-  a.href = URL.createObjectURL(blob);
-  a.download = GK_NAME.replace(/\.toml$/i, "").replace(/^.*[\\/]/, "") + "-edited.toml";
-  document.body.appendChild(a); a.click(); a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
-});
+byId("gk-save").addEventListener("click", () => gkDownload(edited(), GK_NAME));
 
 redraw(true);
 return {

@@ -42,6 +42,7 @@ from graphkin.errors import InputError
 from graphkin.kinematics.vector_equation import NAMES, VectorEquationResult, vector_construction
 from graphkin.kinematics.vector_file import VectorFile
 from graphkin.render.live import script_json
+from graphkin.render.live_toml_js import TOML_JS
 from graphkin.render.live_vector_js import VECTOR_APP_JS, VECTOR_CSS
 from graphkin.render.style import HIGHLIGHT, STYLES
 from graphkin.tolerance import DEFAULT_TOL
@@ -200,6 +201,7 @@ Sec. 2.8 is re-solved in the page on every move.</p>
 {script_json(data)}</script>
 <script>
 {js}
+{TOML_JS}
 {VECTOR_APP_JS}
 window.graphkinLive = gkVectorApp(document,
   JSON.parse(document.getElementById("gk-data").textContent), {js_string(vf.source)});

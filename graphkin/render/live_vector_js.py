@@ -415,14 +415,7 @@ byId("gk-reset").addEventListener("click", () => {
 });
 
 // ---- the edited file ------------------------------------------------------------------------
-function tomlKey(k) { return /^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k); }
-const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
-function tomlVal(v) {
-  if (typeof v === "string") return JSON.stringify(v);
-  if (typeof v === "number" || typeof v === "boolean") return String(v);
-  if (Array.isArray(v)) return "[" + v.map(tomlVal).join(", ") + "]";
-  return "{ " + Object.keys(v).map((k) => tomlKey(k) + " = " + tomlVal(v[k])).join(", ") + " }";
-}
+const tomlKey = gkTomlKey, tomlVal = gkTomlVal, isTable = gkIsTable;  // render/live_toml_js.py
 function edited() {
   const f = JSON.parse(JSON.stringify(D.file));
   for (const n of NAMES) {
@@ -444,14 +437,7 @@ function edited() {
   }
   return out.join("\n").replace(/^\n+/, "") + "\n";
 }
-byId("gk-save").addEventListener("click", () => {
-  const blob = new Blob([edited()], {type: "application/toml"});
-  const a = document.createElement("a");
-  a.href = URL.createObjectURL(blob);
-  a.download = GK_NAME.replace(/\.toml$/i, "").replace(/^.*[\\/]/, "") + "-edited.toml";
-  document.body.appendChild(a); a.click(); a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
-});
+byId("gk-save").addEventListener("click", () => gkDownload(edited(), GK_NAME));
 
 redraw(true);
 return {
