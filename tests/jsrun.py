@@ -22,8 +22,11 @@ def run_js(source: str) -> Any:
     """The JSON value of the program's final expression ``RESULT`` (the source must set it)."""
     node = shutil.which("node") or shutil.which("nodejs")
     if node is not None:
-        r = subprocess.run([node, "-e", source + "\nprocess.stdout.write(JSON.stringify(RESULT));"],
-                           capture_output=True, text=True, timeout=60, check=False)
+        # the program on standard input: an argument is limited to 128 KiB (MAX_ARG_STRLEN),
+        # which a page's whole script with a six-bar's forces passes
+        program = source + "\nprocess.stdout.write(JSON.stringify(RESULT));"
+        r = subprocess.run([node, "-"], input=program, capture_output=True, text=True,
+                           timeout=60, check=False)
         if r.returncode != 0:
             raise RuntimeError(r.stderr[-2000:])
         return json.loads(r.stdout)

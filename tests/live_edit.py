@@ -82,6 +82,11 @@ def same_curvature(data: dict[str, Any], got: dict[str, Any], ref: dict[str, Any
                 todo.extend(made[x].inputs)
         return False
 
+    figure = 0.0
+    for p in ("I", "J"):
+        h = np.asarray(ref.get(p, np.nan), dtype=float)
+        if h.shape == (3,) and np.all(np.isfinite(h)) and abs(h[2]) > 1e-8 * np.hypot(h[0], h[1]):
+            figure = max(figure, float(np.abs(h[:2] / h[2]).max()))
     n = 0
     for lab in v["labels"]:
         if got[lab] is None:
@@ -95,7 +100,10 @@ def same_curvature(data: dict[str, Any], got: dict[str, Any], ref: dict[str, Any
         r = np.asarray(ref[lab], dtype=float)
         if v["kinds"][lab] == "point":
             r = r[:2] / r[2]
-        scale = max(size, float(np.abs(r).max(initial=0.0)))
+        # round-off of the construction's own figure: the inflection circle (I, J) can be
+        # far larger than the mechanism (a cam's nearly straight pitch curve: IJ = 600
+        # beside a size of 8), and Ball's point U is found through it
+        scale = max(size, float(np.abs(r).max(initial=0.0)), figure)
         np.testing.assert_allclose(g, r, rtol=0, atol=rel * scale, err_msg=lab)
         n += 1
     return n
