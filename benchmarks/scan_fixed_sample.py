@@ -59,6 +59,17 @@ def save(path: str, draws: int) -> None:
 DRAWING_MM = 0.5
 
 
+def planted_wrong(name: str, image: Any, pole: Any, factor: float) -> str | None:
+    """The image a wrong-length drawing intends ``WRONG``, or None when it moved too little.
+
+    ``image`` is scaled by ``factor`` from ``pole`` (sheet mm): its end moves
+    ``|factor - 1|`` times its length, and an end moved under the drawing
+    tolerance is right by the tolerance's rule (docs/checking.md).
+    """
+    moved = abs(factor - 1) * float(np.hypot(*(np.asarray(image) - np.asarray(pole))))
+    return name if moved >= DRAWING_MM else None
+
+
 def _intended(case: str, rows: list[Any], wrong: str | None) -> bool:
     """Whether every row is marked as the drawing intends; ``wrong`` None: none is wrong."""
     from graphkin.check.report import OK, WRONG
@@ -98,8 +109,8 @@ def read(path: str, levels: list[str], only: list[str]) -> None:
         n += 1
         name = sorted(images)[d["seed"] % len(images)]
         f = 1 + d["factor"] if d["longer"] else 1 - d["factor"]
-        moved = abs(f - 1) * float(np.hypot(*(images[name] - pole)))
-        small += moved < DRAWING_MM
+        wrong = planted_wrong(name, images[name], pole, f)
+        small += wrong is None
         cases = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
                  "length": {**images, name: pole + f * (images[name] - pole)}}
         cases = {c: v for c, v in cases.items() if c in only}
@@ -110,7 +121,7 @@ def read(path: str, levels: list[str], only: list[str]) -> None:
                 try:
                     got = read_sheet(sol, Page("p", photo), diag, lay.digest)
                     rows = mark_scan(sol, got, "p", CheckTolerance(), diag).rows
-                    good = _intended(case, rows, name if moved >= DRAWING_MM else None)
+                    good = _intended(case, rows, wrong)
                     old = case == "length" and _intended(case, rows, name)
                 except Exception:  # noqa: BLE001 - counted as not read
                     rows, good, old = [], False, False
