@@ -414,7 +414,7 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
         g = pm.group(f"forces-mechanism-{f.name}", 3.0, key=f"load-{f.name}")
         u = _unit(f.vector)
         _arrow(g, f.at - u * ARROW_IN * k, f.at, k, f.color, f"load-{f.name}",
-               f"forces-mechanism-{f.name}")
+               f"forces-mechanism-{f.name}-arrow")
         _request(pm, g, f.text, f.at - u * ARROW_IN * k * 0.6,
                  f"forces-mechanism-label-{f.name}", f.color, colors, np.array([-u[1], u[0]]))
     for lid in moving:
@@ -481,7 +481,8 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                     cu = _unit(comp)
                     _request(p, gc, text, (t0 + f.at) / 2, f"fbd-{lid}-label-{f.name}-{tag}",
                              GREY_INK, colors, np.array([-cu[1], cu[0]]))
-            _arrow(g, tail, f.at, k, f.color, f"fbd-{lid}-{f.name}", f"fbd-{lid}-{f.name}")
+            _arrow(g, tail, f.at, k, f.color, f"fbd-{lid}-{f.name}",
+                   f"fbd-{lid}-{f.name}-arrow")
             _request(p, g, f.text, (tail + f.at) / 2, f"fbd-{lid}-label-{f.name}", f.color,
                      colors, np.array([-u[1], u[0]]))
         if lid in fs.inertia and fs.inertia[lid].offset > 0:
@@ -531,7 +532,7 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
             if float(np.hypot(*v)) == 0:
                 continue
             g = p.group(f"{name}-{lab}", 3.0, highlight=hot(raw))
-            _arrow(g, t, t + v, fk, color, f"{name}-{lab}", f"{name}-{lab}", lw=1.2)
+            _arrow(g, t, t + v, fk, color, f"{name}-{lab}", f"{name}-{lab}-arrow", lw=1.2)
             u = _unit(v) * (1.0 if turn > 0 else -1.0)  # outside: right of a ccw polygon
             _request(p, g, lab, t + v / 2, f"{name}-label-{lab}", color, colors,
                      np.array([u[1], -u[0]]))
@@ -668,12 +669,16 @@ def _pitch_circles(fs: ForceSolution, p: Panel, lid: str, g: Group) -> list[np.n
             c = np.asarray(sol.links[lid].position(r.on_center), dtype=float)
             g.items.append(Item("circle", np.array([c]), "result-arc", radius=r.on_radius))
             out += [c - r.on_radius, c + r.on_radius]
+    n = 0
     for j in fs.joints:
         if lid in (j.lo, j.hi) and j.point.startswith("P_") and j.point in fs.geometry.points:
             q = fs.geometry.points[j.point]
             g.items.append(Item("marker", np.array([q]), "point"))
-            p.labels.append(LabelRequest("P", q, "label-small", f"{g.gid}-label-P", g,
-                                         key=f"{g.gid}-label-P"))
+            # a compound gear has two points of contact, both P (Fig. 11.17): the second's
+            # label is ...-label-P-2, so that no two elements share a gid
+            n += 1
+            gid = f"{g.gid}-label-P" + ("" if n == 1 else f"-{n}")
+            p.labels.append(LabelRequest("P", q, "label-small", gid, g, key=gid))
             out.append(q)
     return out
 

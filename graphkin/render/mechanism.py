@@ -290,20 +290,29 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
         g.items.append(Item("path", rim, "link", key=f"circle of link {r.on}"))
 
     # ---- rolling contact: the roller itself, and the ground it rolls on ------
+    seen_rollers: dict[str, int] = {}
     for r in rolling:
         if not is_known(r.center):
             continue
         c = np.asarray(sol.position(r.center, r.link), dtype=float)
         whole = _whole_disc(mech, sol, r)
-        # a gear (a roller that is its whole link: a planet, its center and a point of its
-        # rim) is drawn under the links, the frame and the pins, as the arm that carries it
-        # is drawn over it; a roller on a link (a follower's) over its link's bar
-        g = panel.group(f"{pre}roller-{r.link}", GEAR_Z if whole else 1.6,
-                        key=f"link {r.link}")
-        disc = Point(float(c[0]), float(c[1])).buffer(r.radius, quad_segs=24)
-        g.items.append(Item("polygon", _ring(disc), "link", key=f"roller {r.link}"))
-        if whole:   # numbered on its disc, not beside its bar inside it
-            _number(panel, g, r.link, c + np.array([0.0, 0.6 * r.radius]), pre, gap=0.02)
+        # a planet meshing with a sun and a ring is one disc, drawn once; a compound gear
+        # (two pitch circles on one link, Example 11.7's planet 4-5) draws its second disc
+        # as roller-4-2, so that no two elements share a gid
+        disc_key = f"{r.link} {r.center} {r.radius!r}"
+        if disc_key not in seen_rollers:
+            seen_rollers[disc_key] = sum(k.split()[0] == r.link for k in seen_rollers) + 1
+            nth = "" if seen_rollers[disc_key] == 1 else f"-{seen_rollers[disc_key]}"
+            # a gear (a roller that is its whole link: a planet, its center and a point of
+            # its rim) is drawn under the links, the frame and the pins, as the arm that
+            # carries it is drawn over it; a roller on a link (a follower's) over its bar
+            g = panel.group(f"{pre}roller-{r.link}{nth}", GEAR_Z if whole else 1.6,
+                            key=f"link {r.link}")
+            disc = Point(float(c[0]), float(c[1])).buffer(r.radius, quad_segs=24)
+            g.items.append(Item("polygon", _ring(disc), "link", key=f"roller {r.link}"))
+            if whole:   # numbered on its disc, not beside its bar inside it
+                _number(panel, g, r.link, c + np.array([0.0, 0.6 * r.radius]), pre,
+                        gap=0.02)
         lw = _line_world(src, r)
         if lw is not None and r.on == FRAME:
             p0, u = lw
