@@ -474,7 +474,7 @@ def build_forces_sheet(fs: ForceSolution, *, upto: int | None = None, table: boo
                     gc = p.group(f"fbd-{lid}-{f.name}-{tag}", 2.9, highlight=hot(f.raw))
                     t0 = f.at - comp / size * ARROW_IN * k
                     gc.items.append(Item("arrow", np.array([t0, f.at]), "vector-n",
-                                         gid=f"fbd-{lid}-{f.name}-{tag}",
+                                         gid=f"fbd-{lid}-{f.name}-{tag}-arrow",
                                          key=f"fbd-{lid}-{f.name}-{tag}", head=0.07 * k,
                                          width=0.025 * k,
                                          overrides={"color": GREY_INK, "lw": 0.9}))

@@ -206,14 +206,16 @@ def _after_t(cx: Construction) -> set[str]:
 
 
 def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndarray,
-                       reach: float, optional: frozenset[str] | set[str] = frozenset()
-                       ) -> None:
+                       reach: float, optional: frozenset[str] | set[str] = frozenset(),
+                       suffix: str = "") -> None:
     """Every step of ``cx`` not in ``skip``, as the book draws it (the gid: the step id).
 
     Points farther than ``reach`` from ``near`` are left off; lines run between
     the points found on them (a bisector from its chord's midpoint to the
     center it finds, a line turned about a pole from the pole to the point it
     meets); labels named in ``optional`` may be left out of a crowded figure.
+    ``suffix`` ends the gids of a second construction drawn in the same panel
+    (the selection after the poles, whose steps are numbered from 1 again).
     """
     last, newest = len(cx.steps), -1
     if pen.stage is not None:
@@ -239,7 +241,7 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
         result = str(s.role) == "result"
         hl = s.index == newest
         if s.kind == "point" and lab in pts:
-            g = pen.group(s.step_id, 5.0, step=s, key=lab, highlight=hl)
+            g = pen.group(s.step_id + suffix, 5.0, step=s, key=lab, highlight=hl)
             style = "pole" if _POLE.match(lab) else (
                 "pin" if lab.startswith("O_") else
                 "aux-point" if str(s.role) == "auxiliary" else "point")
@@ -262,7 +264,7 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             if hi - lo <= 1e-9 * reach:
                 continue
             pad = 0.0 if s.op == "join" else 0.12 * (hi - lo)
-            g = pen.group(s.step_id, 3.0, step=s, key=lab, highlight=hl)
+            g = pen.group(s.step_id + suffix, 3.0, step=s, key=lab, highlight=hl)
             side = s.op == "join" and all(_POLE.match(i) for i in s.inputs)
             pen.segment(g, on[0] + (lo - pad) * d, on[0] + (hi + pad) * d,
                         "given-line" if side else "aux-line", key=lab)
@@ -270,7 +272,7 @@ def paint_construction(pen: Pen, cx: Construction, skip: set[str], near: np.ndar
             v = np.asarray(ev[lab], dtype=float)
             if v.shape != (3,) or not np.all(np.isfinite(v)) or v[2] > 3 * reach:
                 continue
-            g = pen.group(s.step_id, 2.0, step=s, key=lab, highlight=hl)
+            g = pen.group(s.step_id + suffix, 2.0, step=s, key=lab, highlight=hl)
             style = "result-arc" if result else "arc"
             span = _span(v, list(pts.values()))
             if span is None or s.op != "circle_through":
@@ -383,7 +385,8 @@ def _body_panel(res: Result, max_inches: float, skip: frozenset[str],
         locus = "k_O" in cx.labels    # the straight-line circles of Example 9.4
         optional = {s.outputs[0] for s in cx if (locus and s.outputs[0] in (
             "O", "O1", "O2", "O3", "H")) or s.outputs[0].endswith(("_I", "*"))}
-        paint_construction(pen, cx, hidden(cx, post), mid, reach, optional)
+        paint_construction(pen, cx, hidden(cx, post), mid, reach, optional,
+                           "-selection" if cx is res.selection else "")
     for cx in (res.construction, res.selection):
         if cx is not None:
             far_poles(pen, cx, post.positions((0.0, 0.0))[0], f"{d}1")

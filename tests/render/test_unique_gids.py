@@ -55,3 +55,13 @@ def test_the_check_sees_a_shared_id() -> None:
 @examples(3)
 def test_a_random_mechanisms_whole_sheet_has_unique_ids(rm) -> None:  # type: ignore[no-untyped-def]
     assert shared_ids(_svg(rm.mechanism().solve(), "all")) == []
+
+
+def test_every_gallery_drawing_has_unique_ids() -> None:
+    # the gallery's drawings are the code's own (`graphkin gallery --check` keeps them so):
+    # forces sheets of friction (F₁₄-n inside F₁₄-n) and the four-posture synthesis
+    # (the selection's steps numbered from 1 again: step-14-P12 twice) had shared ids
+    shared = {p.name: shared_ids(p.read_bytes())
+              for p in sorted((ROOT / "gallery").rglob("*.svg"))}
+    assert len(shared) > 50
+    assert {k: v for k, v in shared.items() if v} == {}
