@@ -33,6 +33,8 @@ CASES = [
     # a pinion and a rack (Fig. 7.10)
     ("gallery/gears/fig7_10.toml",
      "Turn the pinion 2 about O2 by its handle A2 (the rack slides under it)"),
+    # a reverted planetary train driven by its gear 2 (Example 7.4, gear 6 fixed)
+    ("gallery/gears/ex7_4.toml", "Turn the driving gear 2 about O2 by its handle A2"),
     # a planetary train driven by its arm (Example 7.10)
     ("gallery/gears/ex7_10.toml", "Turn the arm 3, which carries the planets, about O2"),
     # a cam file (Example 6.1): the cam turns under its follower
