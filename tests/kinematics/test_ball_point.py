@@ -164,6 +164,9 @@ def test_n_infinite_gives_j_by_the_formula(i, u, a, lam, eps) -> None:
     r = a - i
     x, y = float(r @ t) / d, float(r @ u) / d
     assume(abs(x) > 0.1 * d and abs(y) > 0.1 * d and np.hypot(x, y) > 0.3 * d)
+    # A off the inflection circle x² + y² = d y: with B on N it would make d/M = 1, the cubic
+    # the circle and N together, and no Ball's point (test_degenerate_cases_are_none)
+    assume(abs(x * x + y * y - d * y) > 0.1 * d * d)
     b = i + lam * u
     assume(abs(lam - 1.0) > 0.1)  # B not at J
     size = 1.0 + float(np.abs([*i, *j, *a, *b]).max())
