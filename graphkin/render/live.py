@@ -33,7 +33,7 @@ from graphkin.render.live_app import APP_JS, LIVE_LIB, PAGE_CSS
 from graphkin.render.style import STYLES
 from graphkin.tolerance import DEFAULT_TOL
 
-__all__ = ["live_body", "live_data", "live_html", "script_json"]
+__all__ = ["drag_hint", "live_body", "live_data", "live_html", "script_json"]
 
 _BRANCH_OPS = ("intersect_circles", "intersect_line_circle", "tangent_foot")
 
@@ -59,7 +59,74 @@ def live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
 
     data, js = _live_data(mech, file_data, source, turn=turn)
     data["circles"] = pitch_circles(mech)
+    data["hint"] = drag_hint(mech, data)
     return data, js
+
+
+def _names(xs: list[str]) -> str:
+    """``A``, ``A or B``, ``A, B or C``."""
+    return xs[0] if len(xs) == 1 else f"{', '.join(xs[:-1])} or {xs[-1]}"
+
+
+def _driver(mech: Mechanism, drive: dict[str, Any]) -> str:
+    """What turns the mechanism on this page, named for its kind, with its handle."""
+    lid, tip, pivot = str(drive.get("link")), drive.get("tip"), drive.get("pivot")
+    if not tip:  # no handle on the driving link (a slider's travel, a cam held): the control
+        return f"Set the drive {drive.get('label', '')} with the drive control"
+    by = f"about {pivot} by its handle {tip}"
+    if drive.get("relative") or lid in {str(j.link) for j in mech.cams}:
+        return f"Turn the cam {by}"
+    rolls = [r for r in mech.rolling if lid in (str(r.link), str(r.on))]
+    if any(str(r.link) == lid and r.p0 is not None for r in rolls):
+        return f"Turn the pinion {lid} {by} (the rack slides under it)"
+    if rolls:
+        return f"Turn the driving gear {lid} {by}"
+    points = mech.links[lid].points if lid in mech.links else {}
+    if any(r.center in points for r in mech.rolling):
+        return f"Turn the arm {lid}, which carries the planets, {by}"
+    return f"Drag the crank's moving pin {tip}"
+
+
+def drag_hint(mech: Mechanism, data: dict[str, Any]) -> str:
+    """The page's first line: what its user drags, named for this kind of page.
+
+    The driving link's handle (a linkage's crank pin, a gear pair's or train's
+    driving gear or arm, a pinion on its rack, a cam; the drive's control where
+    the driving link has no handle: a slider's travel), then the frame pivots
+    and the points of links the page lets the user drag, by name.  (A vector
+    file's page says its own: :mod:`graphkin.render.live_vector`.)
+
+    Examples
+    --------
+    >>> import tomllib
+    >>> import graphkin
+    >>> text = graphkin.examples.text("fourbar")  # Example 3.1
+    >>> data, _ = live_data(graphkin.loads(text), tomllib.loads(text), "fourbar.toml")
+    >>> data["hint"].split(" (filled")[0]
+    "Drag the crank's moving pin B, a frame pivot A or D, or a point of a link E or F"
+    """
+    drive = data.get("drive", {})
+    first = _driver(mech, drive)
+    tip = drive.get("tip")
+    frame = list(data.get("frame", {}))
+    moving = {n for lid, lk in mech.links.items() if lid != FRAME for n in lk.points}
+    items = []
+    if frame:
+        what = "a frame pivot" if all(n in moving for n in frame) else "a frame point"
+        items.append(f"{what} {_names(frame)}")
+    points = [n for n in data.get("coupler", {}) if n != tip]
+    if points:
+        items.append(f"a point of a link {_names(points)}")
+    drag = first.startswith("Drag")
+    rest = ""
+    if len(items) == 2:
+        rest = f", {'' if drag else 'drag '}{items[0]}, or {items[1]}"
+    elif items:
+        rest = f" or {items[0]}" if drag else f", or drag {items[0]}"
+    handles = " (filled handles)" if tip or items else ""
+    return (f"{first}{rest}{handles}; every panel is the recorded construction, re-solved in "
+            "the page.")
+
 
 
 def _live_data(mech: Mechanism, file_data: dict[str, Any], source: str, *,
@@ -353,12 +420,16 @@ def _coupler_points(mech: Mechanism, steps: Any, names: list[str],
     return out
 
 
-def live_body(title: str) -> str:
-    """The page's markup inside ``<body>`` (the page and the notebook widget share it)."""
+def live_body(title: str, hint: str | None = None) -> str:
+    """The page's markup inside ``<body>`` (the page and the notebook widget share it).
+
+    ``hint``: the first line, what the user drags (:func:`drag_hint`, ``data["hint"]``).
+    """
     t = html.escape(title)
+    h = html.escape(hint or "Drag the crank's moving pin or a frame pivot (filled handles); "
+                    "every panel is the recorded construction, re-solved in the page.")
     return f"""<header><h1>{t}</h1>
-<p class="hint">Drag the crank's moving pin or a frame pivot (filled handles); every panel is
-the recorded construction, re-solved in the page.</p>
+<p class="hint">{h}</p>
 <div class="controls"><label>drive <input id="gk-drive" type="range"></label>
 <output id="gk-drive-val"></output>
 <label>branch at <select id="gk-branch"></select></label>
@@ -401,7 +472,7 @@ def live_html(mech: Mechanism, file_data: dict[str, Any], source: str, *,
 <title>{title} (live)</title>
 <style>{PAGE_CSS}</style></head>
 <body>
-{live_body(str(data["title"]))}<script id="gk-data" type="application/json">
+{live_body(str(data["title"]), data.get("hint"))}<script id="gk-data" type="application/json">
 {script_json(data)}</script>
 <script>
 {js}

@@ -33,11 +33,17 @@ the accelerations from the page at each posture and decide there whether α
 is zero (Sec. 4.15, Eq. 4.48), as graphkin's construction of the saved file
 does (:func:`_posture_bresse`).
 
+Ball's point ``U`` is replayed like any step: where the file's ``N`` is
+infinite (Example 4.16: ``U = J`` there) the construction makes it with
+``ball_point`` (:mod:`graphkin.construction.ops.ball`), from ``I``, ``J``
+and the two points of the cubic, continuous through ``N = ∞``, so the page
+finds ``U`` after any drag.
+
 Other steps the page cannot redo are left out with everything that depends
 on them: a step whose numbers were fixed by the file's rates (a ``similar``
 step other than the pole velocity's, whose sense the page gives), an
-identity of the file's posture (``copy_point``: U = J), a given that is none
-of the above, an operation with no template.  The function is written
+identity of the file's posture (``copy_point``), a given that is none of the
+above, an operation with no template.  The function is written
 ``soft``: a result with no clean answer at a posture is ``null`` on its own.
 Where no link is left, the panel's data is one line saying why (``why``).
 """
@@ -65,8 +71,8 @@ __all__ = ["curvature_data"]
 _FIXED_BY_RATES = ("similar",)
 # steps that take ω, α and the scale of the accelerations from the page at each posture
 _POSTURE_RATES = ("bresse_circle", "acceleration_center")
-# an identity of the file's posture, not a construction: Γ = J where α = 0 (Sec. 4.15), U = J
-# where the cubic contains the centrode normal (Example 4.16); a drag parts them
+# an identity of the file's posture, not a construction (Γ = J where α = 0, Sec. 4.15, when
+# _posture_bresse cannot replace it); a drag parts them
 _AT_THIS_POSTURE = ("copy_point",)
 
 
@@ -369,8 +375,9 @@ def _left_out(lid: str, steps: list[Step]) -> dict[str, str]:
 
     An identity of the file's posture (``copy_point``) is not carried into a
     drag: Γ = J where α = 0 (then the file's construction has no Bresse circle
-    either, its diameter ``ω²/α`` infinite, Eq. 4.48), U = J where the cubic
-    contains the centrode normal (Example 4.16).
+    either, its diameter ``ω²/α`` infinite, Eq. 4.48).  (U = J where the cubic
+    contains the centrode normal, Example 4.16, is the step ``ball_point`` of
+    any posture: carried.)
     """
     copied = {s.outputs[0] for s in steps if s.op in _AT_THIS_POSTURE}
     lines = []
@@ -378,10 +385,6 @@ def _left_out(lid: str, steps: list[Step]) -> dict[str, str]:
         lines.append(f"Γ and the Bresse circle are not drawn: α{lid} = 0 in the file (so Γ = J "
                      "there) and the page redoes the file's construction; graphkin draw -d "
                      "curvature of the saved file draws them")
-    if "U" in copied:
-        lines.append("Ball's point U is not drawn: U = J in the file only (Example 4.16) and "
-                     "the page redoes the file's construction; graphkin draw -d curvature of "
-                     "the saved file finds it")
     return {"note": "; ".join(lines)} if lines else {}
 
 

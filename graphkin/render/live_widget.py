@@ -60,7 +60,7 @@ def widget_esm(data: dict[str, Any], js: str) -> str:
     """The widget's ES module: the construction, the page's script and ``render``."""
     return (js + LIVE_LIB + APP_JS
             + f"\nconst GK_DATA = {script_json(data)};"
-            + f"\nconst GK_BODY = {js_string(live_body(str(data['title'])))};\n"
+            + f"\nconst GK_BODY = {js_string(live_body(str(data['title']), data.get('hint')))};\n"
             + """
 function render({ model, el }) {
   const root = document.createElement("div");

@@ -227,17 +227,18 @@ def test_the_page_says_why_it_has_no_panel(name: str, words: str) -> None:
 
 def test_example_4_16_leaves_out_only_what_is_at_infinity_there() -> None:
     # Example 4.16 (Fig. 4.39): at the file's posture Hain's G_T is at infinity (the cubic's
-    # n is infinite) and U = J; the page draws I, J, the circles, Γ and C' there and leaves
+    # n is infinite) and U = J; the page draws I, J, the circles, Γ, C' and U there and leaves
     # out G_T and what it finds through B_T at infinity (G_N): null, never NaN; after a turn
-    # of the crank every value is back and equals graphkin's.  U = J holds at that posture
-    # only (a drag parts them), so the page does not carry U
+    # of the crank every value is back and equals graphkin's.  U is the step ball_point
+    # (construction/ops/ball.py), continuous through N = ∞: carried into a drag
     path = EXAMPLES / "ex4_16_cubic.toml"
     mech = graphkin.load(path)
     data, js = live_data(mech, load_toml(path), path.name)
-    assert "U" not in data["curvature"]["labels"]
+    assert "U" in data["curvature"]["labels"] and "note" not in data["curvature"]
     out = _page(data, js, data["drive"]["value"])
     v = out["v"]
     assert v["G_T"] is None and v["G_N"] is None
+    np.testing.assert_allclose(v["U"], v["J"], rtol=0, atol=1e-12 * (1.0 + mech.scale))
     assert _compare(data, v, curvature(mech.solve())["3"], 1.0 + mech.scale) >= 8
     turned = data["drive"]["value"] + np.radians(5.0)
     out = _page(data, js, turned)
@@ -253,7 +254,8 @@ def test_the_panel_does_not_move_with_round_off(name: str) -> None:
     # the page's verdicts (which link, which given is which, which steps it can redo) rest on
     # values clearly above round-off: at the file's posture and with every point of the file
     # moved by 1e-12 of the mechanism's size, the page redoes every result of graphkin's
-    # construction of draw's link but an identity of that posture (U = J, Γ = J: copy_point).
+    # construction of draw's link but an identity of that posture (Γ = J: copy_point; U = J of
+    # Example 4.16 is the step ball_point, redone, whether or not N is infinite once moved).
     # (graphkin's construction itself may differ between the two: which auxiliary points
     # it takes among equally good pairs, whether Example 4.16's four circles are drawn)
     path = EXAMPLES / f"{name}.toml"
@@ -284,12 +286,13 @@ def test_the_panel_does_not_move_with_round_off(name: str) -> None:
 
 @pytest.mark.parametrize(("name", "words"), [
     ("ex4_4_coriolis_block", None),
-    ("ex4_16_cubic", "Ball's point U is not drawn: U = J in the file only"),
+    ("ex4_16_cubic", None),
     ("ex3_1_fourbar", None)])
 def test_the_page_says_what_of_draws_panel_it_leaves_out(name: str, words: str | None) -> None:
-    # an identity of the file's posture is not carried into a drag (U = J of Example 4.16):
-    # what graphkin draw -d curvature shows and the page does not is said in one line; Γ = J
-    # where α = 0 is not one any more (the Bresse circle and Γ of each posture, Eq. 4.48)
+    # an identity of the file's posture is not carried into a drag: what graphkin draw -d
+    # curvature shows and the page does not is said in one line; Γ = J where α = 0 is not one
+    # any more (the Bresse circle and Γ of each posture, Eq. 4.48), nor U = J of Example 4.16
+    # (the step ball_point of each posture, Sec. 4.17)
     path = EXAMPLES / f"{name}.toml"
     data, _ = live_data(graphkin.load(path), load_toml(path), path.name)
     V = data["curvature"]

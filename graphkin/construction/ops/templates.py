@@ -694,5 +694,5 @@ def _parallelogram(gen: Gen, step: Step) -> None:
 
 # a disk cam's program and center of curvature (Ch. 6), and an instant center on the
 # best-conditioned pair of its lines of centers (Sec. 3.13), the Bresse circle and Γ of any
-# posture (Sec. 4.15): templates of their own modules
-from graphkin.construction.ops import bresse, cam_program, kennedy  # noqa: E402, F401
+# posture (Sec. 4.15), Ball's point of any posture (Sec. 4.17): templates of their own modules
+from graphkin.construction.ops import ball, bresse, cam_program, kennedy  # noqa: E402, F401

@@ -65,7 +65,12 @@ paragraph before it and Example 4.16 agree with the above.)
 Ball's point ``U`` is on the inflection circle, so its ``S_G`` lies on the
 tangent to that circle at ``J``: ``U`` is found by Hain's construction from
 the point where ``G`` crosses that tangent.  When ``N`` is infinite the cubic
-contains the centrode normal and ``U = J`` (Example 4.16).
+contains the centrode normal and ``U = J`` (Example 4.16); ``G`` is then
+parallel to that tangent, and the construction makes ``U`` with the operation
+``ball_point`` (:mod:`graphkin.construction.ops.ball`): Eq. 4.57 through the
+two points for ``(d/M, d/N, 1)`` as one homogeneous triple, met with the
+inflection circle, so that ``N = ∞`` gives ``U = J`` by the formula itself and
+the same step (replayed on the live page) finds ``U`` at any other posture.
 
 Example 4.16: two misprinted centrode radii
 -------------------------------------------

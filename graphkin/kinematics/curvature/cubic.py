@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from graphkin.construction import Role
+from graphkin.construction.ops import ball as _ball  # noqa: F401  (registers ball_point)
 from graphkin.errors import ConstructionError
 from graphkin.kinematics.curvature._vec import _cross, _dot, _xy
 from graphkin.kinematics.curvature.construction import _CurvatureBase
@@ -230,8 +231,19 @@ class _HainSteps(_CurvatureBase):
                  "on the inflection circle, whose path is nearly straight for a long way.",
                  Role.RESULT)
 
-    def ball_at_j(self) -> None:
-        self.add("copy_point", (self.J_label or "J",), self.lab("U"),
+    def ball_at_j(self, a: str, b: str) -> None:
+        """Ball's point where N is infinite: the operation ``ball_point`` on I, J, A and B.
+
+        Hain's construction meets G with the tangent at J, parallel to it when
+        ``N`` is infinite.  ``ball_point`` (:mod:`graphkin.construction.ops.ball`)
+        solves Eq. 4.57 through the two points for ``d/M`` and ``d/N`` as one
+        homogeneous triple and meets the line it gives with the inflection
+        circle, so ``N = ∞`` gives ``U = J`` by the formula itself (Example
+        4.16), and the same step finds U at any other posture.
+        """
+        for n in (a, b):
+            self.given(n, self.pos(self.local[n]), f"{n}: a point of link {self.lid}.")
+        self.add("ball_point", (self.I_label or "I", self.J_label or "J", a, b), self.lab("U"),
                  "N is infinite: the cubic contains the centrode normal, so it meets the "
                  "inflection circle at J, and Ball's point U is the inflection pole "
                  "(Example 4.16).", Role.RESULT)

@@ -360,7 +360,7 @@ def link_curvature(sol: Solution, link: str, *, tol: Tolerance | None = None,
             if closed_u is None:
                 ball = None  # the cubic contains the inflection circle, or touches it at I
             elif math.isinf(n_val):
-                if circle_ok and b.section(b.ball_at_j):
+                if circle_ok and b.section(partial(b.ball_at_j, pair[0], pair[1])):
                     ball = b.pt(b.lab("U"))
                 else:
                     ball = closed_u
