@@ -58,7 +58,7 @@ from typing import Any
 
 from graphkin.errors import InputError
 from graphkin.gears.train import FRAME, Contact, Mesh, Train, solve
-from graphkin.tolerance import DEFAULT_TOL
+from graphkin.tolerance import DEFAULT_TOL, is_zero
 
 __all__ = ["TrainLayout", "train_mechanism", "NOMINAL_MODULE", "clearance"]
 
@@ -164,24 +164,60 @@ class _Layout:
 
     # --- which gears are coaxial with their arm --------------------------------------------
     def classify(self) -> None:
+        """Which gear of each arm's mesh is a planet of that arm, which is on its axis.
+
+        A gear held, on the frame's axes, or given a motion turns about a frame
+        point; so does an arm unless a mesh puts it on another arm.  In a mesh
+        carried by arm ``A``, a gear on ``A``'s axis (``A`` itself, a gear that
+        turns about a frame point when ``A`` does, or a planet of another arm,
+        which cannot also be ``A``'s) makes the other gear a planet of ``A``.
+        When both would be on ``A``'s axis and one of them is another arm (or
+        on an arm's shaft), that arm is the planet: its axis is a point of
+        ``A``, an arm carried by an arm (Sec. 7.15, Fig. 7.41 with a planet
+        that is itself an arm).
+        """
         t, sh = self.t, self.shaft
-        fixed = set(self.held) | {sh[m] for m in t.given} | {sh[a] for a in t.arms}
+        arms = {sh[a] for a in t.arms}
+        hard = set(self.held)
         for m in t.meshes:
             if m.arm == FRAME:
-                fixed |= {sh[m.driver], sh[m.driven]}
+                hard |= {sh[m.driver], sh[m.driven]}
+        self.hard = hard
+        central: set[str] = hard | {sh[m] for m in t.given} | arms
+        soft = arms - hard
         self.planet_of: dict[str, str] = {}
-        central: set[str] = set(fixed)
+        self.planet_mesh: dict[str, int] = {}
+
+        def on_axis(g: str, arm: str) -> bool:
+            if g == arm:
+                return True
+            if g in self.planet_of:
+                return self.planet_of[g] != arm
+            return g in central
+
         todo = [i for i, m in enumerate(t.meshes) if m.arm != FRAME]
         while todo:
             progress = False
             for i in list(todo):
                 m = t.meshes[i]
                 a, b, arm = sh[m.driver], sh[m.driven], sh[m.arm]
-                for x, y in ((a, b), (b, a)):
-                    if x in central and y not in central and y not in self.planet_of:
-                        self.planet_of[y] = arm
+                if on_axis(a, arm) and on_axis(b, arm):
+                    # an arm (or a gear on an arm's shaft) on the axis of a gear this arm
+                    # carries: the inner arm is a planet of this one
+                    cand = [g for g in (a, b) if g in soft and g != arm
+                            and g not in self.planet_of]
+                    if len(cand) == 1:
+                        self.planet_of[cand[0]] = arm
+                        self.planet_mesh[cand[0]] = i
+                        central.discard(cand[0])
                         progress = True
-                if (a in central or a in self.planet_of) and (b in central or b in self.planet_of):
+                else:
+                    for x, y in ((a, b), (b, a)):
+                        if on_axis(x, arm) and y not in self.planet_of and y not in central:
+                            self.planet_of[y] = arm
+                            self.planet_mesh[y] = i
+                            progress = True
+                if all(g in central or g in self.planet_of for g in (a, b)):
                     todo.remove(i)
             if progress or not todo:
                 continue
@@ -199,20 +235,63 @@ class _Layout:
             else:
                 central.add(sh[t.meshes[todo[0]].driver])
         self.central = central
-        # the axes: a member's shaft, a central gear joined to its arm's axis
-        self.axis = {s: s for s in set(sh.values())}
-        for i, m in enumerate(t.meshes):
+        # the axes: a member's shaft, a gear on its arm's axis joined to that axis
+        self.axis = {s: s for s in dict.fromkeys(sh.values())}
+        for m in t.meshes:
             a, b, arm = sh[m.driver], sh[m.driven], sh[m.arm]
             if m.arm == FRAME:
                 continue
             for g in (a, b):
-                if g in self.planet_of and self.planet_of[g] != arm:
-                    raise InputError(f"gear {m.driver if g == a else m.driven!r} would turn on "
-                                     f"two arms, {self.planet_of[g]!r} and {m.arm!r}: no "
-                                     "planar layout of the train", key=f"mesh[{i}].arm",
-                                     file=self.src)
-                if g not in self.planet_of:
+                if self.planet_of.get(g) != arm:
                     self._union(g, arm)
+        self._carriers()
+
+    def _carriers(self) -> None:
+        """Each axis -> the member it is a point of (an arm, or the frame); refuse a contradiction.
+
+        An axis is a point of arm ``A`` when a gear on it is a planet of ``A``;
+        of the frame when a gear on it is held or meshes on the frame's axes;
+        else of the frame (an arm's own axis, by default).  An axis that would
+        be a point of two members, or an arm carried, through other arms, by
+        itself, has no planar layout.
+        """
+        t, sh = self.t, self.shaft
+        shafts = list(dict.fromkeys([*(sh[m] for m in t.members), sh[FRAME]]))
+        self.carrier: dict[str, str] = {}
+        why: dict[str, tuple[str, str]] = {}
+        for s in shafts:
+            n = self._root(s)
+            name = next((g for g in t.members if sh[g] == s), s)
+            if s in self.planet_of:
+                c, w = self.planet_of[s], f"a planet of arm {self.planet_of[s]!r}"
+            elif s in self.hard:
+                c, w = FRAME, "about a frame point: held, or in a mesh on the frame"
+            else:
+                continue
+            if self.carrier.get(n, c) != c:
+                other, w0 = why[n]
+                planet = s if s in self.planet_of else next(
+                    k for k in shafts if self._root(k) == n and k in self.planet_of)
+                raise InputError(f"{other!r} ({w0}) and {name!r} ({w}) would turn about one "
+                                 "axis, which cannot be both: no planar layout of the train",
+                                 key=f"mesh[{self.planet_mesh[planet]}].arm", file=self.src)
+            self.carrier[n] = c
+            why.setdefault(n, (name, w))
+        for s in shafts:
+            self.carrier.setdefault(self._root(s), FRAME)
+        for s in shafts:   # an arm carried, through arms, by itself
+            seen: list[str] = []
+            n = self._root(s)
+            while self.carrier[n] != FRAME:
+                if n in seen:
+                    ring = [self.carrier[k] for k in seen[seen.index(n):]]
+                    raise InputError(f"arms {' and '.join(repr(a) for a in ring)} would each be "
+                                     "carried by the other (each turns on a pin of the "
+                                     "next): no planar layout of the train",
+                                     key=f"mesh[{self.planet_mesh[ring[0]]}].arm"
+                                     if ring[0] in self.planet_mesh else "mesh", file=self.src)
+                seen.append(n)
+                n = self._root(self.carrier[n])
 
     def _root(self, s: str) -> str:
         while self.axis[s] != s:
@@ -237,8 +316,7 @@ class _Layout:
                 raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
                                  "axis and cannot mesh: no planar layout of this train (each "
                                  "is joined to the other, or held, driven, an arm or on the "
-                                 "frame's axes, so coaxial with the arm carrying their mesh; "
-                                 "an arm carried by another arm is not laid out)",
+                                 "frame's axes, so coaxial with the arm carrying their mesh)",
                                  key=f"mesh[{i}].gears", file=self.src)
         self.adjacent = {frozenset(e) for e in ends}
         self.gears_on: dict[str, list[str]] = {}
@@ -360,11 +438,11 @@ class _Layout:
             xy = [*self.pos[node]]
             lid = _FRAME_LINK if s in self.held else self.link_names[s]
             links[lid][self.point[node]] = xy
-            if s not in self.planet_of:       # a fixed axis: a frame pivot
+            arm = self.carrier[node]
+            if arm == FRAME:                  # a fixed axis: a frame pivot
                 links[_FRAME_LINK][self.point[node]] = xy
-            else:                             # a planet's axis: a point of its arm
-                arm = self.planet_of[s]
-                alid = _FRAME_LINK if arm in self.held else self.link_names[arm]
+            else:                             # a planet's axis: a point of its arm (which
+                alid = self.link(arm)         # may itself turn on another arm)
                 links[alid][self.point[node]] = xy
                 links[alid][self.point[self._root(arm)]] = [*self.pos[self._root(arm)]]
         count: dict[str, int] = {}
@@ -412,27 +490,45 @@ class _Layout:
         return self.r[g]
 
     def drives(self) -> list[dict[str, Any]]:
+        """The given motions as drives: the first the swept one, the others following it.
+
+        A member turning on a pin of a moving arm (an arm carried by an arm) is
+        driven by its angle relative to that arm, ``θ_m/C`` (``relative_to``),
+        at ``ω_m − ω_C`` with ``ω_C`` the train's (the mesh equations, Eq. 7.25);
+        the swept drive is the first whose rate is not 0.
+        """
         t = self.t
-        freedom = solve(t).freedom - len(self.held - {self.shaft[FRAME]})
+        sol = solve(t)
+        freedom = sol.freedom - len(self.held - {self.shaft[FRAME]})
         unit = t.unit + ("/s" if t.turns else "")
+        scale = max(abs(v) for v in t.given.values())
         out: list[dict[str, Any]] = []
         seen: set[str] = set()
         left: list[str] = []
-        first = 0.0
+        todo: list[tuple[str, str, str | None, float]] = []
         for member, v in t.given.items():
             if v == 0.0 or member == FRAME:
                 continue
             lid = self.link(member)
-            if lid in seen or len(out) == freedom:
+            if lid in seen or len(todo) == freedom:
                 left.append(member)
                 continue
             seen.add(lid)
+            arm = self.carrier[self._root(self.shaft[member])]
+            rel = None if arm == FRAME or self.link(arm) == _FRAME_LINK else self.link(arm)
+            todo.append((member, lid, rel, v - sol.omega[arm] if rel is not None else v))
+        # the swept drive turns (a member that turns with its arm follows it at ratio 0)
+        todo.sort(key=lambda d: is_zero(d[3], scale))
+        first = todo[0][3] if todo else 0.0
+        for _member, lid, rel, rate in todo:
+            d: dict[str, Any] = {"link": lid}
+            if rel is not None:
+                d["relative_to"] = rel
             if out:   # a second input turns with the first at the ratio of their speeds
-                out.append({"link": lid, "follows": {"link": out[0]["link"],
-                                                     "ratio": v / first}})
+                d["follows"] = {"link": out[0]["link"], "ratio": rate / first}
             else:
-                first = v
-                out.append({"link": lid, "angle": 0.0, "omega": f"{v:.17g} {unit}"})
+                d |= {"angle": 0.0, "omega": f"{rate:.17g} {unit}"}
+            out.append(d)
         key = "turns" if t.turns else "speeds"
         if not out:
             raise InputError("every given motion holds a member at rest, so nothing turns: "
