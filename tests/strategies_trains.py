@@ -26,7 +26,8 @@ from the train formula, not by graphkin:
   of the second stage (``arm = 3``, or an arm ``B`` joined to it), carrying
   planet 6 round gear 5.  Eq. (7.25) once per arm, seen from each:
   ``ω3 = ω2 + e1 (ω4 − ω2)``, ``ω5 = ω2 + e2 (ω7 − ω2)``,
-  ``ω6 = ω3 + (−N5/N6)(ω5 − ω3)``.  Only trains whose gear 6 clears gears 4
+  ``ω6 = ω3 + (−N5/N6)(ω5 − ω3)``.  Arm 2, gear 7 and gear 4 or the inner
+  arm 3 are given (4 and 7 may be held at 0).  Only trains whose gear 6 clears gears 4
   and 7 drawn in a straight line (as ``chain``).
 
 Sizes are teeth or radii (``[radii]``), speeds in rad/s.
@@ -209,12 +210,21 @@ def arms_on_arms(draw: Any) -> RandomTrain:
     for mesh, ring in ((meshes[0], ring4), (meshes[1], ring7)):
         if ring:
             mesh["contact"] = "internal"
-    given = {"2": draw(_SPEED), "4": draw(st.sampled_from([0.0, draw(_SPEED)])),
-             "7": draw(st.sampled_from([0.0, draw(_SPEED)]))}
-    w2, w4, w7 = given["2"], given["4"], given["7"]
     e1 = (1.0 if ring4 else -1.0) * n["4"] / n["3"]     # Eq. (7.24), seen from arm 2
     e2 = (1.0 if ring7 else -1.0) * n["7"] / n["5"]
-    w3 = w2 + e1 * (w4 - w2)                             # Eq. (7.25)
+    inner_given = draw(st.booleans())   # the inner arm's motion given, not gear 4's
+    third = "3" if inner_given else "4"
+    # (a member given 0 is part of the frame: not the inner arm, which turns on a pin)
+    given = {"2": draw(_SPEED), third: draw(_SPEED) if inner_given
+             else draw(st.sampled_from([0.0, draw(_SPEED)])),
+             "7": draw(st.sampled_from([0.0, draw(_SPEED)]))}
+    w2, w7 = given["2"], given["7"]
+    if inner_given:
+        w3 = given["3"]
+        w4 = w2 + (w3 - w2) / e1                         # Eq. (7.25) solved for gear 4
+    else:
+        w4 = given["4"]
+        w3 = w2 + e1 * (w4 - w2)                         # Eq. (7.25)
     w5 = w2 + e2 * (w7 - w2)
     w6 = w3 + (-n["5"] / n["6"]) * (w5 - w3)             # Eq. (7.25), seen from arm 3
     omega = {"2": w2, "3": w3, "4": w4, "5": w5, "6": w6, "7": w7}
@@ -223,5 +233,6 @@ def arms_on_arms(draw: Any) -> RandomTrain:
     if joined:
         data["joined"] = [{"members": [3, "B"]}]
         omega["B"] = w3
-    return RandomTrain("arm on arm" + (", joined" if joined else "") + (", ring 4" if ring4
+    return RandomTrain("arm on arm" + (", joined" if joined else "")
+                       + (", inner arm given" if inner_given else "") + (", ring 4" if ring4
                        else "") + (", ring 7" if ring7 else ""), data, omega)

@@ -51,6 +51,7 @@ Example 11.7 (Fig. 11.17).
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -235,7 +236,15 @@ class _Layout:
             else:
                 central.add(sh[t.meshes[todo[0]].driver])
         self.central = central
-        # the axes: a member's shaft, a gear on its arm's axis joined to that axis
+        try:
+            self._axes()
+        except InputError as exc:   # the rule above fails an arm on an arm: search
+            if not self._search(given={sh[m] for m in t.given}, arms=arms):
+                raise exc from None
+
+    def _axes(self) -> None:
+        """The axes of :attr:`planet_of`: each gear on its arm's axis unless it is its planet."""
+        t, sh = self.t, self.shaft
         self.axis = {s: s for s in dict.fromkeys(sh.values())}
         for m in t.meshes:
             a, b, arm = sh[m.driver], sh[m.driven], sh[m.arm]
@@ -245,6 +254,54 @@ class _Layout:
                 if self.planet_of.get(g) != arm:
                     self._union(g, arm)
         self._carriers()
+        for i, m in enumerate(t.meshes):
+            if self._root(sh[m.driver]) == self._root(sh[m.driven]):
+                raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
+                                 "axis and cannot mesh: no planar layout of this train (each "
+                                 "is joined to the other, or held, driven, an arm or on the "
+                                 "frame's axes, so coaxial with the arm carrying their mesh)",
+                                 key=f"mesh[{i}].gears", file=self.src)
+
+    def _search(self, given: set[str], arms: set[str]) -> bool:
+        """Every choice of the planet of each arm's mesh, the fewest given gears and arms first.
+
+        A planet that is an arm (an arm on an arm) counts 1, a gear given a
+        motion 2 (an input shaft is rather on a frame axis), any other gear 0.
+
+        Used when the rule of :meth:`classify` leaves no planar layout (a gear
+        given a motion, or an arm, that is a planet of another arm); the first
+        choice whose axes are consistent (:meth:`_axes`) is kept.  At most
+        2^12 choices; returns whether one was found.
+        """
+        t, sh = self.t, self.shaft
+        carried = [i for i, m in enumerate(t.meshes) if m.arm != FRAME]
+        if len(carried) > 12:
+            return False
+        options = []
+        for i in carried:
+            m = t.meshes[i]
+            options.append([g for g in (sh[m.driver], sh[m.driven])
+                            if g not in self.hard and g != sh[m.arm]])
+        choices = []
+        for pick in itertools.product(*options):
+            planet_of: dict[str, str] = {}
+            where: dict[str, int] = {}
+            for i, g in zip(carried, pick, strict=True):
+                arm = sh[t.meshes[i].arm]
+                if planet_of.setdefault(g, arm) != arm:
+                    break
+                where.setdefault(g, i)
+            else:
+                cost = sum(1 if g in arms else 2 if g in given else 0 for g in planet_of)
+                choices.append((cost, planet_of, where))
+        for _, planet_of, where in sorted(choices, key=lambda c: c[0]):
+            self.planet_of, self.planet_mesh = planet_of, where
+            try:
+                self._axes()
+            except InputError:
+                continue
+            return True
+        return False
 
     def _carriers(self) -> None:
         """Each axis -> the member it is a point of (an arm, or the frame); refuse a contradiction.
@@ -264,8 +321,10 @@ class _Layout:
             name = next((g for g in t.members if sh[g] == s), s)
             if s in self.planet_of:
                 c, w = self.planet_of[s], f"a planet of arm {self.planet_of[s]!r}"
+            elif s in self.held:
+                c, w = FRAME, "given at rest, 0, so part of the frame"
             elif s in self.hard:
-                c, w = FRAME, "about a frame point: held, or in a mesh on the frame"
+                c, w = FRAME, "in a mesh on the frame, so about a frame point"
             else:
                 continue
             if self.carrier.get(n, c) != c:
@@ -285,9 +344,10 @@ class _Layout:
             while self.carrier[n] != FRAME:
                 if n in seen:
                     ring = [self.carrier[k] for k in seen[seen.index(n):]]
-                    raise InputError(f"arms {' and '.join(repr(a) for a in ring)} would each be "
-                                     "carried by the other (each turns on a pin of the "
-                                     "next): no planar layout of the train",
+                    what = (f"arm {ring[0]!r} would turn on a pin of itself" if len(ring) == 1
+                            else f"arms {' and '.join(repr(a) for a in ring)} would each be "
+                            "carried by the other (each turns on a pin of the next)")
+                    raise InputError(f"{what}: no planar layout of the train",
                                      key=f"mesh[{self.planet_mesh[ring[0]]}].arm"
                                      if ring[0] in self.planet_mesh else "mesh", file=self.src)
                 seen.append(n)
@@ -310,14 +370,6 @@ class _Layout:
     def place(self) -> None:
         t, sh = self.t, self.shaft
         ends = [(self._root(sh[m.driver]), self._root(sh[m.driven])) for m in t.meshes]
-        for i, (na, nb) in enumerate(ends):
-            if na == nb:
-                m = t.meshes[i]
-                raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
-                                 "axis and cannot mesh: no planar layout of this train (each "
-                                 "is joined to the other, or held, driven, an arm or on the "
-                                 "frame's axes, so coaxial with the arm carrying their mesh)",
-                                 key=f"mesh[{i}].gears", file=self.src)
         self.adjacent = {frozenset(e) for e in ends}
         self.gears_on: dict[str, list[str]] = {}
         for g in t.size:
@@ -516,7 +568,8 @@ class _Layout:
             seen.add(lid)
             arm = self.carrier[self._root(self.shaft[member])]
             rel = None if arm == FRAME or self.link(arm) == _FRAME_LINK else self.link(arm)
-            todo.append((member, lid, rel, v - sol.omega[arm] if rel is not None else v))
+            rate = v - sol.omega[arm] if rel is not None else v
+            todo.append((member, lid, rel, 0.0 if is_zero(rate, scale) else rate))
         # the swept drive turns (a member that turns with its arm follows it at ratio 0)
         todo.sort(key=lambda d: is_zero(d[3], scale))
         first = todo[0][3] if todo else 0.0

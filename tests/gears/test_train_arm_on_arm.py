@@ -52,12 +52,12 @@ SLOW = settings(max_examples=30, deadline=None, suppress_health_check=[HealthChe
 HAND = {"2": 10.0, "3": 30.0, "4": 0.0, "5": 20.0, "6": 45.0, "7": 0.0}
 
 
-def _train(inner: str = "3") -> dict:
+def _train(inner: str = "3", speeds: dict | None = None) -> dict:
     data: dict = {"title": "arm 3 on arm 2", "teeth": {"4": 40, "3": 20, "7": 30, "5": 30,
                                                        "6": 20},
                   "mesh": [{"gears": [4, 3], "arm": 2}, {"gears": [7, 5], "arm": 2},
                            {"gears": [5, 6], "arm": inner}],
-                  "speeds": {"2": "10 rad/s ccw", "4": 0, "7": 0}}
+                  "speeds": speeds or {"2": "10 rad/s ccw", "4": 0, "7": 0}}
     if inner != "3":
         data["joined"] = [{"members": [3, inner]}]
     return data
@@ -69,9 +69,22 @@ def _layout(data: dict):
     return train, lay, graphkin.from_dict(lay.data, source="t.toml")
 
 
-@pytest.mark.parametrize("inner", ["3", "B"])
-def test_the_hand_example_turns_at_the_tables_speeds(inner: str) -> None:
-    _, lay, mech = _layout(_train(inner))
+# the same train with the inner arm's motion given instead of sun 4's: 30 = 10 + (-2)(ω4 - 10)
+# gives ω4 = 0 back; the inner arm turns on a pin of arm 2, so it is driven by its angle
+# relative to arm 2, θ3/2, at ω3 - ω2 = 20 rad/s
+INNER_GIVEN = {"2": "10 rad/s ccw", "3": "30 rad/s ccw", "7": 0}
+
+
+@pytest.mark.parametrize("inner,speeds", [("3", None), ("B", None), ("3", INNER_GIVEN),
+                                          ("B", INNER_GIVEN | {"B": "30 rad/s ccw"})])
+def test_the_hand_example_turns_at_the_tables_speeds(inner: str, speeds: dict | None) -> None:
+    if speeds is not None and "B" in speeds:
+        speeds = {k: v for k, v in speeds.items() if k != "3"}
+    _, lay, mech = _layout(_train(inner, speeds))
+    if speeds is not None:
+        rel = [d for d in lay.data["drive"] if "relative_to" in d]
+        assert rel == [{"link": lay.link_of["3"], "relative_to": lay.link_of["2"],
+                        "follows": {"link": lay.link_of["2"], "ratio": pytest.approx(2.0)}}]
     sol = mech.solve()
     for member, w in HAND.items():
         lid = lay.link_of[member]
@@ -79,6 +92,7 @@ def test_the_hand_example_turns_at_the_tables_speeds(inner: str) -> None:
         assert got == pytest.approx(w, abs=1e-9 * 45.0), member
     if inner == "B":
         assert lay.link_of["B"] == lay.link_of["3"]
+    assert lay.link_of["4"] == ("1" if speeds is None else "4")
     # the pin of arm 2 30 mm from the axis (R4 + R3 = 20 + 10), planet 6 25 mm from the pin
     assert math.dist(lay.center["3"], lay.center["4"]) == pytest.approx(30.0, rel=1e-15)
     assert lay.center["5"] == lay.center["3"]
@@ -200,7 +214,12 @@ def test_radii_moved_by_round_off_move_no_verdict(t: RandomTrain, signs: list[fl
     # gear 9 held, yet on the axis of arm 3, which turns on a pin of arm 2
     ({"teeth": {"4": 40, "3": 20, "9": 20, "6": 20},
       "mesh": [{"gears": [4, 3], "arm": 2}, {"gears": [9, 6], "arm": 3}],
-      "speeds": {"2": 1, "4": 0, "9": 0}}, "'9' (about a frame point"),
+      "speeds": {"2": 1, "4": 0, "9": 0}}, "'9' (given at rest, 0, so part of the frame)"),
+    # the inner arm given at rest is part of the frame, yet it turns on a pin of arm 2
+    ({"teeth": {"4": 40, "3": 20, "7": 30, "5": 30, "6": 20},
+      "mesh": [{"gears": [4, 3], "arm": 2}, {"gears": [7, 5], "arm": 2},
+               {"gears": [5, 6], "arm": 3}],
+      "speeds": {"2": 10, "3": 0, "7": 0}}, "'3' (given at rest, 0, so part of the frame)"),
     # arm 2 turns on a pin of arm 3 (gear 2 is in mesh with h on arm 3, h a planet of arm 3
     # as it meshes with g given on 3's axis), and arm 3 on a pin of arm 2: a cycle
     ({"teeth": {"g": 20, "h": 20, "3": 20, "2": 20},
