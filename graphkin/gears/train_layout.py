@@ -23,6 +23,13 @@ written), so ``graphkin live`` can open it:
    and the other gear is a planet, its axis a point of the arm; when neither
    gear of an arm's mesh is known, a gear in mesh with a planet is coaxial
    with the arm (the ring round a planet), else the mesh's first gear is.
+   An arm may be carried by another arm: a planet of arm A that is the arm
+   B of another mesh (or on B's shaft), or a planet of A in a mesh B
+   carries, puts B's axis on A's pin, and B's planets are points of B.
+   Where these rules leave no consistent layout, every choice of each arm
+   mesh's planet is tried (an arm as a planet before a gear given a
+   motion).  A member given a motion on a moving pin is driven by its angle
+   relative to that arm, at ``ω − ω_arm`` (the train's, Eq. 7.25).
 4. **Distances.** Meshing axes are ``R1 + R2`` apart (external) or
    ``R_ring − R_planet`` (internal).  Going through the meshes in the file's
    order, the first mesh that reaches an axis places it; each later mesh
@@ -627,7 +634,9 @@ def train_mechanism(train: Train, path: str | Path) -> TrainLayout:
     ------
     InputError
         A train the mechanism equations refuse (:func:`graphkin.gears.train.solve`),
-        two meshing gears that would turn about one axis, a planet on two arms.
+        two meshing gears that would turn about one axis, an axis that would be a
+        point of a moving arm and of the frame (a planet on two arms, a member
+        given 0 on a moving pin), arms that would each turn on a pin of the other.
 
     Examples
     --------
