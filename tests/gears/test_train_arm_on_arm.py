@@ -190,6 +190,20 @@ def test_random_arms_on_arms_turn_at_the_formulas_speeds(t: RandomTrain) -> None
             inside = (h in ring and d + r <= s) or (g in ring and d + s <= r)
             assert apart or inside, (t.kind, g, h, d, r, s)
     assert not any("overlap" in n for n in lay.notes)
+    # arm 2 (the swept drive: given first, never 0) turned 0, 250° and 500°: every link at
+    # the formula's ω, and turned ω/ω2 times as far as the arm (counted on continuously)
+    assert lay.data["drive"][0]["link"] == lay.link_of["2"]
+    sw = mech.sweep(count=3, start=0.0, stop=750.0)
+    assert sw.valid.all()
+    t2 = np.radians(sw.columns["drive"])
+    for member, w in t.omega.items():
+        lid = lay.link_of[member]
+        if lid == "1":
+            continue
+        assert np.allclose(sw.columns[f"omega_{lid}"], w, rtol=0.0, atol=1e-9 * scale)
+        turned = np.radians(sw.columns[f"angle_{lid}"] - sw.columns[f"angle_{lid}"][0])
+        off = np.remainder(turned - w / t.omega["2"] * t2 + np.pi, 2 * np.pi) - np.pi
+        assert np.allclose(off, 0.0, atol=1e-9 * max(1.0, abs(w / t.omega["2"]))), member
 
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
