@@ -580,6 +580,12 @@ class _Layout:
         # the swept drive turns (a member that turns with its arm follows it at ratio 0)
         todo.sort(key=lambda d: is_zero(d[3], scale))
         first = todo[0][3] if todo else 0.0
+        if todo and first == 0.0:
+            raise InputError(f"{todo[0][0]!r} turns with the arm it turns on, as does every "
+                             "member given a motion before the train's degrees of freedom are "
+                             "all given: give first the motion of a member that turns about a "
+                             "frame point", key=f"{'turns' if t.turns else 'speeds'}."
+                             f"{todo[0][0]}", file=self.src)
         for _member, lid, rel, rate in todo:
             d: dict[str, Any] = {"link": lid}
             if rel is not None:
