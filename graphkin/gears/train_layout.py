@@ -64,6 +64,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from graphkin.errors import InputError
 from graphkin.gears.train import FRAME, Contact, Mesh, Train, solve
 from graphkin.tolerance import DEFAULT_TOL, is_zero
@@ -565,13 +567,31 @@ class _Layout:
         seen: set[str] = set()
         left: list[str] = []
         todo: list[tuple[str, str, str | None, float]] = []
+        # the mesh equations and the members held, as rows over the shafts (as solve writes
+        # them): a given motion drives only if it is independent of those and of the drives
+        # before it (a motion that follows from them is left to follow)
+        cols = {x: j for j, x in enumerate(dict.fromkeys(self.shaft[m] for m in t.members))}
+        rows = []
+        for m in t.meshes:
+            r = float(m.ratio(t.size))
+            row = np.zeros(len(cols))
+            for x, c in ((m.driven, 1.0), (m.driver, -r), (m.arm, r - 1.0)):
+                if self.shaft[x] in cols:
+                    row[cols[self.shaft[x]]] += c
+            rows.append(row)
+        for x in self.held - {self.shaft[FRAME]}:
+            rows.append(np.eye(len(cols))[cols[x]])
+        rank = np.linalg.matrix_rank(np.array(rows)) if rows else 0
         for member, v in t.given.items():
             if v == 0.0 or member == FRAME:
                 continue
             lid = self.link(member)
-            if lid in seen or len(todo) == freedom:
+            trial = [*rows, np.eye(len(cols))[cols[self.shaft[member]]]]
+            if lid in seen or len(todo) == freedom or np.linalg.matrix_rank(
+                    np.array(trial)) == rank:
                 left.append(member)
                 continue
+            rows, rank = trial, rank + 1
             seen.add(lid)
             arm = self.carrier[self._root(self.shaft[member])]
             rel = None if arm == FRAME or self.link(arm) == _FRAME_LINK else self.link(arm)

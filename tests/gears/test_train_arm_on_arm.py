@@ -155,6 +155,19 @@ def test_three_levels_of_arms() -> None:
     assert lay.center["9"] == lay.center["6"]
 
 
+def test_a_given_motion_that_follows_from_those_before_it_is_not_a_drive() -> None:
+    """ω3 = ω6 = ω5 = ω2 = 10 rad/s: every mesh turns as one, and seen from arm 3,
+    ω6 − ω3 = (−30/20)(ω5 − ω3) = 0 (Eq. 7.25) follows from ω3 and ω6 (given first):
+    gear 5's motion is left to follow, arm 2 is the third drive, and all turn at 10."""
+    speeds = {"3": 10, "6": 10, "5": 10, "2": 10}
+    _, lay, mech = _layout(_train("3", speeds))
+    assert len(lay.data["drive"]) == 3
+    assert lay.notes == [n for n in lay.notes if n.startswith("speeds.5: ")] and lay.notes
+    sol = mech.solve()
+    for member, lid in lay.link_of.items():
+        assert float(sol.omega(lid)) == pytest.approx(10.0, abs=1e-9 * 10.0), member
+
+
 @SLOW
 @given(arms_on_arms())
 def test_random_arms_on_arms_turn_at_the_formulas_speeds(t: RandomTrain) -> None:
