@@ -19,6 +19,17 @@ from the train formula, not by graphkin:
   ``ω_L = ω_A + e (ω_F − ω_A)`` with ``e = (−N2/N4)(± N_p/N6)`` gives the
   others.
 
+* ``arm on arm`` (:func:`arms_on_arms`, not in :func:`gear_trains`): an arm
+  carried by another arm.  Arm 2 turns about the frame's axis with two
+  central gears 4 and 7 (each a sun or a ring); gears 3 and 5 turn freely on
+  one pin of arm 2, 3 in mesh with 4 and 5 with 7; gear 3 is itself the arm
+  of the second stage (``arm = 3``, or an arm ``B`` joined to it), carrying
+  planet 6 round gear 5.  Eq. (7.25) once per arm, seen from each:
+  ``ω3 = ω2 + e1 (ω4 − ω2)``, ``ω5 = ω2 + e2 (ω7 − ω2)``,
+  ``ω6 = ω3 + (−N5/N6)(ω5 − ω3)``.  Arm 2, gear 7 and gear 4 or the inner
+  arm 3 are given (4 and 7 may be held at 0).  Only trains whose gear 6 clears gears 4
+  and 7 drawn in a straight line (as ``chain``).
+
 Sizes are teeth or radii (``[radii]``), speeds in rad/s.
 """
 
@@ -30,7 +41,7 @@ from typing import Any
 from hypothesis import assume
 from hypothesis import strategies as st
 
-__all__ = ["RandomTrain", "gear_trains"]
+__all__ = ["RandomTrain", "gear_trains", "arms_on_arms"]
 
 
 @dataclass
@@ -172,3 +183,56 @@ def _planetary(draw: Any) -> RandomTrain:
 def gear_trains() -> st.SearchStrategy[RandomTrain]:
     """Random train files of every kind above, with each member's ω by hand."""
     return st.one_of(_chain(), _planetary())
+
+
+def _clear(d: float, r: float, r_ring: bool, s: float, s_ring: bool) -> bool:
+    """Two pitch circles ``d`` apart stand clear: apart, or one wholly inside a ring."""
+    return d > r + s or (s_ring and d + r < s) or (r_ring and d + s < r)
+
+
+@st.composite
+def arms_on_arms(draw: Any) -> RandomTrain:
+    """Arm 3 (gear 3, or an arm ``B`` joined to it) on a pin of arm 2: see the docstring."""
+    n = {g: draw(_TEETH) for g in ("3", "5", "6")}
+    ring4, ring7 = draw(st.booleans()), draw(st.booleans())
+    n["4"] = draw(st.integers(n["3"] + 12, 160)) if ring4 else draw(_TEETH)
+    n["7"] = draw(st.integers(n["5"] + 12, 160)) if ring7 else draw(_TEETH)
+    # drawn in a straight line (1 tooth = 1 length unit: only the clearance's sign counts):
+    # the pin at d1 from the frame's axis, planet 6 at d1 + d2; 6 clears 4 and 7
+    d1 = n["4"] - n["3"] if ring4 else n["4"] + n["3"]
+    d2 = n["5"] + n["6"]
+    assume(_clear(d1 + d2, n["6"], False, n["4"], ring4))
+    assume(_clear(d1 + d2, n["6"], False, n["7"], ring7))
+    joined = draw(st.booleans())
+    inner = "B" if joined else "3"
+    meshes: list[dict[str, Any]] = [{"gears": [4, 3], "arm": 2}, {"gears": [7, 5], "arm": 2},
+                                    {"gears": [5, 6], "arm": inner}]
+    for mesh, ring in ((meshes[0], ring4), (meshes[1], ring7)):
+        if ring:
+            mesh["contact"] = "internal"
+    e1 = (1.0 if ring4 else -1.0) * n["4"] / n["3"]     # Eq. (7.24), seen from arm 2
+    e2 = (1.0 if ring7 else -1.0) * n["7"] / n["5"]
+    inner_given = draw(st.booleans())   # the inner arm's motion given, not gear 4's
+    third = "3" if inner_given else "4"
+    # (a member given 0 is part of the frame: not the inner arm, which turns on a pin)
+    given = {"2": draw(_SPEED), third: draw(_SPEED) if inner_given
+             else draw(st.sampled_from([0.0, draw(_SPEED)])),
+             "7": draw(st.sampled_from([0.0, draw(_SPEED)]))}
+    w2, w7 = given["2"], given["7"]
+    if inner_given:
+        w3 = given["3"]
+        w4 = w2 + (w3 - w2) / e1                         # Eq. (7.25) solved for gear 4
+    else:
+        w4 = given["4"]
+        w3 = w2 + e1 * (w4 - w2)                         # Eq. (7.25)
+    w5 = w2 + e2 * (w7 - w2)
+    w6 = w3 + (-n["5"] / n["6"]) * (w5 - w3)             # Eq. (7.25), seen from arm 3
+    omega = {"2": w2, "3": w3, "4": w4, "5": w5, "6": w6, "7": w7}
+    data: dict[str, Any] = {"title": "random arm on an arm", **_sizes(draw, n),
+                            "mesh": meshes, "speeds": given}
+    if joined:
+        data["joined"] = [{"members": [3, "B"]}]
+        omega["B"] = w3
+    return RandomTrain("arm on arm" + (", joined" if joined else "")
+                       + (", inner arm given" if inner_given else "") + (", ring 4" if ring4
+                       else "") + (", ring 7" if ring7 else ""), data, omega)

@@ -23,6 +23,13 @@ written), so ``graphkin live`` can open it:
    and the other gear is a planet, its axis a point of the arm; when neither
    gear of an arm's mesh is known, a gear in mesh with a planet is coaxial
    with the arm (the ring round a planet), else the mesh's first gear is.
+   An arm may be carried by another arm: a planet of arm A that is the arm
+   B of another mesh (or on B's shaft), or a planet of A in a mesh B
+   carries, puts B's axis on A's pin, and B's planets are points of B.
+   Where these rules leave no consistent layout, every choice of each arm
+   mesh's planet is tried (an arm as a planet before a gear given a
+   motion).  A member given a motion on a moving pin is driven by its angle
+   relative to that arm, at ``ω − ω_arm`` (the train's, Eq. 7.25).
 4. **Distances.** Meshing axes are ``R1 + R2`` apart (external) or
    ``R_ring − R_planet`` (internal).  Going through the meshes in the file's
    order, the first mesh that reaches an axis places it; each later mesh
@@ -51,14 +58,17 @@ Example 11.7 (Fig. 11.17).
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from graphkin.errors import InputError
 from graphkin.gears.train import FRAME, Contact, Mesh, Train, solve
-from graphkin.tolerance import DEFAULT_TOL
+from graphkin.tolerance import DEFAULT_TOL, is_zero
 
 __all__ = ["TrainLayout", "train_mechanism", "NOMINAL_MODULE", "clearance"]
 
@@ -164,24 +174,60 @@ class _Layout:
 
     # --- which gears are coaxial with their arm --------------------------------------------
     def classify(self) -> None:
+        """Which gear of each arm's mesh is a planet of that arm, which is on its axis.
+
+        A gear held, on the frame's axes, or given a motion turns about a frame
+        point; so does an arm unless a mesh puts it on another arm.  In a mesh
+        carried by arm ``A``, a gear on ``A``'s axis (``A`` itself, a gear that
+        turns about a frame point when ``A`` does, or a planet of another arm,
+        which cannot also be ``A``'s) makes the other gear a planet of ``A``.
+        When both would be on ``A``'s axis and one of them is another arm (or
+        on an arm's shaft), that arm is the planet: its axis is a point of
+        ``A``, an arm carried by an arm (Sec. 7.15, Fig. 7.41 with a planet
+        that is itself an arm).
+        """
         t, sh = self.t, self.shaft
-        fixed = set(self.held) | {sh[m] for m in t.given} | {sh[a] for a in t.arms}
+        arms = {sh[a] for a in t.arms}
+        hard = set(self.held)
         for m in t.meshes:
             if m.arm == FRAME:
-                fixed |= {sh[m.driver], sh[m.driven]}
+                hard |= {sh[m.driver], sh[m.driven]}
+        self.hard = hard
+        central: set[str] = hard | {sh[m] for m in t.given} | arms
+        soft = arms - hard
         self.planet_of: dict[str, str] = {}
-        central: set[str] = set(fixed)
+        self.planet_mesh: dict[str, int] = {}
+
+        def on_axis(g: str, arm: str) -> bool:
+            if g == arm:
+                return True
+            if g in self.planet_of:
+                return self.planet_of[g] != arm
+            return g in central
+
         todo = [i for i, m in enumerate(t.meshes) if m.arm != FRAME]
         while todo:
             progress = False
             for i in list(todo):
                 m = t.meshes[i]
                 a, b, arm = sh[m.driver], sh[m.driven], sh[m.arm]
-                for x, y in ((a, b), (b, a)):
-                    if x in central and y not in central and y not in self.planet_of:
-                        self.planet_of[y] = arm
+                if on_axis(a, arm) and on_axis(b, arm):
+                    # an arm (or a gear on an arm's shaft) on the axis of a gear this arm
+                    # carries: the inner arm is a planet of this one
+                    cand = [g for g in (a, b) if g in soft and g != arm
+                            and g not in self.planet_of]
+                    if len(cand) == 1:
+                        self.planet_of[cand[0]] = arm
+                        self.planet_mesh[cand[0]] = i
+                        central.discard(cand[0])
                         progress = True
-                if (a in central or a in self.planet_of) and (b in central or b in self.planet_of):
+                else:
+                    for x, y in ((a, b), (b, a)):
+                        if on_axis(x, arm) and y not in self.planet_of and y not in central:
+                            self.planet_of[y] = arm
+                            self.planet_mesh[y] = i
+                            progress = True
+                if all(g in central or g in self.planet_of for g in (a, b)):
                     todo.remove(i)
             if progress or not todo:
                 continue
@@ -199,20 +245,122 @@ class _Layout:
             else:
                 central.add(sh[t.meshes[todo[0]].driver])
         self.central = central
-        # the axes: a member's shaft, a central gear joined to its arm's axis
-        self.axis = {s: s for s in set(sh.values())}
-        for i, m in enumerate(t.meshes):
+        try:
+            self._axes()
+        except InputError as exc:   # the rule above fails an arm on an arm: search
+            if not self._search(given={sh[m] for m in t.given}, arms=arms):
+                raise exc from None
+
+    def _axes(self) -> None:
+        """The axes of :attr:`planet_of`: each gear on its arm's axis unless it is its planet."""
+        t, sh = self.t, self.shaft
+        self.axis = {s: s for s in dict.fromkeys(sh.values())}
+        for m in t.meshes:
             a, b, arm = sh[m.driver], sh[m.driven], sh[m.arm]
             if m.arm == FRAME:
                 continue
             for g in (a, b):
-                if g in self.planet_of and self.planet_of[g] != arm:
-                    raise InputError(f"gear {m.driver if g == a else m.driven!r} would turn on "
-                                     f"two arms, {self.planet_of[g]!r} and {m.arm!r}: no "
-                                     "planar layout of the train", key=f"mesh[{i}].arm",
-                                     file=self.src)
-                if g not in self.planet_of:
+                if self.planet_of.get(g) != arm:
                     self._union(g, arm)
+        self._carriers()
+        for i, m in enumerate(t.meshes):
+            if self._root(sh[m.driver]) == self._root(sh[m.driven]):
+                raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
+                                 "axis and cannot mesh: no planar layout of this train (each "
+                                 "is joined to the other, or held, driven, an arm or on the "
+                                 "frame's axes, so coaxial with the arm carrying their mesh)",
+                                 key=f"mesh[{i}].gears", file=self.src)
+
+    def _search(self, given: set[str], arms: set[str]) -> bool:
+        """Every choice of the planet of each arm's mesh, the fewest given gears and arms first.
+
+        A planet that is an arm (an arm on an arm) counts 1, a gear given a
+        motion 2 (an input shaft is rather on a frame axis), any other gear 0.
+
+        Used when the rule of :meth:`classify` leaves no planar layout (a gear
+        given a motion, or an arm, that is a planet of another arm); the first
+        choice whose axes are consistent (:meth:`_axes`) is kept.  At most
+        2^12 choices; returns whether one was found.
+        """
+        t, sh = self.t, self.shaft
+        carried = [i for i, m in enumerate(t.meshes) if m.arm != FRAME]
+        if len(carried) > 12:
+            return False
+        options = []
+        for i in carried:
+            m = t.meshes[i]
+            options.append([g for g in (sh[m.driver], sh[m.driven])
+                            if g not in self.hard and g != sh[m.arm]])
+        choices = []
+        for pick in itertools.product(*options):
+            planet_of: dict[str, str] = {}
+            where: dict[str, int] = {}
+            for i, g in zip(carried, pick, strict=True):
+                arm = sh[t.meshes[i].arm]
+                if planet_of.setdefault(g, arm) != arm:
+                    break
+                where.setdefault(g, i)
+            else:
+                cost = sum(1 if g in arms else 2 if g in given else 0 for g in planet_of)
+                choices.append((cost, planet_of, where))
+        for _, planet_of, where in sorted(choices, key=lambda c: c[0]):
+            self.planet_of, self.planet_mesh = planet_of, where
+            try:
+                self._axes()
+            except InputError:
+                continue
+            return True
+        return False
+
+    def _carriers(self) -> None:
+        """Each axis -> the member it is a point of (an arm, or the frame); refuse a contradiction.
+
+        An axis is a point of arm ``A`` when a gear on it is a planet of ``A``;
+        of the frame when a gear on it is held or meshes on the frame's axes;
+        else of the frame (an arm's own axis, by default).  An axis that would
+        be a point of two members, or an arm carried, through other arms, by
+        itself, has no planar layout.
+        """
+        t, sh = self.t, self.shaft
+        shafts = list(dict.fromkeys([*(sh[m] for m in t.members), sh[FRAME]]))
+        self.carrier: dict[str, str] = {}
+        why: dict[str, tuple[str, str]] = {}
+        for s in shafts:
+            n = self._root(s)
+            name = next((g for g in t.members if sh[g] == s), s)
+            if s in self.planet_of:
+                c, w = self.planet_of[s], f"a planet of arm {self.planet_of[s]!r}"
+            elif s in self.held:
+                c, w = FRAME, "given at rest, 0, so part of the frame"
+            elif s in self.hard:
+                c, w = FRAME, "in a mesh on the frame, so about a frame point"
+            else:
+                continue
+            if self.carrier.get(n, c) != c:
+                other, w0 = why[n]
+                planet = s if s in self.planet_of else next(
+                    k for k in shafts if self._root(k) == n and k in self.planet_of)
+                raise InputError(f"{other!r} ({w0}) and {name!r} ({w}) would turn about one "
+                                 "axis, which cannot be both: no planar layout of the train",
+                                 key=f"mesh[{self.planet_mesh[planet]}].arm", file=self.src)
+            self.carrier[n] = c
+            why.setdefault(n, (name, w))
+        for s in shafts:
+            self.carrier.setdefault(self._root(s), FRAME)
+        for s in shafts:   # an arm carried, through arms, by itself
+            seen: list[str] = []
+            n = self._root(s)
+            while self.carrier[n] != FRAME:
+                if n in seen:
+                    ring = [self.carrier[k] for k in seen[seen.index(n):]]
+                    what = (f"arm {ring[0]!r} would turn on a pin of itself" if len(ring) == 1
+                            else f"arms {' and '.join(repr(a) for a in ring)} would each be "
+                            "carried by the other (each turns on a pin of the next)")
+                    raise InputError(f"{what}: no planar layout of the train",
+                                     key=f"mesh[{self.planet_mesh[ring[0]]}].arm"
+                                     if ring[0] in self.planet_mesh else "mesh", file=self.src)
+                seen.append(n)
+                n = self._root(self.carrier[n])
 
     def _root(self, s: str) -> str:
         while self.axis[s] != s:
@@ -231,15 +379,6 @@ class _Layout:
     def place(self) -> None:
         t, sh = self.t, self.shaft
         ends = [(self._root(sh[m.driver]), self._root(sh[m.driven])) for m in t.meshes]
-        for i, (na, nb) in enumerate(ends):
-            if na == nb:
-                m = t.meshes[i]
-                raise InputError(f"gears {m.driver!r} and {m.driven!r} would turn about one "
-                                 "axis and cannot mesh: no planar layout of this train (each "
-                                 "is joined to the other, or held, driven, an arm or on the "
-                                 "frame's axes, so coaxial with the arm carrying their mesh; "
-                                 "an arm carried by another arm is not laid out)",
-                                 key=f"mesh[{i}].gears", file=self.src)
         self.adjacent = {frozenset(e) for e in ends}
         self.gears_on: dict[str, list[str]] = {}
         for g in t.size:
@@ -360,11 +499,11 @@ class _Layout:
             xy = [*self.pos[node]]
             lid = _FRAME_LINK if s in self.held else self.link_names[s]
             links[lid][self.point[node]] = xy
-            if s not in self.planet_of:       # a fixed axis: a frame pivot
+            arm = self.carrier[node]
+            if arm == FRAME:                  # a fixed axis: a frame pivot
                 links[_FRAME_LINK][self.point[node]] = xy
-            else:                             # a planet's axis: a point of its arm
-                arm = self.planet_of[s]
-                alid = _FRAME_LINK if arm in self.held else self.link_names[arm]
+            else:                             # a planet's axis: a point of its arm (which
+                alid = self.link(arm)         # may itself turn on another arm)
                 links[alid][self.point[node]] = xy
                 links[alid][self.point[self._root(arm)]] = [*self.pos[self._root(arm)]]
         count: dict[str, int] = {}
@@ -412,27 +551,70 @@ class _Layout:
         return self.r[g]
 
     def drives(self) -> list[dict[str, Any]]:
+        """The given motions as drives: the first the swept one, the others following it.
+
+        A member turning on a pin of a moving arm (an arm carried by an arm) is
+        driven by its angle relative to that arm, ``θ_m/C`` (``relative_to``),
+        at ``ω_m − ω_C`` with ``ω_C`` the train's (the mesh equations, Eq. 7.25);
+        the swept drive is the first whose rate is not 0.
+        """
         t = self.t
-        freedom = solve(t).freedom - len(self.held - {self.shaft[FRAME]})
+        sol = solve(t)
+        freedom = sol.freedom - len(self.held - {self.shaft[FRAME]})
         unit = t.unit + ("/s" if t.turns else "")
+        scale = max(abs(v) for v in t.given.values())
         out: list[dict[str, Any]] = []
         seen: set[str] = set()
         left: list[str] = []
-        first = 0.0
+        todo: list[tuple[str, str, str | None, float]] = []
+        # the mesh equations and the members held, as rows over the shafts (as solve writes
+        # them): a given motion drives only if it is independent of those and of the drives
+        # before it (a motion that follows from them is left to follow)
+        cols = {x: j for j, x in enumerate(dict.fromkeys(self.shaft[m] for m in t.members))}
+        rows = []
+        for m in t.meshes:
+            r = float(m.ratio(t.size))
+            row = np.zeros(len(cols))
+            for x, c in ((m.driven, 1.0), (m.driver, -r), (m.arm, r - 1.0)):
+                if self.shaft[x] in cols:
+                    row[cols[self.shaft[x]]] += c
+            rows.append(row)
+        for x in self.held - {self.shaft[FRAME]}:
+            rows.append(np.eye(len(cols))[cols[x]])
+        rank = np.linalg.matrix_rank(np.array(rows)) if rows else 0
         for member, v in t.given.items():
             if v == 0.0 or member == FRAME:
                 continue
             lid = self.link(member)
-            if lid in seen or len(out) == freedom:
+            trial = [*rows, np.eye(len(cols))[cols[self.shaft[member]]]]
+            if lid in seen or len(todo) == freedom or np.linalg.matrix_rank(
+                    np.array(trial)) == rank:
                 left.append(member)
                 continue
+            rows, rank = trial, rank + 1
             seen.add(lid)
+            arm = self.carrier[self._root(self.shaft[member])]
+            rel = None if arm == FRAME or self.link(arm) == _FRAME_LINK else self.link(arm)
+            rate = v - sol.omega[arm] if rel is not None else v
+            todo.append((member, lid, rel, 0.0 if is_zero(rate, scale) else rate))
+        # the swept drive turns (a member that turns with its arm follows it at ratio 0)
+        todo.sort(key=lambda d: is_zero(d[3], scale))
+        first = todo[0][3] if todo else 0.0
+        if todo and first == 0.0:
+            raise InputError(f"{todo[0][0]!r} turns with the arm it turns on, as does every "
+                             "member given a motion before the train's degrees of freedom are "
+                             "all given: give first the motion of a member that turns about a "
+                             "frame point", key=f"{'turns' if t.turns else 'speeds'}."
+                             f"{todo[0][0]}", file=self.src)
+        for _member, lid, rel, rate in todo:
+            d: dict[str, Any] = {"link": lid}
+            if rel is not None:
+                d["relative_to"] = rel
             if out:   # a second input turns with the first at the ratio of their speeds
-                out.append({"link": lid, "follows": {"link": out[0]["link"],
-                                                     "ratio": v / first}})
+                d["follows"] = {"link": out[0]["link"], "ratio": rate / first}
             else:
-                first = v
-                out.append({"link": lid, "angle": 0.0, "omega": f"{v:.17g} {unit}"})
+                d |= {"angle": 0.0, "omega": f"{rate:.17g} {unit}"}
+            out.append(d)
         key = "turns" if t.turns else "speeds"
         if not out:
             raise InputError("every given motion holds a member at rest, so nothing turns: "
@@ -478,7 +660,9 @@ def train_mechanism(train: Train, path: str | Path) -> TrainLayout:
     ------
     InputError
         A train the mechanism equations refuse (:func:`graphkin.gears.train.solve`),
-        two meshing gears that would turn about one axis, a planet on two arms.
+        two meshing gears that would turn about one axis, an axis that would be a
+        point of a moving arm and of the frame (a planet on two arms, a member
+        given 0 on a moving pin), arms that would each turn on a pin of the other.
 
     Examples
     --------
