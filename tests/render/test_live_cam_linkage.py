@@ -1,0 +1,102 @@
+"""A cam on a link the linkage moves turns with it on the live page (the rocker of a four-bar).
+
+tests/data/live25/cam_on_rocker.toml: a cam on the rocker of a crank-rocker four-bar,
+its radial roller follower lifting Y = 10 (1 − cos θ4) mm.  The page turns the cam to
+the rocker's angle as the posture's construction places the rocker
+(render/live_cam_turn.py, ``via``), instead of holding the page at the file's angle.
+Tested in headless Chromium: the crank dragged by its pin A, the follower's points
+equal ``graphkin solve`` of the file the page saves (to 1e-9) and the closed form of
+the rocker angle (Freudenstein's, tests/cams/test_cams_linkage.py).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from live_cams_shared import drag, page_state, same_as_solve
+
+import graphkin
+from graphkin.files import load_toml
+from graphkin.mechanisms import from_dict
+from graphkin.render.live import live_data, live_html
+
+ROOT = Path(__file__).resolve().parents[2]
+SRC = ROOT / "tests" / "data" / "live25" / "cam_on_rocker.toml"
+
+
+def _file() -> dict:
+    """The test file, its cam file's path made absolute (the page's saved file reads it)."""
+    data = load_toml(SRC)
+    data["cams"][0]["file"] = str((SRC.parent / data["cams"][0]["file"]).resolve())
+    return data
+
+
+def _lift(theta2: float) -> tuple[float, float]:
+    """θ4 of the open four-bar (B above the ground line) and the roller's height above O4.
+
+    O2 = 0, O4 = (100, 0), crank a = 30, coupler b = 110, rocker c = 70: B is on the
+    circle of radius b about A = a e^{iθ2} and of radius c about O4, at the angle β
+    from A → O4 given by the cosine rule, counterclockwise from it (the side of the
+    file's hint B = (120, 60)); then θ4 = arg(B − O4), the lift Y = 10 (1 − cos θ4)
+    (Θ = θ4: axis 90°, Eq. 6.12) and the roller's center T5 = O4 + (0, R0 + Y).
+    """
+    a, b, c, d = 30.0, 110.0, 70.0, 100.0
+    ax, ay = a * math.cos(theta2), a * math.sin(theta2)
+    ex, ey = d - ax, -ay                    # A → O4
+    e = math.hypot(ex, ey)
+    # B = A + b(cos, sin)(φ + β) with φ the direction A → O4 and cos β by the cosine rule
+    beta = math.acos((b * b + e * e - c * c) / (2 * b * e))
+    phi = math.atan2(ey, ex)
+    bx, by = ax + b * math.cos(phi + beta), ay + b * math.sin(phi + beta)
+    th4 = math.atan2(by, bx - d)
+    return th4, 40.0 + 10.0 * (1.0 - math.cos(th4))
+
+
+def test_the_cam_on_the_rocker_turns_not_held() -> None:
+    data = _file()
+    mech = from_dict(data, source=SRC.name)
+    d, _ = live_data(mech, data, SRC.name)
+    assert d.get("turn") is not None and d["cam"]["why"] == ""
+    c = d["turn"]["cams"][0]
+    assert c["via"] is not None and c["via"]["theta"] == "θ4"
+    # the crank keeps its handle (its pin A): the page is dragged by it
+    assert d["drive"]["pivot"] == "O2" and d["drive"]["tip"] == "A"
+
+
+def test_dragging_the_crank_moves_the_follower_as_solve_says(browser, tmp_path) -> None:
+    data = _file()
+    mech = from_dict(data, source=SRC.name)
+    page = tmp_path / "page.html"
+    page.write_text(live_html(mech, data, SRC.name), encoding="utf-8")
+    browser.open(page)
+    # a drag of the crank's pin A about O2, by the pointer (a quarter turn back)
+    r = browser.js("(function () { var r = document.querySelector('.gk-handle[data-kind="
+                   "\"drive\"]').getBoundingClientRect(); return [r.x + r.width / 2, "
+                   "r.y + r.height / 2]; })()")
+    o = browser.js("window.graphkinLive.toClient('posture', "
+                   "window.graphkinLive.state().result.O2)")
+    rr, a0 = math.hypot(r[0] - o[0], r[1] - o[1]), math.atan2(r[1] - o[1], r[0] - o[0])
+    a1 = a0 + math.radians(80.0)
+    stop = (o[0] + rr * math.cos(a1), o[1] + rr * math.sin(a1))
+    drag(browser, (r[0], r[1]), stop, n=8)
+    shown = []
+    for crank in (None, 150.0, 275.0):
+        if crank is not None:
+            browser.js(f"window.graphkinLive.setDrive({math.radians(crank)})")
+        state = page_state(browser)
+        res = state["result"]
+        assert res is not None
+        th2 = state["drive"]
+        shown.append(math.degrees(th2))
+        th4, y = _lift(th2)
+        # the page's follower: the closed form of the rocker's angle, and solve's
+        assert abs(res["θ4"] - th4) < 1e-9
+        assert abs(res["T5"][0] - 100.0) < 1e-9 and abs(res["T5"][1] - y) < 1e-9
+        assert abs(res["P"][1] - (y + 30.0)) < 1e-9
+        same_as_solve(browser, tmp_path, mech, state)
+        saved = graphkin.load(tmp_path / "saved.toml")
+        assert abs(saved.cams[0].theta - th4 % (2 * math.pi)) < 1e-9
+    # the drag turned the crank (the screen's y runs down: 80° clockwise on the page)
+    assert abs((shown[0] - 60.0 + 80.0 + 180.0) % 360.0 - 180.0) < 3.0
+    assert browser.errors() == []
