@@ -168,3 +168,58 @@ def linkage_angle(data: Mapping[str, Any], cam_link: str, followers: Iterable[st
         f"the cam's link {cam_link} is not a drive by its angle, so its angle is the "
         f"linkage's (the file without the follower {', '.join(sorted(side))}), which does not "
         f"place it: {why}", key=f"{key}.link", file=source)
+
+
+def link_turning(mech: Any, link: str, center: str) -> Any:
+    """θ, dθ/dx and d²θ/dx² of ``link`` at arrays of the first drive's value ``x`` (Sec. 3.11).
+
+    ``mech`` is the linkage that moves the cam's link (:func:`driving_data`,
+    its first drive at unit speed): its posture and polygons are evaluated on
+    the whole array at once (the same recorded steps as a sweep, no loop over
+    postures).  With the drive at unit speed and at rest in acceleration, the
+    link's ω and α are the kinematic coefficients θ' and θ'' (Sec. 3.11),
+    read from two of its points: the cam's center ``P`` (on the frame) and
+    another ``Q``, ``θ = arg(Q − P) − arg(q − p)`` (their own coordinates),
+    ``ω = (r × v_Q)/|r|²`` and ``α = (r × a_Q)/|r|²`` with ``r = Q − P``.
+
+    Returns
+    -------
+    callable
+        ``x -> (θ, θ', θ'')``, arrays of ``x``'s shape (NaN where the linkage
+        cannot be assembled).
+    """
+    import math
+
+    import numpy as np
+
+    from graphkin.kinematics.sweep.engine import _engine
+    from graphkin.tolerance import DEFAULT_TOL
+
+    pts = mech.links[link].points
+    p = pts[center]
+    far = max((n for n in pts if n != center),
+              key=lambda n: math.hypot(pts[n][0] - p[0], pts[n][1] - p[1]), default=None)
+    if far is None or math.hypot(pts[far][0] - p[0], pts[far][1] - p[1]) == 0.0:
+        raise InputError(f"the cam's link {link} has no point but its center {center}: its "
+                         "angle is not defined by two of its points", key="links." + link,
+                         file=mech.source)
+    phi = math.atan2(pts[far][1] - p[1], pts[far][0] - p[0])
+    eng = _engine(mech, DEFAULT_TOL)
+
+    def turning(x: Any) -> Any:
+        xs = np.atleast_1d(np.asarray(x, dtype=float))
+        ev = eng.posture(xs)
+        evv, eva = eng.rates(ev, unit=True)
+        P = np.asarray(ev[center], dtype=float)
+        Q = np.asarray(ev[far], dtype=float)
+        r = Q[..., :2] / Q[..., 2:3] - P[..., :2] / P[..., 2:3]
+        vq = np.asarray(evv[f"v({far})"], dtype=float)
+        aq = np.asarray(eva[f"a({far})"], dtype=float)
+        rr = r[..., 0] ** 2 + r[..., 1] ** 2
+        th = np.arctan2(r[..., 1], r[..., 0]) - phi
+        w = (r[..., 0] * vq[..., 1] - r[..., 1] * vq[..., 0]) / rr
+        a = (r[..., 0] * aq[..., 1] - r[..., 1] * aq[..., 0]) / rr
+        shape = np.shape(x)
+        return th.reshape(shape), w.reshape(shape), a.reshape(shape)
+
+    return turning

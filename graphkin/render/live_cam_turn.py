@@ -79,8 +79,8 @@ function gkTurnVia(c, J, Kc) {
   return Number.isFinite(x) ? x : null;
 }
 function gkTurn(T, J, Kc) {
-  const got = [], xs = T.cams.map((c) => c.via ? gkTurnVia(c, J, Kc) :
-    typeof J === "number" ? J : J[c.input]);
+  const got = [], xs = T.cams.map((c) => typeof J === "number" ? J :
+    c.via ? gkTurnVia(c, J, Kc) : J[c.input]);
   // the linkage cannot place a cam's link here: no posture (said as any unassembled one)
   if (xs.some((x) => x === null)) return {why: "", none: true, cams: got, xs: xs};
   for (const [i, c] of T.cams.entries()) {
