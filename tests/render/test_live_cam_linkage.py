@@ -100,3 +100,34 @@ def test_dragging_the_crank_moves_the_follower_as_solve_says(browser, tmp_path) 
     # the drag turned the crank (the screen's y runs down: 80° clockwise on the page)
     assert abs((shown[0] - 60.0 + 80.0 + 180.0) % 360.0 - 180.0) < 3.0
     assert browser.errors() == []
+
+
+def test_the_page_s_verdicts_do_not_move_with_round_off() -> None:
+    # the page's words (convex, concave, undercut, straight), the roller's branch and the
+    # rocker's angle at crank angles moved by a few ulps and by 1e-12: the same
+    # (decisions on values above round-off, graphkin/tolerance.py)
+    import json
+
+    from jsrun import run_js
+
+    data = _file()
+    mech = from_dict(data, source=SRC.name)
+    d, js = live_data(mech, data, SRC.name)
+    angles = [math.radians(a) for a in (0.0, 37.0, 60.0, 95.0, 144.0, 181.0, 230.0, 300.0)]
+    cases = [a * (1.0 + e) + e for a in angles for e in (0.0, 4e-16, -4e-16, 1e-12, -1e-12)]
+    got = run_js(js + f"\nconst T = {json.dumps(d['turn'])}, K0 = {json.dumps(d['K'])};\n"
+                 f"const I0 = {json.dumps(d['inputs'])};\n"
+                 f"const RESULT = {json.dumps(cases)}.map((x) => {{ "
+                 "const J = Object.assign({}, I0); J[T.label] = x; "
+                 "const s = gkTurnSolve(T, J, K0.slice(), construction); "
+                 "const n = gkTurnNote(T, s.t, x); return [s.t.why ? 'straight' : '', "
+                 "(n.match(/convex|concave|undercut/g) || []).join(','), "
+                 "s.r ? s.r['\u03b84'] : null, s.r ? s.r.T5 : null]; });")
+    for k in range(0, len(cases), 5):
+        words = {tuple(g[:2]) for g in got[k:k + 5]}
+        assert len(words) == 1, (math.degrees(cases[k]), got[k:k + 5])
+        for g in got[k:k + 5]:
+            th4, y = _lift(cases[k])
+            assert g[3] is not None and abs(g[2] - th4) < 1e-9
+            assert abs(g[3][1] - y) < 1e-9 and abs(g[3][0] - 100.0) < 1e-9
+    assert any("convex" in g[1] for g in got)
