@@ -18,6 +18,12 @@ program's ``y'`` and ``y''`` (chain rule through Θ = s(θ2 − (axis − 90°))
 The rest of the mechanism -- links driven off the follower -- is then
 swept by the constructions as with any coupled input.
 
+A cam whose link the first drive does not turn itself follows its link: a
+second drive's law (or its held value), or the angle the linkage gives the
+link (a four-bar's rocker, :mod:`graphkin.cams.linkage`), its kinematic
+coefficients θ', θ'' with respect to the swept input evaluated on the whole
+array of drive values (:class:`LinkCamLaw`, the chain rule).
+
 The swept mechanism keeps every point, body and joint of the file's but the
 equivalent linkage's own: no coupler ``K-T``, no center of curvature
 ``K<f>`` on the cam and no slot ``F<f>a-F<f>b`` of a flat face (they stand
@@ -45,7 +51,7 @@ from graphkin.errors import InputError
 from graphkin.mechanisms.laws import Law
 from graphkin.mechanisms.model import Mechanism
 
-__all__ = ["CamLaw", "cam_law", "swept_mechanism"]
+__all__ = ["CamLaw", "LinkCamLaw", "cam_law", "swept_mechanism"]
 
 Array = np.ndarray
 
@@ -163,15 +169,17 @@ def _fail(mech: Mechanism, key: str, message: str) -> InputError:
 def swept_mechanism(mech: Mechanism) -> Mechanism:
     """``mech``'s cams replaced by their followers driven by the cams' programs, for a sweep.
 
-    The first drive must turn every cam (the cam's link, by its angle): a
-    sweep turns it, and each follower follows as a second drive by its
-    :class:`CamLaw`.  The result has no cams; its other points, bodies and
-    joints are ``mech``'s.
+    A sweep turns the first drive, and each follower follows as a second
+    drive by its :class:`CamLaw`: of the first drive's angle when the cam is
+    on its link, else of the cam link's angle as its own drive or the linkage
+    moves it (:class:`LinkCamLaw`).  The result has no cams; its other points,
+    bodies and joints are ``mech``'s.
 
     Raises
     ------
     InputError
-        One line, when a cam is not on the first drive's link.
+        One line naming ``cams[i].link``, when the linkage without the cams'
+        followers does not move the cam's link from the first drive.
     """
     joints: tuple[CamJoint, ...] = mech.cams
     written = joints[0].data

@@ -39,7 +39,7 @@ from typing import Any
 
 from graphkin.errors import GraphkinError, InputError
 
-__all__ = ["follower_side", "driving_data", "linkage_angle"]
+__all__ = ["follower_side", "driving_data", "linkage_angle", "link_turning"]
 
 
 #: A drive's rates: not needed for the angle, and not read in the first pass.

@@ -34,10 +34,21 @@ program's foot of the pivot on the face's slot).  A translating flat face's
 slot lies at ``x = −ρ`` along its guide: that goes into the slot's points' first
 coordinates (it has no branch: its two straight paths meet once).
 
+A cam on another drive's link turns with that drive's input (a law following
+the first, or held).  A cam on a link the linkage moves (a four-bar's rocker, no
+drive of its own: :mod:`graphkin.cams.linkage`) turns with its link's angle
+``θ<link>`` as the page's posture solves it: the page's construction, written
+out once more with only ``θ<link>`` requested (``gkCamLinkFns``: the steps up
+to that link, none of the cam's), is run on the page's numbers first; the cam
+is then evaluated at that angle and the posture run as for any turning cam.
+``K<f>``'s images by its link's complex ratio (``similar`` from two other pins of
+a rocker, Sec. 3.5) are rewritten with ``K<f>``.  A link whose angle the
+construction does not give from two solved points is held, said so.
+
 Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
-and says why): a cam not on the first drive's link, and a construction whose other
-numbers change with the angle (checked here by building the page at other
-angles; the branches the page keeps itself are not counted) are held.
+and says why): a construction whose other numbers change with the angle
+(checked here by building the page at other angles; the branches the page
+keeps itself are not counted) is held.
 
 References
 ----------
