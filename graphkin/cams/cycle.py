@@ -191,7 +191,12 @@ def swept_mechanism(mech: Mechanism) -> Mechanism:
     data, _ = expand(copy.deepcopy(dict(written)), mech.source)
     moved = [i for i, j in enumerate(joints) if j.link != first.link or first.kind != "angle"]
     # a cam its link's own drive does not turn with the sweep: its link's angle the linkage's
-    turning = {i: _turning(mech, data, i) for i in moved}
+    # (a cam on an earlier cam's oscillating follower turns with that follower's law)
+    by_follower = {j.follower: i for i, j in enumerate(joints)}
+    chained = {i: by_follower[joints[i].link] for i in moved
+               if by_follower.get(joints[i].link, i) < i
+               and joints[by_follower[joints[i].link]].cam.follower.kind.oscillating}
+    turning = {i: _turning(mech, data, i) for i in moved if i not in chained}
     links = data["links"]
     for j in joints:
         fl = j.follower
@@ -214,12 +219,17 @@ def swept_mechanism(mech: Mechanism) -> Mechanism:
     twin = from_dict(data, mech.source)
     out = list(twin.drives)
     lead = out[0]
+    laws: list[CamLaw] = []
     for k, j in enumerate(joints):
         i = len(out) - len(joints) + k
         law = cam_law(j)
+        if k in chained:        # the link's angle is the earlier follower's: its law's
+            prev = laws[chained[k]]
+            turning[k] = lambda x, p=prev: (p.value(x), p.slope(x), p.curve(x))
         if k in turning:
             law = LinkCamLaw(cam=law.cam, shift=law.shift, gain=law.gain, base=law.base,
                              turning=turning[k])
+        laws.append(law)
         w, a = (None, None) if lead.rate is None else law.rates(lead.value, lead.rate,
                                                                   lead.rate2 or 0.0)
         out[i] = dataclasses.replace(out[i], value=law.value(lead.value), rate=w, rate2=a,
@@ -249,6 +259,9 @@ def _turning(mech: Mechanism, data: Mapping[str, Any], i: int) -> Any:
             return lambda x: (np.full(np.shape(x), value), np.zeros(np.shape(x)),
                               np.zeros(np.shape(x)))
         return lambda x: (law.value(x), law.slope(x), law.curve(x))
+    if j.link in {x.follower for x in joints}:
+        raise _fail(mech, key, f"a sweep turns the first drive; the cam's link {j.link} is "
+                    "a translating follower or a later cam's: a cam on it is swept not yet")
     side = follower_side(data, [x.follower for x in joints], [x.link for x in joints])
     side |= {x.coupler for x in joints if x.coupler}
     first = driving_data(data, side)

@@ -90,11 +90,12 @@ function gkTurnVia(c, J, Kc) {
   return Number.isFinite(x) ? x : null;
 }
 function gkTurn(T, J, Kc) {
-  const got = [], xs = T.cams.map((c) => typeof J === "number" ? J :
-    c.via ? gkTurnVia(c, J, Kc) : J[c.input]);
-  // the linkage cannot place a cam's link here: no posture (said as any unassembled one)
-  if (xs.some((x) => x === null)) return {why: "", none: true, cams: got, xs: xs};
+  const got = [], xs = [];
   for (const [i, c] of T.cams.entries()) {
+    // (a link an earlier cam's follower moves: read after that cam's numbers are set)
+    xs.push(typeof J === "number" ? J : c.via ? gkTurnVia(c, J, Kc) : J[c.input]);
+    // the linkage cannot place a cam's link here: no posture (said as any unassembled one)
+    if (xs[i] === null) return {why: "", none: true, cams: got, xs: xs};
     const x = xs[i], I = {}; I[c.input] = x;
     const v = gkCamFns[c.fn](I, c.K);
     if (v === null) return {why: gkTurnStraight(c, x), cams: got, xs: xs};
@@ -395,7 +396,9 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
         return ""
     data["turn"] = {"label": label, "cams": cams}
     names_js = ", ".join(f"gkCam{i}" for i in range(len(cams)))
-    links_js = ", ".join(f"gkCamLink{c['via']['fn']}" for c in cams if c["via"] is not None)
+    # (by the cam's place: null for a cam its own drive turns)
+    links_js = ", ".join("null" if c["via"] is None else f"gkCamLink{c['via']['fn']}"
+                         for c in cams)
     return (js + f"const gkCamFns = [{names_js}];\nconst gkCamLinkFns = [{links_js}];\n"
             + TURN_JS)
 

@@ -211,3 +211,41 @@ def test_a_cam_on_a_link_the_linkage_cannot_place_is_refused_in_one_line() -> No
         from_dict(data, source="m.toml")
     said = e.value.one_line()
     assert said.startswith("m.toml: cams[0].link: ") and "\n" not in said
+
+
+CHAIN = ROOT / "tests" / "data" / "live25" / "cam_on_cam_follower.toml"
+
+
+@pytest.mark.parametrize("crank", [30.0, 100.0, 250.0])
+def test_a_cam_on_an_earlier_cam_s_follower_turns_with_it(crank) -> None:
+    # the second cam's angle is the first follower's θ4 (solved through the first cam's
+    # equivalent linkage); its follower stands 40 + 10 (1 − cos θ4) mm above O4 (in inches)
+    data = load_toml(CHAIN)
+    for e in data["cams"]:
+        e["file"] = str((CHAIN.parent / e["file"]).resolve())
+    data["drive"]["angle"] = crank
+    mech = from_dict(data, source=str(CHAIN))
+    sol = mech.solve()
+    th4 = float(sol.angle_rad("4"))
+    assert abs(math.remainder(mech.cams[1].theta - th4, 2 * math.pi)) < 1e-12
+    y = (40.0 + 10.0 * (1.0 - math.cos(th4))) / 25.4
+    np.testing.assert_allclose(sol.position("T6"), [3.0, y], rtol=0, atol=1e-12)
+    # ω4 and α4 carried through: Ẏ = 10 sin θ4 ω4, Ÿ = 10 (cos θ4 ω4² + sin θ4 α4)
+    w4, a4 = float(sol.omega("4")), float(sol.alpha("4"))
+    v = 10.0 * math.sin(th4) * w4 / 25.4
+    acc = 10.0 * (math.cos(th4) * w4 * w4 + math.sin(th4) * a4) / 25.4
+    np.testing.assert_allclose(sol.velocity("T6"), [0.0, v], rtol=0, atol=1e-10)
+    np.testing.assert_allclose(sol.acceleration("T6"), [0.0, acc], rtol=0, atol=1e-9)
+
+
+def test_a_cam_on_an_earlier_cam_s_follower_sweeps_as_solve_says() -> None:
+    data = load_toml(CHAIN)
+    for e in data["cams"]:
+        e["file"] = str((CHAIN.parent / e["file"]).resolve())
+    sw = from_dict(data, source=str(CHAIN)).sweep(count=12).columns
+    for k, at in enumerate(np.asarray(sw["drive"], dtype=float)):
+        there = dict(data, drive={**data["drive"], "angle": float(at)})
+        got = from_dict(there).solve()
+        for pre, v in (("", got.position("T6")), ("v", got.velocity("T6")),
+                       ("a", got.acceleration("T6"))):
+            assert abs(sw[f"{pre}y_T6"][k] - v[1]) < 1e-9 * (1.0 + abs(v[1])), (pre, at)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 from live_cams_shared import drag, page_state, same_as_solve
 
 import graphkin
@@ -131,3 +132,35 @@ def test_the_page_s_verdicts_do_not_move_with_round_off() -> None:
             assert g[3] is not None and abs(g[2] - th4) < 1e-9
             assert abs(g[3][1] - y) < 1e-9 and abs(g[3][0] - 100.0) < 1e-9
     assert any("convex" in g[1] for g in got)
+
+
+def test_a_cam_on_an_earlier_cam_s_follower_turns_on_the_page_as_solve_says() -> None:
+    # tests/data/live25/cam_on_cam_follower.toml: the second cam turns with the first cam's
+    # follower; the page's posture (run by node, or Chromium) at several crank angles equals
+    # graphkin solve of the file at those angles
+    import json
+
+    from jsrun import run_js
+
+    src = ROOT / "tests" / "data" / "live25" / "cam_on_cam_follower.toml"
+    data = load_toml(src)
+    for e in data["cams"]:
+        e["file"] = str((src.parent / e["file"]).resolve())
+    mech = from_dict(data, source=src.name)
+    d, js = live_data(mech, data, src.name)
+    assert d.get("turn") is not None, d["cam"]["why"]
+    assert [c["via"] and c["via"]["theta"] for c in d["turn"]["cams"]] == [None, "θ4"]
+    cranks = [30.0, 75.0, 140.0, 222.0, 333.0]
+    got = run_js(js + f"\nconst T = {json.dumps(d['turn'])}, K0 = {json.dumps(d['K'])};\n"
+                 f"const I0 = {json.dumps(d['inputs'])};\n"
+                 f"const RESULT = {json.dumps([math.radians(c) for c in cranks])}.map((x) => "
+                 "{ const J = Object.assign({}, I0); J[T.label] = x; "
+                 "const s = gkTurnSolve(T, J, K0.slice(), construction); "
+                 "return s.r ? [s.r.T6, s.r.P, s.r['v(T6)'], s.r['a(T6)']] : null; });")
+    for crank, g in zip(cranks, got):
+        there = dict(data, drive={**data["drive"], "angle": crank})
+        sol = from_dict(there).solve()
+        assert g is not None, crank
+        for got_xy, ref in zip(g, (sol.position("T6"), sol.position("P"), sol.velocity("T6"),
+                                   sol.acceleration("T6"))):
+            np.testing.assert_allclose(got_xy, ref, rtol=0, atol=1e-9 * (1 + abs(ref).max()))
