@@ -390,7 +390,7 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
     if not mech.cams:
         return ""
     try:
-        cams, js = _cams(mech, steps, names, label)
+        cams, js = _cams(mech, steps, names, data["K"], label)
     except NotTurned as exc:
         data["turnWhy"] = str(exc)
         return ""
@@ -403,7 +403,7 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
             + TURN_JS)
 
 
-def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
+def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str], page_k: Sequence[float],
           label: str) -> tuple[list[dict[str, Any]], str]:
     d0 = mech.drives[0]
     out: list[dict[str, Any]] = []
@@ -415,7 +415,7 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
         via = None
         if dj is None:      # a link the linkage moves: its angle as the posture solves it
             cam_input = f"θ{j.link}"
-            via = _via(steps, names, cam_input, i)
+            via = _via(steps, names, page_k, cam_input, i)
             js += via.pop("source")
         else:
             cam_input = label if dj is d0 else dj.label
@@ -495,7 +495,8 @@ def _k_images(mech: Mechanism, j: Any, steps: Sequence[Step],
     return rows
 
 
-def _via(steps: Sequence[Step], names: list[str], theta: str, i: int) -> dict[str, Any]:
+def _via(steps: Sequence[Step], names: list[str], page_k: Sequence[float], theta: str,
+         i: int) -> dict[str, Any]:
     """How the page finds the angle ``θ<link>`` of a cam's link the linkage moves.
 
     The posture's construction up to that link only (the steps the link's
@@ -512,15 +513,25 @@ def _via(steps: Sequence[Step], names: list[str], theta: str, i: int) -> dict[st
     if not any(theta in s.outputs for s in steps):
         raise _fail(f"the posture's construction gives the cam's link no angle {theta} from "
                     "two of its solved points")
+    # only the steps θ<link> reads (the writer keeps every step that can fail, and the
+    # follower's steps fail where the cam's numbers are not yet this posture's)
+    live = {theta}
+    mine = []
+    for s in reversed(steps):
+        if not live.isdisjoint(s.outputs):
+            mine.append(s)
+            live.update(s.inputs)
     try:
-        fn = generate_js(steps, requests=[theta], name=f"gkCamLink{i}")
+        fn = generate_js(mine[::-1], requests=[theta], name=f"gkCamLink{i}")
     except Unsupported as exc:
         raise _fail(str(exc)) from None
     slots = []
-    for n, _ in fn.slots:
-        if n not in names:
+    where = {n: k for k, n in enumerate(names)}
+    for n, v in fn.slots:
+        # the page's number of that name: the same step's, recorded once
+        if n not in where or page_k[where[n]] != v:
             raise _fail(f"the construction of {theta} reads a number the page has not ({n})")
-        slots.append(names.index(n))
+        slots.append(where[n])
     return {"fn": i, "slots": slots, "theta": theta, "source": fn.source}
 
 

@@ -12,18 +12,25 @@ the rocker angle (Freudenstein's, tests/cams/test_cams_linkage.py).
 from __future__ import annotations
 
 import math
+import tempfile
 from pathlib import Path
 
 import numpy as np
+from cam_strategies import cam_toml, cams
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 from live_cams_shared import drag, page_state, same_as_solve
 
 import graphkin
+from graphkin.cams import FollowerKind
+from graphkin.errors import GraphkinError
 from graphkin.files import load_toml
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_data, live_html
 
 ROOT = Path(__file__).resolve().parents[2]
 SRC = ROOT / "tests" / "data" / "live25" / "cam_on_rocker.toml"
+_TMP = Path(tempfile.mkdtemp(prefix="graphkin-live-cam-linkage-"))
 
 
 def _file() -> dict:
@@ -164,3 +171,64 @@ def test_a_cam_on_an_earlier_cam_s_follower_turns_on_the_page_as_solve_says() ->
         for got_xy, ref in zip(g, (sol.position("T6"), sol.position("P"), sol.velocity("T6"),
                                    sol.acceleration("T6"))):
             np.testing.assert_allclose(got_xy, ref, rtol=0, atol=1e-9 * (1 + abs(ref).max()))
+
+
+def _page_at(data: dict, source: str, cranks: list[float]) -> list:
+    """The page's posture (run by node, or Chromium) at the crank angles (degrees)."""
+    import json
+
+    from jsrun import run_js
+
+    mech = from_dict(data, source=source)
+    d, js = live_data(mech, data, source)
+    assert d.get("turn") is not None, d["cam"]["why"]
+    return run_js(js + f"\nconst T = {json.dumps(d['turn'])}, K0 = {json.dumps(d['K'])};\n"
+                  f"const I0 = {json.dumps(d['inputs'])};\n"
+                  f"const RESULT = {json.dumps([math.radians(c) for c in cranks])}.map((x) => "
+                  "{ const J = Object.assign({}, I0); J[T.label] = x; "
+                  "const s = gkTurnSolve(T, J, K0.slice(), construction); return s.r; });")
+
+
+@settings(max_examples=8, deadline=None)
+@given(cam=cams(kinds=(FollowerKind.ROLLER, FollowerKind.KNIFE_EDGE,
+                       FollowerKind.OSCILLATING_ROLLER)),
+       dims=st.tuples(st.floats(0.15, 0.45), st.floats(0.9, 1.6), st.floats(0.5, 1.1)),
+       crank=st.floats(0.0, 360.0), axis=st.sampled_from([90.0, 30.0, 200.0]),
+       turns=st.lists(st.floats(-180.0, 180.0), min_size=2, max_size=3))
+def test_random_cams_on_random_rockers_turn_on_the_page_as_solve_says(cam, dims, crank, axis,
+                                                                     turns) -> None:
+    f = cam.follower
+    size = cam.prime + abs(cam.program.lift) + math.hypot(*f.pivot) + f.arm
+    d = 3.0 * size
+    a, b, c = (k * d for k in dims)
+    assume(a + max(b, c) < min(b, c) + d - 0.05 * d)       # Grashof, a crank-rocker
+    path = _TMP / f"cam-{abs(hash(cam_toml(cam)))}.toml"
+    path.write_text(cam_toml(cam))
+    hint = complex(d, 0.0) + c * 1j              # B above the ground line: the open branch
+    data = {"units": "mm",
+            "links": {"1": {"O2": [0.0, 0.0], "O4": [d, 0.0]}, "2": {"O2": [0, 0], "A": [a, 0]},
+                      "3": {"A": [0, 0], "B": [b, 0]}, "4": {"O4": [0, 0], "B": [c, 0]}},
+            "cams": {"link": 4, "follower": 5, "file": str(path), "axis": axis,
+                     "center": "O4", "pivot": "Q5"},
+            "drive": {"link": 2, "angle": crank, "omega": 7.0, "alpha": -2.0},
+            "assembly": {"B": [hint.real, hint.imag]}}
+    try:
+        from_dict(data, source="r.toml").solve()
+    except GraphkinError:
+        assume(False)            # no equivalent linkage at the file's angle (a straight curve)
+    cranks = [crank + t for t in turns]
+    got = _page_at(data, "r.toml", cranks)
+    for at, r in zip(cranks, got):
+        there = dict(data, drive={**data["drive"], "angle": at})
+        try:
+            sol = from_dict(there).solve()
+        except GraphkinError:
+            assert r is None, at           # no linkage there: the page shows no posture either
+            continue
+        assert r is not None, at
+        for n in ("B", "K5", "T5"):
+            np.testing.assert_allclose(r[n], sol.position(n), rtol=0, atol=1e-9 * size)
+        scale = size * (1.0 + 7.0 + 49.0 + 2.0) * (1.0 + abs(float(sol.omega("4"))) * 10)
+        np.testing.assert_allclose(r["v(T5)"], sol.velocity("T5"), rtol=0, atol=1e-9 * scale)
+        np.testing.assert_allclose(r["a(T5)"], sol.acceleration("T5"), rtol=0,
+                                   atol=1e-8 * scale)
