@@ -366,6 +366,13 @@ def _linkage_angle(data: Mapping[str, Any], links: Mapping[str, Any], sliders: l
         raise _fail(f"{key}.center", f"the cam's link {cl} has no drive, so the linkage turns "
                     f"it, about its pin with the frame: the cam's center {center!r} must be "
                     f"that pin, a point of [links.{cl}] (name it with center = ...)", source)
+    rolls = any(isinstance(r, Mapping) and cl in (str(r.get("link")), str(r.get("on")))
+                for r in _entries(data, "rolling", source))
+    c0 = _xy(pts[center], f"links.{cl}.{center}", source)
+    if not rolls and all(_xy(xy, f"links.{cl}.{n}", source) == c0 for n, xy in pts.items()):
+        raise _fail(f"{key}.link", f"the cam's link {cl} has no drive and no point but its "
+                    f"center {center}: its angle is not defined by two of its points (give it "
+                    "the pin by which the linkage turns it)", source)
     now = dict(data, links=links, assembly=dict(assembly))
     for name, rows in (("sliders", sliders), ("slots", slots)):
         if rows:

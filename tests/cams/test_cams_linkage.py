@@ -199,6 +199,21 @@ def test_a_cam_link_without_its_center_is_refused_in_one_line() -> None:
     assert "O2" in said and "[links.4]" in said
 
 
+@pytest.mark.parametrize("rocker", [{"O4": [0.0, 0.0]}, {"O4": [0.0, 0.0], "B": [0.0, 0.0]}])
+def test_a_cam_link_whose_angle_two_points_do_not_define_is_refused_in_one_line(rocker) -> None:
+    # the rocker reduced to its center (its pin B moved to another rocker, or onto O4)
+    data = _file()
+    data["links"]["4"] = rocker
+    if "B" not in rocker:
+        data["links"]["1"]["O6"] = [170.0, 0.0]
+        data["links"]["6"] = {"O6": [0.0, 0.0], "B": [70.0, 0.0]}
+    with pytest.raises(InputError) as e:
+        from_dict(data, source="m.toml")
+    said = e.value.one_line()
+    assert said.startswith("m.toml: cams[0].link: ") and "\n" not in said
+    assert "not defined by two of its points" in said
+
+
 def test_a_cam_on_a_link_the_linkage_cannot_place_is_refused_in_one_line() -> None:
     # the rocker's pin B is the coupler's no more: link 4 turns free about O4
     data = _file()
