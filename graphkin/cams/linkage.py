@@ -150,13 +150,11 @@ def linkage_angle(data: Mapping[str, Any], cam_link: str, followers: Iterable[st
     from graphkin.mechanisms import from_dict
 
     side = follower_side(data, followers, [cam_link])
-    why = ""
-    if "1" in side or cam_link in side:
-        why = "the follower's side reaches it"
     first = driving_data(data, side)
-    if not why and cam_link not in first["links"]:
+    why = ""
+    if cam_link not in first["links"]:
         why = "no link holds it"
-    if not why and "drive" not in first:
+    elif "drive" not in first:
         why = "every drive is on the follower's side"
     if not why:
         try:
@@ -166,8 +164,8 @@ def linkage_angle(data: Mapping[str, Any], cam_link: str, followers: Iterable[st
             why = lines[0] if lines else type(exc).__name__
     raise InputError(
         f"the cam's link {cam_link} is not a drive by its angle, so its angle is the "
-        f"linkage's (the file without the follower {', '.join(sorted(side))}), which does not "
-        f"place it: {why}", key=f"{key}.link", file=source)
+        f"linkage's (the file without the follower's side: link(s) {', '.join(sorted(side))}), "
+        f"which does not place it: {why}", key=f"{key}.link", file=source)
 
 
 def link_turning(mech: Any, link: str, center: str) -> Any:
