@@ -185,6 +185,12 @@ def swept_mechanism(mech: Mechanism) -> Mechanism:
     written = joints[0].data
     assert written is not None
     first = mech.drives[0]
+    if mech.has_rates and (mech.rolling or mech.rates is not None):
+        # the analytic solver that sweeps these takes each drive's rates as constants
+        raise _fail(mech, "cams", "a cam mechanism with rolling contact or [rates] is swept "
+                    "without its rates only (its followers' rates change with the posture, "
+                    "which the solver of rolling contact takes as constants): leave out the "
+                    "drive's omega and alpha to sweep its posture")
     from graphkin.cams.joint import expand
     from graphkin.mechanisms import from_dict
 

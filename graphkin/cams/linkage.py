@@ -203,6 +203,10 @@ def link_turning(mech: Any, link: str, center: str) -> Any:
                          file=mech.source)
     phi = math.atan2(pts[far][1] - p[1], pts[far][0] - p[0])
     eng = _engine(mech, DEFAULT_TOL)
+    if eng.method != "construction" or eng.pc is None or eng.pol is None:
+        raise InputError(f"the linkage that moves the cam's link {link} is not swept by the "
+                         f"constructions here ({eng.reason or eng.method})", key="links." + link,
+                         file=mech.source)
 
     def turning(x: Any) -> Any:
         xs = np.atleast_1d(np.asarray(x, dtype=float))

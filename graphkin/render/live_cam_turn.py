@@ -75,6 +75,9 @@ from graphkin.mechanisms.model import Mechanism
 
 __all__ = ["TURN_JS", "CAMS_APP_JS", "check_turn", "turn_cams", "turn_handle"]
 
+#: The operations that lay off a rolling contact's angle from its phase at the file's drive.
+_PHASED = ("roll_angle", "roll_circle_angle", "planetary_arm")
+
 #: Points of the cam's outline drawn on the page.
 OUTLINE = 120
 
@@ -394,7 +397,11 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
     except NotTurned as exc:
         data["turnWhy"] = str(exc)
         return ""
-    data["turn"] = {"label": label, "cams": cams}
+    # a rolling contact's phase at the file's drive (its "as drawn" constant) is the page's
+    # own, as its branches are: a page built at another drive angle lays it off afresh there
+    rolled = {o for s in steps if s.op in _PHASED for o in s.outputs}
+    phases = [k for k, n in enumerate(names) if n.rsplit(".", 1)[0] in rolled]
+    data["turn"] = {"label": label, "cams": cams, "phases": phases}
     names_js = ", ".join(f"gkCam{i}" for i in range(len(cams)))
     # (by the cam's place: null for a cam its own drive turns)
     links_js = ", ".join("null" if c["via"] is None else f"gkCamLink{c['via']['fn']}"
@@ -565,6 +572,7 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         # picks it afresh from the file's fixed hint, which a point moved far enough (the
         # follower's lift) lies nearer the other branch of: not a change of construction
         mine |= set(data.get("branches", {}).values())
+        mine |= set(turn.get("phases", ()))
         for other in others:
             k1, k2 = data["K"], other["K"]
             if len(k1) != len(k2):

@@ -264,3 +264,21 @@ def test_a_cam_on_an_earlier_cam_s_follower_sweeps_as_solve_says() -> None:
         for pre, v in (("", got.position("T6")), ("v", got.velocity("T6")),
                        ("a", got.acceleration("T6"))):
             assert abs(sw[f"{pre}y_T6"][k] - v[1]) < 1e-9 * (1.0 + abs(v[1])), (pre, at)
+
+
+def test_a_cam_on_a_gear_sweeps_its_posture_and_refuses_its_rates_in_one_line() -> None:
+    # tests/data/live25/cam_on_gear.toml: θ3 = −(θ2 − 40°)/2 by no slip (radii 30, 60 mm,
+    # outside); the follower at 40 + 10 (1 − cos θ3) mm above O3 at every swept angle
+    src = ROOT / "tests" / "data" / "live25" / "cam_on_gear.toml"
+    data = load_toml(src)
+    data["cams"][0]["file"] = str((src.parent / data["cams"][0]["file"]).resolve())
+    with pytest.raises(InputError) as e:
+        from_dict(data, source="g.toml").sweep(count=4)
+    said = e.value.one_line()
+    assert said.startswith("g.toml: cams: ") and "rolling" in said and "\n" not in said
+    for k in ("omega", "alpha"):
+        del data["drive"][k]
+    c = from_dict(data, source="g.toml").sweep(count=24).columns
+    th3 = -np.radians(np.asarray(c["drive"], dtype=float) - 40.0) / 2.0
+    np.testing.assert_allclose(c["y_T4"], 40.0 + 10.0 * (1.0 - np.cos(th3)), rtol=0, atol=1e-9)
+    np.testing.assert_allclose(c["x_T4"], 90.0, rtol=0, atol=1e-9)

@@ -232,3 +232,25 @@ def test_random_cams_on_random_rockers_turn_on_the_page_as_solve_says(cam, dims,
         np.testing.assert_allclose(r["v(T5)"], sol.velocity("T5"), rtol=0, atol=1e-9 * scale)
         np.testing.assert_allclose(r["a(T5)"], sol.acceleration("T5"), rtol=0,
                                    atol=1e-8 * scale)
+
+
+def test_a_cam_on_a_gear_turned_by_rolling_turns_on_the_page() -> None:
+    # tests/data/live25/cam_on_gear.toml: θ3 = −(θ2 − 40°)/2 (no slip on the pitch circles,
+    # 30 and 60 mm, outside), ω3 = −ω2/2, α3 = −α2/2; the follower at O3 + (0, 40 + Y),
+    # Y = 10 (1 − cos θ3), Ẏ = 10 sin θ3 ω3, Ÿ = 10 (cos θ3 ω3² + sin θ3 α3)
+    src = ROOT / "tests" / "data" / "live25" / "cam_on_gear.toml"
+    data = load_toml(src)
+    data["cams"][0]["file"] = str((src.parent / data["cams"][0]["file"]).resolve())
+    cranks = [40.0, 95.0, 181.0, -77.0, 400.0]
+    got = _page_at(data, src.name, cranks)
+    for crank, r in zip(cranks, got):
+        th3 = -math.radians(crank - 40.0) / 2.0
+        w3, a3 = -2.0, -0.5
+        assert r is not None, crank
+        assert abs(math.remainder(r["θ3"] - th3, 2 * math.pi)) < 1e-12
+        y = 10.0 * (1.0 - math.cos(th3))
+        np.testing.assert_allclose(r["T4"], [90.0, 40.0 + y], rtol=0, atol=1e-9)
+        np.testing.assert_allclose(r["v(T4)"], [0.0, 10.0 * math.sin(th3) * w3], rtol=0,
+                                   atol=1e-9)
+        acc = 10.0 * (math.cos(th3) * w3 * w3 + math.sin(th3) * a3)
+        np.testing.assert_allclose(r["a(T4)"], [0.0, acc], rtol=0, atol=1e-9)
