@@ -121,8 +121,12 @@ def _link_id(value: Any, key: str, source: str) -> str:
 
 
 def _drive_angle(data: Mapping[str, Any], cam_link: str, key: str, source: str,
-                 unit: str) -> float:
-    """The cam link's angle (rad) from the file's drive, which must be the cam's."""
+                 unit: str) -> float | None:
+    """The cam link's angle (rad) from the file's drive of it; None where none drives it.
+
+    Without a drive of its own (an absolute angle, or a law following the first
+    drive) the cam's angle is its link's in the linkage (:mod:`graphkin.cams.linkage`).
+    """
     raw = data.get("drive", [])
     drives = [raw] if isinstance(raw, Mapping) else raw if isinstance(raw, list) else []
     for d in drives:
@@ -139,9 +143,7 @@ def _drive_angle(data: Mapping[str, Any], cam_link: str, key: str, source: str,
                 isinstance(d.get("follows"), Mapping):
             where = f"drive[{drives.index(d)}].follows" if len(drives) > 1 else "drive.follows"
             return _follows_angle(drives, d["follows"], where, unit, source)
-    raise _fail(f"{key}.link", f"the cam's link {cam_link} must be the drive, by its angle "
-                f"([drive] link = {cam_link}, angle = ...): the cam's angle places the "
-                "follower", source)
+    return None
 
 
 def _follows_angle(drives: list[Any], law: Mapping[str, Any], key: str, unit: str,
@@ -271,6 +273,9 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
         rot = cmath.exp(1j * (axis - math.pi / 2))
         o2 = complex(*_xy(links["1"][center], f"links.1.{center}", source))
         theta2 = _drive_angle(data, cl, key, source, unit)
+        if theta2 is None:      # a link the linkage moves: its angle from the linkage solved
+            theta2 = _linkage_angle(data, links, sliders, slots, assembly, entries[i:], cl,
+                                    center, key, source)
         theta = cam.s * (theta2 - (axis - math.pi / 2))
         try:
             eq = equivalent_linkage(cam, theta)
@@ -338,6 +343,42 @@ def expand(data: Mapping[str, Any], source: str) -> tuple[dict[str, Any], tuple[
             data[name] = rows
     data["assembly"] = assembly
     return data, tuple(joints)
+
+
+def _linkage_angle(data: Mapping[str, Any], links: Mapping[str, Any], sliders: list[Any],
+                   slots: list[Any], assembly: Mapping[str, Any], rest: list[Any], cl: str,
+                   center: str, key: str, source: str) -> float:
+    """The angle of a cam's link that no drive turns: the linkage's (Sec. 2.8).
+
+    The file as read so far (the earlier cams' equivalent linkages in place)
+    without this cam's and the later ones' followers' sides is solved
+    (:func:`graphkin.cams.linkage.linkage_angle`).  The cam's link turns about
+    its pin with the frame at the cam's center, which it must hold.
+    """
+    from graphkin.cams.linkage import linkage_angle
+
+    pts = links.get(cl)
+    if not isinstance(pts, Mapping) or not pts:
+        raise _fail(f"{key}.link", f"the cam's link {cl} must be the drive, by its angle "
+                    f"([drive] link = {cl}, angle = ...), or a link of this file that the "
+                    "linkage turns about its pin with the frame at the cam's center", source)
+    if center not in pts:
+        raise _fail(f"{key}.center", f"the cam's link {cl} has no drive, so the linkage turns "
+                    f"it, about its pin with the frame: the cam's center {center!r} must be "
+                    f"that pin, a point of [links.{cl}] (name it with center = ...)", source)
+    rolls = any(isinstance(r, Mapping) and cl in (str(r.get("link")), str(r.get("on")))
+                for r in _entries(data, "rolling", source))
+    c0 = _xy(pts[center], f"links.{cl}.{center}", source)
+    if not rolls and all(_xy(xy, f"links.{cl}.{n}", source) == c0 for n, xy in pts.items()):
+        raise _fail(f"{key}.link", f"the cam's link {cl} has no drive and no point but its "
+                    f"center {center}: its angle is not defined by two of its points (give it "
+                    "the pin by which the linkage turns it)", source)
+    now = dict(data, links=links, assembly=dict(assembly))
+    for name, rows in (("sliders", sliders), ("slots", slots)):
+        if rows:
+            now[name] = rows
+    followers = [str(e.get("follower")) for e in rest if isinstance(e, Mapping)]
+    return linkage_angle(now, cl, followers, key, source)
 
 
 def _place(lid: str, p: list[float], o2: complex, rot: complex, scale: float,

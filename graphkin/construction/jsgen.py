@@ -88,7 +88,8 @@ def _helpers_js(tol: Tolerance) -> dict[str, str]:
             "  return (h2 < 0 && h2 > -2 * eps * Math.max(r, 1e-300)) ? 0.0 : h2;\n}\n"),
         # entry by entry in Python (np.where); one posture here
         "select": "function _select(c, a, b) { return c ? a : b; }\n",
-        "floor": "const _floor = Math.floor;\n",
+        # a declaration, not a const: a page holds several functions that each bring it
+        "floor": "function _floor(x) { return Math.floor(x); }\n",
     }
 
 

@@ -34,10 +34,21 @@ program's foot of the pivot on the face's slot).  A translating flat face's
 slot lies at ``x = −ρ`` along its guide: that goes into the slot's points' first
 coordinates (it has no branch: its two straight paths meet once).
 
+A cam on another drive's link turns with that drive's input (a law following
+the first, or held).  A cam on a link the linkage moves (a four-bar's rocker, no
+drive of its own: :mod:`graphkin.cams.linkage`) turns with its link's angle
+``θ<link>`` as the page's posture solves it: the page's construction, written
+out once more with only ``θ<link>`` requested (``gkCamLinkFns``: the steps up
+to that link, none of the cam's), is run on the page's numbers first; the cam
+is then evaluated at that angle and the posture run as for any turning cam.
+``K<f>``'s images by its link's complex ratio (``similar`` from two other pins of
+a rocker, Sec. 3.5) are rewritten with ``K<f>``.  A link whose angle the
+construction does not give from two solved points is held, said so.
+
 Not turned (the page is held at the file's angle, :mod:`graphkin.render.live_cams`,
-and says why): a cam not on the first drive's link, and a construction whose other
-numbers change with the angle (checked here by building the page at other
-angles; the branches the page keeps itself are not counted) are held.
+and says why): a construction whose other numbers change with the angle
+(checked here by building the page at other angles; the branches the page
+keeps itself are not counted) is held.
 
 References
 ----------
@@ -64,6 +75,9 @@ from graphkin.mechanisms.model import Mechanism
 
 __all__ = ["TURN_JS", "CAMS_APP_JS", "check_turn", "turn_cams", "turn_handle"]
 
+#: The operations that lay off a rolling contact's angle from its phase at the file's drive.
+_PHASED = ("roll_angle", "roll_circle_angle", "planetary_arm")
+
 #: Points of the cam's outline drawn on the page.
 OUTLINE = 120
 
@@ -71,13 +85,30 @@ TURN_JS = r"""// the cams turned to the drive's angle x (render/live_cam_turn.py
 // evaluated by its operations (cam_program, cam_center), its linkage's numbers in Kc
 // the angle x of each cam's link is its drive's input in J (the first drive's, or another's;
 // a number J: every cam's link at that angle)
+// a cam on a link the linkage moves (c.via): its link's angle θ as the posture's construction
+// solves it, up to that link only (gkCamLinkFns, the page's numbers at c.via.slots)
+function gkTurnVia(c, J, Kc) {
+  const v = gkCamLinkFns[c.via.fn](J, c.via.slots.map((k) => Kc[k]));
+  const x = v === null ? null : v[c.via.theta];
+  return Number.isFinite(x) ? x : null;
+}
 function gkTurn(T, J, Kc) {
-  const got = [], xs = T.cams.map((c) => typeof J === "number" ? J : J[c.input]);
+  const got = [], xs = [];
   for (const [i, c] of T.cams.entries()) {
+    // (a link an earlier cam's follower moves: read after that cam's numbers are set)
+    xs.push(typeof J === "number" ? J : c.via ? gkTurnVia(c, J, Kc) : J[c.input]);
+    // the linkage cannot place a cam's link here: no posture (said as any unassembled one)
+    if (xs[i] === null) return {why: "", none: true, cams: got, xs: xs};
     const x = xs[i], I = {}; I[c.input] = x;
     const v = gkCamFns[c.fn](I, c.K);
     if (v === null) return {why: gkTurnStraight(c, x), cams: got, xs: xs};
     Kc[c.kx] = v[c.center][0]; Kc[c.ky] = v[c.center][1];
+    // the images of K on its link by the link's complex ratio (K − A)/(B − A) (Sec. 3.5)
+    for (const [i, j, ax, ay, bx, by, cx, cy] of c.ksim) {
+      const r0 = bx - ax, r1 = by - ay, p0 = cx + Kc[c.kx] - ax, p1 = cy + Kc[c.ky] - ay;
+      const dd = r0 * r0 + r1 * r1;
+      Kc[i] = (p0 * r0 + p1 * r1) / dd; Kc[j] = (p1 * r0 - p0 * r1) / dd;
+    }
     for (const k of c.r) Kc[k] = v[c.length];
     if (c.ysign) {      // a flat face: its slot's line at y in the follower's coordinates
       // (its coordinate c.axis: 1 an oscillating face's, 0 a translating face's)
@@ -123,7 +154,7 @@ function gkTurnStraight(c, x) {
 // center on the side where the cam's program puts it (the branch solve's hint picks)
 function gkTurnSolve(T, J, Kc, fn) {
   const t = gkTurn(T, J, Kc);
-  if (t.why) return {r: null, t: t};
+  if (t.why || t.none) return {r: null, t: t};
   let r = fn(J, Kc);
   T.cams.forEach((c, i) => {
     if (c.branch === null) return;
@@ -146,7 +177,7 @@ function gkTurnSolve(T, J, Kc, fn) {
 // curvature is the cam's center (cam_center puts it there), the follower and the coupler K-T
 // stand still, and a center of links at rest relative to each other is anywhere
 function gkTurnDwell(T, t) {
-  if (!t || t.why) return "";
+  if (!t || t.why || t.none) return "";
   for (let i = 0; i < T.cams.length; i++) {
     const k = t.cams[i][T.cams[i].center];
     if (k[0] === 0 && k[1] === 0) {
@@ -160,7 +191,7 @@ function gkTurnDwell(T, t) {
 }
 // one line per posture: each cam's angle, lift and pitch curve's curvature, and an undercut
 function gkTurnNote(T, t, x) {
-  if (!t || t.why) return t ? t.why : "";
+  if (!t || t.why || t.none) return t ? t.why : "";
   return T.cams.map((c, i) => {
     const v = t.cams[i], rho = v[c.rho], th = gkTurnTheta(c, t.xs ? t.xs[i] : x);
     const tol = 1e-9 * c.size;
@@ -362,16 +393,24 @@ def turn_cams(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any
     if not mech.cams:
         return ""
     try:
-        cams, js = _cams(mech, steps, names, label)
+        cams, js = _cams(mech, steps, names, data["K"], label)
     except NotTurned as exc:
         data["turnWhy"] = str(exc)
         return ""
-    data["turn"] = {"label": label, "cams": cams}
+    # a rolling contact's phase at the file's drive (its "as drawn" constant) is the page's
+    # own, as its branches are: a page built at another drive angle lays it off afresh there
+    rolled = {o for s in steps if s.op in _PHASED for o in s.outputs}
+    phases = [k for k, n in enumerate(names) if n.rsplit(".", 1)[0] in rolled]
+    data["turn"] = {"label": label, "cams": cams, "phases": phases}
     names_js = ", ".join(f"gkCam{i}" for i in range(len(cams)))
-    return js + f"const gkCamFns = [{names_js}];\n" + TURN_JS
+    # (by the cam's place: null for a cam its own drive turns)
+    links_js = ", ".join("null" if c["via"] is None else f"gkCamLink{c['via']['fn']}"
+                         for c in cams)
+    return (js + f"const gkCamFns = [{names_js}];\nconst gkCamLinkFns = [{links_js}];\n"
+            + TURN_JS)
 
 
-def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
+def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str], page_k: Sequence[float],
           label: str) -> tuple[list[dict[str, Any]], str]:
     d0 = mech.drives[0]
     out: list[dict[str, Any]] = []
@@ -380,9 +419,13 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
         # the cam turns with its link's angle in the posture: its drive's input (the first
         # drive's, dragged; or another drive's, moved by its law or held at its value)
         dj = next((d for d in mech.drives if d.link == j.link and d.kind == "angle"), None)
-        if dj is None:
-            raise _fail(f"{j.key}: the cam's link {j.link} is not a drive, by its angle")
-        cam_input = label if dj is d0 else dj.label
+        via = None
+        if dj is None:      # a link the linkage moves: its angle as the posture solves it
+            cam_input = f"θ{j.link}"
+            via = _via(steps, names, page_k, cam_input, i)
+            js += via.pop("source")
+        else:
+            cam_input = label if dj is d0 else dj.label
         ts = turn_steps(j, cam_input)
         fl = j.follower
         flat = j.cam.follower.kind.flat
@@ -414,7 +457,8 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             raise _fail(f"{j.key}: the cam's center is not a pin of the frame")
         out.append({
             "fn": i, "key": j.key, "K": fn.values, "kx": kx, "ky": ky, "r": radius,
-            "input": cam_input, "link": j.link,
+            "input": cam_input, "link": j.link, "via": via, "ksim": _k_images(mech, j, steps,
+                                                                              names),
             "branch": face["branch"] if flat else (
                 names.index(f"T{fl}.branch") if f"T{fl}.branch" in names else None),
             "y": face["y"], "d": face["d"], "sim": face["sim"], "ysign": face["ysign"],
@@ -428,6 +472,74 @@ def _cams(mech: Mechanism, steps: Sequence[Step], names: list[str],
             "swing": bool(f.kind.oscillating),
             "outline": [[round(float(z.real), 6), round(float(z.imag), 6)] for z in u]})
     return out, js
+
+
+def _k_images(mech: Mechanism, j: Any, steps: Sequence[Step],
+              names: list[str]) -> list[list[float]]:
+    """Where the images of ``K<f>`` by its link's complex ratio sit in ``K`` (Sec. 3.5).
+
+    A cam link with two pins besides ``K<f>`` (a four-bar's rocker) gives
+    ``K<f>``'s velocity and acceleration images from two of them
+    (``similar``): their ratio ``(K − A)/(B − A)`` moves with ``K<f>``.  Rows
+    ``[i, j, a, b, center]``: the slots, the link's points A and B and the
+    cam's center in the link's own coordinates.
+    """
+    pts = mech.links[j.link].points
+    k = pts.get(f"K{j.follower}")
+    center = next((xy for n, xy in pts.items() if n in mech.links["1"].points and
+                   tuple(map(float, mech.links["1"].points[n])) == tuple(map(float, j.center))),
+                  None)
+    if k is None or center is None:
+        return []
+    rows = []
+    for s in steps:
+        lab = f"{s.outputs[0]}.0"
+        if s.op == "similar" and lab in names and \
+                tuple(map(float, s.params["local_p"])) == tuple(map(float, k)):
+            (ax, ay), (bx, by) = s.params["local_a"], s.params["local_b"]
+            rows.append([names.index(lab), names.index(f"{s.outputs[0]}.1"), float(ax),
+                         float(ay), float(bx), float(by), float(center[0]), float(center[1])])
+    return rows
+
+
+def _via(steps: Sequence[Step], names: list[str], page_k: Sequence[float], theta: str,
+         i: int) -> dict[str, Any]:
+    """How the page finds the angle ``θ<link>`` of a cam's link the linkage moves.
+
+    The posture's construction up to that link only (the steps the link's
+    angle needs: none of the cam's), written out as JavaScript; its numbers are
+    the page's at the slots found here by name, so a dragged pivot or a switched
+    branch moves it as it moves the page.  The cam's angle is then that link's
+    (:mod:`graphkin.cams.linkage`), as ``graphkin solve`` reads it.
+
+    Raises
+    ------
+    NotTurned
+        The construction gives that link no angle from its solved points.
+    """
+    if not any(theta in s.outputs for s in steps):
+        raise _fail(f"the posture's construction gives the cam's link no angle {theta} from "
+                    "two of its solved points")
+    # only the steps θ<link> reads (the writer keeps every step that can fail, and the
+    # follower's steps fail where the cam's numbers are not yet this posture's)
+    live = {theta}
+    mine = []
+    for s in reversed(steps):
+        if not live.isdisjoint(s.outputs):
+            mine.append(s)
+            live.update(s.inputs)
+    try:
+        fn = generate_js(mine[::-1], requests=[theta], name=f"gkCamLink{i}")
+    except Unsupported as exc:
+        raise _fail(str(exc)) from None
+    slots = []
+    where = {n: k for k, n in enumerate(names)}
+    for n, v in fn.slots:
+        # the page's number of that name: the same step's, recorded once
+        if n not in where or page_k[where[n]] != v:
+            raise _fail(f"the construction of {theta} reads a number the page has not ({n})")
+        slots.append(where[n])
+    return {"fn": i, "slots": slots, "theta": theta, "source": fn.source}
 
 
 def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, Any],
@@ -453,13 +565,14 @@ def check_turn(data: dict[str, Any], mech: Mechanism, file_data: Mapping[str, An
         others = _elsewhere(mech, file_data, source)
         mine = {k for c in turn["cams"] for k in (c["kx"], c["ky"], *c["r"], *c["d"])}
         mine |= {row[0] for c in turn["cams"] for row in c["y"]}
-        mine |= {k for c in turn["cams"] for row in c["sim"] for k in row[:2]}
+        mine |= {k for c in turn["cams"] for row in c["sim"] + c["ksim"] for k in row[:2]}
         mine |= {c["branch"] for c in turn["cams"] if c["branch"] is not None}
         # a branch of the rest of the mechanism is the page's own: kept while the cam turns,
         # switchable, and saved as the point's assembly hint; the page built at another angle
         # picks it afresh from the file's fixed hint, which a point moved far enough (the
         # follower's lift) lies nearer the other branch of: not a change of construction
         mine |= set(data.get("branches", {}).values())
+        mine |= set(turn.get("phases", ()))
         for other in others:
             k1, k2 = data["K"], other["K"]
             if len(k1) != len(k2):

@@ -86,8 +86,10 @@ def cam_hold(mech: Mechanism, source: str) -> dict[str, Any] | None:
     d = mech.drives[0]
     deg = math.degrees(d.value)
     keys = [j.key for j in mech.cams]
+    # (a cam on another link: the drive's angle is not the cam's, but holds it there)
+    what = "cam angle" if all(j.link == d.link for j in mech.cams) else "drive's angle"
     why = InputError(
-        f"the page keeps the cam angle at the file's {deg:.6g}°: the cam ({', '.join(keys)}) is "
+        f"the page keeps the {what} at the file's {deg:.6g}°: the cam ({', '.join(keys)}) is "
         "replaced by its equivalent linkage through the centers of curvature, which holds at "
         "that angle only (Sec. 4.7); change the angle in the file, or see the cycle with "
         "graphkin plot or animate", key=f"{d.key}.angle", file=source).one_line()
