@@ -593,11 +593,12 @@ function redraw(refit) {
 
 // the pointer stopped: every panel's letters placed by draw's rule (live_labels_js.py)
 function placeLabels() {
+  const shown = {};
   for (const name of ["posture", "velocity", "acceleration", "curvature", "forces"]) {
     const svg = byId("gk-" + name);
-    const got = svg && svg.getBoundingClientRect().width > 0 ? gkPlaceLabels(svg, W, H) : null;
-    if (got) placed[name] = got;
+    if (svg && svg.getBoundingClientRect().width > 0) shown[name] = svg;
   }
+  Object.assign(placed, gkPlaceLabels(shown, W, H));
 }
 
 function snapshot() { history.push([K.slice(), drive]); if (history.length > 200) history.shift(); }

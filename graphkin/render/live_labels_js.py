@@ -74,6 +74,9 @@ def _rules() -> dict[str, object]:
         "same": 0.5,
         # a circle of this radius (px) or less is a point's marker, not an outline
         "marker": 6.0,
+        # the ink map's cells (px): two pixels, a line counted a little wide (draw counts
+        # a line INK_WIDTH, three pixels, wide), the map's table four times quicker to build
+        "cell": 2.0,
     }
 
 
@@ -84,17 +87,17 @@ LABELS_JS = "const GK_LABEL_RULES = " + json.dumps(RULES) + ";\n" + r"""
 // the drawn ink of a panel (its lines, outlines, markers, arrowheads and fixed texts) on a
 // grid of 1 px cells with its summed-area table; markers and fixed texts also as shapes
 function gkLabelInk(svg, W, H) {
-  const R = GK_LABEL_RULES, nx = Math.ceil(W), ny = Math.ceil(H);
+  const R = GK_LABEL_RULES, C = R.cell, nx = Math.ceil(W / C), ny = Math.ceil(H / C);
   const ink = new Uint8Array(nx * ny), markers = [], fixed = [];
   const cell = (x, y) => {
-    const i = Math.floor(x), j = Math.floor(y);
+    const i = Math.floor(x / C), j = Math.floor(y / C);
     if (i >= 0 && i < nx && j >= 0 && j < ny) ink[j * nx + i] = 1;
   };
   const seg = (x0, y0, x1, y1) => {
     // clipped to the panel (Liang-Barsky): a Kennedy line runs far beyond it
     let t0 = 0, t1 = 1;
     const dx = x1 - x0, dy = y1 - y0;
-    for (const [p, q] of [[-dx, x0 + 1], [dx, nx + 1 - x0], [-dy, y0 + 1], [dy, ny + 1 - y0]]) {
+    for (const [p, q] of [[-dx, x0 + 1], [dx, W + 1 - x0], [-dy, y0 + 1], [dy, H + 1 - y0]]) {
       if (p === 0) { if (q < 0) return; continue; }
       const t = q / p;
       if (p < 0) { if (t > t1) return; if (t > t0) t0 = t; }
@@ -102,12 +105,12 @@ function gkLabelInk(svg, W, H) {
     }
     if (!(t1 >= t0)) return;
     const ax = x0 + t0 * dx, ay = y0 + t0 * dy, bx = x0 + t1 * dx, by = y0 + t1 * dy;
-    const n = Math.max(1, Math.ceil(2 * Math.hypot(bx - ax, by - ay)));
+    const n = Math.max(1, Math.ceil(2 * Math.hypot(bx - ax, by - ay) / C));
     for (let k = 0; k <= n; k++) cell(ax + (bx - ax) * k / n, ay + (by - ay) * k / n);
   };
   const fill = (x0, y0, x1, y1) => {
-    const i0 = Math.max(Math.floor(x0), 0), i1 = Math.min(Math.ceil(x1), nx);
-    const j0 = Math.max(Math.floor(y0), 0), j1 = Math.min(Math.ceil(y1), ny);
+    const i0 = Math.max(Math.floor(x0 / C), 0), i1 = Math.min(Math.ceil(x1 / C), nx);
+    const j0 = Math.max(Math.floor(y0 / C), 0), j1 = Math.min(Math.ceil(y1 / C), ny);
     for (let j = j0; j < j1; j++) for (let i = i0; i < i1; i++) ink[j * nx + i] = 1;
   };
   const head = (x0, y0, x1, y1, sw) => {  // an arrowhead at (x1, y1): a filled triangle
@@ -147,11 +150,12 @@ function gkLabelInk(svg, W, H) {
       if (r <= R.marker) {  // a point's marker: a disc
         const rr = r + sw / 2;
         markers.push([x, y, rr]);
-        for (let j = Math.floor(y - rr); j <= y + rr; j++) {
-          for (let i = Math.floor(x - rr); i <= x + rr; i++) {
+        for (let j = Math.floor((y - rr) / C); j * C <= y + rr; j++) {
+          for (let i = Math.floor((x - rr) / C); i * C <= x + rr; i++) {
             // the cell touches the disc
-            const qx = Math.min(Math.max(x, i), i + 1), qy = Math.min(Math.max(y, j), j + 1);
-            if ((qx - x) ** 2 + (qy - y) ** 2 <= rr * rr) cell(i, j);
+            const qx = Math.min(Math.max(x, i * C), (i + 1) * C);
+            const qy = Math.min(Math.max(y, j * C), (j + 1) * C);
+            if ((qx - x) ** 2 + (qy - y) ** 2 <= rr * rr) cell((i + 0.5) * C, (j + 0.5) * C);
           }
         }
       } else {
@@ -175,22 +179,31 @@ function gkLabelInk(svg, W, H) {
     }
   }
   const clamp = (v, hi) => (v < 0 ? 0 : (v > hi ? hi : v));
-  // the inked cells under a box
+  // the length (px) of ink under a box: its inked cells, each a cell's width of line
   const under = (x0, y0, x1, y1) => {
-    const i0 = clamp(Math.floor(x0), nx), i1 = clamp(Math.ceil(x1), nx);
-    const j0 = clamp(Math.floor(y0), ny), j1 = clamp(Math.ceil(y1), ny);
+    const i0 = clamp(Math.floor(x0 / C), nx), i1 = clamp(Math.ceil(x1 / C), nx);
+    const j0 = clamp(Math.floor(y0 / C), ny), j1 = clamp(Math.ceil(y1 / C), ny);
     if (i1 <= i0 || j1 <= j0) return 0;
     const w = nx + 1;
-    return S[j1 * w + i1] - S[j0 * w + i1] - S[j1 * w + i0] + S[j0 * w + i0];
+    return C * (S[j1 * w + i1] - S[j0 * w + i1] - S[j1 * w + i0] + S[j0 * w + i0]);
   };
   return {under: under, markers: markers, fixed: fixed};
 }
 
-// every letter of a panel (text.gk-label, data-ax/-ay its point, data-point "1" a lettered
-// point) placed by draw's rule; returns each letter's offset from its point, by its text
-// (the cheap placement while dragging), or null when the panel is not laid out
-function gkPlaceLabels(svg, W, H) {
-  const R = GK_LABEL_RULES, S = R.score;
+// every letter of the panels (name -> svg; text.gk-label, data-ax/-ay its point, data-point
+// "1" a lettered point) placed by draw's rule; returns, by panel, each letter's offset from
+// its point by its text (the cheap placement while dragging); a panel not laid out (hidden)
+// is left out. Every panel is measured before any letter moves: one layout, not one a panel
+function gkPlaceLabels(svgs, W, H) {
+  const got = {}, out = {};
+  for (const k of Object.keys(svgs)) got[k] = gkMeasureLabels(svgs[k], W, H);
+  for (const k of Object.keys(got)) if (got[k]) out[k] = gkPlaceMeasured(got[k], W, H);
+  return out;
+}
+
+// a panel's letters' boxes (the browser's getBBox) and its ink, or null
+function gkMeasureLabels(svg, W, H) {
+  const R = GK_LABEL_RULES;
   const texts = svg.querySelectorAll("text.gk-label");
   if (!texts.length) return null;
   const labs = [];
@@ -205,7 +218,12 @@ function gkPlaceLabels(svg, W, H) {
                w: b.width + 2 * R.pad, h: b.height + 2 * R.pad,
                pri: point ? R.priority.point : R.priority.vector, i: labs.length});
   }
-  const ink = gkLabelInk(svg, W, H);
+  return {labs: labs, ink: gkLabelInk(svg, W, H)};
+}
+
+// the letters of a measured panel placed, as draw places its labels (render/labels.py _spot)
+function gkPlaceMeasured(m, W, H) {
+  const R = GK_LABEL_RULES, S = R.score, labs = m.labs, ink = m.ink;
   // the lettered points, coincident ones once
   const pts = [];
   for (const L of labs) {
@@ -217,7 +235,11 @@ function gkPlaceLabels(svg, W, H) {
   for (const L of labs) {
     if (!isFinite(L.ax) || !isFinite(L.ay)) continue;
     const ax = L.ax, ay = L.ay, w = L.w, h = L.h, area = w * h;
-    const others = L.point ? pts.filter((p) => Math.hypot(p[0] - ax, p[1] - ay) > R.same) : [];
+    // a point off the panel (an axis's tip, a far center): its letter on the panel, as near
+    // it as the panel lets it be, and no other point's
+    const on = ax >= 0 && ax <= W && ay >= 0 && ay <= H;
+    const others = L.point && on ?
+      pts.filter((p) => Math.hypot(p[0] - ax, p[1] - ay) > R.same) : [];
     // a box attached to its point: nearer it, edge to point, than to any other (draw's
     // fallback where no clear place has its centre nearer its point)
     const gapTo = (cx, cy, p) => Math.hypot(Math.max(Math.abs(cx - p[0]) - w / 2, 0),
@@ -281,7 +303,7 @@ function gkPlaceLabels(svg, W, H) {
       let cand = {c: ring[j], e: sc[j]};
       if (!cand.e.clean) {
         // a crowded place: a grid about the point, wider until a place breaks no hard rule
-        for (let wide = 1; wide <= 4; wide *= 2) {
+        for (let wide = 1; wide <= (on ? 4 : 1); wide *= 2) {
           const reach = wide * (R.grid.reach + Math.max(w, h)), st = R.grid.step;
           for (let gy = -reach; gy <= reach + 1e-9; gy += st) {
             for (let gx = -reach; gx <= reach + 1e-9; gx += st) {
