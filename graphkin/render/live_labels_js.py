@@ -85,7 +85,8 @@ RULES = _rules()
 
 LABELS_JS = "const GK_LABEL_RULES = " + json.dumps(RULES) + ";\n" + r"""
 // the drawn ink of a panel (its lines, outlines, markers, arrowheads and fixed texts) on a
-// grid of 1 px cells with its summed-area table; markers and fixed texts also as shapes
+// grid of cells (GK_LABEL_RULES.cell px), counted under a box cell by cell or, for many
+// boxes, by its summed-area table; markers and fixed texts also as shapes
 function gkLabelInk(svg, W, H) {
   const R = GK_LABEL_RULES, C = R.cell, nx = Math.ceil(W / C), ny = Math.ceil(H / C);
   const ink = new Uint8Array(nx * ny), markers = [], fixed = [];
@@ -93,20 +94,26 @@ function gkLabelInk(svg, W, H) {
     const i = Math.floor(x / C), j = Math.floor(y / C);
     if (i >= 0 && i < nx && j >= 0 && j < ny) ink[j * nx + i] = 1;
   };
+  // the range of t in [t0, t1] where a + t d lies in [lo, hi] (Liang-Barsky), or null
+  const slab = (a, d, lo, hi, t0, t1) => {
+    if (d === 0) return a < lo || a > hi ? null : [t0, t1];
+    let u = (lo - a) / d, v = (hi - a) / d;
+    if (u > v) { const w = u; u = v; v = w; }
+    u = Math.max(u, t0); v = Math.min(v, t1);
+    return u <= v ? [u, v] : null;
+  };
   const seg = (x0, y0, x1, y1) => {
-    // clipped to the panel (Liang-Barsky): a Kennedy line runs far beyond it
-    let t0 = 0, t1 = 1;
+    // clipped to the panel: a Kennedy line runs far beyond it
     const dx = x1 - x0, dy = y1 - y0;
-    for (const [p, q] of [[-dx, x0 + 1], [dx, W + 1 - x0], [-dy, y0 + 1], [dy, H + 1 - y0]]) {
-      if (p === 0) { if (q < 0) return; continue; }
-      const t = q / p;
-      if (p < 0) { if (t > t1) return; if (t > t0) t0 = t; }
-      else { if (t < t0) return; if (t < t1) t1 = t; }
+    const tx = slab(x0, dx, -1, W + 1, 0, 1), t = tx && slab(y0, dy, -1, H + 1, tx[0], tx[1]);
+    if (!t) return;
+    const ax = (x0 + t[0] * dx) / C, ay = (y0 + t[0] * dy) / C;
+    const n = Math.max(1, Math.ceil(2 * (t[1] - t[0]) * Math.hypot(dx, dy) / C));
+    const sx = (t[1] - t[0]) * dx / C / n, sy = (t[1] - t[0]) * dy / C / n;
+    for (let k = 0; k <= n; k++) {
+      const i = Math.floor(ax + sx * k), j = Math.floor(ay + sy * k);
+      if (i >= 0 && i < nx && j >= 0 && j < ny) ink[j * nx + i] = 1;
     }
-    if (!(t1 >= t0)) return;
-    const ax = x0 + t0 * dx, ay = y0 + t0 * dy, bx = x0 + t1 * dx, by = y0 + t1 * dy;
-    const n = Math.max(1, Math.ceil(2 * Math.hypot(bx - ax, by - ay) / C));
-    for (let k = 0; k <= n; k++) cell(ax + (bx - ax) * k / n, ay + (by - ay) * k / n);
   };
   const fill = (x0, y0, x1, y1) => {
     const i0 = Math.max(Math.floor(x0 / C), 0), i1 = Math.min(Math.ceil(x1 / C), nx);
@@ -170,20 +177,31 @@ function gkLabelInk(svg, W, H) {
       fill(b.x - sw / 2, b.y - sw / 2, b.x + b.width + sw / 2, b.y + b.height + sw / 2);
     }
   }
-  const S = new Int32Array((nx + 1) * (ny + 1));
-  for (let j = 0; j < ny; j++) {
-    let row = 0;
-    for (let i = 0; i < nx; i++) {
-      row += ink[j * nx + i];
-      S[(j + 1) * (nx + 1) + i + 1] = S[j * (nx + 1) + i + 1] + row;
+  // the summed-area table, built only for a crowded place's grid (many boxes): a few boxes
+  // are quicker counted cell by cell
+  let S = null, boxes = 0;
+  const table = () => {
+    S = new Int32Array((nx + 1) * (ny + 1));
+    for (let j = 0; j < ny; j++) {
+      let row = 0;
+      for (let i = 0; i < nx; i++) {
+        row += ink[j * nx + i];
+        S[(j + 1) * (nx + 1) + i + 1] = S[j * (nx + 1) + i + 1] + row;
+      }
     }
-  }
+  };
   const clamp = (v, hi) => (v < 0 ? 0 : (v > hi ? hi : v));
   // the length (px) of ink under a box: its inked cells, each a cell's width of line
   const under = (x0, y0, x1, y1) => {
     const i0 = clamp(Math.floor(x0 / C), nx), i1 = clamp(Math.ceil(x1 / C), nx);
     const j0 = clamp(Math.floor(y0 / C), ny), j1 = clamp(Math.ceil(y1 / C), ny);
     if (i1 <= i0 || j1 <= j0) return 0;
+    if (S === null && ++boxes > 300) table();
+    if (S === null) {
+      let c = 0;
+      for (let j = j0; j < j1; j++) for (let i = i0; i < i1; i++) c += ink[j * nx + i];
+      return C * c;
+    }
     const w = nx + 1;
     return C * (S[j1 * w + i1] - S[j0 * w + i1] - S[j1 * w + i0] + S[j0 * w + i0]);
   };
@@ -234,17 +252,21 @@ function gkPlaceMeasured(m, W, H) {
   labs.sort((a, b) => a.pri - b.pri || a.i - b.i);
   for (const L of labs) {
     if (!isFinite(L.ax) || !isFinite(L.ay)) continue;
-    const ax = L.ax, ay = L.ay, w = L.w, h = L.h, area = w * h;
-    // a point off the panel (an axis's tip, a far center): its letter on the panel, as near
-    // it as the panel lets it be, and no other point's
-    const on = ax >= 0 && ax <= W && ay >= 0 && ay <= H;
+    // a point off the panel (an axis's tip, a far center): its letter placed about the
+    // panel's nearest point to it, as near it as the panel lets it be, and no other point's
+    const on = L.ax >= 0 && L.ax <= W && L.ay >= 0 && L.ay <= H;
+    const ax = Math.min(Math.max(L.ax, 0), W), ay = Math.min(Math.max(L.ay, 0), H);
+    const w = L.w, h = L.h, area = w * h;
     const others = L.point && on ?
       pts.filter((p) => Math.hypot(p[0] - ax, p[1] - ay) > R.same) : [];
     // a box attached to its point: nearer it, edge to point, than to any other (draw's
     // fallback where no clear place has its centre nearer its point)
     const gapTo = (cx, cy, p) => Math.hypot(Math.max(Math.abs(cx - p[0]) - w / 2, 0),
                                             Math.max(Math.abs(cy - p[1]) - h / 2, 0));
-    const evaluate = (cx, cy, byBox) => {
+    // a place's score by draw's weights, under each reading of "nearer its own point": by
+    // the box's centre ([0]) and, where no place has that, by the box's edge ([1]); a place
+    // that breaks a hard rule loses to every place that breaks none
+    const evaluate = (cx, cy, extra) => {
       const x0 = cx - w / 2, y0 = cy - h / 2, x1 = cx + w / 2, y1 = cy + h / 2;
       let inked = ink.under(x0, y0, x1, y1), other = false;
       for (const m of ink.markers) {
@@ -264,20 +286,21 @@ function gkPlaceMeasured(m, W, H) {
       const ix = Math.max(Math.min(x1, W) - Math.max(x0, 0), 0);
       const iy = Math.max(Math.min(y1, H) - Math.max(y0, 0), 0);
       const off = 1 - ix * iy / area;
-      let astray = false;
+      let byCentre = false, byBox = false;
       if (others.length) {
-        const own = byBox ? gapTo(cx, cy, [ax, ay]) : Math.hypot(cx - ax, cy - ay);
+        const own = Math.hypot(cx - ax, cy - ay), ownBox = gapTo(cx, cy, [ax, ay]);
         for (const p of others) {
-          if ((byBox ? gapTo(cx, cy, p) : Math.hypot(cx - p[0], cy - p[1])) < own) {
-            astray = true;
-            break;
-          }
+          if (!byCentre && Math.hypot(cx - p[0], cy - p[1]) < own) byCentre = true;
+          if (!byBox && gapTo(cx, cy, p) < ownBox) byBox = true;
+          if (byCentre && byBox) break;
         }
       }
-      const hard = lab > 0 || off > 1e-12 || other || astray;
-      const score = S.ink * inked * R.inkWidth / area + (inked ? S.onInk : 0) + S.label * lab +
-        S.out * off + (astray ? S.astray : 0) + (hard ? 1000 : 0);
-      return {score: score, clean: !hard && !inked, hard: hard};
+      const base = S.ink * inked * R.inkWidth / area + (inked ? S.onInk : 0) + S.label * lab +
+        S.out * off + extra;
+      const hard = lab > 0 || off > 1e-12 || other;
+      return [byCentre, byBox].map((astray) => ({
+        score: base + (astray ? S.astray : 0) + (hard || astray ? 1000 : 0),
+        clean: !hard && !astray && !inked, hard: hard || astray}));
     };
     // draw's ring: its directions at its distances, box corner or side that far from the point
     const ring = [];
@@ -287,46 +310,47 @@ function gkPlaceMeasured(m, W, H) {
         ring.push([ax + d[0] / n * g + d[0] * w / 2, ay + d[1] / n * g + d[1] * h / 2]);
       }
     }
-    let best = null;
-    for (const byBox of [false, true]) {
-      // the ring in rank order up to its first clean place: the best score of that prefix
-      let first = -1;
-      const sc = [];
-      for (let k = 0; k < ring.length; k++) {
-        const e = evaluate(ring[k][0], ring[k][1], byBox);
-        e.score += S.rank * k;
-        sc.push(e);
-        if (e.clean) { first = k; break; }
-      }
-      let j = 0;
-      for (let k = 1; k < sc.length; k++) if (sc[k].score < sc[j].score - 1e-12) j = k;
-      let cand = {c: ring[j], e: sc[j]};
-      if (!cand.e.clean) {
-        // a crowded place: a grid about the point, wider until a place breaks no hard rule
-        for (let wide = 1; wide <= (on ? 4 : 1); wide *= 2) {
-          const reach = wide * (R.grid.reach + Math.max(w, h)), st = R.grid.step;
-          for (let gy = -reach; gy <= reach + 1e-9; gy += st) {
-            for (let gx = -reach; gx <= reach + 1e-9; gx += st) {
-              const dist = Math.hypot(gx, gy);
-              if (dist > reach || (Math.abs(gx) < w / 2 + R.grid.clear &&
-                                   Math.abs(gy) < h / 2 + R.grid.clear)) continue;
-              const e = evaluate(ax + gx, ay + gy, byBox);
-              e.score += S.grid + S.gridDistance * dist;
-              if (e.score < cand.e.score - 1e-12) cand = {c: [ax + gx, ay + gy], e: e};
+    // the ring in rank order up to its first clean place: the best score of that prefix
+    const sc = [];
+    for (let k = 0; k < ring.length; k++) {
+      sc.push(evaluate(ring[k][0], ring[k][1], S.rank * k));
+      if (sc[k][0].clean) break;
+    }
+    const cand = [0, 1].map((r) => {
+      let j = 0, first = sc.findIndex((e) => e[r].clean);
+      if (first < 0) first = sc.length - 1;
+      for (let k = 1; k <= first; k++) if (sc[k][r].score < sc[j][r].score - 1e-12) j = k;
+      return {c: ring[j], e: sc[j][r]};
+    });
+    if (!cand[0].e.clean) {
+      // a crowded place: a grid about the point, wider until a place breaks no hard rule
+      let inner = -1;
+      for (let wide = 1; wide <= (on ? 2 : 1); wide *= 2) {
+        const reach = wide * (R.grid.reach + Math.max(w, h)), st = R.grid.step;
+        for (let gy = -reach; gy <= reach + 1e-9; gy += st) {
+          for (let gx = -reach; gx <= reach + 1e-9; gx += st) {
+            const dist = Math.hypot(gx, gy);
+            if (dist > reach || dist <= inner || (Math.abs(gx) < w / 2 + R.grid.clear &&
+                                                   Math.abs(gy) < h / 2 + R.grid.clear)) {
+              continue;
+            }
+            const e = evaluate(ax + gx, ay + gy, S.grid + S.gridDistance * dist);
+            for (const r of [0, 1]) {
+              if (e[r].score < cand[r].e.score - 1e-12) cand[r] = {c: [ax + gx, ay + gy], e: e[r]};
             }
           }
-          if (!cand.e.hard) break;
         }
+        if (!cand[0].e.hard || !cand[1].e.hard) break;
+        inner = reach;
       }
-      if (best === null || (best.e.hard && !cand.e.hard)) best = cand;
-      if (!best.e.hard || !others.length) break;
     }
+    const best = !cand[0].e.hard || cand[1].e.hard ? cand[0] : cand[1];
     const c = best.c;
     const x = c[0] - L.bw / 2 - L.dx, y = c[1] - L.bh / 2 - L.dy;
     L.t.setAttribute("x", x.toFixed(2));
     L.t.setAttribute("y", y.toFixed(2));
     placed.push([c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2]);
-    out[L.t.textContent] = [x - ax, y - ay];
+    out[L.t.textContent] = [x - L.ax, y - L.ay];
   }
   return out;
 }
