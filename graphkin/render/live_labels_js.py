@@ -265,7 +265,9 @@ function gkPlaceMeasured(m, W, H) {
                                             Math.max(Math.abs(cy - p[1]) - h / 2, 0));
     // a place's score by draw's weights, under each reading of "nearer its own point": by
     // the box's centre ([0]) and, where no place has that, by the box's edge ([1]); a place
-    // that breaks a hard rule loses to every place that breaks none
+    // that breaks a hard rule loses to every place that breaks none (level 2: on a letter,
+    // another point's marker or off the panel; level 1: nearer another point, which points a
+    // few pixels apart cannot help)
     const evaluate = (cx, cy, extra) => {
       const x0 = cx - w / 2, y0 = cy - h / 2, x1 = cx + w / 2, y1 = cy + h / 2;
       let inked = ink.under(x0, y0, x1, y1), other = false;
@@ -298,9 +300,11 @@ function gkPlaceMeasured(m, W, H) {
       const base = S.ink * inked * R.inkWidth / area + (inked ? S.onInk : 0) + S.label * lab +
         S.out * off + extra;
       const hard = lab > 0 || off > 1e-12 || other;
-      return [byCentre, byBox].map((astray) => ({
-        score: base + (astray ? S.astray : 0) + (hard || astray ? 1000 : 0),
-        clean: !hard && !astray && !inked, hard: hard || astray}));
+      return [byCentre, byBox].map((astray) => {
+        const level = hard ? 2 : (astray ? 1 : 0);
+        return {score: base + (astray ? S.astray : 0) + 1000 * level, level: level,
+                clean: !level && !inked};
+      });
     };
     // draw's ring: its directions at its distances, box corner or side that far from the point
     const ring = [];
@@ -340,11 +344,11 @@ function gkPlaceMeasured(m, W, H) {
             }
           }
         }
-        if (!cand[0].e.hard || !cand[1].e.hard) break;
+        if (!cand[0].e.level || !cand[1].e.level) break;
         inner = reach;
       }
     }
-    const best = !cand[0].e.hard || cand[1].e.hard ? cand[0] : cand[1];
+    const best = cand[1].e.level < cand[0].e.level ? cand[1] : cand[0];
     const c = best.c;
     const x = c[0] - L.bw / 2 - L.dx, y = c[1] - L.bh / 2 - L.dy;
     L.t.setAttribute("x", x.toFixed(2));
