@@ -19,8 +19,10 @@ The live page holds some rules harder than ``draw`` (a letter on a line is
 the lesser evil there too): a place where its box would overlap another
 letter or a fixed text, cover another point's marker, leave the panel or
 stand nearer another lettered point loses to every place that does none of
-these.  The drawn lines are rasterised into a grid of 1 px cells with its
-summed-area table, as ``draw``'s ink map, so a place costs a few look-ups.
+these.  The drawn lines are rasterised into a grid of 2 px cells, as
+``draw``'s ink map (with its summed-area table for a crowded place's many
+boxes), and every panel is measured before any letter moves (one layout), so
+a page's letters are placed within a frame (``benchmarks/bench_live.py``).
 """
 
 from __future__ import annotations
