@@ -296,7 +296,7 @@ function label(g, panel, p, text, kind) {
                            "data-ax": x.toFixed(2), "data-ay": y.toFixed(2),
                            "data-point": kind === "vector" ? "0" : "1"},
                Array.isArray(text) ? text[0] : text);
-  if (left) t.setAttribute("text-anchor", "end");
+  if (left || (o && o[2])) t.setAttribute("text-anchor", left ? "end" : o[2]);
   if (Array.isArray(text) && text[1]) {
     el(t, "tspan", {dy: "0.3em", "font-size": "70%", class: "gk-sub"}, text[1]);
     if (text[2]) el(t, "tspan", {dy: "-0.3em"}, text[2]);

@@ -212,7 +212,8 @@ function gkLabelInk(svg, W, H) {
 
 // every letter of the panels (name -> svg; text.gk-label, data-ax/-ay its point, data-point
 // "1" a lettered point) placed by draw's rule; returns, by panel, each letter's offset from
-// its point by its text (the cheap placement while dragging); a panel not laid out (hidden)
+// its point and its text-anchor, by its text (the cheap placement while dragging); a panel
+// not laid out (hidden)
 // is left out. Every panel is measured before any letter moves: one layout, not one a panel
 function gkPlaceLabels(svgs, W, H) {
   const got = {}, out = {};
@@ -356,7 +357,7 @@ function gkPlaceMeasured(m, W, H) {
     L.t.setAttribute("x", x.toFixed(2));
     L.t.setAttribute("y", y.toFixed(2));
     placed.push([c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2]);
-    out[L.t.textContent] = [x - L.ax, y - L.ay];
+    out[L.t.textContent] = [x - L.ax, y - L.ay, L.t.getAttribute("text-anchor")];
   }
   return out;
 }

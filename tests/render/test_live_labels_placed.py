@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pytest
 from hypothesis import given
 from live_cams_shared import drag
 from live_edit import page_file
@@ -168,7 +169,17 @@ def test_a_crowded_gear_train_is_lettered_clean(browser, tmp_path: Path) -> None
     assert main(["live", str(path), "-o", str(tmp_path / "train.html")]) == 0
     browser.open(tmp_path / "train.html")
     assert browser.errors() == []
-    _clean(browser.js(_READ))
+    placed = browser.js(_READ)
+    _clean(placed)
+    # "c′₃ (3/2)" by the right edge is written leftward (text-anchor end) when first drawn:
+    # while dragging it keeps its place all the same
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 1e-3!r})") is not None
+    before, during = _offsets(placed), _offsets(browser.js(_READ))
+    assert before.keys() == during.keys()
+    for k, v in before.items():
+        assert np.allclose(during[k], v, atol=0.05), k
+    browser.js("window.graphkinLive.redraw(true)")
     # the old placement heaps a′₅, c′₃ (3/2) and a′₄ by O_A: every rule broken somewhere
     # (the acceleration panel's images by the pole; "c′₃ (3/2)" off the panel's right edge)
     browser.js(_OLD)
@@ -181,9 +192,27 @@ def test_a_crowded_gear_train_is_lettered_clean(browser, tmp_path: Path) -> None
     _clean(browser.js(_READ))
 
 
+def _offsets(panels: dict[str, Any]) -> dict[tuple[str, str], tuple[float, float]]:
+    """Each letter's box corner from its point, by panel and text."""
+    return {(name, t["text"]): (t["box"][0] - t["at"][0], t["box"][1] - t["at"][1])
+            for name, P in panels.items() for t in P["letters"]}
+
+
 def test_example_3_1_is_lettered_clean(browser, tmp_path: Path) -> None:
     browser.open(page_file(tmp_path, ROOT / "tests/data/spec/ex3_1_fourbar.toml"))
-    _clean(browser.js(_READ))
+    placed = browser.js(_READ)
+    _clean(placed)
+    # while dragging (the drive moved, the pointer not let go) each letter keeps the offset
+    # from its point it was given when the pointer last stopped: the cheap placement
+    d = browser.js("window.graphkinLive.state()")["drive"]
+    assert browser.js(f"window.graphkinLive.setDrive({d + 0.02!r})") is not None
+    moved = browser.js(_READ)
+    assert moved["posture"]["letters"][0]["at"] != placed["posture"]["letters"][0]["at"]
+    before, during = _offsets(placed), _offsets(moved)
+    assert before.keys() == during.keys()
+    for k, v in before.items():
+        assert np.allclose(during[k], v, atol=0.02), k
+    assert browser.js(f"window.graphkinLive.setDrive({d!r})") is not None
     browser.js(_OLD)
     old = faults(browser.js(_READ))
     assert old["marker"], old  # J and U on the inflection circle: each on the other's marker
@@ -218,3 +247,20 @@ def test_random_mechanisms_are_lettered_clean(browser, tmp_path: Path) -> None:
         assert browser.errors() == []
 
     check()
+
+
+def test_the_rules_are_draws_in_the_pages_pixels() -> None:
+    """draw's 9 pt labels are the page's 12 px letters: 96 px to draw's inch (12 / (9/72)).
+
+    draw's first place (render/labels.py ``_DIRS``) is up and to the right of the point,
+    on paper y up, so on the screen (y down) the direction (1, -1); its first ring stands
+    LabelRequest's gap, 0.045 in = 4.32 px, from the point; its box keeps 0.012 in = 1.152 px
+    clear of its glyphs.
+    """
+    from graphkin.render.live_labels_js import LABELS_JS, PX_PER_INCH, RULES
+
+    assert PX_PER_INCH == 96.0
+    assert RULES["dirs"][0] == [1.0, -1.0]
+    assert RULES["gaps"][0] == pytest.approx(4.32, rel=1e-12)
+    assert RULES["pad"] == pytest.approx(1.152, rel=1e-12)
+    assert "const GK_LABEL_RULES = {" in LABELS_JS
