@@ -44,6 +44,17 @@ _DIRS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
 _SAME_WIDTH = str.maketrans("123456789₁₂₃₄₅₆₇₈₉¹²³⁴⁵⁶⁷⁸⁹", "000000000₀₀₀₀₀₀₀₀₀⁰⁰⁰⁰⁰⁰⁰⁰⁰")
 _PAD = 0.012
 """Clearance kept around a label's glyphs, in inches."""
+SCORE = {"ink": 4.0, "on_ink": 0.6, "label": 25.0, "out": 40.0, "rank": 0.04,
+         "astray": 10.0, "grid": 0.25, "grid_distance": 0.5}
+"""The weights of a place's score (lower is better): the share of its box a line covers
+(``ink``), any ink at all (``on_ink``), the share another label covers (``label``), the share
+off the panel (``out``), each rank down the ring (``rank``), nearer another lettered point
+(``astray``); a crowded place's grid adds ``grid`` and ``grid_distance`` per inch from the
+anchor.  The live page scores its places with the same numbers
+(:mod:`graphkin.render.live_labels_js`)."""
+GRID = {"step": 0.04, "reach": 0.5, "clear": 0.02}
+"""A crowded place's grid about its anchor (inches): its step, its reach beyond the box's
+larger side, and the clearance of the box from the anchor."""
 
 
 @lru_cache(maxsize=1)
@@ -548,10 +559,11 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     # anchor: every box scored by one look-up of the ink and one of the labels
     cand = _candidates(req, a, w, h)
     n = len(cand)
-    step = 0.04
-    rmax = 0.5 + 1.0 * max(w, h)
+    step = GRID["step"]
+    rmax = GRID["reach"] + 1.0 * max(w, h)
     gx, gy, dist = _grid(rmax, step)
-    keep = (dist <= rmax) & ((np.abs(gx) >= w / 2 + 0.02) | (np.abs(gy) >= h / 2 + 0.02))
+    keep = (dist <= rmax) & ((np.abs(gx) >= w / 2 + GRID["clear"])
+                             | (np.abs(gy) >= h / 2 + GRID["clear"]))
     cxs = np.concatenate([cand[:, 0], a[0] + gx[keep]])
     cys = np.concatenate([cand[:, 1], a[1] + gy[keep]])
     x0, y0, x1, y1 = cxs - w / 2, cys - h / 2, cxs + w / 2, cys + h / 2
@@ -561,7 +573,7 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     iy = np.clip(np.minimum(y1, ph) - np.maximum(y0, 0.0), 0, None)
     over_all = inked_all * INK_WIDTH / (w * h)
     out_all = 1.0 - ix * iy / (w * h)
-    mark = np.where(inked_all > 0, 0.6, 0.0)
+    mark = np.where(inked_all > 0, SCORE["on_ink"], 0.0)
     clean_all = (over_all == 0) & (lab_all == 0) & (out_all <= 1e-12)
     # a point's letters nearer another lettered point would be read as that point's; in a
     # crowded place, at least a box nearer its own point than any other (attached to it);
@@ -571,11 +583,11 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
         astray = nearer_another(ink.points, a, cxs, cys, (w / 2, h / 2))
     if astray is not None and bool(np.any(clean_all & ~astray)):
         clean_all &= ~astray
-        mark = mark + np.where(astray, 10.0, 0.0)
+        mark = mark + np.where(astray, SCORE["astray"], 0.0)
 
     # the ring taken in rank order up to the first clean one: the best score of that prefix
-    sc = 4.0 * over_all[:n] + mark[:n] + 25.0 * lab_all[:n] + 40.0 * out_all[:n] \
-        + 0.04 * np.arange(n)
+    sc = SCORE["ink"] * over_all[:n] + mark[:n] + SCORE["label"] * lab_all[:n] \
+        + SCORE["out"] * out_all[:n] + SCORE["rank"] * np.arange(n)
     first = int(np.argmax(clean_all[:n])) if clean_all[:n].any() else n - 1
     j = 0
     for k in range(1, first + 1):  # the first strictly better score, as the loop kept it
@@ -585,8 +597,9 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     if best[2] or len(cxs) == n:
         return best
     # a crowded place: the grid, nearest clean first
-    g = 4.0 * inked_all[n:] * INK_WIDTH / (w * h) + mark[n:] + 25.0 * lab_all[n:] \
-        + 40.0 * out_all[n:] + 0.25 + 0.5 * dist[keep]
+    g = SCORE["ink"] * inked_all[n:] * INK_WIDTH / (w * h) + mark[n:] \
+        + SCORE["label"] * lab_all[n:] + SCORE["out"] * out_all[n:] + SCORE["grid"] \
+        + SCORE["grid_distance"] * dist[keep]
     j = int(np.argmin(g))
     if g[j] < best[0] - 1e-12:
         best = (float(g[j]), np.array([cxs[n + j], cys[n + j]]), bool(clean_all[n + j]))
@@ -606,6 +619,8 @@ def _grid(rmax: float, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]
 
 _GAPS = np.array([1.0, 1.8, 2.8, 4.0])
 _FAR_RINGS = np.array([0.14, 0.22, 0.32, 0.45, 0.6, 0.8])
+RING_SPREAD = 0.02
+"""Each ring past the first stands this much farther out per unit of its gap (inches)."""
 
 
 def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> np.ndarray:
@@ -619,7 +634,7 @@ def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> np.ndar
     half = d * np.array([w / 2, h / 2])
     # rings close about the anchor, each in the preferred order of directions; then farther
     # out along the preferred directions, for crowded places
-    gaps = np.concatenate([req.gap * _GAPS + np.where(_GAPS > 1, 0.02 * _GAPS, 0.0),
+    gaps = np.concatenate([req.gap * _GAPS + np.where(_GAPS > 1, RING_SPREAD * _GAPS, 0.0),
                            _FAR_RINGS])
     out = (a + u[None, :, :] * gaps[:, None, None] + half[None, :, :]).reshape(-1, 2)
     return np.vstack([a[None, :], out]) if req.center else out

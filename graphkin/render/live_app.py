@@ -19,6 +19,7 @@ from graphkin.render.live_cam_turn import CAMS_APP_JS
 from graphkin.render.live_centers import CENTERS_CSS, CENTERS_JS
 from graphkin.render.live_curvature_js import CURVATURE_APP_JS, CURVATURE_CSS, CURVATURE_JS
 from graphkin.render.live_forces import FORCES_APP_JS, FORCES_JS
+from graphkin.render.live_labels_js import LABELS_JS
 from graphkin.render.live_pen import PEN_JS
 from graphkin.render.live_pitch import PITCH_APP_JS
 from graphkin.render.live_toml_js import TOML_JS
@@ -114,6 +115,7 @@ const st = D.style;
 const ink = (k, p) => (st[k] && st[k][p] !== undefined) ? st[k][p] : "#000";
 const px = (lw) => 1.4 * lw;
 const views = {};
+const placed = {};  // each panel's letters' offsets from their points, by text (label)
 const panels = ["posture"].concat(D.rates && !D.refused ? ["velocity", "acceleration"] : []);
 const svgs = {};
 for (const name of ["posture", "velocity", "acceleration", "kennedy", "curvature"]) {
@@ -280,10 +282,21 @@ function outline(g, panel, pts, plate) {
 }
 
 // a label beside p: a text, or [head, subscript, what follows] (gkParts: O_V is O with V
-// below, as draw's mathtext $O_V$; dy, which every browser honours, not baseline-shift)
-function label(g, panel, p, text) {
-  const t = el(g, "text", {x: X(panel, p) + 6, y: Y(panel, p) - 6, "font-size": "12",
-                           "font-style": "italic"}, Array.isArray(text) ? text[0] : text);
+// below, as draw's mathtext $O_V$; dy, which every browser honours, not baseline-shift);
+// kind "vector" for a force's name (not a lettered point). While dragging, at the offset
+// the letter had when the pointer last stopped (placed by draw's rule then: gkPlaceLabels,
+// render/live_labels_js.py), else up and to the right, or to the left near the right edge
+function label(g, panel, p, text, kind) {
+  const x = X(panel, p), y = Y(panel, p);
+  const s = Array.isArray(text) ? text.join("") : text;
+  const o = (placed[panel] || {})[s];
+  const left = !o && x + 6 + 7 * s.length > W;
+  const t = el(g, "text", {x: o ? x + o[0] : x + (left ? -6 : 6), y: o ? y + o[1] : y - 6,
+                           "font-size": "12", "font-style": "italic", class: "gk-label",
+                           "data-ax": x.toFixed(2), "data-ay": y.toFixed(2),
+                           "data-point": kind === "vector" ? "0" : "1"},
+               Array.isArray(text) ? text[0] : text);
+  if (left || (o && o[2])) t.setAttribute("text-anchor", left ? "end" : o[2]);
   if (Array.isArray(text) && text[1]) {
     el(t, "tspan", {dy: "0.3em", "font-size": "70%", class: "gk-sub"}, text[1]);
     if (text[2]) el(t, "tspan", {dy: "-0.3em"}, text[2]);
@@ -325,7 +338,8 @@ function drawPosture(r, stale) {
     el(g, "path", {d: "M" + x + "," + y + " l-9,14 h18 z", fill: "#fff", stroke: "#000",
                    "stroke-width": "1"});
   }
-  for (const n of moving.concat(Object.keys(D.frame))) {
+  // a frame pivot of a moving link (O2 of link 2) drawn and lettered once
+  for (const n of new Set(moving.concat(Object.keys(D.frame)))) {
     const p = r[n]; if (!p) continue;
     const pin = (owners[n] || 0) > 1;
     el(g, "circle", {cx: X("posture", p), cy: Y("posture", p), r: pin ? 4 : 2.5,
@@ -472,14 +486,10 @@ function drawPolygon(panel, pre, r, stale) {
   for (const e of D.pitch || []) {
     const p = e.pre === pre ? r[e.label] : null; if (!p) continue;
     el(g, "circle", {cx: X(panel, p), cy: Y(panel, p), r: 3, fill: "#fff", stroke: "#000"});
-    // to the left of a point in the panel's right half, so "c′₄ (4/2)" stays on the panel
-    const left = X(panel, p) > W / 2;
-    el(g, "text", {x: X(panel, p) + (left ? -6 : 6), y: Y(panel, p) + 14, "font-size": "12",
-                   "text-anchor": left ? "end" : "start", "font-style": "italic",
-                   class: "gk-pitch"}, e.text);
+    label(g, panel, p, e.text).classList.add("gk-pitch");
   }
   el(g, "circle", {cx: X(panel, o), cy: Y(panel, o), r: 3, fill: "#000"});
-  label(g, panel, o, gkParts(pre === "v" ? "O_V" : "O_A")).setAttribute("class", "gk-pole");
+  label(g, panel, o, gkParts(pre === "v" ? "O_V" : "O_A")).classList.add("gk-pole");
   if (pen.panel === panel) drawPen(svg, panel);
 }
 
@@ -569,6 +579,7 @@ function redraw(refit) {
   if (D.curvature) drawCurvature(r, !ok, refit);
   if (D.forces) { drawForces(r, !ok); drawActing(r, !ok); }
   if (ok) { table(r); forceTable(); }
+  if (refit) placeLabels();
   // a drive that follows by a table has no value beyond its rows (render/live_laws.py)
   const why = ok || !D.follow ? "" : gkFollowWhy(D.follow, drive);
   const camSays = D.turn ? gkTurnNote(D.turn, turned, drive) : "";
@@ -578,6 +589,16 @@ function redraw(refit) {
     (turned && turned.why) || (construction.why && construction.why()) ||
     ((camSays ? camSays + " " : "") + DEAD));
   showDrive();
+}
+
+// the pointer stopped: every panel's letters placed by draw's rule (live_labels_js.py)
+function placeLabels() {
+  const shown = {};
+  for (const name of ["posture", "velocity", "acceleration", "curvature", "forces"]) {
+    const svg = byId("gk-" + name);
+    if (svg && svg.getBoundingClientRect().width > 0) shown[name] = svg;
+  }
+  Object.assign(placed, gkPlaceLabels(shown, W, H));
 }
 
 function snapshot() { history.push([K.slice(), drive]); if (history.length > 200) history.shift(); }
@@ -743,5 +764,5 @@ APP_JS = (APP_JS.replace("/*PEN*/\n", PEN_JS).replace("/*FORCES*/\n", FORCES_APP
           .replace("/*CAMS*/\n", CAMS_APP_JS + PITCH_APP_JS))
 # the curvature, force and centers' constructions' glue (render/live_curvature_js.py,
 # render/live_forces.py, render/live_centers.py)
-LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS
+LIVE_LIB += CURVATURE_JS + FORCES_JS + CENTERS_JS + LABELS_JS
 PAGE_CSS += CENTERS_CSS + CURVATURE_CSS

@@ -579,7 +579,7 @@ function drawForcePolygons(r, stale) {
                      "data-name": f.name});
       // two thirds along: a two-force member's F_12 and F_32 (out and back) apart
       label(g, "forces", [a[0] + 0.65 * (b[0] - a[0]), a[1] + 0.65 * (b[1] - a[1])],
-            f.text || f.name);
+            f.text || f.name, "vector");
     }
     // the link's name under its polygon
     let lo = Infinity, sx = 0;
@@ -617,7 +617,7 @@ function drawActing(r, stale) {
                    y2: Y("posture", tip), stroke: a.color, "stroke-width": "1.6",
                    "marker-end": "url(#" + marks[a.color] + ")", class: "gk-acting",
                    "data-name": a.label});
-    label(g, "posture", tail, a.text || a.label);  // as draw -d forces names it (P₄)
+    label(g, "posture", tail, a.text || a.label, "vector");  // as draw -d forces names it (P₄)
   }
 }
 function forceTable() {
