@@ -71,10 +71,14 @@ def planted_wrong(name: str, image: Any, pole: Any, factor: float) -> str | None
 
 
 def _intended(case: str, rows: list[Any], wrong: str | None) -> bool:
-    """Whether every row is marked as the drawing intends; ``wrong`` None: none is wrong."""
+    """Whether every row is marked as the drawing intends.
+
+    ``wrong``: the wrong-length drawing's image intended ``WRONG``; None, none
+    is (the reversed drawing is intended reversed all the same).
+    """
     from graphkin.check.report import OK, WRONG
 
-    if case == "right" or wrong is None:
+    if case == "right" or (case == "length" and wrong is None):
         return all(r.verdict == OK for r in rows)
     if case == "reversed":
         return all(r.code == "sense" or r.code.startswith("follows:") for r in rows) and \

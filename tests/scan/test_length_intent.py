@@ -38,3 +38,18 @@ def test_intended_rows() -> None:
     rows[1] = Row("V_C", "1", "1", "0", WRONG)
     assert _intended("length", rows, "C")
     assert not _intended("length", rows, None)
+
+
+def test_a_reversed_drawing_is_intended_reversed_whatever_its_wrong_length() -> None:
+    # the draw's wrong length moves its image under 0.5 mm (``wrong`` None): that is the
+    # wrong-length drawing's matter; its reversed drawing is still intended `sense` (the
+    # rest following), not all right (before, such reversed photos could never count)
+    from graphkin.check.diagnose import Mistake
+    from graphkin.check.report import FOLLOWS
+
+    sense = Mistake("sense", "the polygon drawn for the other sense", "sense")
+    rows = [Row("V_A", "1", "1", "0", WRONG, mistake=sense),
+            Row("V_C", "1", "1", "0", FOLLOWS, follows="V_A")]
+    assert _intended("reversed", rows, None)
+    assert _intended("reversed", rows, "C")
+    assert not _intended("reversed", [Row("V_A", "1", "1", "0", OK)], None)
