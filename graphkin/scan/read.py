@@ -313,7 +313,7 @@ def _match(read: SheetRead) -> None:
     for name, j in chosen.items():
         p = pts[j]
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)]
-        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole, read.rect.blur_mm)
+        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 

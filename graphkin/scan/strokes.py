@@ -31,7 +31,7 @@ from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
 __all__ = ["INK_RATIO", "MIN_MM", "pencil", "segments", "merge", "apart", "ends", "vertex_at",
-           "arrow_tips", "line_sigma"]
+           "arrow_tips"]
 
 INK_RATIO = 0.84
 """A pixel darker than this fraction of the paper around it is pencil."""
@@ -67,9 +67,7 @@ _OFF_TIP_MM = 3.0
 """Of crossings as many lines agree on, the one nearest the strokes' tips is taken (each
 tip counted at most this far: a tip run on over other ink is up to 3 mm past)."""
 _SIGMA_LINE = 0.1
-"""How far (σ, mm) a refitted line passes from the image point it was drawn through, sharp."""
-_BLUR_LINE = 0.5
-"""And the part of the photo's blur (σ, mm) by which it may pass farther (:func:`line_sigma`)."""
+"""How far (σ, mm) a refitted line passes from the image point it was drawn through."""
 _SIGMA_END = 0.4
 """How far (σ, mm) a stroke's tip is from its image point along its line (overshot or short)."""
 
@@ -392,27 +390,8 @@ def ends(segs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return segs.reshape(-1, 2), np.repeat(np.arange(len(segs)), 2)
 
 
-def line_sigma(blur_mm: float) -> float:
-    """How far (σ, mm) a stroke's fitted line may pass from the vertex, at a photo's blur.
-
-    A hand's wobble puts a line :data:`_SIGMA_LINE` off the image it was
-    drawn through.  Near the vertex the blurred ink of the other strokes
-    arriving there merges with its own, and the line fitted to the ink is
-    pulled toward them by a part of the blur: a pencil line 0.3 mm wide
-    blurred by σ = 0.44 mm (the harsh level) is 1.1 mm across at half its
-    darkness, so two strokes 10° apart share ink for 6 mm from the vertex.
-    So a line holds the vertex to ``√(0.1² + (blur/2)²)`` mm: 0.11 at a
-    scan's 0.12 mm of blur, 0.16 at a phone's 0.25, 0.24 at 0.44 mm.  Two
-    such lines meeting at a narrow angle fix the vertex along them only to
-    that over the sine of their angle, and the strokes' tips then weigh
-    more there (:func:`_combine`).  ``blur_mm`` 0 (not measured): the sharp
-    value.
-    """
-    return math.hypot(_SIGMA_LINE, _BLUR_LINE * max(float(blur_mm), 0.0))
-
-
 def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
-              pole: np.ndarray | None = None, blur_mm: float = 0.0) -> np.ndarray:
+              pole: np.ndarray | None = None) -> np.ndarray:
     """Where the segments ``idx`` that end near ``guess`` meet.
 
     The segments that pass through ``guess`` (within 1 mm of their line,
@@ -497,7 +476,7 @@ def vertex_at(segs: np.ndarray, idx: list[int], guess: np.ndarray,
         # found, it is one of the lines already
         agree.append(np.array([pole, guess], dtype=float))
     return _combine(A[ok], b[ok], agree, [segs[i] for i in idx if ok[lines.index(i)]],
-                    guess, end, line_sigma(blur_mm))
+                    guess, end)
 
 
 def _distinct(normals: np.ndarray) -> int:
@@ -574,12 +553,10 @@ def _covered(d: np.ndarray, at: np.ndarray, others: list[np.ndarray]) -> float:
 
 
 def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list[np.ndarray],
-             guess: np.ndarray, end: np.ndarray, sigma_line: float = _SIGMA_LINE
-             ) -> np.ndarray:
+             guess: np.ndarray, end: np.ndarray) -> np.ndarray:
     """The vertex from the lines that meet there (rows of ``A``, ``b``) and the strokes' ends.
 
-    Each line holds the vertex across itself (σ ``sigma_line``, from the
-    photo's blur: :func:`line_sigma`); each
+    Each line holds the vertex across itself (σ :data:`_SIGMA_LINE`); each
     stroke that ends there holds it along its own line (σ :data:`_SIGMA_END`),
     unless its end is farther from the lines' crossing than the two can
     differ by (2.5 σ of the sum): such an end was run on over another
@@ -600,8 +577,8 @@ def _combine(A: np.ndarray, b: np.ndarray, agree: list[np.ndarray], ending: list
         # each line's place across the mean direction, where it passes nearest the end
         b = np.array([float(m @ (guess - (a @ guess - c) * a)) for a, c in zip(A, b)])
         A = np.tile(m, (len(A), 1))
-    M = A.T @ A / sigma_line**2
-    r = A.T @ b / sigma_line**2
+    M = A.T @ A / _SIGMA_LINE**2
+    r = A.T @ b / _SIGMA_LINE**2
     tips = []
     for sg in ending:
         k = int(np.argmin(np.hypot(*(sg - guess).T)))
