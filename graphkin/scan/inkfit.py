@@ -36,9 +36,7 @@ fitted lines and the ink's ends along them agree best:
    (the stroke's tip, as :mod:`graphkin.scan.strokes` reads it); the image is
    taken half a pencil line's width inside it, or more where the walk runs
    on over another expected stroke's ink (a line going on through ``p``);
-   an end run on more than 1.5 mm is not used, unless the ink ends well
-   before the other stroke's would carry it (that stroke is not inked
-   there: a gap where the pencil lifted): then the end is the stroke's own.
+   an end run on more than 1.5 mm is not used.
 4. **The point.**  Each line holds the image across itself (σ from its
    fit), each end along its line (σ 0.3 mm: ends overshot or stopped short
    by up to 0.4 mm); an end farther from the lines' crossing than the two
@@ -389,8 +387,6 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         if end is None:
             continue
         cover = _cover(fl.point, fl.direction, others)
-        if cover > _COVER_MAX_MM and end < cover - _HALF_MM:
-            cover = _HALF_MM       # ended before the others' ink would carry it: its own end
         if cover > _COVER_MAX_MM:
             continue
         tip = fl.point + (end - cover) * fl.direction
