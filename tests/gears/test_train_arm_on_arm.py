@@ -20,6 +20,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from strategies_trains import RandomTrain, arms_on_arms
+from train_checks import assert_meshes_touch_and_others_clear
 
 import graphkin
 from graphkin.cli import main
@@ -179,30 +180,7 @@ def test_random_arms_on_arms_turn_at_the_formulas_speeds(t: RandomTrain) -> None
         got = 0.0 if lid == "1" else float(sol.omega(lid))
         assert got == pytest.approx(w, abs=1e-9 * scale), (t.kind, member)
     # meshes touch at their operating pitch circles; gears that do not mesh stand clear
-    size = max(lay.radius.values())
-    center = {g: tuple(float(c) for c in sol.position(p)) for g, p in lay.axis_point.items()}
-    ring = set()
-    pairs = set()
-    for m, (ra, rb) in zip(train.meshes, lay.operating, strict=True):
-        c = math.dist(center[m.driver], center[m.driven])
-        internal = m.contact == "internal"
-        assert c == pytest.approx(abs(ra - rb) if internal else ra + rb, abs=1e-9 * size)
-        n1, n2 = float(train.size[m.driver]), float(train.size[m.driven])
-        assert ra / rb == pytest.approx(n1 / n2, rel=1e-12)       # Eq. (7.2)
-        if internal:
-            ring.add(m.driven if n2 > n1 else m.driver)
-        pairs.add((center[m.driver], center[m.driven]))
-    gears = list(train.size)
-    for i, g in enumerate(gears):
-        for h in gears[i + 1:]:
-            p, q = center[g], center[h]
-            if math.dist(p, q) <= 1e-9 * size or (p, q) in pairs or (q, p) in pairs:
-                continue            # one axis, or the two axes of a mesh: one behind the other
-            d, r, s = math.dist(p, q), lay.radius[g], lay.radius[h]
-            apart = d >= r + s
-            inside = (h in ring and d + r <= s) or (g in ring and d + s <= r)
-            assert apart or inside, (t.kind, g, h, d, r, s)
-    assert not any("overlap" in n for n in lay.notes)
+    assert_meshes_touch_and_others_clear(train, lay, sol, t.kind)
     # arm 2 (the swept drive: given first, never 0) turned 0, 250° and 500°: every link at
     # the formula's ω, and turned ω/ω2 times as far as the arm (counted on continuously)
     assert lay.data["drive"][0]["link"] == lay.link_of["2"]

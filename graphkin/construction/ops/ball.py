@@ -64,17 +64,12 @@ import numpy as np
 from graphkin.construction.codegen import Gen, lit, template
 from graphkin.construction.ops.registry import op
 from graphkin.construction.step import Step
+from graphkin.geometry.ops import xy as _xy
 from graphkin.tolerance import Tolerance
 
 __all__: list[str] = []
 
 Array = np.ndarray
-
-
-def _xy(p: Array) -> Array:
-    p = np.asarray(p, dtype=float)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return p[..., :2] / p[..., 2:3]
 
 
 def _row(r: Array, t: Array, u: Array, dd: Array) -> Array:
