@@ -362,6 +362,13 @@ def _linkage_angle(data: Mapping[str, Any], links: Mapping[str, Any], sliders: l
         raise _fail(f"{key}.link", f"the cam's link {cl} must be the drive, by its angle "
                     f"([drive] link = {cl}, angle = ...), or a link of this file that the "
                     "linkage turns about its pin with the frame at the cam's center", source)
+    frame = links.get("1")
+    pivots = [n for n in pts if isinstance(frame, Mapping) and n in frame]
+    if center not in pts and not pivots:
+        raise _fail(f"{key}.link", f"the cam's link {cl} has no drive and no pin with the "
+                    "frame (no point of it in [links.1]): a cam turns about a frame pivot, "
+                    "so it must sit on the drive's link or on a link pinned to the frame",
+                    source)
     if center not in pts:
         raise _fail(f"{key}.center", f"the cam's link {cl} has no drive, so the linkage turns "
                     f"it, about its pin with the frame: the cam's center {center!r} must be "

@@ -199,6 +199,18 @@ def test_a_cam_link_without_its_center_is_refused_in_one_line() -> None:
     assert "O2" in said and "[links.4]" in said
 
 
+def test_a_cam_on_a_link_not_pinned_to_the_frame_is_refused_in_one_line() -> None:
+    # the cam moved onto the coupler 3 (A, B: neither a point of the frame): it has no
+    # frame pivot to turn about, so no center can be named on it; said so, not "name O4"
+    data = _file()
+    data["cams"][0]["link"] = 3
+    with pytest.raises(InputError) as e:
+        from_dict(data, source="m.toml")
+    said = e.value.one_line()
+    assert said.startswith("m.toml: cams[0].link: ") and "\n" not in said
+    assert "no pin with the frame" in said and "[links.1]" in said
+
+
 @pytest.mark.parametrize("rocker", [{"O4": [0.0, 0.0]}, {"O4": [0.0, 0.0], "B": [0.0, 0.0]}])
 def test_a_cam_link_whose_angle_two_points_do_not_define_is_refused_in_one_line(rocker) -> None:
     # the rocker reduced to its center (its pin B moved to another rocker, or onto O4)
