@@ -9,6 +9,7 @@ page's functions without the page (node) edit the parsed file the same way.
 from __future__ import annotations
 
 import copy
+import json
 import math
 from typing import Any
 
@@ -165,3 +166,21 @@ def same_as_saved_solve(browser: Any, tmp_path: Any, rel: float = 1e-9) -> tuple
             d = float(r[f"θ{lid}"]) - float(sol.angle_rad(lid))
             assert abs(math.remainder(d, 2 * math.pi)) < rel * (1 + abs(d)), f"θ{lid}"
     return r, sol
+
+
+def curvature_page(data: dict[str, Any], js: str, drive: float) -> Any:
+    """The live page's construction and curvature panel at ``drive``, run in node.
+
+    ``RESULT`` is ``{r, v}``: the construction's values and ``gkCurvature``'s
+    panel, or null where the posture cannot be assembled.
+    """
+    from jsrun import run_js
+
+    from graphkin.render.live_app import LIVE_LIB
+
+    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
+           "\nconst I = Object.assign({}, D.inputs);"
+           f"\nI[D.drive.label] = {float(drive)!r};"
+           "\nconst r = construction(I, D.K);"
+           "\nconst RESULT = r === null ? null : {r: r, v: gkCurvature(D.curvature, r)};")
+    return run_js(src)

@@ -20,7 +20,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from jsrun import close, js_or_skip, run_js
-from live_edit import edited, same_curvature
+from live_edit import curvature_page, edited, same_curvature
 from spec_data import EXAMPLES
 
 import graphkin
@@ -30,7 +30,6 @@ from graphkin.kinematics.curvature.inflection import acceleration_center
 from graphkin.kinematics.curvature.link import curvature
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_data
-from graphkin.render.live_app import LIVE_LIB
 from graphkin.tolerance import DEFAULT_TOL
 
 _num = st.floats(-50.0, 50.0, allow_nan=False)
@@ -78,15 +77,6 @@ def _js():
     close()
 
 
-def _page(data: dict, js: str, drive: float):
-    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
-           "\nconst I = Object.assign({}, D.inputs);"
-           f"\nI[D.drive.label] = {float(drive)!r};"
-           "\nconst r = construction(I, D.K);"
-           "\nconst RESULT = r === null ? null : {r: r, v: gkCurvature(D.curvature, r)};")
-    return run_js(src)
-
-
 def _drags(name: str, turns: list[float]) -> list[bool]:
     """The page's curvature after each turn of the drive against graphkin's of the saved file;
     for each posture reached, whether graphkin (and the page) has a Bresse circle there."""
@@ -100,7 +90,7 @@ def _drags(name: str, turns: list[float]) -> list[bool]:
     has = []
     for turn in np.radians(turns):
         drive = data["drive"]["value"] + float(turn)
-        out = _page(data, js, drive)
+        out = curvature_page(data, js, drive)
         if out is None or out["v"] is None:
             continue
         sol = from_dict(edited(data, drive, out["r"]), source="e").solve()
@@ -196,7 +186,7 @@ def test_the_alpha_zero_verdict_does_not_move_with_round_off() -> None:
             lk[n] = [lk[n][0] + eps * ((k + j) % 3 - 1), lk[n][1] - eps * ((k * j) % 3 - 1)]
     mech = from_dict(moved, source=path.name)
     data, js = live_data(mech, moved, path.name)
-    out = _page(data, js, data["drive"]["value"])
+    out = curvature_page(data, js, data["drive"]["value"])
     v, lc = out["v"], curvature(mech.solve())[data["curvature"]["link"]]
     assert v["Bresse circle"] is None and "Bresse circle" not in lc.values
     assert same_curvature(data, v, lc.values, 1.0 + mech.scale) == len(

@@ -23,8 +23,8 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from jsrun import close, js_or_skip, run_js
-from live_edit import edited, same_curvature
+from jsrun import close, js_or_skip
+from live_edit import curvature_page, edited, same_curvature
 from spec_data import EXAMPLES, ROOT
 from strategies import RandomMechanism, examples, fourbars, six_bars, slider_cranks
 
@@ -34,7 +34,6 @@ from graphkin.files import load_toml
 from graphkin.kinematics.curvature.link import curvature
 from graphkin.mechanisms import from_dict
 from graphkin.render.live import live_data
-from graphkin.render.live_app import LIVE_LIB
 
 REL = 1e-9
 
@@ -44,15 +43,6 @@ def _js():
     js_or_skip()
     yield
     close()
-
-
-def _page(data: dict, js: str, drive: float):
-    src = (js + LIVE_LIB + f"\nconst D = {json.dumps(data)};"
-           "\nconst I = Object.assign({}, D.inputs);"
-           f"\nI[D.drive.label] = {float(drive)!r};"
-           "\nconst r = construction(I, D.K);"
-           "\nconst RESULT = r === null ? null : {r: r, v: gkCurvature(D.curvature, r)};")
-    return run_js(src)
 
 
 def _compare(data: dict, got: dict, ref: Any, size: float) -> int:
@@ -72,7 +62,7 @@ def _check(rm: RandomMechanism, offset: float) -> bool:
         return False  # no panel: the page says why (test_the_page_says_why_it_has_no_panel)
     d = data["drive"]
     drive = d["value"] + offset * (1.0 if d["degrees"] else mech.scale)
-    out = _page(data, js, drive)
+    out = curvature_page(data, js, drive)
     if out is None or out["v"] is None:
         return False  # cannot be assembled, or ω of the link is 0 there: said so on the page
     try:
@@ -101,7 +91,7 @@ def test_example_3_2_coupler_with_a_center_of_curvature_at_infinity() -> None:
     mech = graphkin.load(path)
     data, js = live_data(mech, load_toml(path), path.name)
     assert data["curvature"]["given"]["C'"]["slider"] == "1"
-    out = _page(data, js, data["drive"]["value"])
+    out = curvature_page(data, js, data["drive"]["value"])
     r, v = out["r"], out["v"]
     a, b, c = (np.asarray(r[n], dtype=float) for n in ("A", "B", "C"))
     i = np.asarray(v["I"], dtype=float)
@@ -125,7 +115,7 @@ def test_example_3_1_coupler(tmp_path) -> None:
             "Γ"} <= set(data["curvature"]["labels"])
     assert "Γ (four circles)" not in data["curvature"]["labels"]
     for turn in (0.0, np.radians(10.0)):
-        out = _page(data, js, data["drive"]["value"] + turn)
+        out = curvature_page(data, js, data["drive"]["value"] + turn)
         r, v = out["r"], out["v"]
         a, b, c, dd = (np.asarray(r[n], dtype=float) for n in ("A", "B", "C", "D"))
         # I on line AB and on line DC: zero cross products
@@ -209,7 +199,7 @@ def test_the_page_has_the_curvature_panel_draw_has(path) -> None:
         assert V["why"] and "\n" not in V["why"] and "link" not in V
         return
     assert V.get("link") == drawn, V.get("why")
-    out = _page(data, js, data["drive"]["value"])
+    out = curvature_page(data, js, data["drive"]["value"])
     assert out is not None and out["v"] is not None
     assert _compare(data, out["v"], curvature(mech.solve())[drawn], 1.0 + mech.scale) >= 4
 
@@ -235,13 +225,13 @@ def test_example_4_16_leaves_out_only_what_is_at_infinity_there() -> None:
     mech = graphkin.load(path)
     data, js = live_data(mech, load_toml(path), path.name)
     assert "U" in data["curvature"]["labels"] and "note" not in data["curvature"]
-    out = _page(data, js, data["drive"]["value"])
+    out = curvature_page(data, js, data["drive"]["value"])
     v = out["v"]
     assert v["G_T"] is None and v["G_N"] is None
     np.testing.assert_allclose(v["U"], v["J"], rtol=0, atol=1e-12 * (1.0 + mech.scale))
     assert _compare(data, v, curvature(mech.solve())["3"], 1.0 + mech.scale) >= 8
     turned = data["drive"]["value"] + np.radians(5.0)
-    out = _page(data, js, turned)
+    out = curvature_page(data, js, turned)
     assert all(out["v"][lab] is not None for lab in data["curvature"]["labels"])
     sol = from_dict(edited(data, turned, out["r"]), source="e").solve()
     assert _compare(data, out["v"], curvature(sol)["3"], 1.0 + mech.scale) == len(
