@@ -184,3 +184,22 @@ def curvature_page(data: dict[str, Any], js: str, drive: float) -> Any:
            "\nconst r = construction(I, D.K);"
            "\nconst RESULT = r === null ? null : {r: r, v: gkCurvature(D.curvature, r)};")
     return run_js(src)
+
+
+def open_random_page(browser: Any, tmp_path: Any, mech: Any, raw: dict[str, Any]) -> Any:
+    """Open the live page of a random mechanism; its page data, or None where live refuses it.
+
+    ``raw`` is the mechanism's file data (``RandomMechanism.data``); a mechanism
+    the page cannot hold (:class:`~graphkin.errors.InputError`) gives None.
+    """
+    from graphkin.errors import InputError
+    from graphkin.render.live import live_data, live_html
+
+    try:
+        data, _ = live_data(mech, raw, "random.toml")
+    except InputError:
+        return None
+    page = tmp_path / "random.html"
+    page.write_text(live_html(mech, raw, "random.toml"), encoding="utf-8")
+    browser.open(page)
+    return data

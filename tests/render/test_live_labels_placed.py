@@ -33,12 +33,10 @@ import numpy as np
 import pytest
 from hypothesis import given
 from live_cams_shared import drag
-from live_edit import page_file
+from live_edit import open_random_page, page_file
 from strategies import RandomMechanism, examples, mechanisms
 
 from graphkin.cli import main
-from graphkin.errors import InputError
-from graphkin.render.live import live_data, live_html
 
 ROOT = Path(__file__).resolve().parents[2]
 SAME = 0.5
@@ -229,13 +227,9 @@ def test_random_mechanisms_are_lettered_clean(browser, tmp_path: Path) -> None:
     @given(rm=mechanisms())
     def check(rm: RandomMechanism) -> None:
         mech = rm.mechanism()
-        try:
-            data, _ = live_data(mech, rm.data, "random.toml")
-        except InputError:
+        data = open_random_page(browser, tmp_path, mech, rm.data)
+        if data is None:
             return
-        page = tmp_path / "random.html"
-        page.write_text(live_html(mech, rm.data, "random.toml"), encoding="utf-8")
-        browser.open(page)
         _clean(browser.js(_READ))
         # the slider moved and let go ("change"): placed again
         d = data["drive"]
