@@ -4,7 +4,7 @@ Usage::
 
     python benchmarks/scan_fixed_sample.py save sample.json [--draws 160]
     python benchmarks/scan_fixed_sample.py read sample.json [--levels scan mild phone harsh]
-        [--cases right reversed length]
+        [--cases right reversed length] [--why] [--only N ...]
 
 ``save`` writes the raw draws of ``tests/strategies.py`` (four-bars and
 slider-cranks, a diagram, a photo seed, a wrong length) as JSON; ``read``,
@@ -87,7 +87,8 @@ def _intended(case: str, rows: list[Any], wrong: str | None) -> bool:
                for r in rows)
 
 
-def read(path: str, levels: list[str], only: list[str]) -> None:
+def read(path: str, levels: list[str], only: list[str], why: bool = False,
+         numbers: list[int] | None = None) -> None:
     from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels
 
     from graphkin.check import CheckTolerance, Diagnoser, Evaluator
@@ -111,6 +112,8 @@ def read(path: str, levels: list[str], only: list[str]) -> None:
             continue
         seen.add(key)
         n += 1
+        if numbers and n not in numbers:
+            continue
         name = sorted(images)[d["seed"] % len(images)]
         f = 1 + d["factor"] if d["longer"] else 1 - d["factor"]
         wrong = planted_wrong(name, images[name], pole, f)
@@ -129,6 +132,11 @@ def read(path: str, levels: list[str], only: list[str]) -> None:
                     old = case == "length" and _intended(case, rows, name)
                 except Exception:  # noqa: BLE001 - counted as not read
                     rows, good, old = [], False, False
+                if why and not good:
+                    bad = [f"{r.key} {r.verdict} {r.code}" for r in rows
+                           if r.verdict != OK or r.key.endswith(f"_{wrong}")]
+                    print(f"  #{n} {d['kind']} {d['diagram']} seed {d['seed']} {level} {case}"
+                          f" (wrong {wrong}): " + ("; ".join(bad) or "no rows"), flush=True)
                 tally[(level, case)][0] += good
                 tally[(level, case)][1] += 1
                 tally[(level, "old length")][0] += old
@@ -151,11 +159,15 @@ def main() -> None:
     ap.add_argument("--levels", nargs="+", default=["scan", "mild", "phone", "harsh"])
     ap.add_argument("--cases", nargs="+", choices=["right", "reversed", "length"],
                     default=["right", "reversed", "length"])
+    ap.add_argument("--only", nargs="+", type=int, metavar="N",
+                    help="read only these mechanisms (the numbers --why prints)")
+    ap.add_argument("--why", action="store_true",
+                    help="print each photo not read as intended, with its rows")
     args = ap.parse_args()
     if args.what == "save":
         save(args.sample, args.draws)
     else:
-        read(args.sample, args.levels, args.cases)
+        read(args.sample, args.levels, args.cases, args.why, args.only)
 
 
 if __name__ == "__main__":
