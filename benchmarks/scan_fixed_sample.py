@@ -2,7 +2,7 @@
 
 Usage::
 
-    python benchmarks/scan_fixed_sample.py save sample.json [--draws 160]
+    python benchmarks/scan_fixed_sample.py save sample.json [--draws 160] [--seed S]
     python benchmarks/scan_fixed_sample.py read sample.json [--levels scan mild phone harsh]
         [--cases right reversed length] [--why] [--only N ...]
 
@@ -34,14 +34,15 @@ import numpy as np
 sys.path.insert(0, str(Path.cwd() / "tests"))
 
 
-def save(path: str, draws: int) -> None:
+def save(path: str, draws: int, seed: int | None = None) -> None:
     from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as with_seed
     from hypothesis import strategies as st
     from strategies import fourbars, slider_cranks
 
     out: list[dict[str, Any]] = []
 
-    @settings(max_examples=draws, derandomize=True, database=None, deadline=None,
+    @settings(max_examples=draws, derandomize=seed is None, database=None, deadline=None,
               phases=[Phase.generate], suppress_health_check=list(HealthCheck))
     @given(rm=st.one_of(fourbars(), slider_cranks()),
            diagram=st.sampled_from(["velocity", "acceleration"]),
@@ -50,7 +51,7 @@ def save(path: str, draws: int) -> None:
         out.append({"kind": rm.kind, "data": rm.data, "diagram": diagram, "seed": seed,
                     "factor": factor, "longer": longer})
 
-    one()
+    (with_seed(seed)(one) if seed is not None else one)()
     Path(path).write_text(json.dumps(out), encoding="utf-8")
     print(f"{len(out)} draws written to {path}")
 
@@ -156,6 +157,9 @@ def main() -> None:
     ap.add_argument("what", choices=["save", "read"])
     ap.add_argument("sample")
     ap.add_argument("--draws", type=int, default=160)
+    ap.add_argument("--seed", type=int, default=None,
+                    help="draw at random from this seed instead of Hypothesis's derandomized "
+                         "order (which starts from the simplest mechanisms)")
     ap.add_argument("--levels", nargs="+", default=["scan", "mild", "phone", "harsh"])
     ap.add_argument("--cases", nargs="+", choices=["right", "reversed", "length"],
                     default=["right", "reversed", "length"])
@@ -165,7 +169,7 @@ def main() -> None:
                     help="print each photo not read as intended, with its rows")
     args = ap.parse_args()
     if args.what == "save":
-        save(args.sample, args.draws)
+        save(args.sample, args.draws, args.seed)
     else:
         read(args.sample, args.levels, args.cases, args.why, args.only)
 
