@@ -131,8 +131,10 @@ def read(path: str, levels: list[str], only: list[str], why: bool = False,
                     rows = mark_scan(sol, got, "p", CheckTolerance(), diag).rows
                     good = _intended(case, rows, wrong)
                     old = case == "length" and _intended(case, rows, name)
-                except Exception:  # noqa: BLE001 - counted as not read
+                except Exception as exc:  # noqa: BLE001 - counted as not read
                     rows, good, old = [], False, False
+                    if why:
+                        print(f"  #{n} raised {type(exc).__name__}: {exc}", flush=True)
                 if why and not good:
                     bad = [f"{r.key} {r.verdict} {r.code}" for r in rows
                            if r.verdict != OK or r.key.endswith(f"_{wrong}")]

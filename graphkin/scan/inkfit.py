@@ -248,6 +248,8 @@ def fit_line(sheet: Sheet, start: np.ndarray, end: np.ndarray, others: list[np.n
             return None
         # the hand's wobble wanders: only the ink nearest the end predicts the line there
         ok &= t >= float(t[ok].max()) - _LOCAL_MM
+        if np.count_nonzero(ok) * _STEP_MM < _MIN_INK_MM:
+            return None      # the ink nearest the end is a dot or a dash: no line to fit
         tt, mm_, w = t[ok], mid[ok], mass[ok]
         keep = np.ones(len(tt), bool)
         for _ in range(4):

@@ -24,7 +24,7 @@ from strategies import fourbars, slider_cranks  # noqa: E402
 import graphkin.scan.read as scan_read  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
-from graphkin.scan.inkfit import Sheet, refine_points  # noqa: E402
+from graphkin.scan.inkfit import Sheet, fit_line, refine_points  # noqa: E402
 from graphkin.scan.sheet import PX_PER_MM, Page  # noqa: E402
 
 _H_MM = 100.0
@@ -167,3 +167,24 @@ def test_random_photos_refined_near_the_drawn_images_and_a_planted_mistake_named
         else:
             got = {r.key: r.verdict for r in rows}
             assert got[f"{letter}_{name}"] == WRONG, (name, f, level)
+
+
+def test_a_dot_beyond_a_line_is_no_line() -> None:
+    # A photo of the fresh sample (a four-bar's acceleration polygon, phone level)
+    # raised numpy's "Singular matrix": the band along a hypothesised line held ink
+    # 2.5-20 mm along it, then another stroke's ink merged with it (left out) up to
+    # 46.8 mm, then one dot at 47.5 mm. The fit keeps only the ink within 20 mm of
+    # the last found (the wobble wanders), which left the dot alone: one middle, and
+    # a straight line through one point is no fit. Such a band shows no line: None.
+    start, end = np.array([20.0, 20.0]), np.array([75.0, 20.0])
+    ratio = _raster([(np.array([22.5, 20.0]), np.array([40.0, 20.0])),
+                     (np.array([67.4, 20.0]), np.array([67.6, 20.0]))],
+                    np.random.default_rng(0), 0.6, 0.0)
+    other = np.array([[41.0, 20.5], [66.0, 20.5]])      # parallel, 0.5 mm off: merged ink
+    got = fit_line(Sheet(ratio, (0, 0), _H_MM), start, end, [other], clear_end=2.5)
+    assert got is None
+    # the same band without the dot is the line along y = 20 fitted to its ink (the control)
+    ratio = _raster([(np.array([22.5, 20.0]), np.array([40.0, 20.0]))],
+                    np.random.default_rng(0), 0.6, 0.0)
+    got = fit_line(Sheet(ratio, (0, 0), _H_MM), start, end, [other], clear_end=2.5)
+    assert got is None or abs(float(got.point[1]) - 20.0) < 0.1
