@@ -131,6 +131,10 @@ def test_a_polygon_is_read_turned_exactly_when_it_is_drawn_turned(
     assert read.is_turned == turn
     for n, q in zip(names, drawn):
         assert np.hypot(*(read.points[n] - q)) < 1.0, n
+    # the verdict does not move when the vertices move by round-off of their size
+    again = _read([_ray(q * (1.0 + 1e-12)) for q in drawn], places, turned)
+    _match(again)
+    assert again.is_turned == turn
 
 
 def test_a_mistake_within_2_mm_of_the_reversed_place_is_not_named() -> None:
