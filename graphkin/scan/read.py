@@ -12,7 +12,11 @@ done right from the student's own images read wrong before it
 to the pencil segments' ends near those places (within 4 mm, or 12 % of the
 vector's length on the sheet if that is more) all at once, the assignment of
 least total distance, two names never on one vertex; where two or more
-segments end there, the image is where their lines meet.  The points, in mm
+segments end there, the image is where their lines meet.  A polygon drawn
+for the wrong sense of the input's ω is turned 180° as a whole, one
+decision for the drawing: the names are also given for the places turned
+(each image's reversed place first, then its usual mistakes' turned), and
+the reading of less total distance is taken.  The points, in mm
 on the sheet, with the printed scale and pole, are then marked as
 ``check --drawing`` marks a drawing with a stated scale
 (:func:`graphkin.check.drawing.check_polygons`: not turned, within the
@@ -46,6 +50,7 @@ from graphkin.scan import need_cv2
 from graphkin.scan.inkfit import refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
+from graphkin.tolerance import sign
 
 __all__ = ["SheetRead", "read_sheet", "mark_scan", "places", "NOT_FOUND"]
 
@@ -108,6 +113,13 @@ class SheetRead:
     arrows : ndarray (k, 2)
         The tips of arrowheads in the middle of a line from the pole, where
         no segment ends (sheet mm; :func:`graphkin.scan.strokes.arrow_tips`).
+    turned : dict
+        Name -> the places it can be when the whole polygon is drawn turned
+        180° (the reversed one first; see :func:`_places`); empty: the
+        turned polygon is not looked for.
+    is_turned : bool
+        Whether the names were given for the turned polygon (its total
+        distance was the less).
     """
 
     rect: Rectified
@@ -119,6 +131,8 @@ class SheetRead:
     notes: list[str] = field(default_factory=list)
     carried: dict[str, list[np.ndarray]] = field(default_factory=dict)
     arrows: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    turned: dict[str, list[np.ndarray]] = field(default_factory=dict)
+    is_turned: bool = False
 
 
 def _names(sol: Any) -> list[str]:
@@ -136,9 +150,23 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
     and of every other image's exact place (a right neighbour is not read
     as this image's mistake).
     """
+    return _places(sol, layout, diag)[0]
+
+
+def _places(sol: Any, layout: Any, diag: Diagnoser
+            ) -> tuple[dict[str, list[np.ndarray]], dict[str, list[np.ndarray]]]:
+    """:func:`places`, and the places of the polygon turned 180° about the pole.
+
+    The turned polygon (the input's ω taken the wrong way, Sec. 3.4) is one
+    decision for the whole drawing, not one per image: its places are those
+    of :func:`places` turned about the pole (each image's reversed place
+    first, then its exact one and each usual mistake's, turned: that mistake
+    and the reversed sense), kept by the same rules turned, so clear of
+    every other image's *reversed* place, where the turned polygon's
+    neighbours are.
+    """
     letter = "V" if layout.diagram == "velocity" else "A"
     pole = np.array(layout.pole)
-    x0, y0, x1, y1 = layout.polygon_box
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     exact: dict[str, np.ndarray] = {}
     for name in _names(sol):
@@ -146,6 +174,8 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
         if float(np.hypot(*v)) >= _SHORT_MM:
             exact[name] = pole + v
     out: dict[str, list[np.ndarray]] = {}
+    turned: dict[str, list[np.ndarray]] = {}
+    rights = list(exact.values())
     for name, e in exact.items():
         at = [e, 2 * pole - e]
         key = Key(f"{letter}_{name}", letter, (name,))
@@ -161,19 +191,31 @@ def places(sol: Any, layout: Any, diag: Diagnoser) -> dict[str, list[np.ndarray]
             xy = c.xy
             if xy is not None and not c.ideal and np.all(np.isfinite(xy)):
                 at.append(pole + np.asarray(xy, dtype=float) / layout.per_mm)
-        keep = [e]
-        for c in at[1:]:
-            if not (x0 < c[0] < x1 and y0 < c[1] < y1):
-                continue
-            if float(np.hypot(*(c - pole))) < _CLEAR_MM:
-                continue
-            if any(float(np.hypot(*(c - q))) < _CLEAR_MM for q in exact.values()):
-                continue
-            if any(float(np.hypot(*(c - q))) < 0.3 for q in keep):
-                continue
-            keep.append(c)
-        out[name] = keep
-    return out
+        out[name] = _kept(at, rights, layout)
+        turned[name] = _kept([2 * pole - c for c in at], [2 * pole - q for q in rights], layout)
+    return out, turned
+
+
+def _kept(at: list[np.ndarray], exact: list[np.ndarray], layout: Any) -> list[np.ndarray]:
+    """``at[0]``, and those of ``at[1:]`` clear of the rest (one of each place).
+
+    Kept: inside the polygon area, clear of the pole and of every place in
+    ``exact`` (the images' right places).
+    """
+    pole = np.array(layout.pole)
+    x0, y0, x1, y1 = layout.polygon_box
+    keep = [at[0]]
+    for c in at[1:]:
+        if not (x0 < c[0] < x1 and y0 < c[1] < y1):
+            continue
+        if float(np.hypot(*(c - pole))) < _CLEAR_MM:
+            continue
+        if any(float(np.hypot(*(c - q))) < _CLEAR_MM for q in exact):
+            continue
+        if any(float(np.hypot(*(c - q))) < 0.3 for q in keep):
+            continue
+        keep.append(c)
+    return keep
 
 
 def too_short(sol: Any, layout: Any) -> list[str]:
@@ -203,7 +245,8 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
     segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
-    read = SheetRead(rect, layout, segs, places=places(sol, layout, diag),
+    at, turned = _places(sol, layout, diag)
+    read = SheetRead(rect, layout, segs, places=at, turned=turned,
                      arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
                                        np.array(layout.pole)))
     _match(read)
@@ -273,6 +316,14 @@ def _match(read: SheetRead) -> None:
     pole and its label hide the first millimetres of every vector) is no
     vertex.  Where another assignment costs hardly more (1 mm) and
     swaps two names' vertices, a note says the two cannot be told apart.
+
+    With ``read.turned`` (the places of the polygon turned 180°, Sec. 3.4:
+    the input's ω taken the wrong way), the names are given for those places
+    too, and the turned reading is taken when its total cost is the less
+    (beyond round-off; ``read.is_turned``).  Per image, a turned image near
+    another image's right place would take that name (its own reversed place
+    was dropped as a right neighbour's), and one near one of its unturned
+    mistakes' places a stray end there.
     """
     read.points = {}
     read.notes = []
@@ -287,29 +338,43 @@ def _match(read: SheetRead) -> None:
     gap = np.concatenate([_gap_ends(segs, ends_at), np.zeros(extra, bool)])
     strong = np.concatenate([_strength(ends_at), np.zeros(extra)])
     names = list(read.places)
-    cands: dict[str, list[tuple[float, int]]] = {}
-    reach: dict[str, float] = {}
-    for name in names:
-        at = read.places[name]
-        reach[name] = max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
-        if not len(pts):
-            cands[name] = []
-            continue
-        d = np.min([np.hypot(*(pts - c).T) + (_ALTERNATIVE_MM if i else 0.0)
-                    for i, c in enumerate(at)]
-                   + [np.hypot(*(pts - c).T) + _CARRIED_MM for c in read.carried.get(name, ())],
-                   axis=0) + np.where(gap, _GAP_MM, 0.0)
-        best: list[tuple[float, int]] = []
-        for j in np.argsort(d - strong, kind="stable").tolist():
-            if not ok[j] or d[j] > reach[name]:
+    reach = {n: max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
+             for n, at in read.places.items()}
+
+    def candidates(where: dict[str, list[np.ndarray]]) -> dict[str, list[tuple[float, int]]]:
+        cands: dict[str, list[tuple[float, int]]] = {}
+        for name in names:
+            at = where[name]
+            if not len(pts):
+                cands[name] = []
                 continue
-            if any(float(np.hypot(*(pts[j] - pts[k]))) < _SAME_MM for _, k in best):
-                continue                       # another end of a vertex already listed
-            best.append((float(d[j] - strong[j]), int(j)))
-            if len(best) == _CHOICES:
-                break
-        cands[name] = best
-    chosen = _best_assignment(read, names, cands, reach, pts)
+            d = np.min([np.hypot(*(pts - c).T) + (_ALTERNATIVE_MM if i else 0.0)
+                        for i, c in enumerate(at)]
+                       + [np.hypot(*(pts - c).T) + _CARRIED_MM
+                          for c in read.carried.get(name, ())],
+                       axis=0) + np.where(gap, _GAP_MM, 0.0)
+            best: list[tuple[float, int]] = []
+            for j in np.argsort(d - strong, kind="stable").tolist():
+                if not ok[j] or d[j] > reach[name]:
+                    continue
+                if any(float(np.hypot(*(pts[j] - pts[k]))) < _SAME_MM for _, k in best):
+                    continue                       # another end of a vertex already listed
+                best.append((float(d[j] - strong[j]), int(j)))
+                if len(best) == _CHOICES:
+                    break
+            cands[name] = best
+        return cands
+
+    cands = candidates(read.places)
+    chosen, cost = _best_assignment(read, names, cands, reach, pts)
+    read.is_turned = False
+    if read.turned:
+        # the polygon turned 180° as a whole (Sec. 3.4: ω2 taken the wrong way): its places
+        # are the reversed ones, and its usual mistakes' turned; taken when it costs less
+        t_cands = candidates({n: read.turned.get(n) or read.places[n] for n in names})
+        t_chosen, t_cost = _best_assignment(read, names, t_cands, reach, pts)
+        if sign(cost - t_cost, max(cost, t_cost)) > 0:
+            cands, chosen, read.is_turned = t_cands, t_chosen, True
     for name, j in chosen.items():
         p = pts[j]
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)]
@@ -397,8 +462,11 @@ def _gap_ends(segs: np.ndarray, pts: np.ndarray) -> np.ndarray:
 
 
 def _best_assignment(read: SheetRead, names: list[str], cands: dict[str, list[tuple[float, int]]],
-                     reach: dict[str, float], pts: np.ndarray) -> dict[str, int]:
-    """The assignment of segment ends to names of least total cost (branch and bound)."""
+                     reach: dict[str, float], pts: np.ndarray) -> tuple[dict[str, int], float]:
+    """The assignment of segment ends to names of least total cost, and that cost.
+
+    Branch and bound over each name's candidates (or none, at a cost above its reach).
+    """
     order = sorted(names, key=lambda n: (len(cands[n]), names.index(n)))
     miss = {n: reach[n] + _ALTERNATIVE_MM + 1.0 for n in names}
     best: list[Any] = [math.inf, {}]
@@ -424,7 +492,7 @@ def _best_assignment(read: SheetRead, names: list[str], cands: dict[str, list[tu
         walk(i + 1, cost + miss[name], got)
 
     walk(0, 0.0, {})
-    return best[1]
+    return best[1], float(best[0])
 
 
 def _untellable(read: SheetRead, chosen: dict[str, int],
@@ -488,6 +556,11 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
 def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
     """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named.
 
+    Its counterpart for the polygon turned 180° (the reversed sense): a wrong
+    row read within 2 mm of its reversed place names no mistake but
+    ``sense`` (another one there, such as ``normal-reversed+sense``, cannot
+    be told from the reversed sense misread).
+
     And a row that follows from the student's own earlier images
     (:mod:`graphkin.check.carry`) from one read within 2 mm of its right
     place: wrong, not following (that one may only be misread).
@@ -496,11 +569,18 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
     for r in rows:
         name = r.key.split("_", 1)[-1]
         p, at = read.points.get(name), read.places.get(name)
+        back = read.turned.get(name)
         if (r.verdict == WRONG and r.mistake is not None and p is not None and at
                 and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM):
             notes.append(f"{r.key} is read {float(np.hypot(*(p - at[0]))):.1f} mm from its "
                          f"right place, where {r.mistake.code} also puts it: a misread "
                          "cannot be told from that mistake, so none is named")
+            r = dataclasses.replace(r, mistake=None)
+        elif (r.verdict == WRONG and r.mistake is not None and r.mistake.code != "sense"
+              and p is not None and back and float(np.hypot(*(p - back[0]))) < _UNTOLD_MM):
+            notes.append(f"{r.key} is read {float(np.hypot(*(p - back[0]))):.1f} mm from its "
+                         f"place with the sense reversed, where {r.mistake.code} also puts "
+                         "it: a misread cannot be told from that mistake, so none is named")
             r = dataclasses.replace(r, mistake=None)
         elif (r.verdict == FOLLOWS and r.mistake is not None and r.mistake.kind == "carried"
               and _near_right(read, r.follows.split("_", 1)[-1])):
@@ -521,7 +601,11 @@ def _near_right(read: SheetRead, name: str) -> bool:
 
 
 def debug_image(read: SheetRead) -> np.ndarray:
-    """The rectified sheet with the segments (blue), places (grey) and images read (green)."""
+    """The rectified sheet with the segments (blue), places (grey) and images read (green).
+
+    The places drawn are those of the reading taken: the polygon's, or the
+    polygon's turned 180° when it was read turned (``read.is_turned``).
+    """
     cv2 = need_cv2()
     img = cv2.cvtColor(read.rect.gray, cv2.COLOR_GRAY2BGR)
     h = read.layout.size[1]
@@ -533,7 +617,8 @@ def debug_image(read: SheetRead) -> np.ndarray:
     cv2.rectangle(img, px(np.array([x0, y1])), px(np.array([x1, y0])), (200, 200, 0), 1)
     for s in read.segments:
         cv2.line(img, px(s[0]), px(s[1]), (255, 80, 0), 2)
-    for name, at in read.places.items():
+    searched = read.turned if read.is_turned else read.places   # the reading taken
+    for name, at in searched.items():
         for c in at + read.carried.get(name, []):
             q = px(c)
             cv2.drawMarker(img, q, (150, 150, 150), cv2.MARKER_CROSS, 8, 1)
