@@ -36,18 +36,31 @@ fitted lines and the ink's ends along them agree best:
    (the stroke's tip, as :mod:`graphkin.scan.strokes` reads it); the image is
    taken half a pencil line's width inside it, or more where the walk runs
    on over another expected stroke's ink (a line going on through ``p``);
-   an end run on more than 1.5 mm is not used.
+   an end run on more than 1.5 mm is not used, nor is one where the walk
+   is still on ink when it stops (:data:`MOVE_MAX_MM` and 1.5 mm past
+   ``p``: no end found).  A line going on through ``p`` is also looked for
+   with this image's other lines drawn to where this line passes ``p``
+   (the point read may be off along it by 1-4 mm where segments meet at a
+   narrow angle, and a link's line nearly straight on from the vector
+   then lies on the walk only from there).
 4. **The point.**  Each line holds the image across itself (σ from its
    fit), each end along its line (σ 0.3 mm: ends overshot or stopped short
    by up to 0.4 mm); an end farther from the lines' crossing than the two
-   can differ by (2.5 σ) is left out, and where every end found is, the
-   lines are not the ones drawn: nothing is decided.  Lines well apart fix
-   the point by their crossing; along lines nearly parallel, the ends decide.
+   can differ by (2.5 σ) is left out.  A lone end past the crossing ran on
+   over other ink (a stroke, a letter); one short of it is a stroke that
+   stops before the lines cross, and two past it agree that the lines cross
+   short of the image, so where either is and no end agrees, the lines are
+   not where they were drawn: nothing is decided.  Lines well apart fix the point
+   by their crossing; along lines nearly parallel, the ends decide.
 
 The point so found replaces the one read only when it is well determined
 (σ under :data:`SIGMA_MAX_MM` in every direction) and within
 :data:`MOVE_MAX_MM` of it; one moved farther than the drawing tolerance is
 said so in a note.  Measured in docs/checking.md ("How well it reads").
+
+Before the image points are read, :func:`past_crossings` cuts back a
+segment's tip that the detector carried over paper, past a line it
+crosses, to the student's letter written straight on along it.
 
 References
 ----------
@@ -68,12 +81,15 @@ from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
 __all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_end", "refine_point", "refine_points",
-           "refine_read", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
+           "refine_read", "past_crossings", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35
 """A refined point is used only when known to this (σ, mm) in every direction."""
-MOVE_MAX_MM = 3.0
-"""A refined point farther than this from the one read is not used (another vertex)."""
+MOVE_MAX_MM = 4.5
+"""A refined point farther than this from the one read is not used (another vertex).
+
+Three strokes meeting at 5-11° have their segments cross up to 4 mm short of the
+image (docs/checking.md); images are at least 5 mm apart where they can be read."""
 _BAND_MM = 1.2
 """Half the band sampled across a hypothesised line (mm)."""
 _STEP_MM = 0.2
@@ -114,6 +130,14 @@ _MIN_COVER = 0.6
 _MIN_INK_MM = 5.0
 _BARB_DEG = (15.0, 20.0, 25.0)
 _BARB_MM = 3.0
+_CROSSED_MM = 20.0
+"""A line at least this long is one a stroke may end on (shorter: pieces, letters, barbs)."""
+_CROSS_SIN = math.sin(math.radians(8.0))
+"""Lines under 8° apart are not looked at as crossing (their ink is one)."""
+_LETTER_MM = 3.0
+"""Ink beyond a stretch of paper past a crossing, shorter than this, is a letter or a barb."""
+_PAPER_MM = 0.5
+"""A stretch of paper at least this long along a stroke's line parts two inks."""
 _TOLD_MM = 0.5
 """A point moved farther than this (the default drawing tolerance) is said so in a note."""
 _SPREAD_SIN = math.sin(math.radians(3.0))
@@ -248,8 +272,10 @@ def fit_line(sheet: Sheet, start: np.ndarray, end: np.ndarray, others: list[np.n
             return None
         # the hand's wobble wanders: only the ink nearest the end predicts the line there
         ok &= t >= float(t[ok].max()) - _LOCAL_MM
-        if np.count_nonzero(ok) * _STEP_MM < _MIN_INK_MM:
-            return None      # the ink nearest the end is a dot or a dash: no line to fit
+        if through is None and np.count_nonzero(ok) * _STEP_MM < _MIN_INK_MM:
+            # the ink nearest the end is a dot or a dash: no line to fit (a line held
+            # through the pole has the pole as its other point, and is fitted)
+            return None
         tt, mm_, w = t[ok], mid[ok], mass[ok]
         keep = np.ones(len(tt), bool)
         for _ in range(4):
@@ -318,7 +344,7 @@ def _center_dark(sheet: Sheet, p: np.ndarray, u: np.ndarray) -> float:
 
 
 def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
-            beyond_mm: float = MOVE_MAX_MM + 1.0) -> float | None:
+            beyond_mm: float = MOVE_MAX_MM + 1.5) -> float | None:
     """Where the stroke's ink ends along a fitted line (mm from ``line.point``, + beyond).
 
     Walked outward from ``inside_mm`` before ``line.point`` while the
@@ -335,12 +361,15 @@ def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
     dark = prof >= half
     if not np.any(dark[: max(int(1.0 / 0.05), 1)]):
         return None
-    last = 0
+    last, ended = 0, False
     for k in range(1, len(s)):
         if dark[k]:
             last = k
         elif s[k] - s[last] > 1.0:
+            ended = True
             break
+    if not ended:
+        return None          # still on ink (or in a gap) where the walk stops: no end found
     if last + 1 < len(s) and prof[last] > prof[last + 1]:
         frac = (prof[last] - half) / (prof[last] - prof[last + 1])
         return float(s[last] + min(max(frac, 0.0), 1.0) * 0.05)
@@ -389,7 +418,12 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         if end is None:
             continue
         cover = _cover(fl.point, fl.direction, others)
-        if cover > _COVER_MAX_MM:
+        # and this image's other lines drawn to where this one passes it (the point read
+        # may be off along it, 1-4 mm where segments meet at a narrow angle): a line going
+        # on through the image, nearly straight on, is then on the walk past it
+        mine = [np.array([starts[j], fl.point]) for j in range(len(starts)) if j != k]
+        if max(cover, _cover(fl.point, fl.direction, [sg for sg in others if not any(
+                _same(sg, o) for o in own)] + mine)) > _COVER_MAX_MM:
             continue
         tip = fl.point + (end - cover) * fl.direction
         tips.append((tip, fl.direction, max(_SIGMA_END_MM, cover / 2)))
@@ -405,11 +439,15 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
     if spread > _SPREAD_SIN:
         cross = np.linalg.solve(M, r)
         cov = np.linalg.inv(M)
-        agree = [(tp, d, sg) for tp, d, sg in tips
-                 if abs(float((tp - cross) @ d)) <= 2.5 * math.sqrt(sg**2 + float(d @ cov @ d))]
-        if tips and not agree:
-            return None          # no end where the lines cross: a line is not the one drawn
-        tips = agree
+        gap = [float((tp - cross) @ d) / (2.5 * math.sqrt(sg**2 + float(d @ cov @ d)))
+               for tp, d, sg in tips]
+        if tips and not any(abs(g) <= 1.0 for g in gap) and (
+                min(gap) < -1.0 or sum(g > 1.0 for g in gap) > 1):
+            # a stroke stops short of where the lines cross, or two strokes' ends agree
+            # past it: the lines are not where they were drawn
+            return None
+        # a lone end past the crossing ran on over other ink (a stroke, a letter): not used
+        tips = [t_ for t_, g in zip(tips, gap, strict=True) if abs(g) <= 1.0]
     elif len(tips) > 1:
         # one direction: the ends that agree with their median along it
         d0 = tips[0][1]
@@ -519,3 +557,71 @@ def refine_read(read: Any, sol: Any, ratio: np.ndarray, origin_px: tuple[int, in
             read.notes.append(f"{name.lower()} is read {move:.1f} mm from where the pencil "
                               "segments' ends put it: where its lines, fitted to the ink along "
                               "their length, and their ends agree")
+
+
+def past_crossings(segs: np.ndarray, sheet: Sheet) -> np.ndarray:
+    """The segments with each tip run on past a crossing over paper to a letter cut back (mm).
+
+    A stroke drawn to an image on a long line (a link's line to an image in
+    the middle of a straight line from the pole) ends on that line's ink;
+    the student's letter is written just past the image, often straight on
+    along the stroke.  The detector joins the letter's stroke to the line
+    over the paper between them (gaps under 3 mm are a pencil lifted), and
+    the tip is then walked on through the letter's ink, up to 5 mm past the
+    image (:mod:`graphkin.scan.strokes`), out of reach of the places it can
+    be.  Here, where a segment crosses a line at least
+    :data:`_CROSSED_MM` long (over 8° apart) 1-6 mm before its tip, and
+    along its middle past the crossing the ink stops, paper follows for at
+    least :data:`_PAPER_MM`, and the ink after it runs under
+    :data:`_LETTER_MM` to the tip, the tip is put where the ink past the
+    crossing stops (half the stroke's darkness): a stroke's own piece after a
+    pencil gap is longer, and a line crossed in its middle goes on.
+    """
+    out = np.array(segs, dtype=float, copy=True)
+    if len(segs) < 2:
+        return out
+    d = segs[:, 1] - segs[:, 0]
+    length = np.hypot(d[:, 0], d[:, 1])
+    step = 0.05
+    for i in range(len(segs)):
+        if length[i] == 0.0:
+            continue
+        mid = segs[i, 0] + np.outer(np.linspace(0.15, 0.85, 25), d[i])
+        half = 0.5 * float(np.median(sheet.darkness(mid)))
+        for k in (0, 1):
+            tip, far = segs[i, k], segs[i, 1 - k]
+            w = (tip - far) / length[i]
+            nrm = np.array([-w[1], w[0]])
+            cut = None
+            for j in np.flatnonzero(length >= _CROSSED_MM).tolist():
+                if j == i:
+                    continue
+                v = d[j] / length[j]
+                if abs(float(w[0] * v[1] - w[1] * v[0])) < _CROSS_SIN:
+                    continue
+                A = np.array([nrm, [-v[1], v[0]]])
+                x = np.linalg.solve(A, np.array([float(nrm @ far), float(A[1] @ segs[j, 0])]))
+                back = float((tip - x) @ w)
+                along = float((x - segs[j, 0]) @ v)
+                if not (1.0 < back < _LETTER_MM + 3.0 and 0.0 < along < length[j]):
+                    continue
+                s = np.arange(0.0, back + 1e-9, step)
+                base = x + np.outer(s, w)
+                prof = np.mean([sheet.darkness(base + m * 0.12 * nrm) for m in (-1, 0, 1)],
+                               axis=0)
+                dark = prof >= half
+                if not dark[0] or np.all(dark):
+                    continue
+                stop = int(np.argmin(dark))                 # the first paper past the crossing
+                again = np.flatnonzero(dark[stop:])
+                if not len(again) or s[stop + int(again[0])] - s[stop] < _PAPER_MM:
+                    continue
+                if back - float(s[stop + int(again[0])]) >= _LETTER_MM:
+                    continue
+                frac = (prof[stop - 1] - half) / max(float(prof[stop - 1] - prof[stop]), 1e-12)
+                at = x + (float(s[stop - 1]) + min(max(float(frac), 0.0), 1.0) * step) * w
+                if cut is None or float((at - far) @ w) < float((cut - far) @ w):
+                    cut = at
+            if cut is not None:
+                out[i, k] = cut
+    return out

@@ -47,7 +47,7 @@ from graphkin.check.polygon import Polygon
 from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
-from graphkin.scan.inkfit import refine_read
+from graphkin.scan.inkfit import Sheet, past_crossings, refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
@@ -245,6 +245,7 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
     segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
+    segs = past_crossings(segs, Sheet(ratio, (box[0], box[1]), h))   # tips run on to letters
     at, turned = _places(sol, layout, diag)
     read = SheetRead(rect, layout, segs, places=at, turned=turned,
                      arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
