@@ -312,7 +312,8 @@ def _match(read: SheetRead) -> None:
     chosen = _best_assignment(read, names, cands, reach, pts)
     for name, j in chosen.items():
         p = pts[j]
-        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)]
+        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)
+                if j < len(ends_at)]           # an arrowhead's tip: on its own line
         read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
