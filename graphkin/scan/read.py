@@ -369,7 +369,8 @@ def _own_end(sheet: Sheet, far: np.ndarray, tip: np.ndarray) -> np.ndarray:
     under 3 mm, also onto another stroke's ink beyond one; ink past a gap is
     the stroke's own only when it runs on :data:`_OWN_RUN_MM` along the line
     (a line crossing it at over 40° is narrower along it): the end is then
-    the last sample at least half as dark as the stroke before that gap.
+    the last sample before that gap (a gap: under a quarter of the stroke's
+    darkness).
     """
     length = float(np.hypot(*(tip - far)))
     u = (tip - far) / max(length, 1e-12)
@@ -377,7 +378,9 @@ def _own_end(sheet: Sheet, far: np.ndarray, tip: np.ndarray) -> np.ndarray:
     if len(t) < 2:
         return tip
     dark = sheet.darkness(far + np.outer(t, u))
-    inked = dark >= 0.5 * float(np.median(dark[: max(len(t) // 4, 1)]))
+    # a gap is paper: under a quarter of the stroke's darkness (a blurred, noisy stroke dips
+    # under half of it along its own ink)
+    inked = dark >= 0.25 * float(np.median(dark[: max(len(t) // 4, 1)]))
     last, run = 0, 0
     for k in range(1, len(t)):
         if not inked[k]:

@@ -612,8 +612,7 @@ _BARB_O = np.arange(0.6, 1.45, 0.1)
 """How far beside the line (mm) a barb's ink is read: clear of the line's own, blurred."""
 _BARB_DARK = 0.15
 """Both barbs' ink, above the line's own beside it, at least this part of the line's darkness
-(a barb 2 mm long at 15° reaches hardly 0.7 mm beside the line: 0.2-0.25 of it is read; the
-barbs' edges then decide, :func:`_barbs_meet`)."""
+(barbs at 15° give 0.2-0.25 of it; their edges then decide, :func:`_barbs_meet`)."""
 
 
 def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
@@ -706,10 +705,8 @@ def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
 def _broken_ends(segs: np.ndarray) -> np.ndarray:
     """Which segment ends (2n) are where one straight stroke is broken, not where it ends.
 
-    An end is a break when another segment within 3° of it, whose line
-    passes within 0.6 mm of the end, runs on past it by over 2.5 mm away
-    from the end's own segment (pieces of one line overlapping or leaving a
-    gap; a stroke ending on another's body at a wider angle is no break).
+    Another segment within 3°, its line within 0.6 mm of the end, runs on
+    past it by over 2.5 mm (pieces of one line overlapping or leaving a gap).
     """
     out = np.zeros(2 * len(segs), bool)
     for i, sg in enumerate(segs):
@@ -748,11 +745,22 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
     line's) is the line's own, ``h`` off its middle, ahead of the tip, and
     behind it the barb's outer edge, ``(t* - t) tan α + h / cos α`` off: a
     straight line is fitted to that edge where it stands over 0.2 mm clear of
-    the line's own (from the tip back to the barb's widest; not where the ink
-    runs on to the sampled band's border, other ink joining it; fitted again
-    without samples over 0.1 mm off), and the tip ``t*`` solved from it.
-    Each barb must leave at 8-40°; the two tips must agree within 1 mm.
+    the line's own (from the tip back to the barb's widest), and the tip
+    ``t*`` solved from it.  Each barb must leave at 8-40°; the two tips must
+    agree within 1 mm.  Failing that, once more without the edge where the
+    ink runs on to the sampled band's border (other ink joining the barb's:
+    a letter, a stroke) and refitted without samples over 0.1 mm off.
     """
+    for clean in (False, True):
+        at = _barbs_fit(dark, t, o, t0, line, clean)
+        if at is not None:
+            return at
+    return None
+
+
+def _barbs_fit(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float, line: float,
+               clean: bool) -> float | None:
+    """:func:`_barbs_meet` once; ``clean``: other ink at the barbs' edges left out."""
     mid = len(o) // 2
     meets = []
     for side in (1.0, -1.0):
@@ -764,9 +772,8 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
             return None
         h = float(np.median([_edge(dark[k, cols], oo, 0.5 * line) for k in ahead]))
         e = np.array([_edge(dark[k, cols], oo, 0.5 * line) for k in behind])
-        # an edge out at the grid's border is other ink joining the barb's (a letter, a
-        # stroke): no edge of the barb
-        out = (e > h + 0.2 * PX_PER_MM) & (e < float(oo[-1]) - 1e-9)
+        # clean: an edge out at the grid's border is other ink joining the barb's
+        out = (e > h + 0.2 * PX_PER_MM) & ((e < float(oo[-1]) - 1e-9) | (not clean))
         if np.count_nonzero(out) < 4:
             return None
         # from the first clear sample back to the widest (the barb's end is rounded)
@@ -779,7 +786,7 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
         slope, icpt = np.polyfit(t[behind][idx], e[idx], 1)
         # once more without the samples over 0.1 mm off (ink joining the barb's edge)
         fit = np.abs(e[idx] - (slope * t[behind][idx] + icpt)) < 0.1 * PX_PER_MM
-        if 3 <= np.count_nonzero(fit) < len(idx):
+        if clean and 3 <= np.count_nonzero(fit) < len(idx):
             slope, icpt = np.polyfit(t[behind][idx][fit], e[idx][fit], 1)
         tan = -float(slope)
         if not math.tan(math.radians(8.0)) <= tan <= math.tan(math.radians(40.0)):
