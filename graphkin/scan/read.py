@@ -84,6 +84,13 @@ _TELL_MM = 1.0
 _GAP_MM = 2.0
 _STRONG_MM = 0.5
 _GAP_SIN = math.sin(math.radians(8.0))
+_PAST_MM = 1.0
+"""A vertex read farther than this beyond every stroke's end there, on bare paper, is the
+crossing of a line passing by (the hand stops short by up to 0.3 mm)."""
+_HALF_END_MM = 0.5
+"""The rounded end of a stroke and of a line it meets: left out of the stretch between."""
+_OWN_RUN_MM = 1.2
+"""Ink past a gap in a stroke is its own when it runs on this far along it (:func:`_own_end`)."""
 _RAY_LINE_MM = 1.5
 _RAY_START_MM = 10.0
 """A segment end under this far from the pole, on a line through the pole within 1.5 mm,
@@ -120,6 +127,9 @@ class SheetRead:
     is_turned : bool
         Whether the names were given for the turned polygon (its total
         distance was the less).
+    sheet : Sheet or None
+        The pencil's darkness on the sheet (:class:`graphkin.scan.inkfit.Sheet`),
+        to tell whether a stroke runs on to a vertex read past its end.
     """
 
     rect: Rectified
@@ -133,6 +143,7 @@ class SheetRead:
     arrows: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     turned: dict[str, list[np.ndarray]] = field(default_factory=dict)
     is_turned: bool = False
+    sheet: Sheet | None = None
 
 
 def _names(sol: Any) -> list[str]:
@@ -245,11 +256,13 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
            int(np.ceil((h - y0) * PX_PER_MM)))
     ratio = pencil(rect.gray, ink, box)
     segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
-    segs = past_crossings(segs, Sheet(ratio, (box[0], box[1]), h))   # tips run on to letters
+    sheet = Sheet(ratio, (box[0], box[1]), h)
+    segs = past_crossings(segs, sheet)                      # tips run on to letters
     at, turned = _places(sol, layout, diag)
     read = SheetRead(rect, layout, segs, places=at, turned=turned,
                      arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
-                                       np.array(layout.pole)))
+                                       np.array(layout.pole)),
+                     sheet=sheet)
     _match(read)
     for _ in range(_CARRY_ROUNDS):
         if not _carried(read, sol, diag):
@@ -378,10 +391,99 @@ def _match(read: SheetRead) -> None:
             cands, chosen, read.is_turned = t_cands, t_chosen, True
     for name, j in chosen.items():
         p = pts[j]
-        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)]
-        read.points[name] = vertex_at(segs, sorted(set(near)), p, pole)
+        near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)
+                if j < len(ends_at)]           # an arrowhead's tip: on its own line
+        read.points[name] = _vertex(read, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
+
+
+def _vertex(read: SheetRead, near: list[int], p: np.ndarray, pole: np.ndarray) -> np.ndarray:
+    """The vertex where segments ``near`` end at ``p`` (:func:`vertex_at`), on their ink.
+
+    :func:`vertex_at` also crosses the strokes ending there with long lines
+    passing within 3 mm (a stroke run on over a line's ink ends past it).
+    A line passing by that the strokes never reach puts the vertex on bare
+    paper beyond every stroke's end: the lines' crossing is then no vertex
+    drawn (a four-bar's link `a b` passing 3 mm beyond `f` when `b` is drawn
+    short), and the vertex is read from the strokes ending there alone.  A
+    stroke's end is past its vertex, or short of it by the hand's 0.3 mm
+    (Sec. 3.4: each vector drawn to its image point); a vertex more than
+    :data:`_PAST_MM` beyond every end, with no pencil line running on to it
+    (under half the stretch as dark as half the stroke), is such a crossing.
+    Each end is where the stroke's own ink ends (:func:`_own_end`), not
+    where a segment's tip walked over a gap onto the passing line's ink.
+    """
+    v = vertex_at(read.segments, near, p, pole)
+    if not near or read.sheet is None:
+        return v
+    segs = read.segments.copy()
+    for k in near:
+        t = int(np.argmin(np.hypot(*(segs[k] - p).T)))
+        tip, far = segs[k, t], segs[k, 1 - t]
+        u = (tip - far) / max(float(np.hypot(*(tip - far))), 1e-12)
+        segs[k, t] = tip = _own_end(read.sheet, far, tip)
+        past = float((v - tip) @ u)
+        if past <= _PAST_MM or _inked(read.sheet, far, tip, v):
+            return v
+    return vertex_at(segs[near], list(range(len(near))), p, pole)
+
+
+def _own_end(sheet: Sheet, far: np.ndarray, tip: np.ndarray) -> np.ndarray:
+    """Where segment ``far``-``tip``'s own ink ends, walking its line to its tip (mm).
+
+    Its tip (:func:`graphkin.scan.strokes.segments`) is walked over gaps
+    under 3 mm, also onto another stroke's ink beyond one; ink past a gap is
+    the stroke's own only when it runs on :data:`_OWN_RUN_MM` along the line
+    (a line crossing it at over 40° is narrower along it): the end is then
+    the last sample before that gap (a gap: under a quarter of the stroke's
+    darkness).
+    """
+    length = float(np.hypot(*(tip - far)))
+    u = (tip - far) / max(length, 1e-12)
+    t = np.arange(max(length - 4.0, 0.0), length + 0.05, 0.1)
+    if len(t) < 2:
+        return tip
+    dark = sheet.darkness(far + np.outer(t, u))
+    # a gap is paper: under a quarter of the stroke's darkness (a blurred, noisy stroke dips
+    # under half of it along its own ink)
+    inked = dark >= 0.25 * float(np.median(dark[: max(len(t) // 4, 1)]))
+    last, run = 0, 0
+    for k in range(1, len(t)):
+        if not inked[k]:
+            continue
+        run = k if not inked[k - 1] else run
+        if run <= last + 1 or t[k] - t[run] >= _OWN_RUN_MM:
+            last = k
+    if t[-1] - t[last] < _HALF_END_MM:
+        return tip
+    return np.asarray(far + t[last] * u)
+
+
+def _inked(sheet: Sheet, far: np.ndarray, tip: np.ndarray, v: np.ndarray) -> bool:
+    """Whether a pencil line runs on from segment ``far``-``tip``'s end to ``v`` (mm)."""
+    length = float(np.hypot(*(tip - far)))
+    u = (tip - far) / max(length, 1e-12)
+    n = np.array([-u[1], u[0]])
+    # the stroke's own darkness over its last 5 mm, the best of three samples across
+    t_own = np.arange(max(length - 5.0, 0.0), length - 0.5, 0.1)
+    across = np.array([-0.1, 0.0, 0.1])
+    own = sheet.darkness(far + np.outer(t_own, u)[:, None, :]
+                         + across[None, :, None] * n[None, None, :]).max(axis=1)
+    if not len(own):
+        return True
+    stroke = float(np.median(own))
+    # the stretch from the end (and the stroke's rounded end) to the vertex, on the line to v
+    w = v - tip
+    reach = float(np.hypot(*w))
+    wu = w / max(reach, 1e-12)
+    wn = np.array([-wu[1], wu[0]])
+    t = np.arange(_HALF_END_MM, reach - _HALF_END_MM, 0.1)
+    if not len(t):
+        return True
+    dark = sheet.darkness(tip + np.outer(t, wu)[:, None, :]
+                          + across[None, :, None] * wn[None, None, :]).max(axis=1)
+    return bool(np.mean(dark >= 0.5 * stroke) >= 0.5)
 
 
 def _vertex_ends(segs: np.ndarray, pts: np.ndarray, pole: np.ndarray) -> np.ndarray:

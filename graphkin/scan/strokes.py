@@ -610,8 +610,9 @@ _BARB_DEG = np.arange(10.0, 36.0, 1.0)
 """The angles (degrees) an arrowhead's barbs are looked for at, from the vector's line."""
 _BARB_O = np.arange(0.6, 1.45, 0.1)
 """How far beside the line (mm) a barb's ink is read: clear of the line's own, blurred."""
-_BARB_DARK = 0.3
-"""Both barbs' ink, above the line's own beside it, at least this part of the line's darkness."""
+_BARB_DARK = 0.15
+"""Both barbs' ink, above the line's own beside it, at least this part of the line's darkness
+(barbs at 15° give 0.2-0.25 of it; their edges then decide, :func:`_barbs_meet`)."""
 
 
 def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
@@ -633,7 +634,10 @@ def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
     0.5 mm clear of the line); where the tip is, the barbs' outer edges say
     (:func:`_barbs_meet`).  Tips within 2.5 mm of a segment's end (an
     arrowhead at an end: the end is read) are left out, and the weaker of
-    any two within 3 mm.
+    any two within 3 mm; not the end of a piece of one straight stroke that
+    another piece runs on past (:func:`_broken_ends`: the detector breaks a
+    line where the barbs widen it, so the line from the pole through an
+    image in its middle often ends and starts again beside the tip).
     """
     if not len(segs):
         return np.zeros((0, 2))
@@ -687,7 +691,7 @@ def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
             mm = np.array([(tip_px[0] + x0 + 0.5) / PX_PER_MM,
                            sheet_h_mm - (tip_px[1] + y0 + 0.5) / PX_PER_MM])
             found.append((float(both[k] / line), mm))
-    ends_mm = segs.reshape(-1, 2)
+    ends_mm = segs.reshape(-1, 2)[~_broken_ends(segs)]
     out: list[np.ndarray] = []
     for _score, p in sorted(found, key=lambda f: -f[0]):
         if float(np.min(np.hypot(*(ends_mm - p).T))) < 2.5:
@@ -696,6 +700,31 @@ def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
             continue
         out.append(p)
     return np.array(out).reshape(-1, 2)
+
+
+def _broken_ends(segs: np.ndarray) -> np.ndarray:
+    """Which segment ends (2n) are where one straight stroke is broken, not where it ends.
+
+    Another segment within 3°, its line within 0.6 mm of the end, runs on
+    past it by over 2.5 mm (pieces of one line overlapping or leaving a gap).
+    """
+    out = np.zeros(2 * len(segs), bool)
+    for i, sg in enumerate(segs):
+        u = (sg[1] - sg[0]) / max(float(np.hypot(*(sg[1] - sg[0]))), 1e-12)
+        for k in (0, 1):
+            e, back = sg[k], (-u if k == 1 else u)        # back: into its own segment
+            for j, other in enumerate(segs):
+                if j == i:
+                    continue
+                w = (other[1] - other[0]) / max(float(np.hypot(*(other[1] - other[0]))), 1e-12)
+                if abs(float(u[0] * w[1] - u[1] * w[0])) > math.sin(_ANGLE):
+                    continue
+                if abs(float((e - other[0]) @ np.array([-w[1], w[0]]))) > _MISS_MM:
+                    continue
+                if max(float((other[0] - e) @ -back), float((other[1] - e) @ -back)) > 2.5:
+                    out[2 * i + k] = True
+                    break
+    return out
 
 
 def _edge(prof: np.ndarray, o: np.ndarray, level: float) -> float:
@@ -718,8 +747,20 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
     straight line is fitted to that edge where it stands over 0.2 mm clear of
     the line's own (from the tip back to the barb's widest), and the tip
     ``t*`` solved from it.  Each barb must leave at 8-40°; the two tips must
-    agree within 1 mm.
+    agree within 1 mm.  Failing that, once more without the edge where the
+    ink runs on to the sampled band's border (other ink joining the barb's:
+    a letter, a stroke) and refitted without samples over 0.1 mm off.
     """
+    for clean in (False, True):
+        at = _barbs_fit(dark, t, o, t0, line, clean)
+        if at is not None:
+            return at
+    return None
+
+
+def _barbs_fit(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float, line: float,
+               clean: bool) -> float | None:
+    """:func:`_barbs_meet` once; ``clean``: other ink at the barbs' edges left out."""
     mid = len(o) // 2
     meets = []
     for side in (1.0, -1.0):
@@ -731,7 +772,8 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
             return None
         h = float(np.median([_edge(dark[k, cols], oo, 0.5 * line) for k in ahead]))
         e = np.array([_edge(dark[k, cols], oo, 0.5 * line) for k in behind])
-        out = e > h + 0.2 * PX_PER_MM
+        # clean: an edge out at the grid's border is other ink joining the barb's
+        out = (e > h + 0.2 * PX_PER_MM) & ((e < float(oo[-1]) - 1e-9) | (not clean))
         if np.count_nonzero(out) < 4:
             return None
         # from the first clear sample back to the widest (the barb's end is rounded)
@@ -742,6 +784,10 @@ def _barbs_meet(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float,
         if len(idx) < 3:
             return None
         slope, icpt = np.polyfit(t[behind][idx], e[idx], 1)
+        # once more without the samples over 0.1 mm off (ink joining the barb's edge)
+        fit = np.abs(e[idx] - (slope * t[behind][idx] + icpt)) < 0.1 * PX_PER_MM
+        if clean and 3 <= np.count_nonzero(fit) < len(idx):
+            slope, icpt = np.polyfit(t[behind][idx][fit], e[idx][fit], 1)
         tan = -float(slope)
         if not math.tan(math.radians(8.0)) <= tan <= math.tan(math.radians(40.0)):
             return None
