@@ -46,11 +46,10 @@ fitted lines and the ink's ends along them agree best:
 4. **The point.**  Each line holds the image across itself (σ from its
    fit), each end along its line (σ 0.3 mm: ends overshot or stopped short
    by up to 0.4 mm); an end farther from the lines' crossing than the two
-   can differ by (2.5 σ) is left out.  A lone end past the crossing ran on
-   over other ink (a stroke, a letter); one short of it is a stroke that
-   stops before the lines cross, and two past it agree that the lines cross
-   short of the image, so where either is and no end agrees, the lines are
-   not where they were drawn: nothing is decided.  Lines well apart fix the point
+   can differ by (2.5 σ) is left out, and where every end found is, the
+   lines are not the ones drawn: nothing is decided (a lone end past the
+   crossing taken as run on over other ink, and left out, read a sample
+   drawn afresh worse: docs/checking.md).  Lines well apart fix the point
    by their crossing; along lines nearly parallel, the ends decide.
 
 The point so found replaces the one read only when it is well determined
@@ -439,15 +438,11 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
     if spread > _SPREAD_SIN:
         cross = np.linalg.solve(M, r)
         cov = np.linalg.inv(M)
-        gap = [float((tp - cross) @ d) / (2.5 * math.sqrt(sg**2 + float(d @ cov @ d)))
-               for tp, d, sg in tips]
-        if tips and not any(abs(g) <= 1.0 for g in gap) and (
-                min(gap) < -1.0 or sum(g > 1.0 for g in gap) > 1):
-            # a stroke stops short of where the lines cross, or two strokes' ends agree
-            # past it: the lines are not where they were drawn
-            return None
-        # a lone end past the crossing ran on over other ink (a stroke, a letter): not used
-        tips = [t_ for t_, g in zip(tips, gap, strict=True) if abs(g) <= 1.0]
+        agree = [(tp, d, sg) for tp, d, sg in tips
+                 if abs(float((tp - cross) @ d)) <= 2.5 * math.sqrt(sg**2 + float(d @ cov @ d))]
+        if tips and not agree:
+            return None          # no end where the lines cross: a line is not the one drawn
+        tips = agree
     elif len(tips) > 1:
         # one direction: the ends that agree with their median along it
         d0 = tips[0][1]
