@@ -548,6 +548,7 @@ def refine_read(read: Any, sol: Any, ratio: np.ndarray, origin_px: tuple[int, in
         if ref.sigma > SIGMA_MAX_MM or move > MOVE_MAX_MM:
             continue
         read.points[name] = ref.point
+        read.moved[name] = move
         if move > _TOLD_MM:
             read.notes.append(f"{name.lower()} is read {move:.1f} mm from where the pencil "
                               "segments' ends put it: where its lines, fitted to the ink along "

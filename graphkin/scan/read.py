@@ -130,6 +130,9 @@ class SheetRead:
     sheet : Sheet or None
         The pencil's darkness on the sheet (:class:`graphkin.scan.inkfit.Sheet`),
         to tell whether a stroke runs on to a vertex read past its end.
+    moved : dict
+        Name -> how far the ink's lines moved the image from where the pencil
+        segments' ends put it (mm; :func:`graphkin.scan.inkfit.refine_read`).
     """
 
     rect: Rectified
@@ -144,6 +147,7 @@ class SheetRead:
     turned: dict[str, list[np.ndarray]] = field(default_factory=dict)
     is_turned: bool = False
     sheet: Sheet | None = None
+    moved: dict[str, float] = field(default_factory=dict)
 
 
 def _names(sol: Any) -> list[str]:
@@ -664,6 +668,11 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
     ``sense`` (another one there, such as ``normal-reversed+sense``, cannot
     be told from the reversed sense misread).
 
+    Where the two readings of an image disagree by more than 2 mm (the pencil
+    segments' ends and the lines fitted to its ink, ``read.moved``), a wrong
+    row names no mistake but ``sense`` either: either reading may be the
+    misread one.
+
     And a row that follows from the student's own earlier images
     (:mod:`graphkin.check.carry`) from one read within 2 mm of its right
     place: wrong, not following (that one may only be misread).
@@ -684,6 +693,13 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
             notes.append(f"{r.key} is read {float(np.hypot(*(p - back[0]))):.1f} mm from its "
                          f"place with the sense reversed, where {r.mistake.code} also puts "
                          "it: a misread cannot be told from that mistake, so none is named")
+            r = dataclasses.replace(r, mistake=None)
+        elif (r.verdict == WRONG and r.mistake is not None and r.mistake.code != "sense"
+              and read.moved.get(name, 0.0) > _UNTOLD_MM):
+            notes.append(f"{r.key}: the pencil segments' ends and the lines fitted to its ink "
+                         f"put it {read.moved[name]:.1f} mm apart, where {r.mistake.code} "
+                         "puts it: a misread cannot be told from that mistake, so none is "
+                         "named")
             r = dataclasses.replace(r, mistake=None)
         elif (r.verdict == FOLLOWS and r.mistake is not None and r.mistake.kind == "carried"
               and _near_right(read, r.follows.split("_", 1)[-1])):
