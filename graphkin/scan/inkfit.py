@@ -55,7 +55,8 @@ fitted lines and the ink's ends along them agree best:
 The point so found replaces the one read only when it is well determined
 (σ under :data:`SIGMA_MAX_MM` in every direction) and within
 :data:`MOVE_MAX_MM` of it; one moved farther than the drawing tolerance is
-said so in a note.  Measured in docs/checking.md ("How well it reads").
+said so in a note.  Measured in docs/checking.md ("How well it reads") and
+docs/scan-reading.md.
 
 Before the image points are read, :func:`past_crossings` cuts back a
 segment's tip that the detector carried over paper, past a line it
