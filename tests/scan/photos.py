@@ -47,6 +47,55 @@ LEVELS: dict[str, Degradation] = {
 }
 
 
+def blank_page(h_mm: float, paper: int) -> tuple[np.ndarray, Any]:
+    """A square page ``h_mm`` across, all paper of grey ``paper``, at :data:`PX` px/mm.
+
+    Returns the pixels and the layout :func:`draw_hand`'s strokes need (its size).
+    """
+    from types import SimpleNamespace
+
+    n = int(h_mm * PX)
+    return np.full((n, n), paper, np.uint8), SimpleNamespace(size=(h_mm, h_mm))
+
+
+def as_rectified(img: np.ndarray, paper: int, blur_px: float, noise: float = 0.0,
+                 rng: np.random.Generator | None = None) -> np.ndarray:
+    """A raster page as the reader's light-flattened ratio (1 = paper) at 5 px/mm.
+
+    Shrunk by area from :data:`PX` px/mm, blurred (σ ``blur_px``) and noised
+    (σ ``noise`` grey levels), as a photo rectified to the sheet.
+    """
+    from graphkin.scan.sheet import PX_PER_MM
+
+    small = cv2.resize(img, None, fx=PX_PER_MM / PX, fy=PX_PER_MM / PX,
+                       interpolation=cv2.INTER_AREA).astype(np.float32)
+    small = cv2.GaussianBlur(small, (0, 0), blur_px)
+    if noise > 0 and rng is not None:
+        small += rng.normal(0.0, noise, small.shape).astype(np.float32)
+    return np.asarray(np.clip(small / float(paper), 0.0, 1.0))
+
+
+def in_line(rng: np.random.Generator, od: float, da: float
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The pole, d and a on one line of random direction u, centred on (60, 60) mm.
+
+    ``od``: the pole to d, ``da``: d to a (mm).  Returns u, the pole, d and a.
+    """
+    ang = rng.uniform(0.0, 2 * math.pi)
+    u = np.array([math.cos(ang), math.sin(ang)])
+    pole = np.array([60.0, 60.0]) - 0.5 * (od + da) * u
+    return u, pole, pole + od * u, pole + (od + da) * u
+
+
+def toward(rng: np.random.Generator, ray: float
+           ) -> tuple[np.ndarray, float, np.ndarray, np.ndarray]:
+    """An image V near (60, 60) mm, a random angle a, its direction u, the pole ``ray`` before V."""
+    v = np.array([60.0, 60.0]) + rng.uniform(-3.0, 3.0, 2)
+    a = float(rng.uniform(0.0, 2 * math.pi))
+    u = np.array([math.cos(a), math.sin(a)])
+    return v, a, u, v - ray * u
+
+
 def solved(text: str) -> Any:
     return graphkin.loads(text).solve()
 

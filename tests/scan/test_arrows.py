@@ -16,7 +16,6 @@ seeds and levels and expects d found where it is drawn.
 from __future__ import annotations
 
 import math
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -33,7 +32,7 @@ from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
-from graphkin.scan.strokes import PX_PER_MM, apart, arrow_tips, segments  # noqa: E402
+from graphkin.scan.strokes import apart, arrow_tips, segments  # noqa: E402
 
 _H = 120.0
 _PAPER = 235
@@ -45,12 +44,8 @@ def _in_line(rng: np.random.Generator, od: float, da: float, blur_px: float
 
     Returns the ratio at the rectified 5 px/mm (1 = paper), d, a and the pole (sheet mm).
     """
-    img = np.full((int(_H * photos.PX), int(_H * photos.PX)), _PAPER, np.uint8)
-    lay = SimpleNamespace(size=(_H, _H))
-    ang = rng.uniform(0.0, 2 * math.pi)
-    u = np.array([math.cos(ang), math.sin(ang)])
-    pole = np.array([60.0, 60.0]) - 0.5 * (od + da) * u
-    d, a = pole + od * u, pole + (od + da) * u
+    img, lay = photos.blank_page(_H, _PAPER)
+    u, pole, d, a = photos.in_line(rng, od, da)
     grey = int(rng.integers(50, 120))
     for p, q, arrow in ((pole, d, True), (pole, a, True), (d, a, False)):
         e = (q - p) / float(np.hypot(*(q - p)))
@@ -60,11 +55,7 @@ def _in_line(rng: np.random.Generator, od: float, da: float, blur_px: float
             b = math.radians(180.0 + s * rng.uniform(15.0, 25.0))
             rot = np.array([[math.cos(b), -math.sin(b)], [math.sin(b), math.cos(b)]])
             photos._stroke(img, lay, q, q + rot @ e * rng.uniform(2.0, 3.0), rng, grey, gap=False)
-    small = cv2.resize(img, None, fx=PX_PER_MM / photos.PX, fy=PX_PER_MM / photos.PX,
-                       interpolation=cv2.INTER_AREA).astype(np.float32)
-    small = cv2.GaussianBlur(small, (0, 0), blur_px)
-    small += rng.normal(0.0, 3.0, small.shape).astype(np.float32)
-    return np.clip(small / _PAPER, 0.0, 1.0), d, a, pole
+    return photos.as_rectified(img, _PAPER, blur_px, 3.0, rng), d, a, pole
 
 
 def test_an_arrowhead_in_the_middle_of_a_line_gives_its_tip() -> None:

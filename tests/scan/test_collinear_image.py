@@ -16,7 +16,6 @@ letter's ink, and the line broken by the detector beside the tip.
 from __future__ import annotations
 
 import math
-from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -35,7 +34,6 @@ from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 from graphkin.scan.strokes import (  # noqa: E402
-    PX_PER_MM,
     _broken_ends,
     apart,
     arrow_tips,
@@ -143,23 +141,15 @@ def _narrow(rng: np.random.Generator, od: float, da: float, barb: float, blur_px
     Returns the ratio at the rectified 5 px/mm (1 = paper), d and the pole (sheet mm).
     """
     h = 120.0
-    img = np.full((int(h * photos.PX), int(h * photos.PX)), 235, np.uint8)
-    lay = SimpleNamespace(size=(h, h))
-    ang = rng.uniform(0.0, 2 * math.pi)
-    u = np.array([math.cos(ang), math.sin(ang)])
-    pole = np.array([60.0, 60.0]) - 0.5 * (od + da) * u
-    d, a = pole + od * u, pole + (od + da) * u
+    img, lay = photos.blank_page(h, 235)
+    u, pole, d, a = photos.in_line(rng, od, da)
     grey = int(rng.integers(50, 120))
     photos._stroke(img, lay, pole, a + u * rng.uniform(-0.3, 0.4), rng, grey, gap=False)
     for s in (1.0, -1.0):
         b = math.radians(180.0 + s * (barb + rng.uniform(-1.0, 1.0)))
         rot = np.array([[math.cos(b), -math.sin(b)], [math.sin(b), math.cos(b)]])
         photos._stroke(img, lay, d, d + rot @ u * rng.uniform(2.0, 2.5), rng, grey, gap=False)
-    small = cv2.resize(img, None, fx=PX_PER_MM / photos.PX, fy=PX_PER_MM / photos.PX,
-                       interpolation=cv2.INTER_AREA).astype(np.float32)
-    small = cv2.GaussianBlur(small, (0, 0), blur_px)
-    small += rng.normal(0.0, 2.0, small.shape).astype(np.float32)
-    return np.clip(small / 235.0, 0.0, 1.0), d, pole
+    return photos.as_rectified(img, 235, blur_px, 2.0, rng), d, pole
 
 
 @settings(max_examples=20, deadline=None)

@@ -43,17 +43,14 @@ from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.inkfit import Sheet  # noqa: E402
 from graphkin.scan.read import _vertex, mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
-from graphkin.scan.strokes import PX_PER_MM, apart, ends, segments, vertex_at  # noqa: E402
+from graphkin.scan.strokes import apart, ends, segments, vertex_at  # noqa: E402
 
 _H = 120.0
 _PAPER = 235
 
 
 def _ratio(img: np.ndarray) -> np.ndarray:
-    small = cv2.resize(img, None, fx=PX_PER_MM / photos.PX, fy=PX_PER_MM / photos.PX,
-                       interpolation=cv2.INTER_AREA).astype(np.float32)
-    small = cv2.GaussianBlur(small, (0, 0), 0.7)        # the photo's blur, about 0.15 mm
-    return np.clip(small / _PAPER, 0.0, 1.0)
+    return photos.as_rectified(img, _PAPER, 0.7)      # the photo's blur, about 0.15 mm
 
 
 def _drawn(rng: np.random.Generator, ray: float, beyond: float, phi: float,
@@ -65,12 +62,8 @@ def _drawn(rng: np.random.Generator, ray: float, beyond: float, phi: float,
     is drawn on to X (its image is X).  Returns the ratio image (5 px/mm),
     V, X and the pole (sheet mm, y up).
     """
-    img = np.full((int(_H * photos.PX), int(_H * photos.PX)), _PAPER, np.uint8)
-    lay = SimpleNamespace(size=(_H, _H))
-    v = np.array([60.0, 60.0]) + rng.uniform(-3.0, 3.0, 2)
-    a = rng.uniform(0.0, 2 * math.pi)
-    u = np.array([math.cos(a), math.sin(a)])
-    pole = v - ray * u
+    img, lay = photos.blank_page(_H, _PAPER)
+    v, a, u, pole = photos.toward(rng, ray)
     x = v + beyond * u
     w = np.array([math.cos(a + math.radians(phi)), math.sin(a + math.radians(phi))])
     grey = int(rng.integers(50, 120))

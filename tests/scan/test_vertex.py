@@ -16,7 +16,6 @@ analytic solver puts them) and checks the images read where drawn.
 from __future__ import annotations
 
 import math
-from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -33,7 +32,7 @@ from strategies import slider_cranks  # noqa: E402
 from graphkin.check import Diagnoser, Evaluator  # noqa: E402
 from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
-from graphkin.scan.strokes import PX_PER_MM, apart, ends, segments, vertex_at  # noqa: E402
+from graphkin.scan.strokes import apart, ends, segments, vertex_at  # noqa: E402
 
 _H = 120.0
 _PAPER = 235
@@ -47,12 +46,8 @@ def _drawn(rng: np.random.Generator, theta: float, ray: float, link: float
     Returns the page's ratio at the rectified 5 px/mm (1 = paper), V, the
     pole and the vector's direction (sheet mm, y up).
     """
-    img = np.full((int(_H * photos.PX), int(_H * photos.PX)), _PAPER, np.uint8)
-    lay = SimpleNamespace(size=(_H, _H))
-    v = np.array([60.0, 60.0]) + rng.uniform(-3.0, 3.0, 2)
-    a = rng.uniform(0.0, 2 * math.pi)
-    u = np.array([math.cos(a), math.sin(a)])
-    pole = v - ray * u
+    img, lay = photos.blank_page(_H, _PAPER)
+    v, a, u, pole = photos.toward(rng, ray)
     b = a + math.pi + float(rng.choice([-1.0, 1.0])) * math.radians(theta)
     other = v + link * np.array([math.cos(b), math.sin(b)])
     grey = int(rng.integers(50, 120))
@@ -64,10 +59,7 @@ def _drawn(rng: np.random.Generator, theta: float, ray: float, link: float
             ang = math.radians(180.0 + s * rng.uniform(15.0, 25.0))
             rot = np.array([[math.cos(ang), -math.sin(ang)], [math.sin(ang), math.cos(ang)]])
             photos._stroke(img, lay, q, q + rot @ d * rng.uniform(2.0, 3.0), rng, grey, gap=False)
-    small = cv2.resize(img, None, fx=PX_PER_MM / photos.PX, fy=PX_PER_MM / photos.PX,
-                       interpolation=cv2.INTER_AREA).astype(np.float32)
-    small = cv2.GaussianBlur(small, (0, 0), 0.7)        # the photo's blur, about 0.15 mm
-    return np.clip(small / _PAPER, 0.0, 1.0), v, pole, u
+    return photos.as_rectified(img, _PAPER, 0.7), v, pole, u     # blur about 0.15 mm
 
 
 @settings(max_examples=40, deadline=None)
