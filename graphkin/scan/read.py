@@ -651,6 +651,10 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     rows.sort(key=lambda r: order.get(r.key.split("_", 1)[-1], len(order)))
     rep = Report(rows, used, name, title=title.replace("(scale", "(read from the photo; scale"))
     rep.notes += notes + read.notes
+    if read.is_turned:
+        rep.notes.append("read as a polygon drawn turned 180° about the pole (the input's "
+                         "angular velocity taken with the wrong sense): each image was looked "
+                         "for at its reversed place first")
     for n in too_short(sol, layout):
         rep.notes.append(f"{letter}_{n} is under {_SHORT_MM:g} mm on the sheet: too short to "
                          "read from a photo, not marked")

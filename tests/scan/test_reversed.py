@@ -222,10 +222,12 @@ def test_mechanism_38_turned_is_read_with_its_own_names() -> None:
     assert np.hypot(*(2 * pole - images["E"] - images["F"])) < 6.0
     assert read.is_turned
     assert _reversed_as_intended(rep), rep.text()
-    # the right drawing of it reads right, and not turned
+    assert any(n.startswith("read as a polygon drawn turned 180°") for n in rep.notes)
+    # the right drawing of it reads right, and not turned (and says nothing of a turn)
     _, _, read, rep = _photo_rows(_M38, "fourbar", False, "scan", 6518)
     assert not read.is_turned
     assert all(r.verdict == OK for r in rep.rows), rep.text()
+    assert not any("turned 180°" in n for n in rep.notes)
 
 
 def test_mechanism_16_turned_names_no_usual_mistake() -> None:
