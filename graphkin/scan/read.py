@@ -47,9 +47,10 @@ from graphkin.check.polygon import Polygon
 from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
+from graphkin.scan.arrows import arrow_tips
 from graphkin.scan.inkfit import Sheet, past_crossings, refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
-from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
+from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
 
 __all__ = ["SheetRead", "read_sheet", "mark_scan", "places", "NOT_FOUND"]
