@@ -21,7 +21,7 @@ import numpy as np
 from graphkin.scan.sheet import PX_PER_MM
 from graphkin.scan.strokes import _ANGLE, _MISS_MM, _sample, _through
 
-__all__ = ["arrow_tips"]
+__all__ = ["arrow_tips", "broken_by_tips"]
 
 
 _BARB_DEG = np.arange(10.0, 36.0, 1.0)
@@ -118,6 +118,27 @@ def arrow_tips(segs: np.ndarray, ratio: np.ndarray, origin_px: tuple[int, int],
             continue
         out.append(p)
     return np.array(out).reshape(-1, 2)
+
+
+def broken_by_tips(segs: np.ndarray, tips: np.ndarray, near_mm: float = 2.5) -> np.ndarray:
+    """Which segment ends (2n) are a straight stroke broken beside an arrowhead's tip.
+
+    The detector breaks the stroke from the pole through an image in its
+    middle where the arrowhead's barbs widen it (:func:`_broken_ends`: another
+    piece of the line runs on past the end); :func:`arrow_tips` keeps a tip
+    beside such ends for that reason.  Such an end is no vertex of its own:
+    the image is at the tip (Uicker, Pennock & Shigley, 5th ed., Sec. 3.4,
+    each vector's arrowhead at its image point).  ``tips``: from
+    :func:`arrow_tips` (mm, (k, 2)); an end within ``near_mm`` of one counts.
+    """
+    out = np.zeros(2 * len(segs), bool)
+    tips = np.asarray(tips, dtype=float).reshape(-1, 2)
+    if not len(segs) or not len(tips):
+        return out
+    pts = segs.reshape(-1, 2)
+    near = np.min(np.hypot(pts[:, None, 0] - tips[None, :, 0],
+                           pts[:, None, 1] - tips[None, :, 1]), axis=1) < near_mm
+    return np.asarray(near & _broken_ends(segs))
 
 
 def _broken_ends(segs: np.ndarray) -> np.ndarray:
