@@ -10,7 +10,7 @@ segment detector breaks the stroke where the barbs widen it, into two
 pieces overlapping beside the tip.  The tip was found
 (:func:`graphkin.scan.arrows.arrow_tips` keeps a tip beside such broken
 ends), but the matching listed a broken piece's end first (other ends near
-it made it "strong") and dropped the tip 0.3 mm from it as the same vertex:
+it made it "strong") and dropped the tip 0.5 mm from it as the same vertex:
 d was read from the pieces' ends, 1.3 mm off, and marked ``unexplained``
 (the fresh sample's #44, benchmarks/data/scan_sample_fresh.json, at scan,
 the polygon drawn reversed).  An end of a stroke broken beside a tip is now
