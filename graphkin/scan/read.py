@@ -47,9 +47,10 @@ from graphkin.check.polygon import Polygon
 from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
+from graphkin.scan.arrows import arrow_tips, broken_by_tips
 from graphkin.scan.inkfit import Sheet, past_crossings, refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
-from graphkin.scan.strokes import apart, arrow_tips, ends, pencil, segments, vertex_at
+from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
 
 __all__ = ["SheetRead", "read_sheet", "mark_scan", "places", "NOT_FOUND"]
@@ -352,7 +353,9 @@ def _match(read: SheetRead) -> None:
     # of a straight line from the pole)
     pts = np.concatenate([ends_at, read.arrows.reshape(-1, 2)])
     extra = len(pts) - len(ends_at)
-    ok = np.concatenate([_vertex_ends(segs, ends_at, pole), np.ones(extra, bool)])
+    # a stroke broken beside an arrowhead's tip: the tip is the vertex, not the break
+    ok = np.concatenate([_vertex_ends(segs, ends_at, pole)
+                         & ~broken_by_tips(segs, read.arrows, _SAME_MM), np.ones(extra, bool)])
     gap = np.concatenate([_gap_ends(segs, ends_at), np.zeros(extra, bool)])
     strong = np.concatenate([_strength(ends_at), np.zeros(extra)])
     names = list(read.places)

@@ -30,9 +30,10 @@ from scan.photos import LEVELS, exact_images, hand_photo, layout_for, sheet_pixe
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
+from graphkin.scan.arrows import arrow_tips  # noqa: E402
 from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
-from graphkin.scan.strokes import apart, arrow_tips, segments  # noqa: E402
+from graphkin.scan.strokes import apart, segments  # noqa: E402
 
 _H = 120.0
 _PAPER = 235

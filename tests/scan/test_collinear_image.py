@@ -31,14 +31,10 @@ from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # no
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
+from graphkin.scan.arrows import _broken_ends, arrow_tips  # noqa: E402
 from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
-from graphkin.scan.strokes import (  # noqa: E402
-    _broken_ends,
-    apart,
-    arrow_tips,
-    segments,
-)
+from graphkin.scan.strokes import apart, segments  # noqa: E402
 
 # Two slider-driven slider-cranks drawn by tests/strategies.py (the fixed sample's #2 and
 # #59; #61 is #59's mechanism with the coupler point's link drawn another way)
