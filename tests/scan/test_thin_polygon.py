@@ -122,3 +122,40 @@ def test_the_reversed_drawing_is_named_sense(data: dict[str, Any], diagram: str,
     codes = {r.key: r.code for r in rows}
     assert any("sense" in c for c in codes.values()), codes
     assert all(c == "sense" or c.startswith("follows") for c in codes.values()), codes
+
+
+def _line(deg: float) -> Any:
+    from graphkin.scan.inkfit import FitLine
+
+    u = np.array([np.cos(np.radians(deg)), np.sin(np.radians(deg))])
+    return FitLine(np.array([50.0, 50.0]), u, 0.06, 12.0, 0.5)
+
+
+@pytest.mark.parametrize("deg", [0.0, 37.0, 123.0, 250.0])
+def test_a_line_sharing_its_band_is_known_across_to_half_the_merging_distance(
+        deg: float) -> None:
+    from graphkin.scan.inkfit import _twice_drawn
+
+    fl = _line(deg)
+    u = fl.direction
+    n = np.array([-u[1], u[0]])
+    p0 = fl.point.copy()
+    tilt = np.cos(np.radians(1.5)) * u + np.sin(np.radians(1.5)) * n   # 1.5 degrees off
+
+    def stroke(off: float, d: np.ndarray = tilt) -> np.ndarray:
+        # a stroke passing p `off` mm aside, from 20 mm before it to 25 mm past it
+        return np.array([p0 + off * n - 20.0 * d, p0 + off * n + 25.0 * d])
+
+    # another vector 1.5 degrees off passing 0.5 mm aside: one band, sigma 0.8 / 2 mm
+    assert _twice_drawn(fl, p0, [stroke(0.5)]).sigma == pytest.approx(0.4)
+    # 0.9 mm aside (two inks apart), 5 degrees off (not counted as its ink), or one of
+    # the image's own lines (ending at it): the line as fitted
+    assert _twice_drawn(fl, p0, [stroke(0.9)]).sigma == pytest.approx(0.06)
+    five = np.cos(np.radians(5.0)) * u + np.sin(np.radians(5.0)) * n
+    assert _twice_drawn(fl, p0, [stroke(0.3, five)]).sigma == pytest.approx(0.06)
+    own = np.array([p0, p0 + 25.0 * tilt])
+    assert _twice_drawn(fl, p0, [own]).sigma == pytest.approx(0.06)
+    # the same decisions with every input moved by 1e-12 of its size
+    k = 1.0 + 1e-12
+    assert _twice_drawn(fl, p0 * k, [stroke(0.5) * k]).sigma == pytest.approx(0.4)
+    assert _twice_drawn(fl, p0 * k, [stroke(0.9) * k]).sigma == pytest.approx(0.06)
