@@ -30,7 +30,11 @@ fitted lines and the ink's ends along them agree best:
    itself at ``p`` is that of the fit, with the wobble counted as one
    independent sample every 2 mm, and its wander from the last middle fitted
    to ``p``.  A line whose ink covers under 60 % of what is left of it, or
-   under 5 mm, or that is fitted no better than 0.15 mm (σ), is not used.
+   under 5 mm (3 mm for the vector held through the pole: the pole is its
+   other point), or that is fitted no better than 0.15 mm (σ), is not used.
+   A line that shares its ink with another expected stroke under 2° from it
+   passing ``p`` within 0.8 mm (not one of ``p``'s own lines) is known
+   across only to 0.4 mm: the two are one band, its middle between them.
 3. **The end.**  Along each fitted line the ink is walked outward from inside
    the stroke to where its darkness falls through half of the stroke's own
    (the stroke's tip, as :mod:`graphkin.scan.strokes` reads it); the image is
@@ -106,6 +110,8 @@ _MERGE_MM = 0.8
 """Another stroke nearer than this (mm) to a cross-section's centre merges with its ink."""
 _SAME_SIN = math.sin(math.radians(2.0))
 """Another stroke within 2° of the line and on it is the same ink (drawn twice)."""
+_OWN_END_MM = 1.5
+"""A stroke ending this near (mm) the point read is one of that image's own lines."""
 _FLOOR = 0.04
 """Darkness below this (paper's noise after the light is flattened) counts as none."""
 _CLEAR_MM = 2.5
@@ -128,6 +134,8 @@ _COVER_MAX_MM = 1.5
 """An end run on over another stroke's ink farther than this is not used."""
 _MIN_COVER = 0.6
 _MIN_INK_MM = 5.0
+_MIN_HELD_MM = 3.0
+"""The least ink (mm) of a vector held through the pole: the pole is its other point."""
 _BARB_DEG = (15.0, 20.0, 25.0)
 _BARB_MM = 3.0
 _CROSSED_MM = 20.0
@@ -227,7 +235,8 @@ def fit_line(sheet: Sheet, start: np.ndarray, end: np.ndarray, others: list[np.n
     Returns None when the ink does not show one line there (see the module).
     """
     length = float(np.hypot(*(end - start)))
-    if length < clear_start + clear_end + _MIN_INK_MM:
+    least = _MIN_INK_MM if through is None else _MIN_HELD_MM
+    if length < clear_start + clear_end + least:
         return None
     u = (end - start) / length
     t = np.arange(clear_start, length - clear_end + 1e-9, _STEP_MM)
@@ -262,13 +271,13 @@ def fit_line(sheet: Sheet, start: np.ndarray, end: np.ndarray, others: list[np.n
             mid = (dw * s).sum(axis=1) / mass
             spread = np.sqrt((dw * (s - mid[:, None]) ** 2).sum(axis=1) / mass)
         free = ~shared
-        if np.count_nonzero(free) * _STEP_MM < _MIN_INK_MM:
+        if np.count_nonzero(free) * _STEP_MM < least:
             return None
         stroke = float(np.median(peak[free]))
         ok = (free & (peak > 0.5 * max(stroke, 2 * _FLOOR)) & (spread < _WIDE_MM)
               & np.isfinite(mid))
         covered = int(np.count_nonzero(ok)) / max(int(np.count_nonzero(free)), 1)
-        if covered < _MIN_COVER or np.count_nonzero(ok) * _STEP_MM < _MIN_INK_MM:
+        if covered < _MIN_COVER or np.count_nonzero(ok) * _STEP_MM < least:
             return None
         # the hand's wobble wanders: only the ink nearest the end predicts the line there
         ok &= t >= float(t[ok].max()) - _LOCAL_MM
@@ -411,6 +420,7 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
                       through=q if is_pole else None)
         if fl is None or fl.sigma > _LINE_SIGMA_MAX_MM:
             continue
+        fl = _twice_drawn(fl, p0, others)
         fitted.append(fl)
         nrm = np.array([-fl.direction[1], fl.direction[0]])
         rows.append((nrm, float(nrm @ fl.point), fl.sigma))
@@ -457,6 +467,33 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         return None
     pt = np.linalg.solve(M, r)
     return Refined(np.asarray(pt), np.linalg.inv(M), len(rows), len(tips))
+
+
+def _twice_drawn(fl: FitLine, p0: np.ndarray, others: list[np.ndarray]) -> FitLine:
+    """The line with its σ across at least half the merging distance, when its ink is shared.
+
+    Another expected stroke within 2° of the line passing its image within
+    :data:`_MERGE_MM` (and not ending there: not one of this image's own
+    lines) is counted as this line's ink by :func:`fit_line` (the same ink
+    drawn twice).  But two vectors from the pole 1-2° apart, or a vector and
+    a link's line running on along it, are two lines whose ink is one band
+    when they are under :data:`_MERGE_MM` apart: the fitted middle lies
+    between them, and the line drawn to this image may be anywhere in the
+    band (Sec. 3.4: an image 0.5-0.8 mm off another's line).  Its place
+    across is then known to half that distance only.
+    """
+    u = fl.direction
+    for a, b in others:
+        e = b - a
+        el = float(np.hypot(*e))
+        if el == 0.0 or abs(float(u[0] * e[1] - u[1] * e[0])) / el >= _SAME_SIN:
+            continue
+        if min(float(np.hypot(*(a - p0))), float(np.hypot(*(b - p0)))) < _OWN_END_MM:
+            continue                                   # one of this image's lines
+        if float(_seg_dist(fl.point[None, :], a, b)[0]) < _MERGE_MM:
+            return FitLine(fl.point, fl.direction, max(fl.sigma, 0.5 * _MERGE_MM),
+                           fl.ink_mm, fl.darkness)
+    return fl
 
 
 def _same(a: np.ndarray, b: np.ndarray) -> bool:
