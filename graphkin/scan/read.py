@@ -643,7 +643,7 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rows, title, notes, used = marked.rows, marked.title, marked.notes, marked.tolerance
     else:
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
-    rows, untold = _untold(read, rows)
+    rows, untold = _untold(read, rows, float(used.drawing or 0.0))
     notes += untold
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     for n in read.missing:
@@ -667,13 +667,15 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     return rep
 
 
-def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
+def _untold(read: SheetRead, rows: list[Row], drawing_mm: float = 0.0
+            ) -> tuple[list[Row], list[str]]:
     """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named.
 
     Its counterpart for the polygon turned 180° (the reversed sense): a wrong
     row read within 2 mm of its reversed place names no mistake but
     ``sense`` (another one there, such as ``normal-reversed+sense``, cannot
-    be told from the reversed sense misread).
+    be told from the reversed sense misread); in a polygon read turned as
+    a whole, within ``drawing_mm`` of it, ``sense`` itself (:func:`_turned_row`).
 
     Where the two readings of an image disagree by more than 2 mm (the pencil
     segments' ends and the lines fitted to its ink, ``read.moved``), a wrong
@@ -687,9 +689,12 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
     out, notes = [], []
     for r in rows:
         name = r.key.split("_", 1)[-1]
-        p, at = read.points.get(name), read.places.get(name)
-        back = read.turned.get(name)
-        if (r.verdict == WRONG and r.mistake is not None and p is not None and at
+        p, at, back = read.points.get(name), read.places.get(name), read.turned.get(name)
+        turned = _turned_row(read, r, drawing_mm)
+        if turned is not None:
+            r, note = turned
+            notes.append(note)
+        elif (r.verdict == WRONG and r.mistake is not None and p is not None and at
                 and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM):
             notes.append(f"{r.key} is read {float(np.hypot(*(p - at[0]))):.1f} mm from its "
                          f"right place, where {r.mistake.code} also puts it: a misread "
@@ -717,6 +722,32 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
             r = dataclasses.replace(r, verdict=WRONG, mistake=None, follows="")
         out.append(r)
     return out, notes
+
+
+def _turned_row(read: SheetRead, r: Row, drawing_mm: float) -> tuple[Row, str] | None:
+    """Row ``r`` marked ``sense`` (and a note) when its image is where the turned polygon puts it.
+
+    Only in a polygon read turned 180° as a whole (``read.is_turned``, Sec.
+    3.4), for a row wrong with another mistake or none, or following by a
+    mistake carried through the whole polygon (not from the student's own
+    images), read within ``drawing_mm`` of its reversed place.  The crossed
+    four-bar (Sec. 2.9), say, may put two images of a four-bar's acceleration
+    polygon within the check's tolerance of their reversed places at once.
+    """
+    name = r.key.split("_", 1)[-1]
+    p, back = read.points.get(name), read.turned.get(name)
+    if (not read.is_turned or p is None or not back or r.verdict not in (WRONG, FOLLOWS)
+            or (r.mistake is not None and r.mistake.code == "sense")
+            or (r.verdict == FOLLOWS and (r.mistake is None or r.mistake.kind == "carried"))):
+        return None
+    off = float(np.hypot(*(p - back[0])))
+    if off > drawing_mm:
+        return None
+    text = f"sense reversed: {r.key} drawn the wrong way round (180° out), with the whole polygon"
+    note = (f"{r.key} is read {off:.1f} mm from its place with the sense reversed, in a "
+            f"polygon read turned as a whole: marked as the reversed sense, not {r.code}")
+    return dataclasses.replace(r, verdict=WRONG, follows="",
+                               mistake=Mistake("sense", text, "sense")), note
 
 
 def _near_right(read: SheetRead, name: str) -> bool:
