@@ -48,7 +48,7 @@ from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.arrows import arrow_tips, broken_by_tips
-from graphkin.scan.inkfit import Sheet, past_crossings, refine_read
+from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
@@ -420,7 +420,14 @@ def _vertex(read: SheetRead, near: list[int], p: np.ndarray, pole: np.ndarray) -
     (under half the stretch as dark as half the stroke), is such a crossing.
     Each end is where the stroke's own ink ends (:func:`_own_end`), not
     where a segment's tip walked over a gap onto the passing line's ink.
+    Another image's vector from the pole passing 1 mm or more from ``p``
+    is none of the vertex's lines (:func:`graphkin.scan.inkfit.other_ray`).
     """
+    keep = [i for i, g in enumerate(read.segments)
+            if i in near or not other_ray(g, p, pole, _RAY_LINE_MM, _RAY_START_MM)]
+    if near and len(keep) < len(read.segments):      # another image's vector: not this vertex's
+        read = dataclasses.replace(read, segments=read.segments[keep])
+        near = [keep.index(k) for k in near]
     v = vertex_at(read.segments, near, p, pole)
     if not near or read.sheet is None:
         return v
@@ -727,12 +734,11 @@ def _untold(read: SheetRead, rows: list[Row], drawing_mm: float = 0.0
 def _turned_row(read: SheetRead, r: Row, drawing_mm: float) -> tuple[Row, str] | None:
     """Row ``r`` marked ``sense`` (and a note) when its image is where the turned polygon puts it.
 
-    Only in a polygon read turned 180° as a whole (``read.is_turned``, Sec.
-    3.4), for a row wrong with another mistake or none, or following by a
-    mistake carried through the whole polygon (not from the student's own
-    images), read within ``drawing_mm`` of its reversed place.  The crossed
-    four-bar (Sec. 2.9), say, may put two images of a four-bar's acceleration
-    polygon within the check's tolerance of their reversed places at once.
+    In a polygon read turned 180° (``read.is_turned``, Sec. 3.4), a row wrong
+    with another mistake or none, or following by one carried through the
+    whole polygon, read within ``drawing_mm`` of its reversed place (the
+    crossed four-bar, Sec. 2.9, may put two images of a four-bar's
+    acceleration polygon within the check's tolerance of theirs at once).
     """
     name = r.key.split("_", 1)[-1]
     p, back = read.points.get(name), read.turned.get(name)
@@ -740,8 +746,7 @@ def _turned_row(read: SheetRead, r: Row, drawing_mm: float) -> tuple[Row, str] |
             or (r.mistake is not None and r.mistake.code == "sense")
             or (r.verdict == FOLLOWS and (r.mistake is None or r.mistake.kind == "carried"))):
         return None
-    off = float(np.hypot(*(p - back[0])))
-    if off > drawing_mm:
+    if (off := float(np.hypot(*(p - back[0])))) > drawing_mm:
         return None
     text = f"sense reversed: {r.key} drawn the wrong way round (180° out), with the whole polygon"
     note = (f"{r.key} is read {off:.1f} mm from its place with the sense reversed, in a "

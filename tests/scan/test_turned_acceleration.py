@@ -34,8 +34,9 @@ from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Row  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import SheetRead, _untold, mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.read import SheetRead, _untold, _vertex, mark_scan, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
+from graphkin.scan.strokes import vertex_at  # noqa: E402
 
 # mechanism #8 of benchmarks/data/scan_sample_fresh.json (photo seed 2865)
 _M8 = {"title": "random fourbar", "units": {"length": "in"},
@@ -92,7 +93,7 @@ def test_the_other_branch_lies_near_the_turned_b() -> None:
     assert any(near)
 
 
-@pytest.mark.parametrize("level", ["scan", "mild"])
+@pytest.mark.parametrize("level", ["scan", "mild", "phone"])
 def test_mechanism_8_turned_is_marked_the_reversed_sense(level: str) -> None:
     _, read, rep = _photo(True, level)
     assert read.is_turned
@@ -104,6 +105,25 @@ def test_mechanism_8_right_drawing_reads_right() -> None:
     _, read, rep = _photo(False, "scan")
     assert not read.is_turned
     assert all(r.verdict == OK for r in rep.rows), rep.text()
+
+
+def test_another_images_vector_passing_by_is_no_line_of_this_vertex() -> None:
+    # the segments read around a in the phone photo of #8 turned (sheet mm): a drawn at
+    # (97.64, 118.70), the pole at (105.00, 101.10) (a's image is 19.1 mm from it, at
+    # -67.3° + 180°); the links' lines a b and a e meet at 2.8°, and the vector o f, 5.4° from
+    # o a, passes 2.1 mm from a and crosses them 2 mm from it
+    pole, a = np.array([105.00, 101.10]), np.array([97.64, 118.70])
+    segs = np.array([[[90.14, 119.85], [164.23, 101.28]],      # a b's line, run on past a
+                     [[140.85, 107.05], [96.60, 117.49]],      # b a
+                     [[69.92, 123.85], [97.94, 118.65]],       # e a
+                     [[99.94, 116.86], [70.38, 123.84]],       # a e's line
+                     [[104.10, 102.78], [89.52, 129.92]],      # o f: another image's vector
+                     [[97.84, 119.11], [102.57, 104.79]]])     # o a
+    near, guess = [1, 2, 5], np.array([97.94, 118.65])
+    alone = vertex_at(segs, near, guess, pole)
+    assert np.hypot(*(alone - a)) > 1.5                        # where o f crosses the links
+    read = SheetRead(None, SimpleNamespace(pole=tuple(pole)), segs)  # type: ignore[arg-type]
+    assert np.hypot(*(_vertex(read, near, guess, pole) - a)) < 0.5
 
 
 POLE = np.array([100.0, 100.0])
