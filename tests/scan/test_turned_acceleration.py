@@ -8,7 +8,7 @@ takes the polygon as turned (``read.is_turned``); the check marks each row
 on its own and then carries whole-polygon mistakes through, and for
 mechanism #8 of benchmarks/data/scan_sample_fresh.json the other branch
 (the crossed four-bar, Sec. 2.9) puts b and f each within the check's
-tolerance of their reversed places (A_B of the crossed four-bar lies 1.9°
+tolerance of their reversed places (A_B of the crossed four-bar lies 1.8°
 from -A_B), so A_B was named ``branch`` (and then, read 0.05 mm from its
 reversed place, no mistake at all: "unexplained") with A_F following it.
 In a polygon read turned as a whole, a row whose image is read within the
