@@ -84,8 +84,8 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_end", "refine_point", "refine_points",
-           "refine_read", "past_crossings", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
+__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_end", "other_ray", "refine_point",
+           "refine_points", "refine_read", "past_crossings", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35
 """A refined point is used only when known to this (σ, mm) in every direction."""
@@ -659,3 +659,21 @@ def past_crossings(segs: np.ndarray, sheet: Sheet) -> np.ndarray:
             if cut is not None:
                 out[i, k] = cut
     return out
+
+
+def other_ray(seg: np.ndarray, p: np.ndarray, pole: np.ndarray, line_mm: float,
+              start_mm: float) -> bool:
+    """Whether segment ``seg`` is a vector from the pole passing ``p`` by 1 mm or more.
+
+    A vector from the pole: its line within ``line_mm`` of the pole, its end
+    nearer the pole within ``start_mm`` of it (mm on the sheet, Sec. 3.4).
+    Where two vectors from the pole run a few degrees apart (a four-bar's
+    o a and o f, 5°), the other one crosses the links' lines near the
+    vertex, and :func:`graphkin.scan.strokes.vertex_at` would take that
+    crossing as the vertex.
+    """
+    a, b = sorted(np.asarray(seg, dtype=float), key=lambda e: float(np.hypot(*(e - pole))))
+    u = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
+    off = abs(float(u[0] * (pole - a)[1] - u[1] * (pole - a)[0]))
+    return (off < line_mm and float(np.hypot(*(a - pole))) < start_mm
+            and abs(float(u[0] * (p - a)[1] - u[1] * (p - a)[0])) >= 1.0)

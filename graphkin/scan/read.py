@@ -48,7 +48,7 @@ from graphkin.check.report import FOLLOWS, WRONG, Report, Row
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan import need_cv2
 from graphkin.scan.arrows import arrow_tips, broken_by_tips
-from graphkin.scan.inkfit import Sheet, past_crossings, refine_read
+from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
@@ -420,7 +420,14 @@ def _vertex(read: SheetRead, near: list[int], p: np.ndarray, pole: np.ndarray) -
     (under half the stretch as dark as half the stroke), is such a crossing.
     Each end is where the stroke's own ink ends (:func:`_own_end`), not
     where a segment's tip walked over a gap onto the passing line's ink.
+    Another image's vector from the pole passing 1 mm or more from ``p``
+    is none of the vertex's lines (:func:`graphkin.scan.inkfit.other_ray`).
     """
+    keep = [i for i, g in enumerate(read.segments)
+            if i in near or not other_ray(g, p, pole, _RAY_LINE_MM, _RAY_START_MM)]
+    if near and len(keep) < len(read.segments):      # another image's vector: not this vertex's
+        read = dataclasses.replace(read, segments=read.segments[keep])
+        near = [keep.index(k) for k in near]
     v = vertex_at(read.segments, near, p, pole)
     if not near or read.sheet is None:
         return v
@@ -643,7 +650,7 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
         rows, title, notes, used = marked.rows, marked.title, marked.notes, marked.tolerance
     else:
         rows, title, notes, used = [], f"{layout.diagram} polygon in {name}", [], tol
-    rows, untold = _untold(read, rows)
+    rows, untold = _untold(read, rows, float(used.drawing or 0.0))
     notes += untold
     f = sol.velocity if layout.diagram == "velocity" else sol.acceleration
     for n in read.missing:
@@ -667,13 +674,15 @@ def mark_scan(sol: Any, read: SheetRead, name: str, tol: CheckTolerance,
     return rep
 
 
-def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
+def _untold(read: SheetRead, rows: list[Row], drawing_mm: float = 0.0
+            ) -> tuple[list[Row], list[str]]:
     """Wrong rows read within 2 mm of the right place: still wrong, but no mistake named.
 
     Its counterpart for the polygon turned 180° (the reversed sense): a wrong
     row read within 2 mm of its reversed place names no mistake but
     ``sense`` (another one there, such as ``normal-reversed+sense``, cannot
-    be told from the reversed sense misread).
+    be told from the reversed sense misread); in a polygon read turned as
+    a whole, within ``drawing_mm`` of it, ``sense`` itself (:func:`_turned_row`).
 
     Where the two readings of an image disagree by more than 2 mm (the pencil
     segments' ends and the lines fitted to its ink, ``read.moved``), a wrong
@@ -687,9 +696,12 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
     out, notes = [], []
     for r in rows:
         name = r.key.split("_", 1)[-1]
-        p, at = read.points.get(name), read.places.get(name)
-        back = read.turned.get(name)
-        if (r.verdict == WRONG and r.mistake is not None and p is not None and at
+        p, at, back = read.points.get(name), read.places.get(name), read.turned.get(name)
+        turned = _turned_row(read, r, drawing_mm)
+        if turned is not None:
+            r, note = turned
+            notes.append(note)
+        elif (r.verdict == WRONG and r.mistake is not None and p is not None and at
                 and float(np.hypot(*(p - at[0]))) < _UNTOLD_MM):
             notes.append(f"{r.key} is read {float(np.hypot(*(p - at[0]))):.1f} mm from its "
                          f"right place, where {r.mistake.code} also puts it: a misread "
@@ -717,6 +729,30 @@ def _untold(read: SheetRead, rows: list[Row]) -> tuple[list[Row], list[str]]:
             r = dataclasses.replace(r, verdict=WRONG, mistake=None, follows="")
         out.append(r)
     return out, notes
+
+
+def _turned_row(read: SheetRead, r: Row, drawing_mm: float) -> tuple[Row, str] | None:
+    """Row ``r`` marked ``sense`` (and a note) when its image is where the turned polygon puts it.
+
+    In a polygon read turned 180° (``read.is_turned``, Sec. 3.4), a row wrong
+    with another mistake or none, or following by one carried through the
+    whole polygon, read within ``drawing_mm`` of its reversed place (the
+    crossed four-bar, Sec. 2.9, may put two images of a four-bar's
+    acceleration polygon within the check's tolerance of theirs at once).
+    """
+    name = r.key.split("_", 1)[-1]
+    p, back = read.points.get(name), read.turned.get(name)
+    if (not read.is_turned or p is None or not back or r.verdict not in (WRONG, FOLLOWS)
+            or (r.mistake is not None and r.mistake.code == "sense")
+            or (r.verdict == FOLLOWS and (r.mistake is None or r.mistake.kind == "carried"))):
+        return None
+    if (off := float(np.hypot(*(p - back[0])))) > drawing_mm:
+        return None
+    text = f"sense reversed: {r.key} drawn the wrong way round (180° out), with the whole polygon"
+    note = (f"{r.key} is read {off:.1f} mm from its place with the sense reversed, in a "
+            f"polygon read turned as a whole: marked as the reversed sense, not {r.code}")
+    return dataclasses.replace(r, verdict=WRONG, follows="",
+                               mistake=Mistake("sense", text, "sense")), note
 
 
 def _near_right(read: SheetRead, name: str) -> bool:
