@@ -254,6 +254,27 @@ def hand_photo(sol: Any, layout: Layout, sheet: np.ndarray, images: dict[str, np
     return photograph(draw_hand(sheet, layout, images, links_of(sol), rng), LEVELS[level], rng)
 
 
+def read_photo(sol: Any, layout: Layout, drawn: dict[str, np.ndarray], level: str,
+               seed: int) -> tuple[Any, dict[str, Any]]:
+    """``drawn`` photographed at ``level``, read, and marked: (the read, its rows by key)."""
+    from graphkin.check import CheckTolerance, Diagnoser, Evaluator
+    from graphkin.scan.read import mark_scan, read_sheet
+    from graphkin.scan.sheet import Page
+
+    diag = Diagnoser(Evaluator(sol))
+    photo = hand_photo(sol, layout, sheet_pixels(sol, layout), drawn, level, seed)
+    read = read_sheet(sol, Page("p", photo), diag, layout.digest)
+    rows = {r.key: r for r in mark_scan(sol, read, "p", CheckTolerance(), diag).rows}
+    return read, rows
+
+
+def between_pole_and(pole: np.ndarray, a: np.ndarray, d: np.ndarray) -> bool:
+    """Whether ``d`` lies on the segment from the pole to ``a``, within 0.01 mm of its line."""
+    v_a, v_d = a - pole, d - pole
+    on_line = abs(float(v_a[0] * v_d[1] - v_a[1] * v_d[0])) < 0.01 * float(np.hypot(*v_a))
+    return on_line and 0.0 < float(v_d @ v_a) < float(v_a @ v_a)
+
+
 def class_pdf(path: Any, photos: list[np.ndarray]) -> None:
     """A PDF of one photo per A4 page, as a scanner of a stack of sheets writes."""
     from matplotlib.backends.backend_pdf import PdfPages

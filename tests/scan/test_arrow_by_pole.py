@@ -29,13 +29,10 @@ cv2 = pytest.importorskip("cv2")
 
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import between_pole_and, exact_images, layout_for, read_photo  # noqa: E402
 
-from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.arrows import broken_by_tips  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
-from graphkin.scan.sheet import Page  # noqa: E402
 
 # The fresh sample's #44 (drawn by tests/strategies.py): A_C = 0, d on the rod A-C
 _SC44: dict[str, Any] = {
@@ -60,19 +57,14 @@ def test_a_reversed_polygon_reads_d_at_its_arrowhead_beside_the_broken_stroke() 
     lay = layout_for(sol, "acceleration", "slider-crank, slider-driven")
     images = exact_images(sol, lay)
     pole = np.array(lay.pole)
-    v_a, v_d = images["A"] - pole, images["D"] - pole
     # (what the test means: d on o-a within 0.01 mm, between o and a)
-    assert abs(float(v_a[0] * v_d[1] - v_a[1] * v_d[0])) < 0.01 * float(np.hypot(*v_a))
-    assert 0.0 < float(v_d @ v_a) < float(v_a @ v_a)
+    assert between_pole_and(pole, images["A"], images["D"])
     drawn = {k: 2 * pole - p for k, p in images.items()}       # ω taken the wrong way
-    diag = Diagnoser(Evaluator(sol))
-    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), drawn, "scan", 1173)
-    read = read_sheet(sol, Page("p", photo), diag, lay.digest)
+    read, rows = read_photo(sol, lay, drawn, "scan", 1173)
     # the hand puts the arrowhead's tip exactly at d: read there (the tip found 0.1-0.3 mm
     # off, tests/scan/test_arrows.py), not at the broken pieces' ends 1.3 mm away
     assert "D" in read.points
     assert float(np.hypot(*(read.points["D"] - drawn["D"]))) < 0.5, read.points["D"] - drawn["D"]
-    rows = {r.key: r for r in mark_scan(sol, read, "p", CheckTolerance(), diag).rows}
     # the whole polygon turned 180°: a_A's sense named, d following (or its own sense)
     assert rows["A_A"].code == "sense"
     assert rows["A_D"].code in ("sense", "follows:A_A")

@@ -26,14 +26,11 @@ cv2 = pytest.importorskip("cv2")
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scan import photos  # noqa: E402
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import between_pole_and, exact_images, layout_for, read_photo  # noqa: E402
 
-from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.arrows import _broken_ends, arrow_tips  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
-from graphkin.scan.sheet import Page  # noqa: E402
 from graphkin.scan.strokes import apart, segments  # noqa: E402
 
 # Two slider-driven slider-cranks drawn by tests/strategies.py (the fixed sample's #2 and
@@ -106,16 +103,11 @@ def test_an_image_on_the_line_to_another_is_read_at_its_arrowhead(
     lay = layout_for(sol, "acceleration", "slider-crank, slider-driven")
     images = exact_images(sol, lay)
     pole = np.array(lay.pole)
-    v_a, v_d = images["A"] - pole, images["D"] - pole
     # (the drawing is what the test means: d on o-a within 0.01 mm, between o and a)
-    assert abs(float(v_a[0] * v_d[1] - v_a[1] * v_d[0])) < 0.01 * float(np.hypot(*v_a))
-    assert 0.0 < float(v_d @ v_a) < float(v_a @ v_a)
+    assert between_pole_and(pole, images["A"], images["D"])
     drawn = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
-             "length": {**images, "A": pole + 1.048 * v_a}}[case]
-    diag = Diagnoser(Evaluator(sol))
-    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), drawn, level, seed)
-    read = read_sheet(sol, Page("p", photo), diag, lay.digest)
-    rows = {r.key: r for r in mark_scan(sol, read, "p", CheckTolerance(), diag).rows}
+             "length": {**images, "A": pole + 1.048 * (images["A"] - pole)}}[case]
+    read, rows = read_photo(sol, lay, drawn, level, seed)
     # d read at its arrowhead's tip, where it is drawn (the tip 0.1-0.3 mm off, the line's
     # wobble 0.1 mm across)
     assert "D" in read.points

@@ -25,12 +25,9 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
 
-from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
-from graphkin.scan.sheet import Page  # noqa: E402
 
 # The fresh sample's #7 (drawn by tests/strategies.py)
 _FB7: dict[str, Any] = {
@@ -70,13 +67,10 @@ def test_f_near_the_pole_merged_with_o_b_is_read_at_its_arrowhead() -> None:
     assert _deg(o_f, o_b) < 10.0
     bf = _deg(o_f, images["B"] - images["F"])
     assert min(bf, 180.0 - bf) < 10.0
-    diag = Diagnoser(Evaluator(sol))
-    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "scan", 36186)
-    read = read_sheet(sol, Page("p", photo), diag, lay.digest)
+    read, rows = read_photo(sol, lay, images, "scan", 36186)
     # the hand puts the tip at f: read within 0.5 mm (a tip is found to 0.1-0.3 mm,
     # tests/scan/test_arrows.py), and V_F marked right
     assert "F" in read.points
     assert float(np.hypot(*(read.points["F"] - images["F"]))) < 0.5
-    rows = {r.key: r for r in mark_scan(sol, read, "p", CheckTolerance(), diag).rows}
     assert rows["V_F"].verdict == rows["V_A"].verdict
     assert rows["V_F"].code == rows["V_A"].code
