@@ -255,8 +255,8 @@ def hand_photo(sol: Any, layout: Layout, sheet: np.ndarray, images: dict[str, np
 
 
 def read_photo(sol: Any, layout: Layout, drawn: dict[str, np.ndarray], level: str,
-               seed: int) -> tuple[Any, dict[str, Any]]:
-    """``drawn`` photographed at ``level``, read, and marked: (the read, its rows by key)."""
+               seed: int) -> tuple[Any, Any, dict[str, Any]]:
+    """``drawn`` photographed at ``level``, read, marked: the read, the report, its rows by key."""
     from graphkin.check import CheckTolerance, Diagnoser, Evaluator
     from graphkin.scan.read import mark_scan, read_sheet
     from graphkin.scan.sheet import Page
@@ -264,8 +264,8 @@ def read_photo(sol: Any, layout: Layout, drawn: dict[str, np.ndarray], level: st
     diag = Diagnoser(Evaluator(sol))
     photo = hand_photo(sol, layout, sheet_pixels(sol, layout), drawn, level, seed)
     read = read_sheet(sol, Page("p", photo), diag, layout.digest)
-    rows = {r.key: r for r in mark_scan(sol, read, "p", CheckTolerance(), diag).rows}
-    return read, rows
+    rep = mark_scan(sol, read, "p", CheckTolerance(), diag)
+    return read, rep, {r.key: r for r in rep.rows}
 
 
 def between_pole_and(pole: np.ndarray, a: np.ndarray, d: np.ndarray) -> bool:

@@ -60,7 +60,7 @@ def test_a_reversed_polygon_reads_d_at_its_arrowhead_beside_the_broken_stroke() 
     # (what the test means: d on o-a within 0.01 mm, between o and a)
     assert between_pole_and(pole, images["A"], images["D"])
     drawn = {k: 2 * pole - p for k, p in images.items()}       # ω taken the wrong way
-    read, rows = read_photo(sol, lay, drawn, "scan", 1173)
+    read, _, rows = read_photo(sol, lay, drawn, "scan", 1173)
     # the hand puts the arrowhead's tip exactly at d: read there (the tip found 0.1-0.3 mm
     # off, tests/scan/test_arrows.py), not at the broken pieces' ends 1.3 mm away
     assert "D" in read.points

@@ -107,7 +107,7 @@ def test_an_image_on_the_line_to_another_is_read_at_its_arrowhead(
     assert between_pole_and(pole, images["A"], images["D"])
     drawn = {"right": images, "reversed": {k: 2 * pole - p for k, p in images.items()},
              "length": {**images, "A": pole + 1.048 * (images["A"] - pole)}}[case]
-    read, rows = read_photo(sol, lay, drawn, level, seed)
+    read, _, rows = read_photo(sol, lay, drawn, level, seed)
     # d read at its arrowhead's tip, where it is drawn (the tip 0.1-0.3 mm off, the line's
     # wobble 0.1 mm across)
     assert "D" in read.points

@@ -67,7 +67,7 @@ def test_f_near_the_pole_merged_with_o_b_is_read_at_its_arrowhead() -> None:
     assert _deg(o_f, o_b) < 10.0
     bf = _deg(o_f, images["B"] - images["F"])
     assert min(bf, 180.0 - bf) < 10.0
-    read, rows = read_photo(sol, lay, images, "scan", 36186)
+    read, _, rows = read_photo(sol, lay, images, "scan", 36186)
     # the hand puts the tip at f: read within 0.5 mm (a tip is found to 0.1-0.3 mm,
     # tests/scan/test_arrows.py), and V_F marked right
     assert "F" in read.points

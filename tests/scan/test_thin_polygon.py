@@ -36,13 +36,10 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
 
-from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
-from graphkin.scan.sheet import Page  # noqa: E402
 
 # the fresh sample's #31 (`a` 0.76 mm off the line from the pole to `e`)
 _FOURBAR_31 = {
@@ -89,10 +86,8 @@ def _read(data: dict[str, Any], diagram: str, level: str, seed: int, turned: boo
     images = exact_images(sol, lay)
     pole = np.array(lay.pole)
     drawn = {k: 2 * pole - p for k, p in images.items()} if turned else images
-    diag = Diagnoser(Evaluator(sol))
-    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), drawn, level, seed)
-    read = read_sheet(sol, Page("p", photo), diag, lay.digest)
-    return read, drawn, mark_scan(sol, read, "p", CheckTolerance(), diag).rows
+    read, rep, _ = read_photo(sol, lay, drawn, level, seed)
+    return read, drawn, rep.rows
 
 
 @pytest.mark.parametrize("data,diagram,level,seed", [

@@ -28,14 +28,13 @@ cv2 = pytest.importorskip("cv2")
 
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
 
-from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
+from graphkin.check import Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Row  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import SheetRead, _untold, _vertex, mark_scan, read_sheet  # noqa: E402
-from graphkin.scan.sheet import Page  # noqa: E402
+from graphkin.scan.read import SheetRead, _untold, _vertex  # noqa: E402
 from graphkin.scan.strokes import vertex_at  # noqa: E402
 
 # mechanism #8 of benchmarks/data/scan_sample_fresh.json (photo seed 2865)
@@ -71,10 +70,8 @@ def _photo(turn: bool, level: str) -> tuple[Any, Any, Any]:
     pole = np.array(lay.pole)
     images = exact_images(sol, lay)
     drawn = {n: 2 * pole - p for n, p in images.items()} if turn else images
-    diag = Diagnoser(Evaluator(sol))
-    photo = hand_photo(sol, lay, sheet_pixels(sol, lay), drawn, level, 2865)
-    read = read_sheet(sol, Page("photo", photo), diag, lay.digest)
-    return sol, read, mark_scan(sol, read, "photo", CheckTolerance(), diag)
+    read, rep, _ = read_photo(sol, lay, drawn, level, 2865)
+    return sol, read, rep
 
 
 def test_the_other_branch_lies_near_the_turned_b() -> None:
