@@ -95,7 +95,8 @@ def read(path: str, levels: list[str], only: list[str], why: bool = False,
     from graphkin.check import CheckTolerance, Diagnoser, Evaluator
     from graphkin.check.report import OK
     from graphkin.mechanisms import from_dict
-    from graphkin.scan.read import mark_scan, read_sheet
+    from graphkin.scan.mark import mark_scan
+    from graphkin.scan.read import read_sheet
     from graphkin.scan.sheet import Page
 
     tally: dict[tuple[str, str], list[int]] = defaultdict(lambda: [0, 0])

@@ -41,7 +41,8 @@ from scan_reading_rate import sample  # noqa: E402
 
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
-from graphkin.scan.read import debug_image, mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import debug_image, mark_scan  # noqa: E402
+from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 

@@ -46,7 +46,8 @@ from strategies import fourbars, slider_cranks  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.carry import Carry  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
+from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 

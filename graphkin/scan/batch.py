@@ -36,7 +36,8 @@ def scan_reports(sol: Any, mech_file: str, scans: list[str], tol: CheckTolerance
     ``None`` and the one-line reason; the others go on.
     """
     from graphkin.render.worksheet_layout import mechanism_hash
-    from graphkin.scan.read import debug_image, mark_scan, read_sheet
+    from graphkin.scan.mark import debug_image, mark_scan
+    from graphkin.scan.read import read_sheet
     from graphkin.scan.sheet import read_pages
 
     cv2 = need_cv2()

@@ -258,7 +258,8 @@ def read_photo(sol: Any, layout: Layout, drawn: dict[str, np.ndarray], level: st
                seed: int) -> tuple[Any, Any, dict[str, Any]]:
     """``drawn`` photographed at ``level``, read, marked: the read, the report, its rows by key."""
     from graphkin.check import CheckTolerance, Diagnoser, Evaluator
-    from graphkin.scan.read import mark_scan, read_sheet
+    from graphkin.scan.mark import mark_scan
+    from graphkin.scan.read import read_sheet
     from graphkin.scan.sheet import Page
 
     diag = Diagnoser(Evaluator(sol))

@@ -41,7 +41,8 @@ from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.inkfit import Sheet, past_crossings  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
+from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import PX_PER_MM, Page  # noqa: E402
 
 _H_MM = 80.0

@@ -27,7 +27,8 @@ import graphkin  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Report  # noqa: E402
 from graphkin.kinematics.analytic import solve_analytic  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
+from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 
@@ -163,7 +164,7 @@ def test_random_four_bars_follow_through_from_a_wrong_crank_image(
     assume("A" in read.points and np.hypot(*(read.points["A"] - images["A"])) < 0.5)
     # a 10 % wrong crank image is only 1-2 mm wrong when the crank's image is short; an
     # image read within 2 mm of its right place may be only misread, so nothing is marked
-    # as following from it (scan.read._untold): the follow-through needs a well off it
+    # as following from it (scan.mark._untold): the follow-through needs a well off it
     assume(np.hypot(*(read.points["A"] - exact["A"])) >= 2.0)
     _check_follows(rep, images, exact, "A", diagram[0].upper())
 

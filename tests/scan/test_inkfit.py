@@ -25,6 +25,7 @@ import graphkin.scan.read as scan_read  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
 from graphkin.scan.inkfit import Sheet, fit_line, refine_points  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
 from graphkin.scan.sheet import PX_PER_MM, Page  # noqa: E402
 
 _H_MM = 100.0
@@ -150,7 +151,7 @@ def test_random_photos_refined_near_the_drawn_images_and_a_planted_mistake_named
         with pytest.MonkeyPatch.context() as mp:
             mp.setattr(scan_read, "refine_read", spy)
             read = scan_read.read_sheet(sol, Page("p", photo), diag, lay.digest)
-        rows = scan_read.mark_scan(sol, read, "p", CheckTolerance(), diag).rows
+        rows = mark_scan(sol, read, "p", CheckTolerance(), diag).rows
         for n, p in read.points.items():
             e0 = float(np.hypot(*(before[n] - drawn[n])))
             e1 = float(np.hypot(*(p - drawn[n])))

@@ -41,7 +41,8 @@ from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK, WRONG  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.inkfit import Sheet  # noqa: E402
-from graphkin.scan.read import _vertex, mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
+from graphkin.scan.read import _vertex, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 from graphkin.scan.strokes import apart, ends, segments, vertex_at  # noqa: E402
 

@@ -26,7 +26,8 @@ import graphkin  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Report  # noqa: E402
 from graphkin.kinematics.analytic import solve_analytic  # noqa: E402
-from graphkin.scan.read import mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import mark_scan  # noqa: E402
+from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 _CASES: dict[str, Any] = {}

@@ -32,7 +32,8 @@ from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Row  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import SheetRead, _kept, _match, _untold, mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import _untold, mark_scan  # noqa: E402
+from graphkin.scan.read import SheetRead, _kept, _match, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 POLE = np.array([100.0, 100.0])

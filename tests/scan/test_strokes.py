@@ -96,7 +96,8 @@ def test_no_mistake_named_for_an_image_read_near_its_right_place() -> None:
     # E read 3.0 mm from it: the mistake stays named; an ok row is left alone
     from graphkin.check.diagnose import Mistake
     from graphkin.check.report import OK, WRONG, Row
-    from graphkin.scan.read import SheetRead, _untold
+    from graphkin.scan.mark import _untold
+    from graphkin.scan.read import SheetRead
 
     read = SheetRead(None, None, np.zeros((0, 2, 2)),  # type: ignore[arg-type]
                      points={"D": np.array([11.0, 20.0]), "E": np.array([40.0, 23.0]),

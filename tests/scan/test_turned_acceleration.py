@@ -34,7 +34,8 @@ from graphkin.check import Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG, Row  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import SheetRead, _untold, _vertex  # noqa: E402
+from graphkin.scan.mark import _untold  # noqa: E402
+from graphkin.scan.read import SheetRead, _vertex  # noqa: E402
 from graphkin.scan.strokes import vertex_at  # noqa: E402
 
 # mechanism #8 of benchmarks/data/scan_sample_fresh.json (photo seed 2865)

@@ -25,7 +25,8 @@ from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import OK, WRONG, Row  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.read import SheetRead, _untold, mark_scan, read_sheet  # noqa: E402
+from graphkin.scan.mark import _untold, mark_scan  # noqa: E402
+from graphkin.scan.read import SheetRead, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
 
 
