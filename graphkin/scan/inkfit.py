@@ -427,6 +427,9 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         end = ink_end(sheet, fl, inside_mm=min(4.0, 0.5 * float(np.hypot(*(p0 - q)))))
         if end is None:
             continue
+        end = _letter_cut(sheet, fl, end, others)
+        if end is None:
+            continue
         cover = _cover(fl.point, fl.direction, others)
         # and this image's other lines drawn to where this one passes it (the point read
         # may be off along it, 1-4 mm where segments meet at a narrow angle): a line going
@@ -467,6 +470,51 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         return None
     pt = np.linalg.solve(M, r)
     return Refined(np.asarray(pt), np.linalg.inv(M), len(rows), len(tips))
+
+
+def _letter_cut(sheet: Sheet, fl: FitLine, end: float, others: list[np.ndarray]
+                ) -> float | None:
+    """The end (mm along ``fl``) put where its ink stops past a crossed line, before a letter.
+
+    :func:`ink_end` steps over gaps under 1 mm (a pencil lifted); past a
+    line the walk crosses (at least :data:`_CROSSED_MM` long, over 8°
+    apart) the student's letter may lie straight on, over less paper than
+    that.  As :func:`past_crossings` reads a segment's tip: where past the
+    crossing the ink stops, paper follows for at least :data:`_PAPER_MM`,
+    and the ink after it runs under :data:`_LETTER_MM` to the end, the end
+    is where the ink stops; None where it stops on the crossed line's ink
+    (the stroke's own tip is then anywhere up to that line: no end).
+    """
+    u, p = fl.direction, fl.point
+    nrm = np.array([-u[1], u[0]])
+    crossings, crossed = [], []
+    for a, b in others:
+        v = b - a
+        ln = float(np.hypot(*v))
+        if ln < _CROSSED_MM or abs(float(u[0] * v[1] - u[1] * v[0])) < _CROSS_SIN * ln:
+            continue
+        t = float(nrm @ (a - p)) / float(-(nrm @ v)) if abs(float(nrm @ v)) > 0 else -1.0
+        at = float((a + t * v - p) @ u)
+        if 0.0 <= t <= 1.0 and -1.0 < at < end - _PAPER_MM:
+            crossings.append(at)
+            crossed.append((a, b))
+    if not crossings:
+        return end
+    s = np.arange(min(crossings), end + 1e-9, 0.05)
+    prof = np.mean([sheet.darkness(p + np.outer(s, u) + m * 0.12 * nrm) for m in (-1, 0, 1)],
+                   axis=0)
+    dark = prof >= 0.5 * fl.darkness
+    if not dark[0] or np.all(dark):
+        return end
+    stop = int(np.argmin(dark))                      # the first paper past the crossing
+    again = np.flatnonzero(dark[stop:])
+    if (not len(again) or float(s[stop + int(again[0])] - s[stop]) < _PAPER_MM
+            or end - float(s[stop + int(again[0])]) >= _LETTER_MM):
+        return end
+    q = (p + float(s[stop - 1]) * u)[None, :]
+    if any(float(_seg_dist(q, a, b)[0]) < 2 * _HALF_MM for a, b in crossed):
+        return None
+    return float(s[stop - 1])
 
 
 def _twice_drawn(fl: FitLine, p0: np.ndarray, others: list[np.ndarray]) -> FitLine:
