@@ -31,33 +31,17 @@ cv2 = pytest.importorskip("cv2")
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
+from scan.rasters import pencil_sheet, unit  # noqa: E402
 
 from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.inkfit import FitLine, Sheet, _letter_cut, ink_end  # noqa: E402
-from graphkin.scan.sheet import PX_PER_MM  # noqa: E402
-
-_H_MM = 80.0
 
 
-def _px(p: np.ndarray) -> tuple[int, int]:
-    """Sheet mm (y up) -> the raster's pixel, 16ths (cv2's ``shift=4``)."""
-    return (int(round((p[0] * PX_PER_MM - 0.5) * 16)),
-            int(round(((_H_MM - p[1]) * PX_PER_MM - 0.5) * 16)))
-
-
-def _sheet(strokes: list[tuple[np.ndarray, np.ndarray]], blur: float) -> Sheet:
-    """A light-flattened page (1.0 paper) with pencil strokes 0.4 mm wide, darkness 0.55."""
-    n = int(_H_MM * PX_PER_MM)
-    img = np.full((n, n), 255, np.uint8)
-    for a, b in strokes:
-        cv2.line(img, _px(a), _px(b), 115, 2, cv2.LINE_AA, shift=4)
-    out = cv2.GaussianBlur(img.astype(np.float32) / 255.0, (0, 0), blur)
-    return Sheet(out, (0, 0), _H_MM)
-
-
-def _unit(deg: float) -> np.ndarray:
-    return np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+def _crossing(phi: float, cross: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """x, the stroke's direction w, its far end f (25 mm back) and a long line through x."""
+    x, w, v = np.array([40.0, 40.0]), unit(phi), unit(phi + cross)
+    return x, w, x - 25.0 * w, np.array([x - 20.0 * v, x + 20.0 * v])
 
 
 def _walk(sheet: Sheet, f: np.ndarray, x: np.ndarray, w: np.ndarray,
@@ -79,14 +63,10 @@ def test_a_walk_over_a_line_and_paper_onto_a_letter_gives_no_end(
     # to half darkness, blurred: the walk steps over gaps under 1 mm), then a letter's
     # stroke straight on, 0.8-2.2 mm long.  Where the walk ends on the letter, cut, its
     # ink stops on the long line: no end; where it stopped, it is by the line's ink
-    x = np.array([40.0, 40.0])
-    w = _unit(phi)
-    f = x - 25.0 * w
-    v = _unit(phi + cross)
-    line = np.array([x - 20.0 * v, x + 20.0 * v])
+    x, w, f, line = _crossing(phi, cross)
     ink = 0.45 / math.sin(math.radians(min(cross, 180.0 - cross)))
     start = x + (ink + gap) * w
-    sheet = _sheet([(line[0], line[1]), (f, x), (start, start + letter * w)], blur)
+    sheet = pencil_sheet([(line[0], line[1]), (f, x), (start, start + letter * w)], blur)
     end, cut = _walk(sheet, f, x, w, [line])
     assert end is not None
     if end > ink + gap:                                   # the walk ran on to the letter
@@ -106,14 +86,10 @@ def test_a_tip_past_a_line_keeps_its_end_before_the_letter(
     # the stroke crosses the long line and goes on 1.5-2 mm to its own tip, then paper
     # and a letter (its far end under 5 mm past x: within the walk's reach): the end is
     # the stroke's tip (within the blurred half width, 0.35 mm)
-    x = np.array([40.0, 40.0])
-    w = _unit(phi)
-    f = x - 25.0 * w
-    v = _unit(phi + cross)
-    line = np.array([x - 20.0 * v, x + 20.0 * v])
+    x, w, f, line = _crossing(phi, cross)
     tip = x + past * w
     start = tip + (0.6 + gap) * w     # 0.6: the strokes' round ends, blurred, to half dark
-    sheet = _sheet([(line[0], line[1]), (f, tip), (start, start + letter * w)], 0.8)
+    sheet = pencil_sheet([(line[0], line[1]), (f, tip), (start, start + letter * w)], 0.8)
     _end, cut = _walk(sheet, f, x, w, [line])
     assert cut is not None and abs(cut - past) < 0.35, (cut, past)
 
@@ -125,14 +101,10 @@ def test_a_stroke_going_on_past_a_gap_keeps_its_end(
         phi: float, cross: float, gap: float, rest: float) -> None:
     # past the line a pencil gap, then the stroke's own ink for 3.5-6 mm (longer than a
     # letter): the walk's end is left where it is, at that ink's end
-    x = np.array([40.0, 40.0])
-    w = _unit(phi)
-    f = x - 25.0 * w
-    v = _unit(phi + cross)
-    line = np.array([x - 20.0 * v, x + 20.0 * v])
+    x, w, f, line = _crossing(phi, cross)
     ink = 0.45 / math.sin(math.radians(min(cross, 180.0 - cross)))
     start = x + (ink + gap) * w
-    sheet = _sheet([(line[0], line[1]), (f, x), (start, start + rest * w)], 0.8)
+    sheet = pencil_sheet([(line[0], line[1]), (f, x), (start, start + rest * w)], 0.8)
     end, cut = _walk(sheet, f, x, w, [line])
     assert end is not None and cut == end
 
