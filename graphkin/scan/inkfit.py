@@ -146,6 +146,8 @@ _LETTER_MM = 3.0
 """Ink beyond a stretch of paper past a crossing, shorter than this, is a letter or a barb."""
 _PAPER_MM = 0.5
 """A stretch of paper at least this long along a stroke's line parts two inks."""
+_LIFT_MM = 3.0
+"""A pencil lifted leaves paper under this along a stroke (as :mod:`strokes` joins pieces)."""
 _TOLD_MM = 0.5
 """A point moved farther than this (the default drawing tolerance) is said so in a note."""
 _SPREAD_SIN = math.sin(math.radians(3.0))
@@ -358,7 +360,9 @@ def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
 
     Walked outward from ``inside_mm`` before ``line.point`` while the
     darkness on the line's middle is at least half the stroke's (gaps under
-    1 mm stepped over), up to ``beyond_mm`` past it; the end is where it
+    1 mm stepped over, and gaps under :data:`_LIFT_MM` where the ink goes on
+    again before ``line.point``: the pencil lifted on the way to the point
+    the segments reached), up to ``beyond_mm`` past it; the end is where it
     falls through half (interpolated).  None if the walk starts on paper.
     """
     u, p = line.direction, line.point
@@ -375,6 +379,10 @@ def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
         if dark[k]:
             last = k
         elif s[k] - s[last] > 1.0:
+            again = np.flatnonzero(dark[k:])
+            if (len(again) and s[k + int(again[0])] <= 0.0
+                    and s[k + int(again[0])] - s[last] <= _LIFT_MM):
+                continue     # the pencil lifted on its way to the point read: ink goes on
             ended = True
             break
     if not ended:
