@@ -45,6 +45,7 @@ from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan.arrows import arrow_tips, broken_by_tips
 from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
+from graphkin.scan.poleray import pole_ray_cuts, printed_sheet
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
 from graphkin.tolerance import sign
@@ -258,8 +259,11 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
     ratio = pencil(rect.gray, ink, box)
     segs = apart(segments(ratio, (box[0], box[1]), h), ratio, (box[0], box[1]), h)
     sheet = Sheet(ratio, (box[0], box[1]), h)
-    segs = past_crossings(segs, sheet)                      # tips run on to letters
     at, turned = _places(sol, layout, diag)
+    segs = pole_ray_cuts(segs, sheet, np.array(layout.pole),    # tips run on past a short
+                         [q for ps in (*at.values(), *turned.values()) for q in ps],
+                         printed_sheet(ink, box, h))           # vector's end, over a barb
+    segs = past_crossings(segs, sheet)                      # tips run on to letters
     read = SheetRead(rect, layout, segs, places=at, turned=turned,
                      arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
                                        np.array(layout.pole)),
