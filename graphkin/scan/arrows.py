@@ -15,13 +15,14 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 3.4.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
 from graphkin.scan.sheet import PX_PER_MM
 from graphkin.scan.strokes import _ANGLE, _MISS_MM, _sample, _through
 
-__all__ = ["arrow_tips", "broken_by_tips"]
+__all__ = ["arrow_tips", "broken_by_tips", "head_at"]
 
 
 _BARB_DEG = np.arange(10.0, 36.0, 1.0)
@@ -235,3 +236,130 @@ def _barbs_fit(dark: np.ndarray, t: np.ndarray, o: np.ndarray, t0: float, line: 
     if abs(meets[0] - meets[1]) > 1.0 * PX_PER_MM or abs(np.mean(meets) - t0) > 2.5 * PX_PER_MM:
         return None
     return float(np.mean(meets))
+
+
+_HEAD_DEG = (10.0, 38.0)
+"""The angles (degrees) a barb leaves the vector's line at, as its ink's edge shows them
+(the hand draws 15-25°; blur rounds the edge)."""
+_HEAD_WIDEN_MM = 0.3
+"""A free barb's ink stands out at least this far (mm) beyond the line's own edge ahead of
+the tip (a barb 2 mm long at 15° stands 0.5 mm out; blur and noise move an edge 0.1 mm)."""
+_HEAD_FIT_MM = 0.1
+_HEAD_HALF_MM = 0.15
+"""A pencil stroke's ink stands out at least this far (mm) each side of its middle (strokes
+are 0.4-0.8 mm wide once blurred): less, and the axis runs along no stroke."""
+_HEAD_FROM_POLE_MM = 7.0
+"""No tip nearer the pole than this (mm): a shorter vector is not read (read._SHORT_MM), and
+the printed pole and its label are there."""
+_HEAD_LONG_MM = 1.5
+"""A barb (2-3 mm at 15-25°) stands out widest at least this far (mm) behind the tip."""
+"""A free barb's outer edge is straight to this (mm, root mean square)."""
+
+
+def head_at(sheet: Any, place: np.ndarray, pole: np.ndarray, reach_mm: float
+            ) -> np.ndarray | None:
+    """The tip of the arrowhead of a vector from ``pole`` drawn toward ``place``, or None (mm).
+
+    Every absolute vector starts at the printed pole and has its arrowhead
+    at its image point (Uicker, Pennock & Shigley, 5th ed., Sec. 3.4), and
+    every place an image can be is known; so the arrowhead is looked for
+    with its axis fixed along pole → ``place``, its tip within ``reach_mm``
+    of ``place`` along that axis, where no segment need end (an image in the
+    middle of a band of merged strokes, or a short vector whose ink is one
+    band with a link line near the pole).  One barb may lie inside another
+    stroke's ink; the other must be free on paper.  On each side of the axis
+    the ink's edge (where the darkness falls through half the line's) is
+    read along it; a tip at ``t*`` is taken when, on one side (the free
+    barb):
+
+    - behind the tip the edge is a straight ramp (within 0.12 mm) leaving
+      the line at 10-38° and standing out at least 0.3 mm beyond the edge
+      ahead of the tip, and meets that edge within 0.5 mm of ``t*``;
+    - the barb ends: 3.3-4.4 mm behind the tip the edge is back within half
+      that widening of the edge ahead (two strokes from one point separate
+      for good; a barb, 2-3 mm long, stops);
+
+    on the other side the ink is also wider behind the tip than ahead (the
+    other barb, or the stroke covering it), and the line's own ink runs
+    behind the tip along the axis (over 80 % of 0.5-3 mm behind it as dark as
+    half the line).  Of several tips the one with the steepest widening is
+    taken.  ``sheet``: :class:`graphkin.scan.inkfit.Sheet`.
+    """
+    place = np.asarray(place, dtype=float)
+    pole = np.asarray(pole, dtype=float)
+    length = float(np.hypot(*(place - pole)))
+    if length < 1e-9:
+        return None
+    u = (place - pole) / length
+    n = np.array([-u[1], u[0]])
+    step = 0.1
+    t = np.arange(max(length - reach_mm - 5.0, 1.0), length + reach_mm + 1.5, step)
+    o = np.arange(0.0, 2.05, step)
+    grid = pole + t[:, None, None] * u + np.concatenate([o, -o[1:]])[None, :, None] * n
+    dark = sheet.darkness(grid)
+    up, down = dark[:, : len(o)], np.concatenate([dark[:, :1], dark[:, len(o):]], axis=1)
+    centre = np.max(np.stack([up[:, :3], down[:, :3]]), axis=(0, 2))
+    own = (t > length - reach_mm - 3.0) & (t < length)
+    line = float(np.median(centre[own])) if np.any(own) else 0.0
+    if line <= 0.05:
+        return None
+    edges = [_edges(side, o, 0.5 * line) for side in (up, down)]
+    inked = centre >= 0.5 * line
+    span = (t >= length - reach_mm - 3.0) & (t <= length + reach_mm) & inked
+    if np.count_nonzero(span) < 10:
+        return None
+    w = float(np.percentile(np.minimum(*edges)[span], 25.0))   # the stroke's half-width
+    if w < _HEAD_HALF_MM:
+        return None                            # no stroke along the axis: not this vector
+    tans = (math.tan(math.radians(_HEAD_DEG[0])), math.tan(math.radians(_HEAD_DEG[1])))
+    best: tuple[float, float] | None = None
+    for t0 in t[(t >= length - reach_mm) & (t <= length + reach_mm)]:
+        ramp = (t > t0 - 1.8) & (t < t0 - 0.3)
+        behind = (t > t0 - 4.4) & (t < t0 - 3.3)
+        shaft = (t > t0 - 3.0) & (t < t0 - 0.5)
+        if np.count_nonzero(behind) < 5 or float(np.mean(inked[shaft])) < 0.8:
+            continue
+        for free, other in ((0, 1), (1, 0)):
+            e = edges[free]
+            slope, icpt = np.polyfit(t[ramp], e[ramp], 1)
+            tan = -float(slope)
+            if not tans[0] <= tan <= tans[1]:
+                continue
+            if float(np.sqrt(np.mean((e[ramp] - (slope * t[ramp] + icpt)) ** 2))) > _HEAD_FIT_MM:
+                continue
+            widen = float(slope * (t0 - 1.6) + icpt) - w
+            if widen < _HEAD_WIDEN_MM:
+                continue
+            if not _HEAD_HALF_MM <= float(np.median(e[behind])) <= w + 0.5 * widen:
+                continue                       # no barb's end (two strokes parting for good),
+                                               # or no shaft behind it on the line
+            tip = (float(icpt) - w) / tan       # where the barb's outer edge meets the stroke's
+            if abs(tip - t0) > 0.5 or tip < _HEAD_FROM_POLE_MM:
+                continue
+            back = (t > tip - 3.2) & (t < tip)
+            if float(t[back][np.argmax(e[back])]) > tip - _HEAD_LONG_MM:
+                continue                       # too short for a barb: a letter's curve
+            if float(np.median(edges[other][(t > t0 - 1.6) & (t < t0 - 0.6)])) < (
+                    w + 0.5 * _HEAD_WIDEN_MM):
+                continue                       # the other side bare: no barb there, no cover
+            if best is None or abs(tip - t0) < best[0]:
+                best = (abs(tip - t0), tip)
+    if best is None:
+        return None
+    return np.asarray(pole + best[1] * u)
+
+
+def _edges(prof: np.ndarray, o: np.ndarray, level: float) -> np.ndarray:
+    """How far the ink runs out from a line, per row of ``prof`` (mm).
+
+    ``prof``: darkness at ``o`` (≥ 0 mm) out from the line; the ink is at
+    ``level`` or darker; 0 where the line itself is paper.
+    """
+    below = prof < level
+    k = np.where(below.any(axis=1), np.argmax(below, axis=1), prof.shape[1] - 1)
+    rows = np.arange(len(prof))
+    last = np.maximum(k - 1, 0)
+    a, b = prof[rows, last], prof[rows, k]
+    frac = np.where(a > b, (a - level) / np.where(a > b, a - b, 1.0), 0.0)
+    out = o[last] + np.clip(frac, 0.0, 1.0) * (o[k] - o[last])
+    return np.asarray(np.where(k == 0, 0.0, out))

@@ -43,7 +43,7 @@ from graphkin.check.answers import Given, Key
 from graphkin.check.carry import carry_for
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.errors import GraphkinError, InputError
-from graphkin.scan.arrows import arrow_tips, broken_by_tips
+from graphkin.scan.arrows import arrow_tips, broken_by_tips, head_at
 from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
 from graphkin.scan.poleray import pole_ray_cuts, printed_sheet
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
@@ -89,6 +89,9 @@ _HALF_END_MM = 0.5
 """The rounded end of a stroke and of a line it meets: left out of the stretch between."""
 _OWN_RUN_MM = 1.2
 """Ink past a gap in a stroke is its own when it runs on this far along it (:func:`_own_end`)."""
+_HEAD_HOLD_MM = 1.0
+"""An image read at an arrowhead's tip found at its place is not moved farther than this by
+its lines' ink (a tip is found to 0.1-0.3 mm, at most 0.9 mm off; see :func:`_held_at_heads`)."""
 _RAY_LINE_MM = 1.5
 _RAY_START_MM = 10.0
 """A segment end under this far from the pole, on a line through the pole within 1.5 mm,
@@ -131,6 +134,11 @@ class SheetRead:
     moved : dict
         Name -> how far the ink's lines moved the image from where the pencil
         segments' ends put it (mm; :func:`graphkin.scan.inkfit.refine_read`).
+    heads : ndarray (k, 2)
+        The tips of arrowheads found at the places the images can be, along
+        the pole → place direction (sheet mm; :func:`_with_heads`); each
+        not in ``arrows`` a vertex the names may take, none breaking a stroke
+        (:func:`graphkin.scan.arrows.broken_by_tips` takes ``arrows`` alone).
     """
 
     rect: Rectified
@@ -146,6 +154,7 @@ class SheetRead:
     is_turned: bool = False
     sheet: Sheet | None = None
     moved: dict[str, float] = field(default_factory=dict)
+    heads: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
 
 
 def _names(sol: Any) -> list[str]:
@@ -268,13 +277,88 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
                      arrows=arrow_tips(segs, ratio, (box[0], box[1]), h,
                                        np.array(layout.pole)),
                      sheet=sheet)
+    read.heads = _with_heads(read)
     _match(read)
     for _ in range(_CARRY_ROUNDS):
         if not _carried(read, sol, diag):
             break
         _match(read)
+    at_head = {n: p.copy() for n, p in read.points.items() if _at_head(read, p)}
     refine_read(read, sol, ratio, (box[0], box[1]), h)      # the images from their lines' ink
+    _held_at_heads(read, at_head)
     return read
+
+
+def _at_head(read: SheetRead, p: np.ndarray) -> bool:
+    """Whether ``p`` is an arrowhead's tip that one found at a place confirms (within 1 mm)."""
+    tips = _head_points(read)
+    if not len(read.heads) or not len(tips):
+        return False
+    return bool(float(np.min(np.hypot(*(tips - p).T))) < 1e-9
+                and float(np.min(np.hypot(*(read.heads - p).T))) < 1.0)
+
+
+def _held_at_heads(read: SheetRead, at_head: dict[str, np.ndarray]) -> None:
+    """Put back at its arrowhead's tip an image the ink's lines moved far from it.
+
+    An image read at an arrowhead found at its place (:func:`_with_heads`) is
+    where the student's vector ends, to 0.1-0.3 mm (Sec. 3.4: each vector's
+    arrowhead at its image).  Its lines, fitted to the ink
+    (:func:`graphkin.scan.inkfit.refine_read`), are least sure where the
+    image has no segment end of its own: in a band of merged strokes they
+    cross 0.6-3 mm along the band.  A move of more than :data:`_HEAD_HOLD_MM`
+    from the tip is not taken.
+    """
+    for name, tip in at_head.items():
+        if read.moved.get(name, 0.0) <= _HEAD_HOLD_MM:
+            continue
+        moved = read.moved.pop(name)
+        read.points[name] = tip
+        read.notes = [n for n in read.notes
+                      if not n.startswith(f"{name.lower()} is read {moved:.1f} mm from")]
+
+
+def _with_heads(read: SheetRead) -> np.ndarray:
+    """The arrowheads found at the places the images can be (mm, (k, 2)).
+
+    Every absolute vector starts at the printed pole and has its arrowhead at
+    its image (Uicker, Pennock & Shigley, 5th ed., Sec. 3.4), and every place
+    an image can be is known (``read.places``, ``read.turned``): at each, an
+    arrowhead is looked for with its axis along pole → place, its tip within
+    the image's reach of the place (:func:`graphkin.scan.arrows.head_at`: one
+    barb may lie in another stroke's ink).  A short vector whose ink is one
+    band with a link line near the pole, or an image in the middle of a band
+    of merged strokes, has no segment end of its own there; its tip is then
+    one more vertex the names may take (:func:`_head_points`).
+    """
+    heads: list[np.ndarray] = []
+    if read.sheet is None:
+        return np.zeros((0, 2))
+    pole = np.array(read.layout.pole)
+    seen: list[np.ndarray] = []
+    for name, at in read.places.items():
+        reach = max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
+        for c in at + read.turned.get(name, []):
+            if any(float(np.hypot(*(c - q))) < 0.3 for q in seen):
+                continue
+            seen.append(c)
+            tip = head_at(read.sheet, c, pole, reach)
+            if tip is not None:
+                heads.append(tip)
+    return np.array(heads).reshape(-1, 2)
+
+
+def _head_points(read: SheetRead) -> np.ndarray:
+    """The arrowheads' tips the names may take (mm, (k, 2)).
+
+    ``read.arrows``, then each of ``read.heads`` over 1 mm from those before
+    it (one arrowhead found twice is one vertex).
+    """
+    tips = [p for p in read.arrows.reshape(-1, 2)]
+    for h in read.heads.reshape(-1, 2):
+        if all(float(np.hypot(*(h - q))) >= 1.0 for q in tips):
+            tips.append(h)
+    return np.array(tips).reshape(-1, 2)
 
 
 def _carried(read: SheetRead, sol: Any, diag: Diagnoser) -> bool:
@@ -351,7 +435,7 @@ def _match(read: SheetRead) -> None:
     ends_at, seg_of = ends(segs)
     # the segments' ends, then the arrowheads' tips where none ends (an image in the middle
     # of a straight line from the pole)
-    pts = np.concatenate([ends_at, read.arrows.reshape(-1, 2)])
+    pts = np.concatenate([ends_at, _head_points(read)])
     extra = len(pts) - len(ends_at)
     # a stroke broken beside an arrowhead's tip: the tip is the vertex, not the break
     ok = np.concatenate([_vertex_ends(segs, ends_at, pole)
@@ -400,7 +484,10 @@ def _match(read: SheetRead) -> None:
         p = pts[j]
         near = [int(seg_of[k]) for k in np.flatnonzero(np.hypot(*(ends_at - p).T) < _SAME_MM)
                 if j < len(ends_at)]           # an arrowhead's tip: on its own line
-        read.points[name] = _vertex(read, sorted(set(near)), p, pole)
+        # an arrowhead found at a place, along pole -> place: the tip is the vertex, not a
+        # crossing of lines passing near it (in a band of merged strokes they cross anywhere)
+        held = j >= len(ends_at) and _at_head(read, p)
+        read.points[name] = p.copy() if held else _vertex(read, sorted(set(near)), p, pole)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 
