@@ -29,6 +29,7 @@ cv2 = pytest.importorskip("cv2")
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.rasters import pencil_sheet, unit  # noqa: E402
 
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
@@ -43,24 +44,11 @@ _H_MM = 60.0
 _POLE = np.array([30.0, 30.0])
 
 
-def _px(p: np.ndarray) -> tuple[int, int]:
-    """Sheet mm (y up) -> the raster's pixel, 16ths (cv2's ``shift=4``)."""
-    return (int(round((p[0] * PX_PER_MM - 0.5) * 16)),
-            int(round(((_H_MM - p[1]) * PX_PER_MM - 0.5) * 16)))
-
-
 def _sheet(strokes: list[tuple[np.ndarray, np.ndarray]], blur: float) -> Sheet:
-    """A light-flattened page (1.0 paper) with pencil strokes 0.4 mm wide, darkness 0.55."""
-    n = int(_H_MM * PX_PER_MM)
-    img = np.full((n, n), 255, np.uint8)
-    for a, b in strokes:
-        cv2.line(img, _px(a), _px(b), 115, 2, cv2.LINE_AA, shift=4)
-    out = cv2.GaussianBlur(img.astype(np.float32) / 255.0, (0, 0), blur)
-    return Sheet(out, (0, 0), _H_MM)
+    return pencil_sheet(strokes, blur, _H_MM)
 
 
-def _unit(deg: float) -> np.ndarray:
-    return np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+_unit = unit
 
 
 def _arrow(x: np.ndarray, u: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
