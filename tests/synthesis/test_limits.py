@@ -16,7 +16,7 @@ import re
 
 import numpy as np
 import pytest
-from hypothesis import assume, example, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 import graphkin
@@ -61,7 +61,10 @@ def _at(text: str, theta: float, b: complex) -> graphkin.Solution:
     return graphkin.loads(text).solve()
 
 
-@settings(max_examples=12, deadline=None)
+# crank_rocker refuses the designs outside its domain (InputError: filtered), and how many
+# Hypothesis draws there depends on the constants of the modules loaded before this test
+# (it seeds its floats with them): run after the whole suite it drew 50 such to 9 others
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @example(0.0, 0.0, 0.03125, 1.0, 44.0, 1.5, 1.0)   # B2 nearer the other branch than B1
 @example(0.0, 0.0, 0.0001, 1.0, 61.0, 1.5, 0.0)
 @given(st.floats(-1, 1), st.floats(-1, 1), st.floats(-math.pi, math.pi), st.floats(0.5, 3),
