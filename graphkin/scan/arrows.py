@@ -245,6 +245,7 @@ _HEAD_WIDEN_MM = 0.3
 """A free barb's ink stands out at least this far (mm) beyond the line's own edge ahead of
 the tip (a barb 2 mm long at 15° stands 0.5 mm out; blur and noise move an edge 0.1 mm)."""
 _HEAD_FIT_MM = 0.1
+"""A free barb's outer edge is straight to this (mm, root mean square)."""
 _HEAD_HALF_MM = 0.15
 """A pencil stroke's ink stands out at least this far (mm) each side of its middle (strokes
 are 0.4-0.8 mm wide once blurred): less, and the axis runs along no stroke."""
@@ -253,7 +254,6 @@ _HEAD_FROM_POLE_MM = 7.0
 the printed pole and its label are there."""
 _HEAD_LONG_MM = 1.5
 """A barb (2-3 mm at 15-25°) stands out widest at least this far (mm) behind the tip."""
-"""A free barb's outer edge is straight to this (mm, root mean square)."""
 
 
 def head_at(sheet: Any, place: np.ndarray, pole: np.ndarray, reach_mm: float
@@ -272,7 +272,7 @@ def head_at(sheet: Any, place: np.ndarray, pole: np.ndarray, reach_mm: float
     read along it; a tip at ``t*`` is taken when, on one side (the free
     barb):
 
-    - behind the tip the edge is a straight ramp (within 0.12 mm) leaving
+    - behind the tip the edge is a straight ramp (within 0.1 mm) leaving
       the line at 10-38° and standing out at least 0.3 mm beyond the edge
       ahead of the tip, and meets that edge within 0.5 mm of ``t*``;
     - the barb ends: 3.3-4.4 mm behind the tip the edge is back within half
@@ -282,7 +282,7 @@ def head_at(sheet: Any, place: np.ndarray, pole: np.ndarray, reach_mm: float
     on the other side the ink is also wider behind the tip than ahead (the
     other barb, or the stroke covering it), and the line's own ink runs
     behind the tip along the axis (over 80 % of 0.5-3 mm behind it as dark as
-    half the line).  Of several tips the one with the steepest widening is
+    half the line).  Of several tips the one nearest the position tried is
     taken.  ``sheet``: :class:`graphkin.scan.inkfit.Sheet`.
     """
     place = np.asarray(place, dtype=float)

@@ -84,8 +84,9 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_end", "other_ray", "refine_point",
-           "refine_points", "refine_read", "past_crossings", "SIGMA_MAX_MM", "MOVE_MAX_MM"]
+__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_along", "ink_end", "other_ray",
+           "refine_point", "refine_points", "refine_read", "past_crossings", "SIGMA_MAX_MM",
+           "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35
 """A refined point is used only when known to this (σ, mm) in every direction."""
@@ -354,6 +355,14 @@ def _center_dark(sheet: Sheet, p: np.ndarray, u: np.ndarray) -> float:
     return float(sheet.darkness(np.array([p + k * 0.1 * n for k in (-1, 0, 1)])).max())
 
 
+def ink_along(sheet: Sheet, a: np.ndarray, u: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """Darkness on a line's middle at ``a + s·u`` (the mean of three samples 0.12 mm across)."""
+    n = np.array([-u[1], u[0]])
+    base = a + np.outer(s, u)
+    return np.asarray(np.mean([sheet.darkness(base + k * 0.12 * n) for k in (-1, 0, 1)],
+                              axis=0))
+
+
 def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
             beyond_mm: float = MOVE_MAX_MM + 1.5) -> float | None:
     """Where the stroke's ink ends along a fitted line (mm from ``line.point``, + beyond).
@@ -366,10 +375,8 @@ def ink_end(sheet: Sheet, line: FitLine, inside_mm: float,
     falls through half (interpolated).  None if the walk starts on paper.
     """
     u, p = line.direction, line.point
-    n = np.array([-u[1], u[0]])
     s = np.arange(-inside_mm, beyond_mm + 1e-9, 0.05)
-    base = p + np.outer(s, u)
-    prof = np.mean([sheet.darkness(base + k * 0.12 * n) for k in (-1, 0, 1)], axis=0)
+    prof = ink_along(sheet, p, u, s)
     half = 0.5 * line.darkness
     dark = prof >= half
     if not np.any(dark[: max(int(1.0 / 0.05), 1)]):
@@ -509,8 +516,7 @@ def _letter_cut(sheet: Sheet, fl: FitLine, end: float, others: list[np.ndarray]
     if not crossings:
         return end
     s = np.arange(min(crossings), end + 1e-9, 0.05)
-    prof = np.mean([sheet.darkness(p + np.outer(s, u) + m * 0.12 * nrm) for m in (-1, 0, 1)],
-                   axis=0)
+    prof = ink_along(sheet, p, u, s)
     dark = prof >= 0.5 * fl.darkness
     if not dark[0] or np.all(dark):
         return end
@@ -696,9 +702,7 @@ def past_crossings(segs: np.ndarray, sheet: Sheet) -> np.ndarray:
                 if not (1.0 < back < _LETTER_MM + 3.0 and 0.0 < along < length[j]):
                     continue
                 s = np.arange(0.0, back + 1e-9, step)
-                base = x + np.outer(s, w)
-                prof = np.mean([sheet.darkness(base + m * 0.12 * nrm) for m in (-1, 0, 1)],
-                               axis=0)
+                prof = ink_along(sheet, x, w, s)
                 dark = prof >= half
                 if not dark[0] or np.all(dark):
                     continue

@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from graphkin.scan import need_cv2
-from graphkin.scan.inkfit import _CROSS_SIN, _FLOOR, Sheet
+from graphkin.scan.inkfit import _CROSS_SIN, _FLOOR, _PAPER_MM, Sheet, ink_along
 from graphkin.scan.strokes import _GROW
 
 __all__ = ["pole_ray_cuts", "printed_sheet"]
@@ -33,8 +33,6 @@ _RAY_RUN_MM = 4.0
 """A tip run on past a ray farther than this (mm) is a line going on, not a barb's run-on."""
 _RAY_BACK_MM = 6.0
 """Tips farther than this (mm) past a ray are not looked at (past_crossings' reach)."""
-_PAPER_MM = 0.5
-"""A stretch of paper at least this long along a line parts two inks."""
 _RAY_FREE_MM = 1.0
 """The least length (mm) of a ray not masked as print on which its ink is looked for."""
 _RAY_COVER = 0.7
@@ -55,14 +53,6 @@ def printed_sheet(printed: np.ndarray, box_px: tuple[int, int, int, int],
     grown = cv2.dilate(np.asarray(printed[y0:y1, x0:x1], dtype=np.uint8),
                        cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (_GROW, _GROW)))
     return Sheet(1.0 - (grown > 0).astype(np.float32), (x0, y0), sheet_h_mm)
-
-
-def _ink_along(sheet: Sheet, a: np.ndarray, u: np.ndarray, s: np.ndarray) -> np.ndarray:
-    """Darkness on a line's middle at ``a + s·u`` (the mean of three samples 0.12 mm across)."""
-    n = np.array([-u[1], u[0]])
-    base = a + np.outer(s, u)
-    return np.asarray(np.mean([sheet.darkness(base + m * 0.12 * n) for m in (-1, 0, 1)],
-                              axis=0))
 
 
 def _paper_by(dark: np.ndarray, by_mm: float, step: float) -> bool:
@@ -199,7 +189,7 @@ def pole_ray_cuts(segs: np.ndarray, sheet: Sheet, pole: np.ndarray,
                     continue
                 x = pole + r * u
                 s = np.arange(0.0, r - 0.3 + 1e-9, step)
-                dark = _ink_along(sheet, pole, u, s) >= half
+                dark = ink_along(sheet, pole, u, s) >= half
                 free = (np.ones(len(s), bool) if printed is None
                         else printed.darkness(pole + np.outer(s, u)) < 0.5)
                 if float(free.sum()) * step < _RAY_FREE_MM:
@@ -208,14 +198,14 @@ def pole_ray_cuts(segs: np.ndarray, sheet: Sheet, pole: np.ndarray,
                 if cover < _RAY_COVER:
                     continue
                 on = np.arange(0.0, _RAY_END_MM + _PAPER_MM + 1e-9, step)
-                if not _paper_by(_ink_along(sheet, x, u, on) >= half, _RAY_END_MM, step):
+                if not _paper_by(ink_along(sheet, x, u, on) >= half, _RAY_END_MM, step):
                     continue                     # the ray's ink goes on: crossed in its middle
                 on = np.arange(0.0, back + 1e-9, step)
-                if back > _RAY_RUN_MM and not _paper_by(_ink_along(sheet, x, w, on) >= half,
+                if back > _RAY_RUN_MM and not _paper_by(ink_along(sheet, x, w, on) >= half,
                                                         _RAY_RUN_MM, step):
                     continue                     # the link's ink goes on past the ray
                 after = np.arange(1.0, 2.0 + 1e-9, step)
-                if float(np.mean(_ink_along(sheet, tip, w, after) >= half)) > 1.0 / 3.0:
+                if float(np.mean(ink_along(sheet, tip, w, after) >= half)) > 1.0 / 3.0:
                     continue                     # the segment's own line goes on past its tip
                 if best is None or cover > best[0]:
                     best = (cover, _cut_at(sheet, pole, u, far, w, x, r, half, free))
