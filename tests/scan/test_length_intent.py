@@ -16,7 +16,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
 
-from scan_fixed_sample import _intended, planted_wrong  # noqa: E402
+from scan_fixed_sample import _intended, planted_wrong, read_right  # noqa: E402
 
 from graphkin.check.report import OK, WRONG, Row  # noqa: E402
 
@@ -53,3 +53,14 @@ def test_a_reversed_drawing_is_intended_reversed_whatever_its_wrong_length() -> 
     assert _intended("reversed", rows, None)
     assert _intended("reversed", rows, "C")
     assert not _intended("reversed", [Row("V_A", "1", "1", "0", OK)], None)
+
+
+def test_read_right_counts_a_verdict_on_the_tolerance_edge_apart() -> None:
+    drawn = {"A": np.array([10.0, 20.0]), "B": np.array([40.0, 0.0])}
+    # read 0.2 mm and 0.15 mm from where drawn: both within 0.25 mm
+    near = {"A": np.array([10.12, 20.16]), "B": np.array([40.0, -0.15])}
+    assert read_right(near, drawn)
+    # B read 0.3 mm off (3-4-5: 0.18, 0.24): a misread, not an edge verdict
+    assert not read_right({**near, "B": np.array([40.18, 0.24])}, drawn)
+    # B not found at all
+    assert not read_right({"A": near["A"]}, drawn)
