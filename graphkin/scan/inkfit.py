@@ -57,7 +57,9 @@ fitted lines and the ink's ends along them agree best:
    by their crossing; along lines nearly parallel, the ends decide.
 
 The point so found replaces the one read only when it is well determined
-(σ under :data:`SIGMA_MAX_MM` in every direction) and within
+(σ under :data:`SIGMA_MAX_MM` in every direction, or under
+:data:`LOOSE_SIGMA_MAX_MM` where the point read lies more than 2 σ off it
+along its vector from the pole: :func:`read_off`) and within
 :data:`MOVE_MAX_MM` of it; one moved farther than the drawing tolerance is
 said so in a note.  Measured in docs/checking.md ("How well it reads") and
 docs/scan-reading.md.
@@ -85,8 +87,8 @@ from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
 __all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_along", "ink_end", "other_ray",
-           "refine_point", "refine_points", "refine_read", "past_crossings", "SIGMA_MAX_MM",
-           "MOVE_MAX_MM"]
+           "refine_point", "refine_points", "refine_read", "read_off", "past_crossings",
+           "SIGMA_MAX_MM", "LOOSE_SIGMA_MAX_MM", "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35
 """A refined point is used only when known to this (σ, mm) in every direction."""
@@ -153,6 +155,12 @@ _TOLD_MM = 0.5
 """A point moved farther than this (the default drawing tolerance) is said so in a note."""
 _SPREAD_SIN = math.sin(math.radians(3.0))
 """Lines under 3° apart are one direction: the ends decide along it."""
+LOOSE_SIGMA_MAX_MM = 0.6
+"""A refined point known only to this (σ, mm) is used where the point read lies far off it."""
+_OFF_SIGMAS = 2.0
+"""The point read lies off a refined point by more than this many σ (its Mahalanobis distance)."""
+_ON_RAY_MM = 0.15
+"""A point read this near (mm) the vector from the pole through the refined point lies on it."""
 
 
 @dataclass(frozen=True)
@@ -631,9 +639,11 @@ def refine_read(read: Any, sol: Any, ratio: np.ndarray, origin_px: tuple[int, in
     """Refine the image points of a :class:`graphkin.scan.read.SheetRead` in place.
 
     Each point read is replaced by the one its lines' ink gives
-    (:func:`refine_points`) when that is known to :data:`SIGMA_MAX_MM` and
-    within :data:`MOVE_MAX_MM`; a point moved by more than the default
-    drawing tolerance (0.5 mm, ``check --drawing``) is said so in a note.
+    (:func:`refine_points`) when that is known to :data:`SIGMA_MAX_MM` (or
+    to :data:`LOOSE_SIGMA_MAX_MM` with the point read far off it along its
+    vector: :func:`read_off`) and within :data:`MOVE_MAX_MM`; a point moved by more
+    than the default drawing tolerance (0.5 mm, ``check --drawing``) is said
+    so in a note.
     ``ratio``: the reader's light-flattened polygon area, its top-left pixel
     at ``origin_px`` of the rectified sheet, ``sheet_h_mm`` high.
     """
@@ -645,7 +655,7 @@ def refine_read(read: Any, sol: Any, ratio: np.ndarray, origin_px: tuple[int, in
     for name in sorted(found):
         ref, p0 = found[name], read.points[name]
         move = float(np.hypot(*(ref.point - p0)))
-        if ref.sigma > SIGMA_MAX_MM or move > MOVE_MAX_MM:
+        if move > MOVE_MAX_MM or not (ref.sigma <= SIGMA_MAX_MM or read_off(ref, p0, pole)):
             continue
         read.points[name] = ref.point
         read.moved[name] = move
@@ -653,6 +663,32 @@ def refine_read(read: Any, sol: Any, ratio: np.ndarray, origin_px: tuple[int, in
             read.notes.append(f"{name.lower()} is read {move:.1f} mm from where the pencil "
                               "segments' ends put it: where its lines, fitted to the ink along "
                               "their length, and their ends agree")
+
+
+def read_off(ref: Refined, p0: np.ndarray, pole: np.ndarray) -> bool:
+    """Whether a loosely refined point is used all the same: its arrowhead's end is far on.
+
+    Where the image lies on (or within about 1 mm of) a link's line through
+    another image (Sec. 3.5: the image of a link is similar to the link) and
+    the vector from the pole crosses that line at 10-20° (Sec. 3.4), the
+    strokes' ink is one band; the point is known across the band to 0.1 mm
+    but along it only from the crossing vector's fitted line and its
+    arrowhead's end, run on over the band's ink for about 1 mm and known to
+    half that run: to 0.35-0.6 mm (σ).  The segments' ends put it 1-2 mm
+    short of or past the arrowhead, on the vector.  A refined point known to
+    :data:`LOOSE_SIGMA_MAX_MM`, with an end found, is used when the point
+    read lies on the vector from the pole through it (within
+    :data:`_ON_RAY_MM`: moved along the vector, to its arrowhead) and more
+    than :data:`_OFF_SIGMAS` of its σ off it (its Mahalanobis distance under
+    the refined point's covariance).  Measured in docs/scan-reading.md
+    (28 Nov 2026, scan24).
+    """
+    if ref.sigma > LOOSE_SIGMA_MAX_MM or ref.ends < 1:
+        return False
+    ray = ref.point - np.asarray(pole, dtype=float)
+    d = np.asarray(p0, dtype=float) - ref.point
+    across = abs(float(ray[0] * d[1] - ray[1] * d[0])) / max(float(np.hypot(*ray)), 1e-12)
+    return across <= _ON_RAY_MM and float(d @ np.linalg.solve(ref.cov, d)) > _OFF_SIGMAS**2
 
 
 def past_crossings(segs: np.ndarray, sheet: Sheet) -> np.ndarray:
