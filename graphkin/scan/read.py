@@ -48,7 +48,7 @@ from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
 from graphkin.scan.poleray import pole_ray_cuts, printed_sheet
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
-from graphkin.scan.tipweight import tip_strength
+from graphkin.scan.tipweight import tip_behind
 from graphkin.tolerance import sign
 
 __all__ = ["SheetRead", "read_sheet", "places", "NOT_FOUND", "too_short"]
@@ -411,9 +411,7 @@ def _match(read: SheetRead) -> None:
     (cost: the distance; plus 1.5 mm to a usual mistake's place, plus 0.5 mm
     to a place carried from the student's own wrong images, plus 2 mm for an
     end that may be a gap in one straight line, less 0.5 mm for each other
-    segment ending with it, at most 1 mm; an arrowhead's tip on its own
-    vector, less 0.5 mm for each segment ending there, none short of it:
-    :func:`graphkin.scan.tipweight.tip_strength`) or none (cost: more than any
+    segment ending with it, at most 1 mm) or none (cost: more than any
     within reach), two names never one vertex (ends within 2.5 mm) unless
     their exact images coincide; of all such assignments the one of least
     total cost is taken, so an image nearest to a vertex another image needs
@@ -444,10 +442,7 @@ def _match(read: SheetRead) -> None:
     ok = np.concatenate([_vertex_ends(segs, ends_at, pole)
                          & ~broken_by_tips(segs, read.arrows, _SAME_MM), np.ones(extra, bool)])
     gap = np.concatenate([_gap_ends(segs, ends_at), np.zeros(extra, bool)])
-    # an arrowhead's tip where its own vector and the image's lines end counts as their ends
-    strong = np.concatenate([_strength(ends_at),
-                             tip_strength(segs, pts[len(ends_at):], pole, _SAME_MM, _STRONG_MM,
-                                          _RAY_LINE_MM, _PAST_MM)])
+    strong = np.concatenate([_strength(ends_at), np.zeros(extra)])
     names = list(read.places)
     reach = {n: max(_NEAR_MM, _NEAR_FRACTION * float(np.hypot(*(at[0] - pole))))
              for n, at in read.places.items()}
@@ -493,7 +488,11 @@ def _match(read: SheetRead) -> None:
         # an arrowhead found at a place, along pole -> place: the tip is the vertex, not a
         # crossing of lines passing near it (in a band of merged strokes they cross anywhere)
         held = j >= len(ends_at) and _at_head(read, p)
-        read.points[name] = p.copy() if held else _vertex(read, sorted(set(near)), p, pole)
+        v = p.copy() if held else _vertex(read, sorted(set(near)), p, pole)
+        # the ends' vertex carried on along its own vector past the arrowhead found there
+        read.points[name] = v if held else tip_behind(read.segments, read.heads, v, pole,
+                                                      _SAME_MM, _RAY_LINE_MM, _PAST_MM,
+                                                      _GAP_SIN)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 

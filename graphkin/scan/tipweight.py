@@ -1,20 +1,17 @@
-"""How much an arrowhead's tip counts as a vertex beside the segments ending there.
+"""An image read at the ends' vertex or at its arrowhead's tip, whichever its ink allows.
 
 An image point is where its absolute vector, drawn from the pole, has its
 arrowhead (Uicker, Pennock & Shigley, 5th ed., Sec. 3.4), and where the
 lines of its link's image end with it (Secs. 3.5, 4.2: images of a link).
-The names are given to vertices (:func:`graphkin.scan.read._match`): a
-segment end counts nearer for each other segment ending with it.  An
-arrowhead's tip found where its own vector ends, with the image's lines
-ending there too, is as sure a vertex: it counts as much nearer, so a
-cluster of ends beside it, whose lines' crossing is pulled off the image
-by a band of merged strokes, does not take its name.
-
-A tip is found where the head's ink ends along the vector's axis
-(:func:`graphkin.scan.arrows.head_at`).  A line running on past the tip
-within 8° of that axis carries the ink on, and the tip is then found up
-to 0.8 mm along it (a thin polygon, all its lines near the vector's
-direction): such a tip counts no nearer than before.
+Where segments end near an image, it is read where their lines meet
+(:func:`graphkin.scan.read._vertex`); in a band of merged strokes crossing
+the vector at 20° that crossing slides along the vector, past its tip.
+The arrowhead found there (:func:`graphkin.scan.arrows.head_at`) is read
+where the head's ink ends along the vector's axis: other ink through the
+tip (a link line running on past it at 5-20°) can only carry that end
+farther from the pole, never nearer.  So a tip behind the ends' vertex,
+along its own vector, is the image; a tip ahead of it may be run-on ink
+(up to 0.9 mm ahead in a thin polygon), and the vertex stays.
 
 References
 ----------
@@ -25,48 +22,60 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["tip_strength"]
+__all__ = ["tip_behind"]
 
 _ON_OWN_MM = 0.5
-"""A tip lies on its own vector's line: within this of it (a tip is found to 0.1-0.3 mm)."""
+"""A point lies on a vector's line: within this of it (a tip is found to 0.1-0.3 mm)."""
 
 
-def tip_strength(segs: np.ndarray, tips: np.ndarray, pole: np.ndarray, same_mm: float,
-                 strong_mm: float, ray_mm: float, past_mm: float) -> np.ndarray:
-    """How much nearer each arrowhead's tip counts as a vertex (mm, (k,)).
+def tip_behind(segs: np.ndarray, tips: np.ndarray, v: np.ndarray, pole: np.ndarray,
+               same_mm: float, ray_mm: float, past_mm: float, narrow_sin: float
+               ) -> np.ndarray:
+    """The image: the vertex ``v``, or the arrowhead's tip it lies ahead of (mm).
 
     Parameters
     ----------
     segs : ndarray (n, 2, 2)
         The pencil segments (sheet mm).
     tips : ndarray (k, 2)
-        The arrowheads' tips the names may take (sheet mm).
+        The arrowheads' tips found at the places images can be (sheet mm).
+    v : ndarray (2,)
+        The vertex read where the segments ending there meet (sheet mm).
     pole : ndarray (2,)
         The printed pole (sheet mm).
     same_mm : float
-        Segments ending within this of a tip end there (one vertex).
-    strong_mm : float
-        How much nearer a tip counts for each segment ending there.
+        A tip within this of ``v``, and a segment ending within it of the
+        tip, are at one vertex.
     ray_mm : float
         A segment whose line passes within this of the pole is a vector from it.
     past_mm : float
-        A tip farther than this beyond the end of another segment ending
-        there, along that segment, is not where that segment ends.
+        Another segment, a link line of the image, ends within this of the tip.
+    narrow_sin : float
+        The sine of the angle over which that line crosses the vector's axis.
 
     Returns
     -------
-    ndarray (k,)
-        ``strong_mm`` for each segment ending within ``same_mm`` of the tip,
-        at most twice that, when one of them is the tip's own vector (its
-        line through the pole within ``ray_mm``, the tip within 0.5 mm of it)
-        and the tip is no farther than ``past_mm`` beyond any other one's end
-        along it; 0 otherwise (Sec. 3.4: each vector's arrowhead at its
-        image; Secs. 3.5, 4.2: the image's lines end there too).
+    ndarray (2,)
+        The nearest tip within ``same_mm`` of ``v`` when a segment ending
+        within ``same_mm`` of it is its own vector (its line through the
+        pole within ``ray_mm``, the tip within 0.5 mm of it), another segment
+        crossing its axis at over the narrow angle ends within ``past_mm`` of
+        the tip (Secs. 3.5, 4.2: the image's lines
+        end there too; a tip found where a line merging with the vector's ink
+        leaves it has none), and ``v`` lies
+        on that vector's line (within 0.5 mm) over 0.5 mm beyond the tip,
+        away from the pole (Sec. 3.4: the vector ends at its arrowhead);
+        ``v`` otherwise.
     """
+    v = np.asarray(v, dtype=float)
     tips = np.asarray(tips, dtype=float).reshape(-1, 2)
-    out = np.zeros(len(tips))
     if not len(tips) or not len(segs):
-        return out
+        return v
+    dist = np.hypot(*(tips - v).T)
+    i = int(np.argmin(dist))
+    t = tips[i]
+    if float(dist[i]) >= same_mm:
+        return v
     a, b = segs[:, 0], segs[:, 1]
     d = b - a
     length = np.hypot(*d.T)
@@ -77,22 +86,22 @@ def tip_strength(segs: np.ndarray, tips: np.ndarray, pole: np.ndarray, same_mm: 
         w = p - a
         return np.asarray(np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]))
 
-    ray = (length > 0) & (off(pole) <= ray_mm)
-    for i, t in enumerate(tips):
-        end = np.minimum(np.hypot(*(a - t).T), np.hypot(*(b - t).T)) < same_mm
-        end &= length > 0
-        own = end & ray & (off(t) <= _ON_OWN_MM)
-        if not own.any():
-            continue
-        k = int(np.flatnonzero(own)[0])
-        # each other line ending there, walked to its end nearer the tip: its end is the
-        # vertex's to the hand's 0.3 mm; a tip farther beyond it is read on other ink
-        near_b = np.hypot(*(b - t).T) <= np.hypot(*(a - t).T)
-        end_pt = np.where(near_b[:, None], b, a)
-        w = np.where(near_b[:, None], u, -u)
-        beyond = np.einsum("ij,ij->i", t - end_pt, w)
-        others = end & (np.arange(len(segs)) != k)
-        if np.any(beyond[others] > past_mm):
-            continue
-        out[i] = strong_mm * min(int(end.sum()), 2)
-    return out
+    end = np.minimum(np.hypot(*(a - t).T), np.hypot(*(b - t).T)) < same_mm
+    own = end & (length > 0) & (off(pole) <= ray_mm) & (off(t) <= _ON_OWN_MM)
+    if not own.any():
+        return v
+    k = int(np.flatnonzero(own)[0])
+    # a link line of the image crossing the vector ends at the tip (within past_mm of it):
+    # the tip is at the image's vertex, not where a line merging with the vector's ink
+    # leaves it
+    reach = float(np.hypot(*(t - pole)))
+    axis = (t - pole) / max(reach, 1e-12)
+    near = np.minimum(np.hypot(*(a - t).T), np.hypot(*(b - t).T)) <= past_mm
+    near &= np.abs(u[:, 0] * axis[1] - u[:, 1] * axis[0]) > narrow_sin
+    near[k] = False
+    if not near.any():
+        return v
+    ahead = float((v - t) @ axis)
+    if ahead > _ON_OWN_MM and float(off(v)[k]) <= _ON_OWN_MM:
+        return t.copy()
+    return v
