@@ -26,6 +26,10 @@ __all__ = ["tip_behind"]
 
 _ON_OWN_MM = 0.5
 """A point lies on a vector's line: within this of it (a tip is found to 0.1-0.3 mm)."""
+_AHEAD_MM = 1.5
+"""The ends' vertex slides past the tip along a band by up to this (0.97 mm in sample
+20261202 #18); a tip 2.4-2.5 mm behind it is a false one, where a link line run on past
+the image crosses the vector (20261130 #49 at mild, 20261129 #35 at scan)."""
 
 
 def tip_behind(segs: np.ndarray, tips: np.ndarray, v: np.ndarray, pole: np.ndarray,
@@ -63,7 +67,7 @@ def tip_behind(segs: np.ndarray, tips: np.ndarray, v: np.ndarray, pole: np.ndarr
         the tip (Secs. 3.5, 4.2: the image's lines
         end there too; a tip found where a line merging with the vector's ink
         leaves it has none), and ``v`` lies
-        on that vector's line (within 0.5 mm) over 0.5 mm beyond the tip,
+        on that vector's line (within 0.5 mm) 0.5-1.5 mm beyond the tip,
         away from the pole (Sec. 3.4: the vector ends at its arrowhead);
         ``v`` otherwise.
     """
@@ -102,6 +106,6 @@ def tip_behind(segs: np.ndarray, tips: np.ndarray, v: np.ndarray, pole: np.ndarr
     if not near.any():
         return v
     ahead = float((v - t) @ axis)
-    if ahead > _ON_OWN_MM and float(off(v)[k]) <= _ON_OWN_MM:
+    if _ON_OWN_MM < ahead <= _AHEAD_MM and float(off(v)[k]) <= _ON_OWN_MM:
         return t.copy()
     return v

@@ -8,7 +8,8 @@ slides along the vector past its tip.  A tip found there
 (:func:`graphkin.scan.arrows.head_at`) can only be carried on away from the
 pole by other ink, never toward it: a vertex over 0.5 mm beyond the tip, on
 its vector's line, with a link line crossing the vector ending at the tip,
-is read at the tip (:func:`graphkin.scan.tipweight.tip_behind`).
+is read at the tip when under 1.5 mm from it
+(:func:`graphkin.scan.tipweight.tip_behind`).
 
 The photo is a four-bar acceleration polygon of the sample seeded 20261202
 (benchmarks/data/scan_sample_20261202.json, #18; its mechanism in
@@ -83,6 +84,8 @@ def _cases() -> list[tuple[np.ndarray, np.ndarray, bool]]:
         (np.array([_OWN, _link(0.3, _turned(175.0))]), _TIP + 1.0 * _AXIS, False),
         # no vector from the pole ends there
         (np.array([off_pole, _link(0.3)]), _TIP + 1.0 * _AXIS, False),
+        # the vertex 2 mm past (over 1.5 mm: a false tip where a link's run-on crosses o's line)
+        (both, _TIP + 2.0 * _AXIS, False),
         # the vertex 3 mm past (over 2.5 mm: another vertex)
         (both, _TIP + 3.0 * _AXIS, False),
     ]
