@@ -48,6 +48,7 @@ from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
 from graphkin.scan.poleray import pole_ray_cuts, printed_sheet
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
+from graphkin.scan.tipweight import tip_behind
 from graphkin.tolerance import sign
 
 __all__ = ["SheetRead", "read_sheet", "places", "NOT_FOUND", "too_short"]
@@ -487,7 +488,11 @@ def _match(read: SheetRead) -> None:
         # an arrowhead found at a place, along pole -> place: the tip is the vertex, not a
         # crossing of lines passing near it (in a band of merged strokes they cross anywhere)
         held = j >= len(ends_at) and _at_head(read, p)
-        read.points[name] = p.copy() if held else _vertex(read, sorted(set(near)), p, pole)
+        v = p.copy() if held else _vertex(read, sorted(set(near)), p, pole)
+        # the ends' vertex carried on along its own vector past the arrowhead found there
+        read.points[name] = v if held else tip_behind(read.segments, read.heads, v, pole,
+                                                      _SAME_MM, _RAY_LINE_MM, _PAST_MM,
+                                                      _GAP_SIN)
     read.missing = [n for n in read.places if n not in read.points]
     read.notes += _untellable(read, chosen, cands, pts)
 
