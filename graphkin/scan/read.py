@@ -93,6 +93,8 @@ _OWN_RUN_MM = 1.2
 _HEAD_HOLD_MM = 1.0
 """An image read at an arrowhead's tip found at its place is not moved farther than this by
 its lines' ink (a tip is found to 0.1-0.3 mm, at most 0.9 mm off; see :func:`_held_at_heads`)."""
+_AGREE_MM = 0.5
+"""A vertex read and an arrowhead's tip found this near (mm) agree: the hand's 0.5 mm."""
 _RAY_LINE_MM = 1.5
 _RAY_START_MM = 10.0
 """A segment end under this far from the pole, on a line through the pole within 1.5 mm,
@@ -284,7 +286,8 @@ def read_sheet(sol: Any, page: Page, diag: Diagnoser, digest: str, title: str = 
         if not _carried(read, sol, diag):
             break
         _match(read)
-    at_head = {n: p.copy() for n, p in read.points.items() if _at_head(read, p)}
+    at_head = {n: p.copy() for n, p in read.points.items()
+               if _at_head(read, p) or _by_head(read, p)}
     refine_read(read, sol, ratio, (box[0], box[1]), h)      # the images from their lines' ink
     _held_at_heads(read, at_head)
     return read
@@ -297,6 +300,22 @@ def _at_head(read: SheetRead, p: np.ndarray) -> bool:
         return False
     return bool(float(np.min(np.hypot(*(tips - p).T))) < 1e-9
                 and float(np.min(np.hypot(*(read.heads - p).T))) < 1.0)
+
+
+def _by_head(read: SheetRead, p: np.ndarray) -> bool:
+    """Whether an arrowhead found at a place lies within :data:`_AGREE_MM` of ``p``.
+
+    The vertex read from the segments' ends and the tip of the arrowhead
+    looked for along pole -> place (:func:`_with_heads`) are two readings of
+    where the vector ends (Sec. 3.4: the arrowhead at the image); where they
+    agree to the hand's 0.5 mm, the lines fitted to the ink may not carry
+    the image over 1 mm away (:func:`_held_at_heads`): a vector crossing a
+    band of merged link lines (a coupler point on its link's line, Sec. 3.5)
+    has its ink walked on through the band, past the image.
+    """
+    if not len(read.heads):
+        return False
+    return float(np.min(np.hypot(*(read.heads - p).T))) <= _AGREE_MM
 
 
 def _held_at_heads(read: SheetRead, at_head: dict[str, np.ndarray]) -> None:
