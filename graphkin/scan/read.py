@@ -327,7 +327,8 @@ def _held_at_heads(read: SheetRead, at_head: dict[str, np.ndarray]) -> None:
     (:func:`graphkin.scan.inkfit.refine_read`), are least sure where the
     image has no segment end of its own: in a band of merged strokes they
     cross 0.6-3 mm along the band.  A move of more than :data:`_HEAD_HOLD_MM`
-    from the tip is not taken.
+    from the tip is not taken.  So too for an image read where the segments'
+    ends and such a tip agree (:func:`_by_head`): it is put back where read.
     """
     for name, tip in at_head.items():
         if read.moved.get(name, 0.0) <= _HEAD_HOLD_MM:
