@@ -26,7 +26,7 @@ from typing import Any, overload
 import numpy as np
 
 __all__ = ["wrap_degrees", "fmt", "g6", "fmt_angle", "direction_degrees", "sense", "polar",
-           "xy", "table", "ROUND_OFF", "toml_string", "unit_text"]
+           "xy", "table", "ROUND_OFF", "toml_string", "unit_text", "degrees_text"]
 
 ROUND_OFF = 1e-12
 """Coordinates below this fraction of the mechanism's size are written as 0 (round-off)."""
@@ -81,6 +81,11 @@ def fmt(x: float, digits: int = 5, *, trim: bool = True) -> str:
     ('25.383', '-1819.4', '3250000', '0', '1e-14')
     >>> fmt(35530.6, 4, trim=False), fmt(2.5, 4, trim=False), fmt(0.054321, 4, trim=False)
     ('35531', '2.500', '0.05432')
+
+    A tie of the last digit is rounded away from zero, whichever way round-off moved it:
+
+    >>> fmt(218.75, 4), fmt(218.75 * (1 - 1e-15), 4), fmt(-0.125, 2)
+    ('218.8', '218.8', '-0.13')
     """
     x = float(x)
     if not trim and (x == 0 or not math.isfinite(x)):
@@ -96,7 +101,10 @@ def fmt(x: float, digits: int = 5, *, trim: bool = True) -> str:
             return f"{x:.{digits}g}"
         return f"{x:.{max(digits - 3, 1)}g}".replace("e-0", "e-").replace("e+0", "e")
     decimals = max(digits - 1 - math.floor(math.log10(ax)), 0)
-    s = f"{x:.{decimals}f}"
+    # a value on a tie of its last digit (T = 218.75 to four digits) is rounded away from
+    # zero: half-to-even on the binary value would print 218.7 or 218.8 as the last digit of
+    # a solve went, on another machine the other
+    s = f"{x * (1.0 + 1e-9):.{decimals}f}"
     if trim and "." in s:
         s = s.rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
@@ -138,6 +146,26 @@ def direction_degrees(v: Any) -> float:
     90.0
     """
     return math.degrees(math.atan2(float(v[1]), float(v[0])))
+
+
+def degrees_text(rad: float, decimals: int = 4) -> str:
+    """An angle in degrees in (-180, 180], written with ``decimals``: the half turn is 180.
+
+    An angle of a half turn is π or -π as the last digit of a solve goes: it
+    prints as ``180`` on every machine, and one that rounds to zero as ``0``.
+
+    Examples
+    --------
+    >>> degrees_text(math.pi), degrees_text(-math.pi), degrees_text(-1e-9, 2)
+    ('180.0000', '180.0000', '0.00')
+    """
+    half = 0.5 * 10.0 ** -decimals
+    d = math.degrees(math.remainder(rad, 2 * math.pi))
+    if d <= -180.0 + half:
+        d = 180.0
+    if abs(d) < half:
+        d = 0.0
+    return f"{d:.{decimals}f}"
 
 
 def fmt_angle(rad: float) -> str:

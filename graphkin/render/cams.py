@@ -285,7 +285,8 @@ def _nomenclature(ax: Any, cam: Cam, prof: Array, pitch: Array | None, n: int,
 
         free = [k for k in range(len(rays)) if k not in taken]
         apart = [k for k in free if k - 1 not in taken and k + 1 not in taken]
-        order = sorted(apart or free, key=lambda k: -gap(rays[k]))
+        # rays where the gaps are equal but for round-off (a dwell) keep their order
+        order = sorted(apart or free, key=lambda k: round(-gap(rays[k]) / reach, 9))
         if not order:
             break
         taken.add(order[0])

@@ -26,6 +26,8 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import shapely
+import shapely.geometry
 
 from graphkin.render.labels import place_labels
 from graphkin.render.results import Row
@@ -39,6 +41,7 @@ from graphkin.render.sheet import (
     _layout,
 )
 from graphkin.render.text import math_escape
+from graphkin.tolerance import is_zero
 
 if TYPE_CHECKING:
     from graphkin.forces.solve import ForceSolution
@@ -220,12 +223,11 @@ def _link_items(fs: ForceSolution, p: Panel, lid: str, prefix: str,
     names = [n for n in mech.links[lid].points if n not in mech.helper_points]
     pts = np.array([sol.position(n, lid) for n in names]) if names else np.zeros((0, 2))
     g = p.group(f"{prefix}-link", 1.0, key=f"{prefix}-link")
-    if len(pts) >= 3:
-        c = pts.mean(axis=0)
-        order = np.argsort(np.arctan2(pts[:, 1] - c[1], pts[:, 0] - c[0]))
-        g.items.append(Item("polygon", pts[order], "plate"))
-    elif len(pts) == 2:
-        g.items.append(Item("path", pts, "link", overrides={"color": "#000000", "lw": 2.0}))
+    outline = _outline(pts)
+    if len(outline) >= 3:
+        g.items.append(Item("polygon", outline, "plate"))
+    elif len(outline) == 2:
+        g.items.append(Item("path", outline, "link", overrides={"color": "#000000", "lw": 2.0}))
     for j in fs.joints:
         if lid in (j.lo, j.hi) and j.kind != "pin" and not j.point.startswith("P_"):
             q = fs.geometry.points[j.point]
@@ -235,6 +237,39 @@ def _link_items(fs: ForceSolution, p: Panel, lid: str, prefix: str,
         g.items.append(Item("marker", np.array([q]), "pin"))
         p.labels.append(LabelRequest(point_text(n), q, "label-small", f"{prefix}-label-{n}", g,
                                      key=f"{prefix}-label-{n}"))
+
+
+def _outline(pts: np.ndarray) -> np.ndarray:
+    """A cut-free link's outline: the convex hull of its points, or a bar between its extremes.
+
+    A point inside (a mass center ``G4`` at the middle of its pins) is not a
+    corner of the plate: ordering the points by their angle about the centroid
+    would make one at the centroid a corner placed by round-off.  Points in a
+    line (to round-off of the link's size) give a bar.
+
+    Examples
+    --------
+    >>> _outline(np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 0.5], [1.0, 2.0]])).tolist()
+    [[0.0, 0.0], [2.0, 0.0], [1.0, 2.0]]
+    >>> _outline(np.array([[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]])).tolist()
+    [[0.0, 0.0], [2.0, 2.0]]
+    """
+    if len(pts) < 2:
+        return pts
+    hull = shapely.MultiPoint([tuple(q) for q in pts]).convex_hull
+    size = float(np.max(np.ptp(pts, axis=0)))
+    if hull.geom_type == "Polygon" and not is_zero(hull.area, size * size):
+        # a corner on a side but for round-off is no corner; the ring from its lowest-left
+        # corner (to a millionth of the size: two corners level but for round-off are level)
+        hull = shapely.geometry.polygon.orient(hull.simplify(1e-9 * size), 1.0)
+        ring = np.asarray(hull.exterior.coords)[:-1]
+        key = np.round((ring - ring.min(axis=0)) / size * 1e6)
+        start = int(np.lexsort((key[:, 1], key[:, 0]))[0])
+        return np.roll(ring, -start, axis=0)
+    # a bar: its two farthest points
+    d = np.hypot(*(pts[:, None, :] - pts[None, :, :]).transpose(2, 0, 1))
+    i, j = np.unravel_index(int(np.argmax(d)), d.shape)
+    return pts[[min(i, j), max(i, j)]]
 
 
 def _line_of_action(p: Panel, g: Group, at: np.ndarray, u: np.ndarray) -> None:

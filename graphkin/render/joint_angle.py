@@ -35,7 +35,8 @@ def angle_arc(painter: StepPainter, g: Group, panel: Panel, pivot: np.ndarray, b
     g.items.append(Item("path", np.array([pivot, pivot + 0.5 * k * d]), "datum",
                         key=f"{label}:datum"))
     t = math.remainder(theta, 2 * math.pi)
-    ts = base + np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3), 2) + 1)
+    # a sample every 3° (a round angle, 30°, is 10 samples on every machine)
+    ts = base + np.linspace(0.0, t, max(int(abs(math.degrees(t)) / 3 + 1e-6), 2) + 1)
     pts = pivot + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
     g.items.append(Item("path", pts, "angle-arc", key=label))
     if len(pts) >= 3:

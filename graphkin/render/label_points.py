@@ -73,11 +73,14 @@ def nearer_another(pts: np.ndarray, a: np.ndarray, cx: np.ndarray,
 
     d_own = gap(np.array([a[0]]), np.array([a[1]]))[:, 0]
     d_other = np.min(gap(others[:, 0], others[:, 1]), axis=1)
-    return d_other < d_own  # type: ignore[no-any-return]
+    # nearer by a clear margin: a box as near both but for round-off is its own point's
+    return d_other < d_own - _NEARER  # type: ignore[no-any-return]
 
 
 _SAME_POINT = 1e-6
 """Anchors closer than this (inches) are one point (coincident points lettered together)."""
+_NEARER = 1e-9
+"""A box is nearer another point only when nearer by more than this (inches)."""
 
 
 def astray_labels(panel: Panel) -> list[tuple[str, str]]:

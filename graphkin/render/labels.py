@@ -38,6 +38,13 @@ __all__ = ["place_labels", "text_size", "collisions", "RES"]
 
 RES = 100
 """Cells per inch of the ink map."""
+_TIE = 1e-9
+"""Two places whose scores differ by less than this score alike: the first in rank is taken."""
+_BIAS = 1e-7
+"""Cells are counted from a point ``_BIAS`` of a cell past each cell's edge: a line or a box
+edge exactly on a cell's edge (a panel's round margin, a point at a round coordinate) falls in
+the same cell on every machine, where the last digits of its coordinate would decide it."""
+
 INK_WIDTH = 0.03
 """How wide a drawn line counts when a label covers it, in inches."""
 _DIRS = ((1, 1), (-1, 1), (1, -1), (-1, -1), (1, 0), (-1, 0), (0, 1), (0, -1))
@@ -152,7 +159,7 @@ class _InkMap:
             np.zeros((0, 0), dtype=np.uint8), (0, 0, 0, 0))
 
     def _cells(self, pts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        ij = np.floor(pts * RES).astype(np.int64)
+        ij = np.floor(pts * RES + _BIAS).astype(np.int64)
         ok = (ij[:, 0] >= 0) & (ij[:, 0] < self.nx) & (ij[:, 1] >= 0) & (ij[:, 1] < self.ny)
         return ij[ok, 0], ij[ok, 1]
 
@@ -171,14 +178,14 @@ class _InkMap:
             return
         # every segment sampled at once: k + 1 points each, t = i (1/k) as np.linspace makes
         # them (the last exactly 1), so that a cell is counted once per segment as before
-        k = np.maximum((lengths * RES * 2).astype(np.int64), 1)
+        k = np.maximum((lengths * RES * 2 + _BIAS).astype(np.int64), 1)
         which = np.repeat(np.arange(len(k)), k + 1)
         start = np.cumsum(k + 1) - (k + 1)
         i = np.arange(len(which)) - start[which]
         t = i * (1.0 / k)[which]
         t[start + k] = 1.0
         q = pts0[which] + t[:, None] * seg[which]
-        ij = np.floor(q * RES).astype(np.int64)
+        ij = np.floor(q * RES + _BIAS).astype(np.int64)
         inside = (ij[:, 0] >= 0) & (ij[:, 0] < self.nx) & (ij[:, 1] >= 0) & (ij[:, 1] < self.ny)
         cell = ij[inside, 1] * self.nx + ij[inside, 0]
         pair = np.unique(which[inside] * (self.nx * self.ny) + cell)
@@ -191,8 +198,8 @@ class _InkMap:
 
     def rect(self, x0: float, y0: float, x1: float, y1: float) -> None:
         """Mark a filled box (a fixed text)."""
-        i0, j0 = max(int(x0 * RES), 0), max(int(y0 * RES), 0)
-        i1, j1 = min(int(x1 * RES) + 1, self.nx), min(int(y1 * RES) + 1, self.ny)
+        i0, j0 = max(int(x0 * RES + _BIAS), 0), max(int(y0 * RES + _BIAS), 0)
+        i1, j1 = min(int(x1 * RES + _BIAS) + 1, self.nx), min(int(y1 * RES + _BIAS) + 1, self.ny)
         if i1 > i0 and j1 > j0:
             self.ink[j0:j1, i0:i1] += 1.0
 
@@ -202,10 +209,10 @@ class _InkMap:
         self.sat[1:, 1:] = np.cumsum(np.cumsum(self.ink, axis=0), axis=1)
 
     def _range(self, b: tuple[float, float, float, float]) -> tuple[int, int, int, int]:
-        i0 = min(max(int(math.floor(b[0] * RES)), 0), self.nx)
-        j0 = min(max(int(math.floor(b[1] * RES)), 0), self.ny)
-        i1 = min(max(int(math.ceil(b[2] * RES)), 0), self.nx)
-        j1 = min(max(int(math.ceil(b[3] * RES)), 0), self.ny)
+        i0 = min(max(int(math.floor(b[0] * RES + _BIAS)), 0), self.nx)
+        j0 = min(max(int(math.floor(b[1] * RES + _BIAS)), 0), self.ny)
+        i1 = min(max(int(math.ceil(b[2] * RES - _BIAS)), 0), self.nx)
+        j1 = min(max(int(math.ceil(b[3] * RES - _BIAS)), 0), self.ny)
         return i0, j0, i1, j1
 
     def ink_in(self, b: tuple[float, float, float, float]) -> float:
@@ -219,8 +226,8 @@ class _InkMap:
 
     def _ranges(self, x0: np.ndarray, y0: np.ndarray, x1: np.ndarray,
                 y1: np.ndarray) -> tuple[np.ndarray, ...]:
-        lo = np.floor(np.stack([x0, y0]) * RES).astype(np.int64)
-        hi = np.ceil(np.stack([x1, y1]) * RES).astype(np.int64)
+        lo = np.floor(np.stack([x0, y0]) * RES + _BIAS).astype(np.int64)
+        hi = np.ceil(np.stack([x1, y1]) * RES - _BIAS).astype(np.int64)
         top = np.array([[self.nx], [self.ny]])
         lo = np.minimum(np.maximum(lo, 0), top)
         hi = np.maximum(np.minimum(np.maximum(hi, 0), top), lo)
@@ -269,7 +276,7 @@ class _InkMap:
         """The cells along a polyline (paper inches), two cells wide."""
         xs, ys = [], []
         for p0, p1 in zip(pts[:-1], pts[1:]):
-            n = max(int(float(np.hypot(*(p1 - p0))) * RES * 2), 1)
+            n = max(int(float(np.hypot(*(p1 - p0))) * RES * 2 + _BIAS), 1)
             q = p0 + np.linspace(0.0, 1.0, n + 1)[:, None] * (p1 - p0)
             for dx in (-1, 0, 1):
                 for dy in (-1, 0, 1):
@@ -311,7 +318,7 @@ def _mark(ink: _InkMap, panel: Panel, it: Item) -> None:
     elif it.kind in ("circle", "arc"):
         r = it.radius / panel.k
         t1, t2 = (0.0, 360.0) if it.kind == "circle" else (it.theta1, it.theta2)
-        ts = np.radians(np.linspace(t1, t2, max(int(abs(t2 - t1) / 2), 8)))
+        ts = np.radians(np.linspace(t1, t2, max(int(abs(t2 - t1) / 2 + 1e-6), 8)))
         ink.polyline(pts[0] + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1))
     elif it.kind == "text":
         size = float(STYLES.get(it.style, {}).get("size", 8.0))
@@ -465,7 +472,8 @@ def _clear_spots(panel: Panel, ink: _InkMap, a: np.ndarray, w: float,
     gx, gy = (v.ravel() for v in np.meshgrid(xs, ys))
     inked, taken = ink.both_many(gx - w / 2, gy - h / 2, gx + w / 2, gy + h / 2)
     ok = (inked == 0) & (taken == 0)
-    order = np.argsort(np.hypot(gx[ok] - a[0], gy[ok] - a[1]))[:40]
+    # nearest first; as near but for round-off: in grid order
+    order = np.argsort(np.round(np.hypot(gx[ok] - a[0], gy[ok] - a[1]), 9), kind="stable")[:40]
     return [np.array([gx[ok][i], gy[ok][i]]) for i in order]
 
 
@@ -591,7 +599,7 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     first = int(np.argmax(clean_all[:n])) if clean_all[:n].any() else n - 1
     j = 0
     for k in range(1, first + 1):  # the first strictly better score, as the loop kept it
-        if sc[k] < sc[j] - 1e-12:
+        if sc[k] < sc[j] - _TIE:
             j = k
     best = (float(sc[j]), cand[j].copy(), bool(clean_all[j]))
     if best[2] or len(cxs) == n:
@@ -600,8 +608,10 @@ def _spot(panel: Panel, ink: _InkMap, req: LabelRequest, w: float,
     g = SCORE["ink"] * inked_all[n:] * INK_WIDTH / (w * h) + mark[n:] \
         + SCORE["label"] * lab_all[n:] + SCORE["out"] * out_all[n:] + SCORE["grid"] \
         + SCORE["grid_distance"] * dist[keep]
-    j = int(np.argmin(g))
-    if g[j] < best[0] - 1e-12:
+    # the first of the places as good but for round-off (two at the same distance either side
+    # of the anchor score alike): np.argmin would pick either as the last digits went
+    j = int(np.flatnonzero(g <= g.min() + _TIE)[0])
+    if g[j] < best[0] - _TIE:
         best = (float(g[j]), np.array([cxs[n + j], cys[n + j]]), bool(clean_all[n + j]))
     return best
 
@@ -628,7 +638,10 @@ def _candidates(req: LabelRequest, a: np.ndarray, w: float, h: float) -> np.ndar
     dirs = list(_DIRS)
     if req.prefer is not None:
         px, py = req.prefer
-        dirs.sort(key=lambda d: -(d[0] * px + d[1] * py) / math.hypot(*d))
+        # two directions as near the preferred one but for round-off (it bisects them) keep
+        # their order in _DIRS, on every machine
+        n = math.hypot(px, py) or 1.0
+        dirs.sort(key=lambda d: round(-(d[0] * px + d[1] * py) / math.hypot(*d) / n, 9))
     d = np.array(dirs, dtype=float)
     u = d / np.hypot(d[:, 0], d[:, 1])[:, None]
     half = d * np.array([w / 2, h / 2])
@@ -661,7 +674,7 @@ def _segments(artist: Any) -> list[np.ndarray]:
         c = np.asarray(artist.center, dtype=float)
         r = artist.width / 2
         t1, t2 = artist.theta1, artist.theta2
-        ts = np.radians(np.linspace(t1, t2, max(int(abs(t2 - t1) / 2), 8)))
+        ts = np.radians(np.linspace(t1, t2, max(int(abs(t2 - t1) / 2 + 1e-6), 8)))
         pts = c + r * np.stack([np.cos(ts), np.sin(ts)], axis=-1)
         out.append(ax.transData.transform(pts))
     elif isinstance(artist, patches.Patch):

@@ -27,7 +27,7 @@ from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from graphkin.mechanisms.model import FRAME, Body, Mechanism, Rolling, Slider, Slot
 from graphkin.render.scene import Group, Item, LabelRequest, Panel, point_text, safe_id
 from graphkin.render.sources import Source
-from graphkin.tolerance import DEFAULT_TOL
+from graphkin.tolerance import DEFAULT_TOL, is_zero
 
 __all__ = ["paint_mechanism", "paint_bodies", "body_world", "link_points", "mechanism_extent",
            "BAR_HALF"]
@@ -186,7 +186,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             pts = body
         arr = np.array(list(pts.values()))
         g = panel.group(f"{pre}link-{lid}", 1.0 + 0.01 * mech.moving.index(lid), key=f"link {lid}")
-        distinct = MultiPoint([tuple(p) for p in arr]).convex_hull
+        distinct = _hull(arr, mech.scale)
         bars = slide_bars(src, lid, k)
         if distinct.geom_type == "Point" and not bars:
             rod = [sl for sl in mech.sliders if sl.link == lid and sl.on == FRAME]
@@ -212,8 +212,7 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             continue
         # a slide the body does not reach (a follower's face; a rod whose only other
         # point defines its slide, Example 4.4) is joined to it by a bar (a follower's face)
-        joins = [LineString(shapely.ops.nearest_points(distinct, b)) for b in bars
-                 if distinct.distance(b) > 2 * BAR_HALF * k]
+        joins = [_join(distinct, b) for b in bars if distinct.distance(b) > 2 * BAR_HALF * k]
         shape = shapely.union_all([distinct.buffer(BAR_HALF * k, quad_segs=6),
                                    *(b.buffer(BAR_HALF * k, quad_segs=6) for b in bars),
                                    *(j.buffer(BAR_HALF * k, quad_segs=6) for j in joins)])
@@ -224,15 +223,19 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
                                 key=f"link {lid}" if j == 0 else f"link {lid}:{j}"))
         # the number beside the bar, or inside the plate
         if plate:
+            # the middle of the plate (a convex hull: its centroid is inside), not GEOS's
+            # representative point, which jumps across the plate with the last digits
             rp = distinct.buffer(-1.2 * BAR_HALF * k)
-            anchor = np.asarray((rp if not rp.is_empty else distinct).representative_point()
-                                .coords[0])
+            anchor = np.asarray((rp if not rp.is_empty else distinct).centroid.coords[0])
             panel.labels.append(LabelRequest(lid, anchor, "number", f"{pre}number-{lid}", g,
                                              key=f"link {lid}", gap=0.0, center=True))
         else:
             line = (LineString([tuple(p) for p in arr]).convex_hull if len(arr) > 1
                     else shapely.union_all([distinct, *bars]).convex_hull)
-            c = np.asarray(line.centroid.coords[0])
+            # a hull's ring, not its area: collinear points (a pantograph's arm O2-A-B) give
+            # a hull of zero area whose area centroid is round-off over round-off
+            c = np.asarray((line.exterior if line.geom_type == "Polygon" else line)
+                           .centroid.coords[0])
             _number(panel, g, lid, _beside_discs(line, c, discs.get(lid)), pre,
                     gap=BAR_HALF + 0.03)
 
@@ -363,7 +366,8 @@ def paint_mechanism(src: Source, panel: Panel, known: set[str] | None,
             if lid == FRAME:
                 continue
             for q in link_points(src, lid).values():
-                if float(np.hypot(*(q - p))) > 0:
+                # a point on the pivot but for round-off leaves it in no direction
+                if not is_zero(float(np.hypot(*(q - p))), mech.scale):
                     others.append((q - p) / float(np.hypot(*(q - p))))
         down = _free_direction(others)
         side = np.array([-down[1], down[0]])
@@ -469,9 +473,10 @@ def _free_direction(dirs: list[np.ndarray]) -> np.ndarray:
     for cand in ((0.0, -1.0), (-1.0, 0.0), (1.0, 0.0), (0.0, 1.0)):
         c = np.array(cand)
         clearance = -max((float(c @ v) for v in dirs), default=-1.0)
-        if clearance >= 0.35:
+        # by a clear margin: two sides as clear but for round-off keep the order above
+        if clearance >= 0.35 - 1e-9:
             return c
-        if clearance > score:
+        if clearance > score + 1e-9:
             best, score = c, clearance
     return best
 
@@ -479,8 +484,22 @@ def _free_direction(dirs: list[np.ndarray]) -> np.ndarray:
 def _has_outline(src: Source, lid: str) -> bool:
     """True when a link is drawn as a bar or plate (two or more distinct points)."""
     pts = link_points(src, lid)
-    hull = MultiPoint([tuple(p) for p in pts.values()]).convex_hull
+    mech = src.mechanism
+    hull = _hull(np.array(list(pts.values())), mech.scale if mech is not None else 1.0)
     return hull.geom_type != "Point"
+
+
+def _hull(arr: np.ndarray, scale: float) -> Any:
+    """The convex hull of a link's points; one point when they coincide but for round-off.
+
+    Examples
+    --------
+    >>> _hull(np.array([[1.0, 2.0], [1.0 + 1e-15, 2.0]]), 1.0).geom_type
+    'Point'
+    """
+    if len(arr) and np.all(np.hypot(*(arr - arr[0]).T) <= DEFAULT_TOL.length(scale)):
+        return Point(*arr[0])
+    return MultiPoint([tuple(p) for p in arr]).convex_hull
 
 
 GEAR_Z = 0.75
@@ -504,6 +523,36 @@ def _other_discs(mech: Mechanism, sol: Any, is_known: Any) -> dict[str, Any]:
                if is_known(r.center) and not _whole_disc(mech, sol, r)]
     return {lid: shapely.union_all([d for k, d in rollers if k != lid])
             for lid in mech.moving if any(k != lid for k, _ in rollers)}
+
+
+def _join(body: Any, bar: Any) -> LineString:
+    """The shortest bar from a link's body to a slide it does not reach.
+
+    The shortest distance between two segments or polygons is reached at a
+    vertex of one of them; between a body and a slide parallel to it, at every
+    point of their overlap, where GEOS's nearest points fall as the last digits
+    go.  Of the joins as short as the shortest but for round-off, the one
+    nearest the body's middle.
+
+    Examples
+    --------
+    >>> _join(LineString([(0, 0), (4, 0)]), LineString([(1, 2), (9, 2)])).coords[:]
+    [(1.0, 0.0), (1.0, 2.0)]
+    """
+    def verts(g: Any) -> list[Point]:
+        return [Point(c) for c in shapely.get_coordinates(g)]
+
+    near = shapely.ops.nearest_points
+    cands = [(v, near(v, bar)[1]) for v in verts(body)] + \
+        [(near(w, body)[1], w) for w in verts(bar)]
+    d = np.array([a.distance(b) for a, b in cands])
+    size = max(float(np.ptp(np.asarray(body.bounds).reshape(2, 2), axis=0).max()),
+               float(d.min()), 1e-300)
+    mid = body.centroid
+    best = min((i for i in range(len(cands)) if is_zero(d[i] - d.min(), size)),
+               key=lambda i: round(cands[i][0].distance(mid) / size, 9))
+    a, b = cands[best]
+    return LineString([a, b])
 
 
 def _beside_discs(line: Any, c: np.ndarray, discs: Any) -> np.ndarray:

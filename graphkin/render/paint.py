@@ -406,9 +406,10 @@ class StepPainter:
         c = np.array([(x0 + x1) / 2, (y0 + y1) / 2]) if center is None else center
         ts = []
         for i, (lo, hi) in enumerate(((x0, x1), (y0, y1))):
-            if d[i] > 0:
+            # a component of round-off (of the unit direction) leaves by the other side
+            if d[i] > 1e-12:
                 ts.append((hi - c[i]) / d[i])
-            elif d[i] < 0:
+            elif d[i] < -1e-12:
                 ts.append((lo - c[i]) / d[i])
         t = min(ts)
         tip = c + d * (t - 0.12 * panel.k)

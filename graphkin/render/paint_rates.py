@@ -23,6 +23,7 @@ from graphkin.render.joint_angle import angle_arc, joint_arc
 from graphkin.render.scale import fmt
 from graphkin.render.scene import Group, Item, Panel, sub_digits
 from graphkin.render.sources import Source
+from graphkin.tolerance import is_zero
 
 if TYPE_CHECKING:
     from graphkin.render.paint import StepPainter
@@ -109,15 +110,18 @@ def _link_center(src: Source, lid: str) -> tuple[np.ndarray | None, float]:
     pts = {n: np.asarray(sol.position(n, lid), dtype=float) for n in names}
     frame = mech.links[FRAME].points
     pivots = [n for n in names if n in frame]
-    if pivots:
-        c = pts[pivots[0]]
-        others = [pts[n] - c for n in names if float(np.hypot(*(pts[n] - c))) > 0]
-    else:
-        c = np.mean(list(pts.values()), axis=0)
-        others = [pts[n] - c for n in names]
+    c = pts[pivots[0]] if pivots else np.mean(list(pts.values()), axis=0)
+    size = max(float(np.hypot(*(p - c))) for p in pts.values())
+    # the points away from the centre; their mean direction, else (a floating link, whose
+    # points' mean offset from their centroid is zero but for round-off, or a lever with
+    # its pivot at the middle) the first point's: a direction of round-off would turn the
+    # rate's arrow differently on another machine
+    others = [pts[n] - c for n in names if not is_zero(float(np.hypot(*(pts[n] - c))), size)]
+    ang = 0.0
     if others:
         m = np.mean(others, axis=0)
-        ang = math.atan2(m[1], m[0]) if float(np.hypot(*m)) > 0 else 0.0
-    else:
-        ang = 0.0
+        if pivots and not is_zero(float(np.hypot(*m)), size, rel=1e-6):
+            ang = math.atan2(m[1], m[0])
+        else:
+            ang = math.atan2(others[0][1], others[0][0])
     return c, ang

@@ -28,6 +28,7 @@ from graphkin.render.scale import fmt, fmt_angle
 from graphkin.render.scene import finite_xy, sub_digits
 from graphkin.render.sources import Source
 from graphkin.render.table import Table
+from graphkin.text import degrees_text
 
 __all__ = ["Row", "result_rows", "analytic_solution", "AGREE", "ROUND_OFF", "diff_text"]
 
@@ -144,16 +145,16 @@ def result_rows(src: Source, diagrams: list[str], exact: Solution | None = None)
                 e = None if exact is None else float(exact.angle_rad(lid))
                 diff = None if e is None else abs(math.remainder(th - e, 2 * math.pi))
                 rows.append(Row(f"theta{lid}", "θ" + sub_digits("x" + lid)[1:], "deg",
-                                f"{math.degrees(math.remainder(th, 2 * math.pi)):.4f}",
-                                "—" if e is None else
-                                f"{math.degrees(math.remainder(e, 2 * math.pi)):.4f}",
+                                degrees_text(th), "—" if e is None else degrees_text(e),
                                 diff, (th,), () if e is None else (e,)))
             for n in names:
                 p = finite_xy(vals[n]) if n in vals else np.asarray(sol.position(n))
                 if p is None:
                     continue
                 ep = None if exact is None else np.asarray(exact.position(n), dtype=float)
-                tiny = 1e-9 * mech.scale
+                # a coordinate below a millionth of the mechanism's size is 0 on any drawing
+                # (as the curvature rows): its digits would be the last digits of a solve
+                tiny = 1e-6 * mech.scale
                 rows.append(Row(f"R_{n}", f"R_{n}", unit, _pair(p, tiny),
                                 "—" if ep is None else _pair(ep, tiny),
                                 None if ep is None else _rel(p, ep, 1e-3 * mech.scale),
@@ -429,10 +430,7 @@ def _short(x: float) -> str:
 
 
 def _dir(rad: float) -> str:
-    d = math.degrees(rad) % 360.0
-    if d > 180.0:
-        d -= 360.0
-    return f"∠{0.0 if abs(d) < 0.05 else d:.1f}°"
+    return f"∠{degrees_text(rad, 1)}°"
 
 
 def quantity_text(row: Row) -> str:
@@ -467,8 +465,7 @@ def compact_cells(row: Row, units: dict[str, tuple[str, float]],
     v = row.drawn_value
     q = quantity_text(row)
     if row.key.startswith("theta") and v:
-        deg = math.degrees(math.remainder(v[0], 2 * math.pi))
-        return q, f"{0.0 if abs(deg) < 0.005 else deg:.2f}", "", "deg"
+        return q, degrees_text(v[0], 2), "", "deg"
     if row.key.startswith(("omega", "alpha")) and v:
         w = v[0]
         if abs(w) <= tiny:

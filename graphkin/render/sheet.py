@@ -55,6 +55,7 @@ from graphkin.render.sources import (
 )
 from graphkin.render.style import IMAGE_FILLS, STYLES
 from graphkin.render.text import plain
+from graphkin.tolerance import VERDICT_REL
 
 __all__ = ["Sheet", "build_sheet", "MARGIN", "TITLE_H", "FOOT_H", "GAP"]
 
@@ -589,10 +590,13 @@ def _hold_anchors(p: Panel, reach: float = 1.0, clear: float = 0.3) -> None:
         a = finite_xy(np.array([*np.asarray(r.anchor, dtype=float)[:2], 1.0]))
         if a is None:
             continue
-        out = np.maximum(lo - a, 0.0) + np.maximum(a - hi, 0.0)
+        # outside by a clear margin (a millionth of an inch of paper): an anchor on the view's
+        # edge (the extent was taken from its point) is inside on every machine
+        eps = 1e-6 * k
+        out = np.maximum(lo - a - eps, 0.0) + np.maximum(a - hi - eps, 0.0)
         if np.all(out <= reach * k):
-            lo = np.minimum(lo, a - np.where(a < lo, clear * k, 0.0))
-            hi = np.maximum(hi, a + np.where(a > hi, clear * k, 0.0))
+            lo = np.minimum(lo, a - np.where(a < lo - eps, clear * k, 0.0))
+            hi = np.maximum(hi, a + np.where(a > hi + eps, clear * k, 0.0))
     if (lo[0], lo[1] - FOOT_H * k, hi[0], hi[1] + TITLE_H * k) != (x0, y0, x1, y1):
         p.view = (float(lo[0]), float(lo[1] - FOOT_H * k), float(hi[0]),
                   float(hi[1] + TITLE_H * k))
@@ -612,7 +616,16 @@ def _wrap_to(text: str, inches: float, size: float) -> str:
 
 
 def _inside(q: np.ndarray, rect: tuple[float, float, float, float] | None) -> bool:
-    return rect is None or (rect[0] <= q[0] <= rect[2] and rect[1] <= q[1] <= rect[3])
+    """True when ``q`` is in ``rect``, or on its edge to round-off of its size.
+
+    The rectangle is the mechanism's extent grown by whole sizes: a point of a
+    textbook's round numbers (Example 4.16's A_G at y = 3 in, the extent's top
+    1 in plus its size 2 in) stands on its edge, inside on every machine.
+    """
+    if rect is None:
+        return True
+    e = VERDICT_REL * max(rect[2] - rect[0], rect[3] - rect[1])
+    return bool(rect[0] - e <= q[0] <= rect[2] + e and rect[1] - e <= q[1] <= rect[3] + e)
 
 
 def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> None:
@@ -631,7 +644,9 @@ def _images(src: Source, p: Panel, painter: StepPainter, upto: int | None) -> No
         for n in names:
             world[n] = np.asarray(sol.position(n, lid), dtype=float)
         hull = MultiPoint([tuple(v) for v in world.values()]).convex_hull
-        if hull.geom_type != "Polygon":
+        # points in a line (or two on one) but for round-off have no image to shade
+        size = float(np.ptp(np.array(list(world.values())), axis=0).max()) if world else 0.0
+        if hull.geom_type != "Polygon" or hull.area <= VERDICT_REL * size * size:
             continue
         ring = list(hull.exterior.coords)[:-1]
         order = []

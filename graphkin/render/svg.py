@@ -12,8 +12,10 @@ Uicker, Pennock & Shigley, 5th ed., Sec. 2.8 (the drawings this saves).
 
 from __future__ import annotations
 
+import hashlib
 import io
 import os
+import re
 from pathlib import Path
 from typing import Any
 
@@ -53,8 +55,46 @@ def to_bytes(fig: Any, fmt: str = "svg", dpi: float = 150.0) -> bytes:
         fig.savefig(buf, format=fmt, metadata=_METADATA[fmt], dpi=dpi, facecolor="white")
     data = buf.getvalue()
     if fmt == "svg":
-        data = data.replace(b"\r\n", b"\n")
+        data = stable_ids(data.replace(b"\r\n", b"\n"))
     return data
+
+
+_HASHED = re.compile(r'\bid="([a-z][0-9a-f]{10})"')
+_DEF = r'<(\w+)\b[^>]*\bid="{}".*?(?:/>|</\1>)'
+_DIGITS = re.compile(r"-?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def stable_ids(data: bytes) -> bytes:
+    """Matplotlib's hashed SVG ids (clip paths, markers) made from what they define, rounded.
+
+    Matplotlib names a clip path by a hash of its rectangle and transform as
+    Python prints them, to the last digit: the same drawing made on another
+    machine (whose sin or solve differs in the last digit) gets other ids.
+    Each such id is renamed by a hash of its definition with every number
+    rounded to 1/100 pt, so the bytes are the same wherever the drawing is
+    the same.
+
+    Examples
+    --------
+    >>> a = (b'<clipPath id="p0123456789"><rect x="7.2000000001"/></clipPath>'
+    ...      b'<g clip-path="url(#p0123456789)"/>')
+    >>> b = a.replace(b"p0123456789", b"p9876543210").replace(b"7.2000000001", b"7.1999999999")
+    >>> stable_ids(a)[:26] == stable_ids(b)[:26] == b'<clipPath id="pabedee3381"'
+    True
+    """
+    text = data.decode("utf-8")
+    seen: dict[str, int] = {}
+    rename = {}
+    for old in dict.fromkeys(_HASHED.findall(text)):
+        m = re.search(_DEF.format(old), text, flags=re.DOTALL)
+        body = m.group(0).replace(old, "") if m else old
+        key = _DIGITS.sub(lambda d: f"{float(d.group(0)):.2f}", body)
+        seen[key] = seen.get(key, 0) + 1  # two definitions alike to 1/100 pt: two ids still
+        new = old[0] + hashlib.sha256(f"{key}#{seen[key]}".encode()).hexdigest()[:10]
+        rename[old] = new
+    for old, new in rename.items():
+        text = text.replace(f'id="{old}"', f'id="{new}"').replace(f"#{old}", f"#{new}")
+    return text.encode("utf-8")
 
 
 def to_svg(fig: Any) -> str:
