@@ -11,6 +11,15 @@ slower machine made Hypothesis hunt for a "failing" example by shrinking, and
 the hunt tried other examples than the derandomized run's, so the same commit
 went red on one machine and green on another.  Timings are measured in
 benchmarks/, never asserted in a test.
+
+Nor do the CI examples draw on the constants of the code under test.
+Hypothesis (6.1xx) mixes into its examples the numeric constants of every
+local module loaded so far: a constant added anywhere in graphkin, or a test
+module imported earlier in the run, changed which examples a derandomized test
+drew, and a commit that touched nothing near a test turned it red (session 15:
+a collision of a six-bar's link number, present before, drawn only after
+``render/labels.py`` gained a constant).  Under the ``ci`` profile that pool
+is empty, so each test's examples depend on its own strategy alone.
 """
 
 from __future__ import annotations
@@ -26,6 +35,20 @@ settings.register_profile("ci", derandomize=True, database=None, print_blob=True
                           deadline=None)
 settings.register_profile("dev", print_blob=True, deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
+
+
+def _no_local_constants() -> None:
+    """Keep the code's own constants out of the derandomized examples (see above)."""
+    try:
+        from hypothesis.internal.conjecture import providers
+    except ImportError:  # pragma: no cover - another Hypothesis layout
+        return
+    if hasattr(providers, "_get_local_constants") and hasattr(providers, "Constants"):
+        providers._get_local_constants = providers.Constants  # an empty pool, every time
+
+
+if os.environ.get("CI"):
+    _no_local_constants()
 
 
 @pytest.fixture
