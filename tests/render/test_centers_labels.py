@@ -16,6 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+import pytest
 from hypothesis import Phase, given, settings
 from strategies import examples, six_bars
 
@@ -128,4 +129,19 @@ def test_a_random_six_bar_keeps_its_far_centers_as_arrows(rm):
              for s in rm.data.get("sliders", []) if isinstance(s.get("line"), list)
              for n in s["line"] if isinstance(n, str)]
     assert _reach(d, guide) <= 1.5 + 1e-9
+    assert not collisions(d), collisions(d)
+
+
+@pytest.mark.xfail(strict=True, reason="known: a link number with no clean place near its "
+                   "link is set on another link's line (session 15, left for later)")
+def test_a_crowded_six_bar_numbers_its_crank_off_the_other_links():
+    # Found when CI's examples changed (tests/conftest.py): a Stephenson III six-bar whose
+    # crank 2 stands inside the coupler's plate, beside link 5's bar. Its instant-center
+    # drawing sets "2" across link 5's line: no clear place within reach of the crank.
+    import json
+
+    from graphkin.mechanisms import from_dict
+
+    data = json.loads((Path(__file__).parent / "data" / "crowded_six_bar.json").read_text())
+    d = draw(from_dict(data, source="crowded_six_bar.json").solve(), "centers")
     assert not collisions(d), collisions(d)
