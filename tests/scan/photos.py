@@ -240,6 +240,21 @@ def exact_images(sol: Any, layout: Layout) -> dict[str, np.ndarray]:
     return out
 
 
+def pinned_case(case: dict[str, Any]) -> tuple[Any, Layout, dict[str, np.ndarray]]:
+    """A pinned photo's mechanism (``data``, ``diagram``, ``kind``): solution, sheet, images."""
+    from graphkin.mechanisms import from_dict
+
+    sol = from_dict(case["data"]).solve()
+    lay = layout_for(sol, case["diagram"], case["kind"])
+    return sol, lay, exact_images(sol, lay)
+
+
+def off_line(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    """How far (mm) ``p`` stands from the line through ``a`` and ``b``."""
+    u = (b - a) / float(np.hypot(*(b - a)))
+    return abs(float(u[0] * (p - a)[1] - u[1] * (p - a)[0]))
+
+
 def links_of(sol: Any) -> list[list[str]]:
     """The point names of each moving link (their images are joined on the sheet)."""
     mech = sol.mechanism

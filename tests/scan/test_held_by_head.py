@@ -31,10 +31,9 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
+from scan.photos import off_line, pinned_case, read_photo  # noqa: E402
 
 from graphkin.check.report import OK  # noqa: E402
-from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.read import _by_head  # noqa: E402
 
 _DATA = json.loads((Path(__file__).parent / "data" / "held_by_head.json").read_text())
@@ -73,13 +72,9 @@ def test_the_agreement_does_not_move_with_round_off() -> None:
         "1.7 mm past it: d is read 1.5 mm off (28 Nov 2026)"))])
 @pytest.mark.parametrize("case", _DATA, ids=lambda c: f"n{c['number']}")
 def test_a_coupler_point_on_its_links_line_stays_where_drawn(case: dict, level: str) -> None:
-    sol = from_dict(case["data"]).solve()
-    lay = layout_for(sol, case["diagram"], case["kind"])
-    images = exact_images(sol, lay)
-    a, c, d = images["A"], images["C"], images["D"]
+    sol, lay, images = pinned_case(case)
     # (what the test means: d within 1.5 mm of the line a c, in its band)
-    ac = (c - a) / float(np.hypot(*(c - a)))
-    assert abs(float(ac[0] * (d - a)[1] - ac[1] * (d - a)[0])) < 1.5
+    assert off_line(images["D"], images["A"], images["C"]) < 1.5
     read, rep, rows = read_photo(sol, lay, images, level, case["seed"])
     # the drawing tolerance is 0.5 mm on the sheet
     assert float(np.hypot(*(read.points["D"] - images["D"]))) < 0.5, rep.text()

@@ -81,10 +81,9 @@ def test_the_decision_does_not_move_with_round_off(sig_along: float, sigmas_off:
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
+from scan.photos import off_line, pinned_case, read_photo  # noqa: E402
 
 from graphkin.check.report import OK  # noqa: E402
-from graphkin.mechanisms import from_dict  # noqa: E402
 
 _DATA = Path(__file__).parent / "data" / "slider_crank_d_on_ac.json"
 
@@ -94,15 +93,13 @@ _DATA = Path(__file__).parent / "data" / "slider_crank_d_on_ac.json"
 def test_d_on_the_rods_line_is_read_where_its_vector_crosses_it(level: str, case: str) -> None:
     # benchmarks/data/scan_sample_20261202.json #43: d was read 0.9-1.25 mm along a-c
     d: dict[str, Any] = json.loads(_DATA.read_text(encoding="utf-8"))
-    sol = from_dict(d["data"]).solve()
-    lay = layout_for(sol, d["diagram"], d["kind"])
-    images = exact_images(sol, lay)
+    sol, lay, images = pinned_case(d)
     pole = np.array(lay.pole)
     a, c, dd = images["A"], images["C"], images["D"]
     # (the drawing is what the test means: d within 1 mm of the line a-c, between them: its
     # lines to a and to c nearly straight on, one band)
     ac = (c - a) / float(np.hypot(*(c - a)))
-    assert abs(float(ac[0] * (dd - a)[1] - ac[1] * (dd - a)[0])) < 1.0
+    assert off_line(dd, a, c) < 1.0
     assert 0.0 < float((dd - a) @ ac) < float(np.hypot(*(c - a)))
     drawn = images if case == "right" else {k: 2 * pole - p for k, p in images.items()}
     read, _, rows = read_photo(sol, lay, drawn, level, d["seed"])

@@ -22,12 +22,17 @@ cv2 = pytest.importorskip("cv2")
 
 from hypothesis import Phase, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import (  # noqa: E402
+    exact_images,
+    hand_photo,
+    layout_for,
+    pinned_case,
+    sheet_pixels,
+)
 from strategies import fourbars, slider_cranks  # noqa: E402
 
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import FOLLOWS, OK, WRONG  # noqa: E402
-from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.mark import mark_scan  # noqa: E402
 from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
@@ -47,9 +52,7 @@ def _every_image_marked(sol: Any, lay: Any, photo: np.ndarray, images: dict[str,
 
 def test_the_photo_that_raised_singular_matrix() -> None:
     d = json.loads((_DATA / "fresh_9.json").read_text(encoding="utf-8"))
-    sol = from_dict(d["data"]).solve()
-    lay = layout_for(sol, d["diagram"], d["kind"])
-    images = exact_images(sol, lay)
+    sol, lay, images = pinned_case(d)
     photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "phone", d["seed"])
     _every_image_marked(sol, lay, photo, images)
 

@@ -29,10 +29,9 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, layout_for, read_photo  # noqa: E402
+from scan.photos import off_line, pinned_case, read_photo  # noqa: E402
 
 from graphkin.check.report import OK  # noqa: E402
-from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.read import _GAP_SIN, _PAST_MM, _RAY_LINE_MM, _SAME_MM  # noqa: E402
 from graphkin.scan.tipweight import tip_behind  # noqa: E402
 
@@ -119,14 +118,12 @@ def test_no_tips_no_segments() -> None:
 @pytest.mark.parametrize("case", _DATA, ids=lambda c: f"n{c['number']}")
 def test_an_image_beside_a_cluster_of_ends_is_read_at_its_arrowhead(case: dict) -> None:
     # before scan23: A_A unexplained, a read 1.24 mm off where the band's lines cross
-    sol = from_dict(case["data"]).solve()
-    lay = layout_for(sol, case["diagram"], case["kind"])
-    images = exact_images(sol, lay)
+    sol, lay, images = pinned_case(case)
     pole = np.array(lay.pole)
     a, b, e = images["A"], images["B"], images["E"]
     # (what the test means: a within 1 mm of the line b e, o a crossing it at 15-25°)
     be = (e - b) / float(np.hypot(*(e - b)))
-    assert abs(float(be[0] * (a - b)[1] - be[1] * (a - b)[0])) < 1.0
+    assert off_line(a, b, e) < 1.0
     oa = (a - pole) / float(np.hypot(*(a - pole)))
     assert 15.0 < float(np.degrees(np.arcsin(abs(oa[0] * be[1] - oa[1] * be[0])))) < 25.0
     read, rep, rows = read_photo(sol, lay, images, "scan", case["seed"])

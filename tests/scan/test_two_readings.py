@@ -19,12 +19,11 @@ import pytest
 
 cv2 = pytest.importorskip("cv2")
 
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import hand_photo, pinned_case, sheet_pixels  # noqa: E402
 
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.diagnose import Mistake  # noqa: E402
 from graphkin.check.report import OK, WRONG, Row  # noqa: E402
-from graphkin.mechanisms import from_dict  # noqa: E402
 from graphkin.scan.mark import _untold, mark_scan  # noqa: E402
 from graphkin.scan.read import SheetRead, read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402
@@ -58,9 +57,7 @@ def test_the_right_drawing_that_was_marked_image_flipped() -> None:
     # it, and marked image-flipped, a mistake the student did not make.
     d = json.loads((Path(__file__).parent.parent / "data" / "scan" / "fresh_22.json")
                    .read_text(encoding="utf-8"))
-    sol = from_dict(d["data"]).solve()
-    lay = layout_for(sol, d["diagram"], d["kind"])
-    images = exact_images(sol, lay)
+    sol, lay, images = pinned_case(d)
     diag = Diagnoser(Evaluator(sol))
     photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, "harsh", d["seed"])
     rows = mark_scan(sol, read_sheet(sol, Page("p", photo), diag, lay.digest), "p",
