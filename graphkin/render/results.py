@@ -29,6 +29,7 @@ from graphkin.render.scene import finite_xy, sub_digits
 from graphkin.render.sources import Source
 from graphkin.render.table import Table
 from graphkin.text import degrees_text
+from graphkin.tolerance import VERDICT_REL
 
 __all__ = ["Row", "result_rows", "analytic_solution", "AGREE", "ROUND_OFF", "diff_text"]
 
@@ -221,12 +222,16 @@ def _body(exact: Solution, lid: str, world: np.ndarray) -> tuple[np.ndarray, np.
                                                                    dtype=float)
 
 
-def equal_velocity_point(exact: Solution, i: str, j: str) -> np.ndarray:
+def equal_velocity_point(exact: Solution, i: str, j: str) -> np.ndarray | None:
     """Where links ``i`` and ``j`` have the same velocity: their instant center, homogeneous.
 
     From ``V_i(X) = V_j(X)`` with ``V(X) = V(0) + ω k × X`` (Eq. 3.4):
     ``k × X = -(V_i(0) - V_j(0))/(ω_i - ω_j)``; when ``ω_i = ω_j`` the center
-    is at infinity, perpendicular to the difference of velocities.
+    is at infinity, perpendicular to the difference of velocities.  None when
+    the two have no relative motion at this posture (a block at the end of its
+    travel on a link turning with it): every point has the same velocity on
+    both, and a direction taken from a difference of velocities that is
+    round-off would be any direction.
 
     References
     ----------
@@ -236,8 +241,13 @@ def equal_velocity_point(exact: Solution, i: str, j: str) -> np.ndarray:
     vj, _ = _body(exact, j, np.zeros(2))
     dv = vi - vj
     dw = float(exact.omega(i)) - float(exact.omega(j))
-    size = max(float(np.hypot(*vi)), float(np.hypot(*vj)), 1e-300)
+    # the speeds of the two links: at the origin, and turning about it over the mechanism
+    size = max(float(np.hypot(*vi)), float(np.hypot(*vj)), 1e-300,
+               abs(float(exact.omega(i))) * exact.mechanism.scale,
+               abs(float(exact.omega(j))) * exact.mechanism.scale)
     if abs(dw) * exact.mechanism.scale <= 1e-12 * size:
+        if float(np.hypot(*dv)) <= VERDICT_REL * size:
+            return None
         return np.array([-dv[1], dv[0], 0.0]) / max(float(np.hypot(*dv)), 1e-300)
     w = -dv / dw
     return np.array([w[1], -w[0], 1.0])
@@ -263,7 +273,8 @@ def _center_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]:
         if exact is not None and exact.has_rates:
             from graphkin.kinematics.instant_centers.primary import far_as_ideal
 
-            e = far_as_ideal(equal_velocity_point(exact, *c.pair), sol.mechanism)
+            q = equal_velocity_point(exact, *c.pair)
+            e = None if q is None else far_as_ideal(q, sol.mechanism)
         rows.append(Row(f"center-{lab}", lab, unit, _homog(p, scale * 1e-6),
                         "—" if e is None else _homog(e, scale * 1e-6),
                         None if e is None else _homog_diff(p, e, scale),
@@ -284,7 +295,7 @@ def _curvature_rows(src: Source, exact: Solution | None, unit: str) -> list[Row]
     st = exact.links[lid]
     rows: list[Row] = []
     ie = equal_velocity_point(exact, lid, FRAME)
-    if abs(ie[2]) < 1e-12:
+    if ie is None or abs(ie[2]) < 1e-12:
         return rows
     i_xy = ie[:2] / ie[2]
     a_i = _body(exact, lid, i_xy)[1]
@@ -336,7 +347,9 @@ def _homog(p: np.ndarray, tiny: float = 0.0) -> str:
     if n == 0:
         return "—"
     d = d / n
-    d = np.where(np.abs(d) < 1e-12, 0.0, d)
+    # a component at round-off of the unit direction is none (a direction (±1e-11, 1)
+    # printed with its sense decided by the last digits read "(0, 1)" or "(0, -1)")
+    d = np.where(np.abs(d) < VERDICT_REL, 0.0, d)
     if d[0] < 0 or (d[0] == 0 and d[1] < 0):
         d = -d
     return f"∞ along ({fmt(d[0], 4)}, {fmt(d[1], 4)})"
@@ -348,7 +361,10 @@ def _homog_diff(p: np.ndarray, e: np.ndarray, scale: float) -> float:
         return _rel(a, b, scale)
     if a is None and b is None:
         u, v = np.asarray(p[:2], dtype=float), np.asarray(e[:2], dtype=float)
-        u, v = u / float(np.hypot(*u)), v / float(np.hypot(*v))
+        nu, nv = float(np.hypot(*u)), float(np.hypot(*v))
+        if nu == 0.0 or nv == 0.0:  # a direction not known ("—") is no direction
+            return 0.0 if nu == nv else math.inf
+        u, v = u / nu, v / nv
         return abs(float(u[0] * v[1] - u[1] * v[0]))
     return math.inf
 

@@ -86,7 +86,7 @@ def test_a_gallery_drawing_is_the_same_from_inputs_moved_by_round_off(name, diag
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(rm=mechanisms(), seed=st.integers(0, 2**16), diagram=st.sampled_from(
-    ["posture", "velocity", "acceleration"]))
+    ["posture", "velocity", "acceleration", "centers", "curvature"]))
 def test_a_random_mechanism_draws_the_same_from_inputs_moved_by_round_off(rm, seed, diagram):
     base = _svg(rm.data, diagram)
     moved = _svg(_moved(rm.data, random.Random(seed)), diagram)
@@ -150,3 +150,38 @@ def test_a_file_is_read_the_same_when_moved():
     assert moved["drive"][0]["link"] == 2
     assert moved["drive"][0]["theta"] != 30.0
     assert abs(moved["drive"][0]["theta"] / 30.0 - 1.0) <= 1.1e-12
+
+
+# An inverted slider-crank with every point on one line (crank at 0°, the block at the end
+# of its travel on link 4): links 3 and 4 turn together and the block does not slide, so
+# they have no relative motion and their center cannot be had from velocities (Sec. 3.12:
+# every point has the same velocity on both).  The analytic check took its direction from
+# a difference of velocities of 1e-17: "(1, 0)" against the drawing's "(0, 1)" (the slide's
+# normal, by inspection, Sec. 3.13), a relative difference of 1; from inputs moved by
+# 1e-12, a direction of length zero and NaN.
+TOGGLE = {
+    "title": "inverted slider-crank, block at the end of its travel",
+    "units": {"length": "mm"},
+    "links": {"1": {"D": [0.0, 0.0], "E": [-0.05, 0.0]},
+              "4": {"D": [-0.125, 0.0], "R": [0.125, 0.0]},
+              "2": {"E": [0.05, 0.0], "A": [-0.05, 0.0]},
+              "3": {"A": [0.0, 0.0]}},
+    "drive": {"link": 2, "angle": 0.0, "omega": "0.5 rad/s cw"},
+    "assembly": {"R": [0.25, 0.0], "A": [-0.15, 0.0]},
+    "sliders": [{"link": 3, "on": 4, "point": "A",
+                 "line": [[-0.325, 0.0], [-0.225, 0.0]]}],
+}
+
+
+@pytest.mark.filterwarnings("error")
+def test_a_center_of_two_links_with_no_relative_motion_is_not_checked_from_velocities():
+    import re
+
+    base = _svg(TOGGLE, "centers")
+    texts = re.findall(r">([^<]+)</text>", base.decode())
+    i = texts.index("I₃₄", texts.index("I₁₄"))
+    assert texts[i + 1:i + 4] == ["∞ along (0, 1)", "—", "—"]
+    assert not any("nan" in t.lower() for t in texts)
+    assert any(t.startswith("The drawing agrees") for t in texts)
+    for seed in (1, 2, 3):
+        assert same_drawing(base, _svg(_moved(TOGGLE, random.Random(seed)), "centers"))
