@@ -222,6 +222,17 @@ def photograph(img: np.ndarray, deg: Degradation, rng: np.random.Generator) -> n
     return cv2.imdecode(buf, cv2.IMREAD_GRAYSCALE)
 
 
+READABLE_MM = 7.0
+"""docs/checking.md: an image under 7 mm from the pole is too short to read from a photo
+and is not marked (a note says so)."""
+
+
+def readable(images: dict[str, np.ndarray], layout: Layout) -> set[str]:
+    """The images a photo is marked at: those at least :data:`READABLE_MM` from the pole."""
+    pole = np.array(layout.pole)
+    return {n for n, p in images.items() if float(np.hypot(*(p - pole))) >= READABLE_MM}
+
+
 def exact_images(sol: Any, layout: Layout) -> dict[str, np.ndarray]:
     """Every image point away from the pole, sheet mm (the analytic solver's values)."""
     from graphkin.kinematics.analytic import solve_analytic

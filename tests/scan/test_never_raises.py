@@ -27,6 +27,7 @@ from scan.photos import (  # noqa: E402
     hand_photo,
     layout_for,
     pinned_case,
+    readable,
     sheet_pixels,
 )
 from strategies import fourbars, slider_cranks  # noqa: E402
@@ -46,7 +47,9 @@ def _every_image_marked(sol: Any, lay: Any, photo: np.ndarray, images: dict[str,
     assert all(np.all(np.isfinite(p)) for p in read.points.values())
     rows = mark_scan(sol, read, "photo", CheckTolerance(), diag).rows
     letter = lay.diagram[0].upper()
-    assert {r.key for r in rows} == {f"{letter}_{n}" for n in images}
+    # every image read and marked, but those too short to read from a photo (a 6.97 mm A_C
+    # was left out, with its note, as docs/checking.md says: found by a local run)
+    assert {r.key for r in rows} == {f"{letter}_{n}" for n in readable(images, lay)}
     assert all(r.verdict in (OK, WRONG, FOLLOWS) for r in rows)
 
 

@@ -19,7 +19,7 @@ cv2 = pytest.importorskip("cv2")
 
 from hypothesis import Phase, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
-from scan.photos import exact_images, hand_photo, layout_for, sheet_pixels  # noqa: E402
+from scan.photos import exact_images, hand_photo, layout_for, readable, sheet_pixels  # noqa: E402
 from strategies import fourbars, slider_cranks  # noqa: E402
 
 import graphkin  # noqa: E402
@@ -159,7 +159,8 @@ def test_random_mechanisms_no_mistake_named_on_a_right_drawing(rm: Any, level: s
     photo = hand_photo(sol, lay, sheet_pixels(sol, lay), images, level, seed)
     rep = _mark(sol, lay, photo, diag)
     letter = diagram[0].upper()
-    assert set(_verdicts(rep)) == {f"{letter}_{n}" for n in images}
+    # (an image 6-7 mm from the pole is too short to read from a photo: not marked)
+    assert set(_verdicts(rep)) == {f"{letter}_{n}" for n in readable(images, lay)}
     assert all(code in ("", "unexplained", "not-found") for _, code in
                _verdicts(rep).values()), rep.text()
 
