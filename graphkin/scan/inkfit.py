@@ -46,7 +46,11 @@ fitted lines and the ink's ends along them agree best:
    with this image's other lines drawn to where this line passes ``p``
    (the point read may be off along it by 1-4 mm where segments meet at a
    narrow angle, and a link's line nearly straight on from the vector
-   then lies on the walk only from there).
+   then lies on the walk only from there).  A walk that stepped over paper
+   onto another line crossing it, and ended on that line's far side (an
+   image about 1 mm beside another line of the polygon), ends before the
+   paper; one that ends on such a line's ink with no paper between gives
+   no end (:func:`_band_gap_cut`).
 4. **The point.**  Each line holds the image across itself (σ from its
    fit), each end along its line (σ 0.3 mm: ends overshot or stopped short
    by up to 0.4 mm); an end farther from the lines' crossing than the two
@@ -64,7 +68,7 @@ along its vector from the pole: :func:`read_off`) and within
 said so in a note.  Measured in docs/checking.md ("How well it reads") and
 docs/scan-reading.md.
 
-Before the image points are read, :func:`past_crossings` cuts back a
+Before the image points are read, :func:`graphkin.scan.crossings.past_crossings` cuts back a
 segment's tip that the detector carried over paper, past a line it
 crosses, to the student's letter written straight on along it.
 
@@ -86,8 +90,8 @@ import numpy as np
 from graphkin.scan import need_cv2
 from graphkin.scan.sheet import PX_PER_MM
 
-__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_along", "ink_end", "other_ray",
-           "refine_point", "refine_points", "refine_read", "read_off", "past_crossings",
+__all__ = ["FitLine", "Refined", "Sheet", "fit_line", "ink_along", "ink_end",
+           "refine_point", "refine_points", "refine_read", "read_off",
            "SIGMA_MAX_MM", "LOOSE_SIGMA_MAX_MM", "MOVE_MAX_MM"]
 
 SIGMA_MAX_MM = 0.35
@@ -151,6 +155,9 @@ _PAPER_MM = 0.5
 """A stretch of paper at least this long along a stroke's line parts two inks."""
 _LIFT_MM = 3.0
 """A pencil lifted leaves paper under this along a stroke (as :mod:`strokes` joins pieces)."""
+_BAND_PAPER_MM = 0.2
+"""Paper at least this long between a stroke's tip and a line past it parts them (a dip of
+the blurred ink under half its darkness over less is a saddle between the two inks)."""
 _TOLD_MM = 0.5
 """A point moved farther than this (the default drawing tolerance) is said so in a note."""
 _SPREAD_SIN = math.sin(math.radians(3.0))
@@ -453,6 +460,9 @@ def refine_point(sheet: Sheet, p0: np.ndarray, neighbours: list[np.ndarray],
         end = _letter_cut(sheet, fl, end, others)
         if end is None:
             continue
+        end = _band_gap_cut(sheet, fl, end, others, p0)
+        if end is None:
+            continue
         cover = _cover(fl.point, fl.direction, others)
         # and this image's other lines drawn to where this one passes it (the point read
         # may be off along it, 1-4 mm where segments meet at a narrow angle): a line going
@@ -537,6 +547,61 @@ def _letter_cut(sheet: Sheet, fl: FitLine, end: float, others: list[np.ndarray]
     if any(float(_seg_dist(q, a, b)[0]) < 2 * _HALF_MM for a, b in crossed):
         return None
     return float(s[stop - 1])
+
+
+def _band_gap_cut(sheet: Sheet, fl: FitLine, end: float, others: list[np.ndarray],
+                  p0: np.ndarray) -> float | None:
+    """The stroke's own end where the walk ran on onto another line's ink; None if hidden.
+
+    :func:`ink_end` steps over gaps under 1 mm (the pencil lifted).  An image
+    about 1 mm beside another line of the polygon (a coupler point beside its
+    link's line, Sec. 3.5) has paper between its stroke's tip and that line:
+    the walk steps over it, across the other line, and ends on its far side.
+    Where the ink after the last stretch of paper (at least
+    :data:`_BAND_PAPER_MM`) lies all on one other
+    expected stroke crossing this one (over 8° apart, within a pencil line's
+    width of it; not one of the image's own lines, which end at ``p0``), that
+    ink is the other line's: the end is where the stroke's own ink stopped,
+    before the paper.  With no paper between (the two inks merged by the
+    blur), an end on the ink of such a line crossing the stroke past ``p0``
+    (by a pencil line's width or more) tells nothing of where the stroke
+    stopped under it: None.  An image on the line (a coupler point in the middle of
+    its link's line) keeps its end: its walk runs on over the line's ink
+    only as far as :func:`_cover` takes back.
+    """
+    u, p = fl.direction, fl.point
+    crossing = []
+    for a, b in others:
+        v = b - a
+        ln = float(np.hypot(*v))
+        if (ln >= 1.0 and abs(float(u[0] * v[1] - u[1] * v[0])) >= _CROSS_SIN * ln
+                and min(float(np.hypot(*(a - p0))), float(np.hypot(*(b - p0)))) > 1.0):
+            crossing.append((a, b))
+    if not crossing:
+        return end
+    s = np.arange(0.0, end + 1e-9, 0.05)
+    if len(s) >= 4:
+        dark = ink_along(sheet, p, u, s) >= 0.5 * fl.darkness
+        paper = np.flatnonzero(~dark)
+        if len(paper) and dark[0] and paper[-1] < len(s) - 1:
+            g0 = g1 = int(paper[-1])                # the last paper before the end
+            while g0 > 0 and not dark[g0 - 1]:
+                g0 -= 1
+            after = p + np.outer(s[g1 + 1:], u)
+            if s[g1] - s[g0] + 0.05 >= _BAND_PAPER_MM and any(
+                    bool(np.all(_seg_dist(after, a, b) < 2 * _HALF_MM)) for a, b in crossing):
+                return float(s[g0])
+    def past(a: np.ndarray, b: np.ndarray) -> float:
+        # how far past p0 along the stroke the other line crosses it (mm)
+        v = b - a
+        q = a - np.asarray(p0, dtype=float)
+        return float(q[0] * v[1] - q[1] * v[0]) / float(u[0] * v[1] - u[1] * v[0])
+
+    tip = (p + (end - 0.1) * u)[None, :]
+    if any(float(_seg_dist(tip, a, b)[0]) < 2 * _HALF_MM and past(a, b) >= 2 * _HALF_MM
+           for a, b in crossing):
+        return None
+    return end
 
 
 def _twice_drawn(fl: FitLine, p0: np.ndarray, others: list[np.ndarray]) -> FitLine:
@@ -689,87 +754,3 @@ def read_off(ref: Refined, p0: np.ndarray, pole: np.ndarray) -> bool:
     d = np.asarray(p0, dtype=float) - ref.point
     across = abs(float(ray[0] * d[1] - ray[1] * d[0])) / max(float(np.hypot(*ray)), 1e-12)
     return across <= _ON_RAY_MM and float(d @ np.linalg.solve(ref.cov, d)) > _OFF_SIGMAS**2
-
-
-def past_crossings(segs: np.ndarray, sheet: Sheet) -> np.ndarray:
-    """The segments with each tip run on past a crossing over paper to a letter cut back (mm).
-
-    A stroke drawn to an image on a long line (a link's line to an image in
-    the middle of a straight line from the pole) ends on that line's ink;
-    the student's letter is written just past the image, often straight on
-    along the stroke.  The detector joins the letter's stroke to the line
-    over the paper between them (gaps under 3 mm are a pencil lifted), and
-    the tip is then walked on through the letter's ink, up to 5 mm past the
-    image (:mod:`graphkin.scan.strokes`), out of reach of the places it can
-    be.  Here, where a segment crosses a line at least
-    :data:`_CROSSED_MM` long (over 8° apart) 1-6 mm before its tip, and
-    along its middle past the crossing the ink stops, paper follows for at
-    least :data:`_PAPER_MM`, and the ink after it runs under
-    :data:`_LETTER_MM` to the tip, the tip is put where the ink past the
-    crossing stops (half the stroke's darkness): a stroke's own piece after a
-    pencil gap is longer, and a line crossed in its middle goes on.
-    """
-    out = np.array(segs, dtype=float, copy=True)
-    if len(segs) < 2:
-        return out
-    d = segs[:, 1] - segs[:, 0]
-    length = np.hypot(d[:, 0], d[:, 1])
-    step = 0.05
-    for i in range(len(segs)):
-        if length[i] == 0.0:
-            continue
-        mid = segs[i, 0] + np.outer(np.linspace(0.15, 0.85, 25), d[i])
-        half = 0.5 * float(np.median(sheet.darkness(mid)))
-        for k in (0, 1):
-            tip, far = segs[i, k], segs[i, 1 - k]
-            w = (tip - far) / length[i]
-            nrm = np.array([-w[1], w[0]])
-            cut = None
-            for j in np.flatnonzero(length >= _CROSSED_MM).tolist():
-                if j == i:
-                    continue
-                v = d[j] / length[j]
-                if abs(float(w[0] * v[1] - w[1] * v[0])) < _CROSS_SIN:
-                    continue
-                A = np.array([nrm, [-v[1], v[0]]])
-                x = np.linalg.solve(A, np.array([float(nrm @ far), float(A[1] @ segs[j, 0])]))
-                back = float((tip - x) @ w)
-                along = float((x - segs[j, 0]) @ v)
-                if not (1.0 < back < _LETTER_MM + 3.0 and 0.0 < along < length[j]):
-                    continue
-                s = np.arange(0.0, back + 1e-9, step)
-                prof = ink_along(sheet, x, w, s)
-                dark = prof >= half
-                if not dark[0] or np.all(dark):
-                    continue
-                stop = int(np.argmin(dark))                 # the first paper past the crossing
-                again = np.flatnonzero(dark[stop:])
-                if not len(again) or s[stop + int(again[0])] - s[stop] < _PAPER_MM:
-                    continue
-                if back - float(s[stop + int(again[0])]) >= _LETTER_MM:
-                    continue
-                frac = (prof[stop - 1] - half) / max(float(prof[stop - 1] - prof[stop]), 1e-12)
-                at = x + (float(s[stop - 1]) + min(max(float(frac), 0.0), 1.0) * step) * w
-                if cut is None or float((at - far) @ w) < float((cut - far) @ w):
-                    cut = at
-            if cut is not None:
-                out[i, k] = cut
-    return out
-
-
-def other_ray(seg: np.ndarray, p: np.ndarray, pole: np.ndarray, line_mm: float,
-              start_mm: float) -> bool:
-    """Whether segment ``seg`` is a vector from the pole passing ``p`` by 1 mm or more.
-
-    A vector from the pole: its line within ``line_mm`` of the pole, its end
-    nearer the pole within ``start_mm`` of it (mm on the sheet, Sec. 3.4).
-    Where two vectors from the pole run a few degrees apart (a four-bar's
-    o a and o f, 5°), the other one crosses the links' lines near the
-    vertex, and :func:`graphkin.scan.strokes.vertex_at` would take that
-    crossing as the vertex.
-    """
-    a, b = sorted(np.asarray(seg, dtype=float), key=lambda e: float(np.hypot(*(e - pole))))
-    u = (b - a) / max(float(np.hypot(*(b - a))), 1e-12)
-    off = abs(float(u[0] * (pole - a)[1] - u[1] * (pole - a)[0]))
-    return (off < line_mm and float(np.hypot(*(a - pole))) < start_mm
-            and abs(float(u[0] * (p - a)[1] - u[1] * (p - a)[0])) >= 1.0)

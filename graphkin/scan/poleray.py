@@ -9,7 +9,7 @@ pole's dot and the arrowhead take it.  A link's line drawn to such an image
 (Sec. 3.5) then runs on past it over a barb of the image's own arrowhead, or
 on to another stroke near it, and the detector's tip is taken for the image
 (:mod:`graphkin.scan.read`).  :func:`pole_ray_cuts` cuts such a tip back to
-the ray from the pole, before :func:`graphkin.scan.inkfit.past_crossings`
+the ray from the pole, before :func:`graphkin.scan.crossings.past_crossings`
 cuts tips carried over paper to a letter.
 """
 

@@ -44,7 +44,8 @@ from graphkin.check.carry import carry_for
 from graphkin.check.diagnose import Diagnoser, Mistake
 from graphkin.errors import GraphkinError, InputError
 from graphkin.scan.arrows import arrow_tips, broken_by_tips, head_at
-from graphkin.scan.inkfit import Sheet, other_ray, past_crossings, refine_read
+from graphkin.scan.crossings import other_ray, past_crossings
+from graphkin.scan.inkfit import Sheet, refine_read
 from graphkin.scan.poleray import pole_ray_cuts, printed_sheet
 from graphkin.scan.sheet import PX_PER_MM, Page, Rectified, rectify, template_ink
 from graphkin.scan.strokes import apart, ends, pencil, segments, vertex_at
@@ -533,7 +534,7 @@ def _vertex(read: SheetRead, near: list[int], p: np.ndarray, pole: np.ndarray) -
     Each end is where the stroke's own ink ends (:func:`_own_end`), not
     where a segment's tip walked over a gap onto the passing line's ink.
     Another image's vector from the pole passing 1 mm or more from ``p``
-    is none of the vertex's lines (:func:`graphkin.scan.inkfit.other_ray`).
+    is none of the vertex's lines (:func:`graphkin.scan.crossings.other_ray`).
     """
     keep = [i for i, g in enumerate(read.segments)
             if i in near or not other_ray(g, p, pole, _RAY_LINE_MM, _RAY_START_MM)]

@@ -6,7 +6,7 @@ benchmark's fixed sample (docs/checking.md, "How well it reads"):
 * the link's stroke ``b a``, drawn to ``a`` in the middle of the straight
   line from the pole to ``e``, runs on over the paper to the student's letter
   written straight on past ``a``: the segment's tip 5 mm past ``a``, out of
-  reach, and ``a`` not found (:func:`~graphkin.scan.inkfit.past_crossings`);
+  reach, and ``a`` not found (:func:`~graphkin.scan.crossings.past_crossings`);
 * three strokes meeting at ``a`` a few degrees apart, whose segments cross
   3-4 mm short of it: the lines fitted to the ink and their ends put it right,
   but the move was refused as too far, and the end of one line was looked for
@@ -41,7 +41,7 @@ from scan.rasters import pencil_sheet, unit  # noqa: E402
 from graphkin.check import CheckTolerance, Diagnoser, Evaluator  # noqa: E402
 from graphkin.check.report import OK  # noqa: E402
 from graphkin.mechanisms import from_dict  # noqa: E402
-from graphkin.scan.inkfit import past_crossings  # noqa: E402
+from graphkin.scan.crossings import past_crossings  # noqa: E402
 from graphkin.scan.mark import mark_scan  # noqa: E402
 from graphkin.scan.read import read_sheet  # noqa: E402
 from graphkin.scan.sheet import Page  # noqa: E402

@@ -65,11 +65,11 @@ def test_the_agreement_does_not_move_with_round_off() -> None:
             assert _by_head(_read([h.tolist()]), p) is agree
 
 
-@pytest.mark.parametrize("level", [
-    "scan", "mild",
-    pytest.param("phone", marks=pytest.mark.xfail(
-        strict=True, reason="at phone no arrowhead is found at d, and o d's segment runs on "
-        "1.7 mm past it: d is read 1.5 mm off (28 Nov 2026)"))])
+# At phone no arrowhead is found at d, and o d's segment runs on 1.7 mm past it: d was
+# read 1.5 mm off (28 Nov 2026, a strict xfail).  The walk along o d then ended on the far
+# side of the band's other line; since session 16 it ends before the paper between
+# (graphkin.scan.inkfit._band_gap_cut), and d is read where drawn at every level.
+@pytest.mark.parametrize("level", ["scan", "mild", "phone"])
 @pytest.mark.parametrize("case", _DATA, ids=lambda c: f"n{c['number']}")
 def test_a_coupler_point_on_its_links_line_stays_where_drawn(case: dict, level: str) -> None:
     sol, lay, images = pinned_case(case)

@@ -9,7 +9,7 @@ when it is under 1 mm (a pencil lifted) and ends on the letter, 2-4 mm
 past the image; with no other line across it there, nothing else held the
 point, and ``e`` of a right drawing was read 4.4 mm off and marked wrong.
 :func:`graphkin.scan.inkfit._letter_cut` reads that walk as
-:func:`graphkin.scan.inkfit.past_crossings` reads a segment's tip: the ink
+:func:`graphkin.scan.crossings.past_crossings` reads a segment's tip: the ink
 stops past the crossed line and the ink after the paper is a letter; where
 it stops on the crossed line's own ink, the walk gives no end.
 
